@@ -1,0 +1,27 @@
+#include "dense_trajectory.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace billiard {
+
+void DenseTrajectory::Append(double t0, double t1, const BallState& x0, const BallState& x1,
+                             const BallState& c3, const BallState& c4) {
+  steps_.push_back({t0, t1, x0, x1, c3, c4});
+}
+
+double DenseTrajectory::start_time() const { return steps_.empty() ? 0.0 : steps_.front().t0; }
+double DenseTrajectory::end_time() const { return steps_.empty() ? 0.0 : steps_.back().t1; }
+
+BallState DenseTrajectory::At(double t) const {
+  if (steps_.empty()) throw std::logic_error("dense trajectory has no steps");
+  t = std::clamp(t, start_time(), end_time());
+  const auto it = std::lower_bound(steps_.begin(), steps_.end(), t,
+                                   [](const Step& step, double time) { return step.t1 < time; });
+  const Step& step = it == steps_.end() ? steps_.back() : *it;
+  if (step.t1 <= step.t0) return step.x0;
+  const double s = (t - step.t0) / (step.t1 - step.t0);
+  return (1.0 - s) * step.x0 + s * (step.x1 + (1.0 - s) * (step.c3 + s * step.c4));
+}
+
+}  // namespace billiard

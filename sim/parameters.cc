@@ -1,0 +1,104 @@
+#include "parameters.h"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+namespace billiard {
+
+namespace internal {
+const std::vector<std::pair<std::string, std::string>>& BuiltinParameterJson();
+}
+
+std::vector<std::string> BuiltinParameterSetNames() {
+  std::vector<std::string> names;
+  for (const auto& [name, json] : internal::BuiltinParameterJson()) names.push_back(name);
+  return names;
+}
+
+namespace {
+
+double Number(const nlohmann::json& object, const char* section, const char* key,
+              const std::string& origin) {
+  const auto& s = object.at(section);
+  if (!s.contains(key) || !s.at(key).is_number()) {
+    throw std::invalid_argument(origin + ": missing number " + section + "." + key);
+  }
+  return s.at(key).get<double>();
+}
+
+void Require(bool ok, const std::string& name, const std::string& what) {
+  if (!ok) throw std::invalid_argument(name + ": " + what);
+}
+
+}  // namespace
+
+ModelParameters ParseParameters(const std::string& json_text, const std::string& origin) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(json_text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw std::invalid_argument(origin + ": not valid JSON (" + e.what() + ")");
+  }
+  for (const char* section : {"ball", "contact"}) {
+    if (!j.is_object() || !j.contains(section) || !j.at(section).is_object()) {
+      throw std::invalid_argument(origin + ": missing object \"" + section + "\"");
+    }
+  }
+  ModelParameters p;
+  p.name = j.value("name", origin);
+  p.source = j.value("source", "");
+  p.ball.radius = Number(j, "ball", "radius", origin);
+  p.ball.mass = Number(j, "ball", "mass", origin);
+  p.ball.gravity = Number(j, "ball", "gravity", origin);
+  ContactParameters& c = p.contact;
+  c.patch_radius = Number(j, "contact", "patch_radius", origin);
+  c.mu = Number(j, "contact", "mu", origin);
+  c.d = Number(j, "contact", "d", origin);
+  c.eps_t = Number(j, "contact", "eps_t", origin);
+  c.eps_r = Number(j, "contact", "eps_r", origin);
+  c.b_t = Number(j, "contact", "b_t", origin);
+  c.m_t = Number(j, "contact", "m_t", origin);
+  c.b_m = Number(j, "contact", "b_m", origin);
+  c.m_m = Number(j, "contact", "m_m", origin);
+  ValidateParameters(p);
+  return p;
+}
+
+void ValidateParameters(const ModelParameters& p) {
+  const std::string& n = p.name;
+  const ContactParameters& c = p.contact;
+  for (double v : {p.ball.radius, p.ball.mass, p.ball.gravity, c.patch_radius, c.mu, c.d, c.eps_t,
+                   c.eps_r, c.b_t, c.m_t, c.b_m, c.m_m}) {
+    Require(std::isfinite(v), n, "every parameter must be a finite number");
+  }
+  Require(p.ball.radius > 0.0 && p.ball.mass > 0.0 && p.ball.gravity > 0.0, n,
+          "ball radius, mass and gravity must be positive");
+  Require(c.patch_radius > 0.0 && c.patch_radius < p.ball.radius, n,
+          "contact patch radius must be positive and smaller than the ball");
+  Require(c.mu >= 0.0, n, "mu must be >= 0");
+  Require(c.d >= 0.0 && c.d <= 1.0, n, "d must lie in [0, 1] (the pressure must stay positive)");
+  Require(c.eps_t > 0.0 && c.eps_r > 0.0, n, "eps_t and eps_r must be positive");
+  Require(c.b_t > 0.0 && c.b_m > 0.0, n, "b_T and b_M must be positive");
+  Require(c.m_t >= 1.0 && c.m_m >= 1.0, n, "m_T and m_M must be >= 1");
+}
+
+ModelParameters LoadParameters(const std::string& name_or_path) {
+  for (const auto& [name, json] : internal::BuiltinParameterJson()) {
+    if (name == name_or_path) return ParseParameters(json, name);
+  }
+  std::ifstream file(name_or_path);
+  if (!file) {
+    std::string known;
+    for (const auto& name : BuiltinParameterSetNames()) known += (known.empty() ? "" : ", ") + name;
+    throw std::invalid_argument("unknown parameter set '" + name_or_path +
+                                "' (not a built-in set: " + known + "; not a readable file)");
+  }
+  std::stringstream text;
+  text << file.rdbuf();
+  return ParseParameters(text.str(), name_or_path);
+}
+
+}  // namespace billiard

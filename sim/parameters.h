@@ -1,0 +1,54 @@
+// Physical and contact parameters of a ball on a cloth, as named data sets.
+//
+// The contact parameters follow seed 000: the patch radius a (the paper's \hat a), the Coulomb
+// coefficient mu, the rolling-resistance parameter d (shift of the pressure centre, eq. 1), the
+// regularization parameters eps_t and eps_r (eqs. 14-17) and the approximation's fitted
+// constants b_T, m_T, b_M, m_M (eq. 17). The closed-form model (seed 002) reads the same set:
+// mu_s = mu and mu_r = a d / (5 r) (shared/docs/physics-notes.md, section 2).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace billiard {
+
+struct BallParameters {
+  double radius = 0.0;   // r [m]
+  double mass = 0.0;     // m [kg]
+  double gravity = 0.0;  // g [m/s^2]
+};
+
+struct ContactParameters {
+  double patch_radius = 0.0;  // a [m]
+  double mu = 0.0;            // Coulomb friction coefficient
+  double d = 0.0;             // rolling resistance parameter, 0 <= d <= 1
+  double eps_t = 0.0;         // friction regularization (dimensionless)
+  double eps_r = 0.0;         // rolling-resistance regularization (dimensionless)
+  double b_t = 0.0, m_t = 2.0;
+  double b_m = 0.0, m_m = 2.0;
+};
+
+struct ModelParameters {
+  std::string name;
+  std::string source;  // where the numbers come from
+  BallParameters ball;
+  ContactParameters contact;
+
+  // Rolling-resistance coefficient of the closed-form model that matches this contact.
+  double RollingResistance() const { return contact.patch_radius * contact.d / (5.0 * ball.radius); }
+};
+
+// The names of the built-in parameter sets ("paper", "pool").
+std::vector<std::string> BuiltinParameterSetNames();
+
+// A built-in set by name, or a JSON file by path. Throws std::invalid_argument with a one-line
+// reason on an unknown name, an unreadable file, a missing field or a value out of range.
+ModelParameters LoadParameters(const std::string& name_or_path);
+
+// Parses a parameter set from JSON text (the format of sim/params/*.json).
+ModelParameters ParseParameters(const std::string& json_text, const std::string& origin);
+
+// Throws std::invalid_argument if a value is non-finite or outside its physical range.
+void ValidateParameters(const ModelParameters& p);
+
+}  // namespace billiard

@@ -1,0 +1,107 @@
+#include "simulator.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "ball_dynamics.h"
+#include "closed_form.h"
+
+namespace billiard {
+
+std::string ModelName(Model m) {
+  switch (m) {
+    case Model::kApproximate: return "approx";
+    case Model::kIntegral: return "integral";
+    case Model::kClosedForm: return "closed-form";
+  }
+  return "?";
+}
+
+std::optional<Model> ParseModel(const std::string& name) {
+  for (Model m : {Model::kApproximate, Model::kIntegral, Model::kClosedForm}) {
+    if (ModelName(m) == name) return m;
+  }
+  return std::nullopt;
+}
+
+Rodas4Options IntegratorOptionsFor(const ModelParameters& params, double tolerance) {
+  Rodas4Options o;
+  o.abs_tol << tolerance, tolerance, tolerance, tolerance, tolerance / params.ball.radius,
+      tolerance / params.ball.radius, tolerance / params.ball.radius;
+  return o;
+}
+
+bool HasStopped(const BallState& s, const ModelParameters& params) {
+  const ContactParameters& c = params.contact;
+  const double v_rest = 10.0 * c.eps_r * c.patch_radius;
+  const double u_rest = 10.0 * c.eps_t * c.patch_radius;
+  const double r = params.ball.radius;
+  const double ux = s[kVx] - r * s[kWy], uy = s[kVy] + r * s[kWx];
+  return s.segment<2>(kVx).squaredNorm() < v_rest * v_rest && ux * ux + uy * uy < u_rest * u_rest;
+}
+
+namespace {
+
+template <class Friction>
+SimulationResult Integrate(const ModelParameters& params, Friction friction,
+                           const BallState& initial, double t_end, const SimulationOptions& options) {
+  const BallDynamics<Friction> dynamics(params, std::move(friction));
+  const Rodas4Options integrator = IntegratorOptionsFor(params, options.tolerance);
+  auto dense = std::make_shared<DenseTrajectory>();
+  SimulationResult result;
+  Rodas4Result run;
+  if (options.rest_switch) {
+    run = IntegrateRodas4(dynamics, initial, 0.0, t_end, integrator, &result.stats, dense.get(),
+                          [&params](const BallState& s) { return HasStopped(s, params); });
+  } else {
+    run = IntegrateRodas4(dynamics, initial, 0.0, t_end, integrator, &result.stats, dense.get());
+  }
+  if (run.stopped) {
+    using Pivot = PivotingAtRest<BallDynamics<Friction>>;
+    result.rest_time = run.t;
+    run = IntegrateRodas4(Pivot(dynamics), Pivot::Project(run.state), run.t, t_end, integrator,
+                          &result.stats, dense.get());
+  }
+  result.final_state = run.state;
+  if (dense->size() == 0) {  // t_end = 0: the trajectory is the initial state
+    dense->Append(0.0, 0.0, initial, initial, BallState::Zero(), BallState::Zero());
+  }
+  result.trajectory = std::move(dense);
+  return result;
+}
+
+}  // namespace
+
+SimulationResult Simulate(const ModelParameters& params, const BallState& initial, double t_end,
+                          const SimulationOptions& options) {
+  if (!initial.allFinite()) throw std::invalid_argument("initial state has a non-finite number");
+  if (!std::isfinite(t_end) || t_end < 0.0) {
+    throw std::invalid_argument("end time must be a finite number >= 0");
+  }
+  if (!(options.tolerance > 0.0)) throw std::invalid_argument("tolerance must be positive");
+
+  switch (options.model) {
+    case Model::kApproximate:
+      return Integrate(params, ApproximateFrictionModel{params.contact}, initial, t_end, options);
+    case Model::kIntegral: {
+      const CalibratedQuadrature q = CalibrateQuadrature(
+          params.contact.eps_t, params.contact.d, options.quadrature_tolerance);
+      SimulationResult r =
+          Integrate(params, IntegralFrictionModel{IntegralFriction(q.order), params.contact.eps_t},
+                    initial, t_end, options);
+      r.quadrature = q;
+      return r;
+    }
+    case Model::kClosedForm: {
+      auto trajectory =
+          std::make_shared<ClosedFormTrajectory>(ClosedFormParameters::From(params), initial);
+      SimulationResult r;
+      r.final_state = trajectory->At(t_end);
+      r.trajectory = std::move(trajectory);
+      return r;
+    }
+  }
+  throw std::invalid_argument("unknown model");
+}
+
+}  // namespace billiard

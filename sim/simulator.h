@@ -1,0 +1,60 @@
+// One entry point for simulating a ball with any of the models.
+//
+//   approx       5-DOF model, approximate friction (eq. 17), RODAS4    (default, fast)
+//   integral     5-DOF model, integral friction (eq. 16), RODAS4       (reference)
+//   closed-form  sliding-then-rolling model of seed 002, exact         (no integration)
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "ball_state.h"
+#include "integral_friction.h"
+#include "parameters.h"
+#include "rodas4.h"
+#include "trajectory.h"
+
+namespace billiard {
+
+enum class Model { kApproximate, kIntegral, kClosedForm };
+
+std::string ModelName(Model m);
+// "approx", "integral" or "closed-form"; std::nullopt for anything else.
+std::optional<Model> ParseModel(const std::string& name);
+
+struct SimulationOptions {
+  Model model = Model::kApproximate;
+  // Local error target of the integrator: metres for positions, m/s for velocities and
+  // (rad/s) * r for spins. The default keeps 8 s endpoints within a fraction of a micrometre.
+  double tolerance = 1e-7;
+  // Target error of the integral model's quadrature on |T| and |Ms| (dimensionless).
+  double quadrature_tolerance = 1e-6;
+  // 5-DOF models: once the ball has stopped (|v| < 10 eps_r a and contact slip < 10 eps_t a),
+  // continue with the exact rest dynamics (PivotingAtRest, ball_dynamics.h) instead of resolving
+  // the regularization's creep. What this drops: the last v_rest^2 / (2 * 5/7 mu_r g) of travel
+  // (0.2 um with the paper's parameters) and the creep of a pivoting ball (~10 um over the
+  // seconds a paper-set ball keeps pivoting). Off: integrate the regularized equations to t_end.
+  bool rest_switch = true;
+};
+
+struct SimulationResult {
+  BallState final_state;
+  double rest_time = -1.0;  // when the rest switch took over; -1 if it did not
+  IntegrationStats stats;  // zero for the closed form
+  std::shared_ptr<const Trajectory> trajectory;
+  std::optional<CalibratedQuadrature> quadrature;  // integral model only
+};
+
+// Simulates from `initial` at t = 0 to t_end >= 0. Throws std::invalid_argument on non-finite
+// input or t_end < 0, std::runtime_error if the integrator fails.
+SimulationResult Simulate(const ModelParameters& params, const BallState& initial, double t_end,
+                          const SimulationOptions& options = {});
+
+// Integrator settings for a 5-DOF simulation at the given tolerance (see SimulationOptions).
+Rodas4Options IntegratorOptionsFor(const ModelParameters& params, double tolerance);
+
+// The rest criterion of SimulationOptions::rest_switch.
+bool HasStopped(const BallState& s, const ModelParameters& params);
+
+}  // namespace billiard

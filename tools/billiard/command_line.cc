@@ -1,0 +1,37 @@
+#include "command_line.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace billiard::cli {
+
+std::vector<double> ParseNumberList(const std::string& text, std::size_t count,
+                                    const std::string& what) {
+  std::vector<double> numbers;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string field = text.substr(start, end - start);
+    char* stop = nullptr;
+    errno = 0;
+    const double value = std::strtod(field.c_str(), &stop);
+    if (field.empty() || stop != field.c_str() + field.size() || errno == ERANGE) {
+      throw UsageError(what + ": '" + field + "' is not a number");
+    }
+    RequireFinite(value, what);
+    numbers.push_back(value);
+    start = end + 1;
+  }
+  if (numbers.size() != count) {
+    throw UsageError(what + ": expected " + std::to_string(count) + " comma-separated numbers, got " +
+                     std::to_string(numbers.size()));
+  }
+  return numbers;
+}
+
+void RequireFinite(double value, const std::string& what) {
+  if (!std::isfinite(value)) throw UsageError(what + ": numbers must be finite (no NaN or inf)");
+}
+
+}  // namespace billiard::cli

@@ -1,0 +1,27 @@
+// billiard: simulate a ball, fit the contact model (and, as the project grows, plan and detect).
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "command_line.h"
+#include "fit_contact_command.h"
+#include "simulate_command.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"billiard: ball physics for a billiard-playing robot"};
+  app.require_subcommand(1);
+  billiard::cli::AddSimulateCommand(app);
+  billiard::cli::AddFitContactCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const billiard::cli::UsageError& e) {
+    std::cerr << "billiard: " << e.what() << std::endl;
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "billiard: error: " << e.what() << std::endl;
+    return 1;
+  }
+  return 0;
+}

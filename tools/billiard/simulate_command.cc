@@ -1,0 +1,134 @@
+#include "simulate_command.h"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "command_line.h"
+#include "parameters.h"
+#include "simulator.h"
+
+namespace billiard::cli {
+
+namespace {
+
+struct SimulateArgs {
+  std::string state;
+  double t_end = 0.0;
+  std::string model = "approx";
+  std::string params = "paper";
+  double tol = SimulationOptions{}.tolerance;
+  double quadrature_tol = SimulationOptions{}.quadrature_tolerance;
+  std::string trajectory_path;
+  double sample_dt = 1e-3;
+  bool no_rest_switch = false;
+  bool json = false;
+};
+
+void WriteTrajectoryCsv(const Trajectory& trajectory, double t_end, double dt,
+                        const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw UsageError("cannot write trajectory file '" + path + "'");
+  out.precision(17);
+  out << "t,X,Y,vx,vy,wx,wy,wz\n";
+  const long samples = static_cast<long>(std::ceil(t_end / dt - 1e-9));
+  for (long i = 0; i <= samples; ++i) {
+    const double t = std::min(i * dt, t_end);
+    const BallState s = trajectory.At(t);
+    out << t;
+    for (int j = 0; j < 7; ++j) out << ',' << s[j];
+    out << '\n';
+  }
+  if (!out) throw std::runtime_error("writing trajectory file '" + path + "' failed");
+}
+
+void Run(const SimulateArgs& args) {
+  const auto numbers = ParseNumberList(args.state, 7, "--state X,Y,vx,vy,wx,wy,wz");
+  RequireFinite(args.t_end, "--t-end");
+  if (args.t_end < 0.0) throw UsageError("--t-end must be >= 0");
+  if (!(args.tol > 0.0) || !std::isfinite(args.tol)) throw UsageError("--tol must be positive");
+  if (!(args.sample_dt > 0.0)) throw UsageError("--sample-dt must be positive");
+  const auto model = ParseModel(args.model);
+  if (!model) throw UsageError("--model: unknown model '" + args.model +
+                               "' (approx, integral, closed-form)");
+  ModelParameters params;
+  try {
+    params = LoadParameters(args.params);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--params: ") + e.what());
+  }
+
+  const BallState initial = Eigen::Map<const BallState>(numbers.data());
+  SimulationOptions options;
+  options.model = *model;
+  options.tolerance = args.tol;
+  options.quadrature_tolerance = args.quadrature_tol;
+  options.rest_switch = !args.no_rest_switch;
+  const auto start = std::chrono::steady_clock::now();
+  const SimulationResult result = Simulate(params, initial, args.t_end, options);
+  const double wall_us =
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+
+  if (!args.trajectory_path.empty()) {
+    WriteTrajectoryCsv(*result.trajectory, args.t_end, args.sample_dt, args.trajectory_path);
+  }
+
+  const BallState& s = result.final_state;
+  if (args.json) {
+    nlohmann::json j;
+    j["model"] = ModelName(*model);
+    j["params"] = params.name;
+    j["t"] = args.t_end;
+    j["state"] = std::vector<double>(s.data(), s.data() + 7);
+    j["steps"] = result.stats.steps;
+    j["rejected_steps"] = result.stats.rejected_steps;
+    j["rhs_evals"] = result.stats.rhs_evals;
+    j["jacobian_evals"] = result.stats.jacobian_evals;
+    j["wall_us"] = wall_us;
+    j["tol"] = args.tol;
+    if (result.rest_time >= 0.0) j["rest_time"] = result.rest_time;
+    if (result.quadrature) {
+      j["quadrature"] = {{"angular_nodes", result.quadrature->order.angular},
+                         {"radial_nodes", result.quadrature->order.radial},
+                         {"error_estimate", result.quadrature->error_estimate}};
+    }
+    std::cout << j.dump() << std::endl;
+  } else {
+    std::cerr << ModelName(*model) << " model, " << params.name << " parameters, t = " << args.t_end
+              << " s\n  X, Y   = " << s[kX] << ", " << s[kY] << " m\n  vx, vy = " << s[kVx] << ", "
+              << s[kVy] << " m/s\n  w      = " << s[kWx] << ", " << s[kWy] << ", " << s[kWz]
+              << " rad/s\n  " << result.stats.steps << " steps, " << result.stats.rhs_evals
+              << " rhs evaluations, " << wall_us << " us\n";
+  }
+}
+
+}  // namespace
+
+void AddSimulateCommand(CLI::App& app) {
+  auto args = std::make_shared<SimulateArgs>();
+  CLI::App* cmd = app.add_subcommand("simulate", "Simulate one ball from an initial state");
+  cmd->add_option("--state", args->state,
+                  "Initial state X,Y,vx,vy,wx,wy,wz [m, m/s, rad/s] (write --state=-1,... "
+                  "when it starts with a minus sign)")
+      ->required();
+  cmd->add_option("--t-end", args->t_end, "End time [s]")->required();
+  cmd->add_option("--model", args->model, "approx | integral | closed-form")->capture_default_str();
+  cmd->add_option("--params", args->params, "paper | pool | path to a JSON parameter file")
+      ->capture_default_str();
+  cmd->add_option("--tol", args->tol, "Integrator local error target [m]")->capture_default_str();
+  cmd->add_option("--quadrature-tol", args->quadrature_tol,
+                  "Integral model: quadrature error target")
+      ->capture_default_str();
+  cmd->add_option("--trajectory", args->trajectory_path, "Write the sampled trajectory as CSV");
+  cmd->add_option("--sample-dt", args->sample_dt, "Trajectory sampling interval [s]")
+      ->capture_default_str();
+  cmd->add_flag("--no-rest-switch", args->no_rest_switch,
+                "5-DOF models: integrate the regularized equations through the rest phase too");
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
+  cmd->callback([args] { Run(*args); });
+}
+
+}  // namespace billiard::cli
