@@ -1,0 +1,130 @@
+// The billiard tool as a user runs it: JSON on stdout, one-line reasons and non-zero exits on bad
+// input, and the acceptance runs of the physics core.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+struct CommandResult {
+  int status;
+  std::string out;  // stdout and stderr, when asked
+};
+
+CommandResult Billiard(const std::string& args, bool merge_stderr = false) {
+  const std::string command =
+      std::string(BILLIARD_BIN) + " " + args + (merge_stderr ? " 2>&1" : " 2>/dev/null");
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buffer;
+  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+nlohmann::json Json(const std::string& args) {
+  const CommandResult r = Billiard(args);
+  EXPECT_EQ(r.status, 0) << args;
+  return nlohmann::json::parse(r.out);
+}
+
+const char* kFigures[] = {"0,0,0,1,-50,0,0", "0,0,0,1,-50,5,0", "0,0,0,1,150,5,0",
+                          "0,0,0,1,-50,-3.5,-150", "0,0,0,1,150,0,-150"};
+
+TEST(BilliardSimulate, PrintsTheDocumentedJsonObject) {
+  const auto j = Json("simulate --state 0,0,0,1,-50,0,0 --t-end 8 --json");
+  EXPECT_EQ(j["model"], "approx");
+  EXPECT_EQ(j["t"], 8.0);
+  ASSERT_EQ(j["state"].size(), 7u);
+  EXPECT_NEAR(j["state"][1].get<double>(), 2.3785, 1e-4);
+  EXPECT_GT(j["steps"].get<long>(), 0);
+  EXPECT_GT(j["rhs_evals"].get<long>(), j["steps"].get<long>());
+  EXPECT_GT(j["wall_us"].get<double>(), 0.0);
+}
+
+TEST(BilliardSimulate, ApproxEndpointsAgreeWhenTheToleranceIsTightenedHundredfold) {
+  for (const char* state : kFigures) {
+    const std::string base = std::string("simulate --state ") + state + " --t-end 8 --json";
+    const auto a = Json(base), b = Json(base + " --tol 1e-9");
+    EXPECT_NEAR(a["state"][0].get<double>(), b["state"][0].get<double>(), 1e-6) << state;
+    EXPECT_NEAR(a["state"][1].get<double>(), b["state"][1].get<double>(), 1e-6) << state;
+    std::fprintf(stderr, "approx %-24s %7.1f us, %ld steps\n", state,
+                 a["wall_us"].get<double>(), a["steps"].get<long>());
+  }
+}
+
+TEST(BilliardSimulate, EveryModelRunsEveryPaperFigure) {
+  for (const char* model : {"closed-form", "integral"}) {
+    for (const char* state : kFigures) {
+      const auto j = Json(std::string("simulate --state ") + state + " --t-end 8 --json --model " +
+                          model);
+      EXPECT_EQ(j["model"], model);
+      for (const auto& x : j["state"]) EXPECT_TRUE(std::isfinite(x.get<double>()));
+      if (std::string(model) == "integral") {
+        EXPECT_LE(j["quadrature"]["error_estimate"].get<double>(), 1e-6);
+      }
+    }
+  }
+}
+
+TEST(BilliardSimulate, WritesTheTrajectoryAsCsv) {
+  const std::string path = ::testing::TempDir() + "/trajectory.csv";
+  Json("simulate --state 0,0,0,1,-50,0,0 --t-end 1 --sample-dt 0.1 --json --trajectory " + path);
+  FILE* f = std::fopen(path.c_str(), "r");
+  ASSERT_NE(f, nullptr);
+  int lines = 0;
+  for (int c; (c = std::fgetc(f)) != EOF;) lines += c == '\n';
+  std::fclose(f);
+  EXPECT_EQ(lines, 12);  // header and t = 0, 0.1, ..., 1
+  std::remove(path.c_str());
+}
+
+TEST(BilliardSimulate, BadInputExitsNonZeroWithAOneLineReason) {
+  const char* bad[] = {
+      "simulate --state 0,0,0,nan,0,0,0 --t-end 1 --json",
+      "simulate --state 0,0,0,1,0,0 --t-end 1 --json",
+      "simulate --state 0,0,0,1,0,0,0,0 --t-end 1 --json",
+      "simulate --state 0,0,0,1,x,0,0 --t-end 1 --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end=-1 --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --model magic --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --params no-such-set --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end inf --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --tol 0 --json",
+  };
+  for (const char* args : bad) {
+    const CommandResult r = Billiard(args, true);
+    EXPECT_NE(r.status, 0) << args;
+    EXPECT_EQ(r.out.find('{'), std::string::npos) << args;  // no JSON on failure
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
+  }
+}
+
+TEST(BilliardSimulate, NegativeNumbersAreAcceptedWithEquals) {
+  const auto j = Json("simulate --state=-1,0,0,1,-50,0,0 --t-end 1 --json");
+  EXPECT_EQ(j["state"][0], -1.0);
+}
+
+TEST(BilliardFitContact, ReproducesThePaperTable) {
+  const auto fixed = Json("fit-contact --fix-m 2 --json");
+  EXPECT_NEAR(fixed["bT"].get<double>(), 0.68102, 0.02 * 0.68102);
+  EXPECT_NEAR(fixed["bM"].get<double>(), 0.480909, 0.02 * 0.480909);
+  EXPECT_EQ(fixed["mT"], 2.0);
+  const auto free = Json("fit-contact --json");
+  EXPECT_NEAR(free["bT"].get<double>(), 0.771, 0.05 * 0.771);
+  EXPECT_NEAR(free["mT"].get<double>(), 2.655, 0.05 * 2.655);
+  EXPECT_NEAR(free["bM"].get<double>(), 0.419, 0.05 * 0.419);
+  EXPECT_NEAR(free["mM"].get<double>(), 3.073, 0.05 * 3.073);
+  EXPECT_LT(free["cost"].get<double>(), fixed["cost"].get<double>());
+}
+
+TEST(BilliardFitContact, RejectsAnExponentBelowOne) {
+  EXPECT_NE(Billiard("fit-contact --fix-m 0.5 --json").status, 0);
+}
+
+}  // namespace
