@@ -26,8 +26,8 @@ std::optional<Model> ParseModel(const std::string& name) {
 
 Rodas4Options IntegratorOptionsFor(const ModelParameters& params, double tolerance) {
   Rodas4Options o;
-  o.abs_tol << tolerance, tolerance, tolerance, tolerance, tolerance / params.ball.radius,
-      tolerance / params.ball.radius, tolerance / params.ball.radius;
+  const double spin_tol = tolerance / params.ball.radius;
+  o.abs_tol << tolerance, tolerance, tolerance, tolerance, spin_tol, spin_tol, spin_tol;
   return o;
 }
 
