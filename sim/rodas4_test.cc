@@ -47,13 +47,17 @@ LinearProblem StiffProblem() {
   return p;
 }
 
+Rodas4Options Tolerance(double tol) {
+  Rodas4Options options;
+  options.abs_tol = BallState::Constant(tol);
+  return options;
+}
+
 TEST(Rodas4, StiffLinearProblemIsAccurateAndTakesFewSteps) {
   const LinearProblem p = StiffProblem();
   const BallState x0 = BallState::Constant(1.0);
-  Rodas4Options options;
-  options.abs_tol = BallState::Constant(1e-9);
   IntegrationStats stats;
-  const Rodas4Result r = IntegrateRodas4(p.system, x0, 0.0, 5.0, options, &stats);
+  const Rodas4Result r = IntegrateRodas4(p.system, x0, 0.0, 5.0, Tolerance(1e-9), &stats);
   EXPECT_EQ(r.t, 5.0);
   EXPECT_LT((r.state - p.Exact(x0, 5.0)).norm(), 1e-7);
   // An explicit method would need ~ 5 s * 1e6 / 3 steps for stability alone.
@@ -65,9 +69,7 @@ TEST(Rodas4, GlobalErrorFallsWithTheTolerance) {
   const BallState x0 = BallState::Constant(1.0);
   double previous = 1.0;
   for (double tol : {1e-4, 1e-6, 1e-8, 1e-10}) {
-    Rodas4Options options;
-    options.abs_tol = BallState::Constant(tol);
-    const Rodas4Result r = IntegrateRodas4(p.system, x0, 0.0, 2.0, options, nullptr);
+    const Rodas4Result r = IntegrateRodas4(p.system, x0, 0.0, 2.0, Tolerance(tol), nullptr);
     const double error = (r.state - p.Exact(x0, 2.0)).norm();
     EXPECT_LT(error, previous);
     EXPECT_LT(error, 100 * tol);
@@ -78,10 +80,8 @@ TEST(Rodas4, GlobalErrorFallsWithTheTolerance) {
 TEST(Rodas4, DenseOutputInterpolatesBetweenSteps) {
   const LinearProblem p = StiffProblem();
   const BallState x0 = BallState::Constant(1.0);
-  Rodas4Options options;
-  options.abs_tol = BallState::Constant(1e-9);
   DenseTrajectory dense;
-  IntegrateRodas4(p.system, x0, 0.0, 3.0, options, nullptr, &dense);
+  IntegrateRodas4(p.system, x0, 0.0, 3.0, Tolerance(1e-9), nullptr, &dense);
   for (double t = 0.013; t < 3.0; t += 0.0517) {
     EXPECT_LT((dense.At(t) - p.Exact(x0, t)).norm(), 1e-6) << t;
   }
