@@ -3,7 +3,6 @@
 #include <ceres/ceres.h>
 
 #include <cmath>
-#include <memory>
 #include <stdexcept>
 #include <vector>
 

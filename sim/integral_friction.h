@@ -146,7 +146,6 @@ void IntegralFriction::IcrOutside(const ContactKinematics<T>& k, const T& cx, co
   using std::asin;
   using std::atan2;
   using std::cos;
-  using std::max;
   using std::sin;
   using std::sqrt;
   constexpr double kHalfPi = 1.57079632679489661923;
