@@ -6,9 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 json=false
 [ "${1:-}" = "--json" ] && json=true
-bash launch_scripts/setup.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j2 >&2
+bash launch_scripts/build.sh
 
 figures=("0,0,0,1,-50,0,0" "0,0,0,1,-50,5,0" "0,0,0,1,150,5,0" "0,0,0,1,-50,-3.5,-150" "0,0,0,1,150,0,-150")
 printf '%-6s %-12s %12s %12s %8s %12s\n' fig model X_m Y_m steps wall_us >&2

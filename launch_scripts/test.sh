@@ -2,7 +2,5 @@
 # The README's test command: install what is missing, configure, build with -j2, run every test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash launch_scripts/setup.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j2
+bash launch_scripts/build.sh
 ctest --test-dir build --output-on-failure -j2
