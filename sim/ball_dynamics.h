@@ -95,40 +95,4 @@ class BallDynamics {
   Friction friction_;
 };
 
-// The ball at rest on the cloth, pivoting about the vertical: the dynamics restricted to the
-// invariant set v = 0, wx = wy = 0, where only wz evolves (friction moment of pure spin). On that
-// set the regularized 5-DOF equations are unstable: a pivoting ball creeps and wobbles at the
-// regularization scale (|v| ~ eps_r a, |wx|, |wy| ~ 1 rad/s), an artifact of the smoothing that a
-// real ball does not show and that costs an integrator thousands of steps to resolve.
-template <class Dynamics>
-class PivotingAtRest {
- public:
-  explicit PivotingAtRest(const Dynamics& full) : full_(full) {}
-
-  // Puts a ball that has stopped onto the invariant set.
-  static BallState Project(BallState s) {
-    s.segment<4>(kVx).setZero();
-    return s;
-  }
-
-  BallState Derivative(const BallState& s) const {
-    BallState ds = BallState::Zero();
-    ds[kWz] = full_.Derivative(s)[kWz];
-    return ds;
-  }
-
-  void DerivativeAndJacobian(const BallState& s, BallState* ds, StateJacobian* jac) const {
-    StateJacobian full_jac;
-    full_.DerivativeAndJacobian(s, ds, &full_jac);
-    const double dwz = (*ds)[kWz];
-    ds->setZero();
-    (*ds)[kWz] = dwz;
-    jac->setZero();
-    (*jac)(kWz, kWz) = full_jac(kWz, kWz);
-  }
-
- private:
-  const Dynamics& full_;
-};
-
 }  // namespace billiard

@@ -96,17 +96,5 @@ TEST(BallDynamics, ConvergesToTheClosedFormAsRegularizationVanishes) {
   EXPECT_LT(previous, 1e-5);
 }
 
-TEST(BallDynamics, PivotingAtRestKeepsTheBallOnItsInvariantSet) {
-  const ModelParameters p = testing::PaperParameters();
-  const BallDynamics<ApproximateFrictionModel> full(p, {p.contact});
-  const PivotingAtRest<BallDynamics<ApproximateFrictionModel>> pivot(full);
-  const BallState s = MakeBallState(0.5, 0.5, 0, 0, 0, 0, 40.0);
-  // On the set the full dynamics itself moves only wz.
-  const BallState f = full.Derivative(s);
-  EXPECT_EQ(f.head<6>().norm(), 0.0);
-  EXPECT_EQ(pivot.Derivative(s), f);
-  EXPECT_LT(f[kWz], 0.0);
-}
-
 }  // namespace
 }  // namespace billiard

@@ -5,6 +5,7 @@
 
 #include "ball_dynamics.h"
 #include "closed_form.h"
+#include "rest.h"
 
 namespace billiard {
 
@@ -31,15 +32,6 @@ Rodas4Options IntegratorOptionsFor(const ModelParameters& params, double toleran
   return o;
 }
 
-bool HasStopped(const BallState& s, const ModelParameters& params) {
-  const ContactParameters& c = params.contact;
-  const double v_rest = 10.0 * c.eps_r * c.patch_radius;
-  const double u_rest = 10.0 * c.eps_t * c.patch_radius;
-  const double r = params.ball.radius;
-  const double ux = s[kVx] - r * s[kWy], uy = s[kVy] + r * s[kWx];
-  return s.segment<2>(kVx).squaredNorm() < v_rest * v_rest && ux * ux + uy * uy < u_rest * u_rest;
-}
-
 namespace {
 
 template <class Friction>
@@ -52,15 +44,18 @@ SimulationResult Integrate(const ModelParameters& params, Friction friction,
   Rodas4Result run;
   if (options.rest_switch) {
     run = IntegrateRodas4(dynamics, initial, 0.0, t_end, integrator, &result.stats, dense.get(),
-                          [&params](const BallState& s) { return HasStopped(s, params); });
+                          [&dynamics](const BallState& s) {
+                            return ClassifyRest(s, dynamics) != RestKind::kMoving;
+                          });
   } else {
     run = IntegrateRodas4(dynamics, initial, 0.0, t_end, integrator, &result.stats, dense.get());
   }
   if (run.stopped) {
-    using Pivot = PivotingAtRest<BallDynamics<Friction>>;
+    const BallAtRest<BallDynamics<Friction>> rest(dynamics, run.state,
+                                                  ClassifyRest(run.state, dynamics));
     result.rest_time = run.t;
-    run = IntegrateRodas4(Pivot(dynamics), Pivot::Project(run.state), run.t, t_end, integrator,
-                          &result.stats, dense.get());
+    run = IntegrateRodas4(rest, rest.start(), run.t, t_end, integrator, &result.stats,
+                          dense.get());
   }
   result.final_state = run.state;
   if (dense->size() == 0) {  // t_end = 0: the trajectory is the initial state

@@ -30,11 +30,11 @@ struct SimulationOptions {
   double tolerance = 1e-7;
   // Target error of the integral model's quadrature on |T| and |Ms| (dimensionless).
   double quadrature_tolerance = 1e-6;
-  // 5-DOF models: once the ball has stopped (|v| < 10 eps_r a and contact slip < 10 eps_t a),
-  // continue with the exact rest dynamics (PivotingAtRest, ball_dynamics.h) instead of resolving
-  // the regularization's creep. What this drops: the last v_rest^2 / (2 * 5/7 mu_r g) of travel
-  // (0.2 um with the paper's parameters) and the creep of a pivoting ball (~10 um over the
-  // seconds a paper-set ball keeps pivoting). Off: integrate the regularized equations to t_end.
+  // 5-DOF models: once the ball has stopped (ClassifyRest, rest.h), continue with the averaged
+  // rest dynamics (BallAtRest) instead of resolving the regularization's creep and precession.
+  // What this drops: the last v_rest^2 / (2 * 5/7 mu_r g) of travel (0.2 um with the paper's
+  // parameters) and, for a ball that stops while pivoting, its circling about the reported centre
+  // (radius |v|^2/|dv/dt|, tens of um). Off: integrate the regularized equations to t_end.
   bool rest_switch = true;
 };
 
@@ -53,8 +53,5 @@ SimulationResult Simulate(const ModelParameters& params, const BallState& initia
 
 // Integrator settings for a 5-DOF simulation at the given tolerance (see SimulationOptions).
 Rodas4Options IntegratorOptionsFor(const ModelParameters& params, double tolerance);
-
-// The rest criterion of SimulationOptions::rest_switch.
-bool HasStopped(const BallState& s, const ModelParameters& params);
 
 }  // namespace billiard
