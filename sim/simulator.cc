@@ -5,6 +5,8 @@
 
 #include "ball_dynamics.h"
 #include "closed_form.h"
+#include "dopri5.h"
+#include "rodas4.h"
 #include "rest.h"
 
 namespace billiard {
@@ -25,8 +27,19 @@ std::optional<Model> ParseModel(const std::string& name) {
   return std::nullopt;
 }
 
-Rodas4Options IntegratorOptionsFor(const ModelParameters& params, double tolerance) {
-  Rodas4Options o;
+std::string IntegratorName(Integrator i) {
+  return i == Integrator::kDopri5 ? "dopri5" : "rodas4";
+}
+
+std::optional<Integrator> ParseIntegrator(const std::string& name) {
+  for (Integrator i : {Integrator::kRodas4, Integrator::kDopri5}) {
+    if (IntegratorName(i) == name) return i;
+  }
+  return std::nullopt;
+}
+
+IntegratorOptions IntegratorOptionsFor(const ModelParameters& params, double tolerance) {
+  IntegratorOptions o;
   const double spin_tol = tolerance / params.ball.radius;
   o.abs_tol << tolerance, tolerance, tolerance, tolerance, spin_tol, spin_tol, spin_tol;
   return o;
@@ -34,28 +47,41 @@ Rodas4Options IntegratorOptionsFor(const ModelParameters& params, double toleran
 
 namespace {
 
+// Runs `system` with the chosen integrator.
+template <class System, class Stop = NeverStop>
+IntegrationResult Run(Integrator integrator, const System& system, const BallState& x0, double t0,
+                      double t_end, const IntegratorOptions& options, IntegrationStats* stats,
+                      DenseTrajectory* dense, const Stop& stop = Stop()) {
+  if (integrator == Integrator::kDopri5) {
+    return IntegrateDopri5(system, x0, t0, t_end, options, stats, dense, stop);
+  }
+  return IntegrateRodas4(system, x0, t0, t_end, options, stats, dense, stop);
+}
+
 template <class Friction>
 SimulationResult Integrate(const ModelParameters& params, Friction friction,
                            const BallState& initial, double t_end, const SimulationOptions& options) {
   const BallDynamics<Friction> dynamics(params, std::move(friction));
-  const Rodas4Options integrator = IntegratorOptionsFor(params, options.tolerance);
+  IntegratorOptions integrator = IntegratorOptionsFor(params, options.tolerance);
+  integrator.max_steps = options.max_steps;
   auto dense = std::make_shared<DenseTrajectory>();
   SimulationResult result;
-  Rodas4Result run;
+  IntegrationResult run;
   if (options.rest_switch) {
-    run = IntegrateRodas4(dynamics, initial, 0.0, t_end, integrator, &result.stats, dense.get(),
-                          [&dynamics](const BallState& s) {
-                            return ClassifyRest(s, dynamics) != RestKind::kMoving;
-                          });
+    run = Run(options.integrator, dynamics, initial, 0.0, t_end, integrator, &result.stats,
+              dense.get(), [&dynamics](const BallState& s) {
+                return ClassifyRest(s, dynamics) != RestKind::kMoving;
+              });
   } else {
-    run = IntegrateRodas4(dynamics, initial, 0.0, t_end, integrator, &result.stats, dense.get());
+    run = Run(options.integrator, dynamics, initial, 0.0, t_end, integrator, &result.stats,
+              dense.get());
   }
   if (run.stopped) {
     const BallAtRest<BallDynamics<Friction>> rest(dynamics, run.state,
                                                   ClassifyRest(run.state, dynamics));
     result.rest_time = run.t;
-    run = IntegrateRodas4(rest, rest.start(), run.t, t_end, integrator, &result.stats,
-                          dense.get());
+    run = Run(options.integrator, rest, rest.start(), run.t, t_end, integrator, &result.stats,
+              dense.get());
   }
   result.final_state = run.state;
   if (dense->size() == 0) {  // t_end = 0: the trajectory is the initial state

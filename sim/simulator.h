@@ -12,7 +12,7 @@
 #include "ball_state.h"
 #include "integral_friction.h"
 #include "parameters.h"
-#include "rodas4.h"
+#include "integrator.h"
 #include "trajectory.h"
 
 namespace billiard {
@@ -23,8 +23,17 @@ std::string ModelName(Model m);
 // "approx", "integral" or "closed-form"; std::nullopt for anything else.
 std::optional<Model> ParseModel(const std::string& name);
 
+// Integrators of the 5-DOF models: RODAS4 (L-stable Rosenbrock, the default) and DOPRI5 (the
+// explicit baseline that shows what the stiffness costs).
+enum class Integrator { kRodas4, kDopri5 };
+
+std::string IntegratorName(Integrator i);
+// "rodas4" or "dopri5"; std::nullopt for anything else.
+std::optional<Integrator> ParseIntegrator(const std::string& name);
+
 struct SimulationOptions {
   Model model = Model::kApproximate;
+  Integrator integrator = Integrator::kRodas4;
   // Local error target of the integrator: metres for positions, m/s for velocities and
   // (rad/s) * r for spins. The default keeps 8 s endpoints within a fraction of a micrometre.
   double tolerance = 1e-7;
@@ -36,6 +45,8 @@ struct SimulationOptions {
   // parameters) and, for a ball that stops while pivoting, its circling about the reported centre
   // (radius |v|^2/|dv/dt|, tens of um). Off: integrate the regularized equations to t_end.
   bool rest_switch = true;
+  // Attempted steps before the integrator gives up (std::runtime_error).
+  long max_steps = IntegratorOptions().max_steps;
 };
 
 struct SimulationResult {
@@ -52,6 +63,6 @@ SimulationResult Simulate(const ModelParameters& params, const BallState& initia
                           const SimulationOptions& options = {});
 
 // Integrator settings for a 5-DOF simulation at the given tolerance (see SimulationOptions).
-Rodas4Options IntegratorOptionsFor(const ModelParameters& params, double tolerance);
+IntegratorOptions IntegratorOptionsFor(const ModelParameters& params, double tolerance);
 
 }  // namespace billiard

@@ -3,9 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
 #include <array>
+#include <cmath>
 
+#include "ball_dynamics.h"
 #include "ball_state.h"
+#include "integrator.h"
 #include "parameters.h"
 #include "trajectory.h"
 
@@ -34,6 +38,46 @@ inline void ExpectEnergyNeverRises(const Trajectory& trajectory, const ModelPara
     EXPECT_LE(e, previous * (1 + rel_slack) + abs_slack) << "t = " << t;
     previous = e;
   }
+}
+
+// x' = A x with A = V diag(lambda) V^-1 and a fixed, well-conditioned V: a problem with known
+// solution V exp(lambda t) V^-1 x0 for testing the integrators.
+struct LinearSystem {
+  StateJacobian a;
+  BallState Derivative(const BallState& x) const { return a * x; }
+  void DerivativeAndJacobian(const BallState& x, BallState* f, StateJacobian* jac) const {
+    *f = a * x;
+    *jac = a;
+  }
+};
+
+struct LinearProblem {
+  LinearSystem system;
+  StateJacobian v, v_inv;
+  BallState lambda;
+  BallState Exact(const BallState& x0, double t) const {
+    return v * (lambda * t).array().exp().matrix().asDiagonal() * (v_inv * x0);
+  }
+};
+
+inline IntegratorOptions UniformTolerance(double tol) {
+  IntegratorOptions options;
+  options.abs_tol = BallState::Constant(tol);
+  return options;
+}
+
+inline LinearProblem MakeLinearProblem(const BallState& lambda) {
+  LinearProblem p;
+  p.lambda = lambda;
+  p.v = StateJacobian::Identity();
+  for (int i = 0; i < 7; ++i) {
+    for (int j = 0; j < 7; ++j) {
+      if (i != j) p.v(i, j) = 0.1 * std::sin(1.0 + i + 2.0 * j);
+    }
+  }
+  p.v_inv = p.v.inverse();
+  p.system.a = p.v * p.lambda.asDiagonal() * p.v_inv;
+  return p;
 }
 
 }  // namespace billiard::testing

@@ -19,6 +19,7 @@ struct SimulateArgs {
   std::string state;
   double t_end = 0.0;
   std::string model = "approx";
+  std::string integrator = "rodas4";
   std::string params = "paper";
   double tol = SimulationOptions{}.tolerance;
   double quadrature_tol = SimulationOptions{}.quadrature_tolerance;
@@ -54,6 +55,9 @@ void Run(const SimulateArgs& args) {
   const auto model = ParseModel(args.model);
   if (!model) throw UsageError("--model: unknown model '" + args.model +
                                "' (approx, integral, closed-form)");
+  const auto integrator = ParseIntegrator(args.integrator);
+  if (!integrator) throw UsageError("--integrator: unknown integrator '" + args.integrator +
+                                    "' (rodas4, dopri5)");
   ModelParameters params;
   try {
     params = LoadParameters(args.params);
@@ -64,6 +68,7 @@ void Run(const SimulateArgs& args) {
   const BallState initial = Eigen::Map<const BallState>(numbers.data());
   SimulationOptions options;
   options.model = *model;
+  options.integrator = *integrator;
   options.tolerance = args.tol;
   options.quadrature_tolerance = args.quadrature_tol;
   options.rest_switch = !args.no_rest_switch;
@@ -80,6 +85,7 @@ void Run(const SimulateArgs& args) {
   if (args.json) {
     nlohmann::json j;
     j["model"] = ModelName(*model);
+    if (*model != Model::kClosedForm) j["integrator"] = IntegratorName(*integrator);
     j["params"] = params.name;
     j["t"] = args.t_end;
     j["state"] = std::vector<double>(s.data(), s.data() + 7);
@@ -116,6 +122,9 @@ void AddSimulateCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--t-end", args->t_end, "End time [s]")->required();
   cmd->add_option("--model", args->model, "approx | integral | closed-form")->capture_default_str();
+  cmd->add_option("--integrator", args->integrator,
+                  "5-DOF models: rodas4 (stiff, default) | dopri5 (explicit baseline)")
+      ->capture_default_str();
   cmd->add_option("--params", args->params, "paper | pool | path to a JSON parameter file")
       ->capture_default_str();
   cmd->add_option("--tol", args->tol, "Integrator local error target [m]")->capture_default_str();
