@@ -42,7 +42,7 @@ ModelParameters ParseParameters(const std::string& json_text, const std::string&
   } catch (const nlohmann::json::parse_error& e) {
     throw std::invalid_argument(origin + ": not valid JSON (" + e.what() + ")");
   }
-  for (const char* section : {"ball", "contact"}) {
+  for (const char* section : {"ball", "contact", "cue", "table"}) {
     if (!j.is_object() || !j.contains(section) || !j.at(section).is_object()) {
       throw std::invalid_argument(origin + ": missing object \"" + section + "\"");
     }
@@ -63,6 +63,12 @@ ModelParameters ParseParameters(const std::string& json_text, const std::string&
   c.m_t = Number(j, "contact", "m_t", origin);
   c.b_m = Number(j, "contact", "b_m", origin);
   c.m_m = Number(j, "contact", "m_m", origin);
+  p.cue.mass = Number(j, "cue", "mass", origin);
+  p.cue.tip_restitution = Number(j, "cue", "tip_restitution", origin);
+  p.cue.max_tip_offset = Number(j, "cue", "max_tip_offset", origin);
+  p.cue.max_speed = Number(j, "cue", "max_speed", origin);
+  p.table.length = Number(j, "table", "length", origin);
+  p.table.width = Number(j, "table", "width", origin);
   ValidateParameters(p);
   return p;
 }
@@ -71,7 +77,8 @@ void ValidateParameters(const ModelParameters& p) {
   const std::string& n = p.name;
   const ContactParameters& c = p.contact;
   for (double v : {p.ball.radius, p.ball.mass, p.ball.gravity, c.patch_radius, c.mu, c.d, c.eps_t,
-                   c.eps_r, c.b_t, c.m_t, c.b_m, c.m_m}) {
+                   c.eps_r, c.b_t, c.m_t, c.b_m, c.m_m, p.cue.mass, p.cue.tip_restitution,
+                   p.cue.max_tip_offset, p.cue.max_speed, p.table.length, p.table.width}) {
     Require(std::isfinite(v), n, "every parameter must be a finite number");
   }
   Require(p.ball.radius > 0.0 && p.ball.mass > 0.0 && p.ball.gravity > 0.0, n,
@@ -83,6 +90,13 @@ void ValidateParameters(const ModelParameters& p) {
   Require(c.eps_t > 0.0 && c.eps_r > 0.0, n, "eps_t and eps_r must be positive");
   Require(c.b_t > 0.0 && c.b_m > 0.0, n, "b_T and b_M must be positive");
   Require(c.m_t >= 1.0 && c.m_m >= 1.0, n, "m_T and m_M must be >= 1");
+  Require(p.cue.mass > 0.0 && p.cue.max_speed > 0.0, n, "cue mass and top speed must be positive");
+  Require(p.cue.tip_restitution >= 0.0 && p.cue.tip_restitution <= 1.0, n,
+          "cue tip restitution must lie in [0, 1]");
+  Require(p.cue.max_tip_offset > 0.0 && p.cue.max_tip_offset < 1.0, n,
+          "cue max_tip_offset is a fraction of the radius in (0, 1)");
+  Require(p.table.length > 2.0 * p.ball.radius && p.table.width > 2.0 * p.ball.radius, n,
+          "the table must be larger than the ball");
 }
 
 ModelParameters LoadParameters(const std::string& name_or_path) {

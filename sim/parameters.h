@@ -28,11 +28,27 @@ struct ContactParameters {
   double b_m = 0.0, m_m = 2.0;
 };
 
+// The robot's cue (Alciatore, The Illustrated Principles of Pool and Billiards, TP A.30).
+struct CueParameters {
+  double mass = 0.0;             // M [kg]
+  double tip_restitution = 0.0;  // e, 0..1
+  double max_tip_offset = 0.0;   // largest tip offset from the ball centre, as a fraction of r
+  double max_speed = 0.0;        // fastest cue stroke the robot gives [m/s]
+};
+
+// The playing surface: origin at a corner, x along the long side [m].
+struct TableParameters {
+  double length = 0.0;
+  double width = 0.0;
+};
+
 struct ModelParameters {
   std::string name;
   std::string source;  // where the numbers come from
   BallParameters ball;
   ContactParameters contact;
+  CueParameters cue;
+  TableParameters table;
 
   // Rolling-resistance coefficient of the closed-form model that matches this contact.
   double RollingResistance() const { return contact.patch_radius * contact.d / (5.0 * ball.radius); }

@@ -42,10 +42,14 @@ TEST(Parameters, LoadsAFile) {
   const std::string path = ::testing::TempDir() + "/custom_params.json";
   std::ofstream(path) << R"({"name":"mine","ball":{"radius":0.03,"mass":0.2,"gravity":9.8},
     "contact":{"patch_radius":0.002,"mu":0.15,"d":0.5,"eps_t":0.01,"eps_r":0.02,
-               "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2}})";
+               "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2},
+    "cue":{"mass":0.5,"tip_restitution":0.8,"max_tip_offset":0.5,"max_speed":5},
+    "table":{"length":2.84,"width":1.42}})";
   const ModelParameters p = LoadParameters(path);
   EXPECT_EQ(p.name, "mine");
   EXPECT_EQ(p.contact.eps_r, 0.02);
+  EXPECT_EQ(p.cue.tip_restitution, 0.8);
+  EXPECT_EQ(p.table.length, 2.84);
   std::remove(path.c_str());
 }
 
@@ -55,15 +59,22 @@ TEST(Parameters, RejectsUnknownNamesBadJsonMissingFieldsAndBadValues) {
   EXPECT_THROW(ParseParameters(R"({"ball":{}})", "t"), std::invalid_argument);
   const std::string good = R"({"ball":{"radius":0.03,"mass":0.2,"gravity":9.8},
     "contact":{"patch_radius":0.002,"mu":0.15,"d":D,"eps_t":0.01,"eps_r":0.02,
-               "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2}})";
-  const auto with_d = [&](const std::string& d) {
+               "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2},
+    "cue":{"mass":0.5,"tip_restitution":E,"max_tip_offset":0.5,"max_speed":5},
+    "table":{"length":2.84,"width":1.42}})";
+  const auto with = [&](const std::string& d, const std::string& e) {
     std::string s = good;
     s.replace(s.find("D"), 1, d);
+    s.replace(s.find("E"), 1, e);
     return s;
   };
+  const auto with_d = [&](const std::string& d) { return with(d, "0.8"); };
   EXPECT_NO_THROW(ParseParameters(with_d("0.5"), "t"));
   EXPECT_THROW(ParseParameters(with_d("1.5"), "t"), std::invalid_argument);
   EXPECT_THROW(ParseParameters(with_d("\"x\""), "t"), std::invalid_argument);
+  EXPECT_THROW(ParseParameters(with("0.5", "1.2"), "t"), std::invalid_argument);
+  EXPECT_THROW(ParseParameters(good.substr(0, good.find(",\n    \"cue\"")) + "}", "t"),
+               std::invalid_argument);
 }
 
 }  // namespace
