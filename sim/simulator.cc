@@ -99,7 +99,9 @@ SimulationResult Simulate(const ModelParameters& params, const BallState& initia
   if (!std::isfinite(t_end) || t_end < 0.0) {
     throw std::invalid_argument("end time must be a finite number >= 0");
   }
-  if (!(options.tolerance > 0.0)) throw std::invalid_argument("tolerance must be positive");
+  if (options.model != Model::kClosedForm && !(options.tolerance > 0.0)) {
+    throw std::invalid_argument("tolerance must be positive");
+  }
 
   switch (options.model) {
     case Model::kApproximate:

@@ -50,7 +50,7 @@ struct SimulationOptions {
 };
 
 struct SimulationResult {
-  BallState final_state;
+  BallState final_state = BallState::Zero();
   double rest_time = -1.0;  // when the rest switch took over; -1 if it did not
   IntegrationStats stats;  // zero for the closed form
   std::shared_ptr<const Trajectory> trajectory;

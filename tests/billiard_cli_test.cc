@@ -96,12 +96,69 @@ TEST(BilliardSimulate, BadInputExitsNonZeroWithAOneLineReason) {
       "simulate --state 0,0,0,1,0,0,0 --t-end 1 --params no-such-set --json",
       "simulate --state 0,0,0,1,0,0,0 --t-end inf --json",
       "simulate --state 0,0,0,1,0,0,0 --t-end 1 --tol 0 --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --integrator euler --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --model auto --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --model auto --accuracy=-1 --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --accuracy 0.01 --json",
+      "bench --quick",
+      "bench --quick --out /tmp --threads 0",
   };
   for (const char* args : bad) {
     const CommandResult r = Billiard(args, true);
     EXPECT_NE(r.status, 0) << args;
     EXPECT_EQ(r.out.find('{'), std::string::npos) << args;  // no JSON on failure
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
+  }
+}
+
+TEST(BilliardSimulate, AutoModelSaysWhatItChose) {
+  const auto side_spin = Json("simulate --state 0,0,0,1,150,0,-150 --t-end 8 --model auto "
+                              "--accuracy 10 --json");
+  EXPECT_NE(side_spin["model"], "closed-form");
+  EXPECT_EQ(side_spin["auto"]["scene_kind"], "side-spin");
+  const auto rolling = Json("simulate --state 0,0,0,1,-50,0,0 --t-end 8 --model auto "
+                            "--accuracy 0.001 --json");
+  EXPECT_EQ(rolling["model"], "closed-form");
+  EXPECT_EQ(rolling["steps"], 0);
+  EXPECT_NEAR(rolling["state"][1].get<double>(), 2.3785, 1e-4);
+}
+
+// The quick benchmark: the report's structure and finite errors for every method (no timing).
+TEST(BilliardBench, QuickRunWritesTheReportAndEveryErrorIsFinite) {
+  const std::string dir = ::testing::TempDir() + "/bench_quick";
+  const auto j = Json("bench --quick --out " + dir);
+  EXPECT_EQ(j["out"], dir);
+  const long scenes = j["scenes"], methods = j["methods"].size();
+  EXPECT_GE(scenes, 30);
+  EXPECT_GE(methods, 4);
+  for (const char* file : {"/report.md", "/results.csv", "/speed_vs_error.png",
+                           "/model_choice.json"}) {
+    FILE* f = std::fopen((dir + file).c_str(), "rb");
+    EXPECT_NE(f, nullptr) << file;
+    if (f) std::fclose(f);
+  }
+  FILE* csv = std::fopen((dir + "/results.csv").c_str(), "r");
+  ASSERT_NE(csv, nullptr);
+  char line[1024];
+  ASSERT_NE(std::fgets(line, sizeof line, csv), nullptr);  // header
+  long rows = 0;
+  while (std::fgets(line, sizeof line, csv)) {
+    ++rows;
+    std::string text(line);
+    std::array<std::string, 11> field;
+    for (int i = 0, start = 0; i < 11; ++i) {
+      const std::size_t comma = text.find(',', start);
+      field[i] = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      start = static_cast<int>(comma + 1);
+    }
+    EXPECT_EQ(field[4], "1") << "failed run: " << text;
+    for (int i : {8, 9}) EXPECT_TRUE(std::isfinite(std::stod(field[i]))) << text;
+  }
+  std::fclose(csv);
+  EXPECT_EQ(rows, scenes * methods);
+  for (const auto& m : j["methods"]) {
+    EXPECT_TRUE(std::isfinite(m["p95_error_integral_m"].get<double>())) << m["method"];
+    EXPECT_GE(m["median_us"].get<double>(), 0.0);
   }
 }
 

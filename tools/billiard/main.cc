@@ -3,6 +3,7 @@
 #include <exception>
 #include <iostream>
 
+#include "bench_command.h"
 #include "command_line.h"
 #include "fit_contact_command.h"
 #include "simulate_command.h"
@@ -10,8 +11,13 @@
 int main(int argc, char** argv) {
   CLI::App app{"billiard: ball physics for a billiard-playing robot"};
   app.require_subcommand(1);
+  // Parse errors in one line, like every other user error of the tool.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "billiard: " + std::string(e.what()) + " (see --help)\n";
+  });
   billiard::cli::AddSimulateCommand(app);
   billiard::cli::AddFitContactCommand(app);
+  billiard::cli::AddBenchCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -5,9 +5,11 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "command_line.h"
+#include "model_choice.h"
 #include "parameters.h"
 #include "simulator.h"
 
@@ -20,6 +22,7 @@ struct SimulateArgs {
   double t_end = 0.0;
   std::string model = "approx";
   std::string integrator = "rodas4";
+  double accuracy = 0.0;  // --model auto only
   std::string params = "paper";
   double tol = SimulationOptions{}.tolerance;
   double quadrature_tol = SimulationOptions{}.quadrature_tolerance;
@@ -52,9 +55,18 @@ void Run(const SimulateArgs& args) {
   if (args.t_end < 0.0) throw UsageError("--t-end must be >= 0");
   if (!(args.tol > 0.0) || !std::isfinite(args.tol)) throw UsageError("--tol must be positive");
   if (!(args.sample_dt > 0.0)) throw UsageError("--sample-dt must be positive");
+  const bool automatic = args.model == "auto";
   const auto model = ParseModel(args.model);
-  if (!model) throw UsageError("--model: unknown model '" + args.model +
-                               "' (approx, integral, closed-form)");
+  if (!model && !automatic) {
+    throw UsageError("--model: unknown model '" + args.model +
+                     "' (approx, integral, closed-form, auto)");
+  }
+  if (automatic != (args.accuracy != 0.0)) {
+    throw UsageError("--model auto and --accuracy METRES go together");
+  }
+  if (automatic && !(std::isfinite(args.accuracy) && args.accuracy > 0.0)) {
+    throw UsageError("--accuracy must be a positive number of metres");
+  }
   const auto integrator = ParseIntegrator(args.integrator);
   if (!integrator) throw UsageError("--integrator: unknown integrator '" + args.integrator +
                                     "' (rodas4, dopri5)");
@@ -67,10 +79,21 @@ void Run(const SimulateArgs& args) {
 
   const BallState initial = Eigen::Map<const BallState>(numbers.data());
   SimulationOptions options;
-  options.model = *model;
-  options.integrator = *integrator;
-  options.tolerance = args.tol;
-  options.quadrature_tolerance = args.quadrature_tol;
+  std::optional<ModelChoice> choice;
+  if (automatic) {
+    choice = ChooseModel(initial, params, args.accuracy);
+    options = choice->options;
+    if (!choice->accuracy_met) {
+      std::cerr << "billiard: no measured method reaches " << args.accuracy << " m on "
+                << choice->kind << " scenes; using the most accurate (p95 error "
+                << choice->expected_error_m << " m)\n";
+    }
+  } else {
+    options.model = *model;
+    options.integrator = *integrator;
+    options.tolerance = args.tol;
+    options.quadrature_tolerance = args.quadrature_tol;
+  }
   options.rest_switch = !args.no_rest_switch;
   const auto start = std::chrono::steady_clock::now();
   const SimulationResult result = Simulate(params, initial, args.t_end, options);
@@ -84,8 +107,15 @@ void Run(const SimulateArgs& args) {
   const BallState& s = result.final_state;
   if (args.json) {
     nlohmann::json j;
-    j["model"] = ModelName(*model);
-    if (*model != Model::kClosedForm) j["integrator"] = IntegratorName(*integrator);
+    j["model"] = ModelName(options.model);
+    if (options.model != Model::kClosedForm) j["integrator"] = IntegratorName(options.integrator);
+    if (choice) {
+      j["auto"] = {{"accuracy_m", args.accuracy},
+                   {"scene_kind", choice->kind},
+                   {"expected_error_m", choice->expected_error_m},
+                   {"expected_us", choice->expected_us},
+                   {"accuracy_met", choice->accuracy_met}};
+    }
     j["params"] = params.name;
     j["t"] = args.t_end;
     j["state"] = std::vector<double>(s.data(), s.data() + 7);
@@ -94,7 +124,7 @@ void Run(const SimulateArgs& args) {
     j["rhs_evals"] = result.stats.rhs_evals;
     j["jacobian_evals"] = result.stats.jacobian_evals;
     j["wall_us"] = wall_us;
-    j["tol"] = args.tol;
+    j["tol"] = options.tolerance;
     if (result.rest_time >= 0.0) j["rest_time"] = result.rest_time;
     if (result.quadrature) {
       j["quadrature"] = {{"angular_nodes", result.quadrature->order.angular},
@@ -103,7 +133,7 @@ void Run(const SimulateArgs& args) {
     }
     std::cout << j.dump() << std::endl;
   } else {
-    std::cerr << ModelName(*model) << " model, " << params.name << " parameters, t = " << args.t_end
+    std::cerr << ModelName(options.model) << " model, " << params.name << " parameters, t = " << args.t_end
               << " s\n  X, Y   = " << s[kX] << ", " << s[kY] << " m\n  vx, vy = " << s[kVx] << ", "
               << s[kVy] << " m/s\n  w      = " << s[kWx] << ", " << s[kWy] << ", " << s[kWz]
               << " rad/s\n  " << result.stats.steps << " steps, " << result.stats.rhs_evals
@@ -121,7 +151,12 @@ void AddSimulateCommand(CLI::App& app) {
                   "when it starts with a minus sign)")
       ->required();
   cmd->add_option("--t-end", args->t_end, "End time [s]")->required();
-  cmd->add_option("--model", args->model, "approx | integral | closed-form")->capture_default_str();
+  cmd->add_option("--model", args->model,
+                  "approx | integral | closed-form | auto (the cheapest that meets --accuracy)")
+      ->capture_default_str();
+  cmd->add_option("--accuracy", args->accuracy,
+                  "--model auto: endpoint error allowed [m], per the measured tables "
+                  "(docs/benchmarks)");
   cmd->add_option("--integrator", args->integrator,
                   "5-DOF models: rodas4 (stiff, default) | dopri5 (explicit baseline)")
       ->capture_default_str();

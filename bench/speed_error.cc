@@ -1,0 +1,219 @@
+#include "speed_error.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <thread>
+
+#include "model_choice.h"
+
+namespace billiard::bench {
+
+namespace {
+
+std::string Scientific(double x) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%.0e", x);
+  return text;
+}
+
+double EndpointDistance(const BallState& a, const BallState& b) {
+  return (a.head<2>() - b.head<2>()).norm();
+}
+
+// Final states of `method` on every scene, computed on `threads` threads.
+std::vector<BallState> Converged(const ModelParameters& p, const std::vector<Scene>& scenes,
+                                 const Method& method, int threads,
+                                 const BenchmarkOptions& options, double* quadrature_error) {
+  std::vector<BallState> finals(scenes.size());
+  std::atomic<std::size_t> next{0}, done{0};
+  std::vector<std::string> failures(scenes.size());
+  const auto work = [&] {
+    for (std::size_t i; (i = next++) < scenes.size();) {
+      try {
+        const SimulationResult r = Simulate(p, scenes[i].initial, scenes[i].t_end, method.Options());
+        finals[i] = r.final_state;
+        if (r.quadrature && quadrature_error) *quadrature_error = r.quadrature->error_estimate;
+      } catch (const std::exception& e) {
+        failures[i] = e.what();
+      }
+      ++done;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < std::max(1, threads); ++t) pool.emplace_back(work);
+  std::size_t reported = 0;
+  while (done < scenes.size()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    if (done >= reported + 10 || done == scenes.size()) {
+      reported = done;
+      options.progress("reference " + method.Name() + ": " + std::to_string(reported) + "/" +
+                       std::to_string(scenes.size()) + " scenes");
+    }
+  }
+  for (std::thread& t : pool) t.join();
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    if (!failures[i].empty()) {
+      throw std::runtime_error("reference " + method.Name() + " failed on " + scenes[i].name +
+                               ": " + failures[i]);
+    }
+  }
+  return finals;
+}
+
+// Runs once; cheap methods are repeated until 2 ms have passed and their mean is reported.
+MethodRun TimeRun(const ModelParameters& p, const Scene& scene, const Method& method,
+                  SimulationResult* result) {
+  MethodRun run;
+  run.method = method.Name();
+  run.scene = scene.name;
+  run.group = scene.group;
+  run.kind = SceneKindOf(scene.initial, p);
+  using Clock = std::chrono::steady_clock;
+  const SimulationOptions options = method.Options();
+  try {
+    auto start = Clock::now();
+    *result = Simulate(p, scene.initial, scene.t_end, options);
+    double us = std::chrono::duration<double, std::micro>(Clock::now() - start).count();
+    const int repeats = static_cast<int>(std::clamp(2000.0 / std::max(us, 1e-3), 1.0, 5000.0));
+    if (repeats > 1) {
+      start = Clock::now();
+      for (int i = 0; i < repeats; ++i) Simulate(p, scene.initial, scene.t_end, options);
+      us = std::chrono::duration<double, std::micro>(Clock::now() - start).count() / repeats;
+    }
+    run.wall_us = us;
+    run.steps = result->stats.steps;
+    run.rhs_evals = result->stats.rhs_evals;
+  } catch (const std::exception& e) {
+    run.ok = false;
+    run.failure = e.what();
+  }
+  return run;
+}
+
+MethodSummary Summarize(const Method& method, const std::string& kind,
+                        const std::vector<MethodRun>& runs) {
+  MethodSummary s;
+  s.method = method;
+  s.kind = kind;
+  std::vector<double> us, steps, rhs, self, integral;
+  for (const MethodRun& r : runs) {
+    if (r.method != method.Name()) continue;
+    if (kind != "all" && kind != r.kind) continue;
+    ++s.runs;
+    if (!r.ok) {
+      ++s.failures;
+      continue;
+    }
+    us.push_back(r.wall_us);
+    steps.push_back(r.steps);
+    rhs.push_back(r.rhs_evals);
+    self.push_back(r.error_self_m);
+    integral.push_back(r.error_integral_m);
+  }
+  s.median_us = Quantile(us, 0.5);
+  s.p95_us = Quantile(us, 0.95);
+  s.median_steps = Quantile(steps, 0.5);
+  s.median_rhs_evals = Quantile(rhs, 0.5);
+  s.median_error_self_m = Quantile(self, 0.5);
+  s.p95_error_self_m = Quantile(self, 0.95);
+  s.max_error_self_m = Quantile(self, 1.0);
+  s.median_error_integral_m = Quantile(integral, 0.5);
+  s.p95_error_integral_m = Quantile(integral, 0.95);
+  s.max_error_integral_m = Quantile(integral, 1.0);
+  return s;
+}
+
+}  // namespace
+
+std::string Method::Family() const {
+  if (model == Model::kClosedForm) return ModelName(model);
+  return ModelName(model) + "/" + IntegratorName(integrator);
+}
+
+std::string Method::Name() const {
+  if (model == Model::kClosedForm) return Family();
+  std::string name = Family() + "/tol=" + Scientific(tolerance);
+  if (model == Model::kIntegral) name += "/quad=" + Scientific(quadrature_tolerance);
+  return name;
+}
+
+SimulationOptions Method::Options() const {
+  SimulationOptions o;
+  o.model = model;
+  o.integrator = integrator;
+  o.tolerance = tolerance;
+  o.quadrature_tolerance = quadrature_tolerance;
+  // An explicit method on the stiff phases: give up rather than run for minutes.
+  if (integrator == Integrator::kDopri5) o.max_steps = 3'000'000;
+  return o;
+}
+
+std::vector<Method> BenchmarkMethods(bool quick) {
+  using M = Model;
+  using I = Integrator;
+  std::vector<Method> methods = {{M::kClosedForm, I::kRodas4, 0.0, 0.0}};
+  const std::vector<double> rodas = quick ? std::vector<double>{1e-5, 1e-7}
+                                          : std::vector<double>{1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+  for (double tol : rodas) methods.push_back({M::kApproximate, I::kRodas4, tol, 0.0});
+  const std::vector<double> dopri = quick ? std::vector<double>{1e-6}
+                                          : std::vector<double>{1e-5, 1e-7};
+  for (double tol : dopri) methods.push_back({M::kApproximate, I::kDopri5, tol, 0.0});
+  methods.push_back({M::kIntegral, I::kRodas4, 1e-5, 1e-3});
+  if (!quick) methods.push_back({M::kIntegral, I::kRodas4, 1e-7, 1e-6});
+  return methods;
+}
+
+double Quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const double position = q * (values.size() - 1);
+  const std::size_t below = static_cast<std::size_t>(position);
+  if (below + 1 >= values.size()) return values.back();
+  const double f = position - below;
+  return values[below] * (1 - f) + values[below + 1] * f;
+}
+
+BenchmarkResult RunBenchmark(const ModelParameters& p, const BenchmarkOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  BenchmarkResult result;
+  result.params = p.name;
+  result.scenes = SceneSuite(p, options.random_shots, options.seed);
+  result.methods = BenchmarkMethods(options.quick);
+  result.approx_reference = {Model::kApproximate, Integrator::kRodas4, 1e-10, 0.0};
+  result.integral_reference = {Model::kIntegral, Integrator::kRodas4, options.quick ? 1e-8 : 1e-9,
+                               1e-6};
+  const std::vector<BallState> approx_ref =
+      Converged(p, result.scenes, result.approx_reference, options.threads, options, nullptr);
+  const std::vector<BallState> integral_ref =
+      Converged(p, result.scenes, result.integral_reference, options.threads, options,
+                &result.integral_reference_quadrature_error);
+
+  for (const Method& method : result.methods) {
+    options.progress("timing " + method.Name() + " on " + std::to_string(result.scenes.size()) +
+                     " scenes");
+    for (std::size_t i = 0; i < result.scenes.size(); ++i) {
+      SimulationResult sim;
+      MethodRun run = TimeRun(p, result.scenes[i], method, &sim);
+      if (run.ok) {
+        const BallState& self = method.model == Model::kIntegral ? integral_ref[i] : approx_ref[i];
+        run.error_self_m =
+            method.model == Model::kClosedForm ? 0.0 : EndpointDistance(sim.final_state, self);
+        run.error_integral_m = EndpointDistance(sim.final_state, integral_ref[i]);
+      }
+      result.runs.push_back(run);
+    }
+  }
+  for (const Method& method : result.methods) {
+    for (const std::string& kind : kSceneKinds) {
+      result.summaries.push_back(Summarize(method, kind, result.runs));
+    }
+  }
+  result.wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace billiard::bench
