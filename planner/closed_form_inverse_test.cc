@@ -1,0 +1,108 @@
+// The closed-form inverse against the forward closed form (sim/closed_form.h).
+#include "closed_form_inverse.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "closed_form.h"
+#include "parameters.h"
+
+namespace billiard::planner {
+namespace {
+
+ClosedFormParameters Paper() { return ClosedFormParameters::From(LoadParameters("paper")); }
+
+// Where the forward model's speed falls to v2 (its rest point when v2 = 0), and the state there.
+BallState WhereSpeedFallsTo(const ClosedFormTrajectory& t, double v2) {
+  if (v2 == 0.0) return t.At(t.stop_time());
+  double lo = t.slide_end_time(), hi = t.stop_time();
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (t.At(mid).segment<2>(kVx).norm() > v2 ? lo : hi) = mid;
+  }
+  return t.At(lo);
+}
+
+TEST(ClosedFormInverse, ForwardModelEndsOnTheTargetForEveryStyleAndSlideLength) {
+  const ClosedFormParameters p = Paper();
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int solved = 0;
+  for (int i = 0; i < 400; ++i) {
+    ShotRequest q;
+    q.from = {0.1 + 2.3 * u(rng), 0.1 + 1.0 * u(rng)};
+    q.to = {0.1 + 2.3 * u(rng), 0.1 + 1.0 * u(rng)};
+    q.final_speed = i % 2 ? 0.0 : 0.5 * u(rng);
+    q.side_spin = 20 * (u(rng) - 0.5);
+    if (i % 5 == 4) {
+      q.slide_length = (q.to - q.from).norm() * u(rng);
+    } else {
+      q.style = static_cast<SpinStyle>(i % 4);
+    }
+    const LaunchSolution s = InvertClosedForm(q, p);
+    if (!s.ok) {
+      // Only a shot still sliding at the target may be refused.
+      EXPECT_NE(s.reason.find("sliding"), std::string::npos) << s.reason;
+      continue;
+    }
+    ++solved;
+    const BallState start = MakeBallState(q.from.x(), q.from.y(), s.v0.x(), s.v0.y(), s.w0.x(),
+                                          s.w0.y(), s.w0.z());
+    const ClosedFormTrajectory forward(p, start);
+    const BallState there = WhereSpeedFallsTo(forward, q.final_speed);
+    EXPECT_LT((there.head<2>() - q.to).norm(), 1e-9) << "request " << i;
+    // Validity of the seed's inverse: v0 >= R w0 >= -5/2 v0 along the shot.
+    const Eigen::Vector2d e = (q.to - q.from).normalized();
+    const double r_w = p.radius * (e.x() * s.w0.y() - e.y() * s.w0.x());
+    EXPECT_GE(s.v0.norm() + 1e-12, r_w);
+    EXPECT_GE(r_w, -2.5 * s.v0.norm() - 1e-12);
+    EXPECT_NEAR((forward.slide_end_state().head<2>() - q.from).norm(), s.slide_length, 1e-9);
+  }
+  EXPECT_GT(solved, 300);
+}
+
+TEST(ClosedFormInverse, StylesSetTheSpinRatio) {
+  const ClosedFormParameters p = Paper();
+  ShotRequest q;
+  q.to = {1.0, 0.0};
+  for (auto [style, ratio] : {std::pair{SpinStyle::kStun, 0.0}, {SpinStyle::kNatural, 1.0},
+                              {SpinStyle::kFollow, 0.5}, {SpinStyle::kDraw, -1.0}}) {
+    q.style = style;
+    const LaunchSolution s = InvertClosedForm(q, p);
+    ASSERT_TRUE(s.ok) << s.reason;
+    EXPECT_NEAR(p.radius * s.w0.y() / s.v0.x(), ratio, 1e-12);
+  }
+  q.style = SpinStyle::kNatural;
+  EXPECT_EQ(InvertClosedForm(q, p).slide_length, 0.0);
+}
+
+TEST(ClosedFormInverse, RefusesBadRequestsWithAReason) {
+  const ClosedFormParameters p = Paper();
+  const auto refused = [&](ShotRequest q) {
+    const LaunchSolution s = InvertClosedForm(q, p);
+    EXPECT_FALSE(s.ok);
+    EXPECT_FALSE(s.reason.empty());
+  };
+  ShotRequest q;
+  q.to = {1.0, 0.5};
+  ShotRequest nan = q;
+  nan.to.x() = NAN;
+  refused(nan);
+  ShotRequest same = q;
+  same.to = same.from;
+  refused(same);
+  ShotRequest negative = q;
+  negative.final_speed = -1;
+  refused(negative);
+  ShotRequest too_long = q;
+  too_long.slide_length = 5.0;
+  refused(too_long);
+  ClosedFormParameters no_roll = p;
+  no_roll.mu_roll = 0.0;
+  EXPECT_FALSE(InvertClosedForm(q, no_roll).ok);
+}
+
+}  // namespace
+}  // namespace billiard::planner
