@@ -63,14 +63,4 @@ class Dopri5Stepper {
   bool has_f_ = false;
 };
 
-// Integrates x' = f(x) with DOPRI5 (see IntegrateAdaptive for the contract).
-template <class System, class Stop = NeverStop>
-IntegrationResult IntegrateDopri5(const System& system, const BallState& x0, double t0,
-                                  double t_end, const IntegratorOptions& options,
-                                  IntegrationStats* stats, DenseTrajectory* dense = nullptr,
-                                  const Stop& stop = Stop()) {
-  Dopri5Stepper<System> stepper(system);
-  return IntegrateAdaptive(stepper, x0, t0, t_end, options, stats, dense, stop);
-}
-
 }  // namespace billiard

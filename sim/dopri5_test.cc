@@ -20,27 +20,11 @@ testing::LinearProblem MildProblem() {
 }
 
 TEST(Dopri5, GlobalErrorFallsWithTheTolerance) {
-  const testing::LinearProblem p = MildProblem();
-  const BallState x0 = BallState::Constant(1.0);
-  double previous = 1.0;
-  for (double tol : {1e-4, 1e-6, 1e-8, 1e-10}) {
-    const IntegrationResult r =
-        IntegrateDopri5(p.system, x0, 0.0, 2.0, testing::UniformTolerance(tol), nullptr);
-    const double error = (r.state - p.Exact(x0, 2.0)).norm();
-    EXPECT_LT(error, previous);
-    EXPECT_LT(error, 100 * tol);
-    previous = error;
-  }
+  testing::ExpectGlobalErrorFallsWithTheTolerance<Dopri5Stepper>(MildProblem());
 }
 
 TEST(Dopri5, DenseOutputInterpolatesBetweenSteps) {
-  const testing::LinearProblem p = MildProblem();
-  const BallState x0 = BallState::Constant(1.0);
-  DenseTrajectory dense;
-  IntegrateDopri5(p.system, x0, 0.0, 3.0, testing::UniformTolerance(1e-9), nullptr, &dense);
-  for (double t = 0.013; t < 3.0; t += 0.0517) {
-    EXPECT_LT((dense.At(t) - p.Exact(x0, t)).norm(), 1e-6) << t;
-  }
+  testing::ExpectDenseOutputInterpolatesBetweenSteps<Dopri5Stepper>(MildProblem());
 }
 
 SimulationResult SimulateWith(const BallState& s0, Integrator integrator) {

@@ -117,4 +117,13 @@ IntegrationResult IntegrateAdaptive(Stepper& stepper, const BallState& x0, doubl
   }
 }
 
+// IntegrateAdaptive with a fresh StepperT<System>, e.g. IntegrateWith<Rodas4Stepper>(system, ...).
+template <template <class> class StepperT, class System, class Stop = NeverStop>
+IntegrationResult IntegrateWith(const System& system, const BallState& x0, double t0, double t_end,
+                                const IntegratorOptions& options, IntegrationStats* stats,
+                                DenseTrajectory* dense = nullptr, const Stop& stop = Stop()) {
+  StepperT<System> stepper(system);
+  return IntegrateAdaptive(stepper, x0, t0, t_end, options, stats, dense, stop);
+}
+
 }  // namespace billiard

@@ -88,14 +88,4 @@ class Rodas4Stepper {
   const System& system_;
 };
 
-// Integrates x' = f(x) with RODAS4 (see IntegrateAdaptive for the contract).
-template <class System, class Stop = NeverStop>
-IntegrationResult IntegrateRodas4(const System& system, const BallState& x0, double t0,
-                                  double t_end, const IntegratorOptions& options,
-                                  IntegrationStats* stats, DenseTrajectory* dense = nullptr,
-                                  const Stop& stop = Stop()) {
-  Rodas4Stepper<System> stepper(system);
-  return IntegrateAdaptive(stepper, x0, t0, t_end, options, stats, dense, stop);
-}
-
 }  // namespace billiard

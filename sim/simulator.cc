@@ -53,9 +53,9 @@ IntegrationResult Run(Integrator integrator, const System& system, const BallSta
                       double t_end, const IntegratorOptions& options, IntegrationStats* stats,
                       DenseTrajectory* dense, const Stop& stop = Stop()) {
   if (integrator == Integrator::kDopri5) {
-    return IntegrateDopri5(system, x0, t0, t_end, options, stats, dense, stop);
+    return IntegrateWith<Dopri5Stepper>(system, x0, t0, t_end, options, stats, dense, stop);
   }
-  return IntegrateRodas4(system, x0, t0, t_end, options, stats, dense, stop);
+  return IntegrateWith<Rodas4Stepper>(system, x0, t0, t_end, options, stats, dense, stop);
 }
 
 template <class Friction>

@@ -9,6 +9,7 @@
 
 #include "ball_dynamics.h"
 #include "ball_state.h"
+#include "dense_trajectory.h"
 #include "integrator.h"
 #include "parameters.h"
 #include "trajectory.h"
@@ -78,6 +79,32 @@ inline LinearProblem MakeLinearProblem(const BallState& lambda) {
   p.v_inv = p.v.inverse();
   p.system.a = p.v * p.lambda.asDiagonal() * p.v_inv;
   return p;
+}
+
+// The global error at t = 2 s falls as the tolerance is tightened, and stays within 100 tol.
+template <template <class> class StepperT>
+void ExpectGlobalErrorFallsWithTheTolerance(const LinearProblem& p) {
+  const BallState x0 = BallState::Constant(1.0);
+  double previous = 1.0;
+  for (double tol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+    const IntegrationResult r =
+        IntegrateWith<StepperT>(p.system, x0, 0.0, 2.0, UniformTolerance(tol), nullptr);
+    const double error = (r.state - p.Exact(x0, 2.0)).norm();
+    EXPECT_LT(error, previous) << tol;
+    EXPECT_LT(error, 100 * tol) << tol;
+    previous = error;
+  }
+}
+
+// The dense output at tolerance 1e-9 is within 1e-6 of the exact solution between the steps.
+template <template <class> class StepperT>
+void ExpectDenseOutputInterpolatesBetweenSteps(const LinearProblem& p) {
+  const BallState x0 = BallState::Constant(1.0);
+  DenseTrajectory dense;
+  IntegrateWith<StepperT>(p.system, x0, 0.0, 3.0, UniformTolerance(1e-9), nullptr, &dense);
+  for (double t = 0.013; t < 3.0; t += 0.0517) {
+    EXPECT_LT((dense.At(t) - p.Exact(x0, t)).norm(), 1e-6) << t;
+  }
 }
 
 }  // namespace billiard::testing
