@@ -29,16 +29,19 @@ LaunchSolution InvertClosedForm(const ShotRequest& q, const ClosedFormParameters
   for (double x : numbers) {
     if (!std::isfinite(x)) {
       s.reason = "request has a non-finite number";
+      s.malformed = true;
       return s;
     }
   }
   if (q.final_speed < 0.0) {
     s.reason = "final speed must be >= 0";
+    s.malformed = true;
     return s;
   }
   const double distance = (q.to - q.from).norm();
   if (distance == 0.0) {
     s.reason = "target is where the ball already is";
+    s.malformed = true;
     return s;
   }
   const double mu_g = p.mu_slide * p.gravity;
@@ -56,6 +59,7 @@ LaunchSolution InvertClosedForm(const ShotRequest& q, const ClosedFormParameters
     const double x1 = *q.slide_length;
     if (x1 < 0.0 || x1 > distance) {
       s.reason = "slide length must lie between 0 and the distance to the target";
+      s.malformed = true;
       return s;
     }
     if (x1 > 0.0 && mu_g == 0.0) {

@@ -35,6 +35,7 @@ struct ShotRequest {
 struct LaunchSolution {
   bool ok = false;
   std::string reason;  // why not, when !ok
+  bool malformed = false;  // refused because the request itself is malformed, not out of reach
   Eigen::Vector2d v0 = Eigen::Vector2d::Zero();
   Eigen::Vector3d w0 = Eigen::Vector3d::Zero();
   double slide_length = 0.0;  // x1 of the solution

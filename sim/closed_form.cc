@@ -1,6 +1,7 @@
 #include "closed_form.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace billiard {
@@ -51,6 +52,23 @@ BallState ClosedFormTrajectory::Rolling(double tau) const {
   s[kWx] = -s[kVy] / p_.radius;
   s[kWy] = s[kVx] / p_.radius;
   return s;
+}
+
+double ClosedFormTrajectory::TimeAtSpeed(double speed) const {
+  const Eigen::Vector2d v0 = initial_.segment<2>(kVx);
+  if (v0.norm() <= speed) return 0.0;
+  // Sliding: |v0 - mu_s g t u_hat|^2 = speed^2, the smaller root if it comes before t1.
+  const double decel = p_.mu_slide * p_.gravity;
+  const double along = v0.dot(slip_direction_);
+  const double discriminant = along * along - (v0.squaredNorm() - speed * speed);
+  if (discriminant >= 0.0) {
+    const double t = (along - std::sqrt(discriminant)) / decel;
+    if (t >= 0.0 && t <= slide_end_time_) return t;
+  }
+  const double v1 = slide_end_.segment<2>(kVx).norm();
+  if (v1 <= speed) return slide_end_time_;
+  if (p_.mu_roll == 0.0) return std::numeric_limits<double>::infinity();
+  return slide_end_time_ + (v1 - speed) / (5.0 / 7.0 * p_.mu_roll * p_.gravity);
 }
 
 BallState ClosedFormTrajectory::At(double t) const {

@@ -38,6 +38,9 @@ class ClosedFormTrajectory : public Trajectory {
 
   double slide_end_time() const { return slide_end_time_; }  // t1 = 2 |u0| / (7 mu_s g), eq. 8
   double stop_time() const { return stop_time_; }            // t2, eq. 15 with v2 = 0
+  // The first time the speed falls to `speed` (0 for a ball already that slow; infinite if it
+  // never does).
+  double TimeAtSpeed(double speed) const;
   // The state at the end of sliding (x1, v1 of eqs. 9-10).
   const BallState& slide_end_state() const { return slide_end_; }
 

@@ -104,4 +104,23 @@ StrokeSolution StrokeFor(const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
   return s;
 }
 
+LaunchSpeedRange LaunchSpeedsFor(double spin_ratio, double side_spin, const ModelParameters& p) {
+  // A level stroke at speed s gives |w| = 5 s |b| / (2 r^2), so the offset fraction is
+  // q = |b| / r = 2/5 sqrt(k^2 + (r wz / s)^2).
+  const double r = p.ball.radius, m = p.ball.mass, big_m = p.cue.mass;
+  const double k2 = spin_ratio * spin_ratio, rw2 = r * r * side_spin * side_spin;
+  const double q_max = 2.5 * p.cue.max_tip_offset;  // in units of 2/5
+  LaunchSpeedRange range{0.0, -1.0};
+  if (k2 > q_max * q_max) return range;
+  range.min = std::sqrt(rw2 / (q_max * q_max - k2));
+  // The cue speed (TP A.30) is V = [s (M + m (1 + 0.4 k^2)) + 0.4 m r^2 wz^2 / s] / ((1 + e) M);
+  // V = max_speed is a quadratic in s whose larger root is the fastest launch.
+  const double a = big_m + m * (1.0 + 0.4 * k2), b = 0.4 * m * rw2;
+  const double c = (1.0 + p.cue.tip_restitution) * big_m * p.cue.max_speed;
+  const double discriminant = c * c - 4.0 * a * b;
+  if (discriminant < 0.0) return range;
+  range.max = (c + std::sqrt(discriminant)) / (2.0 * a);
+  return range;
+}
+
 }  // namespace billiard

@@ -45,4 +45,13 @@ struct StrokeSolution {
 StrokeSolution StrokeFor(const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
                          const ModelParameters& p);
 
+// The launch speeds a level stroke can give a ball sent along a line with spin R w = k v about the
+// horizontal axis across the line and side spin wz: bounded below by the tip offset that spin
+// needs (within max_tip_offset r) and above by the cue speed (within max_speed). min > max when
+// no stroke gives that spin.
+struct LaunchSpeedRange {
+  double min = 0.0, max = 0.0;
+};
+LaunchSpeedRange LaunchSpeedsFor(double spin_ratio, double side_spin, const ModelParameters& p);
+
 }  // namespace billiard

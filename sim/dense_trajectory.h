@@ -16,9 +16,14 @@ class DenseTrajectory : public Trajectory {
               const BallState& c4);
 
   BallState At(double t) const override;
+  // The interpolant of one step at s = (t - t0) / (t1 - t0) in [0, 1].
+  static BallState Interpolate(const BallState& x0, const BallState& x1, const BallState& c3,
+                               const BallState& c4, double s);
   double start_time() const override;
   double end_time() const override;
   std::size_t size() const { return steps_.size(); }
+  // Where the last step began (an event found after it lies within that step).
+  double last_step_start() const;
 
  private:
   struct Step {

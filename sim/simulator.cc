@@ -1,5 +1,6 @@
 #include "simulator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -91,10 +92,70 @@ SimulationResult Integrate(const ModelParameters& params, Friction friction,
   return result;
 }
 
-}  // namespace
+// The first time in the last step of `dense` at which the speed falls to `speed` (bisection on
+// the dense output: the step began faster than `speed` and ended at or below it).
+double SpeedCrossing(const DenseTrajectory& dense, double speed) {
+  double lo = dense.last_step_start(), hi = dense.end_time();
+  for (int i = 0; i < 60 && hi - lo > 1e-13 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (dense.At(mid).segment<2>(kVx).norm() > speed ? lo : hi) = mid;
+  }
+  return hi;
+}
 
-SimulationResult Simulate(const ModelParameters& params, const BallState& initial, double t_end,
-                          const SimulationOptions& options) {
+template <class Friction>
+Arrival IntegrateToArrival(const ModelParameters& params, Friction friction,
+                           const BallState& initial, double speed, double t_max,
+                           const SimulationOptions& options, bool with_sensitivity) {
+  const BallDynamics<Friction> dynamics(params, std::move(friction));
+  IntegratorOptions integrator = IntegratorOptionsFor(params, options.tolerance);
+  integrator.max_steps = options.max_steps;
+  auto dense = std::make_shared<DenseTrajectory>();
+  const auto arrived = [&dynamics, speed](const BallState& s) {
+    return s.segment<2>(kVx).norm() <= speed || ClassifyRest(s, dynamics) != RestKind::kMoving;
+  };
+  Arrival a;
+  IntegrationResult run;
+  std::optional<Rodas4SensitivityStepper<BallDynamics<Friction>>> stepper;
+  if (with_sensitivity) {
+    stepper.emplace(dynamics);
+    run = IntegrateAdaptive(*stepper, initial, 0.0, t_max, integrator, &a.stats, dense.get(),
+                            arrived);
+  } else {
+    run = Run(options.integrator, dynamics, initial, 0.0, t_max, integrator, &a.stats,
+              dense.get(), arrived);
+  }
+  a.reached = run.stopped;
+  a.time = run.t;
+  a.state = run.state;
+  if (dense->size() == 0) {  // arrived at t = 0
+    dense->Append(0.0, 0.0, initial, initial, BallState::Zero(), BallState::Zero());
+  }
+  if (stepper) a.sensitivity = stepper->sensitivity();
+  const RestKind rest = ClassifyRest(run.state, dynamics);
+  if (run.stopped && run.t > 0.0 && rest == RestKind::kMoving) {
+    // The speed fell to `speed` within the last step: locate it, and take S there.
+    a.time = SpeedCrossing(*dense, speed);
+    a.state = dense->At(a.time);
+    if (stepper) {
+      const double step = dense->end_time() - dense->last_step_start();
+      Sensitivity& s = *a.sensitivity;
+      s = stepper->SensitivityWithinLastStep((a.time - dense->last_step_start()) / step);
+      // The arrival time moves with the initial state:
+      // dt/dx0 = -(v_hat . dv/dx0) / (v_hat . dv/dt).
+      const BallState f = dynamics.Derivative(a.state);
+      const Eigen::Vector2d v_hat = a.state.segment<2>(kVx).normalized();
+      const double rate = v_hat.dot(f.segment<2>(kVx));
+      if (rate < 0.0) s += f * (-(v_hat.transpose() * s.middleRows<2>(kVx)) / rate);
+    }
+  } else if (run.stopped && rest != RestKind::kMoving) {
+    a.state = BallAtRest<BallDynamics<Friction>>(dynamics, run.state, rest).start();
+  }
+  a.trajectory = std::move(dense);
+  return a;
+}
+
+void ValidateInput(const BallState& initial, double t_end, const SimulationOptions& options) {
   if (!initial.allFinite()) throw std::invalid_argument("initial state has a non-finite number");
   if (!std::isfinite(t_end) || t_end < 0.0) {
     throw std::invalid_argument("end time must be a finite number >= 0");
@@ -102,29 +163,69 @@ SimulationResult Simulate(const ModelParameters& params, const BallState& initia
   if (options.model != Model::kClosedForm && !(options.tolerance > 0.0)) {
     throw std::invalid_argument("tolerance must be positive");
   }
+}
 
-  switch (options.model) {
-    case Model::kApproximate:
-      return Integrate(params, ApproximateFrictionModel{params.contact}, initial, t_end, options);
-    case Model::kIntegral: {
-      const CalibratedQuadrature q = CalibrateQuadrature(
-          params.contact.eps_t, params.contact.d, options.quadrature_tolerance);
-      SimulationResult r =
-          Integrate(params, IntegralFrictionModel{IntegralFriction(q.order), params.contact.eps_t},
-                    initial, t_end, options);
-      r.quadrature = q;
-      return r;
-    }
-    case Model::kClosedForm: {
-      auto trajectory =
-          std::make_shared<ClosedFormTrajectory>(ClosedFormParameters::From(params), initial);
-      SimulationResult r;
-      r.final_state = trajectory->At(t_end);
-      r.trajectory = std::move(trajectory);
-      return r;
-    }
+// Calls integrate(friction) with the friction model of the 5-DOF `options.model`, and stores the
+// integral model's calibrated quadrature in *quadrature.
+template <class Integrate>
+auto WithFrictionModel(const ModelParameters& params, const SimulationOptions& options,
+                       std::optional<CalibratedQuadrature>* quadrature, Integrate&& integrate) {
+  if (options.model == Model::kIntegral) {
+    const CalibratedQuadrature q = CalibrateQuadrature(
+        params.contact.eps_t, params.contact.d, options.quadrature_tolerance);
+    *quadrature = q;
+    return integrate(IntegralFrictionModel{IntegralFriction(q.order), params.contact.eps_t});
   }
-  throw std::invalid_argument("unknown model");
+  return integrate(ApproximateFrictionModel{params.contact});
+}
+
+}  // namespace
+
+SimulationResult Simulate(const ModelParameters& params, const BallState& initial, double t_end,
+                          const SimulationOptions& options) {
+  ValidateInput(initial, t_end, options);
+  if (options.model == Model::kClosedForm) {
+    auto trajectory =
+        std::make_shared<ClosedFormTrajectory>(ClosedFormParameters::From(params), initial);
+    SimulationResult r;
+    r.final_state = trajectory->At(t_end);
+    r.trajectory = std::move(trajectory);
+    return r;
+  }
+  std::optional<CalibratedQuadrature> quadrature;
+  SimulationResult r = WithFrictionModel(params, options, &quadrature, [&](auto friction) {
+    return Integrate(params, std::move(friction), initial, t_end, options);
+  });
+  r.quadrature = quadrature;
+  return r;
+}
+
+Arrival SimulateArrival(const ModelParameters& params, const BallState& initial, double speed,
+                        double t_max, const SimulationOptions& options, bool with_sensitivity) {
+  ValidateInput(initial, t_max, options);
+  if (!std::isfinite(speed) || speed < 0.0) {
+    throw std::invalid_argument("arrival speed must be a finite number >= 0");
+  }
+  if (with_sensitivity &&
+      (options.model == Model::kClosedForm || options.integrator != Integrator::kRodas4)) {
+    throw std::invalid_argument("sensitivities need a 5-DOF model integrated with RODAS4");
+  }
+  if (options.model == Model::kClosedForm) {
+    auto trajectory =
+        std::make_shared<ClosedFormTrajectory>(ClosedFormParameters::From(params), initial);
+    Arrival a;
+    const double t = trajectory->TimeAtSpeed(speed);
+    a.reached = t <= t_max;
+    a.time = std::min(t, t_max);
+    a.state = trajectory->At(a.time);
+    a.trajectory = std::move(trajectory);
+    return a;
+  }
+  std::optional<CalibratedQuadrature> quadrature;
+  return WithFrictionModel(params, options, &quadrature, [&](auto friction) {
+    return IntegrateToArrival(params, std::move(friction), initial, speed, t_max, options,
+                              with_sensitivity);
+  });
 }
 
 }  // namespace billiard

@@ -13,6 +13,7 @@
 #include "integral_friction.h"
 #include "parameters.h"
 #include "integrator.h"
+#include "sensitivity.h"
 #include "trajectory.h"
 
 namespace billiard {
@@ -61,6 +62,26 @@ struct SimulationResult {
 // input or t_end < 0, std::runtime_error if the integrator fails.
 SimulationResult Simulate(const ModelParameters& params, const BallState& initial, double t_end,
                           const SimulationOptions& options = {});
+
+// Where a ball arrives: the first time its speed falls to a given value, or, for 0, where it comes
+// to rest (for the 5-DOF models, where ClassifyRest calls it stopped, at the centre BallAtRest
+// reports: the position Simulate ends at).
+struct Arrival {
+  bool reached = false;  // false: still faster than asked at t_max (state and time are there)
+  double time = 0.0;
+  BallState state = BallState::Zero();
+  // d state / d initial state at the arrival, with the dependence of the arrival time on the
+  // initial state included (5-DOF models with RODAS4, when asked; see sensitivity.h).
+  std::optional<Sensitivity> sensitivity;
+  IntegrationStats stats;
+  std::shared_ptr<const Trajectory> trajectory;  // covers [0, time] at least
+};
+
+// Simulates from `initial` until it arrives at `speed` >= 0, or to t_max. Throws like Simulate,
+// and std::invalid_argument when sensitivities are asked of the closed form or of DOPRI5.
+Arrival SimulateArrival(const ModelParameters& params, const BallState& initial, double speed,
+                        double t_max, const SimulationOptions& options = {},
+                        bool with_sensitivity = false);
 
 // Integrator settings for a 5-DOF simulation at the given tolerance (see SimulationOptions).
 IntegratorOptions IntegratorOptionsFor(const ModelParameters& params, double tolerance);

@@ -1,0 +1,279 @@
+#include "shot_planner.h"
+
+#include <ceres/ceres.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace billiard::planner {
+
+std::string PlanStatusName(PlanStatus status) {
+  switch (status) {
+    case PlanStatus::kOk: return "ok";
+    case PlanStatus::kInvalid: return "invalid";
+    case PlanStatus::kOffTable: return "off_table";
+    case PlanStatus::kUnreachable: return "unreachable";
+    case PlanStatus::kNotConverged: return "not_converged";
+  }
+  return "?";
+}
+
+SimulationOptions PlannerOptions::DefaultRefinementSimulation() {
+  SimulationOptions o;
+  o.model = Model::kApproximate;
+  o.integrator = Integrator::kRodas4;
+  // Endpoints within about 0.4 um of the converged model (docs/benchmarks/report.md), at two
+  // thirds of the cost of the simulator's default.
+  o.tolerance = 1e-6;
+  return o;
+}
+
+namespace {
+
+std::string Millimetres(double metres) {
+  std::ostringstream s;
+  s.precision(3);
+  s << metres * 1e3 << " mm";
+  return s.str();
+}
+
+// The launch of a straight shot as the refinement parametrises it: speed s along the heading
+// theta, spin across the line R w = k s, side spin wz held.
+class Launch {
+ public:
+  Launch(const Eigen::Vector2d& from, double spin_ratio, double side_spin, double radius)
+      : from_(from), k_(spin_ratio), wz_(side_spin), r_(radius) {}
+
+  BallState State(double speed, double heading) const {
+    const Eigen::Vector2d e(std::cos(heading), std::sin(heading));
+    const double spin = k_ * speed / r_;  // about z x e
+    return MakeBallState(from_.x(), from_.y(), speed * e.x(), speed * e.y(), -spin * e.y(),
+                         spin * e.x(), wz_);
+  }
+
+  // d State / d (speed, heading).
+  Eigen::Matrix<double, 7, 2> Derivative(double speed, double heading) const {
+    const Eigen::Vector2d e(std::cos(heading), std::sin(heading));
+    const double kr = k_ / r_;
+    Eigen::Matrix<double, 7, 2> d = Eigen::Matrix<double, 7, 2>::Zero();
+    d.col(0) << 0, 0, e.x(), e.y(), -kr * e.y(), kr * e.x(), 0;
+    d.col(1) << 0, 0, -speed * e.y(), speed * e.x(), -kr * speed * e.x(), -kr * speed * e.y(), 0;
+    return d;
+  }
+
+ private:
+  Eigen::Vector2d from_;
+  double k_, wz_, r_;
+};
+
+// The miss at the target, (X, Y) of the arrival minus the target, as a function of the launch
+// speed and heading. Every evaluation integrates the sensitivities too and keeps the Jacobian,
+// because Ceres asks for the Jacobian at each accepted point right after its residuals.
+class ArrivalMiss : public ceres::SizedCostFunction<2, 2> {
+ public:
+  ArrivalMiss(const ModelParameters& params, const SimulationOptions& simulation,
+              const Launch& launch, const ShotRequest& request, double t_max)
+      : params_(params), simulation_(simulation), launch_(launch), request_(request),
+        t_max_(t_max) {}
+
+  bool Evaluate(double const* const* p, double* residuals, double** jacobians) const override {
+    const double speed = p[0][0], heading = p[0][1];
+    if (speed != cached_speed_ || heading != cached_heading_) {
+      Arrival a;
+      try {
+        a = SimulateArrival(params_, launch_.State(speed, heading), request_.final_speed, t_max_,
+                            simulation_, true);
+      } catch (const std::exception&) {
+        return false;  // Ceres shrinks the step
+      }
+      cached_speed_ = speed;
+      cached_heading_ = heading;
+      miss_ = a.state.head<2>() - request_.to;
+      jacobian_ = a.sensitivity->topRows<2>() * launch_.Derivative(speed, heading);
+      ++simulations_;
+    }
+    Eigen::Map<Eigen::Vector2d> residual(residuals);
+    residual = miss_;
+    if (jacobians && jacobians[0]) {
+      Eigen::Map<Eigen::Matrix<double, 2, 2, Eigen::RowMajor>> jacobian(jacobians[0]);
+      jacobian = jacobian_;
+    }
+    return true;
+  }
+
+  int simulations() const { return simulations_; }
+
+ private:
+  const ModelParameters& params_;
+  const SimulationOptions& simulation_;
+  Launch launch_;
+  const ShotRequest& request_;
+  double t_max_;
+  mutable double cached_speed_ = NAN, cached_heading_ = NAN;
+  mutable Eigen::Vector2d miss_;
+  mutable Eigen::Matrix2d jacobian_;
+  mutable int simulations_ = 0;
+};
+
+// Ends the refinement as soon as the miss is small enough, where Ceres' relative tolerances would
+// either stop early (large target distances) or go on polishing nanometres.
+class StopWhenClose : public ceres::IterationCallback {
+ public:
+  explicit StopWhenClose(double miss) : cost_(0.5 * miss * miss) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    return s.cost < cost_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  double cost_;
+};
+
+bool OnTable(const Eigen::Vector2d& x, const ModelParameters& p) {
+  const double r = p.ball.radius;
+  return x.x() >= r && x.x() <= p.table.length - r && x.y() >= r && x.y() <= p.table.width - r;
+}
+
+ShotPlan Refused(PlanStatus status, std::string reason) {
+  ShotPlan plan;
+  plan.status = status;
+  plan.reason = std::move(reason);
+  return plan;
+}
+
+ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const PlannerOptions& options) {
+  const LaunchSolution guess = InvertClosedForm(q, ClosedFormParameters::From(params));
+  if (guess.malformed) return Refused(PlanStatus::kInvalid, guess.reason);
+  if (!OnTable(q.from, params)) {
+    return Refused(PlanStatus::kOffTable, "the ball is not on the playing surface");
+  }
+  if (!OnTable(q.to, params)) {
+    return Refused(PlanStatus::kOffTable,
+                   "the target is beyond the playing surface (its centre must stay a radius "
+                   "inside the " + std::to_string(params.table.length) + " x " +
+                       std::to_string(params.table.width) + " m table)");
+  }
+  if (!guess.ok) return Refused(PlanStatus::kUnreachable, guess.reason);
+
+  const double r = params.ball.radius;
+  const double speed0 = guess.v0.norm();
+  const Eigen::Vector2d e0 = guess.v0 / speed0;
+  const double spin_ratio = r * (e0.x() * guess.w0.y() - e0.y() * guess.w0.x()) / speed0;
+  const LaunchSpeedRange speeds = LaunchSpeedsFor(spin_ratio, q.side_spin, params);
+  if (speeds.min > speeds.max) {
+    std::ostringstream reason;
+    reason.precision(3);
+    reason << "no stroke gives this spin (R w / v = " << spin_ratio << " across the line, wz = "
+           << q.side_spin << " rad/s) within the robot's tip offset of "
+           << params.cue.max_tip_offset << " r and cue speed of " << params.cue.max_speed
+           << " m/s";
+    return Refused(PlanStatus::kUnreachable, reason.str());
+  }
+  const Launch launch(q.from, spin_ratio, q.side_spin, r);
+  // Long enough for the 5-DOF ball, which side spin and rolling resistance while sliding slow
+  // down differently from the closed form, to arrive.
+  const ClosedFormTrajectory closed_form(ClosedFormParameters::From(params),
+                                         launch.State(speed0, std::atan2(e0.y(), e0.x())));
+  const double t_max = 3.0 * closed_form.TimeAtSpeed(q.final_speed) + 5.0;
+
+  ShotPlan plan;
+  plan.slide_length = guess.slide_length;
+  double p[2] = {speed0, std::atan2(e0.y(), e0.x())};
+  auto* miss = new ArrivalMiss(params, options.simulation, launch, q, t_max);
+  ceres::Problem problem;  // owns `miss`
+  problem.AddResidualBlock(miss, nullptr, p);
+  double residual[2];
+  const double* parameters[] = {p};
+  if (!miss->Evaluate(parameters, residual, nullptr)) {
+    return Refused(PlanStatus::kUnreachable, "the closed-form launch cannot be simulated");
+  }
+  plan.closed_form_miss_m = Eigen::Map<Eigen::Vector2d>(residual).norm();
+
+  if (options.refine) {
+    problem.SetParameterLowerBound(p, 0, speeds.min);
+    problem.SetParameterUpperBound(p, 0, speeds.max);
+    p[0] = std::clamp(p[0], speeds.min, speeds.max);
+    ceres::Solver::Options solver;
+    solver.linear_solver_type = ceres::DENSE_QR;
+    solver.num_threads = 1;
+    solver.logging_type = ceres::SILENT;
+    solver.max_num_iterations = options.max_iterations;
+    solver.function_tolerance = 1e-16;
+    solver.gradient_tolerance = 1e-16;
+    solver.parameter_tolerance = 1e-14;
+    StopWhenClose stop(options.miss_tolerance);
+    solver.callbacks.push_back(&stop);
+    ceres::Solver::Summary summary;
+    ceres::Solve(solver, &problem, &summary);
+    plan.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  } else if (p[0] < speeds.min || p[0] > speeds.max) {
+    return Refused(PlanStatus::kUnreachable,
+                   "the closed-form launch speed is outside what the robot's cue can give");
+  }
+
+  const Arrival arrival = SimulateArrival(params, launch.State(p[0], p[1]), q.final_speed, t_max,
+                                          options.simulation);
+  plan.v0 = arrival.trajectory->At(0.0).segment<2>(kVx);
+  plan.w0 = arrival.trajectory->At(0.0).segment<3>(kWx);
+  plan.predicted_final = arrival.state.head<2>();
+  plan.arrival_time = arrival.time;
+  plan.refined_miss_m = (plan.predicted_final - q.to).norm();
+  const int samples = std::max(1, static_cast<int>(std::ceil(arrival.time / options.path_sample_dt)));
+  for (int i = 0; i <= samples; ++i) {
+    const double t = arrival.time * i / samples;
+    plan.predicted_path.push_back(i == samples ? plan.predicted_final
+                                               : Eigen::Vector2d(arrival.trajectory->At(t).head<2>()));
+  }
+
+  const auto reach_limit = [&](double speed) {
+    return std::abs(speed - p[0]) <= 1e-9 * speed;
+  };
+  if (!arrival.reached || (options.refine && plan.refined_miss_m > options.acceptable_miss)) {
+    if (reach_limit(speeds.max)) {
+      plan.status = PlanStatus::kUnreachable;
+      plan.reason = "needs a faster launch than the robot's cue speed of " +
+                    std::to_string(params.cue.max_speed) + " m/s gives";
+    } else if (reach_limit(speeds.min)) {
+      plan.status = PlanStatus::kUnreachable;
+      plan.reason = "needs a slower launch than the side spin allows within the tip offset";
+    } else {
+      plan.status = PlanStatus::kNotConverged;
+      plan.reason = "refinement ended " + Millimetres(plan.refined_miss_m) + " from the target";
+    }
+    return plan;
+  }
+  for (const Eigen::Vector2d& x : plan.predicted_path) {
+    if (!OnTable(x, params)) {
+      plan.status = PlanStatus::kUnreachable;
+      plan.reason = "the path leaves the playing surface (a cushion is in the way)";
+      return plan;
+    }
+  }
+  const StrokeSolution stroke = StrokeFor(plan.v0, plan.w0, params);
+  if (!stroke.ok) {
+    plan.status = PlanStatus::kUnreachable;
+    plan.reason = stroke.reason;
+    return plan;
+  }
+  plan.stroke = stroke.stroke;
+  plan.status = PlanStatus::kOk;
+  return plan;
+}
+
+}  // namespace
+
+ShotPlan PlanShot(const ShotRequest& request, const ModelParameters& params,
+                  const PlannerOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  ShotPlan plan;
+  try {
+    plan = Plan(request, params, options);
+  } catch (const std::exception& e) {
+    plan = Refused(PlanStatus::kNotConverged, std::string("simulation failed: ") + e.what());
+  }
+  plan.solve_us =
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+  return plan;
+}
+
+}  // namespace billiard::planner

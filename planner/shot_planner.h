@@ -1,0 +1,80 @@
+// The shot planner: from where the ball is and where it must go, how to strike it.
+//
+//   1. closed-form inverse (closed_form_inverse.h): a straight shot under the sliding-then-rolling
+//      model, exact for that model and centimetres off the 5-DOF ball on spin-heavy shots;
+//   2. refinement with Ceres against the 5-DOF simulation (approximate model by default): the
+//      unknowns are the launch speed and heading, the spin choice (R w / v across the line, and the
+//      side spin wz as asked) is held, and the residual is the miss at the target, where the
+//      simulated speed falls to the requested value (or the ball comes to rest). The Jacobian comes
+//      from forward sensitivities integrated with the simulation (sim/sensitivity.h), so one
+//      iteration costs one simulation;
+//   3. the cue stroke that gives that launch (sim/cue_strike.h), within the robot's limits, which
+//      also bound the refinement (tip offset, cue speed).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "closed_form_inverse.h"
+#include "cue_strike.h"
+#include "parameters.h"
+#include "simulator.h"
+
+namespace billiard::planner {
+
+enum class PlanStatus {
+  kOk,
+  kInvalid,       // malformed request: non-finite numbers, negative speed, target = start
+  kOffTable,      // start or target outside the playing surface (ball centre within r of an edge)
+  kUnreachable,   // no stroke within the robot's limits, or outside the model's validity
+  kNotConverged,  // the refinement ended with a miss above the tolerance
+};
+
+// "ok", "invalid", "off_table", "unreachable", "not_converged".
+std::string PlanStatusName(PlanStatus status);
+
+struct PlannerOptions {
+  // The model the plan is refined against: the approximate 5-DOF model with RODAS4 by default.
+  SimulationOptions simulation = DefaultRefinementSimulation();
+  // The refinement stops once the simulated miss is below this [m]; a plan whose miss stays
+  // above `acceptable_miss` is refused as not converged.
+  double miss_tolerance = 2e-6;
+  double acceptable_miss = 1e-4;
+  int max_iterations = 25;
+  // The predicted path is sampled at this interval [s] (and at its ends).
+  double path_sample_dt = 0.02;
+  // Refine against the 5-DOF model; false: the closed-form inverse alone (its miss is still
+  // measured against the 5-DOF simulation).
+  bool refine = true;
+
+  static SimulationOptions DefaultRefinementSimulation();
+};
+
+struct ShotPlan {
+  PlanStatus status = PlanStatus::kInvalid;
+  std::string reason;  // why not, when status != kOk; empty when ok
+
+  Eigen::Vector2d v0 = Eigen::Vector2d::Zero();  // launch velocity [m/s]
+  Eigen::Vector3d w0 = Eigen::Vector3d::Zero();  // launch spin [rad/s]
+  CueStroke stroke;
+
+  // The simulated arrival of the planned launch: where its speed falls to the final speed (or it
+  // stops), when, and the path there sampled every path_sample_dt.
+  Eigen::Vector2d predicted_final = Eigen::Vector2d::Zero();
+  double arrival_time = 0.0;
+  std::vector<Eigen::Vector2d> predicted_path;
+
+  double closed_form_miss_m = 0.0;  // the closed-form launch simulated with the 5-DOF model
+  double refined_miss_m = 0.0;      // the plan simulated with the 5-DOF model
+  double solve_us = 0.0;            // wall time of the whole plan
+  int iterations = 0;               // Ceres iterations
+  double slide_length = 0.0;        // x1 of the closed-form solution [m]
+};
+
+// Plans `request` on the table and ball of `params`. Never throws on a bad request: the status
+// and reason say what is wrong.
+ShotPlan PlanShot(const ShotRequest& request, const ModelParameters& params,
+                  const PlannerOptions& options = {});
+
+}  // namespace billiard::planner
