@@ -98,5 +98,31 @@ TEST(CueStrike, StrikeRejectsImpossibleStrokes) {
   EXPECT_THROW(StrikeBall({-1, 0, 0, 0, 0}, {0, 0}, p), std::invalid_argument);
 }
 
+TEST(CueStrike, LaunchSpeedRangeIsWhereStrokeForSucceeds) {
+  const ModelParameters p = testing::PaperParameters();
+  const double r = p.ball.radius;
+  const Eigen::Vector2d e(0.6, 0.8);
+  // A launch along e with R w = k v across the line and side spin wz.
+  const auto stroke_ok = [&](double speed, double k, double wz) {
+    const Eigen::Vector3d w(-k * speed / r * e.y(), k * speed / r * e.x(), wz);
+    return StrokeFor(speed * e, w, p).ok;
+  };
+  for (auto [k, wz] : {std::pair{1.0, 0.0}, {-1.0, 40.0}, {0.0, -120.0}, {0.5, 300.0}}) {
+    const LaunchSpeedRange range = LaunchSpeedsFor(k, wz, p);
+    ASSERT_LT(range.min, range.max) << k << " " << wz;
+    EXPECT_TRUE(stroke_ok(range.max * (1 - 1e-9), k, wz)) << k << " " << wz;
+    EXPECT_FALSE(stroke_ok(range.max * (1 + 1e-6), k, wz)) << k << " " << wz;
+    if (wz != 0.0) {
+      EXPECT_TRUE(stroke_ok(range.min * (1 + 1e-9), k, wz)) << k << " " << wz;
+      EXPECT_FALSE(stroke_ok(range.min * (1 - 1e-6), k, wz)) << k << " " << wz;
+    } else {
+      EXPECT_EQ(range.min, 0.0);
+    }
+  }
+  // More draw than half a radius of tip offset gives (R w / v = 5/2 q): no stroke at all.
+  const LaunchSpeedRange none = LaunchSpeedsFor(-1.3, 0.0, p);
+  EXPECT_GT(none.min, none.max);
+}
+
 }  // namespace
 }  // namespace billiard
