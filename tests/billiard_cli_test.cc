@@ -8,24 +8,15 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/wait.h>
+
+#include "run_command.h"
 
 namespace {
 
-struct CommandResult {
-  int status;
-  std::string out;  // stdout and stderr, when asked
-};
+using billiard::testing::CommandResult;
 
 CommandResult Billiard(const std::string& args, bool merge_stderr = false) {
-  const std::string command =
-      std::string(BILLIARD_BIN) + " " + args + (merge_stderr ? " 2>&1" : " 2>/dev/null");
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buffer;
-  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  return billiard::testing::RunCommand(std::string(BILLIARD_BIN) + " " + args, merge_stderr);
 }
 
 nlohmann::json Json(const std::string& args) {
