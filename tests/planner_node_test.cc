@@ -1,0 +1,311 @@
+// The planner node over LCM: in-process on memq:// (one LCM shared by the node and the test), and
+// build/bin/planner_node as it is started and stopped.
+#include "planner_node.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "billiard/table_state_t.hpp"
+#include "run_command.h"
+
+namespace billiard::planner {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The message constants are declared without a definition (lcm-gen's C++98 output), so a test
+// must not bind them to a reference: compare them as ints.
+int Status(const cue_command_t& c) { return c.status; }
+constexpr int kOk = cue_command_t::STATUS_OK;
+constexpr int kInvalid = cue_command_t::STATUS_INVALID;
+constexpr int kOffTable = cue_command_t::STATUS_OFF_TABLE;
+constexpr int kNoBallState = cue_command_t::STATUS_NO_BALL_STATE;
+
+ball_state_t Ball(int32_t id, double x, double y, double vx = 0.0, double vy = 0.0) {
+  ball_state_t b{};
+  b.ball_id = id;
+  b.position[0] = x;
+  b.position[1] = y;
+  b.velocity[0] = vx;
+  b.velocity[1] = vy;
+  return b;
+}
+
+shot_request_t Request(int64_t id, int32_t ball, double x, double y,
+                       int8_t spin = shot_request_t::SPIN_NATURAL) {
+  shot_request_t q{};
+  q.utime = 1'000'000 + 17 * id;
+  q.request_id = id;
+  q.ball_id = ball;
+  q.target[0] = x;
+  q.target[1] = y;
+  q.spin = spin;
+  return q;
+}
+
+class PlannerNodeTest : public ::testing::Test {
+ protected:
+  PlannerNodeTest() {
+    lcm_.subscribe(kCueCommandChannel, &PlannerNodeTest::OnCommand, this);
+  }
+
+  void OnCommand(const lcm::ReceiveBuffer*, const std::string&, const cue_command_t* c) {
+    commands_.push_back(*c);
+  }
+
+  void PublishTable(const std::vector<ball_state_t>& balls, int64_t utime = 1'000'000) {
+    table_state_t state{};
+    state.utime = utime;
+    state.num_balls = static_cast<int32_t>(balls.size());
+    state.balls = balls;
+    ASSERT_EQ(lcm_.publish(kTableStateChannel, &state), 0);
+  }
+
+  // Publishes the request and handles messages until its answer arrives (nullopt if none does).
+  std::optional<cue_command_t> Ask(const shot_request_t& request) {
+    EXPECT_EQ(lcm_.publish(kShotRequestChannel, &request), 0);
+    for (;;) {
+      for (const cue_command_t& c : commands_) {
+        if (c.request_id == request.request_id) return c;
+      }
+      if (lcm_.handleTimeout(2000) <= 0) return std::nullopt;  // the queue ran dry
+    }
+  }
+
+  cue_command_t AskOk(const shot_request_t& request) {
+    const auto answer = Ask(request);
+    EXPECT_TRUE(answer) << "no answer to request " << request.request_id;
+    if (!answer) return {};
+    EXPECT_EQ(Status(*answer), kOk) << answer->reason;
+    return *answer;
+  }
+
+  int LogLinesContaining(const std::string& text) const {
+    int n = 0;
+    for (const std::string& line : log_) n += line.find(text) != std::string::npos;
+    return n;
+  }
+
+  lcm::LCM lcm_{"memq://"};
+  const ModelParameters params_ = LoadParameters("paper");
+  std::vector<std::string> log_;
+  std::vector<cue_command_t> commands_;
+  PlannerNode node_{lcm_, params_, {}, [this](const std::string& line) { log_.push_back(line); }};
+};
+
+TEST_F(PlannerNodeTest, AnswersLikePlanShotCalledDirectly) {
+  ASSERT_TRUE(lcm_.good());
+  PublishTable({Ball(1, 0.6, 0.5), Ball(2, 2.0, 1.0)});
+  shot_request_t q = Request(42, 1, 1.8, 0.9);
+  q.final_speed = 0.2;
+  q.side_spin = 5.0;
+  const cue_command_t c = AskOk(q);
+  EXPECT_EQ(c.request_id, 42);
+  EXPECT_EQ(c.ball_id, 1);
+  EXPECT_EQ(c.utime, q.utime);
+  EXPECT_TRUE(c.reason.empty());
+
+  ShotRequest direct;
+  direct.from = {0.6, 0.5};
+  direct.to = {1.8, 0.9};
+  direct.final_speed = 0.2;
+  direct.side_spin = 5.0;
+  const ShotPlan plan = PlanShot(direct, params_);
+  ASSERT_EQ(plan.status, PlanStatus::kOk) << plan.reason;
+  // The same request, so the same numbers to the bit: the planner depends on nothing else.
+  EXPECT_EQ(c.v0[0], plan.v0.x());
+  EXPECT_EQ(c.v0[1], plan.v0.y());
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(c.w0[i], plan.w0[i]);
+  EXPECT_EQ(c.cue_speed, plan.stroke.speed);
+  EXPECT_EQ(c.heading, plan.stroke.heading);
+  EXPECT_EQ(c.tip_side, plan.stroke.tip_side);
+  EXPECT_EQ(c.tip_height, plan.stroke.tip_height);
+  EXPECT_EQ(c.elevation, plan.stroke.elevation);
+  EXPECT_EQ(c.iterations, plan.iterations);
+  EXPECT_EQ(c.refined_miss_m, plan.refined_miss_m);
+  EXPECT_EQ(c.closed_form_miss_m, plan.closed_form_miss_m);
+  EXPECT_GT(c.cue_speed, 0.0);
+
+  EXPECT_EQ(c.start[0], 0.6);
+  EXPECT_EQ(c.start[1], 0.5);
+  ASSERT_GE(c.num_path_points, 2);
+  ASSERT_EQ(c.path.size(), static_cast<size_t>(c.num_path_points));
+  EXPECT_NEAR(c.path.front()[0], 0.6, 1e-12);
+  EXPECT_NEAR(c.path.front()[1], 0.5, 1e-12);
+  EXPECT_NEAR(c.path.back()[0], c.predicted_final[0], 1e-12);
+  EXPECT_NEAR(c.path.back()[1], c.predicted_final[1], 1e-12);
+  EXPECT_LT(std::hypot(c.predicted_final[0] - 1.8, c.predicted_final[1] - 0.9), 1e-3);
+  EXPECT_EQ(LogLinesContaining("request 42 (ball 1): ok"), 1);
+}
+
+TEST_F(PlannerNodeTest, MapsEverySpinChoiceToThePlannersRequest) {
+  PublishTable({Ball(3, 0.4, 0.4)});
+  const std::pair<int8_t, std::optional<SpinStyle>> spins[] = {
+      {shot_request_t::SPIN_NATURAL, SpinStyle::kNatural},
+      {shot_request_t::SPIN_STUN, SpinStyle::kStun},
+      {shot_request_t::SPIN_FOLLOW, SpinStyle::kFollow},
+      {shot_request_t::SPIN_DRAW, SpinStyle::kDraw},
+      {shot_request_t::SPIN_SLIDE, std::nullopt}};
+  int64_t id = 100;
+  for (const auto& [spin, style] : spins) {
+    shot_request_t q = Request(++id, 3, 1.4, 0.7, spin);
+    q.final_speed = 0.5;
+    q.slide_length = 0.3;
+    const auto answer = Ask(q);
+    ASSERT_TRUE(answer) << int{spin};
+    ShotRequest direct;
+    direct.from = {0.4, 0.4};
+    direct.to = {1.4, 0.7};
+    direct.final_speed = 0.5;
+    if (style) {
+      direct.style = *style;
+    } else {
+      direct.slide_length = 0.3;
+    }
+    const ShotPlan plan = PlanShot(direct, params_);
+    EXPECT_EQ(answer->reason, plan.reason) << int{spin};
+    EXPECT_EQ(answer->v0[0], plan.v0.x()) << int{spin};
+    EXPECT_EQ(answer->w0[0], plan.w0.x()) << int{spin};
+    EXPECT_EQ(answer->w0[1], plan.w0.y()) << int{spin};
+    std::fprintf(stderr, "spin %d: %s, %d iterations, miss %.2e m (closed form %.2e m), %.0f us\n",
+                 int{spin}, CueCommandStatusName(answer->status).c_str(), answer->iterations,
+                 answer->refined_miss_m, answer->closed_form_miss_m, answer->solve_us);
+  }
+}
+
+TEST_F(PlannerNodeTest, RefusesWithAReasonAndKeepsAnswering) {
+  PublishTable({Ball(1, 0.6, 0.5)});
+  struct Case {
+    shot_request_t request;
+    int status;
+  };
+  std::vector<Case> cases = {
+      {Request(1, 1, 5.0, 0.5), kOffTable},
+      {Request(2, 9, 1.0, 0.5), kNoBallState},
+      {Request(3, 1, kNaN, 0.5), kInvalid},
+      {Request(4, 1, 1.0, 0.5, 9), kInvalid},
+      {Request(5, 1, 1.0, 0.5, shot_request_t::SPIN_SLIDE), kInvalid},
+      {Request(6, 1, 1.0, 0.5), kInvalid},
+      {Request(7, 1, 1.0, 0.5), kInvalid},
+  };
+  cases[4].request.slide_length = kNaN;
+  cases[5].request.final_speed = std::numeric_limits<double>::infinity();
+  cases[6].request.side_spin = -kNaN;
+  for (const Case& k : cases) {
+    const auto answer = Ask(k.request);
+    ASSERT_TRUE(answer) << "request " << k.request.request_id;
+    EXPECT_EQ(Status(*answer), k.status) << "request " << k.request.request_id << ": "
+                                         << answer->reason;
+    EXPECT_FALSE(answer->reason.empty()) << "request " << k.request.request_id;
+    EXPECT_EQ(answer->request_id, k.request.request_id);
+    // A refused command cannot move the cue.
+    for (double x : {answer->cue_speed, answer->heading, answer->tip_side, answer->tip_height,
+                     answer->elevation}) {
+      EXPECT_EQ(x, 0.0) << "request " << k.request.request_id;
+    }
+  }
+  EXPECT_EQ(LogLinesContaining("request 1 (ball 1): off_table"), 1);
+  EXPECT_EQ(LogLinesContaining("request 2 (ball 9): no_ball_state"), 1);
+
+  // slide_length means nothing without SPIN_SLIDE: a NaN there is no reason to refuse.
+  shot_request_t q = Request(8, 1, 1.0, 0.5);
+  q.slide_length = kNaN;
+  AskOk(q);
+}
+
+TEST_F(PlannerNodeTest, RefusesToPlanForAMovingBall) {
+  PublishTable({Ball(1, 0.6, 0.5, 0.3, 0.1), Ball(2, 1.6, 0.5, 0.01, -0.02)});
+  const auto moving = Ask(Request(1, 1, 1.0, 0.5));
+  ASSERT_TRUE(moving);
+  EXPECT_EQ(Status(*moving), kInvalid);
+  EXPECT_NE(moving->reason.find("moving"), std::string::npos) << moving->reason;
+  AskOk(Request(2, 2, 1.0, 0.5));  // below the 0.05 m/s default
+
+  PublishTable({Ball(4, kNaN, 0.5)});
+  const auto nan_state = Ask(Request(3, 4, 1.0, 0.5));
+  ASSERT_TRUE(nan_state);
+  EXPECT_EQ(Status(*nan_state), kInvalid);
+}
+
+TEST_F(PlannerNodeTest, KeepsTheLatestStateOfEachBall) {
+  PublishTable({Ball(1, 0.6, 0.5), Ball(2, 2.0, 1.0)});
+  PublishTable({Ball(1, 0.7, 0.4)}, 2'000'000);  // ball 2 not seen this time
+  const cue_command_t one = AskOk(Request(1, 1, 1.5, 0.6));
+  EXPECT_EQ(one.start[0], 0.7);
+  EXPECT_EQ(one.start[1], 0.4);
+  const cue_command_t two = AskOk(Request(2, 2, 1.5, 0.6));
+  EXPECT_EQ(two.start[0], 2.0);
+  EXPECT_EQ(two.start[1], 1.0);
+}
+
+TEST_F(PlannerNodeTest, SurvivesPayloadsThatDoNotDecode) {
+  const std::string garbage = "this is not an LCM message";
+  lcm_.publish(kShotRequestChannel, garbage.data(), static_cast<unsigned>(garbage.size()));
+  lcm_.publish(kTableStateChannel, garbage.data(), static_cast<unsigned>(garbage.size()));
+
+  // A request cut short, and one with bytes after it.
+  const shot_request_t request = Request(1, 1, 1.0, 0.5);
+  std::vector<uint8_t> bytes(request.getEncodedSize() + 3);
+  ASSERT_EQ(request.encode(bytes.data(), 0, static_cast<int>(bytes.size())),
+            request.getEncodedSize());
+  lcm_.publish(kShotRequestChannel, bytes.data(), request.getEncodedSize() - 1);
+  lcm_.publish(kShotRequestChannel, bytes.data(), static_cast<unsigned>(bytes.size()));
+
+  // Table states whose ball count lies: the decoder would size its vector from it.
+  table_state_t state{};
+  state.num_balls = 1;
+  state.balls = {Ball(1, 0.6, 0.5)};
+  std::vector<uint8_t> table(state.getEncodedSize());
+  ASSERT_EQ(state.encode(table.data(), 0, static_cast<int>(table.size())),
+            static_cast<int>(table.size()));
+  for (uint32_t count : {0xffffffffu, 100'000'000u}) {
+    for (int i = 0; i < 4; ++i) table[16 + i] = static_cast<uint8_t>(count >> (24 - 8 * i));
+    lcm_.publish(kTableStateChannel, table.data(), static_cast<unsigned>(table.size()));
+  }
+
+  // None of that was taken for a request or a ball.
+  const auto answer = Ask(Request(2, 1, 1.0, 0.5));
+  ASSERT_TRUE(answer);
+  EXPECT_EQ(Status(*answer), kNoBallState);
+  EXPECT_EQ(commands_.size(), 1u);
+  EXPECT_EQ(LogLinesContaining("dropped"), 6);
+
+  PublishTable({Ball(1, 0.6, 0.5)});
+  AskOk(Request(3, 1, 1.0, 0.5));
+}
+
+TEST(PlannerNodeBinary, StopsCleanlyOnSigintAndSigterm) {
+  for (const char* signal : {"INT", "TERM"}) {
+    const auto r = billiard::testing::RunCommand(
+        std::string("timeout --preserve-status -s ") + signal + " 1 " PLANNER_NODE_BIN +
+            " --lcm-url memq://",
+        true);
+    EXPECT_EQ(r.status, 0) << signal << ": " << r.out;
+    EXPECT_NE(r.out.find("planner_node: stopped"), std::string::npos) << signal << ": " << r.out;
+  }
+}
+
+TEST(PlannerNodeBinary, BadStartExitsNonZeroWithAOneLineReason) {
+  const auto bad_url =
+      billiard::testing::RunCommand(PLANNER_NODE_BIN " --lcm-url nosuchprovider://x", true);
+  EXPECT_EQ(bad_url.status, 1) << bad_url.out;
+  EXPECT_NE(bad_url.out.find("planner_node: cannot initialise LCM with 'nosuchprovider://x'\n"),
+            std::string::npos)
+      << bad_url.out;
+  for (const char* args : {" --params no-such-set", " --max-ball-speed nan", " --frobnicate"}) {
+    const auto r = billiard::testing::RunCommand(PLANNER_NODE_BIN + std::string(args), true);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace billiard::planner
