@@ -22,12 +22,7 @@ struct BenchArgs {
 void Run(BenchArgs args) {
   if (args.options.random_shots < 0) throw UsageError("--shots must be >= 0");
   if (args.options.threads < 1) throw UsageError("--threads must be >= 1");
-  ModelParameters params;
-  try {
-    params = LoadParameters(args.params);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--params: ") + e.what());
-  }
+  const ModelParameters params = LoadParametersOption(args.params);
   args.options.quick = args.quick;
   args.options.progress = [](const std::string& line) { std::cerr << "bench: " << line << std::endl; };
   const bench::BenchmarkResult result = bench::RunBenchmark(params, args.options);

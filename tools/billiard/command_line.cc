@@ -34,4 +34,12 @@ void RequireFinite(double value, const std::string& what) {
   if (!std::isfinite(value)) throw UsageError(what + ": numbers must be finite (no NaN or inf)");
 }
 
+ModelParameters LoadParametersOption(const std::string& name_or_path) {
+  try {
+    return LoadParameters(name_or_path);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--params: ") + e.what());
+  }
+}
+
 }  // namespace billiard::cli

@@ -5,10 +5,18 @@
 #include <string>
 #include <vector>
 
+#include "parameters.h"
+
 namespace billiard::cli {
 
 // A user error: printed as one line, exit status 2.
 struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Not a failure of the tool: the command ran and its answer is no (a refused plan), already
+// printed. what() is the one-line reason for stderr; exit status 3.
+struct Refused : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
@@ -18,5 +26,9 @@ std::vector<double> ParseNumberList(const std::string& text, std::size_t count,
 
 // Throws UsageError unless value is finite.
 void RequireFinite(double value, const std::string& what);
+
+// The parameter set of a --params option (a built-in name or a JSON file); UsageError if it
+// does not load.
+ModelParameters LoadParametersOption(const std::string& name_or_path);
 
 }  // namespace billiard::cli

@@ -1,4 +1,4 @@
-// billiard: simulate a ball, fit the contact model (and, as the project grows, plan and detect).
+// billiard: simulate a ball, fit the contact model, plan a shot (and, as the project grows, detect).
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -6,6 +6,7 @@
 #include "bench_command.h"
 #include "command_line.h"
 #include "fit_contact_command.h"
+#include "plan_command.h"
 #include "simulate_command.h"
 
 int main(int argc, char** argv) {
@@ -18,13 +19,18 @@ int main(int argc, char** argv) {
   billiard::cli::AddSimulateCommand(app);
   billiard::cli::AddFitContactCommand(app);
   billiard::cli::AddBenchCommand(app);
+  billiard::cli::AddPlanCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // A command line CLI11 rejects is a usage error like any other (--help is not one).
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const billiard::cli::UsageError& e) {
     std::cerr << "billiard: " << e.what() << std::endl;
     return 2;
+  } catch (const billiard::cli::Refused& e) {
+    std::cerr << "billiard: " << e.what() << std::endl;
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "billiard: error: " << e.what() << std::endl;
     return 1;

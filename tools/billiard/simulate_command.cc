@@ -70,12 +70,7 @@ void Run(const SimulateArgs& args) {
   const auto integrator = ParseIntegrator(args.integrator);
   if (!integrator) throw UsageError("--integrator: unknown integrator '" + args.integrator +
                                     "' (rodas4, dopri5)");
-  ModelParameters params;
-  try {
-    params = LoadParameters(args.params);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--params: ") + e.what());
-  }
+  const ModelParameters params = LoadParametersOption(args.params);
 
   const BallState initial = Eigen::Map<const BallState>(numbers.data());
   SimulationOptions options;

@@ -1,0 +1,122 @@
+// `billiard plan` as a user runs it: one JSON object on stdout, exit 3 with the status and reason
+// for a refused plan, exit 2 with a one-line reason for a bad command line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "run_command.h"
+
+namespace {
+
+using billiard::testing::CommandResult;
+
+CommandResult Billiard(const std::string& args, bool merge_stderr = false) {
+  return billiard::testing::RunCommand(std::string(BILLIARD_BIN) + " " + args, merge_stderr);
+}
+
+// Exactly one JSON object, on one line.
+nlohmann::json OneObject(const CommandResult& r, const std::string& args) {
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
+  const auto j = nlohmann::json::parse(r.out, nullptr, false);
+  EXPECT_TRUE(j.is_object()) << args << ": " << r.out;
+  return j;
+}
+
+void ExpectEveryDocumentedKey(const nlohmann::json& j) {
+  for (const char* key : {"v0", "w0", "cue", "predicted_final", "closed_form_miss_m",
+                          "refined_miss_m", "solve_us", "iterations", "arrival_time", "status"}) {
+    EXPECT_TRUE(j.contains(key)) << key << " in " << j;
+  }
+  EXPECT_EQ(j["v0"].size(), 2u);
+  EXPECT_EQ(j["w0"].size(), 3u);
+  EXPECT_EQ(j["predicted_final"].size(), 2u);
+  for (const char* key : {"speed", "heading", "tip_side", "tip_height", "elevation"}) {
+    EXPECT_TRUE(j["cue"].contains(key)) << "cue." << key << " in " << j;
+  }
+}
+
+TEST(BilliardPlan, PrintsTheDocumentedJsonObject) {
+  const std::string args = "plan --from 0.5,0.5 --to 1.5,0.8 --json";
+  const CommandResult r = Billiard(args);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = OneObject(r, args);
+  ExpectEveryDocumentedKey(j);
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_FALSE(j.contains("reason"));
+  EXPECT_LT(std::hypot(j["predicted_final"][0].get<double>() - 1.5,
+                       j["predicted_final"][1].get<double>() - 0.8),
+            1e-3);
+  EXPECT_LE(j["refined_miss_m"].get<double>(), 1e-4);
+  EXPECT_GT(j["cue"]["speed"].get<double>(), 0.0);
+  // No side spin: the cue points along the line to the target.
+  EXPECT_NEAR(j["cue"]["heading"].get<double>(), std::atan2(0.3, 1.0), 1e-3);
+  EXPECT_GT(j["arrival_time"].get<double>(), 0.0);
+  std::fprintf(stderr, "plan: %d iterations, %.0f us, miss %.2e m (closed form %.2e m)\n",
+               j["iterations"].get<int>(), j["solve_us"].get<double>(),
+               j["refined_miss_m"].get<double>(), j["closed_form_miss_m"].get<double>());
+}
+
+TEST(BilliardPlan, EverySpinChoiceAnswersWithOneObject) {
+  for (const char* spin : {"--spin stun", "--spin natural", "--spin follow", "--spin draw",
+                           "--slide 0.2", "--spin natural --side-spin=-20", "--no-refine"}) {
+    const std::string args =
+        std::string("plan --from 0.5,0.5 --to 1.5,0.8 --final-speed 0.3 --json ") + spin;
+    const CommandResult r = Billiard(args);
+    const auto j = OneObject(r, args);
+    ExpectEveryDocumentedKey(j);
+    EXPECT_EQ(r.status, j["status"] == "ok" ? 0 : 3) << args;
+    std::fprintf(stderr, "%-32s %s, %d iterations, miss %.2e m (closed form %.2e m), %.0f us\n",
+                 spin, j["status"].get<std::string>().c_str(), j["iterations"].get<int>(),
+                 j["refined_miss_m"].get<double>(), j["closed_form_miss_m"].get<double>(),
+                 j["solve_us"].get<double>());
+  }
+}
+
+TEST(BilliardPlan, RefusedPlanSaysWhyAndExitsThree) {
+  const std::string args = "plan --from 0.5,0.5 --to 5,0.5 --json";
+  const CommandResult r = Billiard(args);
+  EXPECT_EQ(r.status, 3);
+  const auto j = OneObject(r, args);
+  ExpectEveryDocumentedKey(j);
+  EXPECT_EQ(j["status"], "off_table");
+  ASSERT_TRUE(j.contains("reason"));
+  EXPECT_FALSE(j["reason"].get<std::string>().empty());
+
+  // Without --json: nothing on stdout, the reason in one line on stderr.
+  const CommandResult human = Billiard("plan --from 0.5,0.5 --to 5,0.5", true);
+  EXPECT_EQ(human.status, 3);
+  EXPECT_EQ(std::count(human.out.begin(), human.out.end(), '\n'), 1) << human.out;
+  EXPECT_NE(human.out.find("off_table"), std::string::npos) << human.out;
+}
+
+TEST(BilliardPlan, BadCommandLineExitsTwoWithAOneLineReason) {
+  const char* bad[] = {
+      "plan --from 0.5,0.5 --to 1.5,0.8 --spin stun --slide 0.1 --json",
+      "plan --from 0.5,0.5 --to nan,0 --json",
+      "plan --from 0.5 --to 1.5,0.8 --json",
+      "plan --from 0.5,0.5 --to 1.5,x --json",
+      "plan --from 0.5,0.5 --json",
+      "plan --from 0.5,0.5 --to 1.5,0.8 --spin sideways --json",
+      "plan --from 0.5,0.5 --to 1.5,0.8 --final-speed nan --json",
+      "plan --from 0.5,0.5 --to 1.5,0.8 --slide inf --json",
+      "plan --from 0.5,0.5 --to 1.5,0.8 --params no-such-set --json",
+  };
+  for (const char* args : bad) {
+    const CommandResult r = Billiard(args, true);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.out;
+    EXPECT_EQ(r.out.find('{'), std::string::npos) << args;  // no JSON on failure
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
+  }
+}
+
+TEST(BilliardPlan, HumanSummaryGoesToStderr) {
+  const CommandResult r = Billiard("plan --from 0.5,0.5 --to 1.5,0.8");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+}  // namespace

@@ -1,0 +1,121 @@
+#include "plan_command.h"
+
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "command_line.h"
+#include "shot_planner.h"
+
+namespace billiard::cli {
+
+namespace {
+
+struct PlanArgs {
+  std::string from, to;
+  double final_speed = 0.0;
+  std::string spin = "natural";
+  double slide = 0.0;  // --slide, when given
+  double side_spin = 0.0;
+  std::string params = "paper";
+  bool no_refine = false;
+  bool json = false;
+};
+
+nlohmann::json PlanJson(const planner::ShotPlan& plan, const ModelParameters& params) {
+  nlohmann::json j;
+  j["v0"] = {plan.v0.x(), plan.v0.y()};
+  j["w0"] = {plan.w0.x(), plan.w0.y(), plan.w0.z()};
+  j["cue"] = {{"speed", plan.stroke.speed},
+              {"heading", plan.stroke.heading},
+              {"tip_side", plan.stroke.tip_side},
+              {"tip_height", plan.stroke.tip_height},
+              {"elevation", plan.stroke.elevation}};
+  j["predicted_final"] = {plan.predicted_final.x(), plan.predicted_final.y()};
+  j["closed_form_miss_m"] = plan.closed_form_miss_m;
+  j["refined_miss_m"] = plan.refined_miss_m;
+  j["solve_us"] = plan.solve_us;
+  j["iterations"] = plan.iterations;
+  j["arrival_time"] = plan.arrival_time;
+  j["slide_length"] = plan.slide_length;
+  j["params"] = params.name;
+  j["status"] = planner::PlanStatusName(plan.status);
+  if (plan.status != planner::PlanStatus::kOk) j["reason"] = plan.reason;
+  return j;
+}
+
+void PrintSummary(const planner::ShotPlan& plan, const ModelParameters& params, bool refined) {
+  std::cerr << "plan, " << params.name << " parameters, "
+            << (refined ? "refined against the 5-DOF model" : "closed-form inverse alone") << ": "
+            << planner::PlanStatusName(plan.status) << "\n  cue     " << plan.stroke.speed
+            << " m/s, heading " << plan.stroke.heading << " rad, tip side " << plan.stroke.tip_side
+            << " m, tip height " << plan.stroke.tip_height << " m, elevation "
+            << plan.stroke.elevation << " rad\n  launch  v0 = " << plan.v0.x() << ", "
+            << plan.v0.y() << " m/s, w0 = " << plan.w0.x() << ", " << plan.w0.y() << ", "
+            << plan.w0.z() << " rad/s, slide " << plan.slide_length << " m\n  arrival "
+            << plan.predicted_final.x() << ", " << plan.predicted_final.y() << " m at "
+            << plan.arrival_time << " s, miss " << plan.refined_miss_m << " m (closed form "
+            << plan.closed_form_miss_m << " m), " << plan.iterations << " iterations, "
+            << plan.solve_us << " us\n";
+}
+
+void Run(const PlanArgs& args, bool slide_given) {
+  const auto from = ParseNumberList(args.from, 2, "--from X,Y");
+  const auto to = ParseNumberList(args.to, 2, "--to X,Y");
+  RequireFinite(args.final_speed, "--final-speed");
+  RequireFinite(args.side_spin, "--side-spin");
+  planner::ShotRequest request;
+  request.from = {from[0], from[1]};
+  request.to = {to[0], to[1]};
+  request.final_speed = args.final_speed;
+  request.side_spin = args.side_spin;
+  if (slide_given) {
+    RequireFinite(args.slide, "--slide");
+    request.slide_length = args.slide;
+  } else {
+    const auto style = planner::ParseSpinStyle(args.spin);
+    if (!style) {
+      throw UsageError("--spin: unknown spin '" + args.spin + "' (stun, natural, follow, draw)");
+    }
+    request.style = *style;
+  }
+  const ModelParameters params = LoadParametersOption(args.params);
+  planner::PlannerOptions options;
+  options.refine = !args.no_refine;
+
+  const planner::ShotPlan plan = planner::PlanShot(request, params, options);
+  if (args.json) std::cout << PlanJson(plan, params).dump() << std::endl;
+  if (plan.status != planner::PlanStatus::kOk) {
+    throw Refused(planner::PlanStatusName(plan.status) + ": " + plan.reason);
+  }
+  if (!args.json) PrintSummary(plan, params, options.refine);
+}
+
+}  // namespace
+
+void AddPlanCommand(CLI::App& app) {
+  auto args = std::make_shared<PlanArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "plan", "Plan the cue stroke that sends a ball to a target (exit 3 if the plan is refused)");
+  cmd->add_option("--from", args->from,
+                  "Ball position X,Y [m] (write --from=-1,0 when it starts with a minus sign)")
+      ->required();
+  cmd->add_option("--to", args->to, "Target X,Y [m]")->required();
+  cmd->add_option("--final-speed", args->final_speed, "Speed at the target [m/s]; 0: stop there")
+      ->capture_default_str();
+  CLI::Option* spin =
+      cmd->add_option("--spin", args->spin, "stun | natural | follow | draw")->capture_default_str();
+  CLI::Option* slide = cmd->add_option(
+      "--slide", args->slide, "Slide length x1 [m] instead of a spin style (excludes --spin)");
+  slide->excludes(spin);
+  cmd->add_option("--side-spin", args->side_spin, "Side spin wz [rad/s]")->capture_default_str();
+  cmd->add_option("--params", args->params, "paper | pool | path to a JSON parameter file")
+      ->capture_default_str();
+  cmd->add_flag("--no-refine", args->no_refine,
+                "The closed-form inverse alone (its miss is still measured with the 5-DOF model)");
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
+  cmd->callback([args, slide] { Run(*args, slide->count() > 0); });
+}
+
+}  // namespace billiard::cli
