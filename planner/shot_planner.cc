@@ -68,30 +68,54 @@ class Launch {
 };
 
 // The miss at the target, (X, Y) of the arrival minus the target, as a function of the launch
-// speed and heading. Every evaluation integrates the sensitivities too and keeps the Jacobian,
-// because Ceres asks for the Jacobian at each accepted point right after its residuals.
+// speed and heading.
+struct MissFunction {
+  const ModelParameters& params;
+  const SimulationOptions& simulation;
+  Launch launch;
+  const ShotRequest& request;
+  double t_max;
+  int* simulations;  // counts the simulations run
+
+  // The miss, and its Jacobian from the sensitivities when `jacobian` is not null; false when
+  // the simulation fails (Ceres then shrinks its step).
+  bool Evaluate(double speed, double heading, Eigen::Vector2d* miss,
+                Eigen::Matrix2d* jacobian) const {
+    ++*simulations;
+    Arrival a;
+    try {
+      a = SimulateArrival(params, launch.State(speed, heading), request.final_speed, t_max,
+                          simulation, jacobian != nullptr);
+    } catch (const std::exception&) {
+      return false;
+    }
+    *miss = a.state.head<2>() - request.to;
+    if (jacobian) *jacobian = a.sensitivity->topRows<2>() * launch.Derivative(speed, heading);
+    return true;
+  }
+
+  // The residual alone, for ceres::NumericDiffCostFunction.
+  bool operator()(const double* p, double* residual) const {
+    Eigen::Vector2d miss;
+    if (!Evaluate(p[0], p[1], &miss, nullptr)) return false;
+    Eigen::Map<Eigen::Vector2d>(residual, 2) = miss;
+    return true;
+  }
+};
+
+// MissFunction with the sensitivity Jacobian. Every evaluation integrates the sensitivities and
+// keeps the Jacobian, because Ceres asks for the Jacobian at each accepted point right after its
+// residuals: one simulation per point instead of two.
 class ArrivalMiss : public ceres::SizedCostFunction<2, 2> {
  public:
-  ArrivalMiss(const ModelParameters& params, const SimulationOptions& simulation,
-              const Launch& launch, const ShotRequest& request, double t_max)
-      : params_(params), simulation_(simulation), launch_(launch), request_(request),
-        t_max_(t_max) {}
+  explicit ArrivalMiss(const MissFunction& f) : f_(f) {}
 
   bool Evaluate(double const* const* p, double* residuals, double** jacobians) const override {
     const double speed = p[0][0], heading = p[0][1];
     if (speed != cached_speed_ || heading != cached_heading_) {
-      Arrival a;
-      try {
-        a = SimulateArrival(params_, launch_.State(speed, heading), request_.final_speed, t_max_,
-                            simulation_, true);
-      } catch (const std::exception&) {
-        return false;  // Ceres shrinks the step
-      }
+      if (!f_.Evaluate(speed, heading, &miss_, &jacobian_)) return false;
       cached_speed_ = speed;
       cached_heading_ = heading;
-      miss_ = a.state.head<2>() - request_.to;
-      jacobian_ = a.sensitivity->topRows<2>() * launch_.Derivative(speed, heading);
-      ++simulations_;
     }
     Eigen::Map<Eigen::Vector2d> residual(residuals);
     residual = miss_;
@@ -102,18 +126,11 @@ class ArrivalMiss : public ceres::SizedCostFunction<2, 2> {
     return true;
   }
 
-  int simulations() const { return simulations_; }
-
  private:
-  const ModelParameters& params_;
-  const SimulationOptions& simulation_;
-  Launch launch_;
-  const ShotRequest& request_;
-  double t_max_;
+  MissFunction f_;
   mutable double cached_speed_ = NAN, cached_heading_ = NAN;
   mutable Eigen::Vector2d miss_;
   mutable Eigen::Matrix2d jacobian_;
-  mutable int simulations_ = 0;
 };
 
 // Ends the refinement as soon as the miss is small enough, where Ceres' relative tolerances would
@@ -179,17 +196,23 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
   ShotPlan plan;
   plan.slide_length = guess.slide_length;
   double p[2] = {speed0, std::atan2(e0.y(), e0.x())};
-  auto* miss = new ArrivalMiss(params, options.simulation, launch, q, t_max);
-  ceres::Problem problem;  // owns `miss`
-  problem.AddResidualBlock(miss, nullptr, p);
-  double residual[2];
-  const double* parameters[] = {p};
-  if (!miss->Evaluate(parameters, residual, nullptr)) {
+  const MissFunction miss{params, options.simulation, launch, q, t_max, &plan.simulations};
+  Eigen::Vector2d closed_form_miss;
+  if (!miss.Evaluate(p[0], p[1], &closed_form_miss, nullptr)) {
     return Refused(PlanStatus::kUnreachable, "the closed-form launch cannot be simulated");
   }
-  plan.closed_form_miss_m = Eigen::Map<Eigen::Vector2d>(residual).norm();
+  plan.closed_form_miss_m = closed_form_miss.norm();
 
   if (options.refine) {
+    ceres::Problem problem;
+    if (options.jacobian == JacobianMethod::kSensitivities) {
+      problem.AddResidualBlock(new ArrivalMiss(miss), nullptr, p);
+    } else {
+      problem.AddResidualBlock(
+          new ceres::NumericDiffCostFunction<MissFunction, ceres::CENTRAL, 2, 2>(
+              new MissFunction(miss)),
+          nullptr, p);
+    }
     problem.SetParameterLowerBound(p, 0, speeds.min);
     problem.SetParameterUpperBound(p, 0, speeds.max);
     p[0] = std::clamp(p[0], speeds.min, speeds.max);
@@ -213,6 +236,7 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
 
   const Arrival arrival = SimulateArrival(params, launch.State(p[0], p[1]), q.final_speed, t_max,
                                           options.simulation);
+  ++plan.simulations;
   plan.v0 = arrival.trajectory->At(0.0).segment<2>(kVx);
   plan.w0 = arrival.trajectory->At(0.0).segment<3>(kWx);
   plan.predicted_final = arrival.state.head<2>();

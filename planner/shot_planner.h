@@ -34,6 +34,12 @@ enum class PlanStatus {
 // "ok", "invalid", "off_table", "unreachable", "not_converged".
 std::string PlanStatusName(PlanStatus status);
 
+// How the refinement gets the derivative of the miss with respect to the launch.
+enum class JacobianMethod {
+  kSensitivities,       // forward sensitivities, one simulation per point (the default)
+  kCentralDifferences,  // five simulations per point; kept to measure the difference
+};
+
 struct PlannerOptions {
   // The model the plan is refined against: the approximate 5-DOF model with RODAS4 by default.
   SimulationOptions simulation = DefaultRefinementSimulation();
@@ -47,6 +53,7 @@ struct PlannerOptions {
   // Refine against the 5-DOF model; false: the closed-form inverse alone (its miss is still
   // measured against the 5-DOF simulation).
   bool refine = true;
+  JacobianMethod jacobian = JacobianMethod::kSensitivities;
 
   static SimulationOptions DefaultRefinementSimulation();
 };
@@ -69,6 +76,7 @@ struct ShotPlan {
   double refined_miss_m = 0.0;      // the plan simulated with the 5-DOF model
   double solve_us = 0.0;            // wall time of the whole plan
   int iterations = 0;               // Ceres iterations
+  int simulations = 0;              // 5-DOF simulations run for the plan
   double slide_length = 0.0;        // x1 of the closed-form solution [m]
 };
 

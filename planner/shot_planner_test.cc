@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "parameters.h"
+#include "request_suite.h"
 #include "simulator.h"
 
 namespace billiard::planner {
@@ -29,31 +29,12 @@ Eigen::Vector2d SimulatedArrival(const ShotPlan& plan, const ShotRequest& q) {
   return a.state.head<2>();
 }
 
-// A seeded request over the 2.54 x 1.27 m table: stop or pass at speed, every spin choice, a
-// third with side spin; start and target 10 cm or more inside the cushions, 20 cm or more apart.
-ShotRequest RandomRequest(int i, std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  ShotRequest q;
-  do {
-    q.from = {0.1 + 2.34 * u(rng), 0.1 + 1.07 * u(rng)};
-    q.to = {0.1 + 2.34 * u(rng), 0.1 + 1.07 * u(rng)};
-  } while ((q.to - q.from).norm() < 0.2);
-  q.final_speed = i % 2 ? 0.0 : 0.6 * u(rng);
-  if (i % 5 == 4) {
-    q.slide_length = 0.5 * (q.to - q.from).norm() * u(rng);
-  } else {
-    q.style = static_cast<SpinStyle>(i % 4);
-  }
-  if (i % 3 == 0) q.side_spin = 40.0 * (u(rng) - 0.5);
-  return q;
-}
-
 TEST(ShotPlanner, FiveHundredReachableRequestsLandWithinHalfAMillimetre) {
-  std::mt19937 rng(2026);
+  RequestSuite suite(Paper().table, 2026);
   std::vector<double> closed_form_miss, solve_us;
   int tried = 0;
   while (closed_form_miss.size() < 500) {
-    const ShotRequest q = RandomRequest(tried++, rng);
+    const ShotRequest q = suite.Next(tried++);
     const ShotPlan plan = PlanShot(q, Paper());
     // Out of reach, and said so: a curving path that meets a cushion, or a draw (from a long
     // slide length) beyond the tip offset that does not miscue.
@@ -147,6 +128,22 @@ TEST(ShotPlanner, ClosedFormAloneIsExactWhereTheModelsAgree) {
   ASSERT_EQ(plan.status, PlanStatus::kOk) << plan.reason;
   EXPECT_LT(plan.closed_form_miss_m, 5e-5);
   EXPECT_EQ(plan.iterations, 0);
+}
+
+TEST(ShotPlanner, SensitivityJacobianFindsTheCentralDifferencePlanWithFewerSimulations) {
+  ShotRequest q;
+  q.from = {0.4, 1.0};
+  q.to = {2.1, 0.3};
+  q.final_speed = 0.3;
+  q.style = SpinStyle::kFollow;
+  q.side_spin = -15.0;
+  PlannerOptions differences;
+  differences.jacobian = JacobianMethod::kCentralDifferences;
+  const ShotPlan a = PlanShot(q, Paper()), b = PlanShot(q, Paper(), differences);
+  ASSERT_EQ(a.status, PlanStatus::kOk) << a.reason;
+  ASSERT_EQ(b.status, PlanStatus::kOk) << b.reason;
+  EXPECT_LT((a.v0 - b.v0).norm(), 1e-5);
+  EXPECT_LT(a.simulations, b.simulations);
 }
 
 TEST(ShotPlanner, RefusesBadAndUnreachableRequestsWithAReason) {
