@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace billiard::planner {
@@ -203,6 +204,37 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
   }
   plan.closed_form_miss_m = closed_form_miss.norm();
 
+  // Turning the heading turns the whole path about the ball, so how far the ball gets depends on
+  // the launch speed alone, and grows with it: a speed bound that already carries the ball past
+  // the target (or still leaves it short) decides the request without a refinement.
+  const double distance = (q.to - q.from).norm();
+  const auto beyond_reach = [&](double speed) -> std::optional<std::string> {
+    const bool slowest = speed <= speeds.min, fastest = speed >= speeds.max;
+    if (!slowest && !fastest) return std::nullopt;
+    const double bound = slowest ? speeds.min : speeds.max;
+    ++plan.simulations;
+    const double travel = (SimulateArrival(params, launch.State(bound, 0.0), q.final_speed,
+                                           t_max, options.simulation).state.head<2>() -
+                           q.from).norm();
+    if (slowest && travel > distance + options.acceptable_miss) {
+      std::ostringstream reason;
+      reason.precision(3);
+      reason << "the side spin needs a launch of at least " << bound << " m/s to stay within "
+             << "the tip offset of " << params.cue.max_tip_offset << " r, which carries the "
+             << "ball " << travel << " m, past the target";
+      return reason.str();
+    }
+    if (fastest && travel < distance - options.acceptable_miss) {
+      std::ostringstream reason;
+      reason.precision(3);
+      reason << "needs a faster launch than the robot's cue speed of " << params.cue.max_speed
+             << " m/s gives (at most " << bound << " m/s, which reaches " << travel << " m)";
+      return reason.str();
+    }
+    return std::nullopt;
+  };
+  if (auto reason = beyond_reach(p[0])) return Refused(PlanStatus::kUnreachable, *reason);
+
   if (options.refine) {
     ceres::Problem problem;
     if (options.jacobian == JacobianMethod::kSensitivities) {
@@ -229,9 +261,6 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
     ceres::Solver::Summary summary;
     ceres::Solve(solver, &problem, &summary);
     plan.iterations = static_cast<int>(summary.iterations.size()) - 1;
-  } else if (p[0] < speeds.min || p[0] > speeds.max) {
-    return Refused(PlanStatus::kUnreachable,
-                   "the closed-form launch speed is outside what the robot's cue can give");
   }
 
   const Arrival arrival = SimulateArrival(params, launch.State(p[0], p[1]), q.final_speed, t_max,
@@ -249,17 +278,10 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
                                                : Eigen::Vector2d(arrival.trajectory->At(t).head<2>()));
   }
 
-  const auto reach_limit = [&](double speed) {
-    return std::abs(speed - p[0]) <= 1e-9 * speed;
-  };
   if (!arrival.reached || (options.refine && plan.refined_miss_m > options.acceptable_miss)) {
-    if (reach_limit(speeds.max)) {
+    if (auto reason = beyond_reach(p[0])) {
       plan.status = PlanStatus::kUnreachable;
-      plan.reason = "needs a faster launch than the robot's cue speed of " +
-                    std::to_string(params.cue.max_speed) + " m/s gives";
-    } else if (reach_limit(speeds.min)) {
-      plan.status = PlanStatus::kUnreachable;
-      plan.reason = "needs a slower launch than the side spin allows within the tip offset";
+      plan.reason = *reason;
     } else {
       plan.status = PlanStatus::kNotConverged;
       plan.reason = "refinement ended " + Millimetres(plan.refined_miss_m) + " from the target";

@@ -183,6 +183,10 @@ TEST(ShotPlanner, RefusesBadAndUnreachableRequestsWithAReason) {
   ShotRequest too_much_side = q;
   too_much_side.side_spin = 3000.0;
   expect_refused(too_much_side, PlanStatus::kUnreachable, "");
+  ShotRequest too_much_side_for_the_distance = q;
+  too_much_side_for_the_distance.side_spin = 100.0;  // needs >= 2.7 m/s within the tip offset
+  expect_refused(too_much_side_for_the_distance, PlanStatus::kUnreachable, "past the target");
+  EXPECT_LE(PlanShot(too_much_side_for_the_distance, Paper()).simulations, 2);
   ShotRequest long_slide = q;
   long_slide.slide_length = 3.0;
   expect_refused(long_slide, PlanStatus::kInvalid, "slide length");

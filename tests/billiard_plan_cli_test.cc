@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "request_suite.h"
 #include "run_command.h"
 
 namespace {
@@ -117,6 +120,80 @@ TEST(BilliardPlan, HumanSummaryGoesToStderr) {
   const CommandResult r = Billiard("plan --from 0.5,0.5 --to 1.5,0.8");
   EXPECT_EQ(r.status, 0);
   EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+std::string Numbers(std::initializer_list<double> values) {
+  std::string text;
+  char number[40];
+  for (double v : values) {
+    std::snprintf(number, sizeof number, "%.17g", v);
+    text += (text.empty() ? "" : ",") + std::string(number);
+  }
+  return text;
+}
+
+TEST(BilliardPlan, PlannedLaunchesLandOnTheTargetWhenBilliardSimulateRunsThem) {
+  // The acceptance check as a user would run it: plan, then simulate the plan's v0, w0 with the
+  // simulator's defaults until the speed falls to the requested final speed.
+  billiard::planner::RequestSuite suite({2.54, 1.27}, 7);
+  int planned = 0;
+  for (int i = 0; i < 25; ++i) {
+    const billiard::planner::ShotRequest q = suite.Next(i);
+    std::string args = "plan --from=" + Numbers({q.from.x(), q.from.y()}) +
+                       " --to=" + Numbers({q.to.x(), q.to.y()}) +
+                       " --final-speed " + Numbers({q.final_speed}) +
+                       " --side-spin=" + Numbers({q.side_spin}) + " --json";
+    if (q.slide_length) {
+      args += " --slide " + Numbers({*q.slide_length});
+    } else {
+      const char* names[] = {"stun", "follow", "natural", "draw"};
+      args += std::string(" --spin ") + names[static_cast<int>(q.style)];
+    }
+    const CommandResult plan = Billiard(args);
+    const auto j = OneObject(plan, args);
+    if (plan.status == 3) {  // out of reach (a cushion in the way, a draw beyond the tip offset)
+      EXPECT_EQ(j["status"], "unreachable") << args;
+      continue;
+    }
+    ASSERT_EQ(plan.status, 0) << args << ": " << plan.out;
+    ++planned;
+    const std::string simulate =
+        "simulate --state=" +
+        Numbers({q.from.x(), q.from.y(), j["v0"][0], j["v0"][1], j["w0"][0], j["w0"][1],
+                 j["w0"][2]}) +
+        " --t-end 60 --until-speed " + Numbers({q.final_speed}) + " --json";
+    const CommandResult sim = Billiard(simulate);
+    ASSERT_EQ(sim.status, 0) << simulate;
+    const auto end = OneObject(sim, simulate);
+    EXPECT_TRUE(end["arrived"].get<bool>()) << simulate;
+    EXPECT_LT(std::hypot(end["state"][0].get<double>() - q.to.x(),
+                         end["state"][1].get<double>() - q.to.y()),
+              5e-4)
+        << args << "\n" << simulate;
+  }
+  EXPECT_GE(planned, 22);
+}
+
+TEST(BilliardBenchPlanner, RefinedPlansAllLandAndSensitivitiesNeedFewerSimulations) {
+  char dir[] = "/tmp/bench_planner_XXXXXX";
+  ASSERT_NE(mkdtemp(dir), nullptr);
+  const std::string args = std::string("bench-planner --requests 20 --out ") + dir;
+  const CommandResult r = Billiard(args);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = OneObject(r, args);
+  const auto& sensitivities = j["variants"]["refined/sensitivities"];
+  const auto& differences = j["variants"]["refined/central-differences"];
+  EXPECT_GE(sensitivities["planned"].get<int>(), 18);
+  EXPECT_EQ(sensitivities["within_0_5_mm"], sensitivities["planned"]);
+  EXPECT_EQ(differences["within_0_5_mm"], differences["planned"]);
+  EXPECT_LT(sensitivities["median_simulations"].get<double>(),
+            differences["median_simulations"].get<double>());
+  // The closed form alone misses by centimetres on spin-heavy shots.
+  EXPECT_GT(j["variants"]["closed-form"]["p95_closed_form_miss_m"].get<double>(), 0.01);
+  for (const char* file : {"/planner_report.md", "/planner_results.csv"}) {
+    EXPECT_GT(std::filesystem::file_size(std::string(dir) + file), 100u) << file;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

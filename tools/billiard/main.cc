@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "bench_command.h"
+#include "bench_planner_command.h"
 #include "command_line.h"
 #include "fit_contact_command.h"
 #include "plan_command.h"
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddFitContactCommand(app);
   billiard::cli::AddBenchCommand(app);
   billiard::cli::AddPlanCommand(app);
+  billiard::cli::AddBenchPlannerCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -29,6 +29,7 @@ struct SimulateArgs {
   std::string trajectory_path;
   double sample_dt = 1e-3;
   bool no_rest_switch = false;
+  std::optional<double> until_speed;
   bool json = false;
 };
 
@@ -90,13 +91,29 @@ void Run(const SimulateArgs& args) {
     options.quadrature_tolerance = args.quadrature_tol;
   }
   options.rest_switch = !args.no_rest_switch;
+  if (args.until_speed && !(*args.until_speed >= 0.0 && std::isfinite(*args.until_speed))) {
+    throw UsageError("--until-speed must be a finite number >= 0");
+  }
   const auto start = std::chrono::steady_clock::now();
-  const SimulationResult result = Simulate(params, initial, args.t_end, options);
+  // Either to t_end, or to the arrival at a speed with t_end as the limit.
+  SimulationResult result;
+  double t = args.t_end;
+  std::optional<bool> arrived;
+  if (args.until_speed) {
+    Arrival a = SimulateArrival(params, initial, *args.until_speed, args.t_end, options);
+    result.final_state = a.state;
+    result.stats = a.stats;
+    result.trajectory = std::move(a.trajectory);
+    t = a.time;
+    arrived = a.reached;
+  } else {
+    result = Simulate(params, initial, args.t_end, options);
+  }
   const double wall_us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
 
   if (!args.trajectory_path.empty()) {
-    WriteTrajectoryCsv(*result.trajectory, args.t_end, args.sample_dt, args.trajectory_path);
+    WriteTrajectoryCsv(*result.trajectory, t, args.sample_dt, args.trajectory_path);
   }
 
   const BallState& s = result.final_state;
@@ -112,7 +129,8 @@ void Run(const SimulateArgs& args) {
                    {"accuracy_met", choice->accuracy_met}};
     }
     j["params"] = params.name;
-    j["t"] = args.t_end;
+    j["t"] = t;
+    if (arrived) j["arrived"] = *arrived;
     j["state"] = std::vector<double>(s.data(), s.data() + 7);
     j["steps"] = result.stats.steps;
     j["rejected_steps"] = result.stats.rejected_steps;
@@ -128,8 +146,9 @@ void Run(const SimulateArgs& args) {
     }
     std::cout << j.dump() << std::endl;
   } else {
-    std::cerr << ModelName(options.model) << " model, " << params.name << " parameters, t = " << args.t_end
-              << " s\n  X, Y   = " << s[kX] << ", " << s[kY] << " m\n  vx, vy = " << s[kVx] << ", "
+    std::cerr << ModelName(options.model) << " model, " << params.name << " parameters, t = " << t
+              << " s" << (arrived && !*arrived ? " (still faster than --until-speed)" : "")
+              << "\n  X, Y   = " << s[kX] << ", " << s[kY] << " m\n  vx, vy = " << s[kVx] << ", "
               << s[kVy] << " m/s\n  w      = " << s[kWx] << ", " << s[kWy] << ", " << s[kWz]
               << " rad/s\n  " << result.stats.steps << " steps, " << result.stats.rhs_evals
               << " rhs evaluations, " << wall_us << " us\n";
@@ -145,7 +164,11 @@ void AddSimulateCommand(CLI::App& app) {
                   "Initial state X,Y,vx,vy,wx,wy,wz [m, m/s, rad/s] (write --state=-1,... "
                   "when it starts with a minus sign)")
       ->required();
-  cmd->add_option("--t-end", args->t_end, "End time [s]")->required();
+  cmd->add_option("--t-end", args->t_end, "End time [s] (with --until-speed: the longest)")
+      ->required();
+  cmd->add_option("--until-speed", args->until_speed,
+                  "Stop where the speed first falls to this [m/s] (0: where the ball comes to "
+                  "rest); the JSON's t is that time and \"arrived\" says whether it came");
   cmd->add_option("--model", args->model,
                   "approx | integral | closed-form | auto (the cheapest that meets --accuracy)")
       ->capture_default_str();
