@@ -137,8 +137,9 @@ void WritePlannerReport(const PlannerBenchmarkResult& r, const std::string& dir)
      << "0.6 m/s, every spin style and slide lengths, a third with side spin up to 20 rad/s. "
      << "Each plan's launch is simulated again with the simulator's defaults (approx model, "
      << "RODAS4, tolerance 1e-7) and its miss measured where the speed falls to the requested "
-     << "value. Wall times on one core of this 2-core machine. Produced by `billiard "
-     << "bench-planner`.\n\n"
+     << "value. Wall times on one core of this 2-core machine; the closed-form variant's include the "
+     << "two 5-DOF simulations that measure its miss and path. Produced by `billiard "
+     << "bench-planner --requests " << r.requests << " --seed " << r.seed << "`.\n\n"
      << "| variant | planned | refused | median / p95 solve us | median simulations | median "
         "iterations | median / p95 / max miss [m] | within 0.5 mm |\n"
      << "|---|---|---|---|---|---|---|---|\n";
