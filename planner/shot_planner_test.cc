@@ -20,6 +20,17 @@ const ModelParameters& Paper() {
   return p;
 }
 
+ShotRequest Shot(const Eigen::Vector2d& from, const Eigen::Vector2d& to, double final_speed = 0.0,
+                 SpinStyle style = SpinStyle::kNatural, double side_spin = 0.0) {
+  ShotRequest q;
+  q.from = from;
+  q.to = to;
+  q.final_speed = final_speed;
+  q.style = style;
+  q.side_spin = side_spin;
+  return q;
+}
+
 // Where the plan's launch arrives under the simulator's default settings.
 Eigen::Vector2d SimulatedArrival(const ShotPlan& plan, const ShotRequest& q) {
   const BallState launch = MakeBallState(q.from.x(), q.from.y(), plan.v0.x(), plan.v0.y(),
@@ -61,11 +72,7 @@ TEST(ShotPlanner, FiveHundredReachableRequestsLandWithinHalfAMillimetre) {
 }
 
 TEST(ShotPlanner, SideSpinCurveIsCompensated) {
-  ShotRequest q;
-  q.from = {0.3, 0.6};
-  q.to = {1.8, 0.6};
-  q.style = SpinStyle::kStun;
-  q.side_spin = 30.0;
+  const ShotRequest q = Shot({0.3, 0.6}, {1.8, 0.6}, 0.0, SpinStyle::kStun, 30.0);
   const ShotPlan plan = PlanShot(q, Paper());
   ASSERT_EQ(plan.status, PlanStatus::kOk) << plan.reason;
   EXPECT_GT(plan.closed_form_miss_m, 0.005);
@@ -78,12 +85,7 @@ TEST(ShotPlanner, SideSpinCurveIsCompensated) {
 
 TEST(ShotPlanner, MirroredRequestGivesTheMirroredPlan) {
   // Mirror symmetry about x = L/2: X, vx, wy, wz change sign (physics notes, section 3).
-  ShotRequest q;
-  q.from = {0.5, 0.3};
-  q.to = {1.7, 1.0};
-  q.final_speed = 0.2;
-  q.style = SpinStyle::kDraw;
-  q.side_spin = 12.0;
+  const ShotRequest q = Shot({0.5, 0.3}, {1.7, 1.0}, 0.2, SpinStyle::kDraw, 12.0);
   ShotRequest m = q;
   const double length = Paper().table.length;
   m.from.x() = length - q.from.x();
@@ -100,9 +102,7 @@ TEST(ShotPlanner, MirroredRequestGivesTheMirroredPlan) {
 }
 
 TEST(ShotPlanner, PathRunsFromTheBallToThePredictedFinalPoint) {
-  ShotRequest q;
-  q.from = {0.4, 0.4};
-  q.to = {2.0, 0.9};
+  const ShotRequest q = Shot({0.4, 0.4}, {2.0, 0.9});
   const ShotPlan plan = PlanShot(q, Paper());
   ASSERT_EQ(plan.status, PlanStatus::kOk) << plan.reason;
   ASSERT_GE(plan.predicted_path.size(), 10u);
@@ -119,9 +119,7 @@ TEST(ShotPlanner, PathRunsFromTheBallToThePredictedFinalPoint) {
 TEST(ShotPlanner, ClosedFormAloneIsExactWhereTheModelsAgree) {
   // A natural roll without side spin: the closed form is the limit of the 5-DOF model, so it
   // already lands within micrometres and the refinement has nothing to do.
-  ShotRequest q;
-  q.from = {0.3, 0.3};
-  q.to = {1.5, 0.8};
+  const ShotRequest q = Shot({0.3, 0.3}, {1.5, 0.8});
   PlannerOptions options;
   options.refine = false;
   const ShotPlan plan = PlanShot(q, Paper(), options);
@@ -131,12 +129,7 @@ TEST(ShotPlanner, ClosedFormAloneIsExactWhereTheModelsAgree) {
 }
 
 TEST(ShotPlanner, SensitivityJacobianFindsTheCentralDifferencePlanWithFewerSimulations) {
-  ShotRequest q;
-  q.from = {0.4, 1.0};
-  q.to = {2.1, 0.3};
-  q.final_speed = 0.3;
-  q.style = SpinStyle::kFollow;
-  q.side_spin = -15.0;
+  const ShotRequest q = Shot({0.4, 1.0}, {2.1, 0.3}, 0.3, SpinStyle::kFollow, -15.0);
   PlannerOptions differences;
   differences.jacobian = JacobianMethod::kCentralDifferences;
   const ShotPlan a = PlanShot(q, Paper()), b = PlanShot(q, Paper(), differences);
@@ -152,9 +145,7 @@ TEST(ShotPlanner, RefusesBadAndUnreachableRequestsWithAReason) {
     EXPECT_EQ(PlanStatusName(plan.status), PlanStatusName(status)) << plan.reason;
     EXPECT_NE(plan.reason.find(words), std::string::npos) << plan.reason;
   };
-  ShotRequest q;
-  q.from = {0.5, 0.5};
-  q.to = {1.5, 0.7};
+  const ShotRequest q = Shot({0.5, 0.5}, {1.5, 0.7});
 
   ShotRequest nan = q;
   nan.to.y() = NAN;
@@ -194,11 +185,7 @@ TEST(ShotPlanner, RefusesBadAndUnreachableRequestsWithAReason) {
 
 TEST(ShotPlanner, NeverAnOkBeyondTheAcceptableMiss) {
   // With a single iteration allowed, a spin-heavy shot cannot converge: the plan must say so.
-  ShotRequest q;
-  q.from = {0.3, 0.3};
-  q.to = {2.2, 1.0};
-  q.style = SpinStyle::kDraw;
-  q.side_spin = 20.0;
+  const ShotRequest q = Shot({0.3, 0.3}, {2.2, 1.0}, 0.0, SpinStyle::kDraw, 20.0);
   PlannerOptions options;
   options.max_iterations = 1;
   options.acceptable_miss = 1e-7;
