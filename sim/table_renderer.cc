@@ -1,6 +1,5 @@
 #include "table_renderer.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <random>

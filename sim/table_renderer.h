@@ -27,8 +27,9 @@
 // corner), and a soft contact shadow on the cloth around each ball.
 //
 // Motion blur: the frame at time t is the mean of `subframes` renderings at times spread evenly
-// over [t - exposure/2, t + exposure/2] (midpoints of equal slices); a ball that does not move
-// during the exposure is rendered once.
+// over [t - exposure/2, t + exposure/2] (midpoints of equal slices), in the boxes of moving balls
+// only: balls that do not move during the exposure (and whose boxes overlap no moving ball's) are
+// rendered once.
 //
 // Sensor noise: Gaussian, rounded to gray levels, added to every byte with saturation. It comes
 // from one buffer drawn once from `seed`, read at an offset drawn from (seed, frame time in whole
