@@ -1,0 +1,632 @@
+#include "ball_detector.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace billiard::estimator {
+
+namespace {
+
+// The search runs where a ball is about this many pixels in radius: small enough to be cheap,
+// large enough that the centre-surround filter still sees a disc.
+constexpr double kSearchRadius = 4.5;
+// Ballness terms. Brightness s is relative to the local cloth (1 = cloth): shadows down to
+// kDarkStart and light up to kBrightStart are still cloth; the across-hue term saturates at
+// kAcrossNoise times the cloth's own spread (but never below kMinAcross, so a clean synthetic
+// cloth does not make every pixel a ball).
+constexpr float kDarkStart = 0.45f, kDarkRamp = 0.2f;
+constexpr float kBrightStart = 1.25f, kBrightRamp = 0.2f;
+constexpr float kAcrossNoise = 8.0f, kMinAcross = 0.2f;
+constexpr int kRays = 32;
+
+// The cloth colour at one place, ready for Ballness().
+struct LocalCloth {
+  cv::Vec3f unit;     // cloth colour direction
+  float inv_norm;     // 1 / |cloth colour|
+  float inv_across;   // 1 / across-hue distance at which ballness saturates
+};
+
+LocalCloth MakeLocalCloth(const cv::Vec3f& colour, double noise) {
+  const float norm = std::max(1e-3f, static_cast<float>(cv::norm(colour)));
+  const float across = std::max(kMinAcross, static_cast<float>(kAcrossNoise * noise));
+  return {colour / norm, 1.0f / norm, 1.0f / across};
+}
+
+// Relative brightness along the cloth colour and relative distance across it.
+inline void Decompose(const cv::Vec3f& c, const LocalCloth& cloth, float* along, float* across) {
+  const float a = c.dot(cloth.unit);
+  const cv::Vec3f perpendicular = c - a * cloth.unit;
+  *along = a * cloth.inv_norm;
+  *across = std::sqrt(perpendicular.dot(perpendicular)) * cloth.inv_norm;
+}
+
+// How far from cloth, unclipped: 0 for anything the cloth and its light can look like, 1 at the
+// threshold of a ball, more for strong colours.
+inline float Contrast(float along, float across, const LocalCloth& cloth) {
+  return std::max({0.0f, across * cloth.inv_across, (kDarkStart - along) * (1.0f / kDarkRamp),
+                   (along - kBrightStart) * (1.0f / kBrightRamp)});
+}
+
+inline float Ballness(const cv::Vec3f& c, const LocalCloth& cloth) {
+  float s, e;
+  Decompose(c, cloth, &s, &e);
+  return std::min(1.0f, Contrast(s, e, cloth));
+}
+
+cv::Mat AsBgr(const cv::Mat& image) {
+  if (image.type() == CV_8UC3) return image;
+  if (image.type() == CV_8UC1) {
+    cv::Mat bgr;
+    cv::cvtColor(image, bgr, cv::COLOR_GRAY2BGR);
+    return bgr;
+  }
+  throw std::invalid_argument("ball detector: the frame must be 8-bit BGR or grey");
+}
+
+// The dominant colour of the frame: the mode of the chromaticity histogram, averaged over its
+// neighbourhood. The cloth is the largest uniformly coloured thing in a table camera's view.
+cv::Vec3f DominantColour(const cv::Mat& bgr) {
+  constexpr int kBins = 64;
+  cv::Mat hist = cv::Mat::zeros(kBins, kBins, CV_32F);
+  for (int y = 0; y < bgr.rows; y += 2) {
+    const auto* row = bgr.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < bgr.cols; x += 2) {
+      const int s = row[x][0] + row[x][1] + row[x][2];
+      if (s < 45) continue;  // too dark for a chromaticity
+      hist.at<float>(row[x][0] * (kBins - 1) / s, row[x][1] * (kBins - 1) / s) += 1.0f;
+    }
+  }
+  cv::blur(hist, hist, {3, 3});
+  cv::Point peak;
+  cv::minMaxLoc(hist, nullptr, nullptr, nullptr, &peak);
+  cv::Vec3d sum(0, 0, 0);
+  double count = 0;
+  for (int y = 0; y < bgr.rows; y += 2) {
+    const auto* row = bgr.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < bgr.cols; x += 2) {
+      const int s = row[x][0] + row[x][1] + row[x][2];
+      if (s < 45) continue;
+      const int bx = row[x][0] * (kBins - 1) / s, gx = row[x][1] * (kBins - 1) / s;
+      if (std::abs(bx - peak.y) <= 1 && std::abs(gx - peak.x) <= 1) {
+        sum += cv::Vec3d(row[x][0], row[x][1], row[x][2]);
+        ++count;
+      }
+    }
+  }
+  if (count == 0) return {128, 128, 128};
+  return cv::Vec3f(sum / count);
+}
+
+// Fills cells without an estimate from their neighbours (normalized convolution), widening until
+// every cell has one.
+void FillMissing(cv::Mat& colour, cv::Mat& weight) {
+  for (int k = 3; k < 4 * std::max(colour.rows, colour.cols); k = 2 * k + 1) {
+    double min_weight;
+    cv::minMaxLoc(weight, &min_weight);
+    if (min_weight > 0) break;
+    cv::Mat weighted, blurred_weight, blurred;
+    std::vector<cv::Mat> channels;
+    cv::split(colour, channels);
+    for (auto& c : channels) c = c.mul(weight);
+    cv::merge(channels, weighted);
+    cv::blur(weighted, blurred, {k, k}, {-1, -1}, cv::BORDER_REPLICATE);
+    cv::blur(weight, blurred_weight, {k, k}, {-1, -1}, cv::BORDER_REPLICATE);
+    for (int y = 0; y < colour.rows; ++y) {
+      for (int x = 0; x < colour.cols; ++x) {
+        const float w = blurred_weight.at<float>(y, x);
+        if (weight.at<float>(y, x) == 0 && w > 0) {
+          colour.at<cv::Vec3f>(y, x) = blurred.at<cv::Vec3f>(y, x) / w;
+          weight.at<float>(y, x) = 1e-3f;
+        }
+      }
+    }
+  }
+}
+
+// Ballness of every pixel of `small` (a reduced frame at the model's search resolution).
+cv::Mat BallnessMap(const cv::Mat& small, const ClothModel& model) {
+  const float inv_across = MakeLocalCloth({1, 1, 1}, model.noise).inv_across;
+  cv::Mat b(small.size(), CV_32F);
+  for (int y = 0; y < small.rows; ++y) {
+    const auto* in = small.ptr<cv::Vec3b>(y);
+    const auto* unit = model.search_unit.ptr<cv::Vec3f>(y);
+    const float* inv_norm = model.search_inv_norm.ptr<float>(y);
+    auto* out = b.ptr<float>(y);
+    for (int x = 0; x < small.cols; ++x) {
+      out[x] = Ballness(cv::Vec3f(in[x][0], in[x][1], in[x][2]),
+                        LocalCloth{unit[x], inv_norm[x], inv_across});
+    }
+  }
+  return b;
+}
+
+// The cloth model of a reduced frame (scale: reduced px per full-res px) and its ballness map.
+ClothModel LearnCloth(const cv::Mat& small, double scale, double radius_small, cv::Mat* ballness) {
+  // First pass: cloth is what is close to the dominant colour, loosely (tint and brightness drift
+  // across a real table).
+  const LocalCloth global = MakeLocalCloth(DominantColour(small), 0.0);
+  cv::Mat cloth_sum(small.size(), CV_32FC3, cv::Scalar::all(0));
+  cv::Mat cloth_mask(small.size(), CV_32F, cv::Scalar(0));
+  for (int y = 0; y < small.rows; ++y) {
+    for (int x = 0; x < small.cols; ++x) {
+      const cv::Vec3b p = small.at<cv::Vec3b>(y, x);
+      const cv::Vec3f c(p[0], p[1], p[2]);
+      float s, e;
+      Decompose(c, global, &s, &e);
+      if (e < 0.15f && s > 0.5f && s < 1.5f) {
+        cloth_sum.at<cv::Vec3f>(y, x) = c;
+        cloth_mask.at<float>(y, x) = 1.0f;
+      }
+    }
+  }
+  // Cells about three ball diameters across: fine enough for vignetting, coarse enough that
+  // every cell holds mostly cloth.
+  const int cell = std::max(4, static_cast<int>(std::lround(6 * radius_small)));
+  const cv::Size cells((small.cols + cell - 1) / cell, (small.rows + cell - 1) / cell);
+  cv::Mat sum, weight;
+  cv::resize(cloth_sum, sum, cells, 0, 0, cv::INTER_AREA);
+  cv::resize(cloth_mask, weight, cells, 0, 0, cv::INTER_AREA);
+  cv::Mat colour(cells, CV_32FC3);
+  for (int y = 0; y < cells.height; ++y) {
+    for (int x = 0; x < cells.width; ++x) {
+      float& w = weight.at<float>(y, x);
+      if (w < 0.25f) {
+        w = 0;
+        colour.at<cv::Vec3f>(y, x) = cv::Vec3f(0, 0, 0);
+      } else {
+        colour.at<cv::Vec3f>(y, x) = sum.at<cv::Vec3f>(y, x) / w;
+      }
+    }
+  }
+  FillMissing(colour, weight);
+
+  ClothModel model;
+  model.colour = colour;
+  model.cell = static_cast<double>(small.cols) / cells.width / scale;
+
+  // The cloth's own spread across its colour, from the first-pass cloth pixels: the scale of the
+  // across-hue term, so that noise and weave never look like a ball.
+  cv::Mat local;
+  cv::resize(colour, local, small.size(), 0, 0, cv::INTER_LINEAR);
+  std::vector<float> across;
+  for (int y = 0; y < small.rows; y += 2) {
+    for (int x = 0; x < small.cols; x += 2) {
+      if (cloth_mask.at<float>(y, x) == 0) continue;
+      const cv::Vec3b p = small.at<cv::Vec3b>(y, x);
+      float s, e;
+      Decompose(cv::Vec3f(p[0], p[1], p[2]), MakeLocalCloth(local.at<cv::Vec3f>(y, x), 0.0), &s,
+                &e);
+      across.push_back(e);
+    }
+  }
+  if (!across.empty()) {
+    auto mid = across.begin() + across.size() / 2;
+    std::nth_element(across.begin(), mid, across.end());
+    model.noise = 1.4826 * *mid;
+  }
+  model.search_unit.create(small.size(), CV_32FC3);
+  model.search_inv_norm.create(small.size(), CV_32F);
+  for (int y = 0; y < small.rows; ++y) {
+    for (int x = 0; x < small.cols; ++x) {
+      const LocalCloth c = MakeLocalCloth(local.at<cv::Vec3f>(y, x), model.noise);
+      model.search_unit.at<cv::Vec3f>(y, x) = c.unit;
+      model.search_inv_norm.at<float>(y, x) = c.inv_norm;
+    }
+  }
+  *ballness = BallnessMap(small, model);
+
+  // Playing area: the largest connected cloth region, its ball-sized notches closed and its holes
+  // filled.
+  cv::Mat cloth = *ballness < 0.5f, labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(cloth, labels, stats, centroids, 4);
+  int largest = 0;
+  for (int i = 1; i < n; ++i) {
+    if (largest == 0 || stats.at<int>(i, cv::CC_STAT_AREA) > stats.at<int>(largest, cv::CC_STAT_AREA)) {
+      largest = i;
+    }
+  }
+  cv::Mat area = labels == largest;
+  const int d = 2 * static_cast<int>(std::ceil(1.3 * radius_small)) + 1;
+  cv::morphologyEx(area, area, cv::MORPH_CLOSE,
+                   cv::getStructuringElement(cv::MORPH_ELLIPSE, {d, d}), {-1, -1}, 1,
+                   cv::BORDER_CONSTANT, 0);
+  cv::Mat outside(area.rows + 2, area.cols + 2, CV_8U, cv::Scalar(0));
+  area.copyTo(outside(cv::Rect(1, 1, area.cols, area.rows)));
+  cv::floodFill(outside, cv::Point(0, 0), 128);
+  model.area = outside(cv::Rect(1, 1, area.cols, area.rows)) != 128;
+  model.area_scale = scale;
+  return model;
+}
+
+// Radius [small px] of the typical compact blob: what a ball is when nobody says.
+double EstimateRadius(const cv::Mat& ballness) {
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(ballness >= 0.5f, labels, stats, centroids, 8);
+  std::vector<double> radii;
+  for (int i = 1; i < n; ++i) {
+    const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
+    const int area = stats.at<int>(i, cv::CC_STAT_AREA);
+    const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
+    const double fill = static_cast<double>(area) / (w * h), aspect = static_cast<double>(w) / h;
+    const bool at_border = x == 0 || y == 0 || x + w == ballness.cols || y + h == ballness.rows;
+    if (area >= 9 && fill > 0.55 && fill < 0.92 && aspect > 0.75 && aspect < 1.33 && !at_border) {
+      radii.push_back(std::sqrt(area / M_PI));
+    }
+  }
+  if (radii.empty()) return 0;
+  std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+  return radii[radii.size() / 2];
+}
+
+cv::Mat Reduce(const cv::Mat& bgr, int factor) {
+  if (factor == 1) return bgr;
+  // Whole blocks of factor x factor pixels: OpenCV's fast path for INTER_AREA.
+  const cv::Size size(bgr.cols / factor, bgr.rows / factor);
+  cv::Mat small;
+  cv::resize(bgr(cv::Rect(0, 0, size.width * factor, size.height * factor)), small, size, 0, 0,
+             cv::INTER_AREA);
+  return small;
+}
+
+inline float Bilinear(const cv::Mat& m, double x, double y) {
+  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+  if (x0 < 0 || y0 < 0 || x0 + 1 >= m.cols || y0 + 1 >= m.rows) return -1.0f;
+  const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+  const float* r0 = m.ptr<float>(y0);
+  const float* r1 = m.ptr<float>(y0 + 1);
+  return (1 - fy) * ((1 - fx) * r0[x0] + fx * r0[x0 + 1]) + fy * ((1 - fx) * r1[x0] + fx * r1[x0 + 1]);
+}
+
+struct CircleFit {
+  Eigen::Vector2d centre;
+  double radius = 0;
+  int inliers = 0;
+  double largest_gap = 2 * M_PI;  // largest angle [rad] between neighbouring inlier rays
+};
+
+// Least-squares circle (geometric distance, Gauss-Newton) through the edge points, refitted
+// without the points farther than a robust bound from the first fit.
+CircleFit FitCircle(const std::vector<Eigen::Vector2d>& points, const std::vector<double>& angles,
+                    const Eigen::Vector2d& start, double start_radius) {
+  CircleFit fit{start, start_radius, 0, 2 * M_PI};
+  std::vector<bool> use(points.size(), true);
+  for (int round = 0; round < 2; ++round) {
+    for (int iteration = 0; iteration < 6; ++iteration) {
+      Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+      Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!use[i]) continue;
+        const Eigen::Vector2d d = points[i] - fit.centre;
+        const double n = d.norm();
+        if (n < 1e-9) continue;
+        const Eigen::Vector3d j(-d.x() / n, -d.y() / n, -1.0);
+        jtj += j * j.transpose();
+        jtr += j * (n - fit.radius);
+      }
+      if (jtj.determinant() < 1e-9) return fit;
+      const Eigen::Vector3d step = -jtj.ldlt().solve(jtr);
+      fit.centre += step.head<2>();
+      fit.radius += step.z();
+      if (step.norm() < 1e-4) break;
+    }
+    std::vector<double> residuals;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (use[i]) residuals.push_back(std::abs((points[i] - fit.centre).norm() - fit.radius));
+    }
+    if (residuals.empty()) return fit;
+    std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2, residuals.end());
+    const double bound = std::max(0.75, 3.0 * 1.4826 * residuals[residuals.size() / 2]);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      use[i] = std::abs((points[i] - fit.centre).norm() - fit.radius) <= bound;
+    }
+  }
+  std::vector<double> inlier_angles;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (use[i]) inlier_angles.push_back(angles[i]);
+  }
+  fit.inliers = static_cast<int>(inlier_angles.size());
+  if (!inlier_angles.empty()) {
+    std::sort(inlier_angles.begin(), inlier_angles.end());
+    fit.largest_gap = 2 * M_PI - (inlier_angles.back() - inlier_angles.front());
+    for (std::size_t i = 1; i < inlier_angles.size(); ++i) {
+      fit.largest_gap = std::max(fit.largest_gap, inlier_angles[i] - inlier_angles[i - 1]);
+    }
+  }
+  return fit;
+}
+
+// The ball near `predicted` in `bgr` against one local cloth colour.
+std::optional<BallDetection> RefineBall(const cv::Mat& bgr, const Eigen::Vector2d& predicted,
+                                        double r, const LocalCloth& cloth, double min_score) {
+  const int half = static_cast<int>(std::ceil(1.7 * r)) + 2;  // the rays reach 1.6 r
+  const cv::Rect window =
+      cv::Rect(static_cast<int>(std::lround(predicted.x())) - half,
+               static_cast<int>(std::lround(predicted.y())) - half, 2 * half + 1, 2 * half + 1) &
+      cv::Rect(0, 0, bgr.cols, bgr.rows);
+  if (window.width < 3 || window.height < 3) return std::nullopt;
+  // contrast: unclipped (edges), b: clipped to 1 (ballness).
+  cv::Mat contrast(window.size(), CV_32F), b(window.size(), CV_32F);
+  for (int y = 0; y < window.height; ++y) {
+    const auto* in = bgr.ptr<cv::Vec3b>(window.y + y) + window.x;
+    float* c = contrast.ptr<float>(y);
+    float* clipped = b.ptr<float>(y);
+    for (int x = 0; x < window.width; ++x) {
+      float s, e;
+      Decompose(cv::Vec3f(in[x][0], in[x][1], in[x][2]), cloth, &s, &e);
+      c[x] = Contrast(s, e, cloth);
+      clipped[x] = std::min(1.0f, c[x]);
+    }
+  }
+  const Eigen::Vector2d origin(window.x, window.y);
+  Eigen::Vector2d centre = predicted - origin;
+
+  // Pull a prediction that is off by up to a radius onto the ball: ballness centroid in a disc.
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    double sw = 0, sx = 0, sy = 0;
+    const double reach = 1.2 * r;
+    for (int y = std::max(0, static_cast<int>(centre.y() - reach));
+         y <= std::min(window.height - 1, static_cast<int>(centre.y() + reach)); ++y) {
+      for (int x = std::max(0, static_cast<int>(centre.x() - reach));
+           x <= std::min(window.width - 1, static_cast<int>(centre.x() + reach)); ++x) {
+        if ((Eigen::Vector2d(x, y) - centre).squaredNorm() > reach * reach) continue;
+        const double w = b.at<float>(y, x);
+        sw += w;
+        sx += w * x;
+        sy += w * y;
+      }
+    }
+    if (sw < 0.3 * M_PI * r * r) return std::nullopt;  // hardly anything ball-like here
+    centre = {sx / sw, sy / sw};
+  }
+
+  // The edge along rays: where the contrast first falls to half its level inside the ball
+  // (the median over the inner half of the ray), i.e. where the pixel is half ball, half cloth,
+  // whatever the ball's colour and however blurred the frame.
+  CircleFit fit{centre, r, 0, 2 * M_PI};
+  constexpr double kStep = 0.75;
+  std::vector<float> profile;
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<Eigen::Vector2d> points;
+    std::vector<double> angles;
+    const int rim_end = static_cast<int>(0.8 * r / kStep);  // rho = 1.1 r
+    for (int k = 0; k < kRays; ++k) {
+      const double angle = 2 * M_PI * k / kRays;
+      const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+      profile.clear();
+      for (double rho = 0.3 * r; rho <= 1.6 * r; rho += kStep) {
+        const Eigen::Vector2d p = fit.centre + rho * direction;
+        const float value = Bilinear(contrast, p.x(), p.y());
+        if (value < 0) break;  // left the window or the frame
+        profile.push_back(value);
+      }
+      if (static_cast<int>(profile.size()) <= rim_end) continue;
+      // The level of the ball: its strongest contrast out to the rim, for balls with dark
+      // reflections inside or a paler centre than rim (a pink ball).
+      const float half_level =
+          0.5f * *std::max_element(profile.begin(), profile.begin() + rim_end);
+      // From outside in, so that reflections inside the ball do not end it early; a ray that
+      // ends in something else (a touching ball, an arm) has no edge of this ball.
+      if (half_level < 0.5f || profile.back() >= half_level) continue;
+      std::size_t i = profile.size() - 1;
+      while (i > 0 && profile[i - 1] < half_level) --i;
+      if (i == 0) continue;
+      const double edge =
+          0.3 * r + kStep * (i - (half_level - profile[i]) / (profile[i - 1] - profile[i]));
+      if (edge > 0.6 * r && edge < 1.4 * r) {
+        points.push_back(fit.centre + edge * direction);
+        angles.push_back(angle);
+      }
+    }
+    if (static_cast<int>(points.size()) < kRays / 3) return std::nullopt;
+    fit = FitCircle(points, angles, fit.centre, fit.radius);
+  }
+
+  // What makes it a ball, each 0..1.
+  const double round = std::clamp((static_cast<double>(fit.inliers) / kRays - 0.35) / 0.35, 0.0, 1.0) *
+                       (fit.largest_gap < M_PI * 1.15 ? 1.0 : 0.0);
+  const double q = (fit.radius - r) / r;
+  const double size = std::clamp(1.0 - (q / 0.3) * (q / 0.3), 0.0, 1.0);
+  double inside = 0, inside_n = 0, core = 0, core_tint = 0, core_n = 0, rim = 0, rim_n = 0;
+  const int x0 = std::max(0, static_cast<int>(fit.centre.x() - fit.radius));
+  const int x1 = std::min(window.width - 1, static_cast<int>(fit.centre.x() + fit.radius) + 1);
+  const int y0 = std::max(0, static_cast<int>(fit.centre.y() - fit.radius));
+  const int y1 = std::min(window.height - 1, static_cast<int>(fit.centre.y() + fit.radius) + 1);
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      const double rho = std::hypot(x - fit.centre.x(), y - fit.centre.y()) / fit.radius;
+      if (rho < 0.7) {
+        inside += b.at<float>(y, x);
+        ++inside_n;
+      }
+      if (rho >= 0.9 || (rho >= 0.5 && rho <= 0.65)) continue;
+      const cv::Vec3b p = bgr.at<cv::Vec3b>(window.y + y, window.x + x);
+      float s, e;
+      Decompose(cv::Vec3f(p[0], p[1], p[2]), cloth, &s, &e);
+      if (rho < 0.5) {
+        core += s;
+        core_tint += e * cloth.inv_across;
+        ++core_n;
+      } else {
+        rim += s;
+        ++rim_n;
+      }
+    }
+  }
+  if (inside_n == 0 || core_n == 0 || rim_n == 0) return std::nullopt;
+  const double filled = std::clamp((inside / inside_n - 0.5) / 0.3, 0.0, 1.0);
+  // Only what is brighter than the cloth can be light projected on it, so darker balls need no
+  // more. Light takes the cloth's tint and lights it evenly; a ball brighter than the cloth is
+  // either of another hue (a white ball is whiter than any cloth) or darkens towards its outline
+  // as a sphere lit from above does (even when the camera saturates its centre: then it is white).
+  core /= core_n;
+  core_tint /= core_n;
+  rim /= rim_n;
+  const double sphere = std::clamp((0.97 - rim / core) / 0.1, 0.0, 1.0);
+  const double own_hue = std::clamp((core_tint - 0.5) / 0.3, 0.0, 1.0);
+  const double shading = core <= 1.0 ? 1.0 : std::max(sphere, own_hue);
+  const double score = round * size * filled * shading;
+  if (score < min_score) return std::nullopt;
+  return BallDetection{fit.centre + origin, fit.radius, score};
+}
+
+}  // namespace
+
+cv::Vec3f ClothModel::ColourAt(const Eigen::Vector2d& pixel) const {
+  const double x = std::clamp(pixel.x() / cell - 0.5, 0.0, colour.cols - 1.0);
+  const double y = std::clamp(pixel.y() / cell - 0.5, 0.0, colour.rows - 1.0);
+  const int x0 = std::min(static_cast<int>(x), colour.cols - 2 < 0 ? 0 : colour.cols - 2);
+  const int y0 = std::min(static_cast<int>(y), colour.rows - 2 < 0 ? 0 : colour.rows - 2);
+  const int x1 = std::min(x0 + 1, colour.cols - 1), y1 = std::min(y0 + 1, colour.rows - 1);
+  const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+  return (1 - fy) * ((1 - fx) * colour.at<cv::Vec3f>(y0, x0) + fx * colour.at<cv::Vec3f>(y0, x1)) +
+         fy * ((1 - fx) * colour.at<cv::Vec3f>(y1, x0) + fx * colour.at<cv::Vec3f>(y1, x1));
+}
+
+bool ClothModel::InArea(const Eigen::Vector2d& pixel) const {
+  const int x = static_cast<int>(std::floor((pixel.x() + 0.5) * area_scale));
+  const int y = static_cast<int>(std::floor((pixel.y() + 0.5) * area_scale));
+  return x >= 0 && y >= 0 && x < area.cols && y < area.rows && area.at<uint8_t>(y, x) != 0;
+}
+
+double ExpectedRadiusPx(const CameraModel& camera, double ball_radius) {
+  const Eigen::Vector3d centre =
+      camera.Unproject({0.5 * (camera.width - 1), 0.5 * (camera.height - 1)}, ball_radius);
+  return ball_radius / camera.MetresPerPixel(centre);
+}
+
+BallDetector::BallDetector(DetectorOptions options) : options_(options) {}
+
+namespace {
+
+// Peaks of the centre-surround filter on the ballness: mean ballness in the ball's core minus
+// that in a ring just outside it. Full-resolution pixels, strongest first.
+std::vector<Eigen::Vector2d> Candidates(const cv::Mat& ballness, const cv::Mat& area, int factor,
+                                        double r_small) {
+  const auto odd = [](double half) { return 2 * static_cast<int>(std::lround(half)) + 1; };
+  const int k_in = odd(0.7 * r_small), k_mid = odd(1.15 * r_small), k_out = odd(1.7 * r_small);
+  cv::Mat core, mid, out;
+  cv::boxFilter(ballness, core, CV_32F, {k_in, k_in});
+  cv::boxFilter(ballness, mid, CV_32F, {k_mid, k_mid}, {-1, -1}, false);
+  cv::boxFilter(ballness, out, CV_32F, {k_out, k_out}, {-1, -1}, false);
+  const cv::Mat response = core - (out - mid) / static_cast<float>(k_out * k_out - k_mid * k_mid);
+  cv::Mat peaks;
+  cv::dilate(response, peaks, cv::Mat());
+  std::vector<std::pair<float, Eigen::Vector2d>> found;
+  for (int y = 0; y < response.rows; ++y) {
+    const float* r = response.ptr<float>(y);
+    const float* p = peaks.ptr<float>(y);
+    const uint8_t* inside = area.ptr<uint8_t>(y);
+    for (int x = 0; x < response.cols; ++x) {
+      if (r[x] >= 0.4f && r[x] >= p[x] && inside[x]) {
+        found.push_back({r[x], {(x + 0.5) * factor - 0.5, (y + 0.5) * factor - 0.5}});
+      }
+    }
+  }
+  std::sort(found.begin(), found.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<Eigen::Vector2d> pixels;
+  for (std::size_t i = 0; i < found.size() && i < 200; ++i) pixels.push_back(found[i].second);
+  return pixels;
+}
+
+int SearchFactor(double radius_px) {
+  return std::max(1, static_cast<int>(std::lround(radius_px / kSearchRadius)));
+}
+
+}  // namespace
+
+void BallDetector::LearnCloth(const cv::Mat& image) {
+  const cv::Mat bgr = AsBgr(image);
+  radius_px_ = options_.ball_radius_px;
+  cv::Mat ballness;
+  if (radius_px_ <= 0) {
+    // Without a radius: blobs at a resolution where balls of the usual sizes (8-30 px) are
+    // blobs give a first guess (too large by the blur and the shadows' tint), and the median
+    // radius of the edges fitted around the strongest of them the answer.
+    const int factor = std::max(1, bgr.cols / 400);
+    const cv::Mat small = Reduce(bgr, factor);
+    cloth_ = billiard::estimator::LearnCloth(small, 1.0 / factor, 15.0 / factor, &ballness);
+    const double guess = EstimateRadius(ballness) * factor;
+    if (guess <= 0) {
+      cloth_ = {};
+      return;
+    }
+    std::vector<double> radii;
+    for (const auto& pixel : Candidates(ballness, cloth_.area, factor, guess / factor)) {
+      const auto fit = RefineBall(bgr, pixel, guess,
+                                  MakeLocalCloth(cloth_.ColourAt(pixel), cloth_.noise), 0.0);
+      if (fit) radii.push_back(fit->radius_px);
+      if (radii.size() == 30) break;
+    }
+    if (radii.empty()) {
+      cloth_ = {};
+      return;
+    }
+    std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+    radius_px_ = radii[radii.size() / 2];
+  }
+  const int factor = SearchFactor(radius_px_);
+  cloth_ = billiard::estimator::LearnCloth(Reduce(bgr, factor), 1.0 / factor,
+                                           radius_px_ / factor, &ballness);
+  cloth_.frame_size = bgr.size();
+}
+
+std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
+  const cv::Mat bgr = AsBgr(image);
+  if (cloth_.empty() || cloth_.frame_size != bgr.size()) {
+    LearnCloth(bgr);
+    if (cloth_.empty()) return {};
+  }
+  const int factor = SearchFactor(radius_px_);
+  const cv::Mat ballness = BallnessMap(Reduce(bgr, factor), cloth_);
+  std::vector<BallDetection> balls;
+  for (const Eigen::Vector2d& candidate :
+       Candidates(ballness, cloth_.area, factor, radius_px_ / factor)) {
+    // A plateau or a neighbouring peak on a ball already found.
+    const bool seen = std::any_of(balls.begin(), balls.end(), [&](const BallDetection& d) {
+      return (d.pixel - candidate).norm() < 0.8 * radius_px_;
+    });
+    if (seen) continue;
+    const auto ball = RefineAt(bgr, candidate, radius_px_);
+    if (!ball || !cloth_.InArea(ball->pixel)) continue;
+    const bool duplicate = std::any_of(balls.begin(), balls.end(), [&](const BallDetection& d) {
+      return (d.pixel - ball->pixel).norm() < radius_px_;
+    });
+    if (!duplicate) balls.push_back(*ball);
+  }
+  std::sort(balls.begin(), balls.end(),
+            [](const BallDetection& a, const BallDetection& b) { return a.score > b.score; });
+  return balls;
+}
+
+std::optional<BallDetection> BallDetector::RefineAt(const cv::Mat& image,
+                                                    const Eigen::Vector2d& predicted,
+                                                    double radius_px) const {
+  const cv::Mat bgr = AsBgr(image);
+  if (!cloth_.empty()) {
+    return RefineBall(bgr, predicted, radius_px,
+                      MakeLocalCloth(cloth_.ColourAt(predicted), cloth_.noise), options_.min_score);
+  }
+  // No cloth learnt yet: the cloth around the window, the median of a ring well outside the ball.
+  std::array<std::vector<uint8_t>, 3> ring;
+  for (int k = 0; k < 64; ++k) {
+    const double angle = 2 * M_PI * k / 64;
+    const int x = static_cast<int>(std::lround(predicted.x() + 2.5 * radius_px * std::cos(angle)));
+    const int y = static_cast<int>(std::lround(predicted.y() + 2.5 * radius_px * std::sin(angle)));
+    if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows) continue;
+    for (int c = 0; c < 3; ++c) ring[c].push_back(bgr.at<cv::Vec3b>(y, x)[c]);
+  }
+  if (ring[0].empty()) return std::nullopt;
+  cv::Vec3f colour;
+  for (int c = 0; c < 3; ++c) {
+    std::nth_element(ring[c].begin(), ring[c].begin() + ring[c].size() / 2, ring[c].end());
+    colour[c] = ring[c][ring[c].size() / 2];
+  }
+  return RefineBall(bgr, predicted, radius_px, MakeLocalCloth(colour, 0.0), options_.min_score);
+}
+
+}  // namespace billiard::estimator

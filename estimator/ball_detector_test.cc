@@ -1,0 +1,354 @@
+// The ball detector on the real photograph and on deterministic variants of it (an arm and a cue,
+// extra shadows, projected light, noise, motion blur, another cloth colour), and its sub-pixel
+// accuracy on anti-aliased synthetic frames whose ball centres are known exactly.
+#include "ball_detector.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+#include "real_table_photo.h"
+
+namespace billiard::estimator {
+namespace {
+
+using testing::HandBall;
+using testing::kRealTablePhotoRadiusPx;
+
+cv::Mat Photo() {
+  const cv::Mat image = cv::imread(testing::RealTablePhoto(), cv::IMREAD_COLOR);
+  EXPECT_FALSE(image.empty()) << testing::RealTablePhoto();
+  return image;
+}
+
+std::vector<BallDetection> DetectWithHint(const cv::Mat& image) {
+  DetectorOptions options;
+  options.ball_radius_px = kRealTablePhotoRadiusPx;
+  return BallDetector(options).Detect(image);
+}
+
+// Every hand-listed ball found exactly once within 4 px, except those `covered` touches (they may
+// be missed), and nothing else reported. `what` names the variant in failures.
+void ExpectTheBalls(const std::vector<BallDetection>& found, const std::string& what,
+                    const cv::Mat& covered = {}) {
+  std::vector<int> matches(found.size(), 0);
+  for (const HandBall& ball : testing::RealTablePhotoBalls()) {
+    int times = 0;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      if ((found[i].pixel - ball.pixel).norm() < 4.0) {
+        ++times;
+        ++matches[i];
+      }
+    }
+    bool hidden = false;
+    if (!covered.empty()) {
+      cv::Mat disc = cv::Mat::zeros(covered.size(), CV_8U);
+      cv::circle(disc, cv::Point(ball.pixel.x(), ball.pixel.y()), 16, 255, cv::FILLED);
+      hidden = cv::countNonZero(disc & covered) > 0;
+    }
+    if (hidden) {
+      EXPECT_LE(times, 1) << what << ": " << ball.name << " at " << ball.pixel.transpose();
+    } else {
+      EXPECT_EQ(times, 1) << what << ": " << ball.name << " at " << ball.pixel.transpose();
+    }
+  }
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    EXPECT_EQ(matches[i], 1) << what << ": reported a ball at " << found[i].pixel.transpose()
+                             << " (score " << found[i].score << ", radius " << found[i].radius_px
+                             << ")";
+  }
+}
+
+// Multiplies the image by `gain` where `mask` (CV_32F, 0..1) is set: shadows below 1, projected
+// light (the cloth's own tint, brighter) above.
+cv::Mat Relight(const cv::Mat& image, const cv::Mat& mask, double gain) {
+  cv::Mat f, out;
+  image.convertTo(f, CV_32FC3);
+  cv::Mat factor = 1.0 + (gain - 1.0) * mask, factor3;
+  cv::merge(std::vector<cv::Mat>{factor, factor, factor}, factor3);
+  f = f.mul(factor3);
+  f.convertTo(out, CV_8UC3);  // saturates, as a camera does
+  return out;
+}
+
+TEST(BallDetector, FindsEveryBallOfTheRealPhotographOnce) {
+  const cv::Mat photo = Photo();
+  ExpectTheBalls(DetectWithHint(photo), "radius hint");
+  // Without a hint the radius comes from the blobs, and the same balls are found.
+  BallDetector detector;
+  ExpectTheBalls(detector.Detect(photo), "estimated radius");
+  EXPECT_NEAR(detector.radius_px(), kRealTablePhotoRadiusPx, 1.0);
+  // A grey copy: no hue, only brightness against the cloth. The dark balls stay findable; not
+  // all are (a red ball is about as bright as the cloth's shadow), so only report.
+  cv::Mat grey;
+  cv::cvtColor(photo, grey, cv::COLOR_BGR2GRAY);
+  const auto grey_balls = DetectWithHint(grey);
+  std::fprintf(stderr, "grey copy: %zu balls found\n", grey_balls.size());
+}
+
+TEST(BallDetector, IgnoresAnArmAndACueOverTheCloth) {
+  const cv::Mat photo = Photo();
+  cv::Mat image = photo.clone();
+  cv::Mat covered = cv::Mat::zeros(photo.size(), CV_8U);
+  // A forearm and hand reaching in from the bottom rail, shaded darker towards its sides.
+  const std::vector<cv::Point> arm = {{760, 720}, {880, 720}, {845, 530}, {815, 470},
+                                      {760, 462}, {722, 520}};
+  cv::Mat arm_mask = cv::Mat::zeros(photo.size(), CV_8U), depth;
+  cv::fillPoly(arm_mask, std::vector<std::vector<cv::Point>>{arm}, 255, cv::LINE_AA);
+  cv::distanceTransform(arm_mask, depth, cv::DIST_L2, 3);
+  // The cue: a tapered wooden shaft from off the image to just short of the white ball, with a
+  // lighter stripe along it.
+  const Eigen::Vector2d tip(566, 592), butt(1000, 800);
+  const Eigen::Vector2d along = (tip - butt).normalized(), across(-along.y(), along.x());
+  const double tip_half = 3.5, butt_half = 9.0, length = (tip - butt).norm();
+  for (int y = 0; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x) {
+      cv::Vec3b& p = image.at<cv::Vec3b>(y, x);
+      const Eigen::Vector2d q = Eigen::Vector2d(x, y) - butt;
+      const double t = q.dot(along) / length, side = q.dot(across);
+      const double half = butt_half + (tip_half - butt_half) * t;
+      if (t >= 0 && t <= 1 && std::abs(side) <= half) {
+        const double shade = 0.75 + 0.35 * (1 - std::abs(side) / half);
+        p = cv::Vec3b(cv::saturate_cast<uint8_t>(55 * shade), cv::saturate_cast<uint8_t>(120 * shade),
+                      cv::saturate_cast<uint8_t>(185 * shade));
+        covered.at<uint8_t>(y, x) = 255;
+      }
+      if (arm_mask.at<uint8_t>(y, x) > 0) {
+        const double shade = 0.55 + 0.45 * std::min(1.0, depth.at<float>(y, x) / 30.0);
+        const double a = arm_mask.at<uint8_t>(y, x) / 255.0;
+        const cv::Vec3d skin = cv::Vec3d(125, 160, 215) * shade;
+        for (int c = 0; c < 3; ++c) {
+          p[c] = cv::saturate_cast<uint8_t>(a * skin[c] + (1 - a) * p[c]);
+        }
+        covered.at<uint8_t>(y, x) = 255;
+      }
+    }
+  }
+  const auto found = DetectWithHint(image);
+  ExpectTheBalls(found, "arm and cue", covered);
+  for (const auto& ball : found) {
+    EXPECT_EQ(covered.at<uint8_t>(static_cast<int>(ball.pixel.y()), static_cast<int>(ball.pixel.x())), 0)
+        << "a ball reported on the arm or the cue at " << ball.pixel.transpose();
+  }
+}
+
+TEST(BallDetector, IgnoresShadowsAndProjectedLight) {
+  const cv::Mat photo = Photo();
+  // Shadows: soft darker patches of cloth, ball-sized and larger.
+  cv::Mat shadow = cv::Mat::zeros(photo.size(), CV_32F);
+  cv::ellipse(shadow, {850, 300}, {40, 25}, 20, 0, 360, 1.0, cv::FILLED);
+  cv::ellipse(shadow, {620, 150}, {16, 14}, 0, 0, 360, 1.0, cv::FILLED);
+  cv::ellipse(shadow, {300, 560}, {50, 30}, -10, 0, 360, 1.0, cv::FILLED);
+  cv::GaussianBlur(shadow, shadow, {0, 0}, 2.0);
+  const cv::Mat shadowed = Relight(photo, shadow, 0.55);
+  ExpectTheBalls(DetectWithHint(shadowed), "extra shadows");
+
+  // Projected light: the cloth's own colour, brighter, in discs of ball size and larger and in
+  // thin lines; flat, as light on a flat cloth is.
+  cv::Mat light = cv::Mat::zeros(photo.size(), CV_32F);
+  cv::circle(light, {850, 150}, 15, 1.0, cv::FILLED, cv::LINE_AA);
+  cv::circle(light, {600, 320}, 25, 1.0, cv::FILLED, cv::LINE_AA);
+  cv::circle(light, {1000, 320}, 40, 1.0, cv::FILLED, cv::LINE_AA);
+  cv::circle(light, {350, 500}, 15, 1.0, cv::FILLED, cv::LINE_AA);
+  cv::line(light, {300, 150}, {500, 300}, 1.0, 3, cv::LINE_AA);
+  cv::line(light, {600, 470}, {880, 520}, 1.0, 2, cv::LINE_AA);
+  for (const double gain : {1.5, 1.8}) {
+    ExpectTheBalls(DetectWithHint(Relight(photo, light, gain)),
+                   "projected light x" + std::to_string(gain));
+  }
+}
+
+TEST(BallDetector, SurvivesNoiseAndMotionBlur) {
+  const cv::Mat photo = Photo();
+  cv::Mat noise(photo.size(), CV_16SC3), noisy;
+  cv::RNG rng(7);
+  rng.fill(noise, cv::RNG::NORMAL, 0, 8);
+  cv::Mat wide;
+  photo.convertTo(wide, CV_16SC3);
+  cv::Mat sum = wide + noise;
+  sum.convertTo(noisy, CV_8UC3);
+  ExpectTheBalls(DetectWithHint(noisy), "gaussian noise, sigma 8");
+
+  // A horizontal smear over 9 px (a fast pan or a long exposure).
+  cv::Mat blurred;
+  cv::filter2D(photo, blurred, -1, cv::Mat::ones(1, 9, CV_32F) / 9.0);
+  ExpectTheBalls(DetectWithHint(blurred), "motion blur, 9 px");
+}
+
+TEST(BallDetector, LearnsAnotherClothColourAndLight) {
+  // The whole frame's hue turned by 60 degrees (the cloth goes blue) and its brightness scaled by
+  // 0.7: nothing in the detector may depend on this photo's colours.
+  cv::Mat hsv;
+  cv::cvtColor(Photo(), hsv, cv::COLOR_BGR2HSV);
+  for (auto it = hsv.begin<cv::Vec3b>(); it != hsv.end<cv::Vec3b>(); ++it) {
+    (*it)[0] = static_cast<uint8_t>(((*it)[0] + 30) % 180);
+    (*it)[2] = static_cast<uint8_t>(std::lround((*it)[2] * 0.7));
+  }
+  cv::Mat recoloured;
+  cv::cvtColor(hsv, recoloured, cv::COLOR_HSV2BGR);
+  ExpectTheBalls(DetectWithHint(recoloured), "blue cloth, 0.7 brightness");
+  BallDetector detector;
+  ExpectTheBalls(detector.Detect(recoloured), "blue cloth, estimated radius");
+}
+
+// A synthetic table: a noisy cloth inside a dark rail, balls drawn as Lambert-shaded spheres lit
+// from above with exact anti-aliasing (8x8 samples per edge pixel).
+struct SyntheticBall {
+  Eigen::Vector2d centre;
+  cv::Vec3d colour;
+};
+
+cv::Mat DrawTable(const std::vector<SyntheticBall>& balls, double radius, cv::Size size,
+                  cv::Rect cloth_rect, double noise_sigma, unsigned seed) {
+  const cv::Vec3d cloth(60, 140, 40), rail(30, 40, 70);
+  cv::Mat f(size, CV_64FC3);
+  for (int y = 0; y < size.height; ++y) {
+    for (int x = 0; x < size.width; ++x) {
+      f.at<cv::Vec3d>(y, x) = cloth_rect.contains({x, y}) ? cloth : rail;
+    }
+  }
+  const auto shade = [&](const SyntheticBall& b, double x, double y) {
+    const double rho2 = ((Eigen::Vector2d(x, y) - b.centre) / radius).squaredNorm();
+    return b.colour * (0.35 + 0.65 * std::sqrt(std::max(0.0, 1.0 - rho2)));
+  };
+  for (const SyntheticBall& b : balls) {
+    for (int y = static_cast<int>(b.centre.y() - radius) - 2; y <= b.centre.y() + radius + 2; ++y) {
+      for (int x = static_cast<int>(b.centre.x() - radius) - 2; x <= b.centre.x() + radius + 2; ++x) {
+        const double d = (Eigen::Vector2d(x, y) - b.centre).norm();
+        if (d > radius + 1) continue;
+        cv::Vec3d& p = f.at<cv::Vec3d>(y, x);
+        if (d < radius - 1) {
+          p = shade(b, x, y);
+          continue;
+        }
+        cv::Vec3d sum(0, 0, 0);
+        int inside = 0;
+        for (int sy = 0; sy < 8; ++sy) {
+          for (int sx = 0; sx < 8; ++sx) {
+            const double px = x - 0.4375 + sx / 8.0, py = y - 0.4375 + sy / 8.0;
+            if ((Eigen::Vector2d(px, py) - b.centre).norm() <= radius) {
+              sum += shade(b, px, py);
+              ++inside;
+            }
+          }
+        }
+        p = (sum + (64 - inside) * p) / 64.0;
+      }
+    }
+  }
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, noise_sigma);
+  cv::Mat out(size, CV_8UC3);
+  for (int y = 0; y < size.height; ++y) {
+    for (int x = 0; x < size.width; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        out.at<cv::Vec3b>(y, x)[c] = cv::saturate_cast<uint8_t>(f.at<cv::Vec3d>(y, x)[c] + noise(rng));
+      }
+    }
+  }
+  return out;
+}
+
+TEST(BallDetector, SubPixelCentresOnSyntheticFrames) {
+  // About 2 mm per pixel: a 52.5 mm ball is 13 px in radius.
+  const double radius = 13.1;
+  const cv::Size size(800, 480);
+  const cv::Rect cloth(40, 40, 720, 400);
+  const std::vector<cv::Vec3d> colours = {{30, 30, 200},  {235, 235, 235}, {20, 20, 25},
+                                          {200, 120, 20}, {20, 180, 230},  {150, 120, 230}};
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> fraction(0.0, 1.0);
+  double sum_squares = 0;
+  int count = 0, refine_count = 0;
+  double refine_squares = 0;
+  for (int frame = 0; frame < 4; ++frame) {
+    std::vector<SyntheticBall> balls;
+    // A grid of isolated balls at random sub-pixel offsets, a touching pair, and a ball against
+    // the cushion.
+    for (int i = 0; i < 4; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        balls.push_back({{130 + 150 * i + 20 * fraction(rng), 110 + 110 * j + 20 * fraction(rng)},
+                         colours[(i + j + frame) % colours.size()]});
+      }
+    }
+    const double angle = 2 * M_PI * fraction(rng);
+    const Eigen::Vector2d pair(690 + fraction(rng), 160 + fraction(rng));
+    balls.push_back({pair, colours[0]});
+    balls.push_back({pair + 2 * radius * Eigen::Vector2d(std::cos(angle), std::sin(angle)),
+                     colours[1]});
+    balls.push_back({{690 + fraction(rng), cloth.y + radius + 0.2 * fraction(rng)}, colours[3]});
+    const cv::Mat image = DrawTable(balls, radius, size, cloth, 4.0, 100 + frame);
+
+    DetectorOptions options;
+    options.ball_radius_px = radius;
+    BallDetector detector(options);
+    const auto found = detector.Detect(image);
+    EXPECT_EQ(found.size(), balls.size()) << "frame " << frame;
+    for (const SyntheticBall& b : balls) {
+      const BallDetection* nearest = nullptr;
+      for (const auto& d : found) {
+        if (!nearest || (d.pixel - b.centre).norm() < (nearest->pixel - b.centre).norm()) nearest = &d;
+      }
+      ASSERT_NE(nearest, nullptr);
+      const double error = (nearest->pixel - b.centre).norm();
+      EXPECT_LT(error, 0.5) << "ball at " << b.centre.transpose() << ", frame " << frame;
+      EXPECT_NEAR(nearest->radius_px, radius, 1.0);
+      sum_squares += error * error;
+      ++count;
+      // The tracker's call: a prediction 3 px off.
+      const auto refined = detector.RefineAt(image, b.centre + Eigen::Vector2d(2.4, -1.8), radius);
+      ASSERT_TRUE(refined.has_value()) << "ball at " << b.centre.transpose();
+      refine_squares += (refined->pixel - b.centre).squaredNorm();
+      ++refine_count;
+    }
+  }
+  const double rms = std::sqrt(sum_squares / count), refine_rms = std::sqrt(refine_squares / refine_count);
+  std::fprintf(stderr, "centre error RMS: Detect %.3f px, RefineAt %.3f px over %d balls\n", rms,
+               refine_rms, count);
+  EXPECT_LT(rms, 0.2);
+  EXPECT_LT(refine_rms, 0.2);
+}
+
+TEST(BallDetector, TimePerFrame) {
+  const cv::Mat photo = Photo();
+  DetectorOptions options;
+  options.ball_radius_px = kRealTablePhotoRadiusPx;
+  BallDetector detector(options);
+  using Clock = std::chrono::steady_clock;
+  auto start = Clock::now();
+  detector.LearnCloth(photo);
+  const double learn_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  std::vector<BallDetection> balls;
+  constexpr int kFrames = 30;
+  std::vector<double> detect_ms;
+  for (int i = 0; i < kFrames; ++i) {
+    start = Clock::now();
+    balls = detector.Detect(photo);
+    detect_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+  }
+  std::vector<double> refine_us;
+  for (int i = 0; i < 10; ++i) {
+    for (const auto& b : balls) {
+      start = Clock::now();
+      const auto refined = detector.RefineAt(photo, b.pixel + Eigen::Vector2d(2, -1), b.radius_px);
+      refine_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - start).count());
+      EXPECT_TRUE(refined.has_value());
+    }
+  }
+  std::sort(detect_ms.begin(), detect_ms.end());
+  std::sort(refine_us.begin(), refine_us.end());
+  std::fprintf(stderr,
+               "1280x720, %zu balls: LearnCloth %.2f ms, Detect median %.2f ms (min %.2f), "
+               "RefineAt median %.1f us (min %.1f)\n",
+               balls.size(), learn_ms, detect_ms[kFrames / 2], detect_ms[0],
+               refine_us[refine_us.size() / 2], refine_us[0]);
+  EXPECT_EQ(balls.size(), 21u);
+}
+
+}  // namespace
+}  // namespace billiard::estimator

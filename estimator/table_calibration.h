@@ -1,0 +1,56 @@
+// The camera's pose over the table, from one frame showing the four corner markers.
+//
+// The markers are square ArUco-style tags on the cushion frame, one near each corner of the table.
+// Their centres are found with cv::aruco (the 4x4 dictionaries, normal or inverted, i.e. white
+// border); a tag whose bits do not decode (small, blurred, or not of a standard dictionary) is
+// still a square quad with a high-contrast border, so the quads ArUco rejects are kept when they
+// look like a marker (square, bright border against a dark ring or the reverse, the size of the
+// others). The marker nearest each image corner is that corner's marker.
+//
+// Correspondence with the table: the camera looks down with the table's x axis to the right of
+// the image and y up it (as CameraModel::Overhead), so the marker at the image's top-left is the
+// one at the table's (0, W) corner, and so on. With their table coordinates and an intrinsics
+// guess, cv::solvePnP (IPPE for the planar markers, then Levenberg-Marquardt) gives the pose.
+// Four points fix the pose but not the focal length: a wrong guess moves the camera up or down
+// and changes the mapping of the pixels back to the table by a fraction of the ball radius over
+// the camera's height, which a later calibration with a checkerboard removes.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string>
+
+#include "camera_model.h"
+#include "parameters.h"
+
+namespace billiard::estimator {
+
+// Where the markers' centres are in table coordinates [m], in image order: top-left, top-right,
+// bottom-right, bottom-left.
+struct MarkerLayout {
+  std::array<Eigen::Vector3d, 4> centres;
+  // Markers `margin` [m] outside each corner of the playing surface, diagonally, at `height` [m]
+  // above the cloth.
+  static MarkerLayout AroundTable(const TableParameters& table, double margin, double height);
+};
+
+// The centres [px] of the four markers in image order (top-left, top-right, bottom-right,
+// bottom-left); empty unless all four are found.
+std::optional<std::array<Eigen::Vector2d, 4>> FindCornerMarkers(const cv::Mat& image);
+
+struct CalibrationResult {
+  CameraModel camera;
+  std::array<Eigen::Vector2d, 4> markers;  // found centres [px]
+  double rms_reprojection_px = 0;         // of the marker centres
+};
+
+// The camera over the table. `intrinsics` supplies the image size, focal lengths, principal
+// point and distortion (its pose is ignored); when its focal length is zero, a guess of the
+// image width (a 53 degree horizontal field of view) and the image centre are used. Empty when
+// the markers are not all found.
+std::optional<CalibrationResult> CalibrateTable(const cv::Mat& image, const MarkerLayout& layout,
+                                                const CameraModel& intrinsics = {});
+
+}  // namespace billiard::estimator
