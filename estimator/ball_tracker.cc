@@ -1,0 +1,172 @@
+#include "ball_tracker.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+#include "assignment.h"
+
+namespace billiard::estimator {
+
+namespace {
+
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+
+// Constant-acceleration transition and the white-jerk process noise over dt, per axis.
+void Transition(double dt, double jerk_density, Matrix6* f, Matrix6* q) {
+  Eigen::Matrix3d f1, q1;
+  f1 << 1, dt, 0.5 * dt * dt, 0, 1, dt, 0, 0, 1;
+  const double dt2 = dt * dt, dt3 = dt2 * dt;
+  q1 << dt3 * dt2 / 20, dt2 * dt2 / 8, dt3 / 6,
+        dt2 * dt2 / 8, dt3 / 3, dt2 / 2,
+        dt3 / 6, dt2 / 2, dt;
+  q1 *= jerk_density;
+  // State order x, y, vx, vy, ax, ay: axis k holds entries k, k + 2, k + 4.
+  f->setZero();
+  q->setZero();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      for (int k = 0; k < 2; ++k) {
+        (*f)(2 * i + k, 2 * j + k) = f1(i, j);
+        (*q)(2 * i + k, 2 * j + k) = q1(i, j);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Eigen::Matrix<double, 7, 1> TrackedBall::BallState(double radius) const {
+  Eigen::Matrix<double, 7, 1> s;
+  const Eigen::Vector2d v = velocity();
+  s << state[0], state[1], v.x(), v.y(), -v.y() / radius, v.x() / radius, 0.0;
+  return s;
+}
+
+Eigen::Matrix<double, 7, 7> TrackedBall::BallCovariance(double radius) const {
+  Eigen::Matrix<double, 7, 7> c = Eigen::Matrix<double, 7, 7>::Zero();
+  c.topLeftCorner<4, 4>() = covariance.topLeftCorner<4, 4>();
+  // Rolling (acceleration well below the sliding mu g): w_xy = z x v / r.
+  const bool rolling = state.tail<2>().norm() < 0.3;
+  if (rolling) {
+    Eigen::Matrix<double, 2, 4> j = Eigen::Matrix<double, 2, 4>::Zero();
+    j(0, 3) = -1.0 / radius;
+    j(1, 2) = 1.0 / radius;
+    c.block<2, 4>(4, 0) = j * covariance.topLeftCorner<4, 4>();
+    c.block<4, 2>(0, 4) = c.block<2, 4>(4, 0).transpose();
+    c.block<2, 2>(4, 4) = j * covariance.topLeftCorner<4, 4>() * j.transpose();
+  } else {
+    c(4, 4) = c(5, 5) = kUnobservedSpinVariance;
+  }
+  c(6, 6) = kUnobservedSpinVariance;
+  return c;
+}
+
+BallTracker::BallTracker(const ModelParameters& params, TrackerOptions options)
+    : params_(params), options_(options) {}
+
+void BallTracker::Advance(TrackedBall& t, double time) const {
+  const double dt = time - t.time;
+  if (dt <= 0.0) return;
+  Matrix6 f, q;
+  Transition(dt, options_.jerk_density, &f, &q);
+  const Eigen::Vector2d v0 = t.velocity();
+  Vector6 s = f * t.state;
+  // Friction stops a ball, it never turns it back.
+  const Eigen::Vector2d v1 = s.segment<2>(2);
+  if (v0.squaredNorm() > 0.0 && v1.dot(v0) < 0.0) {
+    const Eigen::Vector2d a = t.state.tail<2>();
+    const double stop = std::clamp(-v0.dot(a) > 0.0 ? v0.squaredNorm() / -v0.dot(a) : dt, 0.0, dt);
+    s.head<2>() = t.state.head<2>() + v0 * stop + 0.5 * a * stop * stop;
+    s.tail<4>().setZero();
+  }
+  t.state = s;
+  t.covariance = f * t.covariance * f.transpose() + q;
+  t.time = time;
+}
+
+void BallTracker::Correct(TrackedBall& t, const Eigen::Vector2d& measured) const {
+  const double r2 = options_.measurement_sigma * options_.measurement_sigma;
+  const Eigen::Vector2d innovation = measured - t.position();
+  const auto chi2 = [&] {
+    const Eigen::Matrix2d s = t.covariance.topLeftCorner<2, 2>() + r2 * Eigen::Matrix2d::Identity();
+    return innovation.dot(s.ldlt().solve(innovation));
+  };
+  if (chi2() > options_.maneuver_chi2) {
+    // A phase change (strike, end of sliding, stop): open the velocity as far as the jump needs
+    // and the acceleration to the sliding friction.
+    const double dt = std::max(t.time - t.last_seen, 1e-3);
+    const double mu_g = params_.contact.mu * params_.ball.gravity;
+    t.covariance.block<2, 2>(2, 2) += (innovation.squaredNorm() / (dt * dt)) * Eigen::Matrix2d::Identity();
+    t.covariance.block<2, 2>(4, 4) += mu_g * mu_g * Eigen::Matrix2d::Identity();
+  }
+  const Eigen::Matrix2d s = t.covariance.topLeftCorner<2, 2>() + r2 * Eigen::Matrix2d::Identity();
+  const Eigen::Matrix<double, 6, 2> gain =
+      t.covariance.leftCols<2>() * s.inverse();  // P H^T S^-1, H = [I 0 0]
+  t.state += gain * innovation;
+  // Joseph form: stays symmetric positive definite through the stiff maneuver updates.
+  Matrix6 i_kh = Matrix6::Identity();
+  i_kh.leftCols<2>() -= gain;
+  t.covariance = i_kh * t.covariance * i_kh.transpose() + r2 * gain * gain.transpose();
+}
+
+std::vector<Eigen::Vector2d> BallTracker::Predict(double time) const {
+  std::vector<Eigen::Vector2d> predicted;
+  for (TrackedBall t : tracks_) {
+    Advance(t, time);
+    predicted.push_back(t.position());
+  }
+  return predicted;
+}
+
+bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detections) {
+  if (time < time_) return false;
+  const double dt = tracks_.empty() ? 0.0 : time - time_;
+  time_ = time;
+  for (TrackedBall& t : tracks_) Advance(t, time);
+
+  // Cost: distance to the prediction; no pair beyond how far a ball can move in the frame.
+  const double gate = options_.min_gate + options_.max_speed * dt;
+  Eigen::MatrixXd cost(tracks_.size(), detections.size());
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    for (std::size_t j = 0; j < detections.size(); ++j) {
+      cost(i, j) = (detections[j] - tracks_[i].position()).norm();
+    }
+  }
+  const std::vector<int> assigned = AssignMinimumCost(cost, gate);
+  std::vector<bool> used(detections.size(), false);
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    if (assigned[i] < 0) continue;
+    TrackedBall& t = tracks_[i];
+    Correct(t, detections[assigned[i]]);
+    used[assigned[i]] = true;
+    t.last_seen = time;
+    t.confirmed = t.confirmed || ++t.hits >= options_.hits_to_confirm;
+  }
+  tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(),
+                               [&](const TrackedBall& t) {
+                                 return time - t.last_seen > options_.max_coast;
+                               }),
+                tracks_.end());
+
+  // A new ball: at rest until seen moving, its velocity open to anything a cue gives.
+  const double r2 = options_.measurement_sigma * options_.measurement_sigma;
+  const double mu_g = params_.contact.mu * params_.ball.gravity;
+  for (std::size_t j = 0; j < detections.size(); ++j) {
+    if (used[j]) continue;
+    TrackedBall t;
+    t.id = next_id_++;
+    t.time = t.last_seen = time;
+    t.state << detections[j], 0, 0, 0, 0;
+    t.covariance = Matrix6::Zero();
+    t.covariance.diagonal() << r2, r2, 1.0, 1.0, mu_g * mu_g, mu_g * mu_g;
+    t.hits = 1;
+    t.confirmed = options_.hits_to_confirm <= 1;
+    tracks_.push_back(t);
+  }
+  return true;
+}
+
+}  // namespace billiard::estimator

@@ -1,0 +1,80 @@
+// Tracks every ball across camera frames: data association and one Kalman filter per ball.
+//
+// Process model: what a billiard ball does between two frames, not constant velocity.
+//  - state (x, y, vx, vy, ax, ay): while a ball slides its friction force is constant (mu m g
+//    against a slip direction that does not turn, seed 002 eqs. 6-7), so constant acceleration is
+//    its exact motion; while it rolls the acceleration is the small 5/7 mu_r g against v;
+//  - the jerk noise is that of rolling, and a maneuver test (the innovation's chi-square) opens
+//    the acceleration to mu g when the phase changes (the cue strike, the end of sliding, a stop);
+//  - a ball never reverses by friction: a prediction that would turn the velocity back stops the
+//    ball instead, which is how a rolling ball ends.
+// Association: the minimum-cost assignment (assignment.h) of detections to predicted positions,
+// gated by how far the fastest ball moves in a frame, so that a ball struck next to others keeps
+// its identity and balls passing close do not swap.
+// Spin is observable only while rolling (w = z x v / r, about the horizontal); it is published with
+// its variance, and with a variance of kUnobservedSpinVariance while sliding and for wz.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "parameters.h"
+
+namespace billiard::estimator {
+
+inline constexpr double kUnobservedSpinVariance = 1e6;  // [(rad/s)^2]
+
+struct TrackerOptions {
+  double measurement_sigma = 0.5e-3;  // detector's position noise on the table [m]
+  double max_speed = 8.0;             // fastest ball, for the association gate [m/s]
+  double min_gate = 0.01;             // association gate for a ball at rest [m]
+  int hits_to_confirm = 3;            // detections before a track is published
+  double max_coast = 0.3;             // a track unseen for longer is dropped [s]
+  double maneuver_chi2 = 13.8;        // innovation test (2 dof, 0.1 %) that opens the acceleration
+  // Jerk noise density [m^2/s^5]: a rolling ball's acceleration, 5/7 mu_r g against v, only
+  // turns with v, and a ball at rest has none; the phase changes are left to the maneuver test.
+  double jerk_density = 0.005;
+};
+
+struct TrackedBall {
+  int id = 0;
+  double time = 0.0;                    // of the state [s]
+  Eigen::Matrix<double, 6, 1> state;    // x, y, vx, vy, ax, ay
+  Eigen::Matrix<double, 6, 6> covariance;
+  int hits = 0;
+  double last_seen = 0.0;
+  bool confirmed = false;
+
+  Eigen::Vector2d position() const { return state.head<2>(); }
+  Eigen::Vector2d velocity() const { return state.segment<2>(2); }
+  // The 7-vector and 7x7 covariance of ball_state_t (X, Y, vx, vy, wx, wy, wz).
+  Eigen::Matrix<double, 7, 1> BallState(double radius) const;
+  Eigen::Matrix<double, 7, 7> BallCovariance(double radius) const;
+};
+
+class BallTracker {
+ public:
+  BallTracker(const ModelParameters& params, TrackerOptions options = {});
+
+  // Advances the tracks to `time` and updates them with the balls detected then (table
+  // positions at the ball-centre height). Returns false, changing nothing, if time goes back.
+  bool Update(double time, const std::vector<Eigen::Vector2d>& detections);
+
+  // Where each track expects its ball at `time` (for a detector that searches near predictions).
+  std::vector<Eigen::Vector2d> Predict(double time) const;
+
+  // Every track, confirmed or not; publish the confirmed ones.
+  const std::vector<TrackedBall>& tracks() const { return tracks_; }
+
+ private:
+  void Advance(TrackedBall& track, double time) const;
+  void Correct(TrackedBall& track, const Eigen::Vector2d& measured) const;
+
+  ModelParameters params_;
+  TrackerOptions options_;
+  std::vector<TrackedBall> tracks_;
+  int next_id_ = 0;
+  double time_ = -1e300;
+};
+
+}  // namespace billiard::estimator
