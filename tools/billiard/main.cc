@@ -1,4 +1,4 @@
-// billiard: simulate a ball, fit the contact model, plan a shot (and, as the project grows, detect).
+// billiard: simulate a ball, fit the contact model, plan a shot, find the balls in a frame.
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -6,6 +6,7 @@
 #include "bench_command.h"
 #include "bench_planner_command.h"
 #include "command_line.h"
+#include "detect_command.h"
 #include "fit_contact_command.h"
 #include "plan_command.h"
 #include "simulate_command.h"
@@ -22,6 +23,8 @@ int main(int argc, char** argv) {
   billiard::cli::AddBenchCommand(app);
   billiard::cli::AddPlanCommand(app);
   billiard::cli::AddBenchPlannerCommand(app);
+  billiard::cli::AddDetectCommand(app);
+  billiard::cli::AddCalibrateCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
