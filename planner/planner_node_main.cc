@@ -1,30 +1,16 @@
 // planner_node: the shot planner on LCM (planner_node.h), until SIGINT or SIGTERM.
 #include <CLI/CLI.hpp>
-#include <cerrno>
 #include <cmath>
-#include <csignal>
-#include <cstring>
 #include <iostream>
 #include <lcm/lcm-cpp.hpp>
 #include <stdexcept>
 #include <string>
 
+#include "node_loop.h"
 #include "parameters.h"
 #include "planner_node.h"
 
 namespace {
-
-volatile std::sig_atomic_t stop_requested = 0;
-
-void RequestStop(int) { stop_requested = 1; }
-
-// Without SA_RESTART, so that the signal also ends the wait in handleTimeout at once.
-void StopOn(int signal_number) {
-  struct sigaction action {};
-  action.sa_handler = RequestStop;
-  sigemptyset(&action.sa_mask);
-  sigaction(signal_number, &action, nullptr);
-}
 
 int Fail(const std::string& reason, int status) {
   std::cerr << "planner_node: " << reason << std::endl;
@@ -66,22 +52,13 @@ int main(int argc, char** argv) {
     return Fail(std::string("--params: ") + e.what(), 2);
   }
 
-  StopOn(SIGINT);
-  StopOn(SIGTERM);
+  billiard::nodes::StopOnSignals();
   lcm::LCM lcm(lcm_url);
-  const std::string url_name = lcm_url.empty() ? "the default URL" : "'" + lcm_url + "'";
+  const std::string url_name = billiard::nodes::DescribeUrl(lcm_url);
   if (!lcm.good()) return Fail("cannot initialise LCM with " + url_name, 1);
 
   billiard::planner::PlannerNode node(lcm, params, options);
   std::cerr << "planner_node: " << params.name << " parameters, LCM " << url_name
             << ", answering " << billiard::planner::kShotRequestChannel << std::endl;
-  while (!stop_requested) {
-    errno = 0;
-    if (lcm.handleTimeout(100) < 0 && errno != EINTR && !stop_requested) {
-      return Fail(std::string("LCM stopped working") + (errno ? ": " : "") +
-                      (errno ? std::strerror(errno) : ""), 1);
-    }
-  }
-  std::cerr << "planner_node: stopped" << std::endl;
-  return 0;
+  return billiard::nodes::HandleUntilStopped(lcm, "planner_node");
 }

@@ -1,0 +1,44 @@
+#include "node_loop.h"
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <iostream>
+
+namespace billiard::nodes {
+
+namespace {
+
+volatile std::sig_atomic_t stop_requested = 0;
+
+void RequestStop(int) { stop_requested = 1; }
+
+}  // namespace
+
+void StopOnSignals() {
+  for (int signal_number : {SIGINT, SIGTERM}) {
+    struct sigaction action {};
+    action.sa_handler = RequestStop;
+    sigemptyset(&action.sa_mask);
+    sigaction(signal_number, &action, nullptr);
+  }
+}
+
+int HandleUntilStopped(lcm::LCM& lcm, const std::string& name) {
+  while (!stop_requested) {
+    errno = 0;
+    if (lcm.handleTimeout(100) < 0 && errno != EINTR && !stop_requested) {
+      std::cerr << name << ": LCM stopped working" << (errno ? ": " : "")
+                << (errno ? std::strerror(errno) : "") << std::endl;
+      return 1;
+    }
+  }
+  std::cerr << name << ": stopped" << std::endl;
+  return 0;
+}
+
+std::string DescribeUrl(const std::string& lcm_url) {
+  return lcm_url.empty() ? "the default URL" : "'" + lcm_url + "'";
+}
+
+}  // namespace billiard::nodes
