@@ -20,7 +20,7 @@ constexpr double kSearchRadius = 4.5;
 // cloth does not make every pixel a ball).
 constexpr float kDarkStart = 0.45f, kDarkRamp = 0.2f;
 constexpr float kBrightStart = 1.25f, kBrightRamp = 0.2f;
-constexpr float kAcrossNoise = 8.0f, kMinAcross = 0.2f;
+constexpr float kAcrossNoise = 4.0f, kMinAcross = 0.2f;
 constexpr int kRays = 32;
 
 // The cloth colour at one place, ready for Ballness().
@@ -262,13 +262,17 @@ double EstimateRadius(const cv::Mat& ballness) {
   return radii[radii.size() / 2];
 }
 
+// The frame at 1/factor of its resolution, one pixel of each factor x factor block: the search
+// only needs to see ball-sized blobs, and reading a ninth of the frame is what keeps it cheap.
 cv::Mat Reduce(const cv::Mat& bgr, int factor) {
   if (factor == 1) return bgr;
-  // Whole blocks of factor x factor pixels: OpenCV's fast path for INTER_AREA.
-  const cv::Size size(bgr.cols / factor, bgr.rows / factor);
-  cv::Mat small;
-  cv::resize(bgr(cv::Rect(0, 0, size.width * factor, size.height * factor)), small, size, 0, 0,
-             cv::INTER_AREA);
+  cv::Mat small(bgr.rows / factor, bgr.cols / factor, CV_8UC3);
+  const int offset = factor / 2;
+  for (int y = 0; y < small.rows; ++y) {
+    const auto* in = bgr.ptr<cv::Vec3b>(y * factor + offset) + offset;
+    auto* out = small.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < small.cols; ++x) out[x] = in[x * factor];
+  }
   return small;
 }
 
@@ -350,11 +354,21 @@ std::optional<BallDetection> RefineBall(const cv::Mat& bgr, const Eigen::Vector2
   if (window.width < 3 || window.height < 3) return std::nullopt;
   // contrast: unclipped (edges), b: clipped to 1 (ballness).
   cv::Mat contrast(window.size(), CV_32F), b(window.size(), CV_32F);
+  // Only the disc the rays and the centroid reach; the corners stay cloth (0).
+  contrast.setTo(0);
+  b.setTo(0);
+  const double reach = 1.65 * r + 1;
+  const Eigen::Vector2d local = predicted - Eigen::Vector2d(window.x, window.y);
   for (int y = 0; y < window.height; ++y) {
+    const double dy = y - local.y();
+    if (std::abs(dy) > reach) continue;
+    const double dx = std::sqrt(reach * reach - dy * dy);
+    const int from = std::max(0, static_cast<int>(local.x() - dx));
+    const int to = std::min(window.width - 1, static_cast<int>(local.x() + dx) + 1);
     const auto* in = bgr.ptr<cv::Vec3b>(window.y + y) + window.x;
     float* c = contrast.ptr<float>(y);
     float* clipped = b.ptr<float>(y);
-    for (int x = 0; x < window.width; ++x) {
+    for (int x = from; x <= to; ++x) {
       float s, e;
       Decompose(cv::Vec3f(in[x][0], in[x][1], in[x][2]), cloth, &s, &e);
       c[x] = Contrast(s, e, cloth);
@@ -390,11 +404,14 @@ std::optional<BallDetection> RefineBall(const cv::Mat& bgr, const Eigen::Vector2
   constexpr double kStep = 0.75;
   std::vector<float> profile;
   for (int pass = 0; pass < 2; ++pass) {
+    // Half the rays to bring the centre close, all of them from there (each then crosses the
+    // edge square on).
+    const int rays = pass == 0 ? kRays / 2 : kRays;
     std::vector<Eigen::Vector2d> points;
     std::vector<double> angles;
     const int rim_end = static_cast<int>(0.8 * r / kStep);  // rho = 1.1 r
-    for (int k = 0; k < kRays; ++k) {
-      const double angle = 2 * M_PI * k / kRays;
+    for (int k = 0; k < rays; ++k) {
+      const double angle = 2 * M_PI * k / rays;
       const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
       profile.clear();
       for (double rho = 0.3 * r; rho <= 1.6 * r; rho += kStep) {
@@ -421,7 +438,7 @@ std::optional<BallDetection> RefineBall(const cv::Mat& bgr, const Eigen::Vector2
         angles.push_back(angle);
       }
     }
-    if (static_cast<int>(points.size()) < kRays / 3) return std::nullopt;
+    if (static_cast<int>(points.size()) < rays / 3) return std::nullopt;
     fit = FitCircle(points, angles, fit.centre, fit.radius);
   }
 
@@ -448,7 +465,7 @@ std::optional<BallDetection> RefineBall(const cv::Mat& bgr, const Eigen::Vector2
       Decompose(cv::Vec3f(p[0], p[1], p[2]), cloth, &s, &e);
       if (rho < 0.5) {
         core += s;
-        core_tint += e * cloth.inv_across;
+        core_tint += e * (1.0f / kMinAcross);  // in absolute terms: noise is no hue
         ++core_n;
       } else {
         rim += s;
@@ -466,7 +483,7 @@ std::optional<BallDetection> RefineBall(const cv::Mat& bgr, const Eigen::Vector2
   core_tint /= core_n;
   rim /= rim_n;
   const double sphere = std::clamp((0.97 - rim / core) / 0.1, 0.0, 1.0);
-  const double own_hue = std::clamp((core_tint - 0.5) / 0.3, 0.0, 1.0);
+  const double own_hue = std::clamp((core_tint - 0.5) / 0.2, 0.0, 1.0);
   const double shading = core <= 1.0 ? 1.0 : std::max(sphere, own_hue);
   const double score = round * size * filled * shading;
   if (score < min_score) return std::nullopt;
@@ -503,26 +520,44 @@ BallDetector::BallDetector(DetectorOptions options) : options_(options) {}
 namespace {
 
 // Peaks of the centre-surround filter on the ballness: mean ballness in the ball's core minus
-// that in a ring just outside it. Full-resolution pixels, strongest first.
+// that in a ring just outside it (box sums from one integral image, evaluated only where the
+// ballness is high: a ball's centre is inside the ball). Full-resolution pixels, strongest first.
 std::vector<Eigen::Vector2d> Candidates(const cv::Mat& ballness, const cv::Mat& area, int factor,
                                         double r_small) {
-  const auto odd = [](double half) { return 2 * static_cast<int>(std::lround(half)) + 1; };
-  const int k_in = odd(0.7 * r_small), k_mid = odd(1.15 * r_small), k_out = odd(1.7 * r_small);
-  cv::Mat core, mid, out;
-  cv::boxFilter(ballness, core, CV_32F, {k_in, k_in});
-  cv::boxFilter(ballness, mid, CV_32F, {k_mid, k_mid}, {-1, -1}, false);
-  cv::boxFilter(ballness, out, CV_32F, {k_out, k_out}, {-1, -1}, false);
-  const cv::Mat response = core - (out - mid) / static_cast<float>(k_out * k_out - k_mid * k_mid);
-  cv::Mat peaks;
-  cv::dilate(response, peaks, cv::Mat());
-  std::vector<std::pair<float, Eigen::Vector2d>> found;
-  for (int y = 0; y < response.rows; ++y) {
-    const float* r = response.ptr<float>(y);
-    const float* p = peaks.ptr<float>(y);
+  const int in = static_cast<int>(std::lround(0.7 * r_small));
+  const int mid = static_cast<int>(std::lround(1.15 * r_small));
+  const int out = static_cast<int>(std::lround(1.7 * r_small));
+  cv::Mat sum;
+  cv::integral(ballness, sum, CV_32F);
+  const auto box = [&](int x, int y, int half) {
+    const int x0 = std::max(0, x - half), y0 = std::max(0, y - half);
+    const int x1 = std::min(ballness.cols, x + half + 1), y1 = std::min(ballness.rows, y + half + 1);
+    return sum.at<float>(y1, x1) - sum.at<float>(y0, x1) - sum.at<float>(y1, x0) +
+           sum.at<float>(y0, x0);
+  };
+  const float in_area = static_cast<float>((2 * in + 1) * (2 * in + 1));
+  const float ring_area = static_cast<float>((2 * out + 1) * (2 * out + 1) - (2 * mid + 1) * (2 * mid + 1));
+  cv::Mat response(ballness.size(), CV_32F, cv::Scalar(0));
+  for (int y = 0; y < ballness.rows; ++y) {
+    const float* b = ballness.ptr<float>(y);
     const uint8_t* inside = area.ptr<uint8_t>(y);
-    for (int x = 0; x < response.cols; ++x) {
-      if (r[x] >= 0.4f && r[x] >= p[x] && inside[x]) {
-        found.push_back({r[x], {(x + 0.5) * factor - 0.5, (y + 0.5) * factor - 0.5}});
+    float* r = response.ptr<float>(y);
+    for (int x = 0; x < ballness.cols; ++x) {
+      if (b[x] < 0.5f || !inside[x]) continue;
+      r[x] = box(x, y, in) / in_area - (box(x, y, out) - box(x, y, mid)) / ring_area;
+    }
+  }
+  std::vector<std::pair<float, Eigen::Vector2d>> found;
+  for (int y = 1; y + 1 < response.rows; ++y) {
+    for (int x = 1; x + 1 < response.cols; ++x) {
+      const float r = response.at<float>(y, x);
+      if (r < 0.4f) continue;
+      bool peak = true;
+      for (int dy = -1; dy <= 1 && peak; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) peak = peak && response.at<float>(y + dy, x + dx) <= r;
+      }
+      if (peak) {
+        found.push_back({r, {x * factor + factor / 2, y * factor + factor / 2}});  // as Reduce
       }
     }
   }
