@@ -1,0 +1,72 @@
+#include "ball_estimator.h"
+
+namespace billiard::estimator {
+
+namespace {
+
+DetectorOptions WithRadius(DetectorOptions options, const CameraModel& camera, double radius) {
+  if (options.ball_radius_px <= 0.0) options.ball_radius_px = ExpectedRadiusPx(camera, radius);
+  return options;
+}
+
+}  // namespace
+
+BallEstimator::BallEstimator(const CameraModel& camera, const ModelParameters& params,
+                             EstimatorOptions options)
+    : camera_(camera),
+      params_(params),
+      options_(options),
+      detector_(WithRadius(options.detector, camera, params.ball.radius)),
+      tracker_(params, options.tracker) {}
+
+Eigen::Vector2d BallEstimator::ToTable(const Eigen::Vector2d& pixel) const {
+  return camera_.Unproject(pixel, params_.ball.radius).head<2>();
+}
+
+bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats) {
+  if (frame.empty() || frame.cols != camera_.width || frame.rows != camera_.height ||
+      time < last_time_) {
+    return false;
+  }
+  last_time_ = time;
+  const double radius_px = options_.detector.ball_radius_px > 0.0
+                               ? options_.detector.ball_radius_px
+                               : ExpectedRadiusPx(camera_, params_.ball.radius);
+  std::vector<Eigen::Vector2d> measured;
+  bool full = frames_++ % options_.full_detect_every == 0 || tracker_.tracks().empty();
+  if (!full) {
+    for (const Eigen::Vector2d& predicted : tracker_.Predict(time)) {
+      const auto found =
+          detector_.RefineAt(frame, camera_.Project({predicted.x(), predicted.y(),
+                                                     params_.ball.radius}),
+                             radius_px);
+      if (!found) {
+        full = true;
+        break;
+      }
+      // Two tracks on one ball (a tentative one beside a confirmed one) refine to the same
+      // pixel: one measurement, or the copy would seed yet another track.
+      const Eigen::Vector2d x = ToTable(found->pixel);
+      bool seen = false;
+      for (const Eigen::Vector2d& y : measured) seen = seen || (x - y).norm() < params_.ball.radius;
+      if (!seen) measured.push_back(x);
+    }
+  }
+  if (full) {
+    measured.clear();
+    for (const BallDetection& d : detector_.Detect(frame)) measured.push_back(ToTable(d.pixel));
+  }
+  tracker_.Update(time, measured);
+  if (stats) *stats = {static_cast<int>(measured.size()), full};
+  return true;
+}
+
+std::vector<TrackedBall> BallEstimator::Balls() const {
+  std::vector<TrackedBall> balls;
+  for (const TrackedBall& t : tracker_.tracks()) {
+    if (t.confirmed) balls.push_back(t);
+  }
+  return balls;
+}
+
+}  // namespace billiard::estimator

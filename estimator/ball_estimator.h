@@ -1,0 +1,59 @@
+// From camera frames to ball states: detection (ball_detector.h), the camera model back to the
+// table at the height of the ball's centre, and tracking (ball_tracker.h).
+//
+// Speed: a full-frame Detect costs several times a RefineAt per ball, so once every ball is
+// tracked each frame only refines the balls near their predicted pixels, and a full Detect runs
+// every `full_detect_every` frames (to pick up a ball put on the table) or when a refinement
+// misses.
+#pragma once
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "ball_detector.h"
+#include "ball_tracker.h"
+#include "camera_model.h"
+#include "parameters.h"
+
+namespace billiard::estimator {
+
+struct EstimatorOptions {
+  DetectorOptions detector;
+  TrackerOptions tracker;
+  int full_detect_every = 30;  // frames
+};
+
+struct FrameStats {
+  int detections = 0;
+  bool full_detect = false;
+};
+
+class BallEstimator {
+ public:
+  // The detector's expected radius comes from the camera and the ball unless set in options.
+  BallEstimator(const CameraModel& camera, const ModelParameters& params,
+                EstimatorOptions options = {});
+
+  // Processes the frame exposed at `time` [s]. Returns false, changing nothing, for an empty
+  // frame, a frame of another size than the camera's, or a time that goes back.
+  bool Process(const cv::Mat& frame, double time, FrameStats* stats = nullptr);
+
+  // The confirmed tracks: what is published.
+  std::vector<TrackedBall> Balls() const;
+
+  const CameraModel& camera() const { return camera_; }
+
+ private:
+  Eigen::Vector2d ToTable(const Eigen::Vector2d& pixel) const;
+
+  CameraModel camera_;
+  ModelParameters params_;
+  EstimatorOptions options_;
+  BallDetector detector_;
+  BallTracker tracker_;
+  long frames_ = 0;
+  double last_time_ = -1e300;
+};
+
+}  // namespace billiard::estimator

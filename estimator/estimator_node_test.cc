@@ -1,0 +1,102 @@
+// The estimator node in-process over memq://: rendered frames in every encoding become
+// TABLE_STATE; bad frames are dropped with a reason and the node goes on.
+#include "estimator_node.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "table_renderer.h"
+
+namespace billiard::estimator {
+namespace {
+
+const ModelParameters& Pool() {
+  static const ModelParameters p = LoadParameters("pool");
+  return p;
+}
+
+class EstimatorNodeTest : public ::testing::Test {
+ protected:
+  EstimatorNodeTest()
+      : camera_(CameraModel::Overhead(Pool().table, 640, 360)),
+        renderer_(camera_, Pool()),
+        node_(lcm_, camera_, Pool(), {}, {}, [this](const std::string& line) { log_.push_back(line); }) {
+    lcm_.subscribe(kTableStateChannel, &EstimatorNodeTest::OnState, this);
+    for (int i : {0, 3, 8}) {
+      balls_.push_back(RenderBall::AtRest(i, PoolBallColour(i), truth_[balls_.size()]));
+    }
+  }
+
+  void OnState(const lcm::ReceiveBuffer*, const std::string&, const table_state_t* m) {
+    states_.push_back(*m);
+  }
+
+  // Publishes `message` and handles until the node has dealt with it.
+  void Send(const image_t& message) {
+    lcm_.publish(kCameraImageChannel, &message);
+    while (lcm_.handleTimeout(0) > 0) {
+    }
+  }
+
+  image_t Frame(std::int64_t utime, ImageEncoding encoding) {
+    return EncodeImage(renderer_.Render(balls_, 1e-6 * utime), utime, encoding);
+  }
+
+  lcm::LCM lcm_{"memq://"};
+  CameraModel camera_;
+  TableRenderer renderer_;
+  std::vector<std::string> log_;
+  EstimatorNode node_;
+  std::vector<Eigen::Vector2d> truth_ = {{0.5, 0.4}, {1.3, 0.9}, {2.0, 0.3}};
+  std::vector<RenderBall> balls_;
+  std::vector<table_state_t> states_;
+};
+
+TEST_F(EstimatorNodeTest, FramesInEveryEncodingBecomeTableStates) {
+  const ImageEncoding encodings[] = {ImageEncoding::kRgb, ImageEncoding::kGray,
+                                     ImageEncoding::kMjpeg};
+  for (int f = 0; f < 12; ++f) Send(Frame(1'000'000 + 8'333 * f, encodings[f % 3]));
+  ASSERT_EQ(states_.size(), 12u);
+  EXPECT_EQ(node_.dropped(), 0) << (log_.empty() ? "" : log_[0]);
+  const table_state_t& last = states_.back();
+  EXPECT_EQ(last.utime, 1'000'000 + 8'333 * 11);
+  ASSERT_EQ(last.num_balls, 3);
+  for (const Eigen::Vector2d& x : truth_) {
+    double nearest = 1e9;
+    for (const ball_state_t& b : last.balls) {
+      nearest = std::min(nearest, std::hypot(b.position[0] - x.x(), b.position[1] - x.y()));
+      EXPECT_EQ(b.utime, last.utime);
+      EXPECT_GT(b.covariance[0], 0.0);
+    }
+    // 640 px over 2.54 m: 4.3 mm per pixel.
+    EXPECT_LT(nearest, 2e-3) << x.transpose();
+  }
+}
+
+TEST_F(EstimatorNodeTest, BadFramesAreDroppedWithAReasonAndTheNodeGoesOn) {
+  Send(Frame(2'000'000, ImageEncoding::kRgb));
+  const std::uint8_t garbage[] = {1, 2, 3, 4, 5};
+  lcm_.publish(kCameraImageChannel, garbage, sizeof garbage);
+  while (lcm_.handleTimeout(0) > 0) {
+  }
+  image_t empty = Frame(2'100'000, ImageEncoding::kRgb);
+  empty.data.clear();
+  empty.size = 0;
+  Send(empty);
+  image_t huge = Frame(2'200'000, ImageEncoding::kGray);
+  huge.width = 100000;
+  Send(huge);
+  Send(EncodeImage(cv::Mat(100, 100, CV_8UC3, cv::Scalar(0, 0, 0)), 2'300'000,
+                   ImageEncoding::kRgb));               // not the camera's size
+  Send(Frame(1'000'000, ImageEncoding::kRgb));          // older than the last frame
+  EXPECT_EQ(node_.dropped(), 5);
+  ASSERT_EQ(log_.size(), 5u);
+  for (const std::string& line : log_) EXPECT_NE(line.find("dropped a frame: "), std::string::npos);
+  Send(Frame(2'400'000, ImageEncoding::kMjpeg));
+  EXPECT_EQ(node_.frames(), 2);
+  EXPECT_EQ(states_.size(), 2u);
+}
+
+}  // namespace
+}  // namespace billiard::estimator
