@@ -409,7 +409,8 @@ std::optional<BallDetection> RefineBall(const cv::Mat& bgr, const Eigen::Vector2
     const int rays = pass == 0 ? kRays / 2 : kRays;
     std::vector<Eigen::Vector2d> points;
     std::vector<double> angles;
-    const int rim_end = static_cast<int>(0.8 * r / kStep);  // rho = 1.1 r
+    // Samples over the rim: 4 px, past the blur (and a camera's glow) of the outline.
+    const std::size_t rim_samples = static_cast<std::size_t>(std::ceil(4.0 / kStep));
     for (int k = 0; k < rays; ++k) {
       const double angle = 2 * M_PI * k / rays;
       const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
@@ -420,17 +421,21 @@ std::optional<BallDetection> RefineBall(const cv::Mat& bgr, const Eigen::Vector2
         if (value < 0) break;  // left the window or the frame
         profile.push_back(value);
       }
-      if (static_cast<int>(profile.size()) <= rim_end) continue;
-      // The level of the ball: its strongest contrast out to the rim, for balls with dark
-      // reflections inside or a paler centre than rim (a pink ball).
-      const float half_level =
-          0.5f * *std::max_element(profile.begin(), profile.begin() + rim_end);
+      if (profile.empty()) continue;
       // From outside in, so that reflections inside the ball do not end it early; a ray that
       // ends in something else (a touching ball, an arm) has no edge of this ball.
-      if (half_level < 0.5f || profile.back() >= half_level) continue;
-      std::size_t i = profile.size() - 1;
-      while (i > 0 && profile[i - 1] < half_level) --i;
-      if (i == 0) continue;
+      if (profile.back() >= 0.5f) continue;
+      std::size_t outer = profile.size() - 1;
+      while (outer > 0 && profile[outer - 1] < 0.5f) --outer;
+      if (outer < rim_samples + 1) continue;
+      // The ball's level on this ray is its rim's, just inside the outline: shading, highlights
+      // and a paler centre (a pink ball) differ from ray to ray, and a level taken elsewhere
+      // would move the half-way point in or out with them, the centre with it.
+      const float half_level = 0.5f * *std::max_element(profile.begin() + (outer - rim_samples),
+                                                        profile.begin() + outer);
+      std::size_t i = outer - rim_samples;
+      while (i < profile.size() && profile[i] >= half_level) ++i;
+      if (i >= profile.size() || i == 0) continue;
       const double edge =
           0.3 * r + kStep * (i - (half_level - profile[i]) / (profile[i - 1] - profile[i]));
       if (edge > 0.6 * r && edge < 1.4 * r) {

