@@ -354,14 +354,13 @@ TEST(BallDetector, TablePositionsFromRenderedFramesWithinHalfAMillimetre) {
       double best = 1e9;
       for (const auto& d : found) best = std::min(best, (camera.Unproject(d.pixel, r).head<2>() - p).norm());
       const double to_cushion = std::min({p.x(), p.y(), params.table.length - p.x(), params.table.width - p.y()});
-      // Known limits, reported but not held to the target: a ball the cloth's own hue and darker
-      // (pool's green 6 and 14 on a green cloth: a shadow by colour alone), and balls within a
-      // radius of the cushion, whose dark inner face the outline meets.
-      const bool cloth_hue = balls[i].id % 8 == 6;
+      // Known limit, reported but not held to the target: balls within a radius of the cushion,
+      // whose dark inner face the outline meets (0.3-1.2 mm, once 5 mm). Pool's greens (6, 14),
+      // the cloth's hue and darker, are held to it: the rim's contrast still finds them.
       const bool at_cushion = to_cushion < 2 * r;
-      std::fprintf(stderr, "  ball %2d%s%s: %.3f mm\n", balls[i].id, cloth_hue ? " (cloth hue)" : "",
-                   at_cushion ? " (cushion)" : "", 1e3 * best);
-      if (cloth_hue || at_cushion) continue;
+      std::fprintf(stderr, "  ball %2d%s: %.3f mm\n", balls[i].id, at_cushion ? " (cushion)" : "",
+                   1e3 * best);
+      if (at_cushion) continue;
       EXPECT_LT(best, 1.5e-3) << "ball at " << p.transpose() << ", frame " << frame;
       sum_squares += best * best;
       ++count;
