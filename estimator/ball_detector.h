@@ -19,8 +19,9 @@
 // centre-surround filter on the ballness (full inside a ball-sized disc, empty around it), which
 // peaks once per ball even when balls touch, and stays low along an arm or a cue (full around
 // too) and on lines (never full inside). Each peak is then refined at full resolution by
-// RefineAt: the ball's edge is found along rays from the centre and a circle is fitted to it
-// with outliers (rays into a touching ball, an occluder or the cushion) dropped. The fit says
+// RefineAt: the ball's edge is found along rays from the centre, each where the contrast falls to
+// half that of its own ray's rim (shading and highlights differ from ray to ray), and a circle is
+// fitted to it with outliers (rays into a touching ball, an occluder or the cushion) dropped. The fit says
 // what a ball is: enough of a round edge at the expected radius, ball-coloured inside, and, when
 // brighter than the cloth, shaded like a sphere (a disc of projected light is flat).
 #pragma once
