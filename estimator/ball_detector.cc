@@ -397,9 +397,9 @@ std::optional<BallDetection> RefineBall(const cv::Mat& bgr, const Eigen::Vector2
     centre = {sx / sw, sy / sw};
   }
 
-  // The edge along rays: where the contrast first falls to half its level inside the ball
-  // (the median over the inner half of the ray), i.e. where the pixel is half ball, half cloth,
-  // whatever the ball's colour and however blurred the frame.
+  // The edge along rays: where the contrast falls to half the level of the ball's rim on that
+  // ray, i.e. where the pixel is half ball, half cloth, whatever the ball's colour and however
+  // blurred the frame.
   CircleFit fit{centre, r, 0, 2 * M_PI};
   constexpr double kStep = 0.75;
   std::vector<float> profile;
