@@ -56,7 +56,7 @@ cv::Vec3b PoolBallColour(int id) {
       {30, 30, 210},    // red
       {120, 30, 90},    // purple
       {20, 110, 250},   // orange
-      {60, 120, 20},    // green
+      {40, 95, 0},      // green: darker and more saturated than the cloth, as real 6-balls are
       {30, 25, 120},    // maroon
       {20, 20, 20}};    // black
   if (id < 0 || id > 15) throw std::invalid_argument("pool balls are numbered 0..15");
