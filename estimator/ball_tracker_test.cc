@@ -10,15 +10,15 @@
 #include <random>
 
 #include "simulator.h"
-#include "test_scenes.h"
+#include "shot_scenes.h"
 
 namespace billiard::estimator {
 namespace {
 
-using testing::Errors;
-using testing::Pool;
-using testing::RandomScene;
-using testing::Scene;
+using shots::Errors;
+using shots::Pool;
+using shots::RandomScene;
+using shots::Scene;
 
 // Runs the tracker over the scene at `rate` Hz with Gaussian detector noise.
 Errors Track(const Scene& s, double duration, double rate, double sigma, unsigned seed,

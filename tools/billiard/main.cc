@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "bench_command.h"
+#include "bench_estimator_command.h"
 #include "bench_planner_command.h"
 #include "command_line.h"
 #include "detect_command.h"
@@ -23,6 +24,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddBenchCommand(app);
   billiard::cli::AddPlanCommand(app);
   billiard::cli::AddBenchPlannerCommand(app);
+  billiard::cli::AddBenchEstimatorCommand(app);
   billiard::cli::AddDetectCommand(app);
   billiard::cli::AddCalibrateCommand(app);
   try {

@@ -1,8 +1,7 @@
-// Simulated shots with ground truth for the estimator's tests: balls at rest, some struck, and
-// the comparison of tracks with the truth (accuracy, identities kept).
+// Simulated shots with ground truth for the estimator's tests and benchmark: balls at rest,
+// some struck, and the comparison of tracks with the truth (accuracy, identities kept).
 #pragma once
 
-#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,9 +13,9 @@
 #include "ball_tracker.h"
 #include "simulator.h"
 
-namespace billiard::estimator::testing {
+namespace billiard::estimator::shots {
 
-const ModelParameters& Pool() {
+inline const ModelParameters& Pool() {
   static const ModelParameters p = LoadParameters("pool");
   return p;
 }
@@ -41,7 +40,7 @@ struct Scene {
 // `balls` balls, `struck` of them launched with a random cue-like state (0.5-3 m/s, spin across
 // the line from draw to follow, side spin up to 30 rad/s): the struck ones first, kept on the
 // table and clear of each other, then the resting ones placed clear of every path.
-Scene RandomScene(int balls, int struck, unsigned seed, double duration) {
+inline Scene RandomScene(int balls, int struck, unsigned seed, double duration) {
   const ModelParameters& p = Pool();
   const double r = p.ball.radius, clearance = 3 * r;
   std::mt19937 rng(seed);
@@ -151,4 +150,4 @@ struct Errors {
   }
 };
 
-}  // namespace billiard::estimator::testing
+}  // namespace billiard::estimator::shots

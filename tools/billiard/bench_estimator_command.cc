@@ -1,0 +1,54 @@
+#include "bench_estimator_command.h"
+
+#include <iostream>
+#include <memory>
+
+#include "command_line.h"
+#include "estimator_benchmark.h"
+
+namespace billiard::cli {
+
+namespace {
+
+struct BenchEstimatorArgs {
+  std::string out;
+  std::string params = "pool";
+  bench::EstimatorBenchmarkOptions options;
+};
+
+void Run(const BenchEstimatorArgs& args) {
+  if (args.options.scenes < 1) throw UsageError("--scenes must be >= 1");
+  if (args.options.balls < 1 || args.options.balls > 16) throw UsageError("--balls must be 1-16");
+  if (args.options.struck < 0 || args.options.struck > args.options.balls) {
+    throw UsageError("--struck must be between 0 and --balls");
+  }
+  const ModelParameters params = LoadParametersOption(args.params);
+  bench::EstimatorBenchmarkOptions options = args.options;
+  options.progress = [](const std::string& line) {
+    std::cerr << "bench-estimator: " << line << std::endl;
+  };
+  const bench::EstimatorBenchmarkResult result = bench::RunEstimatorBenchmark(params, options);
+  bench::WriteEstimatorReport(result, args.out);
+  std::cerr << "bench-estimator: wrote " << args.out << "/estimator_report.md (" << result.wall_s
+            << " s)" << std::endl;
+  std::cout << bench::EstimatorSummaryJson(result).dump() << std::endl;
+}
+
+}  // namespace
+
+void AddBenchEstimatorCommand(CLI::App& app) {
+  auto args = std::make_shared<BenchEstimatorArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench-estimator",
+      "Render seeded shots at 1280x720, 120 Hz, estimate them, compare with the truth");
+  cmd->add_option("--out", args->out, "Directory for estimator_report.md")->required();
+  cmd->add_option("--scenes", args->options.scenes, "Number of scenes")->capture_default_str();
+  cmd->add_option("--balls", args->options.balls, "Balls per scene (1-16)")->capture_default_str();
+  cmd->add_option("--struck", args->options.struck, "Balls struck per scene")->capture_default_str();
+  cmd->add_option("--seed", args->options.seed, "Seed of the scenes")->capture_default_str();
+  cmd->add_option("--params", args->params, "paper | pool | path to a JSON parameter file")
+      ->capture_default_str();
+  cmd->callback([args] { Run(*args); });
+}
+
+}  // namespace billiard::cli
