@@ -51,6 +51,7 @@ TEST(BallTracker, SixteenBallsThreeStruckAreTrackedWithoutSwapsWithinTheBounds) 
     EXPECT_EQ(e.lost, 0) << seed;
     EXPECT_LT(e.Rmse(e.position), 0.5e-3) << seed;
     EXPECT_LT(e.Rmse(e.velocity), 10e-3) << seed;
+    EXPECT_LT(e.Rmse(e.moving_velocity), 10e-3) << seed;
     std::fprintf(stderr, "seed %u: position RMSE %.3f mm, velocity RMSE %.2f mm/s\n", seed,
                  1e3 * e.Rmse(e.position), 1e3 * e.Rmse(e.velocity));
   }

@@ -109,6 +109,7 @@ inline Scene RandomScene(int balls, int struck, unsigned seed, double duration) 
 // disappearing a loss.
 struct Errors {
   std::vector<double> position, velocity;
+  std::vector<double> moving_velocity;  // the velocity errors of balls moving faster than 1 cm/s
   int swaps = 0, lost = 0;
   double Rmse(const std::vector<double>& e) const {
     double sum = 0.0;
@@ -145,7 +146,10 @@ struct Errors {
       for (double change : s.phase_changes[i]) {
         settled = settled && !(t >= change && t < change + settle);
       }
-      if (settled) velocity.push_back((own->velocity() - s.VelocityAt(i, t)).norm());
+      if (!settled) continue;
+      const double error = (own->velocity() - s.VelocityAt(i, t)).norm();
+      velocity.push_back(error);
+      if (s.VelocityAt(i, t).norm() > 0.01) moving_velocity.push_back(error);
     }
   }
 };
