@@ -9,15 +9,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "run_command.h"
+#include "billiard_command.h"
 
 namespace {
 
+using billiard::testing::Billiard;
 using billiard::testing::CommandResult;
-
-CommandResult Billiard(const std::string& args, bool merge_stderr = false) {
-  return billiard::testing::RunCommand(std::string(BILLIARD_BIN) + " " + args, merge_stderr);
-}
 
 nlohmann::json Json(const std::string& args) {
   const CommandResult r = Billiard(args);

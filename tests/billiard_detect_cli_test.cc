@@ -11,23 +11,14 @@
 #include <string>
 
 #include "real_table_photo.h"
-#include "run_command.h"
+#include "billiard_command.h"
 
 namespace {
 
 using billiard::estimator::testing::HandBall;
+using billiard::testing::Billiard;
 using billiard::testing::CommandResult;
-
-CommandResult Billiard(const std::string& args, bool merge_stderr = false) {
-  return billiard::testing::RunCommand(std::string(BILLIARD_BIN) + " " + args, merge_stderr);
-}
-
-nlohmann::json OneObject(const CommandResult& r, const std::string& args) {
-  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
-  const auto j = nlohmann::json::parse(r.out, nullptr, false);
-  EXPECT_TRUE(j.is_object()) << args << ": " << r.out;
-  return j;
-}
+using billiard::testing::OneObject;
 
 // Each hand-listed ball exactly once within 4 px, and nothing else.
 void ExpectEveryBallOnce(const nlohmann::json& balls) {

@@ -11,23 +11,13 @@
 #include <string>
 
 #include "request_suite.h"
-#include "run_command.h"
+#include "billiard_command.h"
 
 namespace {
 
+using billiard::testing::Billiard;
 using billiard::testing::CommandResult;
-
-CommandResult Billiard(const std::string& args, bool merge_stderr = false) {
-  return billiard::testing::RunCommand(std::string(BILLIARD_BIN) + " " + args, merge_stderr);
-}
-
-// Exactly one JSON object, on one line.
-nlohmann::json OneObject(const CommandResult& r, const std::string& args) {
-  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
-  const auto j = nlohmann::json::parse(r.out, nullptr, false);
-  EXPECT_TRUE(j.is_object()) << args << ": " << r.out;
-  return j;
-}
+using billiard::testing::OneObject;
 
 void ExpectEveryDocumentedKey(const nlohmann::json& j) {
   for (const char* key : {"v0", "w0", "cue", "predicted_final", "closed_form_miss_m",
