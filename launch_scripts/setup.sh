@@ -9,7 +9,7 @@ packages=(
   liblcm-dev liblcm-bin libglib2.0-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
-  python3
+  python3 iproute2
 )
 
 missing=()

@@ -1,0 +1,92 @@
+// table_sim_node: a session of shots through the estimator and planner nodes (table_sim_node.h);
+// prints the summary as JSON on stdout, the shots as they go on stderr.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <lcm/lcm-cpp.hpp>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "camera_model.h"
+#include "parameters.h"
+#include "table_sim_node.h"
+
+int main(int argc, char** argv) {
+  std::string lcm_url, params_name = "pool", noise = "off";
+  billiard::TableSimOptions options;
+  bool realtime = false;
+  CLI::App app{"table_sim_node: stands in for the robot and the camera, drives a session of shots"};
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "table_sim_node: " + std::string(e.what()) + " (see --help)\n";
+  });
+  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL, else LCM's default)");
+  app.add_option("--params", params_name, "paper | pool | path to a JSON parameter file")
+      ->capture_default_str();
+  app.add_option("--shots", options.shots, "Shots to random targets")->capture_default_str();
+  app.add_option("--seed", options.seed, "Seed of the targets and the noise")->capture_default_str();
+  app.add_option("--noise", noise, "Execution noise of the robot: on (speed 1 %, heading 0.1 deg, "
+                                   "tip 0.5 mm) or off")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  app.add_option("--camera-rate", options.camera_rate, "Frames per second")->capture_default_str();
+  app.add_flag("--realtime", realtime, "Real time instead of lockstep");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (options.shots < 1 || !(options.camera_rate > 0.0)) {
+    std::cerr << "table_sim_node: --shots and --camera-rate must be positive" << std::endl;
+    return 2;
+  }
+  options.lockstep = !realtime;
+  if (noise == "on") options.noise = {0.01, 0.1 * M_PI / 180.0, 0.5e-3};
+  billiard::ModelParameters params;
+  try {
+    params = billiard::LoadParameters(params_name);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "table_sim_node: --params: " << e.what() << std::endl;
+    return 2;
+  }
+  lcm::LCM lcm(lcm_url);
+  if (!lcm.good()) {
+    std::cerr << "table_sim_node: cannot initialise LCM" << std::endl;
+    return 1;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  billiard::TableSimNode node(lcm, params,
+                              billiard::CameraModel::Overhead(params.table, 1280, 720), options);
+  std::vector<billiard::ShotResult> shots;
+  try {
+    shots = node.Run();
+  } catch (const std::runtime_error& e) {
+    std::cerr << "table_sim_node: " << e.what() << std::endl;
+    return 1;
+  }
+  nlohmann::json j;
+  std::vector<double> misses;
+  for (const billiard::ShotResult& s : shots) {
+    nlohmann::json shot = {{"target", {s.target.x(), s.target.y()}},
+                           {"final", {s.final_point.x(), s.final_point.y()}},
+                           {"miss_m", s.miss_m},
+                           {"plan_ms", s.plan_ms},
+                           {"status", s.status}};
+    if (!s.reason.empty()) shot["reason"] = s.reason;
+    j["shots"].push_back(shot);
+    misses.push_back(s.miss_m);
+  }
+  std::sort(misses.begin(), misses.end());
+  const std::size_t n = misses.size();
+  j["median_miss_m"] = n % 2 ? misses[n / 2] : 0.5 * (misses[n / 2 - 1] + misses[n / 2]);
+  j["max_miss_m"] = misses.back();
+  double mean = 0.0, spread = 0.0;
+  for (double m : misses) mean += m / n;
+  for (double m : misses) spread += (m - mean) * (m - mean) / n;
+  j["mean_miss_m"] = mean;
+  j["stddev_miss_m"] = std::sqrt(spread);
+  j["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << j.dump() << std::endl;
+  return 0;
+}
