@@ -3,6 +3,8 @@
 // made) and prints the session's summary.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -37,6 +39,23 @@ TEST(ClosedLoop, LockstepRunsReplayTheSameShots) {
     EXPECT_EQ(a["shots"][i]["target"], b["shots"][i]["target"]);
   }
   EXPECT_GT(a["stddev_miss_m"].get<double>(), 0.0);
+}
+
+TEST(ClosedLoop, ARecordedRunReplaysToTheSameCommands) {
+  char dir[] = "/tmp/closed_loop_XXXXXX";
+  ASSERT_NE(mkdtemp(dir), nullptr);
+  const std::string log = std::string(dir) + "/run.lcm";
+  const nlohmann::json run = RunLoop("--shots 2 --seed 7 --log " + log);
+  ASSERT_TRUE(run.is_object());
+  const billiard::testing::CommandResult r =
+      billiard::testing::RunCommand(std::string("bash ") + REPLAY_SCRIPT + " " + log + " --json");
+  EXPECT_EQ(r.status, 0) << r.out;
+  const nlohmann::json replay = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(replay.is_object()) << r.out;
+  EXPECT_TRUE(replay["identical"].get<bool>()) << replay;
+  EXPECT_EQ(replay["cue_commands"]["recorded"], 2) << replay;
+  EXPECT_GT(replay["table_states"]["recorded"].get<int>(), 50) << replay;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "detect_command.h"
 #include "fit_contact_command.h"
 #include "plan_command.h"
+#include "replay_command.h"
 #include "simulate_command.h"
 
 int main(int argc, char** argv) {
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddPlanCommand(app);
   billiard::cli::AddBenchPlannerCommand(app);
   billiard::cli::AddBenchEstimatorCommand(app);
+  billiard::cli::AddReplayCommand(app);
   billiard::cli::AddDetectCommand(app);
   billiard::cli::AddCalibrateCommand(app);
   try {
