@@ -6,7 +6,8 @@
 #                              [--lockstep | --realtime] [--json] [--no-build]
 #
 # LCM traffic stays on this host: inside a private network namespace with multicast routed to
-# loopback when one can be made (unshare -n), else UDP multicast with ttl=0.
+# loopback when one can be made (unshare -n), else UDP multicast with ttl=0, else (no multicast
+# route at all) the three nodes in one process on LCM's in-memory provider, which says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -34,8 +35,20 @@ if [ -z "${in_namespace:-}" ] && unshare -n true 2>/dev/null; then
     "$0" --no-build --in-namespace --shots "$shots" --seed "$seed" --noise "$noise" \
     ${log:+--log "$log"} "$clock" $($json && echo --json)
 fi
-[ -n "${in_namespace:-}" ] || echo "run_loop: no network namespace; UDP multicast with ttl=0" >&2
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0"
+# Without a namespace, separate processes only where multicast reaches back over loopback;
+# otherwise one process on LCM's in-memory provider.
+in_process=""
+if [ -z "${in_namespace:-}" ]; then
+  if ! ip route get 239.255.76.67 >/dev/null 2>&1; then
+    in_process=--in-process
+    echo "run_loop: no network namespace and no multicast route: the three nodes run in one" \
+         "process over memq://${log:+ (nothing to record: --log needs multicast)}" >&2
+    log=""
+  else
+    echo "run_loop: no network namespace; UDP multicast with ttl=0" >&2
+  fi
+fi
 
 pids=()
 cleanup() {
@@ -49,16 +62,18 @@ if [ -n "$log" ]; then
   lcm-logger --quiet --force "$log" >/dev/null 2>&1 &
   pids+=($!)
 fi
-build/bin/estimator_node --params pool 2>/dev/null &
-pids+=($!)
-build/bin/planner_node --params pool >/dev/null 2>&1 &
-pids+=($!)
-sleep 0.5  # the nodes subscribe
+if [ -z "$in_process" ]; then
+  build/bin/estimator_node --params pool 2>/dev/null &
+  pids+=($!)
+  build/bin/planner_node --params pool >/dev/null 2>&1 &
+  pids+=($!)
+  sleep 0.5  # the nodes subscribe
+fi
 
 sim_clock=""
 [ "$clock" = --realtime ] && sim_clock=--realtime
 summary=$(build/bin/table_sim_node --params pool --shots "$shots" --seed "$seed" --noise "$noise" \
-          $sim_clock)
+          $sim_clock $in_process)
 $json && echo "$summary"
 python3 - "$summary" >&2 <<'PY'
 import json, sys

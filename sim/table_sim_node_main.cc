@@ -4,19 +4,22 @@
 #include <algorithm>
 #include <chrono>
 #include <iostream>
+#include <memory>
 #include <lcm/lcm-cpp.hpp>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 
 #include "camera_model.h"
+#include "estimator_node.h"
 #include "parameters.h"
+#include "planner_node.h"
 #include "table_sim_node.h"
 
 int main(int argc, char** argv) {
   std::string lcm_url, params_name = "pool", noise = "off";
   billiard::TableSimOptions options;
-  bool realtime = false;
+  bool realtime = false, in_process = false;
   CLI::App app{"table_sim_node: stands in for the robot and the camera, drives a session of shots"};
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
     return "table_sim_node: " + std::string(e.what()) + " (see --help)\n";
@@ -32,6 +35,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--camera-rate", options.camera_rate, "Frames per second")->capture_default_str();
   app.add_flag("--realtime", realtime, "Real time instead of lockstep");
+  app.add_flag("--in-process", in_process,
+               "Run the estimator and planner nodes in this process on LCM's in-memory provider "
+               "(where the nodes cannot talk over UDP multicast)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -50,14 +56,23 @@ int main(int argc, char** argv) {
     std::cerr << "table_sim_node: --params: " << e.what() << std::endl;
     return 2;
   }
+  if (in_process) lcm_url = "memq://";
   lcm::LCM lcm(lcm_url);
   if (!lcm.good()) {
     std::cerr << "table_sim_node: cannot initialise LCM" << std::endl;
     return 1;
   }
   const auto start = std::chrono::steady_clock::now();
-  billiard::TableSimNode node(lcm, params,
-                              billiard::CameraModel::Overhead(params.table, 1280, 720), options);
+  const billiard::CameraModel camera = billiard::CameraModel::Overhead(params.table, 1280, 720);
+  // In one process the nodes answer inside the simulator's waits: handling a frame publishes the
+  // estimator's state, handling a request the planner's command.
+  std::unique_ptr<billiard::estimator::EstimatorNode> estimator;
+  std::unique_ptr<billiard::planner::PlannerNode> planner;
+  if (in_process) {
+    estimator = std::make_unique<billiard::estimator::EstimatorNode>(lcm, camera, params);
+    planner = std::make_unique<billiard::planner::PlannerNode>(lcm, params);
+  }
+  billiard::TableSimNode node(lcm, params, camera, options);
   std::vector<billiard::ShotResult> shots;
   try {
     shots = node.Run();
