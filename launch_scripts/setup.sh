@@ -6,11 +6,13 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libceres-dev libopencv-dev
-  liblcm-dev liblcm-bin libglib2.0-dev
+  liblcm-dev liblcm-bin liblcm-java libglib2.0-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
   python3 iproute2
 )
+# javac for the Java message types (lcm-gen --java): the JDK only where none is installed.
+command -v javac >/dev/null 2>&1 || packages+=(default-jdk-headless)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -41,7 +41,7 @@ TEST(ClosedLoop, LockstepRunsReplayTheSameShots) {
   EXPECT_GT(a["stddev_miss_m"].get<double>(), 0.0);
 }
 
-TEST(ClosedLoop, ARecordedRunReplaysToTheSameCommands) {
+TEST(ClosedLoop, ARecordedRunReplaysToTheSameCommandsAndDecodesInJava) {
   char dir[] = "/tmp/closed_loop_XXXXXX";
   ASSERT_NE(mkdtemp(dir), nullptr);
   const std::string log = std::string(dir) + "/run.lcm";
@@ -58,6 +58,17 @@ TEST(ClosedLoop, ARecordedRunReplaysToTheSameCommands) {
   EXPECT_TRUE(replay["identical"].get<bool>()) << replay;
   EXPECT_EQ(replay["cue_commands"]["recorded"], 2) << replay;
   EXPECT_GT(replay["table_states"]["recorded"].get<int>(), 50) << replay;
+
+  // The log decodes with the Java classes lcm-gen makes from the same .lcm files.
+  const billiard::testing::CommandResult java = billiard::testing::RunCommand(
+      std::string("java -cp ") + JAVA_CLASSPATH + " DecodeLog " + log);
+  ASSERT_EQ(java.status, 0) << java.out;
+  const nlohmann::json decoded = nlohmann::json::parse(java.out, nullptr, false);
+  ASSERT_TRUE(decoded.is_object()) << java.out;
+  EXPECT_EQ(decoded["CUE_COMMAND"], 2) << decoded;
+  EXPECT_EQ(decoded["SHOT_REQUEST"], 2) << decoded;
+  EXPECT_EQ(decoded["TABLE_STATE"], replay["table_states"]["recorded"]) << decoded;
+  EXPECT_EQ(decoded["CAMERA_IMAGE"], decoded["TABLE_STATE"]) << decoded;
   std::filesystem::remove_all(dir);
 }
 
