@@ -51,9 +51,11 @@ if [ -z "${in_namespace:-}" ]; then
 fi
 
 pids=()
+summary_file=$(mktemp)
 cleanup() {
   for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
   wait 2>/dev/null || true
+  rm -f "$summary_file"
 }
 trap cleanup EXIT
 trap 'exit 130' INT TERM
@@ -72,8 +74,15 @@ fi
 
 sim_clock=""
 [ "$clock" = --realtime ] && sim_clock=--realtime
-summary=$(build/bin/table_sim_node --params pool --shots "$shots" --seed "$seed" --noise "$noise" \
-          $sim_clock $in_process)
+# In the background, so that a signal reaches the trap at once and the cleanup stops it too.
+build/bin/table_sim_node --params pool --shots "$shots" --seed "$seed" --noise "$noise" \
+  $sim_clock $in_process >"$summary_file" &
+pids+=($!)
+status=0
+wait $! || status=$?
+[ $status -eq 130 ] && exit 130
+[ $status -eq 0 ] || { echo "run_loop: table_sim_node failed (exit $status)" >&2; exit 1; }
+summary=$(cat "$summary_file")
 $json && echo "$summary"
 python3 - "$summary" >&2 <<'PY'
 import json, sys

@@ -24,6 +24,8 @@ void StopOnSignals() {
   }
 }
 
+bool StopRequested() { return stop_requested != 0; }
+
 int HandleUntilStopped(lcm::LCM& lcm, const std::string& name) {
   while (!stop_requested) {
     errno = 0;

@@ -11,6 +11,9 @@ namespace billiard::nodes {
 // wait in handleTimeout at once).
 void StopOnSignals();
 
+// Whether SIGINT or SIGTERM has arrived since StopOnSignals.
+bool StopRequested();
+
 // Handles messages until a signal asks to stop: 0 then, 1 (with the reason on stderr) if LCM
 // stops working. `name` prefixes the log lines.
 int HandleUntilStopped(lcm::LCM& lcm, const std::string& name);

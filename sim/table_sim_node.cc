@@ -1,5 +1,6 @@
 #include "table_sim_node.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -9,6 +10,7 @@
 
 #include "billiard/shot_request_t.hpp"
 #include "image_codec.h"
+#include "node_loop.h"
 #include "simulator.h"
 
 namespace billiard {
@@ -71,6 +73,7 @@ void TableSimNode::WaitFor(const std::function<bool()>& done, const std::string&
   const auto deadline = std::chrono::steady_clock::now() +
                         std::chrono::duration<double>(options_.reply_timeout);
   while (!done()) {
+    if (nodes::StopRequested()) throw std::runtime_error("stopped by a signal");
     if (std::chrono::steady_clock::now() > deadline) {
       throw std::runtime_error("no " + what + " within " + std::to_string(options_.reply_timeout) +
                                " s");
@@ -79,21 +82,23 @@ void TableSimNode::WaitFor(const std::function<bool()>& done, const std::string&
   }
 }
 
-void TableSimNode::Frame(const std::function<Eigen::Vector2d(double)>& position, double t) {
+void TableSimNode::Frame(const std::function<BallState(double)>& state, double t) {
   const std::int64_t utime = Utime(t);
-  const Eigen::Vector2d x = position(t);
+  const BallState x = state(t);
   table_state_t truth{};
   truth.utime = utime;
-  ball_state_t b{};
+  ball_state_t b{};  // the truth has no covariance
   b.utime = utime;
   b.ball_id = kCueBall;
-  b.position[0] = x.x();
-  b.position[1] = x.y();
+  std::copy(x.data(), x.data() + 2, b.position);
+  std::copy(x.data() + kVx, x.data() + kVx + 2, b.velocity);
+  std::copy(x.data() + kWx, x.data() + kWx + 3, b.spin);
   truth.balls.push_back(b);
   truth.num_balls = 1;
   lcm_.publish(kTableTruthChannel, &truth);
 
-  const RenderBall ball{kCueBall, PoolBallColour(kCueBall), position};
+  const RenderBall ball{kCueBall, PoolBallColour(kCueBall),
+                        [&state](double time) { return Eigen::Vector2d(state(time).head<2>()); }};
   const image_t image =
       EncodeImage(renderer_.Render({ball}, t), utime, ImageEncoding::kMjpeg, options_.jpeg_quality);
   if (!options_.lockstep) {
@@ -137,7 +142,8 @@ std::vector<ShotResult> TableSimNode::Run() {
   std::vector<ShotResult> results;
   for (int shot = 0; shot < options_.shots; ++shot) {
     const Eigen::Vector2d rest = ball_;
-    const auto at_rest = [rest](double) { return rest; };
+    const BallState rest_state = MakeBallState(rest.x(), rest.y(), 0, 0, 0, 0, 0);
+    const auto at_rest = [&rest_state](double) { return rest_state; };
     for (double shown = 0.0; shown < options_.settle_time; shown += frame_dt) {
       Frame(at_rest, time_);
       time_ += frame_dt;
@@ -189,9 +195,8 @@ std::vector<ShotResult> TableSimNode::Run() {
     const double t_strike = time_;
     const auto trajectory = arrival.trajectory;
     const Eigen::Vector2d final_point = arrival.state.head<2>();
-    const auto moving = [t_strike, trajectory, final_point, &arrival](double t) -> Eigen::Vector2d {
-      return t - t_strike >= arrival.time ? final_point
-                                          : Eigen::Vector2d(trajectory->At(t - t_strike).head<2>());
+    const auto moving = [t_strike, trajectory, &arrival](double t) -> BallState {
+      return t - t_strike >= arrival.time ? arrival.state : trajectory->At(t - t_strike);
     };
     for (; time_ - t_strike < arrival.time; time_ += frame_dt) Frame(moving, time_);
     ball_ = final_point;

@@ -22,6 +22,7 @@
 
 #include "billiard/cue_command_t.hpp"
 #include "billiard/table_state_t.hpp"
+#include "ball_state.h"
 #include "camera_model.h"
 #include "cue_strike.h"
 #include "parameters.h"
@@ -74,8 +75,9 @@ class TableSimNode {
  private:
   void OnTableState(const lcm::ReceiveBuffer*, const std::string&, const table_state_t* m);
   void OnCueCommand(const lcm::ReceiveBuffer*, const std::string&, const cue_command_t* m);
-  // Shows the ball where `position` says at time t (sim time) and, in lockstep, waits for it.
-  void Frame(const std::function<Eigen::Vector2d(double)>& position, double t);
+  // Publishes the ball's true state at time t (sim time) and the camera's frame of it and, in
+  // lockstep, waits for the estimator's state of that frame.
+  void Frame(const std::function<BallState(double)>& state, double t);
   // Handles messages until `done` holds; throws after the reply timeout.
   void WaitFor(const std::function<bool()>& done, const std::string& what);
   std::int64_t Utime(double t) const;

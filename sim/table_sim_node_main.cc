@@ -12,6 +12,7 @@
 
 #include "camera_model.h"
 #include "estimator_node.h"
+#include "node_loop.h"
 #include "parameters.h"
 #include "planner_node.h"
 #include "table_sim_node.h"
@@ -56,6 +57,7 @@ int main(int argc, char** argv) {
     std::cerr << "table_sim_node: --params: " << e.what() << std::endl;
     return 2;
   }
+  billiard::nodes::StopOnSignals();
   if (in_process) lcm_url = "memq://";
   lcm::LCM lcm(lcm_url);
   if (!lcm.good()) {
@@ -78,7 +80,7 @@ int main(int argc, char** argv) {
     shots = node.Run();
   } catch (const std::runtime_error& e) {
     std::cerr << "table_sim_node: " << e.what() << std::endl;
-    return 1;
+    return billiard::nodes::StopRequested() ? 130 : 1;
   }
   nlohmann::json j;
   std::vector<double> misses;

@@ -41,6 +41,17 @@ TEST(ClosedLoop, LockstepRunsReplayTheSameShots) {
   EXPECT_GT(a["stddev_miss_m"].get<double>(), 0.0);
 }
 
+TEST(ClosedLoop, CtrlCStopsEveryProcess) {
+  // Ctrl-C reaches the whole process group of the script (setsid gives it one of its own).
+  const std::string script =
+      std::string("setsid bash ") + RUN_LOOP_SCRIPT + " --no-build --shots 20 >/dev/null 2>&1 & "
+      "group=$!; sleep 3; kill -INT -- -$group; wait $group; echo \"exit $?\"; sleep 1; "
+      "pgrep -g $group >/dev/null && echo orphans || echo clean";
+  const billiard::testing::CommandResult r =
+      billiard::testing::RunCommand("bash -c '" + script + "'");
+  EXPECT_EQ(r.out, "exit 130\nclean\n");
+}
+
 TEST(ClosedLoop, ARecordedRunReplaysToTheSameCommandsAndDecodesInJava) {
   char dir[] = "/tmp/closed_loop_XXXXXX";
   ASSERT_NE(mkdtemp(dir), nullptr);
