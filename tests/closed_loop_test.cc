@@ -19,10 +19,10 @@ nlohmann::json RunLoop(const std::string& args) {
   return nlohmann::json::parse(r.out, nullptr, false);
 }
 
-TEST(ClosedLoop, LockstepShotsWithoutNoiseLandWithinMillimetres) {
-  const nlohmann::json s = RunLoop("--shots 4 --seed 3 --noise off");
+TEST(ClosedLoop, TwentyLockstepShotsWithoutNoiseLandWithinMillimetres) {
+  const nlohmann::json s = RunLoop("--shots 20 --seed 3 --noise off");
   ASSERT_TRUE(s.is_object());
-  ASSERT_EQ(s["shots"].size(), 4u);
+  ASSERT_EQ(s["shots"].size(), 20u);
   for (const auto& shot : s["shots"]) EXPECT_EQ(shot["status"], "ok") << shot;
   EXPECT_LT(s["median_miss_m"].get<double>(), 2e-3);
   EXPECT_LT(s["max_miss_m"].get<double>(), 5e-3);
