@@ -11,6 +11,7 @@
 #include "billiard/shot_request_t.hpp"
 #include "image_codec.h"
 #include "node_loop.h"
+#include "planner_node.h"
 #include "simulator.h"
 
 namespace billiard {
@@ -23,18 +24,6 @@ constexpr char kCameraImageChannel[] = "CAMERA_IMAGE";
 constexpr char kShotRequestChannel[] = "SHOT_REQUEST";
 constexpr char kCueCommandChannel[] = "CUE_COMMAND";
 constexpr int kCueBall = 0;
-
-std::string StatusName(int8_t status) {
-  switch (status) {
-    case cue_command_t::STATUS_OK: return "ok";
-    case cue_command_t::STATUS_INVALID: return "invalid";
-    case cue_command_t::STATUS_OFF_TABLE: return "off_table";
-    case cue_command_t::STATUS_UNREACHABLE: return "unreachable";
-    case cue_command_t::STATUS_NOT_CONVERGED: return "not_converged";
-    case cue_command_t::STATUS_NO_BALL_STATE: return "no_ball_state";
-  }
-  return "status " + std::to_string(status);
-}
 
 }  // namespace
 
@@ -177,7 +166,7 @@ std::vector<ShotResult> TableSimNode::Run() {
     WaitFor([&] { return !commands_.empty() && commands_.back().request_id == shot; },
             "CUE_COMMAND for request " + std::to_string(shot));
     const cue_command_t command = commands_.back();
-    result.status = StatusName(command.status);
+    result.status = planner::CueCommandStatusName(command.status);
     result.reason = command.reason;
     result.plan_ms = 1e-3 * command.solve_us;
     if (command.status != cue_command_t::STATUS_OK) {
