@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "billiard/shot_request_t.hpp"
+#include "estimator_node.h"
 #include "image_codec.h"
 #include "node_loop.h"
 #include "planner_node.h"
@@ -18,11 +19,11 @@ namespace billiard {
 
 namespace {
 
-constexpr char kTableStateChannel[] = "TABLE_STATE";
+using estimator::kCameraImageChannel;
+using planner::kCueCommandChannel;
+using planner::kShotRequestChannel;
+using planner::kTableStateChannel;
 constexpr char kTableTruthChannel[] = "TABLE_TRUTH";
-constexpr char kCameraImageChannel[] = "CAMERA_IMAGE";
-constexpr char kShotRequestChannel[] = "SHOT_REQUEST";
-constexpr char kCueCommandChannel[] = "CUE_COMMAND";
 constexpr int kCueBall = 0;
 
 }  // namespace
