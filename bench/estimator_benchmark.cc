@@ -33,7 +33,7 @@ Totals Total(const EstimatorBenchmarkResult& r) {
   return t;
 }
 
-double Rmse(const std::vector<double>& e) { return estimator::shots::Errors{}.Rmse(e); }
+using estimator::shots::Rmse;
 
 }  // namespace
 

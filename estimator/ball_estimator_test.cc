@@ -23,15 +23,15 @@ TEST(BallEstimator, RenderedShotsOfSixteenBallsAreTrackedWithinTheBounds) {
     EXPECT_EQ(e.swaps, 0) << seed;
     EXPECT_EQ(e.lost, 0) << seed;
     EXPECT_EQ(e.identity.size(), 16u) << seed;
-    EXPECT_LT(e.Rmse(e.position), 0.5e-3) << seed;
-    EXPECT_LT(e.Rmse(e.velocity), 10e-3) << seed;
-    EXPECT_LT(e.Rmse(e.moving_velocity), 10e-3) << seed;
+    EXPECT_LT(shots::Rmse(e.position), 0.5e-3) << seed;
+    EXPECT_LT(shots::Rmse(e.velocity), 10e-3) << seed;
+    EXPECT_LT(shots::Rmse(e.moving_velocity), 10e-3) << seed;
     std::fprintf(stderr,
-                 "seed %u: position RMSE %.3f mm, velocity RMSE %.2f mm/s (moving %.2f); %.2f ms per frame "
-                 "(median; %d full detections in %d frames)\n",
-                 seed, 1e3 * e.Rmse(e.position), 1e3 * e.Rmse(e.velocity), 1e3 * e.Rmse(e.moving_velocity),
-                 bench::Quantile(run.frame_ms, 0.5), run.full_detects,
-                 static_cast<int>(run.frame_ms.size()));
+                 "seed %u: position RMSE %.3f mm, velocity RMSE %.2f mm/s (moving %.2f); %.2f ms "
+                 "per frame (median; %d full detections in %d frames)\n",
+                 seed, 1e3 * shots::Rmse(e.position), 1e3 * shots::Rmse(e.velocity),
+                 1e3 * shots::Rmse(e.moving_velocity), bench::Quantile(run.frame_ms, 0.5),
+                 run.full_detects, static_cast<int>(run.frame_ms.size()));
   }
 }
 

@@ -49,11 +49,11 @@ TEST(BallTracker, SixteenBallsThreeStruckAreTrackedWithoutSwapsWithinTheBounds) 
     const Errors e = Track(s, 4.2, 120.0, 0.4e-3, seed);
     EXPECT_EQ(e.swaps, 0) << seed;
     EXPECT_EQ(e.lost, 0) << seed;
-    EXPECT_LT(e.Rmse(e.position), 0.5e-3) << seed;
-    EXPECT_LT(e.Rmse(e.velocity), 10e-3) << seed;
-    EXPECT_LT(e.Rmse(e.moving_velocity), 10e-3) << seed;
+    EXPECT_LT(shots::Rmse(e.position), 0.5e-3) << seed;
+    EXPECT_LT(shots::Rmse(e.velocity), 10e-3) << seed;
+    EXPECT_LT(shots::Rmse(e.moving_velocity), 10e-3) << seed;
     std::fprintf(stderr, "seed %u: position RMSE %.3f mm, velocity RMSE %.2f mm/s\n", seed,
-                 1e3 * e.Rmse(e.position), 1e3 * e.Rmse(e.velocity));
+                 1e3 * shots::Rmse(e.position), 1e3 * shots::Rmse(e.velocity));
   }
 }
 

@@ -102,6 +102,13 @@ inline Scene RandomScene(int balls, int struck, unsigned seed, double duration) 
   return s;
 }
 
+// Root mean square of errors (0 for none).
+inline double Rmse(const std::vector<double>& errors) {
+  double sum = 0.0;
+  for (double x : errors) sum += x * x;
+  return std::sqrt(sum / std::max<std::size_t>(errors.size(), 1));
+}
+
 // Tracks against the truth, frame by frame. Errors count once the filter has converged: from
 // 0.1 s on, and for the velocity not within `settle` seconds after a ball's strike, end of
 // sliding or stop (the phase changes the filter must first detect). A ball's track is the
@@ -111,11 +118,6 @@ struct Errors {
   std::vector<double> position, velocity;
   std::vector<double> moving_velocity;  // the velocity errors of balls moving faster than 1 cm/s
   int swaps = 0, lost = 0;
-  double Rmse(const std::vector<double>& e) const {
-    double sum = 0.0;
-    for (double x : e) sum += x * x;
-    return std::sqrt(sum / std::max<std::size_t>(e.size(), 1));
-  }
   std::map<std::size_t, int> identity;  // ball -> track id
   double settle = 0.3;
 
