@@ -9,7 +9,7 @@ packages=(
   liblcm-dev liblcm-bin liblcm-java libglib2.0-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
-  python3 iproute2
+  python3 iproute2 procps
 )
 # javac for the Java message types (lcm-gen --java): the JDK only where none is installed.
 command -v javac >/dev/null 2>&1 || packages+=(default-jdk-headless)
