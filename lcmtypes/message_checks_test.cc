@@ -1,0 +1,238 @@
+#include "message_checks.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace billiard::messages {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+template <class Message>
+std::vector<std::uint8_t> Encode(const Message& m) {
+  std::vector<std::uint8_t> bytes(m.getEncodedSize());
+  EXPECT_EQ(m.encode(bytes.data(), 0, static_cast<int>(bytes.size())),
+            static_cast<int>(bytes.size()));
+  return bytes;
+}
+
+void PutInt32(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) bytes[at + i] = static_cast<std::uint8_t>(v >> (24 - 8 * i));
+}
+
+ball_state_t Ball(std::int32_t id) {
+  ball_state_t b{};
+  b.utime = 5;
+  b.ball_id = id;
+  b.position[0] = 0.6;
+  b.position[1] = 0.5;
+  return b;
+}
+
+table_state_t Table() {
+  table_state_t m{};
+  m.utime = 5;
+  m.balls = {Ball(0), Ball(3)};
+  m.num_balls = 2;
+  return m;
+}
+
+cue_command_t Command() {
+  cue_command_t m{};
+  m.utime = 9;
+  m.request_id = 4;
+  m.cue_speed = 1.5;
+  m.path = {{0.1, 0.2}, {0.3, 0.4}};
+  m.num_path_points = 2;
+  return m;
+}
+
+image_t Image() {
+  image_t m{};
+  m.utime = 1;
+  m.width = 4;
+  m.height = 2;
+  m.row_stride = 4;
+  m.pixelformat = image_t::PIXEL_FORMAT_GRAY;
+  m.data.assign(8, 7);
+  m.size = 8;
+  return m;
+}
+
+node_status_t Status() {
+  node_status_t m{};
+  m.utime = 1;
+  m.node = "planner_node";
+  m.last_error = "";
+  m.counter_names = {"busy", "stale_state"};
+  m.counter_values = {3, 4};
+  m.num_counters = 2;
+  return m;
+}
+
+// Every valid message decodes to itself; every prefix of it, and it with a byte after it, is
+// refused with a reason.
+template <class Message>
+void ExpectOnlyTheWholePayloadDecodes(const Message& m) {
+  std::vector<std::uint8_t> bytes = Encode(m);
+  Message out;
+  ASSERT_EQ(DecodeChecked(bytes.data(), bytes.size(), out), "");
+  EXPECT_EQ(Encode(out), bytes);
+  for (std::size_t n = 0; n < bytes.size(); ++n) {
+    EXPECT_NE(Decode(bytes.data(), n, out), "") << n << " of " << bytes.size() << " bytes";
+  }
+  bytes.push_back(0);
+  EXPECT_NE(Decode(bytes.data(), bytes.size(), out), "");
+}
+
+TEST(MessageChecks, OnlyTheWholePayloadDecodes) {
+  ExpectOnlyTheWholePayloadDecodes(Table());
+  ExpectOnlyTheWholePayloadDecodes(shot_request_t{});
+  ExpectOnlyTheWholePayloadDecodes(Command());
+  ExpectOnlyTheWholePayloadDecodes(Image());
+  ExpectOnlyTheWholePayloadDecodes(Status());
+}
+
+TEST(MessageChecks, AnotherTypeIsRefusedByItsHash) {
+  const std::vector<std::uint8_t> bytes = Encode(shot_request_t{});
+  table_state_t table;
+  EXPECT_NE(Decode(bytes.data(), bytes.size(), table), "");
+}
+
+// The counts lcm-gen's decoders would allocate from before reading a byte of what they count.
+TEST(MessageChecks, CountsThatLieAreRefusedBeforeAnythingIsAllocated) {
+  std::vector<std::uint8_t> table = Encode(Table());
+  for (std::uint32_t count : {0xffffffffu, 0x7fffffffu, 3u, 65u}) {
+    PutInt32(table, 16, count);
+    table_state_t out;
+    const std::string why = Decode(table.data(), table.size(), out);
+    EXPECT_NE(why.find("num_balls"), std::string::npos) << count << ": " << why;
+  }
+
+  std::vector<std::uint8_t> image = Encode(Image());
+  for (std::uint32_t size : {0xffffffffu, 0x7fffffffu, 9u}) {
+    PutInt32(image, 32, size);
+    image_t out;
+    EXPECT_NE(Decode(image.data(), image.size(), out).find("image size"), std::string::npos);
+  }
+
+  // cue_command_t: the path count (after 8 + 116 bytes) and the reason's length, which lcm-gen
+  // passes to std::string::assign minus one (a length of 0 would read 2^64 - 1 bytes).
+  std::vector<std::uint8_t> command = Encode(Command());
+  constexpr std::size_t kPathCount = 124;
+  PutInt32(command, kPathCount, 0x40000000u);
+  cue_command_t out;
+  EXPECT_NE(Decode(command.data(), command.size(), out).find("num_path_points"),
+            std::string::npos);
+  command = Encode(Command());
+  const std::size_t reason_length = command.size() - 5;  // an empty reason: length 1, then NUL
+  for (std::uint32_t length : {0u, 0xffffffffu, 2u, 1000u}) {
+    PutInt32(command, reason_length, length);
+    EXPECT_NE(Decode(command.data(), command.size(), out).find("reason"), std::string::npos)
+        << length;
+  }
+  PutInt32(command, reason_length, 1);
+  command.back() = 'x';  // not terminated
+  EXPECT_NE(Decode(command.data(), command.size(), out).find("not terminated"),
+            std::string::npos);
+}
+
+TEST(MessageChecks, TableStateMeaning) {
+  EXPECT_EQ(Check(Table()), "");
+  const auto refused = [](auto edit) {
+    table_state_t m = Table();
+    edit(m);
+    return Check(m);
+  };
+  EXPECT_NE(refused([](table_state_t& m) { m.utime = -1; }), "");
+  EXPECT_NE(refused([](table_state_t& m) { m.balls[1].ball_id = -2; }), "");
+  EXPECT_NE(refused([](table_state_t& m) { m.balls[1].ball_id = 0; }).find("twice"),
+            std::string::npos);
+  EXPECT_NE(refused([](table_state_t& m) { m.balls[0].utime = 6; }).find("newer"),
+            std::string::npos);
+  EXPECT_NE(refused([](table_state_t& m) { m.balls[0].position[1] = kNaN; }), "");
+  EXPECT_NE(refused([](table_state_t& m) { m.balls[0].velocity[0] = 1e300; }), "");
+  EXPECT_NE(refused([](table_state_t& m) { m.balls[0].spin[2] = -kNaN; }), "");
+  EXPECT_NE(refused([](table_state_t& m) { m.balls[0].spin[2] = 2e4; }), "");
+  EXPECT_NE(refused([](table_state_t& m) { m.balls[0].covariance[13] = kNaN; }), "");
+  EXPECT_NE(refused([](table_state_t& m) { m.balls[0].covariance[16] = -1.0; }), "");
+  EXPECT_NE(refused([](table_state_t& m) { m.balls[0].position[0] = 1e3; }), "");
+}
+
+TEST(MessageChecks, ShotRequestMeaning) {
+  const auto refused = [](auto edit) {
+    shot_request_t m{};
+    edit(m);
+    return Check(m);
+  };
+  EXPECT_EQ(refused([](shot_request_t&) {}), "");
+  EXPECT_EQ(refused([](shot_request_t& m) { m.slide_length = kNaN; }), "")
+      << "slide_length means nothing without SPIN_SLIDE";
+  EXPECT_NE(refused([](shot_request_t& m) {
+              m.spin = shot_request_t::SPIN_SLIDE;
+              m.slide_length = kNaN;
+            }),
+            "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.spin = 5; }).find("spin"), std::string::npos);
+  EXPECT_NE(refused([](shot_request_t& m) { m.spin = -1; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.request_id = -1; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.ball_id = -1; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.utime = -1; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.target[0] = kNaN; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.final_speed = -0.1; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.final_speed = 1e9; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.side_spin = 1e9; }), "");
+}
+
+TEST(MessageChecks, CueCommandMeaning) {
+  EXPECT_EQ(Check(Command()), "");
+  const auto refused = [](auto edit) {
+    cue_command_t m = Command();
+    edit(m);
+    return Check(m);
+  };
+  EXPECT_NE(refused([](cue_command_t& m) { m.status = 8; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.heading = kNaN; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.path[1][0] = kNaN; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.cue_speed = 0.0; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.reason = "but why"; }), "");
+  // A refusal carries no stroke.
+  EXPECT_NE(refused([](cue_command_t& m) { m.status = cue_command_t::STATUS_BUSY; }), "");
+  EXPECT_EQ(refused([](cue_command_t& m) {
+              m.status = cue_command_t::STATUS_BUSY;
+              m.cue_speed = 0.0;
+              m.reason = "queue full";
+            }),
+            "");
+}
+
+TEST(MessageChecks, ImageAndStatusMeaning) {
+  EXPECT_EQ(Check(Image()), "");
+  image_t image = Image();
+  image.width = 0;
+  EXPECT_NE(Check(image), "");
+  image = Image();
+  image.height = kMaxImageSide + 1;
+  EXPECT_NE(Check(image), "");
+  image = Image();
+  image.row_stride = -4;
+  EXPECT_NE(Check(image), "");
+
+  EXPECT_EQ(Check(Status()), "");
+  node_status_t status = Status();
+  status.dropped = -1;
+  EXPECT_NE(Check(status), "");
+  status = Status();
+  status.latency_p99_us = kNaN;
+  EXPECT_NE(Check(status), "");
+  status = Status();
+  status.node = "";
+  EXPECT_NE(Check(status), "");
+}
+
+}  // namespace
+}  // namespace billiard::messages
