@@ -26,14 +26,19 @@ void StopOnSignals() {
 
 bool StopRequested() { return stop_requested != 0; }
 
-int HandleUntilStopped(lcm::LCM& lcm, const std::string& name) {
+int HandleUntilStopped(lcm::LCM& lcm, const std::string& name,
+                       const std::function<bool()>& work) {
+  bool more_work = false;
   while (!stop_requested) {
     errno = 0;
-    if (lcm.handleTimeout(100) < 0 && errno != EINTR && !stop_requested) {
+    int handled;
+    while ((handled = lcm.handleTimeout(more_work ? 0 : 100)) > 0) more_work = true;
+    if (handled < 0 && errno != EINTR && !stop_requested) {
       std::cerr << name << ": LCM stopped working" << (errno ? ": " : "")
                 << (errno ? std::strerror(errno) : "") << std::endl;
       return 1;
     }
+    more_work = work && work();
   }
   std::cerr << name << ": stopped" << std::endl;
   return 0;

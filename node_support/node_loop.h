@@ -2,6 +2,7 @@
 // until then.
 #pragma once
 
+#include <functional>
 #include <lcm/lcm-cpp.hpp>
 #include <string>
 
@@ -16,7 +17,14 @@ bool StopRequested();
 
 // Handles messages until a signal asks to stop: 0 then, 1 (with the reason on stderr) if LCM
 // stops working. `name` prefixes the log lines.
-int HandleUntilStopped(lcm::LCM& lcm, const std::string& name);
+//
+// `work`, when given, is the node's own work, one item per call, returning whether more is
+// waiting. Every message that has arrived is handled before the next item, so that a node
+// working through a queue still sees (and can refuse) what arrives meanwhile, and LCM's own
+// queue never overflows unseen. It is also called at least every 100 ms when idle (a node's
+// status report).
+int HandleUntilStopped(lcm::LCM& lcm, const std::string& name,
+                       const std::function<bool()>& work = nullptr);
 
 // "the default URL" or "'URL'", for log lines.
 std::string DescribeUrl(const std::string& lcm_url);
