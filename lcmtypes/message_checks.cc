@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -51,6 +52,11 @@ class WireWalk {
                   ", which the payload cannot hold");
     }
     if (bytes_[pos_ + length - 1] != 0) return Fail(std::string(what) + " is not terminated");
+    // LCM strings are C strings: lcm-gen's encoders (strlen) and its C decoder end them at the
+    // first NUL, so a string with one inside would be forwarded or logged as another message.
+    if (std::memchr(bytes_ + pos_, 0, length - 1) != nullptr) {
+      return Fail(std::string(what) + " has a NUL before its end");
+    }
     pos_ += length;
   }
 

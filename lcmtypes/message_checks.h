@@ -5,8 +5,8 @@
 // Decoding trusts nothing. lcm-gen's decoders size a vector or a string from a count in the
 // payload before they check that the payload holds it, so a corrupt count allocates gigabytes,
 // throws, or (a string length of 0) reads before the buffer. Decode walks the wire layout first
-// (every count against the bytes that remain, every string terminated), then decodes, and
-// refuses trailing bytes: they mean the sender's type is not ours.
+// (every count against the bytes that remain, every string terminated and without a NUL
+// inside), then decodes, and refuses trailing bytes: they mean the sender's type is not ours.
 //
 // Check is about meaning: finite numbers, known enum values, ids and counts in range, times that
 // are not negative. Where physical ranges are tested they are generous (a robot's table, not a

@@ -141,6 +141,26 @@ TEST(MessageChecks, CountsThatLieAreRefusedBeforeAnythingIsAllocated) {
             std::string::npos);
 }
 
+// Found by fuzz/fuzz_node_status and fuzz_cue_command: lcm-gen's decoder keeps the bytes after a
+// NUL inside a string and its encoder (strlen) drops them, so a node that forwarded or logged
+// such a message sent another one, shorter than the size it announced.
+TEST(MessageChecks, StringsWithANulInsideAreRefused) {
+  std::vector<std::uint8_t> status = Encode(Status());
+  constexpr std::size_t kNodeBytes = 20;  // after the hash, utime and the node's length
+  status[kNodeBytes + 3] = 0;             // "pla\0ner_node"
+  node_status_t decoded_status;
+  EXPECT_NE(Decode(status.data(), status.size(), decoded_status).find("node has a NUL"),
+            std::string::npos);
+
+  cue_command_t refused = Command();
+  refused.reason = "queue full";
+  std::vector<std::uint8_t> command = Encode(refused);
+  command[command.size() - 6] = 0;  // "queue\0full"
+  cue_command_t decoded_command;
+  EXPECT_NE(Decode(command.data(), command.size(), decoded_command).find("reason has a NUL"),
+            std::string::npos);
+}
+
 TEST(MessageChecks, TableStateMeaning) {
   EXPECT_EQ(Check(Table()), "");
   const auto refused = [](auto edit) {
