@@ -10,6 +10,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
   python3 iproute2 procps
+  # fuzz/: clang with libFuzzer and the sanitizer runtimes; llvm-14 for llvm-symbolizer
+  clang libclang-rt-14-dev llvm-14
 )
 # javac for the Java message types (lcm-gen --java): the JDK only where none is installed.
 command -v javac >/dev/null 2>&1 || packages+=(default-jdk-headless)
