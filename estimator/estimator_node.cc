@@ -1,5 +1,7 @@
 #include "estimator_node.h"
 
+#include "message_checks.h"
+
 #include <exception>
 #include <iostream>
 #include <utility>
@@ -30,12 +32,14 @@ EstimatorNode::EstimatorNode(lcm::LCM& lcm, const CameraModel& camera,
                              const ModelParameters& params, EstimatorOptions options,
                              DecodeLimits limits, Log log)
     : lcm_(lcm),
+      params_(params),
+      options_(options),
       estimator_(camera, params, options),
-      ball_radius_(params.ball.radius),
       limits_(limits),
       log_(log ? std::move(log) : Log([](const std::string& line) {
         std::cerr << "estimator_node: " << line << std::endl;
-      })) {
+      })),
+      health_("estimator_node", log_) {
   subscription_ = lcm_.subscribe(kCameraImageChannel, &EstimatorNode::OnImage, this);
 }
 
@@ -43,33 +47,50 @@ EstimatorNode::~EstimatorNode() {
   if (subscription_) lcm_.unsubscribe(subscription_);
 }
 
-void EstimatorNode::Drop(const std::string& why) {
-  ++dropped_;
-  try {
-    log_(std::string(kCameraImageChannel) + ": dropped a frame: " + why);
-  } catch (...) {
-  }
+bool EstimatorNode::Work() {
+  health_.PublishIfDue(lcm_);
+  return false;
 }
 
 void EstimatorNode::OnImage(const lcm::ReceiveBuffer* rbuf, const std::string&) {
+  const auto arrived = nodes::NodeHealth::Clock::now();
   try {
+    health_.Received();
     image_t message;
-    if (message.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) !=
-        static_cast<int>(rbuf->data_size)) {
-      return Drop(std::to_string(rbuf->data_size) + " bytes that do not decode as image_t");
+    if (std::string why = messages::DecodeChecked(rbuf->data, rbuf->data_size, message);
+        !why.empty()) {
+      return Drop(why);
+    }
+    if (message.utime == last_utime_) {
+      health_.Count("duplicate");
+      return;
+    }
+    if (message.utime < last_utime_) {
+      const double back = 1e-6 * static_cast<double>(last_utime_ - message.utime);
+      if (back <= kClockReset) {
+        return Drop("a frame at utime " + std::to_string(message.utime) +
+                    " after one at " + std::to_string(last_utime_) + " (late or reordered)");
+      }
+      health_.Count("clock_reset");
+      log_(std::string(kCameraImageChannel) + ": time went back " + std::to_string(back) +
+           " s: a new clock, tracking starts again");
+      estimator_ = BallEstimator(estimator_.camera(), params_, options_);
     }
     const DecodedImage image = DecodeImage(message, limits_);
     if (!image.ok) return Drop(image.error);
     if (!estimator_.Process(image.image, 1e-6 * static_cast<double>(message.utime))) {
       const CameraModel& c = estimator_.camera();
       return Drop("a " + std::to_string(image.image.cols) + "x" + std::to_string(image.image.rows) +
-                  " frame at utime " + std::to_string(message.utime) + " (the camera is " +
-                  std::to_string(c.width) + "x" + std::to_string(c.height) +
-                  ", and time may not go back)");
+                  " frame, but the camera is " + std::to_string(c.width) + "x" +
+                  std::to_string(c.height));
     }
+    last_utime_ = message.utime;
     ++frames_;
-    const table_state_t state = TableStateMessage(estimator_.Balls(), message.utime, ball_radius_);
-    if (lcm_.publish(kTableStateChannel, &state) != 0) Drop("publishing TABLE_STATE failed");
+    const table_state_t state =
+        TableStateMessage(estimator_.Balls(), message.utime, params_.ball.radius);
+    if (lcm_.publish(kTableStateChannel, &state) != 0) return Drop("publishing TABLE_STATE failed");
+    health_.Published();
+    health_.Latency(nodes::NodeHealth::Clock::now() - arrived);
   } catch (const std::exception& e) {
     Drop(e.what());
   } catch (...) {

@@ -1,10 +1,15 @@
 // The estimator node: every CAMERA_IMAGE frame through the estimator (ball_estimator.h), and the
 // tracked balls out as TABLE_STATE.
 //
-//   CAMERA_IMAGE  image_t        decoded and checked (image_codec.h); a frame that does not
-//                                decode, is empty, oversized, of another size than the camera's,
-//                                or older than the last one is logged and dropped
+//   CAMERA_IMAGE  image_t        decoded and checked (message_checks.h, image_codec.h); a frame
+//                                that does not decode, is empty, oversized, of another size than
+//                                the camera's, or older than the last one (late or reordered) is
+//                                logged and dropped; the same frame again is counted and ignored
 //   TABLE_STATE   table_state_t  the confirmed balls, utime of the frame, ball_id of the track
+//   NODE_STATUS   node_status_t  once a second (node_health.h), from Work()
+//
+// A frame older than the last by more than clock_reset comes from a camera (or simulator) that
+// restarted: the tracks of the old clock are dropped and tracking starts again.
 //
 // The state depends only on the frames received, never on the clock, so a logged run replays to
 // the same TABLE_STATE messages. A node never dies on a message: handlers catch what they throw.
@@ -17,6 +22,7 @@
 #include "ball_estimator.h"
 #include "billiard/table_state_t.hpp"
 #include "image_codec.h"
+#include "node_health.h"
 
 namespace billiard::estimator {
 
@@ -35,24 +41,35 @@ class EstimatorNode {
   // (stderr by default).
   EstimatorNode(lcm::LCM& lcm, const CameraModel& camera, const ModelParameters& params,
                 EstimatorOptions options = {}, DecodeLimits limits = {}, Log log = nullptr);
+
+  // A frame older than the last by more than this [s] starts a new clock.
+  static constexpr double kClockReset = 5.0;
   ~EstimatorNode();
   EstimatorNode(const EstimatorNode&) = delete;
   EstimatorNode& operator=(const EstimatorNode&) = delete;
 
+  // Publishes NODE_STATUS when due; the frames themselves are processed as they arrive. Returns
+  // false: no work waits (node_loop.h).
+  bool Work();
+
   long frames() const { return frames_; }
-  long dropped() const { return dropped_; }
+  // The node's counters; TakeStatus() on it starts a new latency period.
+  nodes::NodeHealth& health() { return health_; }
 
  private:
   void OnImage(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
-  void Drop(const std::string& why);
+  void Drop(const std::string& why) { health_.Dropped(std::string(kCameraImageChannel) + ": " + why); }
 
   lcm::LCM& lcm_;
+  const ModelParameters params_;
+  const EstimatorOptions options_;
   BallEstimator estimator_;
-  double ball_radius_;
   DecodeLimits limits_;
   Log log_;
+  nodes::NodeHealth health_;
   lcm::Subscription* subscription_ = nullptr;
-  long frames_ = 0, dropped_ = 0;
+  long frames_ = 0;
+  std::int64_t last_utime_ = -1;
 };
 
 }  // namespace billiard::estimator

@@ -58,7 +58,7 @@ TEST_F(EstimatorNodeTest, FramesInEveryEncodingBecomeTableStates) {
                                      ImageEncoding::kMjpeg};
   for (int f = 0; f < 12; ++f) Send(Frame(1'000'000 + 8'333 * f, encodings[f % 3]));
   ASSERT_EQ(states_.size(), 12u);
-  EXPECT_EQ(node_.dropped(), 0) << (log_.empty() ? "" : log_[0]);
+  EXPECT_EQ(node_.health().dropped(), 0) << (log_.empty() ? "" : log_[0]);
   const table_state_t& last = states_.back();
   EXPECT_EQ(last.utime, 1'000'000 + 8'333 * 11);
   ASSERT_EQ(last.num_balls, 3);
@@ -90,12 +90,33 @@ TEST_F(EstimatorNodeTest, BadFramesAreDroppedWithAReasonAndTheNodeGoesOn) {
   Send(EncodeImage(cv::Mat(100, 100, CV_8UC3, cv::Scalar(0, 0, 0)), 2'300'000,
                    ImageEncoding::kRgb));               // not the camera's size
   Send(Frame(1'000'000, ImageEncoding::kRgb));          // older than the last frame
-  EXPECT_EQ(node_.dropped(), 5);
+  EXPECT_EQ(node_.health().dropped(), 5);
   ASSERT_EQ(log_.size(), 5u);
-  for (const std::string& line : log_) EXPECT_NE(line.find("dropped a frame: "), std::string::npos);
+  for (const std::string& line : log_) {
+    EXPECT_EQ(line.rfind("dropped: CAMERA_IMAGE: ", 0), 0u) << line;
+  }
+  EXPECT_NE(log_.back().find("late or reordered"), std::string::npos) << log_.back();
   Send(Frame(2'400'000, ImageEncoding::kMjpeg));
+  Send(Frame(2'400'000, ImageEncoding::kMjpeg));  // the same frame again: not a second state
   EXPECT_EQ(node_.frames(), 2);
   EXPECT_EQ(states_.size(), 2u);
+  EXPECT_EQ(node_.health().counter("duplicate"), 1);
+  EXPECT_EQ(node_.health().dropped(), 5);
+}
+
+TEST_F(EstimatorNodeTest, ACameraThatRestartsItsClockIsTrackedAfresh) {
+  for (int f = 0; f < 6; ++f) Send(Frame(20'000'000 + 8'333 * f, ImageEncoding::kRgb));
+  ASSERT_EQ(states_.size(), 6u);
+  ASSERT_EQ(states_.back().num_balls, 3);
+  Send(Frame(8'333, ImageEncoding::kRgb));
+  EXPECT_EQ(node_.health().counter("clock_reset"), 1);
+  EXPECT_EQ(node_.health().dropped(), 0);
+  ASSERT_EQ(states_.size(), 7u);
+  EXPECT_EQ(states_.back().utime, 8'333);
+  // The new session confirms its tracks anew and goes on as before.
+  for (int f = 2; f < 8; ++f) Send(Frame(8'333 * f, ImageEncoding::kRgb));
+  EXPECT_EQ(states_.back().num_balls, 3);
+  EXPECT_EQ(node_.health().dropped(), 0);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "planner_node.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <iostream>
@@ -7,6 +8,7 @@
 #include <utility>
 
 #include "billiard/table_state_t.hpp"
+#include "message_checks.h"
 
 namespace billiard::planner {
 
@@ -21,26 +23,6 @@ int8_t ToMessageStatus(PlanStatus status) {
     case PlanStatus::kNotConverged: return cue_command_t::STATUS_NOT_CONVERGED;
   }
   return cue_command_t::STATUS_INVALID;
-}
-
-// Decodes the whole payload: trailing bytes mean the sender's type is not ours.
-template <class Message>
-bool Decode(const lcm::ReceiveBuffer& rbuf, Message& message) {
-  return message.decode(rbuf.data, 0, static_cast<int>(rbuf.data_size)) ==
-         static_cast<int>(rbuf.data_size);
-}
-
-// table_state_t's decoder sizes its vector from the ball count in the payload before it reads a
-// ball, so a corrupt count would allocate gigabytes (or throw) first: the count is checked
-// against the payload size before decoding. Layout: hash (8), utime (8), num_balls (4, big-endian).
-bool BallCountFitsPayload(const lcm::ReceiveBuffer& rbuf) {
-  constexpr int64_t kHeader = 8 + 8 + 4;
-  if (rbuf.data_size < kHeader) return true;  // too short: the decoder refuses it
-  const auto* b = static_cast<const uint8_t*>(rbuf.data) + 16;
-  const auto count = static_cast<int32_t>(uint32_t{b[0]} << 24 | uint32_t{b[1]} << 16 |
-                                          uint32_t{b[2]} << 8 | uint32_t{b[3]});
-  const int64_t ball_size = ball_state_t{}._getEncodedSizeNoHash();
-  return count >= 0 && kHeader + count * ball_size <= int64_t{rbuf.data_size};
 }
 
 std::string Describe(const cue_command_t& c) {
@@ -66,6 +48,8 @@ std::string CueCommandStatusName(int8_t status) {
     case cue_command_t::STATUS_UNREACHABLE: return "unreachable";
     case cue_command_t::STATUS_NOT_CONVERGED: return "not_converged";
     case cue_command_t::STATUS_NO_BALL_STATE: return "no_ball_state";
+    case cue_command_t::STATUS_STALE_STATE: return "stale_state";
+    case cue_command_t::STATUS_BUSY: return "busy";
   }
   return "status " + std::to_string(status);
 }
@@ -77,10 +61,14 @@ PlannerNode::PlannerNode(lcm::LCM& lcm, ModelParameters params, PlannerNodeOptio
       options_(std::move(options)),
       log_(log ? std::move(log) : Log([](const std::string& line) {
         std::cerr << "planner_node: " << line << std::endl;
-      })) {
+      })),
+      health_("planner_node", log_) {
   table_state_subscription_ = lcm_.subscribe(kTableStateChannel, &PlannerNode::OnTableState, this);
   shot_request_subscription_ =
       lcm_.subscribe(kShotRequestChannel, &PlannerNode::OnShotRequest, this);
+  // A burst arriving while a plan is computed waits in LCM's queue until the loop drains it into
+  // ours (30 by default, beyond which LCM drops messages unseen); a request is about 100 bytes.
+  shot_request_subscription_->setQueueCapacity(10000);
 }
 
 PlannerNode::~PlannerNode() {
@@ -99,22 +87,17 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
     return c;
   };
 
+  if (std::string why = messages::Check(q); !why.empty()) {
+    return refuse(cue_command_t::STATUS_INVALID, why);
+  }
   ShotRequest request;
   switch (q.spin) {
     case shot_request_t::SPIN_NATURAL: request.style = SpinStyle::kNatural; break;
     case shot_request_t::SPIN_STUN: request.style = SpinStyle::kStun; break;
     case shot_request_t::SPIN_FOLLOW: request.style = SpinStyle::kFollow; break;
     case shot_request_t::SPIN_DRAW: request.style = SpinStyle::kDraw; break;
-    case shot_request_t::SPIN_SLIDE: request.slide_length = q.slide_length; break;
-    default:
-      return refuse(cue_command_t::STATUS_INVALID,
-                    "unknown spin value " + std::to_string(q.spin) + " (0-4, see shot_request_t)");
+    default: request.slide_length = q.slide_length; break;  // SPIN_SLIDE, as Check made sure
   }
-  // slide_length means something only with SPIN_SLIDE, so only then must it be a number.
-  const bool finite = std::isfinite(q.target[0]) && std::isfinite(q.target[1]) &&
-                      std::isfinite(q.final_speed) && std::isfinite(q.side_spin) &&
-                      (!request.slide_length || std::isfinite(*request.slide_length));
-  if (!finite) return refuse(cue_command_t::STATUS_INVALID, "request has a non-finite number");
 
   const auto ball = balls_.find(q.ball_id);
   if (ball == balls_.end()) {
@@ -124,12 +107,13 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   const ball_state_t& s = ball->second;
   c.start[0] = s.position[0];
   c.start[1] = s.position[1];
-  for (double x : {s.position[0], s.position[1], s.velocity[0], s.velocity[1]}) {
-    if (!std::isfinite(x)) {
-      return refuse(cue_command_t::STATUS_INVALID,
-                    "the latest state of ball " + std::to_string(q.ball_id) +
-                        " has a non-finite position or velocity");
-    }
+  const double age = 1e-6 * static_cast<double>(q.utime - s.utime);
+  if (std::abs(age) > options_.max_state_age) {
+    std::ostringstream reason;
+    reason << "the latest state of ball " << q.ball_id << " is " << std::abs(age) << " s "
+           << (age > 0 ? "older" : "newer") << " than the request (at most "
+           << options_.max_state_age << " s)";
+    return refuse(cue_command_t::STATUS_STALE_STATE, reason.str());
   }
   const double speed = std::hypot(s.velocity[0], s.velocity[1]);
   if (speed > options_.max_ball_speed) {
@@ -173,45 +157,148 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   } else {
     c.reason = plan.reason.empty() ? PlanStatusName(plan.status) : plan.reason;
   }
+  // Whatever goes out must pass the receiver's checks, or the answer is lost: a refusal keeps its
+  // status without the measurements, and an ok that fails them is no ok.
+  if (std::string why = messages::Check(c); !why.empty()) {
+    const bool was_ok = c.status == cue_command_t::STATUS_OK;
+    cue_command_t refused{};
+    refused.utime = c.utime;
+    refused.request_id = c.request_id;
+    refused.ball_id = c.ball_id;
+    std::copy(c.start, c.start + 2, refused.start);
+    refused.status = was_ok ? cue_command_t::STATUS_NOT_CONVERGED : c.status;
+    refused.reason = was_ok ? "the plan is not a valid command: " + why : c.reason;
+    return refused;
+  }
   return c;
+}
+
+std::int64_t PlannerNode::StateUtime(std::int32_t ball_id) const {
+  const auto ball = balls_.find(ball_id);
+  return ball == balls_.end() ? -1 : ball->second.utime;
 }
 
 void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
   try {
+    health_.Received();
     table_state_t state;
-    if (!BallCountFitsPayload(*rbuf) || !Decode(*rbuf, state)) {
-      log_(channel + ": dropped " + std::to_string(rbuf->data_size) +
-           " bytes that do not decode as table_state_t");
+    if (std::string why = messages::DecodeChecked(rbuf->data, rbuf->data_size, state);
+        !why.empty()) {
+      return health_.Dropped(channel + ": " + why);
+    }
+    if (state.utime == latest_state_utime_) {
+      health_.Count("duplicate");
       return;
     }
+    if (state.utime < latest_state_utime_) {
+      const double back = 1e-6 * static_cast<double>(latest_state_utime_ - state.utime);
+      if (back <= options_.clock_reset) {
+        return health_.Dropped(channel + ": utime " + std::to_string(state.utime) +
+                               " is older than the latest, " +
+                               std::to_string(latest_state_utime_) + " (late or reordered)");
+      }
+      // The publisher restarted: the old clock's balls and answers mean nothing now.
+      health_.Count("clock_reset");
+      log_(channel + ": time went back " + std::to_string(back) +
+           " s: a new clock, the balls known so far are forgotten");
+      balls_.clear();
+      answered_.clear();
+    }
+    latest_state_utime_ = state.utime;
     for (const ball_state_t& ball : state.balls) balls_.insert_or_assign(ball.ball_id, ball);
+    while (balls_.size() > kMaxRememberedBalls) {
+      balls_.erase(std::min_element(balls_.begin(), balls_.end(), [](const auto& a, const auto& b) {
+        return a.second.utime < b.second.utime;
+      }));
+      health_.Count("forgotten_ball");
+    }
   } catch (const std::exception& e) {
-    try { log_(channel + ": dropped a message: " + e.what()); } catch (...) {}
+    health_.Dropped(channel + ": " + e.what());
   } catch (...) {
-    try { log_(channel + ": dropped a message: unknown exception"); } catch (...) {}
+    health_.Dropped(channel + ": unknown exception");
   }
 }
 
 void PlannerNode::OnShotRequest(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+  const auto arrived = nodes::NodeHealth::Clock::now();
   try {
+    health_.Received();
     shot_request_t request;
-    if (!Decode(*rbuf, request)) {
-      log_(channel + ": dropped " + std::to_string(rbuf->data_size) +
-           " bytes that do not decode as shot_request_t");
-      return;
+    // A request that decodes but fails Check is answered (invalid, with the reason): its sender
+    // can be told. One that does not decode has no request_id to answer.
+    if (std::string why = messages::Decode(rbuf->data, rbuf->data_size, request); !why.empty()) {
+      return health_.Dropped(channel + ": " + why);
     }
-    const cue_command_t command = Answer(request);
-    if (lcm_.publish(kCueCommandChannel, &command) != 0) {
-      log_(std::string(kCueCommandChannel) + ": publishing the answer to request " +
-           std::to_string(command.request_id) + " failed");
-      return;
+    const auto* begin = static_cast<const std::uint8_t*>(rbuf->data);
+    Bytes bytes(begin, begin + rbuf->data_size);
+    for (const Waiting& w : waiting_) {
+      if (w.bytes == bytes) {
+        health_.Count("duplicate");
+        return;
+      }
     }
-    log_(Describe(command));
+    for (const Answered& a : answered_) {
+      if (a.request == bytes && a.state_utime == StateUtime(request.ball_id)) {
+        health_.Count("duplicate");
+        return Publish(a.command, arrived);
+      }
+    }
+    if (waiting_.size() >= static_cast<std::size_t>(options_.queue_capacity)) {
+      cue_command_t busy{};
+      busy.utime = request.utime;
+      busy.request_id = request.request_id;
+      busy.ball_id = request.ball_id;
+      busy.status = cue_command_t::STATUS_BUSY;
+      busy.reason = "the planner's queue is full (" + std::to_string(waiting_.size()) +
+                    " requests waiting)";
+      if (!refusing_busy_) log_("queue full: answering busy until it has room");
+      refusing_busy_ = true;
+      return Publish(busy, arrived);
+    }
+    waiting_.push_back({request, std::move(bytes), arrived});
+    health_.SetQueueDepth(static_cast<int>(waiting_.size()));
   } catch (const std::exception& e) {
-    try { log_(channel + ": dropped a message: " + e.what()); } catch (...) {}
+    health_.Dropped(channel + ": " + e.what());
   } catch (...) {
-    try { log_(channel + ": dropped a message: unknown exception"); } catch (...) {}
+    health_.Dropped(channel + ": unknown exception");
   }
+}
+
+void PlannerNode::Publish(const cue_command_t& command,
+                          nodes::NodeHealth::Clock::time_point arrived) {
+  if (lcm_.publish(kCueCommandChannel, &command) != 0) {
+    return health_.Dropped(std::string(kCueCommandChannel) + ": publishing the answer to request " +
+                           std::to_string(command.request_id) + " failed");
+  }
+  health_.Published();
+  health_.Count(CueCommandStatusName(command.status));
+  health_.Latency(nodes::NodeHealth::Clock::now() - arrived);
+}
+
+bool PlannerNode::Work() {
+  try {
+    if (!waiting_.empty()) {
+      Waiting w = std::move(waiting_.front());
+      waiting_.pop_front();
+      health_.SetQueueDepth(static_cast<int>(waiting_.size()));
+      const cue_command_t command = Answer(w.request);
+      Publish(command, w.arrived);
+      log_(Describe(command));
+      answered_.push_back({std::move(w.bytes), StateUtime(w.request.ball_id), command});
+      if (answered_.size() > kRememberedAnswers) answered_.pop_front();
+      if (refusing_busy_ && waiting_.empty()) {
+        refusing_busy_ = false;
+        log_("queue empty again: " + std::to_string(health_.counter("busy")) +
+             " requests answered busy so far");
+      }
+    }
+    health_.PublishIfDue(lcm_);
+  } catch (const std::exception& e) {
+    health_.Dropped(std::string("work: ") + e.what());
+  } catch (...) {
+    health_.Dropped("work: unknown exception");
+  }
+  return !waiting_.empty();
 }
 
 }  // namespace billiard::planner

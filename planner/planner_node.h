@@ -12,26 +12,42 @@
 //
 // Refusals (status != STATUS_OK, the reason in words, the stroke fields zero; the plan fields say
 // what the planner measured, zero when it did not run):
-//   STATUS_INVALID        an unknown spin value, a non-finite number in the request or in the
-//                         ball's state, a ball moving faster than max_ball_speed
+//   STATUS_INVALID        a request that fails messages::Check (an unknown spin value, a
+//                         non-finite number, ...), a ball moving faster than max_ball_speed
 //   STATUS_NO_BALL_STATE  no table state received has that ball_id
+//   STATUS_STALE_STATE    the ball's latest state and the request are further apart in time than
+//                         max_state_age: the estimator may have stopped and the ball moved since,
+//                         so the planner does not act on it
+//   STATUS_BUSY           the queue of requests waiting to be planned was full
 //   STATUS_NOT_CONVERGED  also when the planner throws (an integrator giving up): the request
 //                         gets an answer all the same
 //   the others            PlanShot's status (shot_planner.h)
 //
+// Requests wait in a bounded queue and are planned one at a time by Work(), so a burst of them
+// costs bounded memory and each gets an answer: planned, or refused busy at once. A request
+// identical to one answered before, for a ball whose state has not changed since, gets the same
+// answer again without planning (a sender retrying after a lost answer).
+//
+// Table states: one that fails messages::Check is dropped, and so is one older than the latest
+// (a late or reordered message), unless it is older by more than clock_reset: then the publisher
+// has restarted with a new clock, and what the node knew of the old one is forgotten.
+//
 // A node never dies on a message: a payload that does not decode is logged and dropped, and every
-// handler catches what it throws. One log line per event: each answer, each dropped message.
+// handler catches what it throws. Counts and latencies go out on NODE_STATUS (node_health.h).
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <lcm/lcm-cpp.hpp>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "billiard/ball_state_t.hpp"
 #include "billiard/cue_command_t.hpp"
 #include "billiard/shot_request_t.hpp"
+#include "node_health.h"
 #include "parameters.h"
 #include "shot_planner.h"
 
@@ -47,10 +63,21 @@ struct PlannerNodeOptions {
   // the wrong place, so the request is refused. The default is above an estimator's noise on a
   // ball at rest and below any ball that will roll on for more than a few millimetres.
   double max_ball_speed = 0.05;
+  // The most a ball's state and a request may be apart in time [s] (their utimes).
+  double max_state_age = 1.0;
+  // Requests waiting to be planned; more are answered STATUS_BUSY.
+  int queue_capacity = 32;
+  // A table state older than the latest by more than this [s] starts a new clock.
+  double clock_reset = 5.0;
 };
 
-// "ok", "invalid", "off_table", "unreachable", "not_converged", "no_ball_state"; "status N"
-// for a value the message does not define.
+// At most this many balls are remembered; beyond it the longest unseen is forgotten.
+inline constexpr std::size_t kMaxRememberedBalls = 256;
+// Answers remembered for requests sent again.
+inline constexpr std::size_t kRememberedAnswers = 64;
+
+// "ok", "invalid", "off_table", "unreachable", "not_converged", "no_ball_state", "stale_state",
+// "busy"; "status N" for a value the message does not define.
 std::string CueCommandStatusName(int8_t status);
 
 class PlannerNode {
@@ -58,7 +85,7 @@ class PlannerNode {
   using Log = std::function<void(const std::string& line)>;
 
   // Subscribes on `lcm`, which must outlive the node; `log` gets one line per event (stderr by
-  // default).
+  // default). Nothing is planned until Work() is called.
   PlannerNode(lcm::LCM& lcm, ModelParameters params, PlannerNodeOptions options = {},
               Log log = nullptr);
   ~PlannerNode();  // unsubscribes
@@ -68,7 +95,27 @@ class PlannerNode {
   // The answer to `request` from the states received so far: what the node publishes.
   cue_command_t Answer(const shot_request_t& request) const;
 
+  // Plans the oldest waiting request and publishes its answer, and NODE_STATUS when due. Returns
+  // whether more requests wait. The node's main loop calls it between messages
+  // (nodes::HandleUntilStopped).
+  bool Work();
+
+  // The node's counters; TakeStatus() on it starts a new latency period.
+  nodes::NodeHealth& health() { return health_; }
+
  private:
+  using Bytes = std::vector<std::uint8_t>;
+  struct Waiting {
+    shot_request_t request;
+    Bytes bytes;
+    nodes::NodeHealth::Clock::time_point arrived;
+  };
+  struct Answered {
+    Bytes request;
+    std::int64_t state_utime;  // of the ball's state the answer came from, -1 if none
+    cue_command_t command;
+  };
+
   // Raw handlers: the node decodes the payload itself so that a failure is logged its way.
   void OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   void OnShotRequest(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
@@ -76,8 +123,16 @@ class PlannerNode {
   lcm::LCM& lcm_;
   const ModelParameters params_;
   const PlannerNodeOptions options_;
+  void Publish(const cue_command_t& command, nodes::NodeHealth::Clock::time_point arrived);
+  std::int64_t StateUtime(std::int32_t ball_id) const;
+
   const Log log_;
+  nodes::NodeHealth health_;
   std::unordered_map<int32_t, ball_state_t> balls_;
+  std::int64_t latest_state_utime_ = -1;
+  std::deque<Waiting> waiting_;
+  std::deque<Answered> answered_;
+  bool refusing_busy_ = false;
   lcm::Subscription* table_state_subscription_ = nullptr;
   lcm::Subscription* shot_request_subscription_ = nullptr;
 };

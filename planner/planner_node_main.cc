@@ -35,6 +35,12 @@ int main(int argc, char** argv) {
   app.add_option("--max-ball-speed", options.max_ball_speed,
                  "Refuse to plan for a ball faster than this [m/s]")
       ->capture_default_str();
+  app.add_option("--max-state-age", options.max_state_age,
+                 "Refuse to plan from a ball state further than this from the request in time [s]")
+      ->capture_default_str();
+  app.add_option("--queue-capacity", options.queue_capacity,
+                 "Requests waiting to be planned; more are answered busy")
+      ->capture_default_str();
   app.add_flag("--no-refine", no_refine, "Plan with the closed-form inverse alone");
   try {
     app.parse(argc, argv);
@@ -44,6 +50,10 @@ int main(int argc, char** argv) {
   if (!(std::isfinite(options.max_ball_speed) && options.max_ball_speed >= 0.0)) {
     return Fail("--max-ball-speed must be a finite speed >= 0", 2);
   }
+  if (!(std::isfinite(options.max_state_age) && options.max_state_age > 0.0)) {
+    return Fail("--max-state-age must be a finite time > 0", 2);
+  }
+  if (options.queue_capacity < 1) return Fail("--queue-capacity must be at least 1", 2);
   options.planner.refine = !no_refine;
   billiard::ModelParameters params;
   try {
@@ -60,5 +70,5 @@ int main(int argc, char** argv) {
   billiard::planner::PlannerNode node(lcm, params, options);
   std::cerr << "planner_node: " << params.name << " parameters, LCM " << url_name
             << ", answering " << billiard::planner::kShotRequestChannel << std::endl;
-  return billiard::nodes::HandleUntilStopped(lcm, "planner_node");
+  return billiard::nodes::HandleUntilStopped(lcm, "planner_node", [&node] { return node.Work(); });
 }

@@ -11,6 +11,7 @@
 #include "billiard/shot_request_t.hpp"
 #include "estimator_node.h"
 #include "image_codec.h"
+#include "message_checks.h"
 #include "node_loop.h"
 #include "planner_node.h"
 #include "simulator.h"
@@ -37,38 +38,75 @@ TableSimNode::TableSimNode(lcm::LCM& lcm, const ModelParameters& params, const C
       log_(log ? std::move(log) : Log([](const std::string& line) {
         std::cerr << "table_sim_node: " << line << std::endl;
       })),
+      health_("table_sim_node", log_),
       rng_(options.seed),
+      fault_rng_(options.faults.seed),
       ball_(options.start) {
   subscriptions_.push_back(lcm_.subscribe(kTableStateChannel, &TableSimNode::OnTableState, this));
   subscriptions_.push_back(lcm_.subscribe(kCueCommandChannel, &TableSimNode::OnCueCommand, this));
+  // A busy planner answers a burst all at once; no answer may be lost in LCM's queue.
+  subscriptions_.back()->setQueueCapacity(10000);
 }
 
 TableSimNode::~TableSimNode() {
   for (lcm::Subscription* s : subscriptions_) lcm_.unsubscribe(s);
 }
 
-void TableSimNode::OnTableState(const lcm::ReceiveBuffer*, const std::string&,
-                                const table_state_t* m) {
-  states_.push_back(*m);
+void TableSimNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+  health_.Received();
+  table_state_t state;
+  if (std::string why = messages::DecodeChecked(rbuf->data, rbuf->data_size, state);
+      !why.empty()) {
+    return health_.Dropped(channel + ": " + why);
+  }
+  state_ = std::move(state);
 }
 
-void TableSimNode::OnCueCommand(const lcm::ReceiveBuffer*, const std::string&,
-                                const cue_command_t* m) {
-  commands_.push_back(*m);
+void TableSimNode::OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+  health_.Received();
+  cue_command_t command;
+  if (std::string why = messages::DecodeChecked(rbuf->data, rbuf->data_size, command);
+      !why.empty()) {
+    return health_.Dropped(channel + ": " + why);
+  }
+  command_ = std::move(command);
+}
+
+template <class Message>
+void TableSimNode::Publish(const char* channel, const Message& message) {
+  if (lcm_.publish(channel, &message) == 0) {
+    health_.Published();
+  } else {
+    health_.Dropped(std::string(channel) + ": publishing failed");
+  }
 }
 
 std::int64_t TableSimNode::Utime(double t) const { return std::llround(t * 1e6); }
 
-void TableSimNode::WaitFor(const std::function<bool()>& done, const std::string& what) {
-  const auto deadline = std::chrono::steady_clock::now() +
-                        std::chrono::duration<double>(options_.reply_timeout);
+void TableSimNode::WaitFor(const std::function<bool()>& done, const std::string& what,
+                           const std::function<void()>& resend) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](double s) {
+    return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+  };
+  const Clock::time_point deadline = Clock::now() + seconds(options_.reply_timeout);
+  Clock::time_point next_resend = Clock::now() + seconds(options_.retry_interval);
+  bool more_work = false;
   while (!done()) {
     if (nodes::StopRequested()) throw std::runtime_error("stopped by a signal");
-    if (std::chrono::steady_clock::now() > deadline) {
+    const Clock::time_point now = Clock::now();
+    if (now > deadline) {
       throw std::runtime_error("no " + what + " within " + std::to_string(options_.reply_timeout) +
                                " s");
     }
-    lcm_.handleTimeout(20);
+    if (resend && now > next_resend) {
+      health_.Count("resent");
+      resend();
+      next_resend = now + seconds(options_.retry_interval);
+    }
+    lcm_.handleTimeout(more_work ? 0 : 20);
+    more_work = alongside_ && alongside_();
+    health_.PublishIfDue(lcm_);
   }
 }
 
@@ -85,7 +123,7 @@ void TableSimNode::Frame(const std::function<BallState(double)>& state, double t
   std::copy(x.data() + kWx, x.data() + kWx + 3, b.spin);
   truth.balls.push_back(b);
   truth.num_balls = 1;
-  lcm_.publish(kTableTruthChannel, &truth);
+  Publish(kTableTruthChannel, truth);
 
   const RenderBall ball{kCueBall, PoolBallColour(kCueBall),
                         [&state](double time) { return Eigen::Vector2d(state(time).head<2>()); }};
@@ -95,13 +133,93 @@ void TableSimNode::Frame(const std::function<BallState(double)>& state, double t
     static const auto wall_start = std::chrono::steady_clock::now();
     std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t));
   }
-  lcm_.publish(kCameraImageChannel, &image);
+
+  // One fault at most per frame, drawn whether or not faults are on so that turning one on does
+  // not move where the others fall.
+  const FaultInjection& f = options_.faults;
+  const double draw = std::uniform_real_distribution<double>(0.0, 1.0)(fault_rng_);
+  if (draw < f.drop_frames) {
+    health_.Count("frame_dropped");
+    return;
+  }
+  if (draw < f.drop_frames + f.reorder_frames && !held_frame_) {
+    health_.Count("frame_reordered");
+    held_frame_ = image;
+    return;
+  }
+  Publish(kCameraImageChannel, image);
+  if (held_frame_) {
+    Publish(kCameraImageChannel, *held_frame_);
+    held_frame_.reset();
+  }
+  if (draw >= f.drop_frames + f.reorder_frames &&
+      draw < f.drop_frames + f.reorder_frames + f.duplicate) {
+    health_.Count("frame_duplicated");
+    Publish(kCameraImageChannel, image);
+  }
   if (options_.lockstep) {
-    WaitFor([&] { return !states_.empty() && states_.back().utime == utime; },
-            "TABLE_STATE for the frame at utime " + std::to_string(utime));
+    WaitFor([&] { return state_ && state_->utime == utime; },
+            "TABLE_STATE for the frame at utime " + std::to_string(utime),
+            [&] { Publish(kCameraImageChannel, image); });
   } else {
     while (lcm_.handleTimeout(0) > 0) {
     }
+    if (alongside_) alongside_();
+    health_.PublishIfDue(lcm_);
+  }
+}
+
+void TableSimNode::ShowAtRest() {
+  const BallState rest_state = MakeBallState(ball_.x(), ball_.y(), 0, 0, 0, 0, 0);
+  const auto at_rest = [&rest_state](double) { return rest_state; };
+  const double frame_dt = 1.0 / options_.camera_rate;
+  for (double shown = 0.0; shown < options_.settle_time; shown += frame_dt) {
+    Frame(at_rest, time_);
+    time_ += frame_dt;
+  }
+}
+
+cue_command_t TableSimNode::Request(int shot, const Eigen::Vector2d& target, ShotResult& result) {
+  for (;;) {
+    ShowAtRest();
+    // The estimator names balls by its tracks: ask for the one it sees nearest the ball.
+    WaitFor([&] { return state_ && state_->num_balls > 0; }, "TABLE_STATE with the ball",
+            nullptr);
+    int ball_id = state_->balls[0].ball_id;
+    double nearest = 1e300;
+    for (const ball_state_t& b : state_->balls) {
+      const double d = std::hypot(b.position[0] - ball_.x(), b.position[1] - ball_.y());
+      if (d < nearest) {
+        nearest = d;
+        ball_id = b.ball_id;
+      }
+    }
+    shot_request_t request{};
+    request.utime = Utime(time_);
+    request.request_id = shot;
+    request.ball_id = ball_id;
+    request.target[0] = target.x();
+    request.target[1] = target.y();
+    request.spin = shot_request_t::SPIN_NATURAL;
+    Publish(kShotRequestChannel, request);
+    if (std::uniform_real_distribution<double>(0.0, 1.0)(fault_rng_) < options_.faults.duplicate) {
+      health_.Count("request_duplicated");
+      Publish(kShotRequestChannel, request);
+    }
+    const auto answered = [&] {
+      return command_ && command_->request_id == shot && command_->utime == request.utime;
+    };
+    WaitFor(answered, "CUE_COMMAND for request " + std::to_string(shot),
+            [&] { Publish(kShotRequestChannel, request); });
+    const int8_t status = command_->status;
+    const bool time_cures = status == cue_command_t::STATUS_NO_BALL_STATE ||
+                            status == cue_command_t::STATUS_STALE_STATE ||
+                            status == cue_command_t::STATUS_BUSY;
+    if (!time_cures || result.retries == options_.max_retries) return *command_;
+    ++result.retries;
+    health_.Count("shot_retried");
+    log_("shot " + std::to_string(shot) + ": " + planner::CueCommandStatusName(status) + " (" +
+         command_->reason + "), asking again");
   }
 }
 
@@ -132,41 +250,11 @@ std::vector<ShotResult> TableSimNode::Run() {
   std::vector<ShotResult> results;
   for (int shot = 0; shot < options_.shots; ++shot) {
     const Eigen::Vector2d rest = ball_;
-    const BallState rest_state = MakeBallState(rest.x(), rest.y(), 0, 0, 0, 0, 0);
-    const auto at_rest = [&rest_state](double) { return rest_state; };
-    for (double shown = 0.0; shown < options_.settle_time; shown += frame_dt) {
-      Frame(at_rest, time_);
-      time_ += frame_dt;
-    }
-    // The estimator names balls by its tracks: ask for the one it sees nearest the ball.
-    WaitFor([&] { return !states_.empty() && states_.back().num_balls > 0; },
-            "TABLE_STATE with the ball");
-    const table_state_t& seen = states_.back();
-    int ball_id = seen.balls[0].ball_id;
-    double nearest = 1e300;
-    for (const ball_state_t& b : seen.balls) {
-      const double d = std::hypot(b.position[0] - rest.x(), b.position[1] - rest.y());
-      if (d < nearest) {
-        nearest = d;
-        ball_id = b.ball_id;
-      }
-    }
-
     ShotResult result;
     do {
       result.target = {x(rng_), y(rng_)};
     } while ((result.target - rest).norm() < options_.min_distance);
-    shot_request_t request{};
-    request.utime = Utime(time_);
-    request.request_id = shot;
-    request.ball_id = ball_id;
-    request.target[0] = result.target.x();
-    request.target[1] = result.target.y();
-    request.spin = shot_request_t::SPIN_NATURAL;
-    lcm_.publish(kShotRequestChannel, &request);
-    WaitFor([&] { return !commands_.empty() && commands_.back().request_id == shot; },
-            "CUE_COMMAND for request " + std::to_string(shot));
-    const cue_command_t command = commands_.back();
+    const cue_command_t command = Request(shot, result.target, result);
     result.status = planner::CueCommandStatusName(command.status);
     result.reason = command.reason;
     result.plan_ms = 1e-3 * command.solve_us;
@@ -200,6 +288,7 @@ std::vector<ShotResult> TableSimNode::Run() {
     log_(line.str());
     results.push_back(result);
   }
+  health_.PublishIfDue(lcm_);
   return results;
 }
 

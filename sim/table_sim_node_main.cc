@@ -36,6 +36,19 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--camera-rate", options.camera_rate, "Frames per second")->capture_default_str();
   app.add_flag("--realtime", realtime, "Real time instead of lockstep");
+  billiard::FaultInjection& faults = options.faults;
+  app.add_option("--drop-frames", faults.drop_frames, "Fault injection: probability a frame is lost")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--reorder-frames", faults.reorder_frames,
+                 "Fault injection: probability a frame is sent after the next")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--duplicate", faults.duplicate,
+                 "Fault injection: probability a frame or a request is sent twice")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--fault-seed", faults.seed, "Seed of the fault injection")->capture_default_str();
+  app.add_option("--reply-timeout", options.reply_timeout,
+                 "Longest wait for the estimator or the planner [s]")
+      ->capture_default_str();
   app.add_flag("--in-process", in_process,
                "Run the estimator and planner nodes in this process on LCM's in-memory provider "
                "(where the nodes cannot talk over UDP multicast)");
@@ -44,8 +57,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
-  if (options.shots < 1 || !(options.camera_rate > 0.0)) {
-    std::cerr << "table_sim_node: --shots and --camera-rate must be positive" << std::endl;
+  if (options.shots < 1 || !(options.camera_rate > 0.0) || !(options.reply_timeout > 0.0)) {
+    std::cerr << "table_sim_node: --shots, --camera-rate and --reply-timeout must be positive"
+              << std::endl;
+    return 2;
+  }
+  if (faults.drop_frames + faults.reorder_frames + faults.duplicate > 1.0) {
+    std::cerr << "table_sim_node: the fault probabilities add up to more than 1" << std::endl;
     return 2;
   }
   options.lockstep = !realtime;
@@ -75,6 +93,12 @@ int main(int argc, char** argv) {
     planner = std::make_unique<billiard::planner::PlannerNode>(lcm, params);
   }
   billiard::TableSimNode node(lcm, params, camera, options);
+  if (in_process) {
+    node.RunAlongside([&] {
+      estimator->Work();
+      return planner->Work();
+    });
+  }
   std::vector<billiard::ShotResult> shots;
   try {
     shots = node.Run();
@@ -89,7 +113,8 @@ int main(int argc, char** argv) {
                            {"final", {s.final_point.x(), s.final_point.y()}},
                            {"miss_m", s.miss_m},
                            {"plan_ms", s.plan_ms},
-                           {"status", s.status}};
+                           {"status", s.status},
+                           {"retries", s.retries}};
     if (!s.reason.empty()) shot["reason"] = s.reason;
     j["shots"].push_back(shot);
     misses.push_back(s.miss_m);
@@ -103,6 +128,12 @@ int main(int argc, char** argv) {
   for (double m : misses) spread += (m - mean) * (m - mean) / n;
   j["mean_miss_m"] = mean;
   j["stddev_miss_m"] = std::sqrt(spread);
+  const billiard::node_status_t health = node.health().TakeStatus();
+  for (int i = 0; i < health.num_counters; ++i) {
+    j["counters"][health.counter_names[i]] = health.counter_values[i];
+  }
+  j["received"] = health.received;
+  j["dropped"] = health.dropped;
   j["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << j.dump() << std::endl;
   return 0;

@@ -54,7 +54,8 @@ shot_request_t Request(int64_t id, int32_t ball, double x, double y,
 class PlannerNodeTest : public ::testing::Test {
  protected:
   PlannerNodeTest() {
-    lcm_.subscribe(kCueCommandChannel, &PlannerNodeTest::OnCommand, this);
+    // Unbounded: a burst's answers all arrive before the test handles the first.
+    lcm_.subscribe(kCueCommandChannel, &PlannerNodeTest::OnCommand, this)->setQueueCapacity(0);
   }
 
   void OnCommand(const lcm::ReceiveBuffer*, const std::string&, const cue_command_t* c) {
@@ -66,18 +67,30 @@ class PlannerNodeTest : public ::testing::Test {
     state.utime = utime;
     state.num_balls = static_cast<int32_t>(balls.size());
     state.balls = balls;
+    for (ball_state_t& b : state.balls) b.utime = utime;
     ASSERT_EQ(lcm_.publish(kTableStateChannel, &state), 0);
   }
 
-  // Publishes the request and handles messages until its answer arrives (nullopt if none does).
+  // Runs the node as its main loop does (node_loop.h) until it has nothing left to do.
+  void RunNode() {
+    bool more_work = true;
+    while (more_work) {
+      while (lcm_.handleTimeout(0) > 0) {
+      }
+      more_work = node_.Work();
+    }
+    while (lcm_.handleTimeout(0) > 0) {
+    }
+  }
+
+  // Publishes the request and runs the node: the answer, or nullopt if there is none.
   std::optional<cue_command_t> Ask(const shot_request_t& request) {
     EXPECT_EQ(lcm_.publish(kShotRequestChannel, &request), 0);
-    for (;;) {
-      for (const cue_command_t& c : commands_) {
-        if (c.request_id == request.request_id) return c;
-      }
-      if (lcm_.handleTimeout(2000) <= 0) return std::nullopt;  // the queue ran dry
+    RunNode();
+    for (auto c = commands_.rbegin(); c != commands_.rend(); ++c) {
+      if (c->request_id == request.request_id) return *c;
     }
+    return std::nullopt;
   }
 
   cue_command_t AskOk(const shot_request_t& request) {
@@ -229,15 +242,17 @@ TEST_F(PlannerNodeTest, RefusesToPlanForAMovingBall) {
   EXPECT_NE(moving->reason.find("moving"), std::string::npos) << moving->reason;
   AskOk(Request(2, 2, 1.0, 0.5));  // below the 0.05 m/s default
 
+  // A state with a NaN is dropped on arrival: there is no state of that ball to plan from.
   PublishTable({Ball(4, kNaN, 0.5)});
   const auto nan_state = Ask(Request(3, 4, 1.0, 0.5));
   ASSERT_TRUE(nan_state);
-  EXPECT_EQ(Status(*nan_state), kInvalid);
+  EXPECT_EQ(Status(*nan_state), kNoBallState);
+  EXPECT_EQ(LogLinesContaining("ball 4 has a non-finite position"), 1);
 }
 
 TEST_F(PlannerNodeTest, KeepsTheLatestStateOfEachBall) {
   PublishTable({Ball(1, 0.6, 0.5), Ball(2, 2.0, 1.0)});
-  PublishTable({Ball(1, 0.7, 0.4)}, 2'000'000);  // ball 2 not seen this time
+  PublishTable({Ball(1, 0.7, 0.4)}, 1'500'000);  // ball 2 not seen this time
   const cue_command_t one = AskOk(Request(1, 1, 1.5, 0.6));
   EXPECT_EQ(one.start[0], 0.7);
   EXPECT_EQ(one.start[1], 0.4);
@@ -280,6 +295,86 @@ TEST_F(PlannerNodeTest, SurvivesPayloadsThatDoNotDecode) {
 
   PublishTable({Ball(1, 0.6, 0.5)});
   AskOk(Request(3, 1, 1.0, 0.5));
+}
+
+TEST_F(PlannerNodeTest, NeverActsOnAStaleState) {
+  PublishTable({Ball(1, 0.6, 0.5)}, 1'000'000);
+  shot_request_t late = Request(1, 1, 1.5, 0.6);
+  late.utime = 2'500'000;  // the estimator has said nothing for 1.5 s
+  const auto stale = Ask(late);
+  ASSERT_TRUE(stale);
+  EXPECT_EQ(Status(*stale), cue_command_t::STATUS_STALE_STATE) << stale->reason;
+  EXPECT_NE(stale->reason.find("1.5 s older"), std::string::npos) << stale->reason;
+  EXPECT_EQ(stale->cue_speed, 0.0);
+
+  PublishTable({Ball(1, 0.6, 0.5)}, 2'400'000);
+  late.request_id = 2;
+  AskOk(late);
+}
+
+TEST_F(PlannerNodeTest, DropsLateStatesAndForgetsAnOldClock) {
+  PublishTable({Ball(1, 0.7, 0.4)}, 12'000'000);
+  PublishTable({Ball(1, 0.6, 0.5)}, 11'900'000);  // arrives late: the ball is not back there
+  PublishTable({Ball(1, 0.7, 0.4)}, 12'000'000);  // the same state again
+  shot_request_t q = Request(1, 1, 1.5, 0.6);
+  q.utime = 12'000'000;
+  EXPECT_EQ(AskOk(q).start[0], 0.7);
+  EXPECT_EQ(LogLinesContaining("older than the latest"), 1);
+  EXPECT_EQ(node_.health().counter("duplicate"), 1);
+
+  // The estimator restarted with its clock near zero: a new session, not a late message.
+  PublishTable({Ball(3, 1.0, 1.0)}, 100'000);
+  q.request_id = 2;
+  q.utime = 100'000;
+  EXPECT_EQ(Status(*Ask(q)), kNoBallState) << "ball 1 belonged to the old clock";
+  EXPECT_EQ(node_.health().counter("clock_reset"), 1);
+}
+
+TEST_F(PlannerNodeTest, ARequestSentAgainGetsTheSameAnswerWithoutPlanningAgain) {
+  PublishTable({Ball(1, 0.6, 0.5)});
+  const shot_request_t q = Request(1, 1, 1.5, 0.6);
+  const cue_command_t first = AskOk(q);
+  const cue_command_t again = AskOk(q);
+  EXPECT_EQ(again.solve_us, first.solve_us) << "planned again";
+  EXPECT_EQ(node_.health().counter("duplicate"), 1);
+  EXPECT_EQ(commands_.size(), 2u);
+
+  // Once the ball's state has changed the same request is a new question.
+  PublishTable({Ball(1, 0.6, 0.55)}, 1'000'010);
+  EXPECT_NE(AskOk(q).start[1], first.start[1]);
+  EXPECT_EQ(node_.health().counter("duplicate"), 1);
+}
+
+TEST_F(PlannerNodeTest, ABurstIsAnsweredInFullFromABoundedQueue) {
+  PublishTable({Ball(1, 0.6, 0.5)});
+  constexpr int kBurst = 10000;
+  for (int id = 0; id < kBurst; ++id) {
+    const shot_request_t q = Request(id, 1, 1.5, 0.6 + 1e-6 * id);
+    ASSERT_EQ(lcm_.publish(kShotRequestChannel, &q), 0);
+  }
+  // Everything has arrived before the first plan: the queue takes what it holds, the rest is
+  // refused at once, and nothing goes unanswered.
+  while (lcm_.handleTimeout(0) > 0) {
+  }
+  const int capacity = PlannerNodeOptions{}.queue_capacity;
+  EXPECT_EQ(node_.health().counter("busy"), kBurst - capacity);
+  RunNode();
+  std::vector<int> answers(kBurst, 0);
+  int ok = 0, busy = 0;
+  for (const cue_command_t& c : commands_) {
+    ++answers.at(c.request_id);
+    ok += Status(c) == kOk;
+    busy += Status(c) == cue_command_t::STATUS_BUSY;
+  }
+  EXPECT_EQ(std::count(answers.begin(), answers.end(), 1), kBurst) << "each answered once";
+  EXPECT_EQ(ok, capacity);
+  EXPECT_EQ(busy, kBurst - capacity);
+  const node_status_t status = node_.health().TakeStatus();
+  EXPECT_EQ(status.queue_depth, 0);
+  EXPECT_EQ(status.published, kBurst);
+  EXPECT_EQ(status.latency_count, kBurst);
+  EXPECT_GT(status.latency_max_us, status.latency_p50_us);
+  EXPECT_EQ(LogLinesContaining("queue full"), 1) << "one line, not one per refusal";
 }
 
 TEST(PlannerNodeBinary, StopsCleanlyOnSigintAndSigterm) {

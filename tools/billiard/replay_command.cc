@@ -95,6 +95,10 @@ void Run(const ReplayArgs& args) {
     if (e->channel == estimator::kCameraImageChannel || e->channel == planner::kShotRequestChannel) {
       ++inputs;
       lcm.publish(e->channel, e->data, e->datalen);
+      do {
+        while (lcm.handleTimeout(0) > 0) {
+        }
+      } while (planner.Work());
       while (lcm.handleTimeout(0) > 0) {
       }
     } else if (e->channel == estimator::kTableStateChannel) {
