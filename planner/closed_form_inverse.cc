@@ -1,6 +1,7 @@
 #include "closed_form_inverse.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace billiard::planner {
 
@@ -47,6 +48,10 @@ LaunchSolution InvertClosedForm(const ShotRequest& q, const ClosedFormParameters
   const double mu_g = p.mu_slide * p.gravity;
   const double roll_decel = 5.0 / 7.0 * p.mu_roll * p.gravity;  // rolling phase, eq. 13
   const double v2 = q.final_speed;
+  if (mu_g == 0.0 && roll_decel == 0.0) {
+    s.reason = "without friction or rolling resistance the ball's speed never changes";
+    return s;
+  }
   if (roll_decel == 0.0 && v2 == 0.0) {
     s.reason = "without rolling resistance a rolling ball never stops";
     return s;
@@ -55,6 +60,7 @@ LaunchSolution InvertClosedForm(const ShotRequest& q, const ClosedFormParameters
   // Along the line: slip u0 = v0 - R w0 >= 0, slide t1 = 2 u0 / (7 mu g), v1 = v0 - 2 u0 / 7,
   // x1 = (2 u0 / (7 mu g)) (v0 - u0 / 7), then rolling: D - x1 = (v1^2 - v2^2) / (2 a_r).
   double v0 = 0.0, u0 = 0.0;
+  bool arrives_sliding = false;
   if (q.slide_length) {
     const double x1 = *q.slide_length;
     if (x1 < 0.0 || x1 > distance) {
@@ -64,6 +70,14 @@ LaunchSolution InvertClosedForm(const ShotRequest& q, const ClosedFormParameters
     }
     if (x1 > 0.0 && mu_g == 0.0) {
       s.reason = "without sliding friction the ball cannot slide a finite length";
+      return s;
+    }
+    if (roll_decel == 0.0) {
+      // v1 = v2: the arrival is where the sliding ends (short of the target unless x1 is the
+      // distance), and there the regularized 5-DOF speed only tends to v2.
+      s.reason = "without rolling resistance the ball comes down to its final speed only as it "
+                 "stops sliding, and rolls on at it: give a spin style (draw or stun arrive "
+                 "still sliding)";
       return s;
     }
     const double v1 = std::sqrt(v2 * v2 + 2.0 * roll_decel * (distance - x1));
@@ -80,19 +94,37 @@ LaunchSolution InvertClosedForm(const ShotRequest& q, const ClosedFormParameters
     const double sliding = k < 1.0 ? 2.0 * (1.0 - k) * (6.0 + k) / (49.0 * mu_g) : 0.0;
     const double slide_fraction = (5.0 + 2.0 * k) * (5.0 + 2.0 * k) / 49.0;  // (v1 / v0)^2
     if (roll_decel == 0.0) {
-      // No rolling resistance: the ball rolls on at v1 = (5 + 2k) v0 / 7, which must be v2.
-      v0 = v2 / std::sqrt(slide_fraction);
-      if (sliding * v0 * v0 > distance) {
-        s.reason = "the ball would still be sliding at the target";
+      // No rolling resistance: the speed falls only while the ball slides (by mu g, the slip
+      // stays on the line) and stays at v1 = (5 + 2k) v0 / 7 once it rolls, so the ball must
+      // come down to v2 at the target while still sliding.
+      if (k >= 1.0) {
+        s.reason = "without rolling resistance a rolling ball keeps its speed: it never slows to "
+                   "the final speed (draw or stun make it slide)";
         return s;
       }
+      v0 = std::sqrt(v2 * v2 + 2.0 * mu_g * distance);
+      const double v1 = (5.0 + 2.0 * k) / 7.0 * v0;
+      if (v1 >= v2) {
+        std::ostringstream reason;
+        reason.precision(3);
+        reason << "without rolling resistance the ball slows only while it slides: with this "
+                  "spin it rolls on at " << v1 << " m/s before the target and never slows to "
+               << v2 << " m/s";
+        s.reason = reason.str();
+        return s;
+      }
+      arrives_sliding = true;
     } else {
       v0 = std::sqrt((distance + v2 * v2 / (2.0 * roll_decel)) /
                      (sliding + slide_fraction / (2.0 * roll_decel)));
     }
     u0 = (1.0 - k) * v0;
   }
-  s.slide_length = u0 == 0.0 ? 0.0 : 2.0 * u0 / (7.0 * mu_g) * (v0 - u0 / 7.0);
+  if (arrives_sliding) {
+    s.slide_length = distance;
+  } else {
+    s.slide_length = u0 == 0.0 ? 0.0 : 2.0 * u0 / (7.0 * mu_g) * (v0 - u0 / 7.0);
+  }
   if (s.slide_length > distance * (1.0 + 1e-12)) {
     s.reason = "the ball would still be sliding at the target: choose less spin or a slide length";
     return s;

@@ -5,7 +5,9 @@
 // A straight shot: v0 along the line to the target and the spin about the horizontal axis across
 // it, so the slip stays on the line. The free choice the seed leaves open (its x1) is the spin:
 // either the slide length x1 directly, or a style fixing R w0 / v0 (stun 0, follow 1/2, natural 1,
-// draw -1). Valid for v0 >= R w0 >= -5/2 v0 (no reversal). Side spin wz is passed through: the
+// draw -1). Valid for v0 >= R w0 >= -5/2 v0 (no reversal). Without rolling resistance the speed
+// falls only while the ball slides, so it must arrive at v2 > 0 still sliding (a draw or stun
+// style; a slide length or a natural roll cannot). Side spin wz is passed through: the
 // closed form has no pivot friction or swerve, which is why the planner refines against 5-DOF.
 #pragma once
 
@@ -38,7 +40,7 @@ struct LaunchSolution {
   bool malformed = false;  // refused because the request itself is malformed, not out of reach
   Eigen::Vector2d v0 = Eigen::Vector2d::Zero();
   Eigen::Vector3d w0 = Eigen::Vector3d::Zero();
-  double slide_length = 0.0;  // x1 of the solution
+  double slide_length = 0.0;  // x1 of the solution (the distance, if it arrives still sliding)
 };
 
 LaunchSolution InvertClosedForm(const ShotRequest& request, const ClosedFormParameters& p);

@@ -104,5 +104,48 @@ TEST(ClosedFormInverse, RefusesBadRequestsWithAReason) {
   EXPECT_FALSE(InvertClosedForm(q, no_roll).ok);
 }
 
+TEST(ClosedFormInverse, WithoutRollingResistanceTheBallArrivesStillSliding) {
+  // mu_r = 0: the speed falls only while the ball slides, so the forward model must come down to
+  // v2 on the target before its sliding ends; what cannot is refused with the reason.
+  ClosedFormParameters p = Paper();
+  p.mu_roll = 0.0;
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int solved = 0;
+  for (int i = 0; i < 400; ++i) {
+    ShotRequest q;
+    q.from = {0.1 + 2.3 * u(rng), 0.1 + 1.0 * u(rng)};
+    q.to = {0.1 + 2.3 * u(rng), 0.1 + 1.0 * u(rng)};
+    q.final_speed = 3.0 * u(rng);
+    q.style = static_cast<SpinStyle>(i % 4);
+    const LaunchSolution s = InvertClosedForm(q, p);
+    if (!s.ok) {
+      EXPECT_NE(s.reason.find("without rolling resistance"), std::string::npos) << s.reason;
+      continue;
+    }
+    ++solved;
+    const ClosedFormTrajectory forward(p, MakeBallState(q.from.x(), q.from.y(), s.v0.x(),
+                                                        s.v0.y(), s.w0.x(), s.w0.y(), s.w0.z()));
+    const double t = forward.TimeAtSpeed(q.final_speed);
+    EXPECT_LT(t, forward.slide_end_time()) << "request " << i;
+    EXPECT_LT((forward.At(t).head<2>() - q.to).norm(), 1e-9) << "request " << i;
+    EXPECT_EQ(s.slide_length, (q.to - q.from).norm());
+  }
+  EXPECT_GT(solved, 50);
+
+  ShotRequest q;
+  q.to = {1.0, 0.5};
+  q.final_speed = 0.3;
+  q.style = SpinStyle::kNatural;  // rolls at its launch speed for ever
+  EXPECT_FALSE(InvertClosedForm(q, p).ok);
+  q.slide_length = 0.5;  // reaches v2 where it stops sliding, and rolls on at it
+  EXPECT_FALSE(InvertClosedForm(q, p).ok);
+  p.mu_slide = 0.0;
+  q.slide_length.reset();
+  const LaunchSolution frictionless = InvertClosedForm(q, p);
+  EXPECT_FALSE(frictionless.ok);
+  EXPECT_NE(frictionless.reason.find("never changes"), std::string::npos) << frictionless.reason;
+}
+
 }  // namespace
 }  // namespace billiard::planner

@@ -160,6 +160,11 @@ ShotPlan Refused(PlanStatus status, std::string reason) {
 }
 
 ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const PlannerOptions& options) {
+  try {
+    ValidateParameters(params);
+  } catch (const std::invalid_argument& e) {
+    return Refused(PlanStatus::kInvalid, std::string("invalid parameters: ") + e.what());
+  }
   const LaunchSolution guess = InvertClosedForm(q, ClosedFormParameters::From(params));
   if (guess.malformed) return Refused(PlanStatus::kInvalid, guess.reason);
   if (!OnTable(q.from, params)) {
@@ -198,11 +203,12 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
   plan.slide_length = guess.slide_length;
   double p[2] = {speed0, std::atan2(e0.y(), e0.x())};
   const MissFunction miss{params, options.simulation, launch, q, t_max, &plan.simulations};
-  Eigen::Vector2d closed_form_miss;
-  if (!miss.Evaluate(p[0], p[1], &closed_form_miss, nullptr)) {
-    return Refused(PlanStatus::kUnreachable, "the closed-form launch cannot be simulated");
-  }
-  plan.closed_form_miss_m = closed_form_miss.norm();
+  // Not through miss.Evaluate, which hides why a simulation failed: that reason (a step budget,
+  // say) is what the refusal must report.
+  ++plan.simulations;
+  plan.closed_form_miss_m = (SimulateArrival(params, launch.State(p[0], p[1]), q.final_speed,
+                                             t_max, options.simulation).state.head<2>() -
+                             q.to).norm();
 
   // Turning the heading turns the whole path about the ball, so how far the ball gets depends on
   // the launch speed alone, and grows with it: a speed bound that already carries the ball past

@@ -25,7 +25,8 @@ namespace billiard::planner {
 
 enum class PlanStatus {
   kOk,
-  kInvalid,       // malformed request: non-finite numbers, negative speed, target = start
+  kInvalid,       // malformed request (non-finite numbers, negative speed, target = start), or
+                  // a parameter set ValidateParameters refuses
   kOffTable,      // start or target outside the playing surface (ball centre within r of an edge)
   kUnreachable,   // no stroke within the robot's limits, or outside the model's validity
   kNotConverged,  // the refinement ended with a miss above the tolerance

@@ -184,14 +184,40 @@ TEST(ShotPlanner, RefusesBadAndUnreachableRequestsWithAReason) {
 }
 
 TEST(ShotPlanner, NeverAnOkBeyondTheAcceptableMiss) {
-  // With a single iteration allowed, a spin-heavy shot cannot converge: the plan must say so.
-  const ShotRequest q = Shot({0.3, 0.3}, {2.2, 1.0}, 0.0, SpinStyle::kDraw, 20.0);
-  PlannerOptions options;
-  options.max_iterations = 1;
-  options.acceptable_miss = 1e-7;
-  const ShotPlan plan = PlanShot(q, Paper(), options);
-  EXPECT_EQ(plan.status, PlanStatus::kNotConverged);
-  EXPECT_NE(plan.reason.find("mm from the target"), std::string::npos) << plan.reason;
+  // With too few iterations, or a simulation step budget too small, a spin-heavy shot cannot
+  // converge: the plan must say so and why, with the paper's contact and at the edges of the
+  // parameters (regularization 1e-9; no rolling resistance, where a draw arrives still sliding).
+  ModelParameters tiny_eps = Paper();
+  tiny_eps.contact.eps_t = tiny_eps.contact.eps_r = 1e-9;
+  ModelParameters no_rolling_resistance = Paper();
+  no_rolling_resistance.contact.d = 0.0;
+  const ShotRequest draw = Shot({0.3, 0.3}, {2.2, 1.0}, 0.0, SpinStyle::kDraw, 20.0);
+  const ShotRequest sliding = Shot({0.4, 0.4}, {1.6, 0.8}, 1.5, SpinStyle::kDraw, 10.0);
+  struct Case {
+    const char* name;
+    const ModelParameters& params;
+    ShotRequest request;
+    int max_iterations;
+    long max_steps;
+    const char* words;
+  };
+  const long steps = SimulationOptions().max_steps;
+  const Case cases[] = {
+      {"one iteration", Paper(), draw, 1, steps, "mm from the target"},
+      {"no iteration", Paper(), draw, 0, steps, "mm from the target"},
+      {"one iteration, eps = 1e-9", tiny_eps, draw, 1, steps, "mm from the target"},
+      {"no iteration, d = 0", no_rolling_resistance, sliding, 0, steps, "mm from the target"},
+      {"ten steps a simulation", Paper(), draw, 25, 10, "more than 10 steps"},
+  };
+  for (const Case& c : cases) {
+    PlannerOptions options;
+    options.max_iterations = c.max_iterations;
+    options.acceptable_miss = 1e-7;
+    options.simulation.max_steps = c.max_steps;
+    const ShotPlan plan = PlanShot(c.request, c.params, options);
+    EXPECT_EQ(PlanStatusName(plan.status), "not_converged") << c.name << ": " << plan.reason;
+    EXPECT_NE(plan.reason.find(c.words), std::string::npos) << c.name << ": " << plan.reason;
+  }
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ struct BallParameters {
 
 struct ContactParameters {
   double patch_radius = 0.0;  // a [m]
-  double mu = 0.0;            // Coulomb friction coefficient
+  double mu = 0.0;            // Coulomb friction coefficient, >= a d / (5 r)
   double d = 0.0;             // rolling resistance parameter, 0 <= d <= 1
   double eps_t = 0.0;         // friction regularization (dimensionless)
   double eps_r = 0.0;         // rolling-resistance regularization (dimensionless)
@@ -64,7 +64,9 @@ ModelParameters LoadParameters(const std::string& name_or_path);
 // Parses a parameter set from JSON text (the format of sim/params/*.json).
 ModelParameters ParseParameters(const std::string& json_text, const std::string& origin);
 
-// Throws std::invalid_argument if a value is non-finite or outside its physical range.
+// Throws std::invalid_argument, with a one-line reason, if a value is non-finite or outside its
+// physical range, or if mu is below the rolling resistance a d / (5 r) (the contact would create
+// energy). mu = 0 with d = 0, d = 0, and eps_t, eps_r as small as 1e-9 are valid.
 void ValidateParameters(const ModelParameters& p);
 
 }  // namespace billiard

@@ -59,7 +59,8 @@ struct SimulationResult {
 };
 
 // Simulates from `initial` at t = 0 to t_end >= 0. Throws std::invalid_argument on non-finite
-// input or t_end < 0, std::runtime_error if the integrator fails.
+// input, t_end < 0 or, for the 5-DOF models, parameters ValidateParameters refuses;
+// std::runtime_error if the integrator fails.
 SimulationResult Simulate(const ModelParameters& params, const BallState& initial, double t_end,
                           const SimulationOptions& options = {});
 
@@ -83,7 +84,9 @@ Arrival SimulateArrival(const ModelParameters& params, const BallState& initial,
                         double t_max, const SimulationOptions& options = {},
                         bool with_sensitivity = false);
 
-// Integrator settings for a 5-DOF simulation at the given tolerance (see SimulationOptions).
+// Integrator settings for a 5-DOF simulation at the given tolerance (see SimulationOptions); the
+// velocity and spin tolerances are capped at 10 min(eps_t, eps_r) a, the width of the friction
+// law's linear zone, so that tiny regularizations do not make the slip chatter.
 IntegratorOptions IntegratorOptionsFor(const ModelParameters& params, double tolerance);
 
 }  // namespace billiard
