@@ -61,20 +61,18 @@ void EstimatorNode::OnImage(const lcm::ReceiveBuffer* rbuf, const std::string&) 
         !why.empty()) {
       return Drop(why);
     }
-    if (message.utime == last_utime_) {
-      health_.Count("duplicate");
-      return;
-    }
-    if (message.utime < last_utime_) {
-      const double back = 1e-6 * static_cast<double>(last_utime_ - message.utime);
-      if (back <= kClockReset) {
-        return Drop("a frame at utime " + std::to_string(message.utime) +
-                    " after one at " + std::to_string(last_utime_) + " (late or reordered)");
-      }
-      health_.Count("clock_reset");
-      log_(std::string(kCameraImageChannel) + ": time went back " + std::to_string(back) +
-           " s: a new clock, tracking starts again");
-      estimator_ = BallEstimator(estimator_.camera(), params_, options_);
+    switch (clock_.Accept(message.utime)) {
+      case nodes::MessageClock::Verdict::kNext: break;
+      case nodes::MessageClock::Verdict::kDuplicate: return health_.Count("duplicate");
+      case nodes::MessageClock::Verdict::kLate:
+        return Drop("a frame at utime " + std::to_string(message.utime) + " after one at " +
+                    std::to_string(clock_.latest()) + " (late or reordered)");
+      case nodes::MessageClock::Verdict::kNewClock:
+        health_.Count("clock_reset");
+        log_(std::string(kCameraImageChannel) + ": a new clock at utime " +
+             std::to_string(message.utime) + ": tracking starts again");
+        estimator_ = BallEstimator(estimator_.camera(), params_, options_);
+        break;
     }
     const DecodedImage image = DecodeImage(message, limits_);
     if (!image.ok) return Drop(image.error);
@@ -84,7 +82,6 @@ void EstimatorNode::OnImage(const lcm::ReceiveBuffer* rbuf, const std::string&) 
                   " frame, but the camera is " + std::to_string(c.width) + "x" +
                   std::to_string(c.height));
     }
-    last_utime_ = message.utime;
     ++frames_;
     const table_state_t state =
         TableStateMessage(estimator_.Balls(), message.utime, params_.ball.radius);

@@ -8,8 +8,8 @@
 //   TABLE_STATE   table_state_t  the confirmed balls, utime of the frame, ball_id of the track
 //   NODE_STATUS   node_status_t  once a second (node_health.h), from Work()
 //
-// A frame older than the last by more than clock_reset comes from a camera (or simulator) that
-// restarted: the tracks of the old clock are dropped and tracking starts again.
+// Frames that show a new clock (message_clock.h: a camera or simulator that restarted) drop the
+// tracks of the old clock, and tracking starts again.
 //
 // The state depends only on the frames received, never on the clock, so a logged run replays to
 // the same TABLE_STATE messages. A node never dies on a message: handlers catch what they throw.
@@ -22,6 +22,7 @@
 #include "ball_estimator.h"
 #include "billiard/table_state_t.hpp"
 #include "image_codec.h"
+#include "message_clock.h"
 #include "node_health.h"
 
 namespace billiard::estimator {
@@ -42,8 +43,6 @@ class EstimatorNode {
   EstimatorNode(lcm::LCM& lcm, const CameraModel& camera, const ModelParameters& params,
                 EstimatorOptions options = {}, DecodeLimits limits = {}, Log log = nullptr);
 
-  // A frame older than the last by more than this [s] starts a new clock.
-  static constexpr double kClockReset = 5.0;
   ~EstimatorNode();
   EstimatorNode(const EstimatorNode&) = delete;
   EstimatorNode& operator=(const EstimatorNode&) = delete;
@@ -69,7 +68,7 @@ class EstimatorNode {
   nodes::NodeHealth health_;
   lcm::Subscription* subscription_ = nullptr;
   long frames_ = 0;
-  std::int64_t last_utime_ = -1;
+  nodes::MessageClock clock_;
 };
 
 }  // namespace billiard::estimator

@@ -28,14 +28,9 @@ while [ $# -gt 0 ]; do
 done
 $build && bash launch_scripts/build.sh
 
-# Re-run inside a private network namespace when we can make one.
-if [ -z "${in_namespace:-}" ] && unshare -n true 2>/dev/null; then
-  exec unshare -n bash -c 'ip link set lo up multicast on &&
-    ip route add 224.0.0.0/4 dev lo && exec "$0" "$@"' \
-    "$0" --no-build --in-namespace --shots "$shots" --seed "$seed" --noise "$noise" \
-    ${log:+--log "$log"} "$clock" $($json && echo --json)
-fi
-export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0"
+source launch_scripts/lcm_network.sh
+enter_private_network "$0" --no-build --shots "$shots" --seed "$seed" --noise "$noise" \
+  ${log:+--log "$log"} "$clock" $($json && echo --json)
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
 in_process=""

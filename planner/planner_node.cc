@@ -186,25 +186,22 @@ void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string
         !why.empty()) {
       return health_.Dropped(channel + ": " + why);
     }
-    if (state.utime == latest_state_utime_) {
-      health_.Count("duplicate");
-      return;
-    }
-    if (state.utime < latest_state_utime_) {
-      const double back = 1e-6 * static_cast<double>(latest_state_utime_ - state.utime);
-      if (back <= options_.clock_reset) {
+    switch (state_clock_.Accept(state.utime)) {
+      case nodes::MessageClock::Verdict::kNext: break;
+      case nodes::MessageClock::Verdict::kDuplicate: return health_.Count("duplicate");
+      case nodes::MessageClock::Verdict::kLate:
         return health_.Dropped(channel + ": utime " + std::to_string(state.utime) +
                                " is older than the latest, " +
-                               std::to_string(latest_state_utime_) + " (late or reordered)");
-      }
-      // The publisher restarted: the old clock's balls and answers mean nothing now.
-      health_.Count("clock_reset");
-      log_(channel + ": time went back " + std::to_string(back) +
-           " s: a new clock, the balls known so far are forgotten");
-      balls_.clear();
-      answered_.clear();
+                               std::to_string(state_clock_.latest()) + " (late or reordered)");
+      case nodes::MessageClock::Verdict::kNewClock:
+        // The publisher restarted: the old clock's balls and answers mean nothing now.
+        health_.Count("clock_reset");
+        log_(channel + ": a new clock at utime " + std::to_string(state.utime) +
+             ": the balls known so far are forgotten");
+        balls_.clear();
+        answered_.clear();
+        break;
     }
-    latest_state_utime_ = state.utime;
     for (const ball_state_t& ball : state.balls) balls_.insert_or_assign(ball.ball_id, ball);
     while (balls_.size() > kMaxRememberedBalls) {
       balls_.erase(std::min_element(balls_.begin(), balls_.end(), [](const auto& a, const auto& b) {

@@ -29,8 +29,8 @@
 // answer again without planning (a sender retrying after a lost answer).
 //
 // Table states: one that fails messages::Check is dropped, and so is one older than the latest
-// (a late or reordered message), unless it is older by more than clock_reset: then the publisher
-// has restarted with a new clock, and what the node knew of the old one is forgotten.
+// (a late or reordered message), unless the publisher has started a new clock (message_clock.h):
+// then what the node knew of the old one is forgotten.
 //
 // A node never dies on a message: a payload that does not decode is logged and dropped, and every
 // handler catches what it throws. Counts and latencies go out on NODE_STATUS (node_health.h).
@@ -47,6 +47,7 @@
 #include "billiard/ball_state_t.hpp"
 #include "billiard/cue_command_t.hpp"
 #include "billiard/shot_request_t.hpp"
+#include "message_clock.h"
 #include "node_health.h"
 #include "parameters.h"
 #include "shot_planner.h"
@@ -67,8 +68,6 @@ struct PlannerNodeOptions {
   double max_state_age = 1.0;
   // Requests waiting to be planned; more are answered STATUS_BUSY.
   int queue_capacity = 32;
-  // A table state older than the latest by more than this [s] starts a new clock.
-  double clock_reset = 5.0;
 };
 
 // At most this many balls are remembered; beyond it the longest unseen is forgotten.
@@ -129,7 +128,7 @@ class PlannerNode {
   const Log log_;
   nodes::NodeHealth health_;
   std::unordered_map<int32_t, ball_state_t> balls_;
-  std::int64_t latest_state_utime_ = -1;
+  nodes::MessageClock state_clock_;
   std::deque<Waiting> waiting_;
   std::deque<Answered> answered_;
   bool refusing_busy_ = false;

@@ -6,9 +6,11 @@
 #include "bench_command.h"
 #include "bench_estimator_command.h"
 #include "bench_planner_command.h"
+#include "burst_command.h"
 #include "command_line.h"
 #include "detect_command.h"
 #include "fit_contact_command.h"
+#include "node_status_command.h"
 #include "plan_command.h"
 #include "replay_command.h"
 #include "simulate_command.h"
@@ -27,6 +29,8 @@ int main(int argc, char** argv) {
   billiard::cli::AddBenchPlannerCommand(app);
   billiard::cli::AddBenchEstimatorCommand(app);
   billiard::cli::AddReplayCommand(app);
+  billiard::cli::AddBurstCommand(app);
+  billiard::cli::AddNodeStatusCommand(app);
   billiard::cli::AddDetectCommand(app);
   billiard::cli::AddCalibrateCommand(app);
   try {

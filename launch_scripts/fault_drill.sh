@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# The fault drill: the closed loop over UDP multicast while its nodes are killed (SIGKILL) and
+# started again, then a burst of shot requests at the planner. Prints one JSON object on stdout,
+# the nodes' logs on stderr only when a step fails.
+#
+#   launch_scripts/fault_drill.sh [--shots N] [--no-build]
+#
+#   session 1  N lockstep shots; the estimator is killed 3 s in and started again 1 s later, then
+#              the planner 4 s after that, likewise
+#   session 2  a table simulator killed 3 s in, mid-session
+#   session 3  a new table simulator (its clock starts again at 0) runs N/2 shots through the same
+#              estimator and planner
+#   burst      10,000 shot requests at the planner (billiard burst), with its memory before and
+#              after
+#   nodes      every node process's last NODE_STATUS (billiard node-status on the drill's log)
+#
+# It needs the nodes as separate processes: a private network namespace or a multicast route.
+# Without either it prints {"skipped": "<why>"} and exits 0.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+shots=8 build=true
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --shots) shots="$2"; shift 2 ;;
+    --no-build) build=false; shift ;;
+    --in-namespace) in_namespace=true; shift ;;
+    *) echo "fault_drill: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+done
+$build && bash launch_scripts/build.sh
+source launch_scripts/lcm_network.sh
+enter_private_network "$0" --no-build --shots "$shots"
+if [ -z "${in_namespace:-}" ] && ! ip route get 239.255.76.67 >/dev/null 2>&1; then
+  echo '{"skipped": "no network namespace and no multicast route: the nodes cannot be separate processes"}'
+  exit 0
+fi
+
+work=$(mktemp -d)
+pids=()
+cleanup() {
+  for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
+  wait 2>/dev/null || true
+  rm -rf "$work"
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM
+events=()
+event() { events+=("{\"t_s\": $SECONDS, \"event\": \"$1\"}"); echo "fault_drill: $1" >&2; }
+fail() {
+  echo "fault_drill: $1" >&2
+  tail -n 20 "$work"/*.err >&2 || true
+  exit 1
+}
+
+start_estimator() {
+  build/bin/estimator_node --params pool 2>>"$work/estimator.err" &
+  estimator=$!
+  pids+=($!)
+}
+start_planner() {
+  build/bin/planner_node --params pool 2>>"$work/planner.err" &
+  planner=$!
+  pids+=($!)
+}
+table_sim() {  # output-name seed shots
+  build/bin/table_sim_node --params pool --seed "$2" --shots "$3" >"$work/$1.json" \
+    2>>"$work/$1.err" &
+  sim=$!
+  pids+=($!)
+}
+
+lcm-logger --quiet --force "$work/drill.lcm" >/dev/null 2>&1 &
+pids+=($!)
+start_estimator
+start_planner
+sleep 0.5
+SECONDS=0
+
+table_sim session1 11 "$shots"
+sleep 3
+kill -KILL "$estimator"; event "estimator killed"
+sleep 1
+start_estimator; event "estimator started"
+sleep 4
+kill -KILL "$planner"; event "planner killed"
+sleep 1
+start_planner; event "planner started"
+wait "$sim" || fail "session 1 failed"
+event "session 1 done"
+
+table_sim session2 12 "$shots"
+sleep 3
+kill -KILL "$sim"; event "table simulator killed"
+wait "$sim" 2>/dev/null || true
+
+table_sim session3 13 $((shots / 2))
+wait "$sim" || fail "session 3 failed"
+event "session 3 done"
+
+rss_kb() { awk '/^VmRSS/ {print $2}' "/proc/$planner/status"; }
+rss_before=$(rss_kb)
+build/bin/billiard burst --json >"$work/burst.json" 2>>"$work/burst.err" || fail "burst failed"
+rss_after=$(rss_kb)
+hwm=$(awk '/^VmHWM/ {print $2}' "/proc/$planner/status")
+event "burst done"
+sleep 1.2  # the nodes' next NODE_STATUS, after the burst
+
+kill -TERM "${pids[0]}"  # lcm-logger: flush the log
+wait "${pids[0]}" 2>/dev/null || true
+build/bin/billiard node-status "$work/drill.lcm" >"$work/nodes.json"
+
+python3 - "$work" "$rss_before" "$rss_after" "$hwm" "$(IFS=,; echo "${events[*]}")" <<'PY'
+import json, sys
+work, before, after, hwm, events = sys.argv[1:6]
+load = lambda name: json.load(open(f"{work}/{name}.json"))
+print(json.dumps({
+    "session1": load("session1"),
+    "session3": load("session3"),
+    "burst": load("burst"),
+    "planner_rss_kb": {"before_burst": int(before), "after_burst": int(after), "peak": int(hwm)},
+    "nodes": load("nodes")["processes"],
+    "events": json.loads(f"[{events}]"),
+}))
+PY
