@@ -9,6 +9,7 @@
 #include "burst_command.h"
 #include "command_line.h"
 #include "detect_command.h"
+#include "edge_report_command.h"
 #include "fit_contact_command.h"
 #include "node_status_command.h"
 #include "plan_command.h"
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddReplayCommand(app);
   billiard::cli::AddBurstCommand(app);
   billiard::cli::AddNodeStatusCommand(app);
+  billiard::cli::AddEdgeReportCommand(app);
   billiard::cli::AddDetectCommand(app);
   billiard::cli::AddCalibrateCommand(app);
   try {
