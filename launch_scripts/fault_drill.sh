@@ -79,11 +79,11 @@ SECONDS=0
 
 table_sim session1 11 "$shots"
 sleep 3
-kill -KILL "$estimator"; event "estimator killed"
+kill -KILL "$estimator"; wait "$estimator" 2>/dev/null || true; event "estimator killed"
 sleep 1
 start_estimator; event "estimator started"
 sleep 4
-kill -KILL "$planner"; event "planner killed"
+kill -KILL "$planner"; wait "$planner" 2>/dev/null || true; event "planner killed"
 sleep 1
 start_planner; event "planner started"
 wait "$sim" || fail "session 1 failed"
