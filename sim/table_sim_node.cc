@@ -52,24 +52,25 @@ TableSimNode::~TableSimNode() {
   for (lcm::Subscription* s : subscriptions_) lcm_.unsubscribe(s);
 }
 
-void TableSimNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+template <class Message>
+std::optional<Message> TableSimNode::Receive(const lcm::ReceiveBuffer* rbuf,
+                                             const std::string& channel) {
   health_.Received();
-  table_state_t state;
-  if (std::string why = messages::DecodeChecked(rbuf->data, rbuf->data_size, state);
+  Message message;
+  if (std::string why = messages::DecodeChecked(rbuf->data, rbuf->data_size, message);
       !why.empty()) {
-    return health_.Dropped(channel + ": " + why);
+    health_.Dropped(channel + ": " + why);
+    return std::nullopt;
   }
-  state_ = std::move(state);
+  return message;
+}
+
+void TableSimNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+  if (auto state = Receive<table_state_t>(rbuf, channel)) state_ = std::move(state);
 }
 
 void TableSimNode::OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-  health_.Received();
-  cue_command_t command;
-  if (std::string why = messages::DecodeChecked(rbuf->data, rbuf->data_size, command);
-      !why.empty()) {
-    return health_.Dropped(channel + ": " + why);
-  }
-  command_ = std::move(command);
+  if (auto command = Receive<cue_command_t>(rbuf, channel)) command_ = std::move(command);
 }
 
 template <class Message>

@@ -105,6 +105,9 @@ class TableSimNode {
   nodes::NodeHealth& health() { return health_; }
 
  private:
+  // The message in `rbuf`, or nothing when it fails its checks (counted and logged).
+  template <class Message>
+  std::optional<Message> Receive(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   void OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   void OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   // Publishes the ball's true state at time t (sim time) and the camera's frame of it and, in
