@@ -104,7 +104,7 @@ build/bin/billiard burst --json >"$work/burst.json" 2>>"$work/burst.err" || fail
 rss_after=$(rss_kb)
 hwm=$(awk '/^VmHWM/ {print $2}' "/proc/$planner/status")
 event "burst done"
-sleep 1.2  # the nodes' next NODE_STATUS, after the burst
+sleep 2.2  # the nodes' next NODE_STATUS (once a second), after the burst
 
 kill -TERM "${pids[0]}"  # lcm-logger: flush the log
 wait "${pids[0]}" 2>/dev/null || true

@@ -142,6 +142,7 @@ w("")
 w("| set | valid | steps (max over scenes) | max energy rise J | plans ok | worst re-simulated miss of an ok | refusals |")
 w("|---|---|---:|---:|---:|---:|---|")
 wrong_ok = 0
+energy = lambda j: "< 1e-15" if j < 1e-15 else f"{j:.1e}"  # below that, rounding
 for s in edge["sets"]:
     sims = [x for x in s.get("simulations", []) if "steps" in x]
     steps = max((x["steps"] for x in sims), default=0)
@@ -157,7 +158,7 @@ for s in edge["sets"]:
     ref = ", ".join(f"{v} {k}" for k, v in sorted(refusals.items())) or "-"
     reason = s.get("reason", "").removeprefix(s["name"] + ": ")
     w(f"| {s['name']} | {'yes' if s['valid'] else 'no: ' + reason} | "
-      f"{steps if sims else '-'} | {f'{rise:.1e}' if sims else '-'} | {len(oks)} of {len(plans)} | "
+      f"{steps if sims else '-'} | {energy(rise) if sims else '-'} | {len(oks)} of {len(plans)} | "
       f"{'-' if worst is None else f'{worst:.1e} m'} | {ref} |")
 w("")
 w(f"Ok plans that miss by more than 10 um when simulated again: **{wrong_ok}**.")
