@@ -93,9 +93,10 @@ else:
         w(f"- {e['t_s']} s: {e['event']}")
     w("")
     s1 = drill["session1"]
-    w(f"- Session 1, through both kills: {shots_line(s1)}; "
-      f"{s1.get('counters', {}).get('resent', 0)} frames or requests sent again while a node was "
-      "down.")
+    c1 = s1.get("counters", {})
+    w(f"- Session 1, through both kills: {shots_line(s1)}; {c1.get('resent', 0)} frames or "
+      f"requests sent again while a node was down, {c1.get('shot_retried', 0)} shots asked again "
+      "after a refusal that time cures (no state of the ball yet in a restarted planner).")
     w(f"- Session 3, a new table simulator after one killed mid-session (its clock starts again): "
       f"{shots_line(drill['session3'])}.")
     w("")
