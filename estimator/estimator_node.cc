@@ -1,10 +1,11 @@
 #include "estimator_node.h"
 
-#include "message_checks.h"
-
+#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <utility>
+
+#include "message_checks.h"
 
 namespace billiard::estimator {
 
@@ -83,8 +84,18 @@ void EstimatorNode::OnImage(const lcm::ReceiveBuffer* rbuf, const std::string&) 
                   std::to_string(c.height));
     }
     ++frames_;
-    const table_state_t state =
-        TableStateMessage(estimator_.Balls(), message.utime, params_.ball.radius);
+    std::vector<TrackedBall> balls = estimator_.Balls();
+    if (balls.size() > static_cast<std::size_t>(messages::kMaxBalls)) {
+      // More than a table holds (clutter taken for balls): the best-known ones go out, since a
+      // state over the limit would be refused whole by every receiver.
+      health_.Count("balls_not_published", balls.size() - messages::kMaxBalls);
+      std::partial_sort(balls.begin(), balls.begin() + messages::kMaxBalls, balls.end(),
+                        [](const TrackedBall& a, const TrackedBall& b) {
+                          return a.covariance.trace() < b.covariance.trace();
+                        });
+      balls.resize(messages::kMaxBalls);
+    }
+    const table_state_t state = TableStateMessage(balls, message.utime, params_.ball.radius);
     if (lcm_.publish(kTableStateChannel, &state) != 0) return Drop("publishing TABLE_STATE failed");
     health_.Published();
     health_.Latency(nodes::NodeHealth::Clock::now() - arrived);

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "message_checks.h"
 #include "table_renderer.h"
 
 namespace billiard::estimator {
@@ -116,6 +117,31 @@ TEST_F(EstimatorNodeTest, ACameraThatRestartsItsClockIsTrackedAfresh) {
   // The new session confirms its tracks anew and goes on as before.
   for (int f = 2; f < 8; ++f) Send(Frame(8'333 * f, ImageEncoding::kRgb));
   EXPECT_EQ(states_.back().num_balls, 3);
+  EXPECT_EQ(node_.health().dropped(), 0);
+}
+
+TEST_F(EstimatorNodeTest, MoreBallsThanAMessageHoldsPublishesTheBestKnown) {
+  // A 10 x 8 grid: more balls than messages::kMaxBalls, a state receivers would refuse whole.
+  balls_.clear();
+  for (int i = 0; i < 10; ++i) {
+    for (int j = 0; j < 8; ++j) {
+      const Eigen::Vector2d at(0.15 + 0.245 * i, 0.12 + 0.147 * j);
+      balls_.push_back(RenderBall::AtRest(8 * i + j, PoolBallColour((i + j) % 16), at));
+    }
+  }
+  // The same frames through an estimator of its own: how many balls there are to publish.
+  BallEstimator alone(camera_, Pool());
+  long beyond = 0;
+  for (int f = 0; f < 8; ++f) {
+    const image_t frame = Frame(1'000'000 + 8'333 * f, ImageEncoding::kRgb);
+    ASSERT_TRUE(alone.Process(DecodeImage(frame).image, 1e-6 * frame.utime));
+    beyond += std::max<long>(0, static_cast<long>(alone.Balls().size()) - messages::kMaxBalls);
+    Send(frame);
+  }
+  ASSERT_GT(alone.Balls().size(), static_cast<std::size_t>(messages::kMaxBalls));
+  ASSERT_EQ(states_.size(), 8u);
+  EXPECT_EQ(states_.back().num_balls, messages::kMaxBalls);
+  EXPECT_EQ(node_.health().counter("balls_not_published"), beyond);
   EXPECT_EQ(node_.health().dropped(), 0);
 }
 
