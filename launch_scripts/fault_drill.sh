@@ -10,8 +10,9 @@
 #   session 2  a table simulator killed 3 s in, mid-session
 #   session 3  a new table simulator (its clock starts again at 0) runs N/2 shots through the same
 #              estimator and planner
-#   burst      10,000 shot requests at the planner (billiard burst), with its memory before and
-#              after
+#   stale      20 requests for a ball whose state is 2 s older than they are
+#   bursts     twice 10,000 shot requests at the planner (billiard burst), with its memory
+#              before and after each
 #   nodes      every node process's last NODE_STATUS (billiard node-status on the drill's log)
 #
 # It needs the nodes as separate processes: a private network namespace or a multicast route.
@@ -99,26 +100,39 @@ wait "$sim" || fail "session 3 failed"
 event "session 3 done"
 
 rss_kb() { awk '/^VmRSS/ {print $2}' "/proc/$planner/status"; }
+# A ball state 2 s older than the requests, as from an estimator that stopped: never planned from.
+build/bin/billiard burst --json --requests 20 --state-age 2 >"$work/stale.json" \
+  2>>"$work/burst.err" || fail "stale burst failed"
+event "requests against a stale state answered"
+
+# Twice: memory that a burst takes and does not give back shows as growth after the second.
 rss_before=$(rss_kb)
 build/bin/billiard burst --json >"$work/burst.json" 2>>"$work/burst.err" || fail "burst failed"
 rss_after=$(rss_kb)
+build/bin/billiard burst --json >"$work/burst2.json" 2>>"$work/burst.err" ||
+  fail "second burst failed"
+rss_after_second=$(rss_kb)
 hwm=$(awk '/^VmHWM/ {print $2}' "/proc/$planner/status")
-event "burst done"
+event "two bursts done"
 sleep 2.2  # the nodes' next NODE_STATUS (once a second), after the burst
 
 kill -TERM "${pids[0]}"  # lcm-logger: flush the log
 wait "${pids[0]}" 2>/dev/null || true
 build/bin/billiard node-status "$work/drill.lcm" >"$work/nodes.json"
 
-python3 - "$work" "$rss_before" "$rss_after" "$hwm" "$(IFS=,; echo "${events[*]}")" <<'PY'
+python3 - "$work" "$rss_before" "$rss_after" "$rss_after_second" "$hwm" \
+  "$(IFS=,; echo "${events[*]}")" <<'PY'
 import json, sys
-work, before, after, hwm, events = sys.argv[1:6]
+work, before, after, after_second, hwm, events = sys.argv[1:7]
 load = lambda name: json.load(open(f"{work}/{name}.json"))
 print(json.dumps({
     "session1": load("session1"),
     "session3": load("session3"),
     "burst": load("burst"),
-    "planner_rss_kb": {"before_burst": int(before), "after_burst": int(after), "peak": int(hwm)},
+    "second_burst": load("burst2"),
+    "stale": load("stale"),
+    "planner_rss_kb": {"before_burst": int(before), "after_burst": int(after),
+                       "after_second_burst": int(after_second), "peak": int(hwm)},
     "nodes": load("nodes")["processes"],
     "events": json.loads(f"[{events}]"),
 }))

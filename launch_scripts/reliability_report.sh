@@ -99,6 +99,10 @@ else:
       "after a refusal that time cures (no state of the ball yet in a restarted planner).")
     w(f"- Session 3, a new table simulator after one killed mid-session (its clock starts again): "
       f"{shots_line(drill['session3'])}.")
+    st = drill["stale"]
+    w(f"- A ball state 2 s older than the requests (an estimator that stopped; the planner's max "
+      f"state age is 1 s): {st['requests']} requests, answered "
+      + ", ".join(f"{v} {k}" for k, v in sorted(st["statuses"].items())) + ".")
     w("")
     w("Each node process's last `NODE_STATUS` (from the drill's log, `billiard node-status`):")
     w("")
@@ -109,7 +113,7 @@ else:
         w(f"| {p['node']} | {p['uptime_s']:.1f} | {p['received']} | {p['dropped']} | "
           f"{p['published']} | {counters} | {p['max_latency_p99_us'] / 1e3:.2f} ms |")
     w("")
-    b, rss = drill["burst"], drill["planner_rss_kb"]
+    b, b2, rss = drill["burst"], drill["second_burst"], drill["planner_rss_kb"]
     statuses = ", ".join(f"{v} {k}" for k, v in sorted(b["statuses"].items()))
     w("## Load")
     w("")
@@ -118,8 +122,11 @@ else:
       f"{b['answered_twice']} answered twice: {statuses}. The queue holds 32 requests; beyond "
       f"it a request is answered busy at once. All answers were in after {b['total_s']:.2f} s; "
       f"round trip p50 {b['latency_ms']['p50']:.0f} ms, p99 {b['latency_ms']['p99']:.0f} ms, "
-      f"max {b['latency_ms']['max']:.0f} ms. Planner memory: {rss['before_burst'] / 1024:.1f} MB "
-      f"before, {rss['after_burst'] / 1024:.1f} MB after (peak {rss['peak'] / 1024:.1f} MB).")
+      f"max {b['latency_ms']['max']:.0f} ms. A second burst: {b2['answered']:,} answered, "
+      f"{b2['unanswered']} unanswered. Planner memory: {rss['before_burst'] / 1024:.1f} MB "
+      f"before, {rss['after_burst'] / 1024:.1f} MB after the first burst, "
+      f"{rss['after_second_burst'] / 1024:.1f} MB after the second (peak {rss['peak'] / 1024:.1f} "
+      "MB).")
     w("")
 w("## Lossy link")
 w("")
@@ -164,9 +171,7 @@ for s in edge["sets"]:
 w("")
 w(f"Ok plans that miss by more than 10 um when simulated again: **{wrong_ok}**.")
 w("")
-w("The planner never answers ok from a state older than its max state age (1 s by default): it "
-  "answers `stale_state` (`tests/planner_node_test.cc`, NeverActsOnAStaleState). A starved "
-  "planner says so:")
+w("A starved planner says so:")
 w("")
 for case in edge["non_convergence"]:
     w(f"- {case['case']}: {case['status']}, \"{case['reason']}\"")

@@ -32,6 +32,9 @@ TEST(FaultDrill, KilledNodesRestartedMidRunAndABurstOfRequests) {
   ExpectEveryShotLands(drill["session3"], "session 3");
   ASSERT_EQ(drill["session3"]["shots"].size(), 3u);
 
+  // An estimator that stopped leaves a state the planner must not act on.
+  EXPECT_EQ(drill["stale"]["statuses"], nlohmann::json({{"stale_state", 20}})) << drill["stale"];
+
   // Every request of the burst answered, from a queue that stays bounded, in bounded memory.
   const nlohmann::json& burst = drill["burst"];
   EXPECT_EQ(burst["unanswered"], 0) << burst;
@@ -40,6 +43,9 @@ TEST(FaultDrill, KilledNodesRestartedMidRunAndABurstOfRequests) {
   EXPECT_GE(burst["statuses"].value("ok", 0), 32) << "the queue's worth is planned";
   const nlohmann::json& rss = drill["planner_rss_kb"];
   EXPECT_LT(rss["after_burst"].get<int>() - rss["before_burst"].get<int>(), 16 * 1024) << rss;
+  // What the first burst took, the second reuses.
+  EXPECT_LT(rss["after_second_burst"].get<int>() - rss["after_burst"].get<int>(), 1024) << rss;
+  EXPECT_EQ(drill["second_burst"]["unanswered"], 0) << drill["second_burst"];
 
   // Each node process reported its health and saw the new clocks. Nothing was refused but the
   // late messages that tell a new clock close to the old one (two before the third makes it).

@@ -32,6 +32,7 @@ struct BurstArgs {
   int requests = 10000;
   double x = 0.6, y = 0.635;  // the ball [m]
   double timeout = 60.0;      // [s]
+  double state_age = 0.0;     // how much older the ball's state is than the requests [s]
   bool json = false;
 };
 
@@ -86,9 +87,9 @@ void Run(const BurstArgs& args) {
                                  std::chrono::system_clock::now().time_since_epoch())
                                  .count();
   table_state_t state{};
-  state.utime = utime;
+  state.utime = utime - static_cast<std::int64_t>(1e6 * args.state_age);
   ball_state_t ball{};
-  ball.utime = utime;
+  ball.utime = state.utime;
   ball.position[0] = args.x;
   ball.position[1] = args.y;
   state.balls = {ball};
@@ -195,6 +196,11 @@ void AddBurstCommand(CLI::App& app) {
   cmd->add_option("--lcm-url", args->lcm_url, "LCM URL (default: $LCM_DEFAULT_URL)");
   cmd->add_option("--timeout", args->timeout, "Longest wait for the answers [s]")
       ->capture_default_str();
+  cmd->add_option("--state-age", args->state_age,
+                 "Stamp the ball's state this much before the requests [s]: beyond the planner's "
+                 "--max-state-age every answer must be stale_state")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", args->json, "Print the figures as JSON on stdout");
   cmd->callback([args] { Run(*args); });
 }
