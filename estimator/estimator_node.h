@@ -57,7 +57,9 @@ class EstimatorNode {
 
  private:
   void OnImage(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
-  void Drop(const std::string& why) { health_.Dropped(std::string(kCameraImageChannel) + ": " + why); }
+  void Drop(const std::string& why) {
+    health_.Dropped(std::string(kCameraImageChannel) + ": " + why);
+  }
 
   lcm::LCM& lcm_;
   const ModelParameters params_;

@@ -52,5 +52,6 @@ int main(int argc, char** argv) {
   std::cerr << "estimator_node: " << params.name << " parameters, " << camera.width << "x"
             << camera.height << " camera, LCM " << billiard::nodes::DescribeUrl(lcm_url)
             << std::endl;
-  return billiard::nodes::HandleUntilStopped(lcm, "estimator_node", [&node] { return node.Work(); });
+  return billiard::nodes::HandleUntilStopped(lcm, "estimator_node",
+                                             [&node] { return node.Work(); });
 }

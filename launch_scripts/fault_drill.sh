@@ -33,7 +33,7 @@ $build && bash launch_scripts/build.sh
 source launch_scripts/lcm_network.sh
 enter_private_network "$0" --no-build --shots "$shots"
 if [ -z "${in_namespace:-}" ] && ! ip route get 239.255.76.67 >/dev/null 2>&1; then
-  echo '{"skipped": "no network namespace and no multicast route: the nodes cannot be separate processes"}'
+  echo '{"skipped": "no network namespace and no multicast route: no separate node processes"}'
   exit 0
 fi
 

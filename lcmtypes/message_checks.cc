@@ -243,7 +243,9 @@ std::string Check(const cue_command_t& m) {
     return "command " + std::to_string(m.request_id) + " has a non-finite number";
   }
   for (const std::vector<double>& p : m.path) {
-    if (!Finite(p.data(), 2)) return "command " + std::to_string(m.request_id) + " has a non-finite path";
+    if (!Finite(p.data(), 2)) {
+      return "command " + std::to_string(m.request_id) + " has a non-finite path";
+    }
   }
   if (m.status == cue_command_t::STATUS_OK) {
     if (!(m.cue_speed > 0.0)) return "an ok command with cue_speed " + std::to_string(m.cue_speed);

@@ -66,8 +66,9 @@ TEST(NodeHealth, AFloodOfRefusalsIsCountedButNotAllLogged) {
   std::this_thread::sleep_for(milliseconds(1100));
   health.Dropped("later");
   ASSERT_EQ(log.size(), NodeHealth::kLogLinesPerSecond + 1u);
-  EXPECT_EQ(log.back(), "dropped: later (" + std::to_string(10000 - NodeHealth::kLogLinesPerSecond) +
-                            " earlier refusals not logged)");
+  const int not_logged = 10000 - NodeHealth::kLogLinesPerSecond;
+  EXPECT_EQ(log.back(),
+            "dropped: later (" + std::to_string(not_logged) + " earlier refusals not logged)");
 }
 
 TEST(NodeHealth, ALogThatThrowsDoesNotTakeTheNodeWithIt) {

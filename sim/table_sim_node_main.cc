@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
   app.add_option("--camera-rate", options.camera_rate, "Frames per second")->capture_default_str();
   app.add_flag("--realtime", realtime, "Real time instead of lockstep");
   billiard::FaultInjection& faults = options.faults;
-  app.add_option("--drop-frames", faults.drop_frames, "Fault injection: probability a frame is lost")
+  app.add_option("--drop-frames", faults.drop_frames,
+                 "Fault injection: probability a frame is lost")
       ->check(CLI::Range(0.0, 1.0));
   app.add_option("--reorder-frames", faults.reorder_frames,
                  "Fault injection: probability a frame is sent after the next")
