@@ -44,6 +44,17 @@ int HandleUntilStopped(lcm::LCM& lcm, const std::string& name,
   return 0;
 }
 
+void HandleUntilIdle(lcm::LCM& lcm, const std::function<bool()>& work) {
+  bool more_work = true;
+  while (more_work) {
+    while (lcm.handleTimeout(0) > 0) {
+    }
+    more_work = work && work();
+  }
+  while (lcm.handleTimeout(0) > 0) {  // what the last item published
+  }
+}
+
 std::string DescribeUrl(const std::string& lcm_url) {
   return lcm_url.empty() ? "the default URL" : "'" + lcm_url + "'";
 }

@@ -26,6 +26,11 @@ bool StopRequested();
 int HandleUntilStopped(lcm::LCM& lcm, const std::string& name,
                        const std::function<bool()>& work = nullptr);
 
+// Handles every message already waiting and the work it causes (`work` as above, called until it
+// returns false), until neither is left: one process on memq://, where nothing arrives that was
+// not published here (in-process runs, replays, tests).
+void HandleUntilIdle(lcm::LCM& lcm, const std::function<bool()>& work = nullptr);
+
 // "the default URL" or "'URL'", for log lines.
 std::string DescribeUrl(const std::string& lcm_url);
 

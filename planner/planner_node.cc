@@ -234,8 +234,9 @@ void PlannerNode::OnShotRequest(const lcm::ReceiveBuffer* rbuf, const std::strin
         return;
       }
     }
+    const std::int64_t state_utime = StateUtime(request.ball_id);
     for (const Answered& a : answered_) {
-      if (a.request == bytes && a.state_utime == StateUtime(request.ball_id)) {
+      if (a.request == bytes && a.state_utime == state_utime) {
         health_.Count("duplicate");
         return Publish(a.command, arrived);
       }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "billiard/table_state_t.hpp"
+#include "node_loop.h"
 #include "run_command.h"
 
 namespace billiard::planner {
@@ -71,16 +72,9 @@ class PlannerNodeTest : public ::testing::Test {
     ASSERT_EQ(lcm_.publish(kTableStateChannel, &state), 0);
   }
 
-  // Runs the node as its main loop does (node_loop.h) until it has nothing left to do.
+  // Runs the node as its main loop does until it has nothing left to do.
   void RunNode() {
-    bool more_work = true;
-    while (more_work) {
-      while (lcm_.handleTimeout(0) > 0) {
-      }
-      more_work = node_.Work();
-    }
-    while (lcm_.handleTimeout(0) > 0) {
-    }
+    nodes::HandleUntilIdle(lcm_, [this] { return node_.Work(); });
   }
 
   // Publishes the request and runs the node: the answer, or nullopt if there is none.

@@ -11,6 +11,7 @@
 #include "camera_model.h"
 #include "command_line.h"
 #include "estimator_node.h"
+#include "node_loop.h"
 #include "planner_node.h"
 
 namespace billiard::cli {
@@ -95,12 +96,7 @@ void Run(const ReplayArgs& args) {
     if (e->channel == estimator::kCameraImageChannel || e->channel == planner::kShotRequestChannel) {
       ++inputs;
       lcm.publish(e->channel, e->data, e->datalen);
-      do {
-        while (lcm.handleTimeout(0) > 0) {
-        }
-      } while (planner.Work());
-      while (lcm.handleTimeout(0) > 0) {
-      }
+      nodes::HandleUntilIdle(lcm, [&planner] { return planner.Work(); });
     } else if (e->channel == estimator::kTableStateChannel) {
       recorded_states.emplace_back(p, p + e->datalen);
     } else if (e->channel == planner::kCueCommandChannel) {
