@@ -1,11 +1,11 @@
-#include "estimator_benchmark.h"
+#include "bench/estimator_benchmark.h"
 
 #include <chrono>
 #include <filesystem>
 
-#include "ball_estimator.h"
-#include "format.h"
-#include "speed_error.h"
+#include "bench/format.h"
+#include "bench/speed_error.h"
+#include "estimator/ball_estimator.h"
 
 namespace billiard::bench {
 
@@ -37,25 +37,27 @@ using estimator::shots::Rmse;
 
 }  // namespace
 
-CameraModel BenchmarkCamera(const ModelParameters& p) {
-  return CameraModel::Overhead(p.table, 1280, 720, 2.5, 0.92, {-0.05, 0.01, 0.0, 0.0, 0.0});
+camera::CameraModel BenchmarkCamera(const physics::ModelParameters& p) {
+  return camera::CameraModel::Overhead(p.table, 1280, 720, 2.5, 0.92, {-0.05, 0.01, 0.0, 0.0, 0.0});
 }
 
-RenderOptions BenchmarkRenderOptions() {
-  RenderOptions render;
+render::RenderOptions BenchmarkRenderOptions() {
+  render::RenderOptions render;
   render.noise_sigma = 3.0;
   render.exposure_s = 1.0 / 240;
   return render;
 }
 
 RenderedRun EstimateRenderedScene(const estimator::shots::Scene& scene, double duration,
-                                  const CameraModel& camera, const ModelParameters& params,
-                                  const RenderOptions& render, double rate) {
-  const TableRenderer renderer(camera, params, render);
-  std::vector<RenderBall> balls;
+                                  const camera::CameraModel& camera,
+                                  const physics::ModelParameters& params,
+                                  const render::RenderOptions& render, double rate) {
+  const render::TableRenderer renderer(camera, params, render);
+  std::vector<render::RenderBall> balls;
   for (std::size_t i = 0; i < scene.rest.size(); ++i) {
     const int id = static_cast<int>(i);
-    balls.push_back({id, PoolBallColour(id % 16), [&scene, i](double t) { return scene.At(i, t); }});
+    balls.push_back(
+        {id, render::PoolBallColour(id % 16), [&scene, i](double t) { return scene.At(i, t); }});
   }
   estimator::EstimatorOptions options;
   options.tracker.measurement_sigma = 0.3e-3;
@@ -78,7 +80,7 @@ RenderedRun EstimateRenderedScene(const estimator::shots::Scene& scene, double d
   return run;
 }
 
-EstimatorBenchmarkResult RunEstimatorBenchmark(const ModelParameters& p,
+EstimatorBenchmarkResult RunEstimatorBenchmark(const physics::ModelParameters& p,
                                                const EstimatorBenchmarkOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   EstimatorBenchmarkResult r;

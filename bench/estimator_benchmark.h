@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "camera_model.h"
-#include "shot_scenes.h"
-#include "table_renderer.h"
+#include "estimator/testing/shot_scenes.h"
+#include "sim/camera/camera_model.h"
+#include "sim/render/table_renderer.h"
 
 namespace billiard::bench {
 
@@ -23,15 +23,16 @@ struct RenderedRun {
 
 // Renders `scene` every 1 / rate seconds up to `duration` and runs the estimator on each frame.
 RenderedRun EstimateRenderedScene(const estimator::shots::Scene& scene, double duration,
-                                  const CameraModel& camera, const ModelParameters& params,
-                                  const RenderOptions& render, double rate = 120.0);
+                                  const camera::CameraModel& camera,
+                                  const physics::ModelParameters& params,
+                                  const render::RenderOptions& render, double rate = 120.0);
 
 // The overhead camera of the table simulator at 1280x720, with a mild barrel lens.
-CameraModel BenchmarkCamera(const ModelParameters& p);
+camera::CameraModel BenchmarkCamera(const physics::ModelParameters& p);
 
 // The frames the benchmark and the estimator's test render: noise sigma 3 gray levels, an
 // exposure of half the frame interval.
-RenderOptions BenchmarkRenderOptions();
+render::RenderOptions BenchmarkRenderOptions();
 
 struct EstimatorBenchmarkOptions {
   int scenes = 6;
@@ -49,7 +50,7 @@ struct EstimatorBenchmarkResult {
   double wall_s = 0.0;
 };
 
-EstimatorBenchmarkResult RunEstimatorBenchmark(const ModelParameters& p,
+EstimatorBenchmarkResult RunEstimatorBenchmark(const physics::ModelParameters& p,
                                                const EstimatorBenchmarkOptions& options);
 
 // Writes estimator_report.md into `dir` (created if missing).

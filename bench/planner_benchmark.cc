@@ -1,13 +1,13 @@
-#include "planner_benchmark.h"
+#include "bench/planner_benchmark.h"
 
 #include <chrono>
 #include <filesystem>
 #include <map>
 
-#include "format.h"
-#include "request_suite.h"
-#include "simulator.h"
-#include "speed_error.h"
+#include "bench/format.h"
+#include "bench/speed_error.h"
+#include "planner/testing/request_suite.h"
+#include "sim/physics/simulator.h"
 
 namespace billiard::bench {
 
@@ -26,11 +26,11 @@ std::string SpinChoice(const planner::ShotRequest& q) {
   return q.side_spin != 0.0 ? name + " + side" : name;
 }
 
-double VerifiedMiss(const ModelParameters& p, const planner::ShotRequest& q,
+double VerifiedMiss(const physics::ModelParameters& p, const planner::ShotRequest& q,
                     const planner::ShotPlan& plan) {
-  const BallState launch = MakeBallState(q.from.x(), q.from.y(), plan.v0.x(), plan.v0.y(),
-                                         plan.w0.x(), plan.w0.y(), plan.w0.z());
-  const Arrival a = SimulateArrival(p, launch, q.final_speed, 120.0);
+  const physics::BallState launch = physics::MakeBallState(
+      q.from.x(), q.from.y(), plan.v0.x(), plan.v0.y(), plan.w0.x(), plan.w0.y(), plan.w0.z());
+  const physics::Arrival a = physics::SimulateArrival(p, launch, q.final_speed, 120.0);
   return a.reached ? (a.state.head<2>() - q.to).norm() : -1.0;
 }
 
@@ -100,14 +100,14 @@ std::vector<PlannerVariant> PlannerVariants() {
           {"refined/central-differences", differences}};
 }
 
-PlannerBenchmarkResult RunPlannerBenchmark(const ModelParameters& p,
+PlannerBenchmarkResult RunPlannerBenchmark(const physics::ModelParameters& p,
                                            const PlannerBenchmarkOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   PlannerBenchmarkResult r;
   r.params = p.name;
   r.requests = options.requests;
   r.seed = options.seed;
-  planner::RequestSuite suite(p.table, options.seed);
+  planner::testing::RequestSuite suite(p.table, options.seed);
   std::vector<planner::ShotRequest> shots;
   for (int i = 0; i < options.requests; ++i) shots.push_back(suite.Next(i));
   for (const PlannerVariant& variant : PlannerVariants()) {

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "parameters.h"
-#include "shot_planner.h"
+#include "planner/shot_planner.h"
+#include "sim/physics/parameters.h"
 
 namespace billiard::bench {
 
@@ -45,7 +45,7 @@ struct PlannerBenchmarkResult {
   double wall_s = 0.0;
 };
 
-PlannerBenchmarkResult RunPlannerBenchmark(const ModelParameters& p,
+PlannerBenchmarkResult RunPlannerBenchmark(const physics::ModelParameters& p,
                                            const PlannerBenchmarkOptions& options);
 
 // Writes planner_report.md and planner_results.csv into `dir` (created if missing).

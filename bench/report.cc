@@ -1,4 +1,4 @@
-#include "report.h"
+#include "bench/report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "format.h"
+#include "bench/format.h"
 
 namespace billiard::bench {
 
@@ -194,8 +194,8 @@ nlohmann::json ModelChoiceTable(const BenchmarkResult& r) {
     nlohmann::json rows = nlohmann::json::array();
     for (const MethodSummary& s : r.summaries) {
       if (s.kind != kind || s.failures > 0 || s.runs == 0) continue;
-      rows.push_back({{"model", ModelName(s.method.model)},
-                      {"integrator", IntegratorName(s.method.integrator)},
+      rows.push_back({{"model", physics::ModelName(s.method.model)},
+                      {"integrator", physics::IntegratorName(s.method.integrator)},
                       {"tolerance", s.method.tolerance},
                       {"quadrature_tolerance", s.method.quadrature_tolerance},
                       {"median_us", s.median_us},

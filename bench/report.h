@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "speed_error.h"
+#include "bench/speed_error.h"
 
 namespace billiard::bench {
 

@@ -5,15 +5,15 @@
 #include <string>
 #include <vector>
 
-#include "ball_state.h"
-#include "parameters.h"
+#include "sim/physics/ball_state.h"
+#include "sim/physics/parameters.h"
 
 namespace billiard::bench {
 
 struct Scene {
   std::string name;   // "fig6", "random017", "hard-backspin-reversal", ...
   std::string group;  // "figure", "random" or "hard"
-  BallState initial;
+  physics::BallState initial;
   double t_end = 8.0;
 };
 
@@ -22,6 +22,7 @@ struct Scene {
 // cue; a quarter natural roll, a quarter with the tip on the vertical centre line (stun, follow,
 // draw), half with the tip uniform over the disc the cue allows (p.cue.max_tip_offset r); v0 and
 // w0 follow from the cue strike model.
-std::vector<Scene> SceneSuite(const ModelParameters& p, int random_shots, std::uint32_t seed);
+std::vector<Scene> SceneSuite(const physics::ModelParameters& p, int random_shots,
+                              std::uint32_t seed);
 
 }  // namespace billiard::bench

@@ -1,4 +1,4 @@
-#include "speed_error.h"
+#include "bench/speed_error.h"
 
 #include <algorithm>
 #include <atomic>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "model_choice.h"
+#include "sim/model_choice/model_choice.h"
 
 namespace billiard::bench {
 
@@ -19,21 +19,23 @@ std::string Scientific(double x) {
   return text;
 }
 
-double EndpointDistance(const BallState& a, const BallState& b) {
+double EndpointDistance(const physics::BallState& a, const physics::BallState& b) {
   return (a.head<2>() - b.head<2>()).norm();
 }
 
 // Final states of `method` on every scene, computed on `threads` threads.
-std::vector<BallState> Converged(const ModelParameters& p, const std::vector<Scene>& scenes,
-                                 const Method& method, int threads,
-                                 const BenchmarkOptions& options, double* quadrature_error) {
-  std::vector<BallState> finals(scenes.size());
+std::vector<physics::BallState> Converged(const physics::ModelParameters& p,
+                                          const std::vector<Scene>& scenes, const Method& method,
+                                          int threads, const BenchmarkOptions& options,
+                                          double* quadrature_error) {
+  std::vector<physics::BallState> finals(scenes.size());
   std::atomic<std::size_t> next{0}, done{0};
   std::vector<std::string> failures(scenes.size());
   const auto work = [&] {
     for (std::size_t i; (i = next++) < scenes.size();) {
       try {
-        const SimulationResult r = Simulate(p, scenes[i].initial, scenes[i].t_end, method.Options());
+        const physics::SimulationResult r =
+            physics::Simulate(p, scenes[i].initial, scenes[i].t_end, method.Options());
         finals[i] = r.final_state;
         if (r.quadrature && quadrature_error) *quadrature_error = r.quadrature->error_estimate;
       } catch (const std::exception& e) {
@@ -64,23 +66,23 @@ std::vector<BallState> Converged(const ModelParameters& p, const std::vector<Sce
 }
 
 // Runs once; cheap methods are repeated until 2 ms have passed and their mean is reported.
-MethodRun TimeRun(const ModelParameters& p, const Scene& scene, const Method& method,
-                  SimulationResult* result) {
+MethodRun TimeRun(const physics::ModelParameters& p, const Scene& scene, const Method& method,
+                  physics::SimulationResult* result) {
   MethodRun run;
   run.method = method.Name();
   run.scene = scene.name;
   run.group = scene.group;
-  run.kind = SceneKindOf(scene.initial, p);
+  run.kind = model_choice::SceneKindOf(scene.initial, p);
   using Clock = std::chrono::steady_clock;
-  const SimulationOptions options = method.Options();
+  const physics::SimulationOptions options = method.Options();
   try {
     auto start = Clock::now();
-    *result = Simulate(p, scene.initial, scene.t_end, options);
+    *result = physics::Simulate(p, scene.initial, scene.t_end, options);
     double us = std::chrono::duration<double, std::micro>(Clock::now() - start).count();
     const int repeats = static_cast<int>(std::clamp(2000.0 / std::max(us, 1e-3), 1.0, 5000.0));
     if (repeats > 1) {
       start = Clock::now();
-      for (int i = 0; i < repeats; ++i) Simulate(p, scene.initial, scene.t_end, options);
+      for (int i = 0; i < repeats; ++i) physics::Simulate(p, scene.initial, scene.t_end, options);
       us = std::chrono::duration<double, std::micro>(Clock::now() - start).count() / repeats;
     }
     run.wall_us = us;
@@ -129,31 +131,31 @@ MethodSummary Summarize(const Method& method, const std::string& kind,
 }  // namespace
 
 std::string Method::Family() const {
-  if (model == Model::kClosedForm) return ModelName(model);
-  return ModelName(model) + "/" + IntegratorName(integrator);
+  if (model == physics::Model::kClosedForm) return physics::ModelName(model);
+  return physics::ModelName(model) + "/" + physics::IntegratorName(integrator);
 }
 
 std::string Method::Name() const {
-  if (model == Model::kClosedForm) return Family();
+  if (model == physics::Model::kClosedForm) return Family();
   std::string name = Family() + "/tol=" + Scientific(tolerance);
-  if (model == Model::kIntegral) name += "/quad=" + Scientific(quadrature_tolerance);
+  if (model == physics::Model::kIntegral) name += "/quad=" + Scientific(quadrature_tolerance);
   return name;
 }
 
-SimulationOptions Method::Options() const {
-  SimulationOptions o;
+physics::SimulationOptions Method::Options() const {
+  physics::SimulationOptions o;
   o.model = model;
   o.integrator = integrator;
   o.tolerance = tolerance;
   o.quadrature_tolerance = quadrature_tolerance;
   // An explicit method on the stiff phases: give up rather than run for minutes.
-  if (integrator == Integrator::kDopri5) o.max_steps = 3'000'000;
+  if (integrator == physics::Integrator::kDopri5) o.max_steps = 3'000'000;
   return o;
 }
 
 std::vector<Method> BenchmarkMethods(bool quick) {
-  using M = Model;
-  using I = Integrator;
+  using M = physics::Model;
+  using I = physics::Integrator;
   std::vector<Method> methods = {{M::kClosedForm, I::kRodas4, 0.0, 0.0}};
   const std::vector<double> rodas = quick ? std::vector<double>{1e-5, 1e-7}
                                           : std::vector<double>{1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
@@ -176,18 +178,19 @@ double Quantile(std::vector<double> values, double q) {
   return values[below] * (1 - f) + values[below + 1] * f;
 }
 
-BenchmarkResult RunBenchmark(const ModelParameters& p, const BenchmarkOptions& options) {
+BenchmarkResult RunBenchmark(const physics::ModelParameters& p, const BenchmarkOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   BenchmarkResult result;
   result.params = p.name;
   result.scenes = SceneSuite(p, options.random_shots, options.seed);
   result.methods = BenchmarkMethods(options.quick);
-  result.approx_reference = {Model::kApproximate, Integrator::kRodas4, 1e-10, 0.0};
-  result.integral_reference = {Model::kIntegral, Integrator::kRodas4, options.quick ? 1e-8 : 1e-9,
-                               1e-6};
-  const std::vector<BallState> approx_ref =
+  result.approx_reference = {physics::Model::kApproximate, physics::Integrator::kRodas4, 1e-10,
+                             0.0};
+  result.integral_reference = {physics::Model::kIntegral, physics::Integrator::kRodas4,
+                               options.quick ? 1e-8 : 1e-9, 1e-6};
+  const std::vector<physics::BallState> approx_ref =
       Converged(p, result.scenes, result.approx_reference, options.threads, options, nullptr);
-  const std::vector<BallState> integral_ref =
+  const std::vector<physics::BallState> integral_ref =
       Converged(p, result.scenes, result.integral_reference, options.threads, options,
                 &result.integral_reference_quadrature_error);
 
@@ -195,12 +198,14 @@ BenchmarkResult RunBenchmark(const ModelParameters& p, const BenchmarkOptions& o
     options.progress("timing " + method.Name() + " on " + std::to_string(result.scenes.size()) +
                      " scenes");
     for (std::size_t i = 0; i < result.scenes.size(); ++i) {
-      SimulationResult sim;
+      physics::SimulationResult sim;
       MethodRun run = TimeRun(p, result.scenes[i], method, &sim);
       if (run.ok) {
-        const BallState& self = method.model == Model::kIntegral ? integral_ref[i] : approx_ref[i];
-        run.error_self_m =
-            method.model == Model::kClosedForm ? 0.0 : EndpointDistance(sim.final_state, self);
+        const physics::BallState& self =
+            method.model == physics::Model::kIntegral ? integral_ref[i] : approx_ref[i];
+        run.error_self_m = method.model == physics::Model::kClosedForm
+                               ? 0.0
+                               : EndpointDistance(sim.final_state, self);
         run.error_integral_m = EndpointDistance(sim.final_state, integral_ref[i]);
       }
       result.runs.push_back(run);

@@ -7,22 +7,22 @@
 #include <string>
 #include <vector>
 
-#include "parameters.h"
-#include "scene_suite.h"
-#include "simulator.h"
+#include "bench/scene_suite.h"
+#include "sim/physics/parameters.h"
+#include "sim/physics/simulator.h"
 
 namespace billiard::bench {
 
 // A model with its integrator and tolerances.
 struct Method {
-  Model model = Model::kApproximate;
-  Integrator integrator = Integrator::kRodas4;
+  physics::Model model = physics::Model::kApproximate;
+  physics::Integrator integrator = physics::Integrator::kRodas4;
   double tolerance = 1e-7;
   double quadrature_tolerance = 1e-6;  // integral model only
 
   std::string Family() const;  // "closed-form", "approx/rodas4", "integral/rodas4", ...
   std::string Name() const;    // Family() plus the tolerances
-  SimulationOptions Options() const;
+  physics::SimulationOptions Options() const;
 };
 
 // The methods of a full run, or of a quick one.
@@ -71,7 +71,7 @@ struct BenchmarkResult {
   double wall_s = 0.0;
 };
 
-BenchmarkResult RunBenchmark(const ModelParameters& p, const BenchmarkOptions& options);
+BenchmarkResult RunBenchmark(const physics::ModelParameters& p, const BenchmarkOptions& options);
 
 // The q-quantile (0..1, linear interpolation) of `values`; 0 when empty.
 double Quantile(std::vector<double> values, double q);

@@ -1,4 +1,4 @@
-#include "assignment.h"
+#include "estimator/assignment.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,5 +1,5 @@
 // The assignment against brute force over every permutation.
-#include "assignment.h"
+#include "estimator/assignment.h"
 
 #include <gtest/gtest.h>
 

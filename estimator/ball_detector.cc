@@ -1,4 +1,4 @@
-#include "ball_detector.h"
+#include "estimator/ball_detector.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -514,7 +514,7 @@ bool ClothModel::InArea(const Eigen::Vector2d& pixel) const {
   return x >= 0 && y >= 0 && x < area.cols && y < area.rows && area.at<uint8_t>(y, x) != 0;
 }
 
-double ExpectedRadiusPx(const CameraModel& camera, double ball_radius) {
+double ExpectedRadiusPx(const camera::CameraModel& camera, double ball_radius) {
   const Eigen::Vector3d centre =
       camera.Unproject({0.5 * (camera.width - 1), 0.5 * (camera.height - 1)}, ball_radius);
   return ball_radius / camera.MetresPerPixel(centre);

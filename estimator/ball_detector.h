@@ -31,7 +31,7 @@
 #include <optional>
 #include <vector>
 
-#include "camera_model.h"
+#include "sim/camera/camera_model.h"
 
 namespace billiard::estimator {
 
@@ -68,7 +68,7 @@ struct DetectorOptions {
 };
 
 // The expected radius [px] of a ball of radius `ball_radius` [m] at the image centre.
-double ExpectedRadiusPx(const CameraModel& camera, double ball_radius);
+double ExpectedRadiusPx(const camera::CameraModel& camera, double ball_radius);
 
 class BallDetector {
  public:

@@ -1,7 +1,7 @@
 // The ball detector on the real photograph and on deterministic variants of it (an arm and a cue,
 // extra shadows, projected light, noise, motion blur, another cloth colour), and its sub-pixel
 // accuracy on anti-aliased synthetic frames whose ball centres are known exactly.
-#include "ball_detector.h"
+#include "estimator/ball_detector.h"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,10 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
-#include "real_table_photo.h"
-#include "table_renderer.h"
+#include "estimator/testing/real_table_photo.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/render/table_renderer.h"
+#include "tests/support/test_data.h"
 
 namespace billiard::estimator {
 namespace {
@@ -22,11 +24,20 @@ namespace {
 using testing::HandBall;
 using testing::kRealTablePhotoRadiusPx;
 
-cv::Mat Photo() {
-  const cv::Mat image = cv::imread(testing::RealTablePhoto(), cv::IMREAD_COLOR);
-  EXPECT_FALSE(image.empty()) << testing::RealTablePhoto();
-  return image;
-}
+// The tests on the real photograph, skipped with the reason where the test data is absent.
+class RealPhoto : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const std::string path = billiard::testing::TestDataPath(testing::kRealTablePhoto);
+    if (path.empty()) GTEST_SKIP() << billiard::testing::MissingTestData(testing::kRealTablePhoto);
+    photo_ = cv::imread(path, cv::IMREAD_COLOR);
+    ASSERT_FALSE(photo_.empty()) << path;
+  }
+  cv::Mat Photo() const { return photo_.clone(); }
+
+ private:
+  cv::Mat photo_;
+};
 
 std::vector<BallDetection> DetectWithHint(const cv::Mat& image) {
   DetectorOptions options;
@@ -78,7 +89,7 @@ cv::Mat Relight(const cv::Mat& image, const cv::Mat& mask, double gain) {
   return out;
 }
 
-TEST(BallDetector, FindsEveryBallOfTheRealPhotographOnce) {
+TEST_F(RealPhoto, FindsEveryBallOfTheRealPhotographOnce) {
   const cv::Mat photo = Photo();
   ExpectTheBalls(DetectWithHint(photo), "radius hint");
   // Without a hint the radius comes from the blobs, and the same balls are found.
@@ -93,7 +104,7 @@ TEST(BallDetector, FindsEveryBallOfTheRealPhotographOnce) {
   std::fprintf(stderr, "grey copy: %zu balls found\n", grey_balls.size());
 }
 
-TEST(BallDetector, IgnoresAnArmAndACueOverTheCloth) {
+TEST_F(RealPhoto, IgnoresAnArmAndACueOverTheCloth) {
   const cv::Mat photo = Photo();
   cv::Mat image = photo.clone();
   cv::Mat covered = cv::Mat::zeros(photo.size(), CV_8U);
@@ -139,7 +150,7 @@ TEST(BallDetector, IgnoresAnArmAndACueOverTheCloth) {
   }
 }
 
-TEST(BallDetector, IgnoresShadowsAndProjectedLight) {
+TEST_F(RealPhoto, IgnoresShadowsAndProjectedLight) {
   const cv::Mat photo = Photo();
   // Shadows: soft darker patches of cloth, ball-sized and larger.
   cv::Mat shadow = cv::Mat::zeros(photo.size(), CV_32F);
@@ -165,7 +176,7 @@ TEST(BallDetector, IgnoresShadowsAndProjectedLight) {
   }
 }
 
-TEST(BallDetector, SurvivesNoiseAndMotionBlur) {
+TEST_F(RealPhoto, SurvivesNoiseAndMotionBlur) {
   const cv::Mat photo = Photo();
   cv::Mat noise(photo.size(), CV_16SC3), noisy;
   cv::RNG rng(7);
@@ -182,7 +193,7 @@ TEST(BallDetector, SurvivesNoiseAndMotionBlur) {
   ExpectTheBalls(DetectWithHint(blurred), "motion blur, 9 px");
 }
 
-TEST(BallDetector, LearnsAnotherClothColourAndLight) {
+TEST_F(RealPhoto, LearnsAnotherClothColourAndLight) {
   // The whole frame's hue turned by 60 degrees (the cloth goes blue) and its brightness scaled by
   // 0.7: nothing in the detector may depend on this photo's colours.
   cv::Mat hsv;
@@ -320,18 +331,18 @@ TEST(BallDetector, TablePositionsFromRenderedFramesWithinHalfAMillimetre) {
   // The simulator's renderer (sim/table_renderer.h): a pool table seen from 2.5 m, about 2.2 mm
   // per pixel, balls scattered at random (some against the cushions), sensor noise, shading and
   // contact shadows. The estimator needs 0.5 mm RMS on the table.
-  const ModelParameters params = LoadParameters("pool");
+  const physics::ModelParameters params = params::LoadParameters("pool");
   const double r = params.ball.radius;
-  const CameraModel camera = CameraModel::Overhead(params.table, 1280, 720);
-  RenderOptions render;
+  const camera::CameraModel camera = camera::CameraModel::Overhead(params.table, 1280, 720);
+  render::RenderOptions render;
   render.exposure_s = 0;
   std::mt19937 rng(5);
   double sum_squares = 0;
   int count = 0;
   for (int frame = 0; frame < 3; ++frame) {
     render.seed = 20 + frame;
-    const TableRenderer renderer(camera, params, render);
-    std::vector<RenderBall> balls;
+    const render::TableRenderer renderer(camera, params, render);
+    std::vector<render::RenderBall> balls;
     std::vector<Eigen::Vector2d> truth;
     std::uniform_real_distribution<double> x(r, params.table.length - r), y(r, params.table.width - r);
     while (truth.size() < 16) {
@@ -342,8 +353,9 @@ TEST(BallDetector, TablePositionsFromRenderedFramesWithinHalfAMillimetre) {
       });
       if (!free) continue;
       truth.push_back(p);
-      balls.push_back(RenderBall::AtRest(static_cast<int>(truth.size()) - 1,
-                                         PoolBallColour(static_cast<int>(truth.size()) - 1), p));
+      balls.push_back(render::RenderBall::AtRest(
+          static_cast<int>(truth.size()) - 1,
+          render::PoolBallColour(static_cast<int>(truth.size()) - 1), p));
     }
     const cv::Mat image = renderer.Render(balls, 0.0);
     DetectorOptions options;
@@ -372,7 +384,7 @@ TEST(BallDetector, TablePositionsFromRenderedFramesWithinHalfAMillimetre) {
   EXPECT_LT(rmse, 0.5e-3);
 }
 
-TEST(BallDetector, TimePerFrame) {
+TEST_F(RealPhoto, TimePerFrame) {
   const cv::Mat photo = Photo();
   DetectorOptions options;
   options.ball_radius_px = kRealTablePhotoRadiusPx;

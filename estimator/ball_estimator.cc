@@ -1,18 +1,19 @@
-#include "ball_estimator.h"
+#include "estimator/ball_estimator.h"
 
 namespace billiard::estimator {
 
 namespace {
 
-DetectorOptions WithRadius(DetectorOptions options, const CameraModel& camera, double radius) {
+DetectorOptions WithRadius(DetectorOptions options, const camera::CameraModel& camera,
+                           double radius) {
   if (options.ball_radius_px <= 0.0) options.ball_radius_px = ExpectedRadiusPx(camera, radius);
   return options;
 }
 
 }  // namespace
 
-BallEstimator::BallEstimator(const CameraModel& camera, const ModelParameters& params,
-                             EstimatorOptions options)
+BallEstimator::BallEstimator(const camera::CameraModel& camera,
+                             const physics::ModelParameters& params, EstimatorOptions options)
     : camera_(camera),
       params_(params),
       options_(options),

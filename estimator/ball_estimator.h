@@ -11,10 +11,10 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "ball_detector.h"
-#include "ball_tracker.h"
-#include "camera_model.h"
-#include "parameters.h"
+#include "estimator/ball_detector.h"
+#include "estimator/ball_tracker.h"
+#include "sim/camera/camera_model.h"
+#include "sim/physics/parameters.h"
 
 namespace billiard::estimator {
 
@@ -32,7 +32,7 @@ struct FrameStats {
 class BallEstimator {
  public:
   // The detector's expected radius comes from the camera and the ball unless set in options.
-  BallEstimator(const CameraModel& camera, const ModelParameters& params,
+  BallEstimator(const camera::CameraModel& camera, const physics::ModelParameters& params,
                 EstimatorOptions options = {});
 
   // Processes the frame exposed at `time` [s]. Returns false, changing nothing, for an empty
@@ -42,13 +42,13 @@ class BallEstimator {
   // The confirmed tracks: what is published.
   std::vector<TrackedBall> Balls() const;
 
-  const CameraModel& camera() const { return camera_; }
+  const camera::CameraModel& camera() const { return camera_; }
 
  private:
   Eigen::Vector2d ToTable(const Eigen::Vector2d& pixel) const;
 
-  CameraModel camera_;
-  ModelParameters params_;
+  camera::CameraModel camera_;
+  physics::ModelParameters params_;
   EstimatorOptions options_;
   BallDetector detector_;
   BallTracker tracker_;

@@ -1,11 +1,11 @@
-#include "ball_tracker.h"
+#include "estimator/ball_tracker.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 
-#include "assignment.h"
+#include "estimator/assignment.h"
 
 namespace billiard::estimator {
 
@@ -64,7 +64,7 @@ Eigen::Matrix<double, 7, 7> TrackedBall::BallCovariance(double radius) const {
   return c;
 }
 
-BallTracker::BallTracker(const ModelParameters& params, TrackerOptions options)
+BallTracker::BallTracker(const physics::ModelParameters& params, TrackerOptions options)
     : params_(params), options_(options) {}
 
 void BallTracker::Advance(TrackedBall& t, double time) const {

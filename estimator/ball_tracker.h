@@ -18,7 +18,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "parameters.h"
+#include "sim/physics/parameters.h"
 
 namespace billiard::estimator {
 
@@ -54,7 +54,7 @@ struct TrackedBall {
 
 class BallTracker {
  public:
-  BallTracker(const ModelParameters& params, TrackerOptions options = {});
+  BallTracker(const physics::ModelParameters& params, TrackerOptions options = {});
 
   // Advances the tracks to `time` and updates them with the balls detected then (table
   // positions at the ball-centre height). Returns false, changing nothing, if time goes back.
@@ -70,7 +70,7 @@ class BallTracker {
   void Advance(TrackedBall& track, double time) const;
   void Correct(TrackedBall& track, const Eigen::Vector2d& measured) const;
 
-  ModelParameters params_;
+  physics::ModelParameters params_;
   TrackerOptions options_;
   std::vector<TrackedBall> tracks_;
   int next_id_ = 0;

@@ -1,6 +1,6 @@
 // The tracker on simulated shots (5-DOF model) observed with the detector's noise: accuracy
 // against the ground truth, identities kept, stops and strikes followed.
-#include "ball_tracker.h"
+#include "estimator/ball_tracker.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <memory>
 #include <random>
 
-#include "simulator.h"
-#include "shot_scenes.h"
+#include "estimator/testing/shot_scenes.h"
+#include "sim/physics/simulator.h"
 
 namespace billiard::estimator {
 namespace {
@@ -59,10 +59,11 @@ TEST(BallTracker, SixteenBallsThreeStruckAreTrackedWithoutSwapsWithinTheBounds) 
 
 TEST(BallTracker, ARollingBallStopsInsteadOfTurningBack) {
   // Rolling at 0.3 m/s with the pool set's 5/7 mu_r g = 0.07 m/s^2: it stops after 4.3 s.
-  const ModelParameters& p = Pool();
+  const physics::ModelParameters& p = Pool();
   const double r = p.ball.radius;
   const auto rolling =
-      Simulate(p, MakeBallState(0.5, 0.6, 0.3, 0.0, 0.0, 0.3 / r, 0.0), 8.0).trajectory;
+      physics::Simulate(p, physics::MakeBallState(0.5, 0.6, 0.3, 0.0, 0.0, 0.3 / r, 0.0), 8.0)
+          .trajectory;
   BallTracker tracker(p);
   for (int f = 0; f <= 8 * 120; ++f) {
     const double t = f / 120.0;

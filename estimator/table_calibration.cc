@@ -1,4 +1,4 @@
-#include "table_calibration.h"
+#include "estimator/table_calibration.h"
 
 #include <Eigen/QR>
 #include <algorithm>
@@ -79,7 +79,8 @@ MarkerCandidate Candidate(const cv::Mat& grey, const Quad& q, bool decoded) {
 
 }  // namespace
 
-MarkerLayout MarkerLayout::AroundTable(const TableParameters& table, double margin, double height) {
+MarkerLayout MarkerLayout::AroundTable(const physics::TableParameters& table, double margin,
+                                       double height) {
   MarkerLayout layout;
   layout.centres = {Eigen::Vector3d(-margin, table.width + margin, height),
                     Eigen::Vector3d(table.length + margin, table.width + margin, height),
@@ -135,12 +136,12 @@ std::optional<std::array<Eigen::Vector2d, 4>> FindCornerMarkers(const cv::Mat& i
 }
 
 std::optional<CalibrationResult> CalibrateTable(const cv::Mat& image, const MarkerLayout& layout,
-                                                const CameraModel& intrinsics) {
+                                                const camera::CameraModel& intrinsics) {
   const auto markers = FindCornerMarkers(image);
   if (!markers) return std::nullopt;
   CalibrationResult result;
   result.markers = *markers;
-  CameraModel& camera = result.camera;
+  camera::CameraModel& camera = result.camera;
   camera = intrinsics;
   camera.width = image.cols;
   camera.height = image.rows;

@@ -22,8 +22,8 @@
 #include <optional>
 #include <string>
 
-#include "camera_model.h"
-#include "parameters.h"
+#include "sim/camera/camera_model.h"
+#include "sim/physics/parameters.h"
 
 namespace billiard::estimator {
 
@@ -33,7 +33,8 @@ struct MarkerLayout {
   std::array<Eigen::Vector3d, 4> centres;
   // Markers `margin` [m] outside each corner of the playing surface, diagonally, at `height` [m]
   // above the cloth.
-  static MarkerLayout AroundTable(const TableParameters& table, double margin, double height);
+  static MarkerLayout AroundTable(const physics::TableParameters& table, double margin,
+                                  double height);
 };
 
 // The centres [px] of the four markers in image order (top-left, top-right, bottom-right,
@@ -41,7 +42,7 @@ struct MarkerLayout {
 std::optional<std::array<Eigen::Vector2d, 4>> FindCornerMarkers(const cv::Mat& image);
 
 struct CalibrationResult {
-  CameraModel camera;
+  camera::CameraModel camera;
   std::array<Eigen::Vector2d, 4> markers;  // found centres [px]
   double rms_reprojection_px = 0;         // of the marker centres
 };
@@ -51,6 +52,6 @@ struct CalibrationResult {
 // image width (a 53 degree horizontal field of view) and the image centre are used. Empty when
 // the markers are not all found.
 std::optional<CalibrationResult> CalibrateTable(const cv::Mat& image, const MarkerLayout& layout,
-                                                const CameraModel& intrinsics = {});
+                                                const camera::CameraModel& intrinsics = {});
 
 }  // namespace billiard::estimator

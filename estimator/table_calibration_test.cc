@@ -1,6 +1,6 @@
 // Table calibration: marker centres and camera pose on frames rendered from a known camera, and
 // the markers of the real photograph.
-#include "table_calibration.h"
+#include "estimator/table_calibration.h"
 
 #include <gtest/gtest.h>
 
@@ -12,16 +12,17 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "ball_detector.h"
-#include "real_table_photo.h"
+#include "estimator/ball_detector.h"
+#include "estimator/testing/real_table_photo.h"
+#include "tests/support/test_data.h"
 
 namespace billiard::estimator {
 namespace {
 
 // A tilted camera over a 2.54 x 1.27 m table.
-CameraModel TiltedCamera() {
-  const TableParameters table{2.54, 1.27};
-  CameraModel c = CameraModel::Overhead(table, 1280, 720, 2.4, 0.75);
+camera::CameraModel TiltedCamera() {
+  const physics::TableParameters table{2.54, 1.27};
+  camera::CameraModel c = camera::CameraModel::Overhead(table, 1280, 720, 2.4, 0.75);
   const Eigen::Matrix3d tilt =
       (Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(-0.02, Eigen::Vector3d::UnitY()))
           .toRotationMatrix();
@@ -33,7 +34,7 @@ CameraModel TiltedCamera() {
 
 // Draws ArUco markers (side `side` [m], white border when inverted) flat at the layout's
 // centres, as `camera` sees them, on a dark rail around a green cloth.
-cv::Mat RenderMarkers(const CameraModel& camera, const MarkerLayout& layout, double side,
+cv::Mat RenderMarkers(const camera::CameraModel& camera, const MarkerLayout& layout, double side,
                       bool inverted) {
   cv::Mat image(camera.height, camera.width, CV_8UC3, cv::Scalar(40, 50, 110));
   std::vector<cv::Point> cloth;
@@ -70,7 +71,7 @@ cv::Mat RenderMarkers(const CameraModel& camera, const MarkerLayout& layout, dou
 }
 
 TEST(TableCalibration, RecoversAKnownCameraFromRenderedMarkers) {
-  const CameraModel truth = TiltedCamera();
+  const camera::CameraModel truth = TiltedCamera();
   const MarkerLayout layout = MarkerLayout::AroundTable({2.54, 1.27}, 0.1, 0.04);
   for (const bool inverted : {false, true}) {
     double marker_error = 0;
@@ -101,8 +102,9 @@ TEST(TableCalibration, RecoversAKnownCameraFromRenderedMarkers) {
 }
 
 TEST(TableCalibration, FindsTheMarkersOfTheRealPhotograph) {
-  const cv::Mat photo = cv::imread(testing::RealTablePhoto(), cv::IMREAD_COLOR);
-  ASSERT_FALSE(photo.empty());
+  BILLIARD_TEST_DATA_OR_SKIP(path, testing::kRealTablePhoto);
+  const cv::Mat photo = cv::imread(path, cv::IMREAD_COLOR);
+  ASSERT_FALSE(photo.empty()) << path;
   const auto markers = FindCornerMarkers(photo);
   ASSERT_TRUE(markers.has_value());
   // Read off the image by hand: the centres of the four white-bordered squares.

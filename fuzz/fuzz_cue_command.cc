@@ -1,5 +1,5 @@
 // cue_command_t: the planner's answer, with its predicted path and a refusal's reason.
-#include "support.h"
+#include "fuzz/support.h"
 
 namespace billiard::fuzz {
 

@@ -4,8 +4,8 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "support.h"
-#include "image_codec.h"
+#include "fuzz/support.h"
+#include "lcmtypes/image_codec.h"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size,
                                         std::size_t max_size);
@@ -15,7 +15,7 @@ namespace {
 
 // Small limits keep an execution fast (a few-byte JPEG may announce the whole limit) and reach
 // the same code as the estimator's.
-const DecodeLimits kLimits{1024, 1024};
+const messages::DecodeLimits kLimits{1024, 1024};
 
 cv::Mat Pattern(int width, int height) {
   cv::Mat image(height, width, CV_8UC3);
@@ -42,7 +42,7 @@ std::string Describe(const image_t& m) {
 
 // What a decoded frame must be: the announced size, the channels of its format, and the same
 // pixels again after a round trip through the encoder the simulator uses.
-void RequireDecodedFrame(const image_t& m, const DecodedImage& d) {
+void RequireDecodedFrame(const image_t& m, const messages::DecodedImage& d) {
   if (!d.error.empty() || d.image.empty() || d.image.cols != m.width ||
       d.image.rows != m.height) {
     Fail("DecodeImage accepted a " + Describe(m) + " frame as " + std::to_string(d.image.cols) +
@@ -55,15 +55,18 @@ void RequireDecodedFrame(const image_t& m, const DecodedImage& d) {
     Fail("DecodeImage gave OpenCV type " + std::to_string(d.image.type()) + " for a " +
          Describe(m) + " frame");
   }
-  const ImageEncoding encoding = m.pixelformat == image_t::PIXEL_FORMAT_GRAY  ? ImageEncoding::kGray
-                                 : m.pixelformat == image_t::PIXEL_FORMAT_RGB ? ImageEncoding::kRgb
-                                                                              : ImageEncoding::kMjpeg;
-  const DecodedImage again = DecodeImage(EncodeImage(d.image, m.utime, encoding), kLimits);
+  const messages::ImageEncoding encoding =
+      m.pixelformat == image_t::PIXEL_FORMAT_GRAY  ? messages::ImageEncoding::kGray
+      : m.pixelformat == image_t::PIXEL_FORMAT_RGB ? messages::ImageEncoding::kRgb
+                                                   : messages::ImageEncoding::kMjpeg;
+  const messages::DecodedImage again =
+      messages::DecodeImage(messages::EncodeImage(d.image, m.utime, encoding), kLimits);
   if (!again.ok || again.image.size() != d.image.size() || again.image.type() != d.image.type()) {
     Fail("a decoded " + Describe(m) + " frame, encoded again, does not decode to its size: " +
          again.error);
   }
-  if (encoding != ImageEncoding::kMjpeg && cv::norm(again.image, d.image, cv::NORM_INF) != 0) {
+  if (encoding != messages::ImageEncoding::kMjpeg &&
+      cv::norm(again.image, d.image, cv::NORM_INF) != 0) {
     Fail("a decoded " + Describe(m) + " frame changes in a raw round trip");
   }
 }
@@ -74,7 +77,7 @@ std::vector<Bytes> Seeds() {
   const cv::Mat colour = Pattern(32, 24);
   const cv::Mat gray = Gray(colour);
   // Drivers pad rows: 5 bytes after each.
-  image_t padded = EncodeImage(gray, 3, ImageEncoding::kGray);
+  image_t padded = messages::EncodeImage(gray, 3, messages::ImageEncoding::kGray);
   padded.row_stride = gray.cols + 5;
   padded.data.clear();
   for (int y = 0; y < gray.rows; ++y) {
@@ -82,10 +85,10 @@ std::vector<Bytes> Seeds() {
     padded.data.insert(padded.data.end(), 5, 0);
   }
   padded.size = static_cast<std::int32_t>(padded.data.size());
-  return {Encode(EncodeImage(colour, 1, ImageEncoding::kGray)),
-          Encode(EncodeImage(colour, 2, ImageEncoding::kRgb)), Encode(padded),
-          Encode(EncodeImage(colour, 4, ImageEncoding::kMjpeg, 75)),
-          Encode(EncodeImage(gray, 5, ImageEncoding::kMjpeg, 90))};
+  return {Encode(messages::EncodeImage(colour, 1, messages::ImageEncoding::kGray)),
+          Encode(messages::EncodeImage(colour, 2, messages::ImageEncoding::kRgb)), Encode(padded),
+          Encode(messages::EncodeImage(colour, 4, messages::ImageEncoding::kMjpeg, 75)),
+          Encode(messages::EncodeImage(gray, 5, messages::ImageEncoding::kMjpeg, 90))};
 }
 
 }  // namespace billiard::fuzz
@@ -96,7 +99,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!fuzz::DecodeAndCheck(data, size, m)) return 0;
   // DecodeImage is the estimator's front door whatever Check said of the header, so it gets
   // every message that decodes.
-  const DecodedImage d = DecodeImage(m, fuzz::kLimits);
+  const messages::DecodedImage d = messages::DecodeImage(m, fuzz::kLimits);
   if (d.ok) {
     fuzz::RequireDecodedFrame(m, d);
   } else {

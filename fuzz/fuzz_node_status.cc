@@ -1,5 +1,5 @@
 // node_status_t: strings and a counted array of strings, the layout with the most to walk.
-#include "support.h"
+#include "fuzz/support.h"
 
 namespace billiard::fuzz {
 

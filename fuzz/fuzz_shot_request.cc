@@ -1,5 +1,5 @@
 // shot_request_t: what the planner is asked to do.
-#include "support.h"
+#include "fuzz/support.h"
 
 namespace billiard::fuzz {
 

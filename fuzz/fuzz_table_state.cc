@@ -1,5 +1,5 @@
 // table_state_t: the estimator's and the simulator's output, which the planner decodes.
-#include "support.h"
+#include "fuzz/support.h"
 
 namespace billiard::fuzz {
 namespace {

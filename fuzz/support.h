@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "message_checks.h"
+#include "lcmtypes/message_checks.h"
 
 namespace billiard::fuzz {
 

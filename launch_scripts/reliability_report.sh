@@ -8,7 +8,7 @@
 #   fuzzing       fuzz/run_fuzzers.sh, S seconds per target (default 30)
 #   fault drill   launch_scripts/fault_drill.sh (kills, restarts, a new clock, a 10,000-request
 #                 burst), N shots (default 8)
-#   lossy link    table_sim_node --in-process, N shots with 10 % of frames dropped, 5 % reordered
+#   lossy link    billiard loop (one process), N shots with 10 % of frames dropped, 5 % reordered
 #                 and 5 % repeated, against the same shots without
 #   edge cases    billiard edge-report (mu = 0, d = 0, eps = 1e-9, starved planner)
 #
@@ -34,8 +34,8 @@ bash fuzz/run_fuzzers.sh --seconds "$fuzz_seconds" --json >"$work/fuzz.json"
 echo "reliability_report: fault drill" >&2
 bash launch_scripts/fault_drill.sh --no-build --shots "$shots" >"$work/drill.json"
 echo "reliability_report: lossy link" >&2
-build/bin/table_sim_node --in-process --shots "$shots" --seed 4 2>/dev/null >"$work/clean.json"
-build/bin/table_sim_node --in-process --shots "$shots" --seed 4 --drop-frames 0.1 \
+build/bin/billiard loop --shots "$shots" --seed 4 2>/dev/null >"$work/clean.json"
+build/bin/billiard loop --shots "$shots" --seed 4 --drop-frames 0.1 \
   --reorder-frames 0.05 --duplicate 0.05 2>/dev/null >"$work/lossy.json"
 echo "reliability_report: edge cases" >&2
 build/bin/billiard edge-report 2>/dev/null >"$work/edge.json"
@@ -131,7 +131,7 @@ else:
 w("## Lossy link")
 w("")
 c = lossy.get("counters", {})
-w(f"The same {len(clean['shots'])} lockstep shots (one process, `table_sim_node --in-process`), "
+w(f"The same {len(clean['shots'])} lockstep shots (one process, `billiard loop`), "
   "once over a clean link and once with frames dropped (10 %), held back behind the next (5 %) "
   "and sent twice (5 %), and requests sent twice (5 %):")
 w("")

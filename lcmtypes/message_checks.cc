@@ -1,4 +1,4 @@
-#include "message_checks.h"
+#include "lcmtypes/message_checks.h"
 
 #include <cmath>
 #include <cstdint>

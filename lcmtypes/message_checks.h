@@ -17,11 +17,11 @@
 #include <cstddef>
 #include <string>
 
-#include "billiard/cue_command_t.hpp"
-#include "billiard/image_t.hpp"
-#include "billiard/node_status_t.hpp"
-#include "billiard/shot_request_t.hpp"
-#include "billiard/table_state_t.hpp"
+#include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/image_t.hpp"
+#include "lcmtypes/billiard/node_status_t.hpp"
+#include "lcmtypes/billiard/shot_request_t.hpp"
+#include "lcmtypes/billiard/table_state_t.hpp"
 
 namespace billiard::messages {
 

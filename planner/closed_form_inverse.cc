@@ -1,4 +1,4 @@
-#include "closed_form_inverse.h"
+#include "planner/closed_form_inverse.h"
 
 #include <cmath>
 #include <sstream>
@@ -23,7 +23,7 @@ double SpinRatio(SpinStyle style) {
   return 1.0;
 }
 
-LaunchSolution InvertClosedForm(const ShotRequest& q, const ClosedFormParameters& p) {
+LaunchSolution InvertClosedForm(const ShotRequest& q, const physics::ClosedFormParameters& p) {
   LaunchSolution s;
   const double numbers[] = {q.from.x(), q.from.y(), q.to.x(), q.to.y(), q.final_speed,
                             q.side_spin, q.slide_length.value_or(0.0)};

@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-#include "closed_form.h"
+#include "sim/physics/closed_form.h"
 
 namespace billiard::planner {
 
@@ -43,6 +43,6 @@ struct LaunchSolution {
   double slide_length = 0.0;  // x1 of the solution (the distance, if it arrives still sliding)
 };
 
-LaunchSolution InvertClosedForm(const ShotRequest& request, const ClosedFormParameters& p);
+LaunchSolution InvertClosedForm(const ShotRequest& request, const physics::ClosedFormParameters& p);
 
 }  // namespace billiard::planner

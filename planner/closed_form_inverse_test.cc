@@ -1,32 +1,35 @@
 // The closed-form inverse against the forward closed form (sim/closed_form.h).
-#include "closed_form_inverse.h"
+#include "planner/closed_form_inverse.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "closed_form.h"
-#include "parameters.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/physics/closed_form.h"
+#include "sim/physics/parameters.h"
 
 namespace billiard::planner {
 namespace {
 
-ClosedFormParameters Paper() { return ClosedFormParameters::From(LoadParameters("paper")); }
+physics::ClosedFormParameters Paper() {
+  return physics::ClosedFormParameters::From(params::LoadParameters("paper"));
+}
 
 // Where the forward model's speed falls to v2 (its rest point when v2 = 0), and the state there.
-BallState WhereSpeedFallsTo(const ClosedFormTrajectory& t, double v2) {
+physics::BallState WhereSpeedFallsTo(const physics::ClosedFormTrajectory& t, double v2) {
   if (v2 == 0.0) return t.At(t.stop_time());
   double lo = t.slide_end_time(), hi = t.stop_time();
   for (int i = 0; i < 200; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (t.At(mid).segment<2>(kVx).norm() > v2 ? lo : hi) = mid;
+    (t.At(mid).segment<2>(physics::kVx).norm() > v2 ? lo : hi) = mid;
   }
   return t.At(lo);
 }
 
 TEST(ClosedFormInverse, ForwardModelEndsOnTheTargetForEveryStyleAndSlideLength) {
-  const ClosedFormParameters p = Paper();
+  const physics::ClosedFormParameters p = Paper();
   std::mt19937 rng(8);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int solved = 0;
@@ -48,10 +51,10 @@ TEST(ClosedFormInverse, ForwardModelEndsOnTheTargetForEveryStyleAndSlideLength) 
       continue;
     }
     ++solved;
-    const BallState start = MakeBallState(q.from.x(), q.from.y(), s.v0.x(), s.v0.y(), s.w0.x(),
-                                          s.w0.y(), s.w0.z());
-    const ClosedFormTrajectory forward(p, start);
-    const BallState there = WhereSpeedFallsTo(forward, q.final_speed);
+    const physics::BallState start = physics::MakeBallState(q.from.x(), q.from.y(), s.v0.x(),
+                                                            s.v0.y(), s.w0.x(), s.w0.y(), s.w0.z());
+    const physics::ClosedFormTrajectory forward(p, start);
+    const physics::BallState there = WhereSpeedFallsTo(forward, q.final_speed);
     EXPECT_LT((there.head<2>() - q.to).norm(), 1e-9) << "request " << i;
     // Validity of the seed's inverse: v0 >= R w0 >= -5/2 v0 along the shot.
     const Eigen::Vector2d e = (q.to - q.from).normalized();
@@ -64,7 +67,7 @@ TEST(ClosedFormInverse, ForwardModelEndsOnTheTargetForEveryStyleAndSlideLength) 
 }
 
 TEST(ClosedFormInverse, StylesSetTheSpinRatio) {
-  const ClosedFormParameters p = Paper();
+  const physics::ClosedFormParameters p = Paper();
   ShotRequest q;
   q.to = {1.0, 0.0};
   for (auto [style, ratio] : {std::pair{SpinStyle::kStun, 0.0}, {SpinStyle::kNatural, 1.0},
@@ -79,7 +82,7 @@ TEST(ClosedFormInverse, StylesSetTheSpinRatio) {
 }
 
 TEST(ClosedFormInverse, RefusesBadRequestsWithAReason) {
-  const ClosedFormParameters p = Paper();
+  const physics::ClosedFormParameters p = Paper();
   const auto refused = [&](ShotRequest q) {
     const LaunchSolution s = InvertClosedForm(q, p);
     EXPECT_FALSE(s.ok);
@@ -99,7 +102,7 @@ TEST(ClosedFormInverse, RefusesBadRequestsWithAReason) {
   ShotRequest too_long = q;
   too_long.slide_length = 5.0;
   refused(too_long);
-  ClosedFormParameters no_roll = p;
+  physics::ClosedFormParameters no_roll = p;
   no_roll.mu_roll = 0.0;
   EXPECT_FALSE(InvertClosedForm(q, no_roll).ok);
 }
@@ -107,7 +110,7 @@ TEST(ClosedFormInverse, RefusesBadRequestsWithAReason) {
 TEST(ClosedFormInverse, WithoutRollingResistanceTheBallArrivesStillSliding) {
   // mu_r = 0: the speed falls only while the ball slides, so the forward model must come down to
   // v2 on the target before its sliding ends; what cannot is refused with the reason.
-  ClosedFormParameters p = Paper();
+  physics::ClosedFormParameters p = Paper();
   p.mu_roll = 0.0;
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -124,8 +127,9 @@ TEST(ClosedFormInverse, WithoutRollingResistanceTheBallArrivesStillSliding) {
       continue;
     }
     ++solved;
-    const ClosedFormTrajectory forward(p, MakeBallState(q.from.x(), q.from.y(), s.v0.x(),
-                                                        s.v0.y(), s.w0.x(), s.w0.y(), s.w0.z()));
+    const physics::ClosedFormTrajectory forward(
+        p, physics::MakeBallState(q.from.x(), q.from.y(), s.v0.x(), s.v0.y(), s.w0.x(), s.w0.y(),
+                                  s.w0.z()));
     const double t = forward.TimeAtSpeed(q.final_speed);
     EXPECT_LT(t, forward.slide_end_time()) << "request " << i;
     EXPECT_LT((forward.At(t).head<2>() - q.to).norm(), 1e-9) << "request " << i;

@@ -1,4 +1,4 @@
-#include "edge_report.h"
+#include "planner/edge_report.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "closed_form.h"
-#include "shot_planner.h"
-#include "simulator.h"
+#include "planner/shot_planner.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/physics/closed_form.h"
+#include "sim/physics/simulator.h"
 
 namespace billiard::planner {
 
@@ -19,8 +20,8 @@ struct EdgeSet {
   double mu, d, eps_t, eps_r;
 };
 
-ModelParameters WithContact(const EdgeSet& set) {
-  ModelParameters p = LoadParameters("paper");
+physics::ModelParameters WithContact(const EdgeSet& set) {
+  physics::ModelParameters p = params::LoadParameters("paper");
   p.name = set.name;
   p.contact.mu = set.mu;
   p.contact.d = set.d;
@@ -29,19 +30,21 @@ ModelParameters WithContact(const EdgeSet& set) {
   return p;
 }
 
-nlohmann::json Array(const BallState& s) { return std::vector<double>(s.data(), s.data() + 7); }
-
-double Energy(const BallState& s, const ModelParameters& p) {
-  return KineticEnergy(s, p.ball.mass, p.ball.radius);
+nlohmann::json Array(const physics::BallState& s) {
+  return std::vector<double>(s.data(), s.data() + 7);
 }
 
-nlohmann::json Simulation(const ModelParameters& p, const std::string& scene,
-                          const BallState& initial) {
+double Energy(const physics::BallState& s, const physics::ModelParameters& p) {
+  return physics::KineticEnergy(s, p.ball.mass, p.ball.radius);
+}
+
+nlohmann::json Simulation(const physics::ModelParameters& p, const std::string& scene,
+                          const physics::BallState& initial) {
   constexpr double kEnd = 8.0;
   nlohmann::json j = {{"scene", scene}, {"initial", Array(initial)}, {"t_end", kEnd}};
   try {
     const auto start = std::chrono::steady_clock::now();
-    const SimulationResult r = Simulate(p, initial, kEnd);
+    const physics::SimulationResult r = physics::Simulate(p, initial, kEnd);
     j["wall_us"] =
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
     j["steps"] = r.stats.steps;
@@ -59,9 +62,11 @@ nlohmann::json Simulation(const ModelParameters& p, const std::string& scene,
     }
     j["max_energy_rise_J"] = rise;
     // The closed form has no pivot friction, and no end of sliding without friction.
-    if (initial[kWz] == 0.0 && p.contact.mu > 0.0) {
+    if (initial[physics::kWz] == 0.0 && p.contact.mu > 0.0) {
       const Eigen::Vector2d exact =
-          ClosedFormTrajectory(ClosedFormParameters::From(p), initial).At(kEnd).head<2>();
+          physics::ClosedFormTrajectory(physics::ClosedFormParameters::From(p), initial)
+              .At(kEnd)
+              .head<2>();
       j["closed_form_final"] = {exact.x(), exact.y()};
       j["closed_form_gap_m"] = (exact - r.final_state.head<2>()).norm();
     }
@@ -96,7 +101,7 @@ std::vector<Request> Requests() {
           {"draw, wz 10, 1.5 m/s", shot(1.5, SpinStyle::kDraw, 10.0)}};
 }
 
-nlohmann::json Plan(const ModelParameters& p, const Request& r,
+nlohmann::json Plan(const physics::ModelParameters& p, const Request& r,
                     const PlannerOptions& options = {}) {
   const ShotPlan plan = PlanShot(r.shot, p, options);
   nlohmann::json j = {{"request", r.name},
@@ -108,9 +113,10 @@ nlohmann::json Plan(const ModelParameters& p, const Request& r,
                       {"launch_speed", plan.v0.norm()},
                       {"refined_miss_m", plan.refined_miss_m}};
   if (plan.status == PlanStatus::kOk) {
-    const BallState launch = MakeBallState(r.shot.from.x(), r.shot.from.y(), plan.v0.x(),
-                                           plan.v0.y(), plan.w0.x(), plan.w0.y(), plan.w0.z());
-    const Arrival a = SimulateArrival(p, launch, r.shot.final_speed, 60.0);
+    const physics::BallState launch =
+        physics::MakeBallState(r.shot.from.x(), r.shot.from.y(), plan.v0.x(), plan.v0.y(),
+                               plan.w0.x(), plan.w0.y(), plan.w0.z());
+    const physics::Arrival a = physics::SimulateArrival(p, launch, r.shot.final_speed, 60.0);
     j["resimulated_miss_m"] = (a.state.head<2>() - r.shot.to).norm();
   }
   return j;
@@ -131,22 +137,22 @@ nlohmann::json EdgeParameterReport() {
       {"mu = 0, d = 1 (refused)", 0.0, 1.0, 0.01, 0.01},
       {"eps_t = eps_r = 0 (refused)", 0.2, 1.0, 0.0, 0.0},
   };
-  const std::pair<const char*, BallState> scenes[] = {
-      {"Fig. 6: rolling", MakeBallState(0, 0, 0, 1, -50, 0, 0)},
-      {"stun", MakeBallState(0, 0, 0, 1, 0, 0, 0)},
-      {"Fig. 8: back spin", MakeBallState(0, 0, 0, 1, 150, 5, 0)},
-      {"Fig. 9: side spin", MakeBallState(0, 0, 0, 1, -50, -3.5, -150)},
-      {"Fig. 10: back and side spin", MakeBallState(0, 0, 0, 1, 150, 0, -150)},
+  const std::pair<const char*, physics::BallState> scenes[] = {
+      {"Fig. 6: rolling", physics::MakeBallState(0, 0, 0, 1, -50, 0, 0)},
+      {"stun", physics::MakeBallState(0, 0, 0, 1, 0, 0, 0)},
+      {"Fig. 8: back spin", physics::MakeBallState(0, 0, 0, 1, 150, 5, 0)},
+      {"Fig. 9: side spin", physics::MakeBallState(0, 0, 0, 1, -50, -3.5, -150)},
+      {"Fig. 10: back and side spin", physics::MakeBallState(0, 0, 0, 1, 150, 0, -150)},
   };
   const std::vector<Request> requests = Requests();
 
   nlohmann::json report = {{"sets", nlohmann::json::array()}};
   for (const EdgeSet& set : sets) {
-    const ModelParameters p = WithContact(set);
+    const physics::ModelParameters p = WithContact(set);
     nlohmann::json j = {{"name", set.name},   {"mu", set.mu},       {"d", set.d},
                         {"eps_t", set.eps_t}, {"eps_r", set.eps_r}, {"valid", true}};
     try {
-      ValidateParameters(p);
+      physics::ValidateParameters(p);
     } catch (const std::invalid_argument& e) {
       j["valid"] = false;
       j["reason"] = e.what();
@@ -163,16 +169,17 @@ nlohmann::json EdgeParameterReport() {
   }
 
   // Budgets too small for a spin-heavy shot: the planner must refuse, never answer ok.
-  const ModelParameters paper = LoadParameters("paper");
-  const ModelParameters tiny_eps = WithContact({"eps_t = eps_r = 1e-9", 0.2, 1.0, 1e-9, 1e-9});
+  const physics::ModelParameters paper = params::LoadParameters("paper");
+  const physics::ModelParameters tiny_eps =
+      WithContact({"eps_t = eps_r = 1e-9", 0.2, 1.0, 1e-9, 1e-9});
   const Request draw{"draw, wz 20, stop", requests[2].shot};
   struct Budget {
     std::string name;
-    const ModelParameters& params;
+    const physics::ModelParameters& params;
     int max_iterations;
     long max_steps;
   };
-  const long steps = SimulationOptions().max_steps;
+  const long steps = physics::SimulationOptions().max_steps;
   const Budget budgets[] = {{"paper, no iteration", paper, 0, steps},
                             {"paper, one iteration", paper, 1, steps},
                             {"eps = 1e-9, one iteration", tiny_eps, 1, steps},

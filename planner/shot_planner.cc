@@ -1,4 +1,4 @@
-#include "shot_planner.h"
+#include "planner/shot_planner.h"
 
 #include <ceres/ceres.h>
 
@@ -20,10 +20,10 @@ std::string PlanStatusName(PlanStatus status) {
   return "?";
 }
 
-SimulationOptions PlannerOptions::DefaultRefinementSimulation() {
-  SimulationOptions o;
-  o.model = Model::kApproximate;
-  o.integrator = Integrator::kRodas4;
+physics::SimulationOptions PlannerOptions::DefaultRefinementSimulation() {
+  physics::SimulationOptions o;
+  o.model = physics::Model::kApproximate;
+  o.integrator = physics::Integrator::kRodas4;
   // Endpoints within about 0.4 um of the converged model (docs/benchmarks/report.md), at two
   // thirds of the cost of the simulator's default.
   o.tolerance = 1e-6;
@@ -46,11 +46,11 @@ class Launch {
   Launch(const Eigen::Vector2d& from, double spin_ratio, double side_spin, double radius)
       : from_(from), k_(spin_ratio), wz_(side_spin), r_(radius) {}
 
-  BallState State(double speed, double heading) const {
+  physics::BallState State(double speed, double heading) const {
     const Eigen::Vector2d e(std::cos(heading), std::sin(heading));
     const double spin = k_ * speed / r_;  // about z x e
-    return MakeBallState(from_.x(), from_.y(), speed * e.x(), speed * e.y(), -spin * e.y(),
-                         spin * e.x(), wz_);
+    return physics::MakeBallState(from_.x(), from_.y(), speed * e.x(), speed * e.y(), -spin * e.y(),
+                                  spin * e.x(), wz_);
   }
 
   // d State / d (speed, heading).
@@ -71,8 +71,8 @@ class Launch {
 // The miss at the target, (X, Y) of the arrival minus the target, as a function of the launch
 // speed and heading.
 struct MissFunction {
-  const ModelParameters& params;
-  const SimulationOptions& simulation;
+  const physics::ModelParameters& params;
+  const physics::SimulationOptions& simulation;
   Launch launch;
   const ShotRequest& request;
   double t_max;
@@ -83,10 +83,10 @@ struct MissFunction {
   bool Evaluate(double speed, double heading, Eigen::Vector2d* miss,
                 Eigen::Matrix2d* jacobian) const {
     ++*simulations;
-    Arrival a;
+    physics::Arrival a;
     try {
-      a = SimulateArrival(params, launch.State(speed, heading), request.final_speed, t_max,
-                          simulation, jacobian != nullptr);
+      a = physics::SimulateArrival(params, launch.State(speed, heading), request.final_speed, t_max,
+                                   simulation, jacobian != nullptr);
     } catch (const std::exception&) {
       return false;
     }
@@ -147,7 +147,7 @@ class StopWhenClose : public ceres::IterationCallback {
   double cost_;
 };
 
-bool OnTable(const Eigen::Vector2d& x, const ModelParameters& p) {
+bool OnTable(const Eigen::Vector2d& x, const physics::ModelParameters& p) {
   const double r = p.ball.radius;
   return x.x() >= r && x.x() <= p.table.length - r && x.y() >= r && x.y() <= p.table.width - r;
 }
@@ -159,13 +159,14 @@ ShotPlan Refused(PlanStatus status, std::string reason) {
   return plan;
 }
 
-ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const PlannerOptions& options) {
+ShotPlan Plan(const ShotRequest& q, const physics::ModelParameters& params,
+              const PlannerOptions& options) {
   try {
-    ValidateParameters(params);
+    physics::ValidateParameters(params);
   } catch (const std::invalid_argument& e) {
     return Refused(PlanStatus::kInvalid, std::string("invalid parameters: ") + e.what());
   }
-  const LaunchSolution guess = InvertClosedForm(q, ClosedFormParameters::From(params));
+  const LaunchSolution guess = InvertClosedForm(q, physics::ClosedFormParameters::From(params));
   if (guess.malformed) return Refused(PlanStatus::kInvalid, guess.reason);
   if (!OnTable(q.from, params)) {
     return Refused(PlanStatus::kOffTable, "the ball is not on the playing surface");
@@ -182,7 +183,8 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
   const double speed0 = guess.v0.norm();
   const Eigen::Vector2d e0 = guess.v0 / speed0;
   const double spin_ratio = r * (e0.x() * guess.w0.y() - e0.y() * guess.w0.x()) / speed0;
-  const LaunchSpeedRange speeds = LaunchSpeedsFor(spin_ratio, q.side_spin, params);
+  const physics::LaunchSpeedRange speeds =
+      physics::LaunchSpeedsFor(spin_ratio, q.side_spin, params);
   if (speeds.min > speeds.max) {
     std::ostringstream reason;
     reason.precision(3);
@@ -195,8 +197,8 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
   const Launch launch(q.from, spin_ratio, q.side_spin, r);
   // Long enough for the 5-DOF ball, which side spin and rolling resistance while sliding slow
   // down differently from the closed form, to arrive.
-  const ClosedFormTrajectory closed_form(ClosedFormParameters::From(params),
-                                         launch.State(speed0, std::atan2(e0.y(), e0.x())));
+  const physics::ClosedFormTrajectory closed_form(physics::ClosedFormParameters::From(params),
+                                                  launch.State(speed0, std::atan2(e0.y(), e0.x())));
   const double t_max = 3.0 * closed_form.TimeAtSpeed(q.final_speed) + 5.0;
 
   ShotPlan plan;
@@ -206,9 +208,11 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
   // Not through miss.Evaluate, which hides why a simulation failed: that reason (a step budget,
   // say) is what the refusal must report.
   ++plan.simulations;
-  plan.closed_form_miss_m = (SimulateArrival(params, launch.State(p[0], p[1]), q.final_speed,
-                                             t_max, options.simulation).state.head<2>() -
-                             q.to).norm();
+  plan.closed_form_miss_m = (physics::SimulateArrival(params, launch.State(p[0], p[1]),
+                                                      q.final_speed, t_max, options.simulation)
+                                 .state.head<2>() -
+                             q.to)
+                                .norm();
 
   // Turning the heading turns the whole path about the ball, so how far the ball gets depends on
   // the launch speed alone, and grows with it: a speed bound that already carries the ball past
@@ -219,9 +223,11 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
     if (!slowest && !fastest) return std::nullopt;
     const double bound = slowest ? speeds.min : speeds.max;
     ++plan.simulations;
-    const double travel = (SimulateArrival(params, launch.State(bound, 0.0), q.final_speed,
-                                           t_max, options.simulation).state.head<2>() -
-                           q.from).norm();
+    const double travel = (physics::SimulateArrival(params, launch.State(bound, 0.0), q.final_speed,
+                                                    t_max, options.simulation)
+                               .state.head<2>() -
+                           q.from)
+                              .norm();
     if (slowest && travel > distance + options.acceptable_miss) {
       std::ostringstream reason;
       reason.precision(3);
@@ -269,11 +275,11 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
     plan.iterations = static_cast<int>(summary.iterations.size()) - 1;
   }
 
-  const Arrival arrival = SimulateArrival(params, launch.State(p[0], p[1]), q.final_speed, t_max,
-                                          options.simulation);
+  const physics::Arrival arrival = physics::SimulateArrival(
+      params, launch.State(p[0], p[1]), q.final_speed, t_max, options.simulation);
   ++plan.simulations;
-  plan.v0 = arrival.trajectory->At(0.0).segment<2>(kVx);
-  plan.w0 = arrival.trajectory->At(0.0).segment<3>(kWx);
+  plan.v0 = arrival.trajectory->At(0.0).segment<2>(physics::kVx);
+  plan.w0 = arrival.trajectory->At(0.0).segment<3>(physics::kWx);
   plan.predicted_final = arrival.state.head<2>();
   plan.arrival_time = arrival.time;
   plan.refined_miss_m = (plan.predicted_final - q.to).norm();
@@ -301,7 +307,7 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
       return plan;
     }
   }
-  const StrokeSolution stroke = StrokeFor(plan.v0, plan.w0, params);
+  const physics::StrokeSolution stroke = physics::StrokeFor(plan.v0, plan.w0, params);
   if (!stroke.ok) {
     plan.status = PlanStatus::kUnreachable;
     plan.reason = stroke.reason;
@@ -314,7 +320,7 @@ ShotPlan Plan(const ShotRequest& q, const ModelParameters& params, const Planner
 
 }  // namespace
 
-ShotPlan PlanShot(const ShotRequest& request, const ModelParameters& params,
+ShotPlan PlanShot(const ShotRequest& request, const physics::ModelParameters& params,
                   const PlannerOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   ShotPlan plan;

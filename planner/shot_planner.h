@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "closed_form_inverse.h"
-#include "cue_strike.h"
-#include "parameters.h"
-#include "simulator.h"
+#include "planner/closed_form_inverse.h"
+#include "sim/physics/cue_strike.h"
+#include "sim/physics/parameters.h"
+#include "sim/physics/simulator.h"
 
 namespace billiard::planner {
 
@@ -43,7 +43,7 @@ enum class JacobianMethod {
 
 struct PlannerOptions {
   // The model the plan is refined against: the approximate 5-DOF model with RODAS4 by default.
-  SimulationOptions simulation = DefaultRefinementSimulation();
+  physics::SimulationOptions simulation = DefaultRefinementSimulation();
   // The refinement stops once the simulated miss is below this [m]; a plan whose miss stays
   // above `acceptable_miss` is refused as not converged.
   double miss_tolerance = 2e-6;
@@ -56,7 +56,7 @@ struct PlannerOptions {
   bool refine = true;
   JacobianMethod jacobian = JacobianMethod::kSensitivities;
 
-  static SimulationOptions DefaultRefinementSimulation();
+  static physics::SimulationOptions DefaultRefinementSimulation();
 };
 
 struct ShotPlan {
@@ -65,7 +65,7 @@ struct ShotPlan {
 
   Eigen::Vector2d v0 = Eigen::Vector2d::Zero();  // launch velocity [m/s]
   Eigen::Vector3d w0 = Eigen::Vector3d::Zero();  // launch spin [rad/s]
-  CueStroke stroke;
+  physics::CueStroke stroke;
 
   // The simulated arrival of the planned launch: where its speed falls to the final speed (or it
   // stops), when, and the path there sampled every path_sample_dt.
@@ -83,7 +83,7 @@ struct ShotPlan {
 
 // Plans `request` on the table and ball of `params`. Never throws on a bad request: the status
 // and reason say what is wrong.
-ShotPlan PlanShot(const ShotRequest& request, const ModelParameters& params,
+ShotPlan PlanShot(const ShotRequest& request, const physics::ModelParameters& params,
                   const PlannerOptions& options = {});
 
 }  // namespace billiard::planner

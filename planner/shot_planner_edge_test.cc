@@ -10,17 +10,18 @@
 #include <string>
 #include <vector>
 
-#include "cue_strike.h"
-#include "edge_report.h"
-#include "parameters.h"
-#include "shot_planner.h"
-#include "simulator.h"
+#include "planner/edge_report.h"
+#include "planner/shot_planner.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/physics/cue_strike.h"
+#include "sim/physics/parameters.h"
+#include "sim/physics/simulator.h"
 
 namespace billiard::planner {
 namespace {
 
-ModelParameters Edge(double mu, double d, double eps) {
-  ModelParameters p = LoadParameters("paper");
+physics::ModelParameters Edge(double mu, double d, double eps) {
+  physics::ModelParameters p = params::LoadParameters("paper");
   p.contact.mu = mu;
   p.contact.d = d;
   p.contact.eps_t = p.contact.eps_r = eps;
@@ -53,28 +54,28 @@ std::vector<ShotRequest> Requests() {
   return requests;
 }
 
-BallState LaunchOf(const ShotPlan& plan, const ShotRequest& q) {
-  return MakeBallState(q.from.x(), q.from.y(), plan.v0.x(), plan.v0.y(), plan.w0.x(),
-                       plan.w0.y(), plan.w0.z());
+physics::BallState LaunchOf(const ShotPlan& plan, const ShotRequest& q) {
+  return physics::MakeBallState(q.from.x(), q.from.y(), plan.v0.x(), plan.v0.y(), plan.w0.x(),
+                                plan.w0.y(), plan.w0.z());
 }
 
 // An ok plan must really arrive at the target, simulated at the simulator's default tolerance,
 // and its stroke must give its launch; a refusal must have a reason.
-void ExpectNoWrongOk(const ModelParameters& p, const ShotRequest& q, const ShotPlan& plan,
+void ExpectNoWrongOk(const physics::ModelParameters& p, const ShotRequest& q, const ShotPlan& plan,
                      const std::string& what) {
   if (plan.status != PlanStatus::kOk) {
     EXPECT_FALSE(plan.reason.empty()) << what;
     return;
   }
-  const Arrival a = SimulateArrival(p, LaunchOf(plan, q), q.final_speed, 60.0);
+  const physics::Arrival a = physics::SimulateArrival(p, LaunchOf(plan, q), q.final_speed, 60.0);
   EXPECT_TRUE(a.reached) << what;
   EXPECT_LT((a.state.head<2>() - q.to).norm(), 1e-5) << what;
-  EXPECT_LT((StrikeBall(plan.stroke, q.from, p) - LaunchOf(plan, q)).norm(), 1e-9) << what;
+  EXPECT_LT((physics::StrikeBall(plan.stroke, q.from, p) - LaunchOf(plan, q)).norm(), 1e-9) << what;
 }
 
 struct EdgeSet {
   const char* name;
-  ModelParameters params;
+  physics::ModelParameters params;
 };
 
 TEST(EdgeParameterPlans, EveryOkLandsOnTheTargetAndEveryRefusalSaysWhy) {
@@ -83,7 +84,7 @@ TEST(EdgeParameterPlans, EveryOkLandsOnTheTargetAndEveryRefusalSaysWhy) {
       {"eps = 1e-9", Edge(0.2, 1.0, 1e-9)},       {"d = 0, eps = 1e-9", Edge(0.2, 0.0, 1e-9)},
       {"mu = 0, d = 0, eps = 1e-9", Edge(0.0, 0.0, 1e-9)},
   };
-  const ModelParameters paper = LoadParameters("paper");
+  const physics::ModelParameters paper = params::LoadParameters("paper");
   const std::vector<ShotRequest> requests = Requests();
   for (const EdgeSet& set : sets) {
     int ok = 0;
@@ -120,7 +121,7 @@ TEST(EdgeParameterPlans, WithoutRollingResistanceTheBallArrivesStillSliding) {
   // d = 0: the speed falls only while the ball slides, by mu g along the line (Coulomb), so a
   // ball that arrives at v2 was launched at sqrt(v2^2 + 2 mu g D). With eps = 1e-9 the 5-DOF
   // ball is that Coulomb ball, and the closed-form launch needs no refinement.
-  const ModelParameters p = Edge(0.2, 0.0, 1e-9);
+  const physics::ModelParameters p = Edge(0.2, 0.0, 1e-9);
   for (double v2 : {1.1, 1.5}) {
     const ShotRequest q = Shot(v2, SpinStyle::kDraw);
     const ShotPlan plan = PlanShot(q, p);
@@ -140,9 +141,9 @@ TEST(EdgeParameterPlans, WithoutRollingResistanceTheBallArrivesStillSliding) {
 }
 
 TEST(EdgeParameterPlans, ParameterSetsTheModelCannotTakeAreInvalid) {
-  ModelParameters nan_mu = LoadParameters("paper");
+  physics::ModelParameters nan_mu = params::LoadParameters("paper");
   nan_mu.contact.mu = NAN;
-  const std::pair<ModelParameters, const char*> sets[] = {
+  const std::pair<physics::ModelParameters, const char*> sets[] = {
       {Edge(0.0, 1.0, 0.01), "below the rolling resistance"},  // creates energy
       {Edge(0.2, 1.0, 0.0), "eps_t and eps_r must be positive"},
       {Edge(0.2, 1.0, -1e-9), "eps_t and eps_r must be positive"},

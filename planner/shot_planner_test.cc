@@ -1,6 +1,6 @@
 // The planner against the 5-DOF simulation it plans for, checked independently: every plan is
 // simulated again at the simulator's default (10x tighter) tolerance.
-#include "shot_planner.h"
+#include "planner/shot_planner.h"
 
 #include <gtest/gtest.h>
 
@@ -8,15 +8,16 @@
 #include <cmath>
 #include <vector>
 
-#include "parameters.h"
-#include "request_suite.h"
-#include "simulator.h"
+#include "planner/testing/request_suite.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/physics/parameters.h"
+#include "sim/physics/simulator.h"
 
 namespace billiard::planner {
 namespace {
 
-const ModelParameters& Paper() {
-  static const ModelParameters p = LoadParameters("paper");
+const physics::ModelParameters& Paper() {
+  static const physics::ModelParameters p = params::LoadParameters("paper");
   return p;
 }
 
@@ -33,15 +34,15 @@ ShotRequest Shot(const Eigen::Vector2d& from, const Eigen::Vector2d& to, double 
 
 // Where the plan's launch arrives under the simulator's default settings.
 Eigen::Vector2d SimulatedArrival(const ShotPlan& plan, const ShotRequest& q) {
-  const BallState launch = MakeBallState(q.from.x(), q.from.y(), plan.v0.x(), plan.v0.y(),
-                                         plan.w0.x(), plan.w0.y(), plan.w0.z());
-  const Arrival a = SimulateArrival(Paper(), launch, q.final_speed, 60.0);
+  const physics::BallState launch = physics::MakeBallState(
+      q.from.x(), q.from.y(), plan.v0.x(), plan.v0.y(), plan.w0.x(), plan.w0.y(), plan.w0.z());
+  const physics::Arrival a = physics::SimulateArrival(Paper(), launch, q.final_speed, 60.0);
   EXPECT_TRUE(a.reached);
   return a.state.head<2>();
 }
 
 TEST(ShotPlanner, FiveHundredReachableRequestsLandWithinHalfAMillimetre) {
-  RequestSuite suite(Paper().table, 2026);
+  planner::testing::RequestSuite suite(Paper().table, 2026);
   std::vector<double> closed_form_miss, solve_us;
   int tried = 0;
   while (closed_form_miss.size() < 500) {
@@ -187,21 +188,21 @@ TEST(ShotPlanner, NeverAnOkBeyondTheAcceptableMiss) {
   // With too few iterations, or a simulation step budget too small, a spin-heavy shot cannot
   // converge: the plan must say so and why, with the paper's contact and at the edges of the
   // parameters (regularization 1e-9; no rolling resistance, where a draw arrives still sliding).
-  ModelParameters tiny_eps = Paper();
+  physics::ModelParameters tiny_eps = Paper();
   tiny_eps.contact.eps_t = tiny_eps.contact.eps_r = 1e-9;
-  ModelParameters no_rolling_resistance = Paper();
+  physics::ModelParameters no_rolling_resistance = Paper();
   no_rolling_resistance.contact.d = 0.0;
   const ShotRequest draw = Shot({0.3, 0.3}, {2.2, 1.0}, 0.0, SpinStyle::kDraw, 20.0);
   const ShotRequest sliding = Shot({0.4, 0.4}, {1.6, 0.8}, 1.5, SpinStyle::kDraw, 10.0);
   struct Case {
     const char* name;
-    const ModelParameters& params;
+    const physics::ModelParameters& params;
     ShotRequest request;
     int max_iterations;
     long max_steps;
     const char* words;
   };
-  const long steps = SimulationOptions().max_steps;
+  const long steps = physics::SimulationOptions().max_steps;
   const Case cases[] = {
       {"one iteration", Paper(), draw, 1, steps, "mm from the target"},
       {"no iteration", Paper(), draw, 0, steps, "mm from the target"},

@@ -10,12 +10,14 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "real_table_photo.h"
-#include "billiard_command.h"
+#include "estimator/testing/real_table_photo.h"
+#include "tests/support/billiard_command.h"
+#include "tests/support/test_data.h"
 
 namespace {
 
 using billiard::estimator::testing::HandBall;
+using billiard::estimator::testing::kRealTablePhoto;
 using billiard::testing::Billiard;
 using billiard::testing::CommandResult;
 using billiard::testing::OneObject;
@@ -39,9 +41,22 @@ void ExpectEveryBallOnce(const nlohmann::json& balls) {
   EXPECT_EQ(std::count(used.begin(), used.end(), 1), 21);
 }
 
-TEST(BilliardDetect, FindsTheTwentyOneBallsOfTheRealPhotograph) {
+// The commands on the real photograph, skipped with the reason where the test data is absent.
+class BilliardDetect : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    photo_ = billiard::testing::TestDataPath(kRealTablePhoto);
+    if (photo_.empty()) GTEST_SKIP() << billiard::testing::MissingTestData(kRealTablePhoto);
+  }
+  const std::string& photo() const { return photo_; }
+
+ private:
+  std::string photo_;
+};
+
+TEST_F(BilliardDetect, FindsTheTwentyOneBallsOfTheRealPhotograph) {
   for (const std::string options : {"", " --ball-radius-px 15"}) {
-    const std::string args = "detect " + billiard::estimator::testing::RealTablePhoto() + options + " --json";
+    const std::string args = "detect " + photo() + options + " --json";
     const CommandResult r = Billiard(args);
     ASSERT_EQ(r.status, 0) << args;
     const auto j = OneObject(r, args);
@@ -56,7 +71,7 @@ TEST(BilliardDetect, FindsTheTwentyOneBallsOfTheRealPhotograph) {
   }
 }
 
-TEST(BilliardDetect, TableCoordinatesFromACalibration) {
+TEST_F(BilliardDetect, TableCoordinatesFromACalibration) {
   // The photo's geometry read off by hand: a pool ball (radius 28.575 mm) is 15 px in radius, so
   // 1.905 mm per pixel; the cloth's bottom-left corner is at pixel (80, 665). The markers' table
   // coordinates follow from their pixels.
@@ -69,7 +84,7 @@ TEST(BilliardDetect, TableCoordinatesFromACalibration) {
   char dir[] = "/tmp/billiard_detect_XXXXXX";
   ASSERT_NE(mkdtemp(dir), nullptr);
   const std::string camera = std::string(dir) + "/camera.json";
-  const std::string photo = billiard::estimator::testing::RealTablePhoto();
+  const std::string& photo = this->photo();
   const std::string calibrate =
       "calibrate " + photo + " --params pool --markers=" + markers + " --out " + camera + " --json";
   const CommandResult c = Billiard(calibrate);
@@ -93,13 +108,13 @@ TEST(BilliardDetect, TableCoordinatesFromACalibration) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(BilliardDetect, BadInputExitsTwoWithAOneLineReason) {
+TEST_F(BilliardDetect, BadInputExitsTwoWithAOneLineReason) {
   char dir[] = "/tmp/billiard_detect_XXXXXX";
   ASSERT_NE(mkdtemp(dir), nullptr);
   const std::string empty = std::string(dir) + "/empty.png", text = std::string(dir) + "/text.png";
   std::ofstream(empty).close();
   std::ofstream(text) << "not an image\n";
-  const std::string photo = billiard::estimator::testing::RealTablePhoto();
+  const std::string& photo = this->photo();
   const std::string bad[] = {
       "detect /no/such/image.png --json",
       "detect " + empty + " --json",
@@ -120,8 +135,8 @@ TEST(BilliardDetect, BadInputExitsTwoWithAOneLineReason) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(BilliardDetect, HumanSummaryGoesToStderr) {
-  const CommandResult r = Billiard("detect " + billiard::estimator::testing::RealTablePhoto());
+TEST_F(BilliardDetect, HumanSummaryGoesToStderr) {
+  const CommandResult r = Billiard("detect " + photo());
   EXPECT_EQ(r.status, 0);
   EXPECT_TRUE(r.out.empty()) << r.out;
 }

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "request_suite.h"
-#include "billiard_command.h"
+#include "planner/testing/request_suite.h"
+#include "tests/support/billiard_command.h"
 
 namespace {
 
@@ -125,7 +125,7 @@ std::string Numbers(std::initializer_list<double> values) {
 TEST(BilliardPlan, PlannedLaunchesLandOnTheTargetWhenBilliardSimulateRunsThem) {
   // The acceptance check as a user would run it: plan, then simulate the plan's v0, w0 with the
   // simulator's defaults until the speed falls to the requested final speed.
-  billiard::planner::RequestSuite suite({2.54, 1.27}, 7);
+  billiard::planner::testing::RequestSuite suite({2.54, 1.27}, 7);
   int planned = 0;
   for (int i = 0; i < 25; ++i) {
     const billiard::planner::ShotRequest q = suite.Next(i);

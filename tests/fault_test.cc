@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "run_command.h"
+#include "tests/support/run_command.h"
 
 namespace {
 
@@ -67,8 +67,8 @@ TEST(FaultDrill, KilledNodesRestartedMidRunAndABurstOfRequests) {
 
 TEST(LossyLink, FramesDroppedReorderedAndRepeatedStillLandEveryShot) {
   const billiard::testing::CommandResult r = billiard::testing::RunCommand(
-      std::string(TABLE_SIM_NODE_BIN) +
-      " --in-process --shots 4 --seed 2 --drop-frames 0.1 --reorder-frames 0.05 --duplicate 0.05");
+      std::string(BILLIARD_BIN) +
+      " loop --shots 4 --seed 2 --drop-frames 0.1 --reorder-frames 0.05 --duplicate 0.05");
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json s = nlohmann::json::parse(r.out, nullptr, false);
   ASSERT_TRUE(s.is_object()) << r.out;

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "billiard/ball_state_t.hpp"
+#include "lcmtypes/billiard/ball_state_t.hpp"
 
 namespace {
 

@@ -1,12 +1,12 @@
-#include "bench_command.h"
+#include "tools/billiard/bench_command.h"
 
 #include <iostream>
 #include <memory>
 
-#include "command_line.h"
-#include "parameters.h"
-#include "report.h"
-#include "speed_error.h"
+#include "bench/report.h"
+#include "bench/speed_error.h"
+#include "sim/physics/parameters.h"
+#include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
 
@@ -22,7 +22,7 @@ struct BenchArgs {
 void Run(BenchArgs args) {
   if (args.options.random_shots < 0) throw UsageError("--shots must be >= 0");
   if (args.options.threads < 1) throw UsageError("--threads must be >= 1");
-  const ModelParameters params = LoadParametersOption(args.params);
+  const physics::ModelParameters params = LoadParametersOption(args.params);
   args.options.quick = args.quick;
   args.options.progress = [](const std::string& line) { std::cerr << "bench: " << line << std::endl; };
   const bench::BenchmarkResult result = bench::RunBenchmark(params, args.options);

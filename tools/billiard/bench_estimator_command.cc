@@ -1,10 +1,10 @@
-#include "bench_estimator_command.h"
+#include "tools/billiard/bench_estimator_command.h"
 
 #include <iostream>
 #include <memory>
 
-#include "command_line.h"
-#include "estimator_benchmark.h"
+#include "bench/estimator_benchmark.h"
+#include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
 
@@ -22,7 +22,7 @@ void Run(const BenchEstimatorArgs& args) {
   if (args.options.struck < 0 || args.options.struck > args.options.balls) {
     throw UsageError("--struck must be between 0 and --balls");
   }
-  const ModelParameters params = LoadParametersOption(args.params);
+  const physics::ModelParameters params = LoadParametersOption(args.params);
   bench::EstimatorBenchmarkOptions options = args.options;
   options.progress = [](const std::string& line) {
     std::cerr << "bench-estimator: " << line << std::endl;

@@ -1,10 +1,10 @@
-#include "bench_planner_command.h"
+#include "tools/billiard/bench_planner_command.h"
 
 #include <iostream>
 #include <memory>
 
-#include "command_line.h"
-#include "planner_benchmark.h"
+#include "bench/planner_benchmark.h"
+#include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
 
@@ -18,7 +18,7 @@ struct BenchPlannerArgs {
 
 void Run(const BenchPlannerArgs& args) {
   if (args.options.requests < 1) throw UsageError("--requests must be >= 1");
-  const ModelParameters params = LoadParametersOption(args.params);
+  const physics::ModelParameters params = LoadParametersOption(args.params);
   bench::PlannerBenchmarkOptions options = args.options;
   options.progress = [](const std::string& line) { std::cerr << "bench-planner: " << line << std::endl; };
   const bench::PlannerBenchmarkResult result = bench::RunPlannerBenchmark(params, options);

@@ -1,4 +1,4 @@
-#include "burst_command.h"
+#include "tools/billiard/burst_command.h"
 
 #include <algorithm>
 #include <chrono>
@@ -12,14 +12,15 @@
 #include <string>
 #include <vector>
 
-#include "billiard/node_status_t.hpp"
-#include "billiard/shot_request_t.hpp"
-#include "billiard/table_state_t.hpp"
-#include "command_line.h"
-#include "message_checks.h"
-#include "node_health.h"
-#include "planner_node.h"
-#include "speed_error.h"
+#include "bench/speed_error.h"
+#include "lcmtypes/billiard/node_status_t.hpp"
+#include "lcmtypes/billiard/shot_request_t.hpp"
+#include "lcmtypes/billiard/table_state_t.hpp"
+#include "lcmtypes/message_checks.h"
+#include "lcmtypes/names.h"
+#include "lcmtypes/node/node_health.h"
+#include "planner/node/planner_node.h"
+#include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
 
@@ -58,7 +59,7 @@ struct Replies {
       return;
     }
     answered[c.request_id] = now;
-    ++statuses[planner::CueCommandStatusName(c.status)];
+    ++statuses[messages::CueCommandStatusName(c.status)];
   }
 
   void OnStatus(const lcm::ReceiveBuffer* rbuf, const std::string&) {
@@ -79,9 +80,9 @@ void Run(const BurstArgs& args) {
   replies.sent.resize(total);
   replies.answered.resize(total);
   // Every answer must find room: the burst's answers arrive faster than they are handled.
-  lcm.subscribe(planner::kCueCommandChannel, &Replies::OnCommand, &replies)
+  lcm.subscribe(messages::kCueCommandChannel, &Replies::OnCommand, &replies)
       ->setQueueCapacity(static_cast<int>(total) + 100);
-  lcm.subscribe(nodes::kNodeStatusChannel, &Replies::OnStatus, &replies);
+  lcm.subscribe(messages::kNodeStatusChannel, &Replies::OnStatus, &replies);
 
   const std::int64_t utime = std::chrono::duration_cast<std::chrono::microseconds>(
                                  std::chrono::system_clock::now().time_since_epoch())
@@ -112,10 +113,10 @@ void Run(const BurstArgs& args) {
   // The probe: the state, then one request, until the planner answers it.
   const Clock::time_point start = Clock::now();
   while (!replies.answered[0] && Clock::now() - start < std::chrono::seconds(10)) {
-    lcm.publish(planner::kTableStateChannel, &state);
+    lcm.publish(messages::kTableStateChannel, &state);
     const shot_request_t probe = request(0);
     replies.sent[0] = Clock::now();
-    lcm.publish(planner::kShotRequestChannel, &probe);
+    lcm.publish(messages::kShotRequestChannel, &probe);
     handle_until([&] { return replies.answered[0].has_value(); }, 0.5);
   }
   if (!replies.answered[0]) throw Refused("no planner_node answered within 10 s");
@@ -126,7 +127,7 @@ void Run(const BurstArgs& args) {
   for (std::int64_t id = 1; id < static_cast<std::int64_t>(total); ++id) {
     const shot_request_t q = request(id);
     replies.sent[id] = Clock::now();
-    lcm.publish(planner::kShotRequestChannel, &q);
+    lcm.publish(messages::kShotRequestChannel, &q);
   }
   const double send_s = std::chrono::duration<double>(Clock::now() - burst_start).count();
   long answered = 0;

@@ -1,4 +1,6 @@
-#include "command_line.h"
+#include "tools/billiard/command_line.h"
+
+#include "sim/params/parameter_sets.h"
 
 #include <cerrno>
 #include <cmath>
@@ -34,9 +36,9 @@ void RequireFinite(double value, const std::string& what) {
   if (!std::isfinite(value)) throw UsageError(what + ": numbers must be finite (no NaN or inf)");
 }
 
-ModelParameters LoadParametersOption(const std::string& name_or_path) {
+physics::ModelParameters LoadParametersOption(const std::string& name_or_path) {
   try {
-    return LoadParameters(name_or_path);
+    return params::LoadParameters(name_or_path);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--params: ") + e.what());
   }

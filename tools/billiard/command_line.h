@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "parameters.h"
+#include "sim/physics/parameters.h"
 
 namespace billiard::cli {
 
@@ -20,6 +20,13 @@ struct Refused : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The command has already said why it failed (on stderr); the tool exits with `status`.
+struct ExitStatus : std::runtime_error {
+  explicit ExitStatus(int status)
+      : std::runtime_error("exit status " + std::to_string(status)), status(status) {}
+  int status;
+};
+
 // Parses exactly `count` comma-separated finite numbers; `what` names them in the error.
 std::vector<double> ParseNumberList(const std::string& text, std::size_t count,
                                     const std::string& what);
@@ -29,6 +36,6 @@ void RequireFinite(double value, const std::string& what);
 
 // The parameter set of a --params option (a built-in name or a JSON file); UsageError if it
 // does not load.
-ModelParameters LoadParametersOption(const std::string& name_or_path);
+physics::ModelParameters LoadParametersOption(const std::string& name_or_path);
 
 }  // namespace billiard::cli

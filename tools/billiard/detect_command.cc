@@ -1,4 +1,4 @@
-#include "detect_command.h"
+#include "tools/billiard/detect_command.h"
 
 #include <chrono>
 #include <filesystem>
@@ -9,10 +9,10 @@
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
 
-#include "ball_detector.h"
-#include "camera_model.h"
-#include "command_line.h"
-#include "table_calibration.h"
+#include "estimator/ball_detector.h"
+#include "estimator/table_calibration.h"
+#include "sim/camera/camera_model.h"
+#include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
 
@@ -37,11 +37,11 @@ struct DetectArgs {
 };
 
 void RunDetect(const DetectArgs& args) {
-  const ModelParameters params = LoadParametersOption(args.params);
-  std::optional<CameraModel> camera;
+  const physics::ModelParameters params = LoadParametersOption(args.params);
+  std::optional<camera::CameraModel> camera;
   if (!args.calib.empty()) {
     try {
-      camera = LoadCameraModel(args.calib);
+      camera = camera::LoadCameraModel(args.calib);
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--calib: ") + e.what());
     }
@@ -91,7 +91,7 @@ struct CalibrateArgs {
 };
 
 void RunCalibrate(const CalibrateArgs& args) {
-  const ModelParameters params = LoadParametersOption(args.params);
+  const physics::ModelParameters params = LoadParametersOption(args.params);
   for (const auto& [value, what] : {std::pair{args.margin, "--marker-margin"},
                                     std::pair{args.height, "--marker-height"},
                                     std::pair{args.fx, "--fx"}}) {
@@ -99,7 +99,7 @@ void RunCalibrate(const CalibrateArgs& args) {
   }
   if (args.fx < 0) throw UsageError("--fx: must be positive");
   const cv::Mat image = ReadImage(args.image);
-  CameraModel intrinsics;
+  camera::CameraModel intrinsics;
   if (args.fx > 0) {
     intrinsics.fx = intrinsics.fy = args.fx;
     intrinsics.cx = 0.5 * (image.cols - 1);
@@ -114,7 +114,7 @@ void RunCalibrate(const CalibrateArgs& args) {
   const auto result = estimator::CalibrateTable(image, layout, intrinsics);
   if (!result) throw std::runtime_error("did not find all four corner markers in " + args.image);
   std::ofstream out(args.out);
-  out << CameraModelJson(result->camera) << "\n";
+  out << camera::CameraModelJson(result->camera) << "\n";
   if (!out) throw UsageError("--out: cannot write '" + args.out + "'");
   nlohmann::json markers = nlohmann::json::array();
   for (const auto& m : result->markers) markers.push_back({m.x(), m.y()});

@@ -1,8 +1,8 @@
-#include "edge_report_command.h"
+#include "tools/billiard/edge_report_command.h"
 
 #include <iostream>
 
-#include "edge_report.h"
+#include "planner/edge_report.h"
 
 namespace billiard::cli {
 

@@ -1,11 +1,11 @@
-#include "fit_contact_command.h"
+#include "tools/billiard/fit_contact_command.h"
 
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "command_line.h"
-#include "contact_fit.h"
+#include "sim/contact_fit/contact_fit.h"
+#include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
 
@@ -14,18 +14,18 @@ namespace {
 struct FitContactArgs {
   double fix_m = 0.0;
   bool fix_m_given = false;
-  ContactFitOptions options;
+  contact_fit::ContactFitOptions options;
   bool json = false;
 };
 
 void Run(const FitContactArgs& args) {
-  ContactFitOptions options = args.options;
+  contact_fit::ContactFitOptions options = args.options;
   if (args.fix_m_given) {
     RequireFinite(args.fix_m, "--fix-m");
     if (args.fix_m < 1.0) throw UsageError("--fix-m must be >= 1");
     options.fixed_m = args.fix_m;
   }
-  const ContactFit fit = FitContactApproximation(
+  const contact_fit::ContactFit fit = contact_fit::FitContactApproximation(
       options, [](const std::string& line) { std::cerr << "fit-contact: " << line << std::endl; });
   if (args.json) {
     nlohmann::json j = {{"bT", fit.b_t},

@@ -3,18 +3,19 @@
 #include <exception>
 #include <iostream>
 
-#include "bench_command.h"
-#include "bench_estimator_command.h"
-#include "bench_planner_command.h"
-#include "burst_command.h"
-#include "command_line.h"
-#include "detect_command.h"
-#include "edge_report_command.h"
-#include "fit_contact_command.h"
-#include "node_status_command.h"
-#include "plan_command.h"
-#include "replay_command.h"
-#include "simulate_command.h"
+#include "tools/billiard/bench_command.h"
+#include "tools/billiard/bench_estimator_command.h"
+#include "tools/billiard/bench_planner_command.h"
+#include "tools/billiard/burst_command.h"
+#include "tools/billiard/command_line.h"
+#include "tools/billiard/detect_command.h"
+#include "tools/billiard/edge_report_command.h"
+#include "tools/billiard/fit_contact_command.h"
+#include "tools/billiard/loop_command.h"
+#include "tools/billiard/node_status_command.h"
+#include "tools/billiard/plan_command.h"
+#include "tools/billiard/replay_command.h"
+#include "tools/billiard/simulate_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"billiard: ball physics for a billiard-playing robot"};
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddBenchPlannerCommand(app);
   billiard::cli::AddBenchEstimatorCommand(app);
   billiard::cli::AddReplayCommand(app);
+  billiard::cli::AddLoopCommand(app);
   billiard::cli::AddBurstCommand(app);
   billiard::cli::AddNodeStatusCommand(app);
   billiard::cli::AddEdgeReportCommand(app);
@@ -43,6 +45,8 @@ int main(int argc, char** argv) {
   } catch (const billiard::cli::UsageError& e) {
     std::cerr << "billiard: " << e.what() << std::endl;
     return 2;
+  } catch (const billiard::cli::ExitStatus& e) {
+    return e.status;
   } catch (const billiard::cli::Refused& e) {
     std::cerr << "billiard: " << e.what() << std::endl;
     return 3;

@@ -1,4 +1,4 @@
-#include "node_status_command.h"
+#include "tools/billiard/node_status_command.h"
 
 #include <algorithm>
 #include <iostream>
@@ -10,10 +10,11 @@
 #include <tuple>
 #include <utility>
 
-#include "billiard/node_status_t.hpp"
-#include "command_line.h"
-#include "message_checks.h"
-#include "node_health.h"
+#include "lcmtypes/billiard/node_status_t.hpp"
+#include "lcmtypes/message_checks.h"
+#include "lcmtypes/names.h"
+#include "lcmtypes/node/node_health.h"
+#include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
 
@@ -46,7 +47,7 @@ void Run(const NodeStatusArgs& args) {
   std::map<Process, Reports> processes;
   long malformed = 0;
   while (const lcm::LogEvent* e = log.readNextEvent()) {
-    if (e->channel != nodes::kNodeStatusChannel) continue;
+    if (e->channel != messages::kNodeStatusChannel) continue;
     node_status_t s;
     if (!messages::DecodeChecked(e->data, static_cast<std::size_t>(e->datalen), s).empty()) {
       ++malformed;

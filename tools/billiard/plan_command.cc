@@ -1,12 +1,12 @@
-#include "plan_command.h"
+#include "tools/billiard/plan_command.h"
 
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "command_line.h"
-#include "shot_planner.h"
+#include "planner/shot_planner.h"
+#include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
 
@@ -23,7 +23,7 @@ struct PlanArgs {
   bool json = false;
 };
 
-nlohmann::json PlanJson(const planner::ShotPlan& plan, const ModelParameters& params) {
+nlohmann::json PlanJson(const planner::ShotPlan& plan, const physics::ModelParameters& params) {
   nlohmann::json j;
   j["v0"] = {plan.v0.x(), plan.v0.y()};
   j["w0"] = {plan.w0.x(), plan.w0.y(), plan.w0.z()};
@@ -45,7 +45,8 @@ nlohmann::json PlanJson(const planner::ShotPlan& plan, const ModelParameters& pa
   return j;
 }
 
-void PrintSummary(const planner::ShotPlan& plan, const ModelParameters& params, bool refined) {
+void PrintSummary(const planner::ShotPlan& plan, const physics::ModelParameters& params,
+                  bool refined) {
   std::cerr << "plan, " << params.name << " parameters, "
             << (refined ? "refined against the 5-DOF model" : "closed-form inverse alone") << ": "
             << planner::PlanStatusName(plan.status) << "\n  cue     " << plan.stroke.speed
@@ -80,7 +81,7 @@ void Run(const PlanArgs& args, bool slide_given) {
     }
     request.style = *style;
   }
-  const ModelParameters params = LoadParametersOption(args.params);
+  const physics::ModelParameters params = LoadParametersOption(args.params);
   planner::PlannerOptions options;
   options.refine = !args.no_refine;
 

@@ -1,4 +1,4 @@
-#include "replay_command.h"
+#include "tools/billiard/replay_command.h"
 
 #include <iostream>
 #include <lcm/lcm-cpp.hpp>
@@ -6,13 +6,14 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "billiard/cue_command_t.hpp"
-#include "billiard/table_state_t.hpp"
-#include "camera_model.h"
-#include "command_line.h"
-#include "estimator_node.h"
-#include "node_loop.h"
-#include "planner_node.h"
+#include "estimator/node/estimator_node.h"
+#include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/table_state_t.hpp"
+#include "lcmtypes/names.h"
+#include "lcmtypes/node/node_loop.h"
+#include "planner/node/planner_node.h"
+#include "sim/camera/camera_model.h"
+#include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
 
@@ -70,11 +71,11 @@ Comparison Compare(const std::vector<Bytes>& recorded, const std::vector<Bytes>&
 void Run(const ReplayArgs& args) {
   lcm::LogFile log(args.log, "r");
   if (!log.good()) throw UsageError("cannot read LCM log '" + args.log + "'");
-  const ModelParameters params = LoadParametersOption(args.params);
-  CameraModel camera;
+  const physics::ModelParameters params = LoadParametersOption(args.params);
+  camera::CameraModel camera;
   try {
-    camera = args.camera.empty() ? CameraModel::Overhead(params.table, 1280, 720)
-                                 : LoadCameraModel(args.camera);
+    camera = args.camera.empty() ? camera::CameraModel::Overhead(params.table, 1280, 720)
+                                 : camera::LoadCameraModel(args.camera);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--camera: ") + e.what());
   }
@@ -83,23 +84,24 @@ void Run(const ReplayArgs& args) {
   // next, which is the order the lockstep run had.
   lcm::LCM lcm("memq://");
   const auto quiet = [](const std::string&) {};
-  estimator::EstimatorNode estimator(lcm, camera, params, {}, {}, quiet);
-  planner::PlannerNode planner(lcm, params, {}, quiet);
+  estimator_node::EstimatorNode estimator(lcm, camera, params, {}, {}, quiet);
+  planner_node::PlannerNode planner(lcm, params, {}, quiet);
   Outputs out;
-  lcm.subscribe(estimator::kTableStateChannel, &Outputs::OnState, &out);
-  lcm.subscribe(planner::kCueCommandChannel, &Outputs::OnCommand, &out);
+  lcm.subscribe(messages::kTableStateChannel, &Outputs::OnState, &out);
+  lcm.subscribe(messages::kCueCommandChannel, &Outputs::OnCommand, &out);
 
   std::vector<Bytes> recorded_states, recorded_commands;
   long inputs = 0;
   while (const lcm::LogEvent* e = log.readNextEvent()) {
     const auto* p = static_cast<const std::uint8_t*>(e->data);
-    if (e->channel == estimator::kCameraImageChannel || e->channel == planner::kShotRequestChannel) {
+    if (e->channel == messages::kCameraImageChannel ||
+        e->channel == messages::kShotRequestChannel) {
       ++inputs;
       lcm.publish(e->channel, e->data, e->datalen);
       nodes::HandleUntilIdle(lcm, [&planner] { return planner.Work(); });
-    } else if (e->channel == estimator::kTableStateChannel) {
+    } else if (e->channel == messages::kTableStateChannel) {
       recorded_states.emplace_back(p, p + e->datalen);
-    } else if (e->channel == planner::kCueCommandChannel) {
+    } else if (e->channel == messages::kCueCommandChannel) {
       recorded_commands.push_back(WithoutWallTime(e->data, e->datalen));
     }
   }

@@ -1,4 +1,4 @@
-#include "simulate_command.h"
+#include "tools/billiard/simulate_command.h"
 
 #include <chrono>
 #include <cmath>
@@ -8,10 +8,10 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 
-#include "command_line.h"
-#include "model_choice.h"
-#include "parameters.h"
-#include "simulator.h"
+#include "sim/model_choice/model_choice.h"
+#include "sim/physics/parameters.h"
+#include "sim/physics/simulator.h"
+#include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
 
@@ -24,8 +24,8 @@ struct SimulateArgs {
   std::string integrator = "rodas4";
   double accuracy = 0.0;  // --model auto only
   std::string params = "paper";
-  double tol = SimulationOptions{}.tolerance;
-  double quadrature_tol = SimulationOptions{}.quadrature_tolerance;
+  double tol = physics::SimulationOptions{}.tolerance;
+  double quadrature_tol = physics::SimulationOptions{}.quadrature_tolerance;
   std::string trajectory_path;
   double sample_dt = 1e-3;
   bool no_rest_switch = false;
@@ -33,7 +33,7 @@ struct SimulateArgs {
   bool json = false;
 };
 
-void WriteTrajectoryCsv(const Trajectory& trajectory, double t_end, double dt,
+void WriteTrajectoryCsv(const physics::Trajectory& trajectory, double t_end, double dt,
                         const std::string& path) {
   std::ofstream out(path);
   if (!out) throw UsageError("cannot write trajectory file '" + path + "'");
@@ -42,7 +42,7 @@ void WriteTrajectoryCsv(const Trajectory& trajectory, double t_end, double dt,
   const long samples = static_cast<long>(std::ceil(t_end / dt - 1e-9));
   for (long i = 0; i <= samples; ++i) {
     const double t = std::min(i * dt, t_end);
-    const BallState s = trajectory.At(t);
+    const physics::BallState s = trajectory.At(t);
     out << t;
     for (int j = 0; j < 7; ++j) out << ',' << s[j];
     out << '\n';
@@ -57,7 +57,7 @@ void Run(const SimulateArgs& args) {
   if (!(args.tol > 0.0) || !std::isfinite(args.tol)) throw UsageError("--tol must be positive");
   if (!(args.sample_dt > 0.0)) throw UsageError("--sample-dt must be positive");
   const bool automatic = args.model == "auto";
-  const auto model = ParseModel(args.model);
+  const auto model = physics::ParseModel(args.model);
   if (!model && !automatic) {
     throw UsageError("--model: unknown model '" + args.model +
                      "' (approx, integral, closed-form, auto)");
@@ -68,16 +68,16 @@ void Run(const SimulateArgs& args) {
   if (automatic && !(std::isfinite(args.accuracy) && args.accuracy > 0.0)) {
     throw UsageError("--accuracy must be a positive number of metres");
   }
-  const auto integrator = ParseIntegrator(args.integrator);
+  const auto integrator = physics::ParseIntegrator(args.integrator);
   if (!integrator) throw UsageError("--integrator: unknown integrator '" + args.integrator +
                                     "' (rodas4, dopri5)");
-  const ModelParameters params = LoadParametersOption(args.params);
+  const physics::ModelParameters params = LoadParametersOption(args.params);
 
-  const BallState initial = Eigen::Map<const BallState>(numbers.data());
-  SimulationOptions options;
-  std::optional<ModelChoice> choice;
+  const physics::BallState initial = Eigen::Map<const physics::BallState>(numbers.data());
+  physics::SimulationOptions options;
+  std::optional<model_choice::ModelChoice> choice;
   if (automatic) {
-    choice = ChooseModel(initial, params, args.accuracy);
+    choice = model_choice::ChooseModel(initial, params, args.accuracy);
     options = choice->options;
     if (!choice->accuracy_met) {
       std::cerr << "billiard: no measured method reaches " << args.accuracy << " m on "
@@ -96,18 +96,19 @@ void Run(const SimulateArgs& args) {
   }
   const auto start = std::chrono::steady_clock::now();
   // Either to t_end, or to the arrival at a speed with t_end as the limit.
-  SimulationResult result;
+  physics::SimulationResult result;
   double t = args.t_end;
   std::optional<bool> arrived;
   if (args.until_speed) {
-    Arrival a = SimulateArrival(params, initial, *args.until_speed, args.t_end, options);
+    physics::Arrival a =
+        physics::SimulateArrival(params, initial, *args.until_speed, args.t_end, options);
     result.final_state = a.state;
     result.stats = a.stats;
     result.trajectory = std::move(a.trajectory);
     t = a.time;
     arrived = a.reached;
   } else {
-    result = Simulate(params, initial, args.t_end, options);
+    result = physics::Simulate(params, initial, args.t_end, options);
   }
   const double wall_us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
@@ -116,11 +117,12 @@ void Run(const SimulateArgs& args) {
     WriteTrajectoryCsv(*result.trajectory, t, args.sample_dt, args.trajectory_path);
   }
 
-  const BallState& s = result.final_state;
+  const physics::BallState& s = result.final_state;
   if (args.json) {
     nlohmann::json j;
-    j["model"] = ModelName(options.model);
-    if (options.model != Model::kClosedForm) j["integrator"] = IntegratorName(options.integrator);
+    j["model"] = physics::ModelName(options.model);
+    if (options.model != physics::Model::kClosedForm)
+      j["integrator"] = physics::IntegratorName(options.integrator);
     if (choice) {
       j["auto"] = {{"accuracy_m", args.accuracy},
                    {"scene_kind", choice->kind},
@@ -146,12 +148,14 @@ void Run(const SimulateArgs& args) {
     }
     std::cout << j.dump() << std::endl;
   } else {
-    std::cerr << ModelName(options.model) << " model, " << params.name << " parameters, t = " << t
-              << " s" << (arrived && !*arrived ? " (still faster than --until-speed)" : "")
-              << "\n  X, Y   = " << s[kX] << ", " << s[kY] << " m\n  vx, vy = " << s[kVx] << ", "
-              << s[kVy] << " m/s\n  w      = " << s[kWx] << ", " << s[kWy] << ", " << s[kWz]
-              << " rad/s\n  " << result.stats.steps << " steps, " << result.stats.rhs_evals
-              << " rhs evaluations, " << wall_us << " us\n";
+    std::cerr << physics::ModelName(options.model) << " model, " << params.name
+              << " parameters, t = " << t << " s"
+              << (arrived && !*arrived ? " (still faster than --until-speed)" : "")
+              << "\n  X, Y   = " << s[physics::kX] << ", " << s[physics::kY]
+              << " m\n  vx, vy = " << s[physics::kVx] << ", " << s[physics::kVy]
+              << " m/s\n  w      = " << s[physics::kWx] << ", " << s[physics::kWy] << ", "
+              << s[physics::kWz] << " rad/s\n  " << result.stats.steps << " steps, "
+              << result.stats.rhs_evals << " rhs evaluations, " << wall_us << " us\n";
   }
 }
 

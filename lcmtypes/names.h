@@ -1,0 +1,23 @@
+// The names the nodes agree on: the LCM channels, and the words for the statuses a message
+// carries. Every node and tool takes them from here, so that no node includes another to learn
+// where to publish.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace billiard::messages {
+
+// Channels and the messages they carry (lcmtypes/*.lcm).
+inline constexpr char kCameraImageChannel[] = "CAMERA_IMAGE";  // image_t, the camera's frames
+inline constexpr char kTableStateChannel[] = "TABLE_STATE";    // table_state_t, the estimator's
+inline constexpr char kTableTruthChannel[] = "TABLE_TRUTH";    // table_state_t, the simulator's
+inline constexpr char kShotRequestChannel[] = "SHOT_REQUEST";  // shot_request_t, to the planner
+inline constexpr char kCueCommandChannel[] = "CUE_COMMAND";    // cue_command_t, the planner's
+inline constexpr char kNodeStatusChannel[] = "NODE_STATUS";    // node_status_t, every node's
+
+// "ok", "invalid", "off_table", "unreachable", "not_converged", "no_ball_state", "stale_state",
+// "busy" (cue_command_t's STATUS_*); "status N" for a value the message does not define.
+std::string CueCommandStatusName(std::int8_t status);
+
+}  // namespace billiard::messages

@@ -1,0 +1,308 @@
+#include "planner/node/planner_node.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <iostream>
+#include <sstream>
+#include <utility>
+
+#include "lcmtypes/billiard/table_state_t.hpp"
+#include "lcmtypes/message_checks.h"
+#include "lcmtypes/names.h"
+
+namespace billiard::planner_node {
+
+namespace {
+
+int8_t ToMessageStatus(planner::PlanStatus status) {
+  switch (status) {
+    case planner::PlanStatus::kOk:
+      return cue_command_t::STATUS_OK;
+    case planner::PlanStatus::kInvalid:
+      return cue_command_t::STATUS_INVALID;
+    case planner::PlanStatus::kOffTable:
+      return cue_command_t::STATUS_OFF_TABLE;
+    case planner::PlanStatus::kUnreachable:
+      return cue_command_t::STATUS_UNREACHABLE;
+    case planner::PlanStatus::kNotConverged:
+      return cue_command_t::STATUS_NOT_CONVERGED;
+  }
+  return cue_command_t::STATUS_INVALID;
+}
+
+std::string Describe(const cue_command_t& c) {
+  std::ostringstream line;
+  line << "request " << c.request_id << " (ball " << c.ball_id
+       << "): " << messages::CueCommandStatusName(c.status);
+  if (c.status == cue_command_t::STATUS_OK) {
+    line << ": cue " << c.cue_speed << " m/s, heading " << c.heading << " rad, miss "
+         << c.refined_miss_m << " m, " << c.iterations << " iterations, " << c.solve_us << " us";
+  } else {
+    line << ": " << c.reason;
+  }
+  return line.str();
+}
+
+}  // namespace
+
+PlannerNode::PlannerNode(lcm::LCM& lcm, physics::ModelParameters params, PlannerNodeOptions options,
+                         Log log)
+    : lcm_(lcm),
+      params_(std::move(params)),
+      options_(std::move(options)),
+      log_(log ? std::move(log) : Log([](const std::string& line) {
+        std::cerr << "planner_node: " << line << std::endl;
+      })),
+      health_("planner_node", log_) {
+  table_state_subscription_ =
+      lcm_.subscribe(messages::kTableStateChannel, &PlannerNode::OnTableState, this);
+  shot_request_subscription_ =
+      lcm_.subscribe(messages::kShotRequestChannel, &PlannerNode::OnShotRequest, this);
+  // A burst arriving while a plan is computed waits in LCM's queue until the loop drains it into
+  // ours (30 by default, beyond which LCM drops messages unseen); a request is about 100 bytes.
+  shot_request_subscription_->setQueueCapacity(10000);
+}
+
+PlannerNode::~PlannerNode() {
+  if (table_state_subscription_) lcm_.unsubscribe(table_state_subscription_);
+  if (shot_request_subscription_) lcm_.unsubscribe(shot_request_subscription_);
+}
+
+cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
+  cue_command_t c{};
+  c.utime = q.utime;
+  c.request_id = q.request_id;
+  c.ball_id = q.ball_id;
+  const auto refuse = [&c](int8_t status, std::string reason) {
+    c.status = status;
+    c.reason = std::move(reason);
+    return c;
+  };
+
+  if (std::string why = messages::Check(q); !why.empty()) {
+    return refuse(cue_command_t::STATUS_INVALID, why);
+  }
+  planner::ShotRequest request;
+  switch (q.spin) {
+    case shot_request_t::SPIN_NATURAL:
+      request.style = planner::SpinStyle::kNatural;
+      break;
+    case shot_request_t::SPIN_STUN:
+      request.style = planner::SpinStyle::kStun;
+      break;
+    case shot_request_t::SPIN_FOLLOW:
+      request.style = planner::SpinStyle::kFollow;
+      break;
+    case shot_request_t::SPIN_DRAW:
+      request.style = planner::SpinStyle::kDraw;
+      break;
+    default:
+      request.slide_length = q.slide_length;
+      break;  // SPIN_SLIDE, as Check made sure
+  }
+
+  const auto ball = balls_.find(q.ball_id);
+  if (ball == balls_.end()) {
+    return refuse(cue_command_t::STATUS_NO_BALL_STATE,
+                  "no table state has ball " + std::to_string(q.ball_id));
+  }
+  const ball_state_t& s = ball->second;
+  c.start[0] = s.position[0];
+  c.start[1] = s.position[1];
+  const double age = 1e-6 * static_cast<double>(q.utime - s.utime);
+  if (std::abs(age) > options_.max_state_age) {
+    std::ostringstream reason;
+    reason << "the latest state of ball " << q.ball_id << " is " << std::abs(age) << " s "
+           << (age > 0 ? "older" : "newer") << " than the request (at most "
+           << options_.max_state_age << " s)";
+    return refuse(cue_command_t::STATUS_STALE_STATE, reason.str());
+  }
+  const double speed = std::hypot(s.velocity[0], s.velocity[1]);
+  if (speed > options_.max_ball_speed) {
+    std::ostringstream reason;
+    reason << "ball " << q.ball_id << " is moving (" << speed << " m/s, more than "
+           << options_.max_ball_speed << " m/s)";
+    return refuse(cue_command_t::STATUS_INVALID, reason.str());
+  }
+
+  request.from = {s.position[0], s.position[1]};
+  request.to = {q.target[0], q.target[1]};
+  request.final_speed = q.final_speed;
+  request.side_spin = q.side_spin;
+  planner::ShotPlan plan;
+  try {
+    plan = planner::PlanShot(request, params_, options_.planner);
+  } catch (const std::exception& e) {
+    return refuse(cue_command_t::STATUS_NOT_CONVERGED, std::string("planner failed: ") + e.what());
+  }
+
+  // The planner's measurements go out with a refusal too (a not-converged plan's miss says by how
+  // much); the stroke only with an ok plan, so that a refused command cannot move the cue.
+  for (int i = 0; i < 2; ++i) c.v0[i] = plan.v0[i];
+  for (int i = 0; i < 3; ++i) c.w0[i] = plan.w0[i];
+  c.num_path_points = static_cast<int32_t>(plan.predicted_path.size());
+  c.path.reserve(plan.predicted_path.size());
+  for (const Eigen::Vector2d& p : plan.predicted_path) c.path.push_back({p.x(), p.y()});
+  c.predicted_final[0] = plan.predicted_final.x();
+  c.predicted_final[1] = plan.predicted_final.y();
+  c.closed_form_miss_m = plan.closed_form_miss_m;
+  c.refined_miss_m = plan.refined_miss_m;
+  c.solve_us = plan.solve_us;
+  c.iterations = plan.iterations;
+  c.status = ToMessageStatus(plan.status);
+  if (plan.status == planner::PlanStatus::kOk) {
+    c.cue_speed = plan.stroke.speed;
+    c.heading = plan.stroke.heading;
+    c.tip_side = plan.stroke.tip_side;
+    c.tip_height = plan.stroke.tip_height;
+    c.elevation = plan.stroke.elevation;
+  } else {
+    c.reason = plan.reason.empty() ? planner::PlanStatusName(plan.status) : plan.reason;
+  }
+  // Whatever goes out must pass the receiver's checks, or the answer is lost: a refusal keeps its
+  // status without the measurements, and an ok that fails them is no ok.
+  if (std::string why = messages::Check(c); !why.empty()) {
+    const bool was_ok = c.status == cue_command_t::STATUS_OK;
+    cue_command_t refused{};
+    refused.utime = c.utime;
+    refused.request_id = c.request_id;
+    refused.ball_id = c.ball_id;
+    std::copy(c.start, c.start + 2, refused.start);
+    refused.status = was_ok ? cue_command_t::STATUS_NOT_CONVERGED : c.status;
+    refused.reason = was_ok ? "the plan is not a valid command: " + why : c.reason;
+    return refused;
+  }
+  return c;
+}
+
+std::int64_t PlannerNode::StateUtime(std::int32_t ball_id) const {
+  const auto ball = balls_.find(ball_id);
+  return ball == balls_.end() ? -1 : ball->second.utime;
+}
+
+void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+  try {
+    health_.Received();
+    table_state_t state;
+    if (std::string why = messages::DecodeChecked(rbuf->data, rbuf->data_size, state);
+        !why.empty()) {
+      return health_.Dropped(channel + ": " + why);
+    }
+    switch (state_clock_.Accept(state.utime)) {
+      case nodes::MessageClock::Verdict::kNext:
+        break;
+      case nodes::MessageClock::Verdict::kDuplicate:
+        return health_.Count("duplicate");
+      case nodes::MessageClock::Verdict::kLate:
+        return health_.Dropped(channel + ": utime " + std::to_string(state.utime) +
+                               " is older than the latest, " +
+                               std::to_string(state_clock_.latest()) + " (late or reordered)");
+      case nodes::MessageClock::Verdict::kNewClock:
+        // The publisher restarted: the old clock's balls and answers mean nothing now.
+        health_.Count("clock_reset");
+        log_(channel + ": a new clock at utime " + std::to_string(state.utime) +
+             ": the balls known so far are forgotten");
+        balls_.clear();
+        answered_.clear();
+        break;
+    }
+    for (const ball_state_t& ball : state.balls) balls_.insert_or_assign(ball.ball_id, ball);
+    while (balls_.size() > kMaxRememberedBalls) {
+      balls_.erase(std::min_element(balls_.begin(), balls_.end(), [](const auto& a, const auto& b) {
+        return a.second.utime < b.second.utime;
+      }));
+      health_.Count("forgotten_ball");
+    }
+  } catch (const std::exception& e) {
+    health_.Dropped(channel + ": " + e.what());
+  } catch (...) {
+    health_.Dropped(channel + ": unknown exception");
+  }
+}
+
+void PlannerNode::OnShotRequest(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+  const auto arrived = nodes::NodeHealth::Clock::now();
+  try {
+    health_.Received();
+    shot_request_t request;
+    // A request that decodes but fails Check is answered (invalid, with the reason): its sender
+    // can be told. One that does not decode has no request_id to answer.
+    if (std::string why = messages::Decode(rbuf->data, rbuf->data_size, request); !why.empty()) {
+      return health_.Dropped(channel + ": " + why);
+    }
+    const auto* begin = static_cast<const std::uint8_t*>(rbuf->data);
+    Bytes bytes(begin, begin + rbuf->data_size);
+    for (const Waiting& w : waiting_) {
+      if (w.bytes == bytes) {
+        health_.Count("duplicate");
+        return;
+      }
+    }
+    const std::int64_t state_utime = StateUtime(request.ball_id);
+    for (const Answered& a : answered_) {
+      if (a.request == bytes && a.state_utime == state_utime) {
+        health_.Count("duplicate");
+        return Publish(a.command, arrived);
+      }
+    }
+    if (waiting_.size() >= static_cast<std::size_t>(options_.queue_capacity)) {
+      cue_command_t busy{};
+      busy.utime = request.utime;
+      busy.request_id = request.request_id;
+      busy.ball_id = request.ball_id;
+      busy.status = cue_command_t::STATUS_BUSY;
+      busy.reason =
+          "the planner's queue is full (" + std::to_string(waiting_.size()) + " requests waiting)";
+      if (!refusing_busy_) log_("queue full: answering busy until it has room");
+      refusing_busy_ = true;
+      return Publish(busy, arrived);
+    }
+    waiting_.push_back({request, std::move(bytes), arrived});
+    health_.SetQueueDepth(static_cast<int>(waiting_.size()));
+  } catch (const std::exception& e) {
+    health_.Dropped(channel + ": " + e.what());
+  } catch (...) {
+    health_.Dropped(channel + ": unknown exception");
+  }
+}
+
+void PlannerNode::Publish(const cue_command_t& command,
+                          nodes::NodeHealth::Clock::time_point arrived) {
+  if (lcm_.publish(messages::kCueCommandChannel, &command) != 0) {
+    return health_.Dropped(std::string(messages::kCueCommandChannel) +
+                           ": publishing the answer to request " +
+                           std::to_string(command.request_id) + " failed");
+  }
+  health_.Published();
+  health_.Count(messages::CueCommandStatusName(command.status));
+  health_.Latency(nodes::NodeHealth::Clock::now() - arrived);
+}
+
+bool PlannerNode::Work() {
+  try {
+    if (!waiting_.empty()) {
+      Waiting w = std::move(waiting_.front());
+      waiting_.pop_front();
+      health_.SetQueueDepth(static_cast<int>(waiting_.size()));
+      const cue_command_t command = Answer(w.request);
+      Publish(command, w.arrived);
+      log_(Describe(command));
+      answered_.push_back({std::move(w.bytes), StateUtime(w.request.ball_id), command});
+      if (answered_.size() > kRememberedAnswers) answered_.pop_front();
+      if (refusing_busy_ && waiting_.empty()) {
+        refusing_busy_ = false;
+        log_("queue empty again: " + std::to_string(health_.counter("busy")) +
+             " requests answered busy so far");
+      }
+    }
+    health_.PublishIfDue(lcm_);
+  } catch (const std::exception& e) {
+    health_.Dropped(std::string("work: ") + e.what());
+  } catch (...) {
+    health_.Dropped("work: unknown exception");
+  }
+  return !waiting_.empty();
+}
+
+}  // namespace billiard::planner_node

@@ -1,0 +1,131 @@
+// The planner node: answers every SHOT_REQUEST with a CUE_COMMAND planned (shot_planner.h) from
+// the latest TABLE_STATE.
+//
+//   TABLE_STATE   table_state_t    keeps the latest state received of each ball_id (a message
+//                                  naming some balls leaves the others as they were)
+//   SHOT_REQUEST  shot_request_t   one cue_command_t per request, ok or refused
+//   CUE_COMMAND   cue_command_t    utime, request_id and ball_id of the request
+//
+// The answer depends only on the messages received, never on the clock: its utime is the
+// request's, so a logged run replays to the same commands (all but solve_us, the planning wall
+// time the message carries by design).
+//
+// Refusals (status != STATUS_OK, the reason in words, the stroke fields zero; the plan fields say
+// what the planner measured, zero when it did not run):
+//   STATUS_INVALID        a request that fails messages::Check (an unknown spin value, a
+//                         non-finite number, ...), a ball moving faster than max_ball_speed
+//   STATUS_NO_BALL_STATE  no table state received has that ball_id
+//   STATUS_STALE_STATE    the ball's latest state and the request are further apart in time than
+//                         max_state_age: the estimator may have stopped and the ball moved since,
+//                         so the planner does not act on it
+//   STATUS_BUSY           the queue of requests waiting to be planned was full
+//   STATUS_NOT_CONVERGED  also when the planner throws (an integrator giving up): the request
+//                         gets an answer all the same
+//   the others            PlanShot's status (shot_planner.h)
+//
+// Requests wait in a bounded queue and are planned one at a time by Work(), so a burst of them
+// costs bounded memory and each gets an answer: planned, or refused busy at once. A request
+// identical to one answered before, for a ball whose state has not changed since, gets the same
+// answer again without planning (a sender retrying after a lost answer).
+//
+// Table states: one that fails messages::Check is dropped, and so is one older than the latest
+// (a late or reordered message), unless the publisher has started a new clock (message_clock.h):
+// then what the node knew of the old one is forgotten.
+//
+// A node never dies on a message: a payload that does not decode is logged and dropped, and every
+// handler catches what it throws. Counts and latencies go out on NODE_STATUS (node_health.h).
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <lcm/lcm-cpp.hpp>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "lcmtypes/billiard/ball_state_t.hpp"
+#include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/shot_request_t.hpp"
+#include "lcmtypes/node/message_clock.h"
+#include "lcmtypes/node/node_health.h"
+#include "planner/shot_planner.h"
+#include "sim/physics/parameters.h"
+
+namespace billiard::planner_node {
+
+struct PlannerNodeOptions {
+  planner::PlannerOptions planner;
+  // A ball faster than this [m/s] is still moving: a plan from where it is now would start from
+  // the wrong place, so the request is refused. The default is above an estimator's noise on a
+  // ball at rest and below any ball that will roll on for more than a few millimetres.
+  double max_ball_speed = 0.05;
+  // The most a ball's state and a request may be apart in time [s] (their utimes).
+  double max_state_age = 1.0;
+  // Requests waiting to be planned; more are answered STATUS_BUSY.
+  int queue_capacity = 32;
+};
+
+// At most this many balls are remembered; beyond it the longest unseen is forgotten.
+inline constexpr std::size_t kMaxRememberedBalls = 256;
+// Answers remembered for requests sent again.
+inline constexpr std::size_t kRememberedAnswers = 64;
+
+class PlannerNode {
+ public:
+  using Log = std::function<void(const std::string& line)>;
+
+  // Subscribes on `lcm`, which must outlive the node; `log` gets one line per event (stderr by
+  // default). Nothing is planned until Work() is called.
+  PlannerNode(lcm::LCM& lcm, physics::ModelParameters params, PlannerNodeOptions options = {},
+              Log log = nullptr);
+  ~PlannerNode();  // unsubscribes
+  PlannerNode(const PlannerNode&) = delete;
+  PlannerNode& operator=(const PlannerNode&) = delete;
+
+  // The answer to `request` from the states received so far: what the node publishes.
+  cue_command_t Answer(const shot_request_t& request) const;
+
+  // Plans the oldest waiting request and publishes its answer, and NODE_STATUS when due. Returns
+  // whether more requests wait. The node's main loop calls it between messages
+  // (nodes::HandleUntilStopped).
+  bool Work();
+
+  // The node's counters; TakeStatus() on it starts a new latency period.
+  nodes::NodeHealth& health() { return health_; }
+
+ private:
+  using Bytes = std::vector<std::uint8_t>;
+  struct Waiting {
+    shot_request_t request;
+    Bytes bytes;
+    nodes::NodeHealth::Clock::time_point arrived;
+  };
+  struct Answered {
+    Bytes request;
+    std::int64_t state_utime;  // of the ball's state the answer came from, -1 if none
+    cue_command_t command;
+  };
+
+  // Raw handlers: the node decodes the payload itself so that a failure is logged its way.
+  void OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  void OnShotRequest(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+
+  lcm::LCM& lcm_;
+  const physics::ModelParameters params_;
+  const PlannerNodeOptions options_;
+  void Publish(const cue_command_t& command, nodes::NodeHealth::Clock::time_point arrived);
+  std::int64_t StateUtime(std::int32_t ball_id) const;
+
+  const Log log_;
+  nodes::NodeHealth health_;
+  std::unordered_map<int32_t, ball_state_t> balls_;
+  nodes::MessageClock state_clock_;
+  std::deque<Waiting> waiting_;
+  std::deque<Answered> answered_;
+  bool refusing_busy_ = false;
+  lcm::Subscription* table_state_subscription_ = nullptr;
+  lcm::Subscription* shot_request_subscription_ = nullptr;
+};
+
+}  // namespace billiard::planner_node

@@ -1,0 +1,405 @@
+// The planner node over LCM: in-process on memq:// (one LCM shared by the node and the test), and
+// build/bin/planner_node as it is started and stopped.
+#include "planner/node/planner_node.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lcmtypes/billiard/table_state_t.hpp"
+#include "lcmtypes/names.h"
+#include "lcmtypes/node/node_loop.h"
+#include "sim/params/parameter_sets.h"
+#include "tests/support/run_command.h"
+
+namespace billiard::planner_node {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The message constants are declared without a definition (lcm-gen's C++98 output), so a test
+// must not bind them to a reference: compare them as ints.
+int Status(const cue_command_t& c) { return c.status; }
+constexpr int kOk = cue_command_t::STATUS_OK;
+constexpr int kInvalid = cue_command_t::STATUS_INVALID;
+constexpr int kOffTable = cue_command_t::STATUS_OFF_TABLE;
+constexpr int kNoBallState = cue_command_t::STATUS_NO_BALL_STATE;
+
+ball_state_t Ball(int32_t id, double x, double y, double vx = 0.0, double vy = 0.0) {
+  ball_state_t b{};
+  b.ball_id = id;
+  b.position[0] = x;
+  b.position[1] = y;
+  b.velocity[0] = vx;
+  b.velocity[1] = vy;
+  return b;
+}
+
+shot_request_t Request(int64_t id, int32_t ball, double x, double y,
+                       int8_t spin = shot_request_t::SPIN_NATURAL) {
+  shot_request_t q{};
+  q.utime = 1'000'000 + 17 * id;
+  q.request_id = id;
+  q.ball_id = ball;
+  q.target[0] = x;
+  q.target[1] = y;
+  q.spin = spin;
+  return q;
+}
+
+class PlannerNodeTest : public ::testing::Test {
+ protected:
+  PlannerNodeTest() {
+    // Unbounded: a burst's answers all arrive before the test handles the first.
+    lcm_.subscribe(messages::kCueCommandChannel, &PlannerNodeTest::OnCommand, this)
+        ->setQueueCapacity(0);
+  }
+
+  void OnCommand(const lcm::ReceiveBuffer*, const std::string&, const cue_command_t* c) {
+    commands_.push_back(*c);
+  }
+
+  void PublishTable(const std::vector<ball_state_t>& balls, int64_t utime = 1'000'000) {
+    table_state_t state{};
+    state.utime = utime;
+    state.num_balls = static_cast<int32_t>(balls.size());
+    state.balls = balls;
+    for (ball_state_t& b : state.balls) b.utime = utime;
+    ASSERT_EQ(lcm_.publish(messages::kTableStateChannel, &state), 0);
+  }
+
+  // Runs the node as its main loop does until it has nothing left to do.
+  void RunNode() {
+    nodes::HandleUntilIdle(lcm_, [this] { return node_.Work(); });
+  }
+
+  // Publishes the request and runs the node: the answer, or nullopt if there is none.
+  std::optional<cue_command_t> Ask(const shot_request_t& request) {
+    EXPECT_EQ(lcm_.publish(messages::kShotRequestChannel, &request), 0);
+    RunNode();
+    for (auto c = commands_.rbegin(); c != commands_.rend(); ++c) {
+      if (c->request_id == request.request_id) return *c;
+    }
+    return std::nullopt;
+  }
+
+  cue_command_t AskOk(const shot_request_t& request) {
+    const auto answer = Ask(request);
+    EXPECT_TRUE(answer) << "no answer to request " << request.request_id;
+    if (!answer) return {};
+    EXPECT_EQ(Status(*answer), kOk) << answer->reason;
+    return *answer;
+  }
+
+  int LogLinesContaining(const std::string& text) const {
+    int n = 0;
+    for (const std::string& line : log_) n += line.find(text) != std::string::npos;
+    return n;
+  }
+
+  lcm::LCM lcm_{"memq://"};
+  const physics::ModelParameters params_ = params::LoadParameters("paper");
+  std::vector<std::string> log_;
+  std::vector<cue_command_t> commands_;
+  PlannerNode node_{lcm_, params_, {}, [this](const std::string& line) { log_.push_back(line); }};
+};
+
+TEST_F(PlannerNodeTest, AnswersLikePlanShotCalledDirectly) {
+  ASSERT_TRUE(lcm_.good());
+  PublishTable({Ball(1, 0.6, 0.5), Ball(2, 2.0, 1.0)});
+  shot_request_t q = Request(42, 1, 1.8, 0.9);
+  q.final_speed = 0.2;
+  q.side_spin = 5.0;
+  const cue_command_t c = AskOk(q);
+  EXPECT_EQ(c.request_id, 42);
+  EXPECT_EQ(c.ball_id, 1);
+  EXPECT_EQ(c.utime, q.utime);
+  EXPECT_TRUE(c.reason.empty());
+
+  planner::ShotRequest direct;
+  direct.from = {0.6, 0.5};
+  direct.to = {1.8, 0.9};
+  direct.final_speed = 0.2;
+  direct.side_spin = 5.0;
+  const planner::ShotPlan plan = planner::PlanShot(direct, params_);
+  ASSERT_EQ(plan.status, planner::PlanStatus::kOk) << plan.reason;
+  // The same request, so the same numbers to the bit: the planner depends on nothing else.
+  EXPECT_EQ(c.v0[0], plan.v0.x());
+  EXPECT_EQ(c.v0[1], plan.v0.y());
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(c.w0[i], plan.w0[i]);
+  EXPECT_EQ(c.cue_speed, plan.stroke.speed);
+  EXPECT_EQ(c.heading, plan.stroke.heading);
+  EXPECT_EQ(c.tip_side, plan.stroke.tip_side);
+  EXPECT_EQ(c.tip_height, plan.stroke.tip_height);
+  EXPECT_EQ(c.elevation, plan.stroke.elevation);
+  EXPECT_EQ(c.iterations, plan.iterations);
+  EXPECT_EQ(c.refined_miss_m, plan.refined_miss_m);
+  EXPECT_EQ(c.closed_form_miss_m, plan.closed_form_miss_m);
+  EXPECT_GT(c.cue_speed, 0.0);
+
+  EXPECT_EQ(c.start[0], 0.6);
+  EXPECT_EQ(c.start[1], 0.5);
+  ASSERT_GE(c.num_path_points, 2);
+  ASSERT_EQ(c.path.size(), static_cast<size_t>(c.num_path_points));
+  EXPECT_NEAR(c.path.front()[0], 0.6, 1e-12);
+  EXPECT_NEAR(c.path.front()[1], 0.5, 1e-12);
+  EXPECT_NEAR(c.path.back()[0], c.predicted_final[0], 1e-12);
+  EXPECT_NEAR(c.path.back()[1], c.predicted_final[1], 1e-12);
+  EXPECT_LT(std::hypot(c.predicted_final[0] - 1.8, c.predicted_final[1] - 0.9), 1e-3);
+  EXPECT_EQ(LogLinesContaining("request 42 (ball 1): ok"), 1);
+}
+
+TEST_F(PlannerNodeTest, MapsEverySpinChoiceToThePlannersRequest) {
+  PublishTable({Ball(3, 0.4, 0.4)});
+  const std::pair<int8_t, std::optional<planner::SpinStyle>> spins[] = {
+      {shot_request_t::SPIN_NATURAL, planner::SpinStyle::kNatural},
+      {shot_request_t::SPIN_STUN, planner::SpinStyle::kStun},
+      {shot_request_t::SPIN_FOLLOW, planner::SpinStyle::kFollow},
+      {shot_request_t::SPIN_DRAW, planner::SpinStyle::kDraw},
+      {shot_request_t::SPIN_SLIDE, std::nullopt}};
+  int64_t id = 100;
+  for (const auto& [spin, style] : spins) {
+    shot_request_t q = Request(++id, 3, 1.4, 0.7, spin);
+    q.final_speed = 0.5;
+    q.slide_length = 0.3;
+    const auto answer = Ask(q);
+    ASSERT_TRUE(answer) << int{spin};
+    planner::ShotRequest direct;
+    direct.from = {0.4, 0.4};
+    direct.to = {1.4, 0.7};
+    direct.final_speed = 0.5;
+    if (style) {
+      direct.style = *style;
+    } else {
+      direct.slide_length = 0.3;
+    }
+    const planner::ShotPlan plan = planner::PlanShot(direct, params_);
+    EXPECT_EQ(answer->reason, plan.reason) << int{spin};
+    EXPECT_EQ(answer->v0[0], plan.v0.x()) << int{spin};
+    EXPECT_EQ(answer->w0[0], plan.w0.x()) << int{spin};
+    EXPECT_EQ(answer->w0[1], plan.w0.y()) << int{spin};
+    std::fprintf(stderr, "spin %d: %s, %d iterations, miss %.2e m (closed form %.2e m), %.0f us\n",
+                 int{spin}, messages::CueCommandStatusName(answer->status).c_str(),
+                 answer->iterations, answer->refined_miss_m, answer->closed_form_miss_m,
+                 answer->solve_us);
+  }
+}
+
+TEST_F(PlannerNodeTest, RefusesWithAReasonAndKeepsAnswering) {
+  PublishTable({Ball(1, 0.6, 0.5)});
+  struct Case {
+    shot_request_t request;
+    int status;
+  };
+  std::vector<Case> cases = {
+      {Request(1, 1, 5.0, 0.5), kOffTable},
+      {Request(2, 9, 1.0, 0.5), kNoBallState},
+      {Request(3, 1, kNaN, 0.5), kInvalid},
+      {Request(4, 1, 1.0, 0.5, 9), kInvalid},
+      {Request(5, 1, 1.0, 0.5, shot_request_t::SPIN_SLIDE), kInvalid},
+      {Request(6, 1, 1.0, 0.5), kInvalid},
+      {Request(7, 1, 1.0, 0.5), kInvalid},
+  };
+  cases[4].request.slide_length = kNaN;
+  cases[5].request.final_speed = std::numeric_limits<double>::infinity();
+  cases[6].request.side_spin = -kNaN;
+  for (const Case& k : cases) {
+    const auto answer = Ask(k.request);
+    ASSERT_TRUE(answer) << "request " << k.request.request_id;
+    EXPECT_EQ(Status(*answer), k.status)
+        << "request " << k.request.request_id << ": " << answer->reason;
+    EXPECT_FALSE(answer->reason.empty()) << "request " << k.request.request_id;
+    EXPECT_EQ(answer->request_id, k.request.request_id);
+    // A refused command cannot move the cue.
+    for (double x : {answer->cue_speed, answer->heading, answer->tip_side, answer->tip_height,
+                     answer->elevation}) {
+      EXPECT_EQ(x, 0.0) << "request " << k.request.request_id;
+    }
+  }
+  EXPECT_EQ(LogLinesContaining("request 1 (ball 1): off_table"), 1);
+  EXPECT_EQ(LogLinesContaining("request 2 (ball 9): no_ball_state"), 1);
+
+  // slide_length means nothing without SPIN_SLIDE: a NaN there is no reason to refuse.
+  shot_request_t q = Request(8, 1, 1.0, 0.5);
+  q.slide_length = kNaN;
+  AskOk(q);
+}
+
+TEST_F(PlannerNodeTest, RefusesToPlanForAMovingBall) {
+  PublishTable({Ball(1, 0.6, 0.5, 0.3, 0.1), Ball(2, 1.6, 0.5, 0.01, -0.02)});
+  const auto moving = Ask(Request(1, 1, 1.0, 0.5));
+  ASSERT_TRUE(moving);
+  EXPECT_EQ(Status(*moving), kInvalid);
+  EXPECT_NE(moving->reason.find("moving"), std::string::npos) << moving->reason;
+  AskOk(Request(2, 2, 1.0, 0.5));  // below the 0.05 m/s default
+
+  // A state with a NaN is dropped on arrival: there is no state of that ball to plan from.
+  PublishTable({Ball(4, kNaN, 0.5)});
+  const auto nan_state = Ask(Request(3, 4, 1.0, 0.5));
+  ASSERT_TRUE(nan_state);
+  EXPECT_EQ(Status(*nan_state), kNoBallState);
+  EXPECT_EQ(LogLinesContaining("ball 4 has a non-finite position"), 1);
+}
+
+TEST_F(PlannerNodeTest, KeepsTheLatestStateOfEachBall) {
+  PublishTable({Ball(1, 0.6, 0.5), Ball(2, 2.0, 1.0)});
+  PublishTable({Ball(1, 0.7, 0.4)}, 1'500'000);  // ball 2 not seen this time
+  const cue_command_t one = AskOk(Request(1, 1, 1.5, 0.6));
+  EXPECT_EQ(one.start[0], 0.7);
+  EXPECT_EQ(one.start[1], 0.4);
+  const cue_command_t two = AskOk(Request(2, 2, 1.5, 0.6));
+  EXPECT_EQ(two.start[0], 2.0);
+  EXPECT_EQ(two.start[1], 1.0);
+}
+
+TEST_F(PlannerNodeTest, SurvivesPayloadsThatDoNotDecode) {
+  const std::string garbage = "this is not an LCM message";
+  lcm_.publish(messages::kShotRequestChannel, garbage.data(),
+               static_cast<unsigned>(garbage.size()));
+  lcm_.publish(messages::kTableStateChannel, garbage.data(), static_cast<unsigned>(garbage.size()));
+
+  // A request cut short, and one with bytes after it.
+  const shot_request_t request = Request(1, 1, 1.0, 0.5);
+  std::vector<uint8_t> bytes(request.getEncodedSize() + 3);
+  ASSERT_EQ(request.encode(bytes.data(), 0, static_cast<int>(bytes.size())),
+            request.getEncodedSize());
+  lcm_.publish(messages::kShotRequestChannel, bytes.data(), request.getEncodedSize() - 1);
+  lcm_.publish(messages::kShotRequestChannel, bytes.data(), static_cast<unsigned>(bytes.size()));
+
+  // Table states whose ball count lies: the decoder would size its vector from it.
+  table_state_t state{};
+  state.num_balls = 1;
+  state.balls = {Ball(1, 0.6, 0.5)};
+  std::vector<uint8_t> table(state.getEncodedSize());
+  ASSERT_EQ(state.encode(table.data(), 0, static_cast<int>(table.size())),
+            static_cast<int>(table.size()));
+  for (uint32_t count : {0xffffffffu, 100'000'000u}) {
+    for (int i = 0; i < 4; ++i) table[16 + i] = static_cast<uint8_t>(count >> (24 - 8 * i));
+    lcm_.publish(messages::kTableStateChannel, table.data(), static_cast<unsigned>(table.size()));
+  }
+
+  // None of that was taken for a request or a ball.
+  const auto answer = Ask(Request(2, 1, 1.0, 0.5));
+  ASSERT_TRUE(answer);
+  EXPECT_EQ(Status(*answer), kNoBallState);
+  EXPECT_EQ(commands_.size(), 1u);
+  EXPECT_EQ(LogLinesContaining("dropped"), 6);
+
+  PublishTable({Ball(1, 0.6, 0.5)});
+  AskOk(Request(3, 1, 1.0, 0.5));
+}
+
+TEST_F(PlannerNodeTest, NeverActsOnAStaleState) {
+  PublishTable({Ball(1, 0.6, 0.5)}, 1'000'000);
+  shot_request_t late = Request(1, 1, 1.5, 0.6);
+  late.utime = 2'500'000;  // the estimator has said nothing for 1.5 s
+  const auto stale = Ask(late);
+  ASSERT_TRUE(stale);
+  EXPECT_EQ(Status(*stale), cue_command_t::STATUS_STALE_STATE) << stale->reason;
+  EXPECT_NE(stale->reason.find("1.5 s older"), std::string::npos) << stale->reason;
+  EXPECT_EQ(stale->cue_speed, 0.0);
+
+  PublishTable({Ball(1, 0.6, 0.5)}, 2'400'000);
+  late.request_id = 2;
+  AskOk(late);
+}
+
+TEST_F(PlannerNodeTest, DropsLateStatesAndForgetsAnOldClock) {
+  PublishTable({Ball(1, 0.7, 0.4)}, 12'000'000);
+  PublishTable({Ball(1, 0.6, 0.5)}, 11'900'000);  // arrives late: the ball is not back there
+  PublishTable({Ball(1, 0.7, 0.4)}, 12'000'000);  // the same state again
+  shot_request_t q = Request(1, 1, 1.5, 0.6);
+  q.utime = 12'000'000;
+  EXPECT_EQ(AskOk(q).start[0], 0.7);
+  EXPECT_EQ(LogLinesContaining("older than the latest"), 1);
+  EXPECT_EQ(node_.health().counter("duplicate"), 1);
+
+  // The estimator restarted with its clock near zero: a new session, not a late message.
+  PublishTable({Ball(3, 1.0, 1.0)}, 100'000);
+  q.request_id = 2;
+  q.utime = 100'000;
+  EXPECT_EQ(Status(*Ask(q)), kNoBallState) << "ball 1 belonged to the old clock";
+  EXPECT_EQ(node_.health().counter("clock_reset"), 1);
+}
+
+TEST_F(PlannerNodeTest, ARequestSentAgainGetsTheSameAnswerWithoutPlanningAgain) {
+  PublishTable({Ball(1, 0.6, 0.5)});
+  const shot_request_t q = Request(1, 1, 1.5, 0.6);
+  const cue_command_t first = AskOk(q);
+  const cue_command_t again = AskOk(q);
+  EXPECT_EQ(again.solve_us, first.solve_us) << "planned again";
+  EXPECT_EQ(node_.health().counter("duplicate"), 1);
+  EXPECT_EQ(commands_.size(), 2u);
+
+  // Once the ball's state has changed the same request is a new question.
+  PublishTable({Ball(1, 0.6, 0.55)}, 1'000'010);
+  EXPECT_NE(AskOk(q).start[1], first.start[1]);
+  EXPECT_EQ(node_.health().counter("duplicate"), 1);
+}
+
+TEST_F(PlannerNodeTest, ABurstIsAnsweredInFullFromABoundedQueue) {
+  PublishTable({Ball(1, 0.6, 0.5)});
+  constexpr int kBurst = 10000;
+  for (int id = 0; id < kBurst; ++id) {
+    const shot_request_t q = Request(id, 1, 1.5, 0.6 + 1e-6 * id);
+    ASSERT_EQ(lcm_.publish(messages::kShotRequestChannel, &q), 0);
+  }
+  // Everything has arrived before the first plan: the queue takes what it holds, the rest is
+  // refused at once, and nothing goes unanswered.
+  while (lcm_.handleTimeout(0) > 0) {
+  }
+  const int capacity = PlannerNodeOptions{}.queue_capacity;
+  EXPECT_EQ(node_.health().counter("busy"), kBurst - capacity);
+  RunNode();
+  std::vector<int> answers(kBurst, 0);
+  int ok = 0, busy = 0;
+  for (const cue_command_t& c : commands_) {
+    ++answers.at(c.request_id);
+    ok += Status(c) == kOk;
+    busy += Status(c) == cue_command_t::STATUS_BUSY;
+  }
+  EXPECT_EQ(std::count(answers.begin(), answers.end(), 1), kBurst) << "each answered once";
+  EXPECT_EQ(ok, capacity);
+  EXPECT_EQ(busy, kBurst - capacity);
+  const node_status_t status = node_.health().TakeStatus();
+  EXPECT_EQ(status.queue_depth, 0);
+  EXPECT_EQ(status.published, kBurst);
+  EXPECT_EQ(status.latency_count, kBurst);
+  EXPECT_GT(status.latency_max_us, status.latency_p50_us);
+  EXPECT_EQ(LogLinesContaining("queue full"), 1) << "one line, not one per refusal";
+}
+
+TEST(PlannerNodeBinary, StopsCleanlyOnSigintAndSigterm) {
+  for (const char* signal : {"INT", "TERM"}) {
+    const auto r =
+        billiard::testing::RunCommand(std::string("timeout --preserve-status -s ") + signal +
+                                          " 1 " PLANNER_NODE_BIN + " --lcm-url memq://",
+                                      true);
+    EXPECT_EQ(r.status, 0) << signal << ": " << r.out;
+    EXPECT_NE(r.out.find("planner_node: stopped"), std::string::npos) << signal << ": " << r.out;
+  }
+}
+
+TEST(PlannerNodeBinary, BadStartExitsNonZeroWithAOneLineReason) {
+  const auto bad_url =
+      billiard::testing::RunCommand(PLANNER_NODE_BIN " --lcm-url nosuchprovider://x", true);
+  EXPECT_EQ(bad_url.status, 1) << bad_url.out;
+  EXPECT_NE(bad_url.out.find("planner_node: cannot initialise LCM with 'nosuchprovider://x'\n"),
+            std::string::npos)
+      << bad_url.out;
+  for (const char* args : {" --params no-such-set", " --max-ball-speed nan", " --frobnicate"}) {
+    const auto r = billiard::testing::RunCommand(PLANNER_NODE_BIN + std::string(args), true);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace billiard::planner_node

@@ -1,0 +1,48 @@
+// Dimensionless contact kinematics of the ball (seed 000, eqs. 14, 26, 27).
+//
+// Velocities are divided by the patch radius a, so the friction models see the slip of the
+// contact patch in patch radii per second. Templated on the scalar so that the same code runs
+// on doubles and on ceres::Jet (the integrators' Jacobians come from automatic differentiation).
+#pragma once
+
+#include <cmath>
+
+#include "sim/physics/parameters.h"
+
+namespace billiard::physics {
+
+template <typename T>
+struct ContactKinematics {
+  T vsx, vsy;  // linear sliding velocity of the patch centre, / a           (eq. 26)
+  T ws;        // angular sliding velocity about the normal (= wz)
+  T dc, ds;    // regularized rolling direction times d                       (eq. 14)
+};
+
+// vx, vy, wx, wy, wz: the five dynamic coordinates of the ball.
+template <typename T>
+ContactKinematics<T> ComputeContactKinematics(const T& vx, const T& vy, const T& wx, const T& wy,
+                                              const T& wz, const ContactParameters& c,
+                                              double radius) {
+  using std::sqrt;
+  const double inv_a = 1.0 / c.patch_radius;
+  ContactKinematics<T> k;
+  k.vsx = (vx - radius * wy) * inv_a;
+  k.vsy = (vy + radius * wx) * inv_a;
+  k.ws = wz;
+  // The ball is rigid and the cloth deforms, so the rolling velocity is v itself (eq. 27).
+  const T vrx = vx * inv_a;
+  const T vry = vy * inv_a;
+  const T scale = c.d / sqrt(vrx * vrx + vry * vry + c.eps_r * c.eps_r);
+  k.dc = vrx * scale;
+  k.ds = vry * scale;
+  return k;
+}
+
+// The friction resultant of seed 000 with its sign convention: the force on the ball is
+// -mu N (Tsx, Tsy) and the moment about the normal is -a mu N Ms.
+template <typename T>
+struct FrictionResultant {
+  T tsx, tsy, ms;
+};
+
+}  // namespace billiard::physics

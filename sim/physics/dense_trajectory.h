@@ -1,0 +1,36 @@
+// The dense output of a Rosenbrock integration: one cubic-in-time interpolant per accepted step
+// (Hairer and Wanner's RODAS continuous extension, third order).
+#pragma once
+
+#include <vector>
+
+#include "sim/physics/trajectory.h"
+
+namespace billiard::physics {
+
+class DenseTrajectory : public Trajectory {
+ public:
+  // A step from (t0, x0) to (t1, x1) with the interpolation coefficients c3, c4:
+  // x(s) = (1 - s) x0 + s (x1 + (1 - s) (c3 + s c4)),  s = (t - t0) / (t1 - t0).
+  void Append(double t0, double t1, const BallState& x0, const BallState& x1, const BallState& c3,
+              const BallState& c4);
+
+  BallState At(double t) const override;
+  // The interpolant of one step at s = (t - t0) / (t1 - t0) in [0, 1].
+  static BallState Interpolate(const BallState& x0, const BallState& x1, const BallState& c3,
+                               const BallState& c4, double s);
+  double start_time() const override;
+  double end_time() const override;
+  std::size_t size() const { return steps_.size(); }
+  // Where the last step began (an event found after it lies within that step).
+  double last_step_start() const;
+
+ private:
+  struct Step {
+    double t0, t1;
+    BallState x0, x1, c3, c4;
+  };
+  std::vector<Step> steps_;
+};
+
+}  // namespace billiard::physics

@@ -1,0 +1,63 @@
+// Physical and contact parameters of a ball on a cloth, as named data sets.
+//
+// The contact parameters follow seed 000: the patch radius a (the paper's \hat a), the Coulomb
+// coefficient mu, the rolling-resistance parameter d (shift of the pressure centre, eq. 1), the
+// regularization parameters eps_t and eps_r (eqs. 14-17) and the approximation's fitted
+// constants b_T, m_T, b_M, m_M (eq. 17). The closed-form model (seed 002) reads the same set:
+// mu_s = mu and mu_r = a d / (5 r) (shared/docs/physics-notes.md, section 2).
+#pragma once
+
+#include <string>
+
+namespace billiard::physics {
+
+struct BallParameters {
+  double radius = 0.0;   // r [m]
+  double mass = 0.0;     // m [kg]
+  double gravity = 0.0;  // g [m/s^2]
+};
+
+struct ContactParameters {
+  double patch_radius = 0.0;  // a [m]
+  double mu = 0.0;            // Coulomb friction coefficient, >= a d / (5 r)
+  double d = 0.0;             // rolling resistance parameter, 0 <= d <= 1
+  double eps_t = 0.0;         // friction regularization (dimensionless)
+  double eps_r = 0.0;         // rolling-resistance regularization (dimensionless)
+  double b_t = 0.0, m_t = 2.0;
+  double b_m = 0.0, m_m = 2.0;
+};
+
+// The robot's cue (Alciatore, The Illustrated Principles of Pool and Billiards, TP A.30).
+struct CueParameters {
+  double mass = 0.0;             // M [kg]
+  double tip_restitution = 0.0;  // e, 0..1
+  double max_tip_offset = 0.0;   // largest tip offset from the ball centre, as a fraction of r
+  double max_speed = 0.0;        // fastest cue stroke the robot gives [m/s]
+};
+
+// The playing surface: origin at a corner, x along the long side [m].
+struct TableParameters {
+  double length = 0.0;
+  double width = 0.0;
+};
+
+struct ModelParameters {
+  std::string name;
+  std::string source;  // where the numbers come from
+  BallParameters ball;
+  ContactParameters contact;
+  CueParameters cue;
+  TableParameters table;
+
+  // Rolling-resistance coefficient of the closed-form model that matches this contact.
+  double RollingResistance() const {
+    return contact.patch_radius * contact.d / (5.0 * ball.radius);
+  }
+};
+
+// Throws std::invalid_argument, with a one-line reason, if a value is non-finite or outside its
+// physical range, or if mu is below the rolling resistance a d / (5 r) (the contact would create
+// energy). mu = 0 with d = 0, d = 0, and eps_t, eps_r as small as 1e-9 are valid.
+void ValidateParameters(const ModelParameters& p);
+
+}  // namespace billiard::physics

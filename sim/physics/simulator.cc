@@ -1,0 +1,244 @@
+#include "sim/physics/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "sim/physics/ball_dynamics.h"
+#include "sim/physics/closed_form.h"
+#include "sim/physics/dopri5.h"
+#include "sim/physics/rest.h"
+#include "sim/physics/rodas4.h"
+
+namespace billiard::physics {
+
+std::string ModelName(Model m) {
+  switch (m) {
+    case Model::kApproximate:
+      return "approx";
+    case Model::kIntegral:
+      return "integral";
+    case Model::kClosedForm:
+      return "closed-form";
+  }
+  return "?";
+}
+
+std::optional<Model> ParseModel(const std::string& name) {
+  for (Model m : {Model::kApproximate, Model::kIntegral, Model::kClosedForm}) {
+    if (ModelName(m) == name) return m;
+  }
+  return std::nullopt;
+}
+
+std::string IntegratorName(Integrator i) { return i == Integrator::kDopri5 ? "dopri5" : "rodas4"; }
+
+std::optional<Integrator> ParseIntegrator(const std::string& name) {
+  for (Integrator i : {Integrator::kRodas4, Integrator::kDopri5}) {
+    if (IntegratorName(i) == name) return i;
+  }
+  return std::nullopt;
+}
+
+IntegratorOptions IntegratorOptionsFor(const ModelParameters& params, double tolerance) {
+  IntegratorOptions o;
+  // The friction law is linear in the slip only within eps a of zero (eps_r a for the rolling
+  // direction near a stop). A step whose velocity error exceeds that zone overshoots it, and the
+  // slip chatters across zero at the Coulomb switch: with eps = 1e-9 and tolerance 1e-7, millions
+  // of steps for one shot. Resolving the zone lets the L-stable method settle into it. The cap
+  // is 10 eps a, about 3e-4 m/s with the built-in sets: above any tolerance they are run at.
+  const ContactParameters& c = params.contact;
+  const double velocity_tol =
+      std::min(tolerance, 10.0 * std::min(c.eps_t, c.eps_r) * c.patch_radius);
+  const double spin_tol = velocity_tol / params.ball.radius;
+  o.abs_tol << tolerance, tolerance, velocity_tol, velocity_tol, spin_tol, spin_tol, spin_tol;
+  return o;
+}
+
+namespace {
+
+// Runs `system` with the chosen integrator.
+template <class System, class Stop = NeverStop>
+IntegrationResult Run(Integrator integrator, const System& system, const BallState& x0, double t0,
+                      double t_end, const IntegratorOptions& options, IntegrationStats* stats,
+                      DenseTrajectory* dense, const Stop& stop = Stop()) {
+  if (integrator == Integrator::kDopri5) {
+    return IntegrateWith<Dopri5Stepper>(system, x0, t0, t_end, options, stats, dense, stop);
+  }
+  return IntegrateWith<Rodas4Stepper>(system, x0, t0, t_end, options, stats, dense, stop);
+}
+
+template <class Friction>
+SimulationResult Integrate(const ModelParameters& params, Friction friction,
+                           const BallState& initial, double t_end,
+                           const SimulationOptions& options) {
+  const BallDynamics<Friction> dynamics(params, std::move(friction));
+  IntegratorOptions integrator = IntegratorOptionsFor(params, options.tolerance);
+  integrator.max_steps = options.max_steps;
+  auto dense = std::make_shared<DenseTrajectory>();
+  SimulationResult result;
+  IntegrationResult run;
+  if (options.rest_switch) {
+    run = Run(
+        options.integrator, dynamics, initial, 0.0, t_end, integrator, &result.stats, dense.get(),
+        [&dynamics](const BallState& s) { return ClassifyRest(s, dynamics) != RestKind::kMoving; });
+  } else {
+    run = Run(options.integrator, dynamics, initial, 0.0, t_end, integrator, &result.stats,
+              dense.get());
+  }
+  if (run.stopped) {
+    const BallAtRest<BallDynamics<Friction>> rest(dynamics, run.state,
+                                                  ClassifyRest(run.state, dynamics));
+    result.rest_time = run.t;
+    run = Run(options.integrator, rest, rest.start(), run.t, t_end, integrator, &result.stats,
+              dense.get());
+  }
+  result.final_state = run.state;
+  if (dense->size() == 0) {  // t_end = 0: the trajectory is the initial state
+    dense->Append(0.0, 0.0, initial, initial, BallState::Zero(), BallState::Zero());
+  }
+  result.trajectory = std::move(dense);
+  return result;
+}
+
+// The first time in the last step of `dense` at which the speed falls to `speed` (bisection on
+// the dense output: the step began faster than `speed` and ended at or below it).
+double SpeedCrossing(const DenseTrajectory& dense, double speed) {
+  double lo = dense.last_step_start(), hi = dense.end_time();
+  for (int i = 0; i < 60 && hi - lo > 1e-13 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (dense.At(mid).segment<2>(kVx).norm() > speed ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+template <class Friction>
+Arrival IntegrateToArrival(const ModelParameters& params, Friction friction,
+                           const BallState& initial, double speed, double t_max,
+                           const SimulationOptions& options, bool with_sensitivity) {
+  const BallDynamics<Friction> dynamics(params, std::move(friction));
+  IntegratorOptions integrator = IntegratorOptionsFor(params, options.tolerance);
+  integrator.max_steps = options.max_steps;
+  auto dense = std::make_shared<DenseTrajectory>();
+  const auto arrived = [&dynamics, speed](const BallState& s) {
+    return s.segment<2>(kVx).norm() <= speed || ClassifyRest(s, dynamics) != RestKind::kMoving;
+  };
+  Arrival a;
+  IntegrationResult run;
+  std::optional<Rodas4SensitivityStepper<BallDynamics<Friction>>> stepper;
+  if (with_sensitivity) {
+    stepper.emplace(dynamics);
+    run = IntegrateAdaptive(*stepper, initial, 0.0, t_max, integrator, &a.stats, dense.get(),
+                            arrived);
+  } else {
+    run = Run(options.integrator, dynamics, initial, 0.0, t_max, integrator, &a.stats, dense.get(),
+              arrived);
+  }
+  a.reached = run.stopped;
+  a.time = run.t;
+  a.state = run.state;
+  if (dense->size() == 0) {  // arrived at t = 0
+    dense->Append(0.0, 0.0, initial, initial, BallState::Zero(), BallState::Zero());
+  }
+  if (stepper) a.sensitivity = stepper->sensitivity();
+  const RestKind rest = ClassifyRest(run.state, dynamics);
+  if (run.stopped && run.t > 0.0 && rest == RestKind::kMoving) {
+    // The speed fell to `speed` within the last step: locate it, and take S there.
+    a.time = SpeedCrossing(*dense, speed);
+    a.state = dense->At(a.time);
+    if (stepper) {
+      const double step = dense->end_time() - dense->last_step_start();
+      Sensitivity& s = *a.sensitivity;
+      s = stepper->SensitivityWithinLastStep((a.time - dense->last_step_start()) / step);
+      // The arrival time moves with the initial state:
+      // dt/dx0 = -(v_hat . dv/dx0) / (v_hat . dv/dt).
+      const BallState f = dynamics.Derivative(a.state);
+      const Eigen::Vector2d v_hat = a.state.segment<2>(kVx).normalized();
+      const double rate = v_hat.dot(f.segment<2>(kVx));
+      if (rate < 0.0) s += f * (-(v_hat.transpose() * s.middleRows<2>(kVx)) / rate);
+    }
+  } else if (run.stopped && rest != RestKind::kMoving) {
+    a.state = BallAtRest<BallDynamics<Friction>>(dynamics, run.state, rest).start();
+  }
+  a.trajectory = std::move(dense);
+  return a;
+}
+
+void ValidateInput(const ModelParameters& params, const BallState& initial, double t_end,
+                   const SimulationOptions& options) {
+  if (!initial.allFinite()) throw std::invalid_argument("initial state has a non-finite number");
+  if (!std::isfinite(t_end) || t_end < 0.0) {
+    throw std::invalid_argument("end time must be a finite number >= 0");
+  }
+  if (options.model != Model::kClosedForm) {
+    // A zero eps makes 0/0 at rest; mu below the rolling resistance creates energy. The closed
+    // form checks the few numbers it reads itself.
+    ValidateParameters(params);
+    if (!(options.tolerance > 0.0)) throw std::invalid_argument("tolerance must be positive");
+  }
+}
+
+// Calls integrate(friction) with the friction model of the 5-DOF `options.model`, and stores the
+// integral model's calibrated quadrature in *quadrature.
+template <class Integrate>
+auto WithFrictionModel(const ModelParameters& params, const SimulationOptions& options,
+                       std::optional<CalibratedQuadrature>* quadrature, Integrate&& integrate) {
+  if (options.model == Model::kIntegral) {
+    const CalibratedQuadrature q =
+        CalibrateQuadrature(params.contact.eps_t, params.contact.d, options.quadrature_tolerance);
+    *quadrature = q;
+    return integrate(IntegralFrictionModel{IntegralFriction(q.order), params.contact.eps_t});
+  }
+  return integrate(ApproximateFrictionModel{params.contact});
+}
+
+}  // namespace
+
+SimulationResult Simulate(const ModelParameters& params, const BallState& initial, double t_end,
+                          const SimulationOptions& options) {
+  ValidateInput(params, initial, t_end, options);
+  if (options.model == Model::kClosedForm) {
+    auto trajectory =
+        std::make_shared<ClosedFormTrajectory>(ClosedFormParameters::From(params), initial);
+    SimulationResult r;
+    r.final_state = trajectory->At(t_end);
+    r.trajectory = std::move(trajectory);
+    return r;
+  }
+  std::optional<CalibratedQuadrature> quadrature;
+  SimulationResult r = WithFrictionModel(params, options, &quadrature, [&](auto friction) {
+    return Integrate(params, std::move(friction), initial, t_end, options);
+  });
+  r.quadrature = quadrature;
+  return r;
+}
+
+Arrival SimulateArrival(const ModelParameters& params, const BallState& initial, double speed,
+                        double t_max, const SimulationOptions& options, bool with_sensitivity) {
+  ValidateInput(params, initial, t_max, options);
+  if (!std::isfinite(speed) || speed < 0.0) {
+    throw std::invalid_argument("arrival speed must be a finite number >= 0");
+  }
+  if (with_sensitivity &&
+      (options.model == Model::kClosedForm || options.integrator != Integrator::kRodas4)) {
+    throw std::invalid_argument("sensitivities need a 5-DOF model integrated with RODAS4");
+  }
+  if (options.model == Model::kClosedForm) {
+    auto trajectory =
+        std::make_shared<ClosedFormTrajectory>(ClosedFormParameters::From(params), initial);
+    Arrival a;
+    const double t = trajectory->TimeAtSpeed(speed);
+    a.reached = t <= t_max;
+    a.time = std::min(t, t_max);
+    a.state = trajectory->At(a.time);
+    a.trajectory = std::move(trajectory);
+    return a;
+  }
+  std::optional<CalibratedQuadrature> quadrature;
+  return WithFrictionModel(params, options, &quadrature, [&](auto friction) {
+    return IntegrateToArrival(params, std::move(friction), initial, speed, t_max, options,
+                              with_sensitivity);
+  });
+}
+
+}  // namespace billiard::physics

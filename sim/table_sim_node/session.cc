@@ -1,0 +1,135 @@
+#include "sim/table_sim_node/session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <stdexcept>
+
+#include "lcmtypes/node/node_loop.h"
+#include "sim/params/parameter_sets.h"
+
+namespace billiard::table_sim_node {
+
+ExecutionNoise RobotExecutionNoise() { return {0.01, 0.1 * M_PI / 180.0, 0.5e-3}; }
+
+void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
+  TableSimOptions& options = line->options;
+  FaultInjection& faults = options.faults;
+  app.add_option("--lcm-url", line->lcm_url,
+                 "LCM URL (default: $LCM_DEFAULT_URL, else LCM's default)");
+  app.add_option("--params", line->params, "paper | pool | path to a JSON parameter file")
+      ->capture_default_str();
+  app.add_option("--shots", options.shots, "Shots to random targets")->capture_default_str();
+  app.add_option("--seed", options.seed, "Seed of the targets and the noise")
+      ->capture_default_str();
+  app.add_option("--noise", line->noise,
+                 "Execution noise of the robot: on (speed 1 %, heading 0.1 deg, tip 0.5 mm) or off")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  app.add_option("--camera-rate", options.camera_rate, "Frames per second")->capture_default_str();
+  app.add_flag("--realtime", line->realtime, "Real time instead of lockstep");
+  app.add_option("--drop-frames", faults.drop_frames,
+                 "Fault injection: probability a frame is lost")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--reorder-frames", faults.reorder_frames,
+                 "Fault injection: probability a frame is sent after the next")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--duplicate", faults.duplicate,
+                 "Fault injection: probability a frame or a request is sent twice")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--fault-seed", faults.seed, "Seed of the fault injection")->capture_default_str();
+  app.add_option("--reply-timeout", options.reply_timeout,
+                 "Longest wait for the estimator or the planner [s]")
+      ->capture_default_str();
+}
+
+TableSimOptions SessionOptions(const SessionCommandLine& line) {
+  TableSimOptions options = line.options;
+  if (options.shots < 1 || !(options.camera_rate > 0.0) || !(options.reply_timeout > 0.0)) {
+    throw std::invalid_argument("--shots, --camera-rate and --reply-timeout must be positive");
+  }
+  const FaultInjection& f = options.faults;
+  if (f.drop_frames + f.reorder_frames + f.duplicate > 1.0) {
+    throw std::invalid_argument("the fault probabilities add up to more than 1");
+  }
+  options.lockstep = !line.realtime;
+  if (line.noise == "on") options.noise = RobotExecutionNoise();
+  return options;
+}
+
+camera::CameraModel SessionCamera(const physics::TableParameters& table) {
+  return camera::CameraModel::Overhead(table, kCameraWidth, kCameraHeight);
+}
+
+int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
+                      const InProcessNodes& in_process) {
+  const auto fail = [&name](const std::string& reason, int status) {
+    std::cerr << name << ": " << reason << std::endl;
+    return status;
+  };
+  TableSimOptions options;
+  physics::ModelParameters params;
+  try {
+    options = SessionOptions(line);
+    params = params::LoadParameters(line.params);
+  } catch (const std::invalid_argument& e) {
+    return fail(e.what(), 2);
+  }
+  nodes::StopOnSignals();
+  lcm::LCM lcm(line.lcm_url);
+  if (!lcm.good()) return fail("cannot initialise LCM with " + nodes::DescribeUrl(line.lcm_url), 1);
+
+  const auto start = std::chrono::steady_clock::now();
+  const camera::CameraModel camera = SessionCamera(params.table);
+  const std::function<bool()> alongside = in_process ? in_process(lcm, params, camera) : nullptr;
+  TableSimNode node(lcm, params, camera, options);
+  node.RunAlongside(alongside);
+  std::vector<ShotResult> shots;
+  try {
+    shots = node.Run();
+  } catch (const std::runtime_error& e) {
+    return fail(e.what(), nodes::StopRequested() ? 130 : 1);
+  }
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << SessionSummary(shots, node.health().TakeStatus(), wall_s).dump() << std::endl;
+  return 0;
+}
+
+nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_status_t& health,
+                              double wall_s) {
+  nlohmann::json j;
+  std::vector<double> misses;
+  for (const ShotResult& s : shots) {
+    nlohmann::json shot = {{"target", {s.target.x(), s.target.y()}},
+                           {"final", {s.final_point.x(), s.final_point.y()}},
+                           {"miss_m", s.miss_m},
+                           {"plan_ms", s.plan_ms},
+                           {"status", s.status},
+                           {"retries", s.retries}};
+    if (!s.reason.empty()) shot["reason"] = s.reason;
+    j["shots"].push_back(shot);
+    misses.push_back(s.miss_m);
+  }
+  if (!misses.empty()) {
+    std::sort(misses.begin(), misses.end());
+    const std::size_t n = misses.size();
+    j["median_miss_m"] = n % 2 ? misses[n / 2] : 0.5 * (misses[n / 2 - 1] + misses[n / 2]);
+    j["max_miss_m"] = misses.back();
+    double mean = 0.0, spread = 0.0;
+    for (double m : misses) mean += m / n;
+    for (double m : misses) spread += (m - mean) * (m - mean) / n;
+    j["mean_miss_m"] = mean;
+    j["stddev_miss_m"] = std::sqrt(spread);
+  }
+  for (int i = 0; i < health.num_counters; ++i) {
+    j["counters"][health.counter_names[i]] = health.counter_values[i];
+  }
+  j["received"] = health.received;
+  j["dropped"] = health.dropped;
+  j["wall_s"] = wall_s;
+  return j;
+}
+
+}  // namespace billiard::table_sim_node

@@ -1,0 +1,61 @@
+// A session of the table simulator as its command line starts it: the options of
+// build/bin/table_sim_node (and of `billiard loop`, which runs the three nodes in one process),
+// the session run over LCM, and its summary as one JSON object.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <lcm/lcm-cpp.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "sim/camera/camera_model.h"
+#include "sim/physics/parameters.h"
+#include "sim/table_sim_node/table_sim_node.h"
+
+namespace billiard::table_sim_node {
+
+// The frames the simulated camera renders.
+inline constexpr int kCameraWidth = 1280, kCameraHeight = 720;
+
+struct SessionCommandLine {
+  std::string lcm_url;  // empty: $LCM_DEFAULT_URL, else LCM's default
+  std::string params = "pool";
+  std::string noise = "off";  // "on": the robot's execution noise of kExecutionNoise
+  bool realtime = false;
+  TableSimOptions options;
+};
+
+// The robot's execution noise with --noise on: 1 % of the cue speed, 0.1 degree of heading and
+// 0.5 mm of each tip offset (standard deviations).
+ExecutionNoise RobotExecutionNoise();
+
+// Adds the session's options to `app`, filling `line` when it parses.
+void AddSessionOptions(CLI::App& app, SessionCommandLine* line);
+
+// The options of a parsed command line; throws std::invalid_argument with a one-line reason when
+// they do not make a session (non-positive counts or rates, fault probabilities above 1).
+TableSimOptions SessionOptions(const SessionCommandLine& line);
+
+// The simulated overhead camera of `table`.
+camera::CameraModel SessionCamera(const physics::TableParameters& table);
+
+// Nodes that run in this process beside the simulator (`billiard loop`): made on the session's
+// LCM before the simulator subscribes, their work returned as the simulator's RunAlongside work.
+using InProcessNodes = std::function<std::function<bool()>(
+    lcm::LCM& lcm, const physics::ModelParameters& params, const camera::CameraModel& camera)>;
+
+// Runs the session of a parsed command line and prints its summary (SessionSummary) as one JSON
+// object on stdout. Returns the exit status: 0; 1 when LCM fails or a node does not answer in
+// time; 2 for options that make no session (the reason on stderr, prefixed by `name`); 130 when
+// stopped by SIGINT or SIGTERM.
+int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
+                      const InProcessNodes& in_process = nullptr);
+
+// What the session measured: the shots, the misses' median, max, mean and spread, the node's
+// counters and the wall time.
+nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_status_t& health,
+                              double wall_s);
+
+}  // namespace billiard::table_sim_node

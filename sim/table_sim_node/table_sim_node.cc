@@ -1,0 +1,299 @@
+#include "sim/table_sim_node/table_sim_node.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "estimator/node/estimator_node.h"
+#include "lcmtypes/billiard/shot_request_t.hpp"
+#include "lcmtypes/image_codec.h"
+#include "lcmtypes/message_checks.h"
+#include "lcmtypes/names.h"
+#include "lcmtypes/node/node_loop.h"
+#include "planner/node/planner_node.h"
+#include "sim/physics/simulator.h"
+
+namespace billiard::table_sim_node {
+
+namespace {
+
+using messages::kCameraImageChannel;
+using messages::kCueCommandChannel;
+using messages::kShotRequestChannel;
+using messages::kTableStateChannel;
+constexpr int kCueBall = 0;
+
+}  // namespace
+
+TableSimNode::TableSimNode(lcm::LCM& lcm, const physics::ModelParameters& params,
+                           const camera::CameraModel& camera, TableSimOptions options, Log log)
+    : lcm_(lcm),
+      params_(params),
+      options_(options),
+      renderer_(camera, params),
+      log_(log ? std::move(log) : Log([](const std::string& line) {
+        std::cerr << "table_sim_node: " << line << std::endl;
+      })),
+      health_("table_sim_node", log_),
+      rng_(options.seed),
+      fault_rng_(options.faults.seed),
+      ball_(options.start) {
+  subscriptions_.push_back(
+      lcm_.subscribe(messages::kTableStateChannel, &TableSimNode::OnTableState, this));
+  subscriptions_.push_back(
+      lcm_.subscribe(messages::kCueCommandChannel, &TableSimNode::OnCueCommand, this));
+  // A busy planner answers a burst all at once; no answer may be lost in LCM's queue.
+  subscriptions_.back()->setQueueCapacity(10000);
+}
+
+TableSimNode::~TableSimNode() {
+  for (lcm::Subscription* s : subscriptions_) lcm_.unsubscribe(s);
+}
+
+template <class Message>
+std::optional<Message> TableSimNode::Receive(const lcm::ReceiveBuffer* rbuf,
+                                             const std::string& channel) {
+  health_.Received();
+  Message message;
+  if (std::string why = messages::DecodeChecked(rbuf->data, rbuf->data_size, message);
+      !why.empty()) {
+    health_.Dropped(channel + ": " + why);
+    return std::nullopt;
+  }
+  return message;
+}
+
+void TableSimNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+  if (auto state = Receive<table_state_t>(rbuf, channel)) state_ = std::move(state);
+}
+
+void TableSimNode::OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+  if (auto command = Receive<cue_command_t>(rbuf, channel)) command_ = std::move(command);
+}
+
+template <class Message>
+void TableSimNode::Publish(const char* channel, const Message& message) {
+  if (lcm_.publish(channel, &message) == 0) {
+    health_.Published();
+  } else {
+    health_.Dropped(std::string(channel) + ": publishing failed");
+  }
+}
+
+std::int64_t TableSimNode::Utime(double t) const { return std::llround(t * 1e6); }
+
+void TableSimNode::WaitFor(const std::function<bool()>& done, const std::string& what,
+                           const std::function<void()>& resend) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](double s) {
+    return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+  };
+  const Clock::time_point deadline = Clock::now() + seconds(options_.reply_timeout);
+  Clock::time_point next_resend = Clock::now() + seconds(options_.retry_interval);
+  bool more_work = false;
+  while (!done()) {
+    if (nodes::StopRequested()) throw std::runtime_error("stopped by a signal");
+    const Clock::time_point now = Clock::now();
+    if (now > deadline) {
+      throw std::runtime_error("no " + what + " within " + std::to_string(options_.reply_timeout) +
+                               " s");
+    }
+    if (resend && now > next_resend) {
+      health_.Count("resent");
+      resend();
+      next_resend = now + seconds(options_.retry_interval);
+    }
+    lcm_.handleTimeout(more_work ? 0 : 20);
+    more_work = alongside_ && alongside_();
+    health_.PublishIfDue(lcm_);
+  }
+}
+
+void TableSimNode::Frame(const std::function<physics::BallState(double)>& state, double t) {
+  const std::int64_t utime = Utime(t);
+  const physics::BallState x = state(t);
+  table_state_t truth{};
+  truth.utime = utime;
+  ball_state_t b{};  // the truth has no covariance
+  b.utime = utime;
+  b.ball_id = kCueBall;
+  std::copy(x.data(), x.data() + 2, b.position);
+  std::copy(x.data() + physics::kVx, x.data() + physics::kVx + 2, b.velocity);
+  std::copy(x.data() + physics::kWx, x.data() + physics::kWx + 3, b.spin);
+  truth.balls.push_back(b);
+  truth.num_balls = 1;
+  Publish(messages::kTableTruthChannel, truth);
+
+  const render::RenderBall ball{kCueBall, render::PoolBallColour(kCueBall), [&state](double time) {
+                                  return Eigen::Vector2d(state(time).head<2>());
+                                }};
+  const image_t image = messages::EncodeImage(
+      renderer_.Render({ball}, t), utime, messages::ImageEncoding::kMjpeg, options_.jpeg_quality);
+  if (!options_.lockstep) {
+    static const auto wall_start = std::chrono::steady_clock::now();
+    std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t));
+  }
+
+  // One fault at most per frame, drawn whether or not faults are on so that turning one on does
+  // not move where the others fall.
+  const FaultInjection& f = options_.faults;
+  const double draw = std::uniform_real_distribution<double>(0.0, 1.0)(fault_rng_);
+  if (draw < f.drop_frames) {
+    health_.Count("frame_dropped");
+    return;
+  }
+  if (draw < f.drop_frames + f.reorder_frames && !held_frame_) {
+    health_.Count("frame_reordered");
+    held_frame_ = image;
+    return;
+  }
+  Publish(messages::kCameraImageChannel, image);
+  if (held_frame_) {
+    Publish(messages::kCameraImageChannel, *held_frame_);
+    held_frame_.reset();
+  }
+  if (draw >= f.drop_frames + f.reorder_frames &&
+      draw < f.drop_frames + f.reorder_frames + f.duplicate) {
+    health_.Count("frame_duplicated");
+    Publish(messages::kCameraImageChannel, image);
+  }
+  if (options_.lockstep) {
+    WaitFor([&] { return state_ && state_->utime == utime; },
+            "TABLE_STATE for the frame at utime " + std::to_string(utime),
+            [&] { Publish(messages::kCameraImageChannel, image); });
+  } else {
+    while (lcm_.handleTimeout(0) > 0) {
+    }
+    if (alongside_) alongside_();
+    health_.PublishIfDue(lcm_);
+  }
+}
+
+void TableSimNode::ShowAtRest() {
+  const physics::BallState rest_state = physics::MakeBallState(ball_.x(), ball_.y(), 0, 0, 0, 0, 0);
+  const auto at_rest = [&rest_state](double) { return rest_state; };
+  const double frame_dt = 1.0 / options_.camera_rate;
+  for (double shown = 0.0; shown < options_.settle_time; shown += frame_dt) {
+    Frame(at_rest, time_);
+    time_ += frame_dt;
+  }
+}
+
+cue_command_t TableSimNode::Request(int shot, const Eigen::Vector2d& target, ShotResult& result) {
+  for (;;) {
+    ShowAtRest();
+    // The estimator names balls by its tracks: ask for the one it sees nearest the ball.
+    WaitFor([&] { return state_ && state_->num_balls > 0; }, "TABLE_STATE with the ball", nullptr);
+    int ball_id = state_->balls[0].ball_id;
+    double nearest = 1e300;
+    for (const ball_state_t& b : state_->balls) {
+      const double d = std::hypot(b.position[0] - ball_.x(), b.position[1] - ball_.y());
+      if (d < nearest) {
+        nearest = d;
+        ball_id = b.ball_id;
+      }
+    }
+    shot_request_t request{};
+    request.utime = Utime(time_);
+    request.request_id = shot;
+    request.ball_id = ball_id;
+    request.target[0] = target.x();
+    request.target[1] = target.y();
+    request.spin = shot_request_t::SPIN_NATURAL;
+    Publish(messages::kShotRequestChannel, request);
+    if (std::uniform_real_distribution<double>(0.0, 1.0)(fault_rng_) < options_.faults.duplicate) {
+      health_.Count("request_duplicated");
+      Publish(messages::kShotRequestChannel, request);
+    }
+    const auto answered = [&] {
+      return command_ && command_->request_id == shot && command_->utime == request.utime;
+    };
+    WaitFor(answered, "CUE_COMMAND for request " + std::to_string(shot),
+            [&] { Publish(messages::kShotRequestChannel, request); });
+    const int8_t status = command_->status;
+    const bool time_cures = status == cue_command_t::STATUS_NO_BALL_STATE ||
+                            status == cue_command_t::STATUS_STALE_STATE ||
+                            status == cue_command_t::STATUS_BUSY;
+    if (!time_cures || result.retries == options_.max_retries) return *command_;
+    ++result.retries;
+    health_.Count("shot_retried");
+    log_("shot " + std::to_string(shot) + ": " + messages::CueCommandStatusName(status) + " (" +
+         command_->reason + "), asking again");
+  }
+}
+
+physics::CueStroke TableSimNode::WithNoise(physics::CueStroke stroke) {
+  std::normal_distribution<double> unit(0.0, 1.0);
+  const ExecutionNoise& n = options_.noise;
+  stroke.speed *= 1.0 + n.speed * unit(rng_);
+  stroke.heading += n.heading * unit(rng_);
+  stroke.tip_side += n.tip_offset * unit(rng_);
+  stroke.tip_height += n.tip_offset * unit(rng_);
+  // A tip pushed past the ball's edge would miscue: keep it on the ball.
+  const double offset = std::hypot(stroke.tip_side, stroke.tip_height);
+  const double limit = 0.95 * params_.ball.radius;
+  if (offset > limit) {
+    stroke.tip_side *= limit / offset;
+    stroke.tip_height *= limit / offset;
+  }
+  return stroke;
+}
+
+std::vector<ShotResult> TableSimNode::Run() {
+  const double frame_dt = 1.0 / options_.camera_rate;
+  const physics::TableParameters& table = params_.table;
+  std::uniform_real_distribution<double> x(options_.target_margin,
+                                           table.length - options_.target_margin);
+  std::uniform_real_distribution<double> y(options_.target_margin,
+                                           table.width - options_.target_margin);
+  std::vector<ShotResult> results;
+  for (int shot = 0; shot < options_.shots; ++shot) {
+    const Eigen::Vector2d rest = ball_;
+    ShotResult result;
+    do {
+      result.target = {x(rng_), y(rng_)};
+    } while ((result.target - rest).norm() < options_.min_distance);
+    const cue_command_t command = Request(shot, result.target, result);
+    result.status = messages::CueCommandStatusName(command.status);
+    result.reason = command.reason;
+    result.plan_ms = 1e-3 * command.solve_us;
+    if (command.status != cue_command_t::STATUS_OK) {
+      result.final_point = rest;
+      result.miss_m = (rest - result.target).norm();
+      log_("shot " + std::to_string(shot) + " refused: " + result.status + ", " + result.reason);
+      results.push_back(result);
+      continue;
+    }
+
+    const physics::CueStroke stroke =
+        WithNoise({command.cue_speed, command.heading, command.tip_side, command.tip_height,
+                   command.elevation});
+    const physics::BallState launch = physics::StrikeBall(stroke, rest, params_);
+    const physics::Arrival arrival = physics::SimulateArrival(params_, launch, 0.0, 120.0);
+    const double t_strike = time_;
+    const auto trajectory = arrival.trajectory;
+    const Eigen::Vector2d final_point = arrival.state.head<2>();
+    const auto moving = [t_strike, trajectory, &arrival](double t) -> physics::BallState {
+      return t - t_strike >= arrival.time ? arrival.state : trajectory->At(t - t_strike);
+    };
+    for (; time_ - t_strike < arrival.time; time_ += frame_dt) Frame(moving, time_);
+    ball_ = final_point;
+    result.final_point = final_point;
+    result.miss_m = (final_point - result.target).norm();
+    std::ostringstream line;
+    line.precision(4);
+    line << "shot " << shot << ": target (" << result.target.x() << ", " << result.target.y()
+         << "), rests at (" << final_point.x() << ", " << final_point.y() << "), miss "
+         << 1e3 * result.miss_m << " mm, plan " << result.plan_ms << " ms";
+    log_(line.str());
+    results.push_back(result);
+  }
+  health_.PublishIfDue(lcm_);
+  return results;
+}
+
+}  // namespace billiard::table_sim_node

@@ -1,0 +1,147 @@
+// The table simulator node: stands in for the robot and the camera, and drives a session of
+// shots through the other two nodes.
+//
+// For each shot it shows the ball at rest to the camera (CAMERA_IMAGE frames rendered by
+// table_renderer.h, JPEG) until the estimator reports it, asks the planner (SHOT_REQUEST) to send
+// the ball estimated nearest the true one to a seeded random target, executes the CUE_COMMAND
+// with the cue strike model (cue_strike.h, with optional execution noise on speed, heading and
+// tip offset), simulates the 5-DOF ball until it rests, and publishes the truth (TABLE_TRUTH) and
+// the frames all the way. The miss is the truth's final point against the target.
+//
+// Clocks: lockstep (each frame waits for the estimator's TABLE_STATE of that frame; as fast as
+// the loop goes, and the same bytes every run) or real time (frames at the camera rate).
+//
+// Faults: the loop goes on when a node restarts. A frame or a request that gets no answer within
+// retry_interval is sent again (the planner answers a repeated request from memory), and a
+// refusal that time can cure (no state of the ball yet, a stale state, a busy planner) is retried
+// after the ball has been shown again. Fault injection makes the link to the nodes lossy on
+// purpose: frames dropped, reordered or sent twice, requests sent twice, from a seeded generator
+// of its own (the shots stay the same).
+//
+// The replies are decoded and checked (message_checks.h); only the latest of each is kept. Counts
+// go out on NODE_STATUS (node_health.h).
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+#include <lcm/lcm-cpp.hpp>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/image_t.hpp"
+#include "lcmtypes/billiard/table_state_t.hpp"
+#include "lcmtypes/node/node_health.h"
+#include "sim/camera/camera_model.h"
+#include "sim/physics/ball_state.h"
+#include "sim/physics/cue_strike.h"
+#include "sim/physics/parameters.h"
+#include "sim/render/table_renderer.h"
+
+namespace billiard::table_sim_node {
+
+struct ExecutionNoise {
+  double speed = 0.0;       // relative standard deviation of the cue speed
+  double heading = 0.0;     // standard deviation of the heading [rad]
+  double tip_offset = 0.0;  // standard deviation of each tip offset [m]
+};
+
+// What a lossy link between the table and the nodes does, each a probability per message.
+struct FaultInjection {
+  double drop_frames = 0.0;     // a frame is lost
+  double reorder_frames = 0.0;  // a frame is held back and sent after the next one
+  double duplicate = 0.0;       // a frame or a request is sent twice
+  std::uint32_t seed = 7;
+};
+
+struct TableSimOptions {
+  int shots = 20;
+  std::uint32_t seed = 1;
+  ExecutionNoise noise;
+  bool lockstep = true;
+  double camera_rate = 30.0;    // frames per second [Hz]
+  double settle_time = 0.3;     // frames shown of a ball at rest before a request [s]
+  double reply_timeout = 10.0;  // longest wait for the estimator or the planner [s]
+  double retry_interval = 0.5;  // a frame or a request unanswered this long is sent again [s]
+  int max_retries = 3;          // retries of a shot refused for want of a (fresh) state
+  FaultInjection faults;
+  Eigen::Vector2d start{0.6, 0.635};  // where the ball starts [m]
+  double target_margin = 0.15;        // targets at least this far inside the cushions [m]
+  double min_distance = 0.3;          // and at least this far from the ball [m]
+  int jpeg_quality = 90;
+};
+
+struct ShotResult {
+  Eigen::Vector2d target = Eigen::Vector2d::Zero();
+  Eigen::Vector2d final_point = Eigen::Vector2d::Zero();  // truth, where the ball rests
+  double miss_m = 0.0;
+  double plan_ms = 0.0;
+  std::string status;  // the planner's ("ok", or why not)
+  std::string reason;
+  int retries = 0;  // requests refused for a cause that time cures, and asked again
+};
+
+class TableSimNode {
+ public:
+  using Log = std::function<void(const std::string& line)>;
+
+  TableSimNode(lcm::LCM& lcm, const physics::ModelParameters& params,
+               const camera::CameraModel& camera, TableSimOptions options, Log log = nullptr);
+  ~TableSimNode();
+  TableSimNode(const TableSimNode&) = delete;
+  TableSimNode& operator=(const TableSimNode&) = delete;
+
+  // Runs the session; throws std::runtime_error when a node does not answer in time.
+  std::vector<ShotResult> Run();
+
+  // Other nodes' work, called between messages while the session waits: the estimator and the
+  // planner when they run in this process (node_loop.h's `work`).
+  void RunAlongside(std::function<bool()> work) { alongside_ = std::move(work); }
+
+  // The node's counters; TakeStatus() on it starts a new latency period.
+  nodes::NodeHealth& health() { return health_; }
+
+ private:
+  // The message in `rbuf`, or nothing when it fails its checks (counted and logged).
+  template <class Message>
+  std::optional<Message> Receive(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  void OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  void OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  // Publishes the ball's true state at time t (sim time) and the camera's frame of it and, in
+  // lockstep, waits for the estimator's state of that frame.
+  void Frame(const std::function<physics::BallState(double)>& state, double t);
+  // Shows the ball at rest for the settle time.
+  void ShowAtRest();
+  // Asks the planner for the shot (again after refusals that time cures) and waits for the
+  // answer.
+  cue_command_t Request(int shot, const Eigen::Vector2d& target, ShotResult& result);
+  // Handles messages until `done` holds, calling `resend` every retry interval; throws after the
+  // reply timeout.
+  void WaitFor(const std::function<bool()>& done, const std::string& what,
+               const std::function<void()>& resend);
+  template <class Message>
+  void Publish(const char* channel, const Message& message);
+  std::int64_t Utime(double t) const;
+  physics::CueStroke WithNoise(physics::CueStroke stroke);
+
+  lcm::LCM& lcm_;
+  physics::ModelParameters params_;
+  TableSimOptions options_;
+  render::TableRenderer renderer_;
+  Log log_;
+  nodes::NodeHealth health_;
+  std::mt19937 rng_;
+  std::mt19937 fault_rng_;
+  std::function<bool()> alongside_;
+  std::vector<lcm::Subscription*> subscriptions_;
+  Eigen::Vector2d ball_;
+  double time_ = 0.0;                     // sim time [s]
+  std::optional<table_state_t> state_;    // the estimator's latest
+  std::optional<cue_command_t> command_;  // the planner's latest
+  std::optional<image_t> held_frame_;     // reordered: sent after the next
+};
+
+}  // namespace billiard::table_sim_node
