@@ -33,10 +33,10 @@ enter_private_network "$0" --no-build --shots "$shots" --seed "$seed" --noise "$
   ${log:+--log "$log"} "$clock" $($json && echo --json)
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
-in_process=""
+in_process=false
 if [ -z "${in_namespace:-}" ]; then
   if ! ip route get 239.255.76.67 >/dev/null 2>&1; then
-    in_process=--in-process
+    in_process=true
     echo "run_loop: no network namespace and no multicast route: the three nodes run in one" \
          "process over memq://${log:+ (nothing to record: --log needs multicast)}" >&2
     log=""
@@ -59,7 +59,7 @@ if [ -n "$log" ]; then
   lcm-logger --quiet --force "$log" >/dev/null 2>&1 &
   pids+=($!)
 fi
-if [ -z "$in_process" ]; then
+if ! $in_process; then
   build/bin/estimator_node --params pool 2>/dev/null &
   pids+=($!)
   build/bin/planner_node --params pool >/dev/null 2>&1 &
@@ -70,8 +70,10 @@ fi
 sim_clock=""
 [ "$clock" = --realtime ] && sim_clock=--realtime
 # In the background, so that a signal reaches the trap at once and the cleanup stops it too.
-build/bin/table_sim_node --params pool --shots "$shots" --seed "$seed" --noise "$noise" \
-  $sim_clock $in_process >"$summary_file" &
+session=(build/bin/table_sim_node)
+$in_process && session=(build/bin/billiard loop)
+"${session[@]}" --params pool --shots "$shots" --seed "$seed" --noise "$noise" \
+  $sim_clock >"$summary_file" &
 pids+=($!)
 status=0
 wait $! || status=$?
