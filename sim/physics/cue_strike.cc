@@ -23,10 +23,12 @@ CueFrame FrameOf(double heading, double elevation) {
   return f;
 }
 
-// Impulse per unit cue speed for a tip offset |b| (TP A.30).
+// Impulse per unit cue speed for a tip offset |b| (Alciatore 2004, TP A.30). The tip meets the
+// ball's effective mass at the contact, 1 / m_eff = 1 / m + b^2 / I = (1 + 5/2 q^2) / m, so
+// J = (1 + e) V / (1 / M + 1 / m_eff) = (1 + e) M m V / (m + M (1 + 5/2 q^2)).
 double ImpulsePerCueSpeed(double offset, const ModelParameters& p) {
   const double m = p.ball.mass, big_m = p.cue.mass, q = offset / p.ball.radius;
-  return (1.0 + p.cue.tip_restitution) * big_m * m / (big_m + m * (1.0 + 2.5 * q * q));
+  return (1.0 + p.cue.tip_restitution) * big_m * m / (m + big_m * (1.0 + 2.5 * q * q));
 }
 
 std::string Format(double value) {
@@ -113,9 +115,10 @@ LaunchSpeedRange LaunchSpeedsFor(double spin_ratio, double side_spin, const Mode
   LaunchSpeedRange range{0.0, -1.0};
   if (k2 > q_max * q_max) return range;
   range.min = std::sqrt(rw2 / (q_max * q_max - k2));
-  // The cue speed (TP A.30) is V = [s (M + m (1 + 0.4 k^2)) + 0.4 m r^2 wz^2 / s] / ((1 + e) M);
-  // V = max_speed is a quadratic in s whose larger root is the fastest launch.
-  const double a = big_m + m * (1.0 + 0.4 * k2), b = 0.4 * m * rw2;
+  // The cue speed (TP A.30, 5/2 q^2 = 0.4 (k^2 + (r wz / s)^2)) is
+  // V = [s (m + M (1 + 0.4 k^2)) + 0.4 M r^2 wz^2 / s] / ((1 + e) M); V = max_speed is a
+  // quadratic in s whose larger root is the fastest launch.
+  const double a = m + big_m * (1.0 + 0.4 * k2), b = 0.4 * big_m * rw2;
   const double c = (1.0 + p.cue.tip_restitution) * big_m * p.cue.max_speed;
   const double discriminant = c * c - 4.0 * a * b;
   if (discriminant < 0.0) return range;

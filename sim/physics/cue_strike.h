@@ -5,8 +5,12 @@
 // delivers an impulse J along the cue axis c through a point offset by b (perpendicular to c)
 // from the ball centre; with cue mass M, ball mass m, tip restitution e and cue speed V,
 //
-//     J = (1 + e) M m V / (M + m (1 + 5/2 |b|^2 / r^2)),   v = J c / m,   w = 5 J (b x c) / (2 m
-//     r^2).
+//     J = (1 + e) M m V / (m + M (1 + 5/2 q^2)),   q = |b| / r,
+//     v = J c / m,   w = 5 J (b x c) / (2 m r^2),
+//
+// so v = (1 + e) V / (1 + m / M + 5/2 q^2): the tip meets the ball's effective mass at the
+// contact, m / (1 + 5/2 q^2), and with e = 1 the kinetic energy of cue and ball is conserved at
+// any offset.
 //
 // An elevated cue (c pointing down by `elevation`) also pushes the ball into the cloth: the table
 // takes the vertical momentum (the ball stays on the cloth); its friction during the impact is

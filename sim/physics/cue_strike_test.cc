@@ -39,6 +39,40 @@ TEST(CueStrike, RightEnglishSpinsTheBallCounterclockwiseSeenFromAbove) {
   EXPECT_NEAR(s[kWx] * s[kVx] + s[kWy] * s[kVy], 0.0, 1e-12);  // no spin about the travel
 }
 
+// With a perfectly elastic tip, a level stroke at any offset keeps the kinetic energy of cue and
+// ball: 1/2 M V^2 = 1/2 M V'^2 + 1/2 m v^2 + 1/2 I w^2, the cue slowed by the impulse, V' = V - J/M.
+TEST(CueStrike, ElasticStrikeConservesTheEnergyOfCueAndBallAtAnyOffset) {
+  ModelParameters p = testing::PaperParameters();
+  p.cue.tip_restitution = 1.0;
+  const double r = p.ball.radius, m = p.ball.mass, big_m = p.cue.mass;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 500; ++i) {
+    const double angle = M_PI * u(rng), offset = 0.95 * r * std::abs(u(rng));
+    const CueStroke stroke{0.2 + 6 * std::abs(u(rng)), 3 * u(rng), offset * std::cos(angle),
+                           offset * std::sin(angle), 0.0};
+    const BallState s = StrikeBall(stroke, {0, 0}, p);
+    const double impulse = m * s.segment<2>(kVx).norm();
+    const double cue_after = stroke.speed - impulse / big_m;
+    const double before = 0.5 * big_m * stroke.speed * stroke.speed;
+    const double after = 0.5 * big_m * cue_after * cue_after + KineticEnergy(s, m, r);
+    EXPECT_NEAR(after / before, 1.0, 1e-12) << "offset " << offset / r << " r";
+  }
+}
+
+// Alciatore, TP A.30: momentum and restitution at the tip give the ball
+// v = (1 + e) V / (1 + m / M + 5/2 q^2), q = b / r the tip offset.
+TEST(CueStrike, BallSpeedIsAlciatoresLawAtEveryOffset) {
+  const ModelParameters p = testing::PaperParameters();
+  const double r = p.ball.radius, m = p.ball.mass, big_m = p.cue.mass;
+  const double e = p.cue.tip_restitution, cue_speed = 2.0;
+  for (double q : {0.0, 0.1, 0.25, 0.4, 0.5}) {
+    const BallState s = StrikeBall({cue_speed, 0.0, 0.0, q * r, 0.0}, {0, 0}, p);
+    const double expected = (1 + e) * cue_speed / (1 + m / big_m + 2.5 * q * q);
+    EXPECT_NEAR(s.segment<2>(kVx).norm(), expected, 1e-12 * expected) << "q = " << q;
+  }
+}
+
 TEST(CueStrike, BallNeverGainsMoreEnergyThanTheCueBrings) {
   const ModelParameters p = testing::PaperParameters();
   std::mt19937 rng(3);
