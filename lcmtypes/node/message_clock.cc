@@ -9,7 +9,9 @@ MessageClock::Verdict MessageClock::Accept(std::int64_t utime) {
     late_in_a_row_ = 0;
     return Verdict::kNext;
   }
-  late_in_a_row_ = late_in_a_row_ > 0 && utime > last_late_ ? late_in_a_row_ + 1 : 1;
+  // The same late message again counts too: a lockstep publisher that restarted sends its first
+  // message again until it is answered, and nothing newer comes meanwhile.
+  late_in_a_row_ = late_in_a_row_ > 0 && utime >= last_late_ ? late_in_a_row_ + 1 : 1;
   last_late_ = utime;
   if (latest_ - utime > reset_after_us_ || late_in_a_row_ >= late_run_) {
     latest_ = utime;

@@ -2,8 +2,11 @@
 // than the last it took, ignores the same one again, and drops an older one as late (delayed or
 // reordered on the way) - unless the publisher has evidently started a new clock (a simulator or
 // camera restarted, a log replayed from its start): the message is older by more than
-// `reset_after`, or several late messages arrive in a row, each newer than the one before, which
-// a reordered message never does. Then what the node knew of the old clock must be forgotten.
+// `reset_after`, or several late messages arrive in a row with nothing newer between them, each
+// as new as the one before or newer: a restarted publisher going on from its new start, or a
+// lockstep one sending its first message again until it is answered. A reordered or repeated
+// message never makes such a run, since newer messages keep arriving around it. Then what the
+// node knew of the old clock must be forgotten.
 #pragma once
 
 #include <cstdint>
@@ -14,8 +17,8 @@ class MessageClock {
  public:
   enum class Verdict { kNext, kDuplicate, kLate, kNewClock };
 
-  // reset_after [s]; late_run: late messages in a row, each newer than the last, that make a
-  // new clock.
+  // reset_after [s]; late_run: late messages in a row, none older than the one before, that make
+  // a new clock.
   explicit MessageClock(double reset_after = 5.0, int late_run = 3)
       : reset_after_us_(static_cast<std::int64_t>(reset_after * 1e6)), late_run_(late_run) {}
 

@@ -47,6 +47,30 @@ TEST(MessageClock, ARestartCloseToTheOldTimeIsANewClockAfterAFewMessages) {
   EXPECT_EQ(clock.Accept(100'000), Verdict::kNext);
 }
 
+TEST(MessageClock, ARestartedPublisherSendingItsFirstMessageAgainIsANewClock) {
+  // A lockstep simulator restarted 3 s into the old session's clock waits for the answer to its
+  // first frame and sends that same frame again and again: nothing newer ever comes.
+  MessageClock clock(5.0, 3);
+  clock.Accept(3'000'000);
+  EXPECT_EQ(clock.Accept(0), Verdict::kLate);
+  EXPECT_EQ(clock.Accept(0), Verdict::kLate);
+  EXPECT_EQ(clock.Accept(0), Verdict::kNewClock);
+  EXPECT_EQ(clock.latest(), 0);
+  EXPECT_EQ(clock.Accept(0), Verdict::kDuplicate);
+  EXPECT_EQ(clock.Accept(33'333), Verdict::kNext);
+}
+
+TEST(MessageClock, ALateDuplicateAmongNewerMessagesIsNoNewClock) {
+  // A lossy link repeats an old frame while newer ones keep coming: late every time, never a
+  // new clock.
+  MessageClock clock(5.0, 3);
+  for (std::int64_t k = 10; k < 100; ++k) {
+    EXPECT_EQ(clock.Accept(33'333 * k), Verdict::kNext);
+    EXPECT_EQ(clock.Accept(33'333 * (k - 5)), Verdict::kLate);
+    EXPECT_EQ(clock.Accept(33'333 * (k - 5)), Verdict::kLate);
+  }
+}
+
 TEST(MessageClock, LateMessagesOutOfOrderAmongThemselvesAreNoNewClock) {
   MessageClock clock(5.0, 3);
   clock.Accept(3'000'000);
