@@ -6,6 +6,7 @@
 #include "bench/format.h"
 #include "bench/speed_error.h"
 #include "estimator/ball_estimator.h"
+#include "sim/params/parameter_sets.h"
 
 namespace billiard::bench {
 
@@ -84,7 +85,7 @@ EstimatorBenchmarkResult RunEstimatorBenchmark(const physics::ModelParameters& p
                                                const EstimatorBenchmarkOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   EstimatorBenchmarkResult r;
-  r.params = p.name;
+  r.params = params::ParameterSetLabel(p);
   r.options = options;
   for (int i = 0; i < options.scenes; ++i) {
     const auto scene = estimator::shots::RandomScene(options.balls, options.struck,

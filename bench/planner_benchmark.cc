@@ -7,6 +7,7 @@
 #include "bench/format.h"
 #include "bench/speed_error.h"
 #include "planner/testing/request_suite.h"
+#include "sim/params/parameter_sets.h"
 #include "sim/physics/simulator.h"
 
 namespace billiard::bench {
@@ -104,7 +105,7 @@ PlannerBenchmarkResult RunPlannerBenchmark(const physics::ModelParameters& p,
                                            const PlannerBenchmarkOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   PlannerBenchmarkResult r;
-  r.params = p.name;
+  r.params = params::ParameterSetLabel(p);
   r.requests = options.requests;
   r.seed = options.seed;
   planner::testing::RequestSuite suite(p.table, options.seed);

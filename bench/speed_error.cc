@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "sim/model_choice/model_choice.h"
+#include "sim/params/parameter_sets.h"
 
 namespace billiard::bench {
 
@@ -181,7 +182,7 @@ double Quantile(std::vector<double> values, double q) {
 BenchmarkResult RunBenchmark(const physics::ModelParameters& p, const BenchmarkOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   BenchmarkResult result;
-  result.params = p.name;
+  result.params = params::ParameterSetLabel(p);
   result.scenes = SceneSuite(p, options.random_shots, options.seed);
   result.methods = BenchmarkMethods(options.quick);
   result.approx_reference = {physics::Model::kApproximate, physics::Integrator::kRodas4, 1e-10,

@@ -8,6 +8,8 @@ std::vector<Bytes> Seeds() {
   planner.utime = 1700000000000000;
   planner.node = "planner_node";
   planner.uptime_us = 3000000;
+  planner.params = "pool";
+  planner.params_hash = "0123456789abcdef";
   planner.received = 40;
   planner.dropped = 2;
   planner.published = 38;

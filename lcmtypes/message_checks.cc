@@ -108,7 +108,10 @@ std::string WalkLayout(WireWalk& w, const image_t*) {
 std::string WalkLayout(WireWalk& w, const node_status_t*) {
   w.Skip(kHash + kInt64, "node_status_t header");
   w.String("node");
-  w.Skip(4 * kInt64, "node_status_t counts");
+  w.Skip(kInt64, "node_status_t uptime");
+  w.String("params");
+  w.String("params_hash");
+  w.Skip(3 * kInt64, "node_status_t counts");
   w.String("last_error");
   w.Skip(kInt64 + kInt32 + 3 * kDouble + kInt32, "node_status_t latency");
   const std::int32_t n = w.Count(kInt32 + 1 + kInt64, 1024, "num_counters");

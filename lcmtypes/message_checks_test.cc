@@ -67,6 +67,8 @@ node_status_t Status() {
   node_status_t m{};
   m.utime = 1;
   m.node = "planner_node";
+  m.params = "pool";
+  m.params_hash = "0123456789abcdef";
   m.last_error = "";
   m.counter_names = {"busy", "stale_state"};
   m.counter_values = {3, 4};

@@ -22,12 +22,15 @@ nlohmann::json Json(const std::string& args) {
   return nlohmann::json::parse(r.out);
 }
 
+// The states of the paper's Figs. 6-10 (Kudra et al. 2016), which belong to its ball: every
+// command on them says --params paper.
 const char* kFigures[] = {"0,0,0,1,-50,0,0", "0,0,0,1,-50,5,0", "0,0,0,1,150,5,0",
                           "0,0,0,1,-50,-3.5,-150", "0,0,0,1,150,0,-150"};
 
 TEST(BilliardSimulate, PrintsTheDocumentedJsonObject) {
-  const auto j = Json("simulate --state 0,0,0,1,-50,0,0 --t-end 8 --json");
+  const auto j = Json("simulate --state 0,0,0,1,-50,0,0 --t-end 8 --params paper --json");
   EXPECT_EQ(j["model"], "approx");
+  EXPECT_EQ(j["params"], "paper");
   EXPECT_EQ(j["t"], 8.0);
   ASSERT_EQ(j["state"].size(), 7u);
   EXPECT_NEAR(j["state"][1].get<double>(), 2.3785, 1e-4);
@@ -38,7 +41,8 @@ TEST(BilliardSimulate, PrintsTheDocumentedJsonObject) {
 
 TEST(BilliardSimulate, ApproxEndpointsAgreeWhenTheToleranceIsTightenedHundredfold) {
   for (const char* state : kFigures) {
-    const std::string base = std::string("simulate --state ") + state + " --t-end 8 --json";
+    const std::string base =
+        std::string("simulate --state ") + state + " --t-end 8 --params paper --json";
     const auto a = Json(base), b = Json(base + " --tol 1e-9");
     EXPECT_NEAR(a["state"][0].get<double>(), b["state"][0].get<double>(), 1e-6) << state;
     EXPECT_NEAR(a["state"][1].get<double>(), b["state"][1].get<double>(), 1e-6) << state;
@@ -50,8 +54,8 @@ TEST(BilliardSimulate, ApproxEndpointsAgreeWhenTheToleranceIsTightenedHundredfol
 TEST(BilliardSimulate, EveryModelRunsEveryPaperFigure) {
   for (const char* model : {"closed-form", "integral"}) {
     for (const char* state : kFigures) {
-      const auto j = Json(std::string("simulate --state ") + state + " --t-end 8 --json --model " +
-                          model);
+      const auto j = Json(std::string("simulate --state ") + state +
+                          " --t-end 8 --params paper --json --model " + model);
       EXPECT_EQ(j["model"], model);
       for (const auto& x : j["state"]) EXPECT_TRUE(std::isfinite(x.get<double>()));
       if (std::string(model) == "integral") {
@@ -100,15 +104,42 @@ TEST(BilliardSimulate, BadInputExitsNonZeroWithAOneLineReason) {
 }
 
 TEST(BilliardSimulate, AutoModelSaysWhatItChose) {
-  const auto side_spin = Json("simulate --state 0,0,0,1,150,0,-150 --t-end 8 --model auto "
-                              "--accuracy 10 --json");
+  const auto side_spin = Json(
+      "simulate --state 0,0,0,1,150,0,-150 --t-end 8 --model auto "
+      "--accuracy 10 --params paper --json");
   EXPECT_NE(side_spin["model"], "closed-form");
   EXPECT_EQ(side_spin["auto"]["scene_kind"], "side-spin");
-  const auto rolling = Json("simulate --state 0,0,0,1,-50,0,0 --t-end 8 --model auto "
-                            "--accuracy 0.001 --json");
+  const auto rolling = Json(
+      "simulate --state 0,0,0,1,-50,0,0 --t-end 8 --model auto "
+      "--accuracy 0.001 --params paper --json");
   EXPECT_EQ(rolling["model"], "closed-form");
   EXPECT_EQ(rolling["steps"], 0);
   EXPECT_NEAR(rolling["state"][1].get<double>(), 2.3785, 1e-4);
+}
+
+// The nodes and every command but `bench` (whose scenes are the paper's) default to one set, the
+// pool ball, and a set read from a file is named by its file.
+TEST(BilliardSimulate, DefaultsToThePoolSetAndNamesTheFileOfAnother) {
+  const auto pool = Json("simulate --state 0.5,0.5,1,0,0,0,0 --t-end 1 --json");
+  EXPECT_EQ(pool["params"], "pool");
+  EXPECT_FALSE(pool.contains("params_file"));
+  const std::string path = ::testing::TempDir() + "/simulate_params.json";
+  {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs(R"({"name":"mine","ball":{"radius":0.03,"mass":0.2,"gravity":9.8},
+      "contact":{"patch_radius":0.002,"mu":0.15,"d":0.5,"eps_t":0.01,"eps_r":0.02,
+                 "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2},
+      "cue":{"mass":0.5,"tip_restitution":0.8,"max_tip_offset":0.5,"max_speed":5},
+      "table":{"length":2.84,"width":1.42}})",
+               f);
+    std::fclose(f);
+  }
+  const auto mine =
+      Json("simulate --state 0.5,0.5,1,0,0,0,0 --t-end 1 --params " + path + " --json");
+  EXPECT_EQ(mine["params"], "mine");
+  EXPECT_EQ(mine["params_file"], path);
+  std::remove(path.c_str());
 }
 
 TEST(BilliardSimulate, NegativeNumbersAreAcceptedWithEquals) {

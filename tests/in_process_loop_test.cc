@@ -62,5 +62,33 @@ TEST(InProcessLoop, ASessionRestartingTheClockSoonAfterTheLastIsServed) {
   EXPECT_EQ(estimator.health().counter("clock_reset"), 1);
 }
 
+// Started by hand with different sets, the nodes would plan and track one ball while the
+// simulator moves another: the session is refused before the first shot, naming who differs.
+TEST(InProcessLoop, ASessionIsRefusedWhileTheNodesRunOtherPhysics) {
+  lcm::LCM lcm("memq://");
+  const physics::ModelParameters pool = params::LoadParameters("pool");
+  const physics::ModelParameters paper = params::LoadParameters("paper");
+  const camera::CameraModel camera = table_sim_node::SessionCamera(pool.table);
+  estimator_node::EstimatorNode estimator(lcm, camera, pool, {}, {}, Quiet);
+  planner_node::PlannerNode planner(lcm, paper, {}, Quiet);
+  table_sim_node::TableSimOptions options;
+  options.shots = 1;
+  table_sim_node::TableSimNode node(lcm, pool, camera, options, Quiet);
+  node.RunAlongside([&] {
+    estimator.Work();
+    return planner.Work();
+  });
+  try {
+    node.Run();
+    FAIL() << "a session with a planner on the paper set ran";
+  } catch (const table_sim_node::ParameterMismatch& e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find("planner_node runs 'paper' (" + params::ParameterHash(paper) + ")"),
+              std::string::npos)
+        << why;
+    EXPECT_EQ(why.find("estimator_node"), std::string::npos) << why;
+  }
+}
+
 }  // namespace
 }  // namespace billiard

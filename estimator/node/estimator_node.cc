@@ -7,6 +7,7 @@
 
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
+#include "sim/params/parameter_sets.h"
 
 namespace billiard::estimator_node {
 
@@ -43,6 +44,7 @@ EstimatorNode::EstimatorNode(lcm::LCM& lcm, const camera::CameraModel& camera,
         std::cerr << "estimator_node: " << line << std::endl;
       })),
       health_("estimator_node", log_) {
+  health_.SetParameters(params::ParameterSetLabel(params_), params::ParameterHash(params_));
   subscription_ = lcm_.subscribe(messages::kCameraImageChannel, &EstimatorNode::OnImage, this);
 }
 

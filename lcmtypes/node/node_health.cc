@@ -71,6 +71,8 @@ node_status_t NodeHealth::TakeStatus() {
   node_status_t s{};
   s.utime = WallUtime();
   s.node = node_;
+  s.params = params_;
+  s.params_hash = params_hash_;
   s.uptime_us =
       std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start_).count();
   s.received = received_;
@@ -96,7 +98,10 @@ node_status_t NodeHealth::TakeStatus() {
 
 void NodeHealth::PublishIfDue(lcm::LCM& lcm) {
   const Clock::time_point now = Clock::now();
-  if (now - last_status_ < period_) return;
+  // The first status goes out at once: it tells the others the node is there, and with which
+  // physics.
+  if (announced_ && now - last_status_ < period_) return;
+  announced_ = true;
   last_status_ = now;
   const node_status_t status = TakeStatus();
   lcm.publish(messages::kNodeStatusChannel, &status);

@@ -39,6 +39,11 @@ class NodeHealth {
   // The time from a message's arrival to the end of the work it caused.
   void Latency(Clock::duration latency);
   void SetQueueDepth(int depth) { queue_depth_ = depth; }
+  // The node's parameter set, announced in every status (node_status_t.params, params_hash).
+  void SetParameters(std::string name, std::string hash) {
+    params_ = std::move(name);
+    params_hash_ = std::move(hash);
+  }
 
   std::int64_t received() const { return received_; }
   std::int64_t dropped() const { return dropped_; }
@@ -50,7 +55,8 @@ class NodeHealth {
   // a new period starts.
   node_status_t TakeStatus();
 
-  // Publishes TakeStatus() on NODE_STATUS when a period has passed since the last time.
+  // Publishes TakeStatus() on NODE_STATUS on the first call, and then when a period has passed
+  // since the last time.
   void PublishIfDue(lcm::LCM& lcm);
 
  private:
@@ -58,8 +64,10 @@ class NodeHealth {
   const Log log_;
   const Clock::duration period_;
   const Clock::time_point start_ = Clock::now();
+  bool announced_ = false;
   Clock::time_point last_status_ = start_;
   std::int64_t received_ = 0, dropped_ = 0, published_ = 0;
+  std::string params_, params_hash_;
   std::string last_error_;
   std::int64_t last_error_utime_ = 0;
   std::map<std::string, std::int64_t> counters_;

@@ -78,7 +78,7 @@ TEST(NodeHealth, ALogThatThrowsDoesNotTakeTheNodeWithIt) {
   EXPECT_EQ(health.dropped(), 1);
 }
 
-TEST(NodeHealth, PublishesOncePerPeriod) {
+TEST(NodeHealth, AnnouncesItselfAtOnceThenPublishesOncePerPeriod) {
   lcm::LCM lcm("memq://");
   std::vector<node_status_t> seen;
   struct Sink {
@@ -92,6 +92,8 @@ TEST(NodeHealth, PublishesOncePerPeriod) {
   lcm.subscribe(messages::kNodeStatusChannel, &Sink::On, &sink);
   NodeHealth health(
       "test_node", [](const std::string&) {}, milliseconds(50));
+  health.SetParameters("pool", "0123456789abcdef");
+  health.PublishIfDue(lcm);  // the first call announces the node
   health.PublishIfDue(lcm);  // not yet due
   std::this_thread::sleep_for(milliseconds(60));
   health.Received();
@@ -99,9 +101,14 @@ TEST(NodeHealth, PublishesOncePerPeriod) {
   health.PublishIfDue(lcm);  // due again only a period later
   while (lcm.handleTimeout(0) > 0) {
   }
-  ASSERT_EQ(seen.size(), 1u);
-  EXPECT_EQ(seen[0].received, 1);
-  EXPECT_GE(seen[0].uptime_us, 50000);
+  ASSERT_EQ(seen.size(), 2u);
+  EXPECT_EQ(seen[0].received, 0);
+  EXPECT_EQ(seen[1].received, 1);
+  EXPECT_GE(seen[1].uptime_us, 50000);
+  for (const node_status_t& s : seen) {
+    EXPECT_EQ(s.params, "pool");
+    EXPECT_EQ(s.params_hash, "0123456789abcdef");
+  }
 }
 
 }  // namespace

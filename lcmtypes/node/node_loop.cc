@@ -54,6 +54,18 @@ void HandleUntilIdle(lcm::LCM& lcm, const std::function<bool()>& work) {
   }
 }
 
+int RunNodeUntilStopped(const std::string& name, const std::string& lcm_url,
+                        const StartNode& start) {
+  StopOnSignals();
+  lcm::LCM lcm(lcm_url);
+  if (!lcm.good()) {
+    std::cerr << name << ": cannot initialise LCM with " << DescribeUrl(lcm_url) << std::endl;
+    return 1;
+  }
+  const std::function<bool()> work = start(lcm);
+  return HandleUntilStopped(lcm, name, work);
+}
+
 std::string DescribeUrl(const std::string& lcm_url) {
   return lcm_url.empty() ? "the default URL" : "'" + lcm_url + "'";
 }

@@ -10,6 +10,7 @@
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
+#include "sim/params/parameter_sets.h"
 
 namespace billiard::planner_node {
 
@@ -55,6 +56,7 @@ PlannerNode::PlannerNode(lcm::LCM& lcm, physics::ModelParameters params, Planner
         std::cerr << "planner_node: " << line << std::endl;
       })),
       health_("planner_node", log_) {
+  health_.SetParameters(params::ParameterSetLabel(params_), params::ParameterHash(params_));
   table_state_subscription_ =
       lcm_.subscribe(messages::kTableStateChannel, &PlannerNode::OnTableState, this);
   shot_request_subscription_ =

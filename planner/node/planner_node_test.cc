@@ -345,6 +345,14 @@ TEST_F(PlannerNodeTest, ARequestSentAgainGetsTheSameAnswerWithoutPlanningAgain) 
 }
 
 TEST_F(PlannerNodeTest, ABurstIsAnsweredInFullFromABoundedQueue) {
+  // The latency figures of the statuses the node publishes meanwhile (its first at once).
+  struct Latencies {
+    long count = 0;
+    void On(const lcm::ReceiveBuffer*, const std::string&, const node_status_t* s) {
+      count += s->latency_count;
+    }
+  } published_latencies;
+  lcm_.subscribe(messages::kNodeStatusChannel, &Latencies::On, &published_latencies);
   PublishTable({Ball(1, 0.6, 0.5)});
   constexpr int kBurst = 10000;
   for (int id = 0; id < kBurst; ++id) {
@@ -371,7 +379,7 @@ TEST_F(PlannerNodeTest, ABurstIsAnsweredInFullFromABoundedQueue) {
   const node_status_t status = node_.health().TakeStatus();
   EXPECT_EQ(status.queue_depth, 0);
   EXPECT_EQ(status.published, kBurst);
-  EXPECT_EQ(status.latency_count, kBurst);
+  EXPECT_EQ(published_latencies.count + status.latency_count, kBurst);
   EXPECT_GT(status.latency_max_us, status.latency_p50_us);
   EXPECT_EQ(LogLinesContaining("queue full"), 1) << "one line, not one per refusal";
 }

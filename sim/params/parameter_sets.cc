@@ -1,5 +1,9 @@
 #include "sim/params/parameter_sets.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -22,56 +26,99 @@ std::vector<std::string> BuiltinParameterSetNames() {
 
 namespace {
 
-double Number(const nlohmann::json& object, const char* section, const char* key,
-              const std::string& origin) {
-  const auto& s = object.at(section);
-  if (!s.contains(key) || !s.at(key).is_number()) {
-    throw std::invalid_argument(origin + ": missing number " + section + "." + key);
+// A number of the set: where it goes, under its section's key.
+struct Field {
+  const char* key;
+  double* value;
+};
+
+// The JSON type of `j` in words, for the refusals.
+std::string TypeName(const nlohmann::json& j) { return j.is_null() ? "null" : j.type_name(); }
+
+// The numbers of one section: every key known, every one there, every one a number.
+void ReadSection(const nlohmann::json& section, const std::string& name,
+                 const std::vector<Field>& fields, const std::string& origin) {
+  if (!section.is_object()) {
+    throw std::invalid_argument(origin + ": \"" + name + "\" must be an object, not " +
+                                TypeName(section));
   }
-  return s.at(key).get<double>();
+  for (const auto& [key, value] : section.items()) {
+    const bool known = std::any_of(fields.begin(), fields.end(),
+                                   [&key = key](const Field& f) { return key == f.key; });
+    if (!known) throw std::invalid_argument(origin + ": unknown key " + name + "." + key);
+  }
+  for (const Field& f : fields) {
+    if (!section.contains(f.key)) {
+      throw std::invalid_argument(origin + ": missing number " + name + "." + f.key);
+    }
+    const nlohmann::json& value = section.at(f.key);
+    if (!value.is_number()) {
+      throw std::invalid_argument(origin + ": " + name + "." + f.key + " must be a number, not " +
+                                  TypeName(value));
+    }
+    *f.value = value.get<double>();
+  }
+}
+
+// An optional string at the top level.
+std::string ReadText(const nlohmann::json& j, const char* key, const std::string& fallback,
+                     const std::string& origin) {
+  if (!j.contains(key)) return fallback;
+  if (!j.at(key).is_string()) {
+    throw std::invalid_argument(origin + ": " + key + " must be a string, not " +
+                                TypeName(j.at(key)));
+  }
+  return j.at(key).get<std::string>();
 }
 
 }  // namespace
 
-physics::ModelParameters ParseParameters(const std::string& json_text, const std::string& origin) {
+ModelParameters ParseParameters(const std::string& json_text, const std::string& origin) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(json_text);
   } catch (const nlohmann::json::parse_error& e) {
     throw std::invalid_argument(origin + ": not valid JSON (" + e.what() + ")");
   }
-  for (const char* section : {"ball", "contact", "cue", "table"}) {
-    if (!j.is_object() || !j.contains(section) || !j.at(section).is_object()) {
-      throw std::invalid_argument(origin + ": missing object \"" + section + "\"");
-    }
+  if (!j.is_object()) throw std::invalid_argument(origin + ": a parameter set is a JSON object");
+  ModelParameters p;
+  ContactParameters& c = p.contact;
+  const std::vector<std::pair<std::string, std::vector<Field>>> sections = {
+      {"ball", {{"radius", &p.ball.radius}, {"mass", &p.ball.mass}, {"gravity", &p.ball.gravity}}},
+      {"contact",
+       {{"patch_radius", &c.patch_radius},
+        {"mu", &c.mu},
+        {"d", &c.d},
+        {"eps_t", &c.eps_t},
+        {"eps_r", &c.eps_r},
+        {"b_t", &c.b_t},
+        {"m_t", &c.m_t},
+        {"b_m", &c.b_m},
+        {"m_m", &c.m_m}}},
+      {"cue",
+       {{"mass", &p.cue.mass},
+        {"tip_restitution", &p.cue.tip_restitution},
+        {"max_tip_offset", &p.cue.max_tip_offset},
+        {"max_speed", &p.cue.max_speed}}},
+      {"table", {{"length", &p.table.length}, {"width", &p.table.width}}}};
+  for (const auto& [key, value] : j.items()) {
+    const bool known = key == "name" || key == "source" ||
+                       std::any_of(sections.begin(), sections.end(),
+                                   [&key = key](const auto& s) { return s.first == key; });
+    if (!known) throw std::invalid_argument(origin + ": unknown key " + key);
   }
-  physics::ModelParameters p;
-  p.name = j.value("name", origin);
-  p.source = j.value("source", "");
-  p.ball.radius = Number(j, "ball", "radius", origin);
-  p.ball.mass = Number(j, "ball", "mass", origin);
-  p.ball.gravity = Number(j, "ball", "gravity", origin);
-  physics::ContactParameters& c = p.contact;
-  c.patch_radius = Number(j, "contact", "patch_radius", origin);
-  c.mu = Number(j, "contact", "mu", origin);
-  c.d = Number(j, "contact", "d", origin);
-  c.eps_t = Number(j, "contact", "eps_t", origin);
-  c.eps_r = Number(j, "contact", "eps_r", origin);
-  c.b_t = Number(j, "contact", "b_t", origin);
-  c.m_t = Number(j, "contact", "m_t", origin);
-  c.b_m = Number(j, "contact", "b_m", origin);
-  c.m_m = Number(j, "contact", "m_m", origin);
-  p.cue.mass = Number(j, "cue", "mass", origin);
-  p.cue.tip_restitution = Number(j, "cue", "tip_restitution", origin);
-  p.cue.max_tip_offset = Number(j, "cue", "max_tip_offset", origin);
-  p.cue.max_speed = Number(j, "cue", "max_speed", origin);
-  p.table.length = Number(j, "table", "length", origin);
-  p.table.width = Number(j, "table", "width", origin);
+  for (const auto& [name, fields] : sections) {
+    if (!j.contains(name))
+      throw std::invalid_argument(origin + ": missing object \"" + name + "\"");
+    ReadSection(j.at(name), name, fields, origin);
+  }
+  p.name = ReadText(j, "name", origin, origin);
+  p.source = ReadText(j, "source", "", origin);
   physics::ValidateParameters(p);
   return p;
 }
 
-physics::ModelParameters LoadParameters(const std::string& name_or_path) {
+ModelParameters LoadParameters(const std::string& name_or_path) {
   for (const auto& [name, json] : internal::BuiltinParameterJson()) {
     if (name == name_or_path) return ParseParameters(json, name);
   }
@@ -84,7 +131,27 @@ physics::ModelParameters LoadParameters(const std::string& name_or_path) {
   }
   std::stringstream text;
   text << file.rdbuf();
-  return ParseParameters(text.str(), name_or_path);
+  ModelParameters p = ParseParameters(text.str(), name_or_path);
+  p.file = name_or_path;
+  return p;
+}
+
+std::string ParameterSetLabel(const ModelParameters& p) {
+  return p.file.empty() ? p.name : p.name + " (" + p.file + ")";
+}
+
+std::string ParameterHash(const ModelParameters& p) {
+  constexpr std::uint64_t kFnvOffsetBasis = 14695981039346656037ull;
+  constexpr std::uint64_t kFnvPrime = 1099511628211ull;
+  std::uint64_t hash = kFnvOffsetBasis;
+  for (double value : physics::ParameterValues(p)) {
+    unsigned char bytes[sizeof value];
+    std::memcpy(bytes, &value, sizeof value);
+    for (unsigned char byte : bytes) hash = (hash ^ byte) * kFnvPrime;
+  }
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
 }
 
 }  // namespace billiard::params

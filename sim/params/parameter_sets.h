@@ -12,14 +12,29 @@
 
 namespace billiard::params {
 
+// The set every node and command uses unless told otherwise: the regulation pool ball, the ball
+// users have. (`billiard bench` alone defaults to "paper": its scenes are the paper's figures.)
+inline constexpr char kDefaultParameterSet[] = "pool";
+
 // The names of the built-in parameter sets ("paper", "pool").
 std::vector<std::string> BuiltinParameterSetNames();
 
-// A built-in set by name, or a JSON file by path. Throws std::invalid_argument with a one-line
+// A built-in set by name, or a JSON file by path (then `file` holds the path). Throws std::invalid_argument with a one-line
 // reason on an unknown name, an unreadable file, a missing field or a value out of range.
 physics::ModelParameters LoadParameters(const std::string& name_or_path);
 
-// Parses a parameter set from JSON text (the format of sim/params/*.json).
+// Parses a parameter set from JSON text (the format of sim/params/*.json): the objects "ball",
+// "contact", "cue" and "table" with every number of physics::ModelParameters, and optional
+// strings "name" (default: `origin`) and "source". An unknown key, a missing number or a value
+// of the wrong type is refused, naming the key ("t.json: unknown key contact.muu").
 physics::ModelParameters ParseParameters(const std::string& json_text, const std::string& origin);
+
+// The set's name, and the file it came from when not built in: "pool", "mine (my/set.json)".
+std::string ParameterSetLabel(const physics::ModelParameters& p);
+
+// A hash of the set's numbers (physics::ParameterValues, FNV-1a over their bits), 16 hex digits:
+// two sets give the same hash exactly when they are the same physics, whatever their names or
+// files. The nodes announce it in NODE_STATUS.
+std::string ParameterHash(const physics::ModelParameters& p);
 
 }  // namespace billiard::params

@@ -77,5 +77,83 @@ TEST(Parameters, RejectsUnknownNamesBadJsonMissingFieldsAndBadValues) {
                std::invalid_argument);
 }
 
+// A valid set as JSON, with `extra` spliced into its contact section.
+std::string SetWithContact(const std::string& extra) {
+  return R"({"name":"mine","ball":{"radius":0.03,"mass":0.2,"gravity":9.8},
+    "contact":{"patch_radius":0.002,"mu":0.15,"d":0.5,"eps_t":0.01,"eps_r":0.02,
+               "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2)" +
+         extra + R"(},
+    "cue":{"mass":0.5,"tip_restitution":0.8,"max_tip_offset":0.5,"max_speed":5},
+    "table":{"length":2.84,"width":1.42}})";
+}
+
+// The reason ParseParameters gives for `json`, "" if it takes it.
+std::string Refusal(const std::string& json) {
+  try {
+    ParseParameters(json, "t.json");
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Parameters, RefusesAnUnknownKeyNamingIt) {
+  EXPECT_EQ(Refusal(SetWithContact("")), "");
+  const std::string misspelt = Refusal(SetWithContact(R"(,"muu":0.3)"));
+  EXPECT_NE(misspelt.find("t.json"), std::string::npos) << misspelt;
+  EXPECT_NE(misspelt.find("contact.muu"), std::string::npos) << misspelt;
+  std::string top = SetWithContact("");
+  top.insert(1, R"("colour":"green",)");
+  EXPECT_NE(Refusal(top).find("colour"), std::string::npos) << Refusal(top);
+}
+
+TEST(Parameters, RefusesAWrongTypeNamingTheKeyAndTheType) {
+  std::string text = SetWithContact("");
+  text.replace(text.find(R"("mu":0.15)"), 9, R"("mu":"0.2")");
+  const std::string why = Refusal(text);
+  EXPECT_NE(why.find("contact.mu"), std::string::npos) << why;
+  EXPECT_NE(why.find("string"), std::string::npos) << why;
+  EXPECT_EQ(why.find("missing"), std::string::npos) << why;
+  std::string name = SetWithContact("");
+  name.replace(name.find(R"("mine")"), 6, "7");
+  EXPECT_NE(Refusal(name).find("name"), std::string::npos) << Refusal(name);
+}
+
+TEST(Parameters, ASetReadFromAFileNamesTheFile) {
+  const std::string path = ::testing::TempDir() + "/named_params.json";
+  std::ofstream(path) << SetWithContact("");
+  const physics::ModelParameters p = LoadParameters(path);
+  EXPECT_EQ(p.file, path);
+  EXPECT_EQ(ParameterSetLabel(p), "mine (" + path + ")");
+  EXPECT_EQ(LoadParameters("pool").file, "");
+  EXPECT_EQ(ParameterSetLabel(LoadParameters("pool")), "pool");
+  std::remove(path.c_str());
+}
+
+TEST(Parameters, TheHashIsTheSameForTheSameNumbersWhateverTheName) {
+  const physics::ModelParameters pool = LoadParameters("pool");
+  physics::ModelParameters renamed = pool;
+  renamed.name = "my pool";
+  renamed.file = "/somewhere/pool.json";
+  EXPECT_EQ(ParameterHash(renamed), ParameterHash(pool));
+  EXPECT_EQ(ParameterHash(pool).size(), 16u);
+  EXPECT_NE(ParameterHash(LoadParameters("paper")), ParameterHash(pool));
+  for (std::size_t i = 0; i < physics::kParameterCount; ++i) {
+    // Any one number moved by one part in 1e15 is other physics.
+    physics::ModelParameters moved = pool;
+    double* fields[] = {&moved.ball.radius,        &moved.ball.mass,
+                        &moved.ball.gravity,       &moved.contact.patch_radius,
+                        &moved.contact.mu,         &moved.contact.d,
+                        &moved.contact.eps_t,      &moved.contact.eps_r,
+                        &moved.contact.b_t,        &moved.contact.m_t,
+                        &moved.contact.b_m,        &moved.contact.m_m,
+                        &moved.cue.mass,           &moved.cue.tip_restitution,
+                        &moved.cue.max_tip_offset, &moved.cue.max_speed,
+                        &moved.table.length,       &moved.table.width};
+    *fields[i] *= 1.0 + 1e-15;
+    EXPECT_NE(ParameterHash(moved), ParameterHash(pool)) << "number " << i;
+  }
+}
+
 }  // namespace
 }  // namespace billiard::params

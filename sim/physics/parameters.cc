@@ -16,12 +16,32 @@ void Require(bool ok, const std::string& name, const char* what) {
 
 }  // namespace
 
+std::array<double, kParameterCount> ParameterValues(const ModelParameters& p) {
+  const ContactParameters& c = p.contact;
+  return {p.ball.radius,
+          p.ball.mass,
+          p.ball.gravity,
+          c.patch_radius,
+          c.mu,
+          c.d,
+          c.eps_t,
+          c.eps_r,
+          c.b_t,
+          c.m_t,
+          c.b_m,
+          c.m_m,
+          p.cue.mass,
+          p.cue.tip_restitution,
+          p.cue.max_tip_offset,
+          p.cue.max_speed,
+          p.table.length,
+          p.table.width};
+}
+
 void ValidateParameters(const ModelParameters& p) {
   const std::string& n = p.name;
   const ContactParameters& c = p.contact;
-  for (double v : {p.ball.radius, p.ball.mass, p.ball.gravity, c.patch_radius, c.mu, c.d, c.eps_t,
-                   c.eps_r, c.b_t, c.m_t, c.b_m, c.m_m, p.cue.mass, p.cue.tip_restitution,
-                   p.cue.max_tip_offset, p.cue.max_speed, p.table.length, p.table.width}) {
+  for (double v : ParameterValues(p)) {
     Require(std::isfinite(v), n, "every parameter must be a finite number");
   }
   Require(p.ball.radius > 0.0 && p.ball.mass > 0.0 && p.ball.gravity > 0.0, n,

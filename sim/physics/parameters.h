@@ -7,6 +7,7 @@
 // mu_s = mu and mu_r = a d / (5 r) (shared/docs/physics-notes.md, section 2).
 #pragma once
 
+#include <array>
 #include <string>
 
 namespace billiard::physics {
@@ -44,6 +45,7 @@ struct TableParameters {
 struct ModelParameters {
   std::string name;
   std::string source;  // where the numbers come from
+  std::string file;    // the file the set was read from; empty for a built-in set
   BallParameters ball;
   ContactParameters contact;
   CueParameters cue;
@@ -59,5 +61,10 @@ struct ModelParameters {
 // physical range, or if mu is below the rolling resistance a d / (5 r) (the contact would create
 // energy). mu = 0 with d = 0, d = 0, and eps_t, eps_r as small as 1e-9 are valid.
 void ValidateParameters(const ModelParameters& p);
+
+// Every number of a set, in a fixed order (ball, contact, cue, table, as declared above): what
+// makes two sets the same physics whatever their names.
+inline constexpr std::size_t kParameterCount = 18;
+std::array<double, kParameterCount> ParameterValues(const ModelParameters& p);
 
 }  // namespace billiard::physics

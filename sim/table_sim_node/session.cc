@@ -88,6 +88,8 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
   std::vector<ShotResult> shots;
   try {
     shots = node.Run();
+  } catch (const ParameterMismatch& e) {
+    return fail(e.what(), 3);
   } catch (const std::runtime_error& e) {
     return fail(e.what(), nodes::StopRequested() ? 130 : 1);
   }

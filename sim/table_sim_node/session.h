@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sim/camera/camera_model.h"
+#include "sim/params/parameter_sets.h"
 #include "sim/physics/parameters.h"
 #include "sim/table_sim_node/table_sim_node.h"
 
@@ -21,7 +22,7 @@ inline constexpr int kCameraWidth = 1280, kCameraHeight = 720;
 
 struct SessionCommandLine {
   std::string lcm_url;  // empty: $LCM_DEFAULT_URL, else LCM's default
-  std::string params = "pool";
+  std::string params = params::kDefaultParameterSet;
   std::string noise = "off";  // "on": the robot's execution noise of kExecutionNoise
   bool realtime = false;
   TableSimOptions options;
@@ -48,8 +49,9 @@ using InProcessNodes = std::function<std::function<bool()>(
 
 // Runs the session of a parsed command line and prints its summary (SessionSummary) as one JSON
 // object on stdout. Returns the exit status: 0; 1 when LCM fails or a node does not answer in
-// time; 2 for options that make no session (the reason on stderr, prefixed by `name`); 130 when
-// stopped by SIGINT or SIGTERM.
+// time; 2 for options that make no session (the reason on stderr, prefixed by `name`); 3 when
+// the estimator or the planner runs other physics (the session refused); 130 when stopped by
+// SIGINT or SIGTERM.
 int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
                       const InProcessNodes& in_process = nullptr);
 

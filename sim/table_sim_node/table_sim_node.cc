@@ -15,6 +15,7 @@
 #include "lcmtypes/names.h"
 #include "lcmtypes/node/node_loop.h"
 #include "planner/node/planner_node.h"
+#include "sim/params/parameter_sets.h"
 #include "sim/physics/simulator.h"
 
 namespace billiard::table_sim_node {
@@ -48,6 +49,9 @@ TableSimNode::TableSimNode(lcm::LCM& lcm, const physics::ModelParameters& params
       lcm_.subscribe(messages::kCueCommandChannel, &TableSimNode::OnCueCommand, this));
   // A busy planner answers a burst all at once; no answer may be lost in LCM's queue.
   subscriptions_.back()->setQueueCapacity(10000);
+  subscriptions_.push_back(
+      lcm_.subscribe(messages::kNodeStatusChannel, &TableSimNode::OnNodeStatus, this));
+  health_.SetParameters(params::ParameterSetLabel(params_), params::ParameterHash(params_));
 }
 
 TableSimNode::~TableSimNode() {
@@ -73,6 +77,30 @@ void TableSimNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::strin
 
 void TableSimNode::OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
   if (auto command = Receive<cue_command_t>(rbuf, channel)) command_ = std::move(command);
+}
+
+void TableSimNode::OnNodeStatus(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+  if (auto status = Receive<node_status_t>(rbuf, channel)) {
+    const auto peer = std::find(kSessionPeers.begin(), kSessionPeers.end(), status->node);
+    if (peer != kSessionPeers.end()) peers_.insert_or_assign(status->node, std::move(*status));
+  }
+}
+
+void TableSimNode::AwaitPeersWithTheSamePhysics() {
+  WaitFor([&] { return peers_.size() == kSessionPeers.size(); },
+          "NODE_STATUS of the estimator_node and the planner_node", nullptr);
+  const std::string hash = params::ParameterHash(params_);
+  std::string disagreeing;
+  for (const auto& [name, status] : peers_) {
+    if (status.params_hash == hash) continue;
+    disagreeing += (disagreeing.empty() ? "" : ", ") + name + " runs '" + status.params + "' (" +
+                   status.params_hash + ")";
+  }
+  if (!disagreeing.empty()) {
+    throw ParameterMismatch("the nodes run other physics than the simulator's '" +
+                            params::ParameterSetLabel(params_) + "' (" + hash +
+                            "): " + disagreeing + "; start every node with the same --params");
+  }
 }
 
 template <class Message>
@@ -244,6 +272,7 @@ physics::CueStroke TableSimNode::WithNoise(physics::CueStroke stroke) {
 }
 
 std::vector<ShotResult> TableSimNode::Run() {
+  AwaitPeersWithTheSamePhysics();
   const double frame_dt = 1.0 / options_.camera_rate;
   const physics::TableParameters& table = params_.table;
   std::uniform_real_distribution<double> x(options_.target_margin,

@@ -26,13 +26,16 @@
 #include <cstdint>
 #include <functional>
 #include <lcm/lcm-cpp.hpp>
+#include <map>
 #include <optional>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "lcmtypes/billiard/cue_command_t.hpp"
 #include "lcmtypes/billiard/image_t.hpp"
+#include "lcmtypes/billiard/node_status_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/node/node_health.h"
 #include "sim/camera/camera_model.h"
@@ -84,6 +87,15 @@ struct ShotResult {
   int retries = 0;  // requests refused for a cause that time cures, and asked again
 };
 
+// The estimator or the planner runs with other physics than the simulator: a session would plan
+// and track one ball and simulate another.
+struct ParameterMismatch : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The nodes a session needs, by the names they announce in NODE_STATUS.
+inline const std::vector<std::string> kSessionPeers = {"estimator_node", "planner_node"};
+
 class TableSimNode {
  public:
   using Log = std::function<void(const std::string& line)>;
@@ -94,7 +106,9 @@ class TableSimNode {
   TableSimNode(const TableSimNode&) = delete;
   TableSimNode& operator=(const TableSimNode&) = delete;
 
-  // Runs the session; throws std::runtime_error when a node does not answer in time.
+  // Runs the session once the estimator and the planner have announced themselves (NODE_STATUS)
+  // with the simulator's physics (the same params::ParameterHash). Throws ParameterMismatch when
+  // they run other physics, std::runtime_error when a node does not answer in time.
   std::vector<ShotResult> Run();
 
   // Other nodes' work, called between messages while the session waits: the estimator and the
@@ -110,6 +124,9 @@ class TableSimNode {
   std::optional<Message> Receive(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   void OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   void OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  void OnNodeStatus(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  // Waits for the peers' NODE_STATUS and compares their physics with the simulator's.
+  void AwaitPeersWithTheSamePhysics();
   // Publishes the ball's true state at time t (sim time) and the camera's frame of it and, in
   // lockstep, waits for the estimator's state of that frame.
   void Frame(const std::function<physics::BallState(double)>& state, double t);
@@ -142,6 +159,7 @@ class TableSimNode {
   std::optional<table_state_t> state_;    // the estimator's latest
   std::optional<cue_command_t> command_;  // the planner's latest
   std::optional<image_t> held_frame_;     // reordered: sent after the next
+  std::map<std::string, node_status_t> peers_;  // the latest status of each peer
 };
 
 }  // namespace billiard::table_sim_node

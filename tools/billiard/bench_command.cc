@@ -15,6 +15,7 @@ namespace {
 struct BenchArgs {
   bool quick = false;
   std::string out;
+  // The scene suite holds the states of the paper's Figs. 6-10, which belong to its 20 mm ball.
   std::string params = "paper";
   bench::BenchmarkOptions options;
 };

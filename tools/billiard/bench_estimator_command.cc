@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "bench/estimator_benchmark.h"
+#include "sim/params/parameter_sets.h"
 #include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
@@ -12,7 +13,7 @@ namespace {
 
 struct BenchEstimatorArgs {
   std::string out;
-  std::string params = "pool";
+  std::string params = params::kDefaultParameterSet;
   bench::EstimatorBenchmarkOptions options;
 };
 

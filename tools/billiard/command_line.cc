@@ -36,6 +36,11 @@ void RequireFinite(double value, const std::string& what) {
   if (!std::isfinite(value)) throw UsageError(what + ": numbers must be finite (no NaN or inf)");
 }
 
+void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j) {
+  (*j)["params"] = p.name;
+  if (!p.file.empty()) (*j)["params_file"] = p.file;
+}
+
 physics::ModelParameters LoadParametersOption(const std::string& name_or_path) {
   try {
     return params::LoadParameters(name_or_path);

@@ -1,6 +1,7 @@
 // Helpers shared by the billiard subcommands: strict number parsing and one-line errors.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ std::vector<double> ParseNumberList(const std::string& text, std::size_t count,
 
 // Throws UsageError unless value is finite.
 void RequireFinite(double value, const std::string& what);
+
+// "params": the set's name, and "params_file": the file it came from (when not built in).
+void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j);
 
 // The parameter set of a --params option (a built-in name or a JSON file); UsageError if it
 // does not load.

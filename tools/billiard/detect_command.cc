@@ -12,6 +12,7 @@
 #include "estimator/ball_detector.h"
 #include "estimator/table_calibration.h"
 #include "sim/camera/camera_model.h"
+#include "sim/params/parameter_sets.h"
 #include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
@@ -31,7 +32,7 @@ cv::Mat ReadImage(const std::string& path) {
 }
 
 struct DetectArgs {
-  std::string image, calib, params = "paper";
+  std::string image, calib, params = params::kDefaultParameterSet;
   double ball_radius_px = 0;
   bool json = false;
 };
@@ -85,7 +86,7 @@ void RunDetect(const DetectArgs& args) {
 }
 
 struct CalibrateArgs {
-  std::string image, out, params = "paper", markers;
+  std::string image, out, params = params::kDefaultParameterSet, markers;
   double margin = 0.1, height = 0.04, fx = 0;
   bool json = false;
 };

@@ -71,6 +71,8 @@ void Run(const NodeStatusArgs& args) {
     out["processes"].push_back({{"node", process.node},
                                 {"started_utime", r.last.utime - r.last.uptime_us},
                                 {"uptime_s", 1e-6 * r.last.uptime_us},
+                                {"params", r.last.params},
+                                {"params_hash", r.last.params_hash},
                                 {"statuses", r.statuses},
                                 {"received", r.last.received},
                                 {"dropped", r.last.dropped},

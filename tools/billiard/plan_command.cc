@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "planner/shot_planner.h"
+#include "sim/params/parameter_sets.h"
 #include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
@@ -18,7 +19,7 @@ struct PlanArgs {
   std::string spin = "natural";
   double slide = 0.0;  // --slide, when given
   double side_spin = 0.0;
-  std::string params = "paper";
+  std::string params = params::kDefaultParameterSet;
   bool no_refine = false;
   bool json = false;
 };
@@ -39,7 +40,7 @@ nlohmann::json PlanJson(const planner::ShotPlan& plan, const physics::ModelParam
   j["iterations"] = plan.iterations;
   j["arrival_time"] = plan.arrival_time;
   j["slide_length"] = plan.slide_length;
-  j["params"] = params.name;
+  DescribeParameters(params, &j);
   j["status"] = planner::PlanStatusName(plan.status);
   if (plan.status != planner::PlanStatus::kOk) j["reason"] = plan.reason;
   return j;
@@ -47,7 +48,7 @@ nlohmann::json PlanJson(const planner::ShotPlan& plan, const physics::ModelParam
 
 void PrintSummary(const planner::ShotPlan& plan, const physics::ModelParameters& params,
                   bool refined) {
-  std::cerr << "plan, " << params.name << " parameters, "
+  std::cerr << "plan, " << params::ParameterSetLabel(params) << " parameters, "
             << (refined ? "refined against the 5-DOF model" : "closed-form inverse alone") << ": "
             << planner::PlanStatusName(plan.status) << "\n  cue     " << plan.stroke.speed
             << " m/s, heading " << plan.stroke.heading << " rad, tip side " << plan.stroke.tip_side

@@ -13,6 +13,7 @@
 #include "lcmtypes/node/node_loop.h"
 #include "planner/node/planner_node.h"
 #include "sim/camera/camera_model.h"
+#include "sim/params/parameter_sets.h"
 #include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
@@ -21,7 +22,7 @@ namespace {
 
 struct ReplayArgs {
   std::string log;
-  std::string params = "pool";
+  std::string params = params::kDefaultParameterSet;
   std::string camera;
   bool json = false;
 };

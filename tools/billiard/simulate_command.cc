@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/model_choice/model_choice.h"
+#include "sim/params/parameter_sets.h"
 #include "sim/physics/parameters.h"
 #include "sim/physics/simulator.h"
 #include "tools/billiard/command_line.h"
@@ -23,7 +24,7 @@ struct SimulateArgs {
   std::string model = "approx";
   std::string integrator = "rodas4";
   double accuracy = 0.0;  // --model auto only
-  std::string params = "paper";
+  std::string params = params::kDefaultParameterSet;
   double tol = physics::SimulationOptions{}.tolerance;
   double quadrature_tol = physics::SimulationOptions{}.quadrature_tolerance;
   std::string trajectory_path;
@@ -130,7 +131,7 @@ void Run(const SimulateArgs& args) {
                    {"expected_us", choice->expected_us},
                    {"accuracy_met", choice->accuracy_met}};
     }
-    j["params"] = params.name;
+    DescribeParameters(params, &j);
     j["t"] = t;
     if (arrived) j["arrived"] = *arrived;
     j["state"] = std::vector<double>(s.data(), s.data() + 7);
@@ -148,8 +149,8 @@ void Run(const SimulateArgs& args) {
     }
     std::cout << j.dump() << std::endl;
   } else {
-    std::cerr << physics::ModelName(options.model) << " model, " << params.name
-              << " parameters, t = " << t << " s"
+    std::cerr << physics::ModelName(options.model) << " model, "
+              << params::ParameterSetLabel(params) << " parameters, t = " << t << " s"
               << (arrived && !*arrived ? " (still faster than --until-speed)" : "")
               << "\n  X, Y   = " << s[physics::kX] << ", " << s[physics::kY]
               << " m\n  vx, vy = " << s[physics::kVx] << ", " << s[physics::kVy]

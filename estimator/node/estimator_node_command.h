@@ -1,0 +1,26 @@
+// build/bin/estimator_node's command line: its options, checked, and the node run with them until
+// SIGINT or SIGTERM (estimator_node_main.cc is the few lines that join them).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "sim/params/parameter_sets.h"
+
+namespace billiard::estimator_node {
+
+struct EstimatorNodeCommandLine {
+  std::string lcm_url;  // empty: $LCM_DEFAULT_URL, else LCM's default
+  std::string params = params::kDefaultParameterSet;
+  std::string camera;  // a camera model JSON file (billiard calibrate); empty: the overhead one
+  int width = 1280, height = 720;  // of the overhead camera's frames [px]
+};
+
+// Adds the node's options to `app`, filling `line` when it parses.
+void AddEstimatorNodeOptions(CLI::App& app, EstimatorNodeCommandLine* line);
+
+// Runs the node: 2 for parameters or a camera that do not load (the reason on stderr), else the
+// status of nodes::RunNodeUntilStopped.
+int RunEstimatorNodeCommand(const EstimatorNodeCommandLine& line);
+
+}  // namespace billiard::estimator_node

@@ -1,0 +1,66 @@
+#include "planner/node/planner_node_command.h"
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "lcmtypes/names.h"
+#include "lcmtypes/node/node_loop.h"
+#include "sim/params/parameter_sets.h"
+
+namespace billiard::planner_node {
+
+void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line) {
+  PlannerNodeOptions& options = line->options;
+  app.add_option("--lcm-url", line->lcm_url,
+                 "LCM URL, e.g. udpm://239.255.76.67:7667?ttl=0 (default: $LCM_DEFAULT_URL, else "
+                 "LCM's default)");
+  app.add_option("--params", line->params, "paper | pool | path to a JSON parameter file")
+      ->capture_default_str();
+  app.add_option("--max-ball-speed", options.max_ball_speed,
+                 "Refuse to plan for a ball faster than this [m/s]")
+      ->capture_default_str();
+  app.add_option("--max-state-age", options.max_state_age,
+                 "Refuse to plan from a ball state further than this from the request in time [s]")
+      ->capture_default_str();
+  app.add_option("--queue-capacity", options.queue_capacity,
+                 "Requests waiting to be planned; more are answered busy")
+      ->capture_default_str();
+  app.add_flag("--no-refine", line->no_refine, "Plan with the closed-form inverse alone");
+}
+
+PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line) {
+  PlannerNodeOptions options = line.options;
+  if (!(std::isfinite(options.max_ball_speed) && options.max_ball_speed >= 0.0)) {
+    throw std::invalid_argument("--max-ball-speed must be a finite speed >= 0");
+  }
+  if (!(std::isfinite(options.max_state_age) && options.max_state_age > 0.0)) {
+    throw std::invalid_argument("--max-state-age must be a finite time > 0");
+  }
+  if (options.queue_capacity < 1)
+    throw std::invalid_argument("--queue-capacity must be at least 1");
+  options.planner.refine = !line.no_refine;
+  return options;
+}
+
+int RunPlannerNodeCommand(const PlannerNodeCommandLine& line) {
+  PlannerNodeOptions options;
+  physics::ModelParameters params;
+  try {
+    options = NodeOptions(line);
+    params = params::LoadParameters(line.params);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "planner_node: " << e.what() << std::endl;
+    return 2;
+  }
+  return nodes::RunNodeUntilStopped("planner_node", line.lcm_url, [&](lcm::LCM& lcm) {
+    auto node = std::make_shared<PlannerNode>(lcm, params, options);
+    std::cerr << "planner_node: " << params::ParameterSetLabel(params) << " parameters, LCM "
+              << nodes::DescribeUrl(line.lcm_url) << ", answering " << messages::kShotRequestChannel
+              << std::endl;
+    return [node] { return node->Work(); };
+  });
+}
+
+}  // namespace billiard::planner_node
