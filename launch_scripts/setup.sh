@@ -7,6 +7,8 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libceres-dev libopencv-dev
   liblcm-dev liblcm-bin liblcm-java libglib2.0-dev
+  # lcm-spy's charts (launch_scripts/spy.sh)
+  libjchart2d-java
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
   python3 iproute2 procps
@@ -15,6 +17,8 @@ packages=(
 )
 # javac for the Java message types (lcm-gen --java): the JDK only where none is installed.
 command -v javac >/dev/null 2>&1 || packages+=(default-jdk-headless)
+# lcm-spy's window: Swing's X11 toolkit, which a headless JRE lacks, only where no JVM has it.
+ls /usr/lib/jvm/*/lib/libawt_xawt.so >/dev/null 2>&1 || packages+=(default-jre)
 
 missing=()
 for p in "${packages[@]}"; do
