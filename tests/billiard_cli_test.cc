@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -136,6 +137,29 @@ TEST(BilliardSimulate, AutoModelSaysWhatItChose) {
 TEST(BilliardSimulate, NegativeNumbersAreAcceptedWithEquals) {
   const auto j = Json("simulate --state=-1,0,0,1,-50,0,0 --t-end 1 --json");
   EXPECT_EQ(j["state"][0], -1.0);
+}
+
+// A file that is no LCM log is bad input, not a replay that differs.
+void ExpectReplayRefusesInput(const std::string& path, const std::string& reason) {
+  const CommandResult r = Billiard("replay " + path + " --json", true);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  EXPECT_NE(r.out.find(reason), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("differs"), std::string::npos) << r.out;
+}
+
+TEST(BilliardReplay, SaysAFileIsNotAnLcmLog) {
+  const std::string path = ::testing::TempDir() + "/not_a_log.lcm";
+  std::ofstream(path) << "t,X,Y\n0,0.6,0.635\n";
+  ExpectReplayRefusesInput(path, "is not an LCM log");
+  std::filesystem::remove(path);
+}
+
+TEST(BilliardReplay, SaysALogIsEmpty) {
+  const std::string path = ::testing::TempDir() + "/empty.lcm";
+  std::ofstream{path};
+  ExpectReplayRefusesInput(path, "is empty");
+  std::filesystem::remove(path);
 }
 
 TEST(BilliardFitContact, ReproducesThePaperTable) {

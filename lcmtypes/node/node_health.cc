@@ -94,12 +94,14 @@ node_status_t NodeHealth::TakeStatus() {
   return s;
 }
 
-void NodeHealth::PublishIfDue(lcm::LCM& lcm) {
-  const Clock::time_point now = Clock::now();
-  if (now - last_status_ < period_) return;
-  last_status_ = now;
+void NodeHealth::Publish(lcm::LCM& lcm) {
+  last_status_ = Clock::now();
   const node_status_t status = TakeStatus();
   lcm.publish(messages::kNodeStatusChannel, &status);
+}
+
+void NodeHealth::PublishIfDue(lcm::LCM& lcm) {
+  if (Clock::now() - last_status_ >= period_) Publish(lcm);
 }
 
 }  // namespace billiard::nodes
