@@ -3,34 +3,62 @@
 # targets; prints the summary on stderr and, with --json, one JSON object on stdout.
 #
 #   launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off] [--log FILE]
-#                              [--lockstep | --realtime] [--json] [--no-build]
+#                              [--log-frames all|none] [--lockstep | --realtime] [--json]
+#                              [--no-build]
+#
+# --log FILE records every message with lcm-logger (a relative FILE is in the caller's
+# directory); --log-frames none leaves out the CAMERA_IMAGE frames, which are nearly all of a
+# log's bytes, and such a log cannot be replayed through the estimator (replay.sh). A log that
+# cannot be written stops the run before it starts (exit 2); one that records nothing, or a
+# logger that dies, fails it at the end (exit 1, after the summary).
 #
 # LCM traffic stays on this host: inside a private network namespace with multicast routed to
 # loopback when one can be made (unshare -n), else UDP multicast with ttl=0, else (no multicast
 # route at all) the three nodes in one process on LCM's in-memory provider, which says so.
 set -euo pipefail
-cd "$(dirname "$0")/.."
 
-shots=20 seed=1 noise=off log="" clock=--lockstep json=false build=true
+usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
+fail_usage() { echo "run_loop: $1" >&2; exit 2; }
+
+shots=20 seed=1 noise=off log="" log_frames=all clock=--lockstep json=false build=true
 while [ $# -gt 0 ]; do
   case "$1" in
+    --help|-h) usage; exit 0 ;;
+    # Options with a value: checked here, then (;;&) read by their own case below.
+    --shots|--seed|--noise|--log|--log-frames)
+      [ $# -ge 2 ] && [ -n "$2" ] || fail_usage "$1 needs a value (see --help)" ;;&
     --shots) shots="$2"; shift 2 ;;
     --seed) seed="$2"; shift 2 ;;
     --noise) noise="$2"; shift 2 ;;
-    --log) log="$2"; shift 2 ;;
+    # Before the cd to the repository below: a relative path is the caller's.
+    --log) log=$(realpath -m -- "$2"); shift 2 ;;
+    --log-frames) log_frames="$2"; shift 2 ;;
     --lockstep) clock=--lockstep; shift ;;
     --realtime) clock=--realtime; shift ;;
     --json) json=true; shift ;;
     --no-build) build=false; shift ;;
     --in-namespace) in_namespace=true; shift ;;
-    *) echo "run_loop: unknown argument '$1'" >&2; exit 2 ;;
+    *) fail_usage "unknown argument '$1' (see --help)" ;;
   esac
 done
+case "$log_frames" in
+  all|none) ;;
+  *) fail_usage "--log-frames must be all or none, not '$log_frames'" ;;
+esac
+# A log that cannot be written is said before anything is built or started: opened for appending
+# (an existing file keeps its bytes until the logger starts), and a new one removed again.
+if [ -n "$log" ]; then
+  log_existed=false
+  [ -e "$log" ] && log_existed=true
+  reason=$( { : >>"$log"; } 2>&1 ) || fail_usage "cannot write the log '$log': ${reason##*: }"
+  $log_existed || rm -f "$log"
+fi
+cd "$(dirname "$0")/.."
 $build && bash launch_scripts/build.sh
 
 source launch_scripts/lcm_network.sh
-enter_private_network "$0" --no-build --shots "$shots" --seed "$seed" --noise "$noise" \
-  ${log:+--log "$log"} "$clock" $($json && echo --json)
+enter_private_network launch_scripts/run_loop.sh --no-build --shots "$shots" --seed "$seed" \
+  --noise "$noise" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json)
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
 in_process=false
@@ -46,18 +74,21 @@ if [ -z "${in_namespace:-}" ]; then
 fi
 
 pids=()
-summary_file=$(mktemp)
+summary_file=$(mktemp) logger_err=$(mktemp)
 cleanup() {
   for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
   wait 2>/dev/null || true
-  rm -f "$summary_file"
+  rm -f "$summary_file" "$logger_err"
 }
 trap cleanup EXIT
 trap 'exit 130' INT TERM
 
 if [ -n "$log" ]; then
-  lcm-logger --quiet --force "$log" >/dev/null 2>&1 &
-  pids+=($!)
+  without_frames=()
+  [ "$log_frames" = none ] && without_frames=(--channel CAMERA_IMAGE --invert-channels)
+  lcm-logger --quiet --force "${without_frames[@]}" "$log" >/dev/null 2>"$logger_err" &
+  logger=$!
+  pids+=($logger)
 fi
 if ! $in_process; then
   build/bin/estimator_node --params pool 2>/dev/null &
@@ -80,6 +111,17 @@ wait $! || status=$?
 [ $status -eq 130 ] && exit 130
 [ $status -eq 0 ] || { echo "run_loop: table_sim_node failed (exit $status)" >&2; exit 1; }
 summary=$(cat "$summary_file")
+# The logger stops (and writes what it holds) before the log is looked at.
+log_failure=""
+if [ -n "$log" ]; then
+  if ! kill -0 "$logger" 2>/dev/null; then
+    log_failure="lcm-logger stopped during the run: $(tail -n 1 "$logger_err")"
+  else
+    kill -TERM "$logger"
+    wait "$logger" || log_failure="lcm-logger failed: $(tail -n 1 "$logger_err")"
+  fi
+  [ -n "$log_failure" ] || [ -s "$log" ] || log_failure="it recorded nothing"
+fi
 $json && echo "$summary"
 python3 - "$summary" >&2 <<'PY'
 import json, sys
@@ -92,3 +134,7 @@ for i, shot in enumerate(s["shots"]):
 print(f"median miss {1e3*s['median_miss_m']:.2f} mm, max {1e3*s['max_miss_m']:.2f} mm, "
       f"mean {1e3*s['mean_miss_m']:.2f} +- {1e3*s['stddev_miss_m']:.2f} mm, {s['wall_s']:.1f} s")
 PY
+if [ -n "$log_failure" ]; then
+  echo "run_loop: the log '$log' is not a record of the run: $log_failure" >&2
+  exit 1
+fi

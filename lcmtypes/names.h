@@ -16,6 +16,12 @@ inline constexpr char kShotRequestChannel[] = "SHOT_REQUEST";  // shot_request_t
 inline constexpr char kCueCommandChannel[] = "CUE_COMMAND";    // cue_command_t, the planner's
 inline constexpr char kNodeStatusChannel[] = "NODE_STATUS";    // node_status_t, every node's
 
+// table_sim_node's setting among its NODE_STATUS counters: 1 when its frames go by the wall clock
+// (--realtime), 0 in lockstep. It is published before the first frame, so that a recorded log
+// says whether it can be replayed bit for bit (only a lockstep run can: its order of messages is
+// the same every run).
+inline constexpr char kRealtimeClockSetting[] = "realtime_clock";
+
 // "ok", "invalid", "off_table", "unreachable", "not_converged", "no_ball_state", "stale_state",
 // "busy" (cue_command_t's STATUS_*); "status N" for a value the message does not define.
 std::string CueCommandStatusName(std::int8_t status);

@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -15,6 +17,7 @@ namespace {
 
 using billiard::testing::Billiard;
 using billiard::testing::CommandResult;
+using billiard::testing::RunCommand;
 
 nlohmann::json Json(const std::string& args) {
   const CommandResult r = Billiard(args);
@@ -77,6 +80,22 @@ TEST(BilliardSimulate, WritesTheTrajectoryAsCsv) {
   std::remove(path.c_str());
 }
 
+TEST(BilliardSimulate, RefusesATrajectoryOfTooManySamplesBeforeWritingAny) {
+  const std::string path = ::testing::TempDir() + "/too_many_samples.csv";
+  std::filesystem::remove(path);
+  // The shell's file size limit (10 MB) stops a tool that writes anyway here, not at a full disk.
+  const CommandResult r = RunCommand(std::string("ulimit -f 20480 && ") + BILLIARD_BIN +
+                                         " simulate --state 0,0,0,1,-50,0,0 --t-end 8 "
+                                         "--sample-dt 1e-9 --json --trajectory " +
+                                         path,
+                                     true);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  EXPECT_NE(r.out.find("8000000001 samples"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1000000"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
 TEST(BilliardSimulate, BadInputExitsNonZeroWithAOneLineReason) {
   const char* bad[] = {
       "simulate --state 0,0,0,nan,0,0,0 --t-end 1 --json",
@@ -92,6 +111,10 @@ TEST(BilliardSimulate, BadInputExitsNonZeroWithAOneLineReason) {
       "simulate --state 0,0,0,1,0,0,0 --t-end 1 --model auto --json",
       "simulate --state 0,0,0,1,0,0,0 --t-end 1 --model auto --accuracy=-1 --json",
       "simulate --state 0,0,0,1,0,0,0 --t-end 1 --accuracy 0.01 --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --sample-dt 0 --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --sample-dt=-0.1 --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --sample-dt inf --json",
+      "simulate --state 0,0,0,1,0,0,0 --t-end 1 --sample-dt nan --json",
       "bench --quick",
       "bench --quick --out /tmp --threads 0",
   };
@@ -145,6 +168,29 @@ TEST(BilliardSimulate, DefaultsToThePoolSetAndNamesTheFileOfAnother) {
 TEST(BilliardSimulate, NegativeNumbersAreAcceptedWithEquals) {
   const auto j = Json("simulate --state=-1,0,0,1,-50,0,0 --t-end 1 --json");
   EXPECT_EQ(j["state"][0], -1.0);
+}
+
+// A file that is no LCM log is bad input, not a replay that differs.
+void ExpectReplayRefusesInput(const std::string& path, const std::string& reason) {
+  const CommandResult r = Billiard("replay " + path + " --json", true);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  EXPECT_NE(r.out.find(reason), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("differs"), std::string::npos) << r.out;
+}
+
+TEST(BilliardReplay, SaysAFileIsNotAnLcmLog) {
+  const std::string path = ::testing::TempDir() + "/not_a_log.lcm";
+  std::ofstream(path) << "t,X,Y\n0,0.6,0.635\n";
+  ExpectReplayRefusesInput(path, "is not an LCM log");
+  std::filesystem::remove(path);
+}
+
+TEST(BilliardReplay, SaysALogIsEmpty) {
+  const std::string path = ::testing::TempDir() + "/empty.lcm";
+  std::ofstream{path};
+  ExpectReplayRefusesInput(path, "is empty");
+  std::filesystem::remove(path);
 }
 
 TEST(BilliardFitContact, ReproducesThePaperTable) {

@@ -3,20 +3,95 @@
 // made) and prints the session's summary.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
+#include <lcm/lcm-cpp.hpp>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
+#include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/table_state_t.hpp"
 #include "tests/support/run_command.h"
 
 namespace {
 
+using billiard::testing::CommandResult;
+using billiard::testing::RunCommand;
+
 nlohmann::json RunLoop(const std::string& args) {
-  const billiard::testing::CommandResult r = billiard::testing::RunCommand(
-      std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build --json " + args);
+  const CommandResult r =
+      RunCommand(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build --json " + args);
   EXPECT_EQ(r.status, 0) << args;
   return nlohmann::json::parse(r.out, nullptr, false);
+}
+
+// A directory of its own for a test's logs, removed with it.
+class TempDir {
+ public:
+  TempDir() {
+    char name[] = "/tmp/closed_loop_XXXXXX";
+    path_ = mkdtemp(name) ? name : "";
+  }
+  ~TempDir() {
+    if (!path_.empty()) std::filesystem::remove_all(path_);
+  }
+  std::string operator/(const std::string& file) const { return path_ + "/" + file; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// How many messages of each channel a log holds.
+std::map<std::string, int> ChannelCounts(const std::string& path) {
+  std::map<std::string, int> counts;
+  lcm::LogFile log(path, "r");
+  while (const lcm::LogEvent* e = log.good() ? log.readNextEvent() : nullptr) ++counts[e->channel];
+  return counts;
+}
+
+// Records a lockstep run of `shots` into `log`; false (the caller skips) where the machine has no
+// multicast and the loop ran in one process, recording nothing.
+bool RecordRun(const std::string& log, int shots, const std::string& more_args = "") {
+  const nlohmann::json run =
+      RunLoop("--shots " + std::to_string(shots) + " --seed 7 --log " + log + " " + more_args);
+  EXPECT_TRUE(run.is_object());
+  return std::filesystem::exists(log);
+}
+
+CommandResult Replay(const std::string& log) {
+  return RunCommand(std::string("bash ") + REPLAY_SCRIPT + " " + log + " --json");
+}
+
+// Copies the log `from` to `to` with the index-th message on `channel` decoded as a Message,
+// changed by `alter` and encoded again, through LCM's log file API.
+template <class Message>
+void CopyWithOneMessageAltered(const std::string& from, const std::string& to,
+                               const std::string& channel, int index,
+                               const std::function<void(Message&)>& alter) {
+  lcm::LogFile in(from, "r"), out(to, "w");
+  ASSERT_TRUE(in.good() && out.good());
+  int seen = 0;
+  while (const lcm::LogEvent* e = in.readNextEvent()) {
+    lcm::LogEvent copy = *e;
+    std::vector<std::uint8_t> bytes;
+    if (e->channel == channel && seen++ == index) {
+      Message m;
+      ASSERT_EQ(m.decode(e->data, 0, e->datalen), e->datalen);
+      alter(m);
+      bytes.resize(m.getEncodedSize());
+      m.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+      copy.data = bytes.data();
+      copy.datalen = static_cast<std::int32_t>(bytes.size());
+    }
+    ASSERT_EQ(out.writeEvent(&copy), 0);
+  }
+  ASSERT_GT(seen, index) << "the log has " << seen << " messages on " << channel;
 }
 
 TEST(ClosedLoop, TwentyLockstepShotsWithoutNoiseLandWithinMillimetres) {
@@ -53,26 +128,25 @@ TEST(ClosedLoop, CtrlCStopsEveryProcess) {
 }
 
 TEST(ClosedLoop, ARecordedRunReplaysToTheSameCommandsAndDecodesInJava) {
-  char dir[] = "/tmp/closed_loop_XXXXXX";
-  ASSERT_NE(mkdtemp(dir), nullptr);
-  const std::string log = std::string(dir) + "/run.lcm";
-  const nlohmann::json run = RunLoop("--shots 2 --seed 7 --log " + log);
-  ASSERT_TRUE(run.is_object());
-  if (!std::filesystem::exists(log)) {
+  const TempDir dir;
+  const std::string log = dir / "run.lcm";
+  if (!RecordRun(log, 2)) {
     GTEST_SKIP() << "no multicast here: the loop ran in one process and recorded nothing";
   }
-  const billiard::testing::CommandResult r =
-      billiard::testing::RunCommand(std::string("bash ") + REPLAY_SCRIPT + " " + log + " --json");
+  // A relative path names a file in the caller's directory, not in the repository.
+  const CommandResult r =
+      RunCommand("cd " + dir.path() + " && bash " + REPLAY_SCRIPT + " run.lcm --json");
   EXPECT_EQ(r.status, 0) << r.out;
   const nlohmann::json replay = nlohmann::json::parse(r.out, nullptr, false);
   ASSERT_TRUE(replay.is_object()) << r.out;
   EXPECT_TRUE(replay["identical"].get<bool>()) << replay;
+  EXPECT_EQ(replay["clock"], "lockstep") << replay;
   EXPECT_EQ(replay["cue_commands"]["recorded"], 2) << replay;
   EXPECT_GT(replay["table_states"]["recorded"].get<int>(), 50) << replay;
 
   // The log decodes with the Java classes lcm-gen makes from the same .lcm files.
-  const billiard::testing::CommandResult java = billiard::testing::RunCommand(
-      std::string("java -cp ") + JAVA_CLASSPATH + " DecodeLog " + log);
+  const CommandResult java =
+      RunCommand(std::string("java -cp ") + JAVA_CLASSPATH + " DecodeLog " + log);
   ASSERT_EQ(java.status, 0) << java.out;
   const nlohmann::json decoded = nlohmann::json::parse(java.out, nullptr, false);
   ASSERT_TRUE(decoded.is_object()) << java.out;
@@ -80,7 +154,115 @@ TEST(ClosedLoop, ARecordedRunReplaysToTheSameCommandsAndDecodesInJava) {
   EXPECT_EQ(decoded["SHOT_REQUEST"], 2) << decoded;
   EXPECT_EQ(decoded["TABLE_STATE"], replay["table_states"]["recorded"]) << decoded;
   EXPECT_EQ(decoded["CAMERA_IMAGE"], decoded["TABLE_STATE"]) << decoded;
-  std::filesystem::remove_all(dir);
+}
+
+TEST(ClosedLoop, ALogThatCannotBeWrittenFailsBeforeTheNodesStart) {
+  // A directory that is not there is not made (lcm-logger would make it): a mistyped path is
+  // said at once.
+  const TempDir dir;
+  const std::string log = dir / "missing/run.lcm";
+  const CommandResult r =
+      RunCommand(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build --json --log " + log, true);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_EQ(r.out, "run_loop: cannot write the log '" + log + "': No such file or directory\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
+}
+
+TEST(ClosedLoop, ALogThatRecordsNothingFailsTheRun) {
+  // /dev/full opens for writing, and every write to it fails.
+  const CommandResult r = RunCommand(
+      std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build --shots 1 --log /dev/full", true);
+  EXPECT_NE(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("run_loop: the log '/dev/full'"), std::string::npos) << r.out;
+}
+
+TEST(ClosedLoop, ARelativeLogPathNamesAFileInTheCallersDirectory) {
+  const TempDir dir;
+  const std::string name = "closed_loop_test_relative.lcm";
+  const std::filesystem::path in_repository =
+      std::filesystem::path(RUN_LOOP_SCRIPT).parent_path().parent_path() / name;
+  const CommandResult r = RunCommand("cd " + dir.path() + " && bash " + RUN_LOOP_SCRIPT +
+                                     " --no-build --json --shots 1 --log " + name);
+  EXPECT_EQ(r.status, 0) << r.out;
+  if (std::filesystem::remove(in_repository)) FAIL() << "the log landed in the repository";
+  if (!std::filesystem::exists(dir / name)) {
+    GTEST_SKIP() << "no multicast here: the loop ran in one process and recorded nothing";
+  }
+  EXPECT_EQ(ChannelCounts(dir / name)["CUE_COMMAND"], 1);
+}
+
+TEST(ClosedLoop, ALogWithoutFramesHoldsTheRestAndSaysItCannotBeReplayed) {
+  const TempDir dir;
+  if (!RecordRun(dir / "light.lcm", 1, "--log-frames none")) {
+    GTEST_SKIP() << "no multicast here: the loop ran in one process and recorded nothing";
+  }
+  std::map<std::string, int> counts = ChannelCounts(dir / "light.lcm");
+  EXPECT_EQ(counts.count("CAMERA_IMAGE"), 0u);
+  EXPECT_GT(counts["TABLE_STATE"], 50);
+  EXPECT_GT(counts["TABLE_TRUTH"], 50);
+  EXPECT_EQ(counts["CUE_COMMAND"], 1);
+  EXPECT_GT(counts["NODE_STATUS"], 0);
+  std::fprintf(stderr, "a 1-shot log without frames: %ju bytes\n",
+               static_cast<std::uintmax_t>(std::filesystem::file_size(dir / "light.lcm")));
+
+  const CommandResult r =
+      RunCommand(std::string("bash ") + REPLAY_SCRIPT + " " + (dir / "light.lcm"), true);
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_NE(r.out.find("no CAMERA_IMAGE"), std::string::npos) << r.out;
+}
+
+TEST(ClosedLoop, AReplayNamesTheFirstMessageAndFieldThatDiffer) {
+  const TempDir dir;
+  const std::string log = dir / "run.lcm";
+  if (!RecordRun(log, 1)) {
+    GTEST_SKIP() << "no multicast here: the loop ran in one process and recorded nothing";
+  }
+  std::fprintf(stderr, "a 1-shot log with frames: %ju bytes\n",
+               static_cast<std::uintmax_t>(std::filesystem::file_size(log)));
+  double recorded_y = 0.0;
+  const auto move_the_ball = [&recorded_y](billiard::table_state_t& m) {
+    ASSERT_GT(m.num_balls, 0);
+    recorded_y = m.balls[0].position[1] += 1e-4;
+  };
+  CopyWithOneMessageAltered<billiard::table_state_t>(log, dir / "state.lcm", "TABLE_STATE", 12,
+                                                     move_the_ball);
+  CommandResult r = Replay(dir / "state.lcm");
+  EXPECT_EQ(r.status, 3) << r.out;
+  nlohmann::json replay = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(replay.is_object()) << r.out;
+  const nlohmann::json& state = replay["first_difference"];
+  EXPECT_EQ(state["channel"], "TABLE_STATE") << replay;
+  EXPECT_EQ(state["index"], 12) << replay;
+  EXPECT_EQ(state["field"], "balls[0].position[1]") << replay;
+  EXPECT_EQ(state["recorded"], recorded_y) << replay;
+  EXPECT_NEAR(state["replayed"].get<double>(), recorded_y - 1e-4, 1e-12) << replay;
+  EXPECT_GT(state["utime"].get<std::int64_t>(), 0) << replay;
+  EXPECT_EQ(replay["table_states"]["identical"].get<int>() + 1,
+            replay["table_states"]["recorded"].get<int>())
+      << replay;
+
+  CopyWithOneMessageAltered<billiard::cue_command_t>(
+      log, dir / "command.lcm", "CUE_COMMAND", 0,
+      [](billiard::cue_command_t& m) { m.heading += 1e-3; });
+  r = RunCommand(std::string("bash ") + REPLAY_SCRIPT + " " + (dir / "command.lcm"), true);
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_NE(r.out.find("first difference: CUE_COMMAND 0 (utime "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("): heading: recorded "), std::string::npos) << r.out;
+}
+
+TEST(ClosedLoop, ARealtimeLogIsReportedAsNotReplayableBitForBit) {
+  const TempDir dir;
+  const std::string log = dir / "realtime.lcm";
+  if (!RecordRun(log, 1, "--realtime")) {
+    GTEST_SKIP() << "no multicast here: the loop ran in one process and recorded nothing";
+  }
+  const CommandResult r = Replay(log);
+  EXPECT_EQ(r.status, 3) << r.out;
+  const nlohmann::json replay = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(replay.is_object()) << r.out;
+  EXPECT_EQ(replay["clock"], "realtime") << replay;
+  EXPECT_NE(replay.value("reason", "").find("not replayable bit for bit"), std::string::npos)
+      << replay;
 }
 
 }  // namespace

@@ -96,15 +96,17 @@ node_status_t NodeHealth::TakeStatus() {
   return s;
 }
 
-void NodeHealth::PublishIfDue(lcm::LCM& lcm) {
-  const Clock::time_point now = Clock::now();
-  // The first status goes out at once: it tells the others the node is there, and with which
-  // physics.
-  if (announced_ && now - last_status_ < period_) return;
+void NodeHealth::Publish(lcm::LCM& lcm) {
   announced_ = true;
-  last_status_ = now;
+  last_status_ = Clock::now();
   const node_status_t status = TakeStatus();
   lcm.publish(messages::kNodeStatusChannel, &status);
+}
+
+void NodeHealth::PublishIfDue(lcm::LCM& lcm) {
+  // The first status goes out at once: it tells the others the node is there, and with which
+  // physics.
+  if (!announced_ || Clock::now() - last_status_ >= period_) Publish(lcm);
 }
 
 }  // namespace billiard::nodes

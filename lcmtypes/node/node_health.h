@@ -36,6 +36,9 @@ class NodeHealth {
   void Dropped(const std::string& why);
   // Counts an event of the node's own: "duplicate", "stale_state", "busy", ...
   void Count(const std::string& counter, std::int64_t n = 1) { counters_[counter] += n; }
+  // A setting of the node's, reported among its counters so that a log of its statuses says how
+  // it ran (messages::kRealtimeClockSetting).
+  void Set(const std::string& setting, std::int64_t value) { counters_[setting] = value; }
   // The time from a message's arrival to the end of the work it caused.
   void Latency(Clock::duration latency);
   void SetQueueDepth(int depth) { queue_depth_ = depth; }
@@ -55,8 +58,10 @@ class NodeHealth {
   // a new period starts.
   node_status_t TakeStatus();
 
-  // Publishes TakeStatus() on NODE_STATUS on the first call, and then when a period has passed
-  // since the last time.
+  // Publishes TakeStatus() on NODE_STATUS.
+  void Publish(lcm::LCM& lcm);
+
+  // Publishes on the first call, and then when a period has passed since the last status.
   void PublishIfDue(lcm::LCM& lcm);
 
  private:

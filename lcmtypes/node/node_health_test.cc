@@ -78,18 +78,21 @@ TEST(NodeHealth, ALogThatThrowsDoesNotTakeTheNodeWithIt) {
   EXPECT_EQ(health.dropped(), 1);
 }
 
+// Collects the statuses published on NODE_STATUS.
+struct StatusSink {
+  std::vector<node_status_t>* seen;
+  void On(const lcm::ReceiveBuffer* rbuf, const std::string&) {
+    node_status_t s;
+    EXPECT_EQ(messages::DecodeChecked(rbuf->data, rbuf->data_size, s), "");
+    seen->push_back(s);
+  }
+};
+
 TEST(NodeHealth, AnnouncesItselfAtOnceThenPublishesOncePerPeriod) {
   lcm::LCM lcm("memq://");
   std::vector<node_status_t> seen;
-  struct Sink {
-    std::vector<node_status_t>* seen;
-    void On(const lcm::ReceiveBuffer* rbuf, const std::string&) {
-      node_status_t s;
-      EXPECT_EQ(messages::DecodeChecked(rbuf->data, rbuf->data_size, s), "");
-      seen->push_back(s);
-    }
-  } sink{&seen};
-  lcm.subscribe(messages::kNodeStatusChannel, &Sink::On, &sink);
+  StatusSink sink{&seen};
+  lcm.subscribe(messages::kNodeStatusChannel, &StatusSink::On, &sink);
   NodeHealth health(
       "test_node", [](const std::string&) {}, milliseconds(50));
   health.SetParameters("pool", "0123456789abcdef");
@@ -109,6 +112,23 @@ TEST(NodeHealth, AnnouncesItselfAtOnceThenPublishesOncePerPeriod) {
     EXPECT_EQ(s.params, "pool");
     EXPECT_EQ(s.params_hash, "0123456789abcdef");
   }
+}
+
+TEST(NodeHealth, PublishesASettingAmongTheCountersAtOnceWhenAsked) {
+  lcm::LCM lcm("memq://");
+  std::vector<node_status_t> seen;
+  StatusSink sink{&seen};
+  lcm.subscribe(messages::kNodeStatusChannel, &StatusSink::On, &sink);
+  NodeHealth health("test_node", [](const std::string&) {});
+  health.Set(messages::kRealtimeClockSetting, 0);  // a setting of 0 is reported too
+  health.Publish(lcm);
+  health.PublishIfDue(lcm);  // the period starts again with the status published
+  while (lcm.handleTimeout(0) > 0) {
+  }
+  ASSERT_EQ(seen.size(), 1u);
+  ASSERT_EQ(seen[0].num_counters, 1);
+  EXPECT_EQ(seen[0].counter_names[0], messages::kRealtimeClockSetting);
+  EXPECT_EQ(seen[0].counter_values[0], 0);
 }
 
 }  // namespace

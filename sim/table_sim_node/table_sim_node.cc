@@ -279,6 +279,8 @@ std::vector<ShotResult> TableSimNode::Run() {
                                            table.length - options_.target_margin);
   std::uniform_real_distribution<double> y(options_.target_margin,
                                            table.width - options_.target_margin);
+  health_.Set(messages::kRealtimeClockSetting, options_.lockstep ? 0 : 1);
+  health_.Publish(lcm_);
   std::vector<ShotResult> results;
   for (int shot = 0; shot < options_.shots; ++shot) {
     const Eigen::Vector2d rest = ball_;

@@ -19,7 +19,8 @@
 // of its own (the shots stay the same).
 //
 // The replies are decoded and checked (message_checks.h); only the latest of each is kept. Counts
-// go out on NODE_STATUS (node_health.h).
+// go out on NODE_STATUS (node_health.h), the first before the first frame with the clock among
+// them (messages::kRealtimeClockSetting), so that a log of the session says how it was clocked.
 #pragma once
 
 #include <Eigen/Core>

@@ -5,8 +5,9 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
 
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
@@ -34,14 +35,35 @@ struct SimulateArgs {
   bool json = false;
 };
 
+// The most rows a trajectory file gets: a sample every 10 us of a 10 s shot, far finer than the
+// integrator's steps (about a hundred a shot), and at 130 to 180 bytes a row about 150 MB. A
+// --sample-dt of 1e-9 would otherwise write gigabytes.
+constexpr double kMaxTrajectorySamples = 1e6;
+
+// Samples at 0, dt, 2 dt, ... and at t_end itself; a double, as a tiny dt overflows any integer.
+double TrajectorySamples(double t_end, double dt) { return std::ceil(t_end / dt - 1e-9) + 1.0; }
+
+// Refuses, before any file is made, a trajectory of more rows than kMaxTrajectorySamples.
+void RequireTrajectoryWithinLimit(double t_end, double dt) {
+  const double samples = TrajectorySamples(t_end, dt);
+  if (samples <= kMaxTrajectorySamples) return;
+  std::ostringstream reason;
+  reason.precision(15);
+  reason << "--sample-dt " << dt << " to t = " << t_end << " s asks for " << samples
+         << " samples, more than the " << kMaxTrajectorySamples
+         << " a trajectory file may hold (raise --sample-dt)";
+  throw UsageError(reason.str());
+}
+
 void WriteTrajectoryCsv(const physics::Trajectory& trajectory, double t_end, double dt,
                         const std::string& path) {
+  RequireTrajectoryWithinLimit(t_end, dt);
   std::ofstream out(path);
   if (!out) throw UsageError("cannot write trajectory file '" + path + "'");
   out.precision(17);
   out << "t,X,Y,vx,vy,wx,wy,wz\n";
-  const long samples = static_cast<long>(std::ceil(t_end / dt - 1e-9));
-  for (long i = 0; i <= samples; ++i) {
+  const long samples = static_cast<long>(TrajectorySamples(t_end, dt));
+  for (long i = 0; i < samples; ++i) {
     const double t = std::min(i * dt, t_end);
     const physics::BallState s = trajectory.At(t);
     out << t;
@@ -56,7 +78,9 @@ void Run(const SimulateArgs& args) {
   RequireFinite(args.t_end, "--t-end");
   if (args.t_end < 0.0) throw UsageError("--t-end must be >= 0");
   if (!(args.tol > 0.0) || !std::isfinite(args.tol)) throw UsageError("--tol must be positive");
-  if (!(args.sample_dt > 0.0)) throw UsageError("--sample-dt must be positive");
+  if (!(args.sample_dt > 0.0) || !std::isfinite(args.sample_dt)) {
+    throw UsageError("--sample-dt must be a positive number of seconds");
+  }
   const bool automatic = args.model == "auto";
   const auto model = physics::ParseModel(args.model);
   if (!model && !automatic) {
