@@ -27,6 +27,20 @@
 
 namespace billiard::estimator {
 
+// The largest RMS reprojection error of the marker centres [px] a calibration is accepted with
+// (`billiard calibrate --max-reprojection-px`). Markers found to a fraction of a pixel and a
+// layout that is the table's reproject within a pixel (0.34 px on the real photograph); a layout
+// that is not (another table's margin, markers in the wrong order) misses by tens of pixels (41.5
+// px there with the default margin), and its pose puts the frame's balls in the wrong places.
+inline constexpr double kMaxReprojectionPx = 3.0;
+
+// How far, as a fraction of the radius measured in a frame, the ball radius a calibration
+// predicts (ExpectedRadiusPx) may be from it before `billiard detect --calib` says so. The
+// detector looks for balls of the predicted size: on the real photograph it finds 19 to 21 of
+// the 21 balls looking for 12 % less to 20 % more than their radius, 9 at 18 % less. A good
+// calibration predicts within 7 % (the outline measured includes the blur of the ball's edge).
+inline constexpr double kMaxBallRadiusMismatch = 0.15;
+
 // Where the markers' centres are in table coordinates [m], in image order: top-left, top-right,
 // bottom-right, bottom-left.
 struct MarkerLayout {

@@ -1,11 +1,12 @@
 // image_t on CAMERA_IMAGE: the message through message_checks, then its pixels through
-// DecodeImage (GRAY, RGB, and JPEG through OpenCV's libjpeg).
+// DecodeImage (GRAY, RGB, and JPEG through libjpeg, its warnings refused).
 #include <algorithm>
 
 #include <opencv2/imgproc.hpp>
 
 #include "fuzz/support.h"
 #include "lcmtypes/image_codec.h"
+#include "lcmtypes/testing/damaged_jpeg.h"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size,
                                         std::size_t max_size);
@@ -85,10 +86,16 @@ std::vector<Bytes> Seeds() {
     padded.data.insert(padded.data.end(), 5, 0);
   }
   padded.size = static_cast<std::int32_t>(padded.data.size());
+  // Damaged JPEGs, refused, from which mutations reach libjpeg's corrupt-data paths.
+  const image_t jpeg = messages::EncodeImage(colour, 4, messages::ImageEncoding::kMjpeg, 75);
+  using messages::testing::WithData;
   return {Encode(messages::EncodeImage(colour, 1, messages::ImageEncoding::kGray)),
-          Encode(messages::EncodeImage(colour, 2, messages::ImageEncoding::kRgb)), Encode(padded),
-          Encode(messages::EncodeImage(colour, 4, messages::ImageEncoding::kMjpeg, 75)),
-          Encode(messages::EncodeImage(gray, 5, messages::ImageEncoding::kMjpeg, 90))};
+          Encode(messages::EncodeImage(colour, 2, messages::ImageEncoding::kRgb)),
+          Encode(padded),
+          Encode(jpeg),
+          Encode(messages::EncodeImage(gray, 5, messages::ImageEncoding::kMjpeg, 90)),
+          Encode(WithData(jpeg, messages::testing::Truncated(jpeg.data, jpeg.data.size() * 2 / 3))),
+          Encode(WithData(jpeg, messages::testing::WithStrayMarker(jpeg.data, 0.5)))};
 }
 
 }  // namespace billiard::fuzz

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libceres-dev libopencv-dev
+  libeigen3-dev libceres-dev libopencv-dev libjpeg62-turbo-dev
   liblcm-dev liblcm-bin liblcm-java libglib2.0-dev
   # lcm-spy's charts (launch_scripts/spy.sh)
   libjchart2d-java

@@ -1,10 +1,14 @@
 #include "lcmtypes/image_codec.h"
 
+#include <csetjmp>
+#include <cstdio>  // before jpeglib.h, which uses FILE
 #include <cstring>
-#include <optional>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
+#include <jerror.h>
+#include <jpeglib.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -24,40 +28,6 @@ void CopyRows(const cv::Mat& image, std::vector<std::uint8_t>* data) {
   for (int y = 0; y < image.rows; ++y) {
     std::memcpy(data->data() + y * row_bytes, image.ptr(y), row_bytes);
   }
-}
-
-struct JpegHeader {
-  int width = 0, height = 0, components = 0;
-};
-
-// The frame header (SOF) of a JPEG, found by walking the marker segments up to the scan.
-std::optional<JpegHeader> ReadJpegHeader(const std::vector<std::uint8_t>& d) {
-  if (d.size() < 4 || d[0] != 0xFF || d[1] != 0xD8) return std::nullopt;
-  std::size_t i = 2;
-  while (i + 4 <= d.size()) {
-    if (d[i] != 0xFF) return std::nullopt;
-    const std::uint8_t marker = d[i + 1];
-    if (marker == 0xFF) {  // fill byte
-      ++i;
-      continue;
-    }
-    if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {  // segments without a length
-      i += 2;
-      continue;
-    }
-    const std::size_t length = (d[i + 2] << 8) | d[i + 3];
-    if (length < 2 || i + 2 + length > d.size()) return std::nullopt;
-    const bool frame_header =
-        marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
-    if (frame_header) {
-      if (length < 8) return std::nullopt;
-      const std::uint8_t* s = d.data() + i + 4;
-      return JpegHeader{(s[3] << 8) | s[4], (s[1] << 8) | s[2], s[5]};
-    }
-    if (marker == 0xDA || marker == 0xD9) return std::nullopt;  // scan or end before a frame
-    i += 2 + length;
-  }
-  return std::nullopt;
 }
 
 DecodedImage Refuse(std::string reason) { return {false, std::move(reason), {}}; }
@@ -88,34 +58,77 @@ DecodedImage DecodeRaw(const image_t& m, int channels) {
   return out;
 }
 
-DecodedImage DecodeJpeg(const image_t& m) {
-  const std::vector<std::uint8_t>& d = m.data;
-  const std::optional<JpegHeader> header = ReadJpegHeader(d);
-  if (!header) return Refuse("not a JPEG: no SOI marker or no frame header before the scan");
-  if (header->width != m.width || header->height != m.height) {
-    return Refuse("JPEG is " + Size(header->width, header->height) + ", message says " +
-                  Size(m.width, m.height));
+// libjpeg's error handling made strict: an error and a warning alike end the decode, back at
+// DecompressJpeg's setjmp, with libjpeg's own message. (libjpeg is C: no C++ exception may pass
+// through it.)
+struct StrictJpegErrors {
+  jpeg_error_mgr manager;  // first, since libjpeg hands back a pointer to it
+  std::jmp_buf escape;
+  char message[JMSG_LENGTH_MAX];
+};
+
+[[noreturn]] void AbandonDecode(j_common_ptr jpeg) {
+  auto* errors = reinterpret_cast<StrictJpegErrors*>(jpeg->err);
+  (*jpeg->err->format_message)(jpeg, errors->message);
+  std::longjmp(errors->escape, 1);
+}
+
+// Level -1 is a warning: corrupt data, which libjpeg would decode into a damaged image. Levels 0
+// and above are trace messages.
+void RefuseWarnings(j_common_ptr jpeg, int msg_level) {
+  if (msg_level < 0) AbandonDecode(jpeg);
+}
+
+// Whether to decompress a JPEG of the size its header announces: "" to go on, else the reason.
+using JpegSizeCheck = std::function<std::string(int width, int height)>;
+
+DecodedImage DecompressJpeg(const std::vector<std::uint8_t>& bytes, const JpegSizeCheck& check) {
+  jpeg_decompress_struct jpeg;
+  StrictJpegErrors errors;
+  jpeg.err = jpeg_std_error(&errors.manager);
+  errors.manager.error_exit = AbandonDecode;
+  errors.manager.emit_message = RefuseWarnings;
+  // Declared before the setjmp, so that the way back from libjpeg leaves it to its destructor.
+  DecodedImage out;
+  if (setjmp(errors.escape) != 0) {
+    jpeg_destroy_decompress(&jpeg);
+    const bool truncated = errors.manager.msg_code == JWRN_JPEG_EOF;
+    return Refuse((truncated ? "JPEG is truncated: " : "JPEG refused by libjpeg: ") +
+                  std::string(errors.message));
   }
-  if (header->components != 1 && header->components != 3) {
-    return Refuse("JPEG has " + std::to_string(header->components) +
-                  " components; only gray (1) and colour (3) are decoded");
+  jpeg_create_decompress(&jpeg);
+  jpeg_mem_src(&jpeg, bytes.data(), bytes.size());
+  jpeg_read_header(&jpeg, TRUE);
+  out.error = check(static_cast<int>(jpeg.image_width), static_cast<int>(jpeg.image_height));
+  if (out.error.empty() && jpeg.num_components != 1 && jpeg.num_components != 3) {
+    out.error = "JPEG has " + std::to_string(jpeg.num_components) +
+                " components; only gray (1) and colour (3) are decoded";
   }
-  // libjpeg pads a truncated stream with grey and calls it a warning; the end marker tells.
-  if (d[d.size() - 2] != 0xFF || d[d.size() - 1] != 0xD9) {
-    return Refuse("JPEG does not end with the EOI marker (truncated)");
+  if (!out.error.empty()) {
+    jpeg_destroy_decompress(&jpeg);
+    return out;
   }
-  DecodedImage out{true, "", {}};
-  try {
-    out.image = cv::imdecode(d, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception& e) {
-    return Refuse("JPEG does not decode: " + std::string(e.what()).substr(0, 200));
+  const bool gray = jpeg.num_components == 1;
+  jpeg.out_color_space = gray ? JCS_GRAYSCALE : JCS_EXT_BGR;
+  jpeg_start_decompress(&jpeg);
+  out.image.create(static_cast<int>(jpeg.output_height), static_cast<int>(jpeg.output_width),
+                   gray ? CV_8UC1 : CV_8UC3);
+  while (jpeg.output_scanline < jpeg.output_height) {
+    JSAMPROW row = out.image.ptr(static_cast<int>(jpeg.output_scanline));
+    jpeg_read_scanlines(&jpeg, &row, 1);
   }
-  if (out.image.empty()) return Refuse("JPEG does not decode");
-  if (out.image.cols != m.width || out.image.rows != m.height || out.image.depth() != CV_8U) {
-    return Refuse("JPEG decodes to " + Size(out.image.cols, out.image.rows) + ", message says " +
-                  Size(m.width, m.height));
-  }
+  jpeg_finish_decompress(&jpeg);  // on to the end marker: a stream cut after the last row warns
+  jpeg_destroy_decompress(&jpeg);
+  out.ok = true;
   return out;
+}
+
+// An MJPEG frame: its JPEG must be of the message's size.
+DecodedImage DecodeJpegFrame(const image_t& m) {
+  return DecompressJpeg(m.data, [&m](int width, int height) {
+    if (width == m.width && height == m.height) return std::string();
+    return "JPEG is " + Size(width, height) + ", message says " + Size(m.width, m.height);
+  });
 }
 
 }  // namespace
@@ -175,11 +188,19 @@ DecodedImage DecodeImage(const image_t& m, const DecodeLimits& limits) {
     case image_t::PIXEL_FORMAT_RGB:
       return DecodeRaw(m, 3);
     case image_t::PIXEL_FORMAT_MJPEG:
-      return DecodeJpeg(m);
+      return DecodeJpegFrame(m);
     default:
       return Refuse("unknown pixelformat " + std::to_string(m.pixelformat) +
                     " (GRAY, RGB and MJPEG are decoded)");
   }
+}
+
+DecodedImage DecodeJpeg(const std::vector<std::uint8_t>& bytes, const DecodeLimits& limits) {
+  return DecompressJpeg(bytes, [&limits](int width, int height) {
+    if (width <= limits.max_width && height <= limits.max_height) return std::string();
+    return "JPEG is " + Size(width, height) + ", beyond the limit " +
+           Size(limits.max_width, limits.max_height);
+  });
 }
 
 }  // namespace billiard::messages

@@ -8,10 +8,17 @@
 // others and against a size limit before a byte is read, and a JPEG's own header must announce the
 // message's width and height before it is decompressed (a small JPEG can claim gigapixels). A
 // refused frame comes back with a one-line reason; nothing here throws on bad input or crashes.
+//
+// JPEGs are decoded with libjpeg, strictly: libjpeg only warns about corrupt entropy-coded data
+// or a stream that ends early, and hands back an image damaged from there on (grey, or blocks of
+// the wrong colour, where the detector finds balls that are not there and misses those that
+// are), so every warning refuses the image. What libjpeg cannot notice stays unnoticed: JPEG has
+// no checksum, and bytes flipped in the entropy-coded data often still read as valid codes.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -41,5 +48,10 @@ struct DecodedImage {
 
 // Decodes a frame, or says in one line why it cannot.
 DecodedImage DecodeImage(const image_t& message, const DecodeLimits& limits = {});
+
+// Decodes one JPEG image (an MJPEG frame's data, a .jpg file's bytes) whose header announces a size
+// within `limits`, or says in one line why it cannot: not a JPEG, truncated, corrupt (whatever
+// libjpeg warns about), or neither gray nor colour. The frames of DecodeImage take this path.
+DecodedImage DecodeJpeg(const std::vector<std::uint8_t>& bytes, const DecodeLimits& limits = {});
 
 }  // namespace billiard::messages

@@ -5,7 +5,10 @@
 
 #include <random>
 
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+
+#include "lcmtypes/testing/damaged_jpeg.h"
 
 namespace billiard::messages {
 namespace {
@@ -23,6 +26,13 @@ cv::Mat TestImage(int width = 160, int height = 90) {
   }
   cv::circle(image, {width / 2, height / 2}, height / 4, cv::Scalar(20, 200, 240), cv::FILLED);
   return image;
+}
+
+// A JPEG frame of the test image, smoothed as a camera sees the table.
+image_t JpegFrame() {
+  cv::Mat smooth;
+  cv::GaussianBlur(TestImage(), smooth, {0, 0}, 2.0);
+  return EncodeImage(smooth, 0, ImageEncoding::kMjpeg);
 }
 
 bool Identical(const cv::Mat& a, const cv::Mat& b) {
@@ -176,22 +186,10 @@ TEST(ImageCodec, MalformedRawFramesAreRefused) {
 }
 
 TEST(ImageCodec, MalformedJpegsAreRefused) {
-  cv::Mat smooth;
-  cv::GaussianBlur(TestImage(), smooth, {0, 0}, 2.0);
-  const image_t good = EncodeImage(smooth, 0, ImageEncoding::kMjpeg);
+  const image_t good = JpegFrame();
   ASSERT_TRUE(DecodeImage(good).ok);
 
   image_t m = good;
-  m.data.resize(m.data.size() * 2 / 3);
-  m.size = static_cast<int>(m.data.size());
-  ExpectRefused(m, "truncated");
-
-  m = good;
-  m.data.resize(100);  // cut inside the headers
-  m.size = 100;
-  ExpectRefused(m, "not a JPEG");
-
-  m = good;
   m.width = 161;
   ExpectRefused(m, "JPEG is 160x90, message says 161x90");
   m = good;
@@ -213,10 +211,11 @@ TEST(ImageCodec, MalformedJpegsAreRefused) {
   }
   m = good;
   std::fill(m.data.begin(), m.data.end(), 0);
-  ExpectRefused(m, "not a JPEG");
+  ExpectRefused(m, "Not a JPEG file");
 
-  // Corrupt bytes inside the good JPEG's entropy-coded data and headers: refused or decoded to
-  // the announced size, never a crash.
+  // Corrupt bytes inside the good JPEG's entropy-coded data and headers: refused where libjpeg
+  // notices, else (bytes that still read as valid codes) decoded to the announced size; never a
+  // crash.
   for (int i = 0; i < 200; ++i) {
     m = good;
     for (int k = 0; k < 8; ++k) m.data[rng() % m.data.size()] = static_cast<std::uint8_t>(rng());
@@ -227,6 +226,48 @@ TEST(ImageCodec, MalformedJpegsAreRefused) {
       EXPECT_FALSE(d.error.empty());
     }
   }
+}
+
+TEST(ImageCodec, DecodeJpegReadsWhatOpenCvWritesWithinItsLimits) {
+  const image_t frame = JpegFrame();
+  const DecodedImage d = DecodeJpeg(frame.data);
+  ASSERT_TRUE(d.ok) << d.error;
+  // The same libjpeg with the same settings: the very pixels OpenCV decodes, in BGR order.
+  EXPECT_TRUE(Identical(d.image, cv::imdecode(frame.data, cv::IMREAD_COLOR)));
+  cv::Mat gray;
+  cv::cvtColor(TestImage(), gray, cv::COLOR_BGR2GRAY);
+  const DecodedImage g = DecodeJpeg(EncodeImage(gray, 0, ImageEncoding::kMjpeg).data);
+  ASSERT_TRUE(g.ok) << g.error;
+  EXPECT_EQ(g.image.type(), CV_8UC1);
+
+  const DecodedImage over = DecodeJpeg(frame.data, {100, 100});
+  EXPECT_FALSE(over.ok);
+  EXPECT_EQ(over.error, "JPEG is 160x90, beyond the limit 100x100");
+}
+
+TEST(ImageCodec, TruncatedJpegsAreRefusedWhereverTheyAreCut) {
+  const image_t good = JpegFrame();
+  for (std::size_t length = 1; length < good.data.size(); ++length) {
+    SCOPED_TRACE("cut after " + std::to_string(length) + " of " + std::to_string(good.data.size()) +
+                 " bytes");
+    ExpectRefused(testing::WithData(good, testing::Truncated(good.data, length)), "truncated");
+  }
+}
+
+TEST(ImageCodec, CorruptButCompleteJpegsAreRefused) {
+  const image_t good = JpegFrame();
+  for (const double at : {0.0, 0.1, 0.3, 0.5, 0.7, 0.9}) {
+    SCOPED_TRACE("damaged " + std::to_string(at) + " of the way through the scan data");
+    ExpectRefused(testing::WithData(good, testing::WithStrayMarker(good.data, at)),
+                  "Corrupt JPEG data: premature end of data segment");
+    ExpectRefused(testing::WithData(good, testing::CutAndClosed(good.data, at)),
+                  "Corrupt JPEG data: premature end of data segment");
+  }
+  ExpectRefused(testing::WithData(good, testing::WithJunkBeforeTheEnd(good.data)),
+                "extraneous bytes before marker 0xd9");
+  const DecodedImage d = DecodeImage(good);
+  ASSERT_TRUE(d.ok) << d.error;
+  EXPECT_EQ(d.image.size(), cv::Size(160, 90));
 }
 
 }  // namespace

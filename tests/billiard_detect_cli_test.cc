@@ -1,16 +1,25 @@
 // `billiard detect` and `billiard calibrate` as a user runs them on the real photograph: one JSON
-// object on stdout, every ball once; a missing or unreadable image is a usage error (exit 2,
-// one line).
+// object on stdout, every ball once; a missing, unreadable or damaged image is a usage error
+// (exit 2, one line); a calibration that does not fit is refused (exit 3), and one that does not
+// agree with the frame is said so on stderr.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
 #include <string>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
 
 #include "estimator/testing/real_table_photo.h"
+#include "lcmtypes/image_codec.h"
+#include "lcmtypes/testing/damaged_jpeg.h"
 #include "tests/support/billiard_command.h"
 #include "tests/support/test_data.h"
 
@@ -21,6 +30,90 @@ using billiard::estimator::testing::kRealTablePhoto;
 using billiard::testing::Billiard;
 using billiard::testing::CommandResult;
 using billiard::testing::OneObject;
+
+// A temporary directory, removed with what it holds.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    char name[] = "/tmp/billiard_detect_XXXXXX";
+    if (mkdtemp(name) != nullptr) path_ = name;
+    EXPECT_FALSE(path_.empty()) << "mkdtemp failed";
+  }
+  ~ScratchDir() {
+    std::error_code error;
+    std::filesystem::remove_all(path_, error);
+  }
+  std::string operator/(const std::string& name) const { return path_ + "/" + name; }
+
+ private:
+  std::string path_;
+};
+
+// The lines of a command's output (stdout with stderr merged): the JSON objects, and the others
+// (the tool's notes and errors, on stderr).
+struct OutputLines {
+  std::vector<std::string> json, notes;
+};
+
+OutputLines SplitLines(const std::string& out) {
+  OutputLines lines;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    (line.rfind('{', 0) == 0 ? lines.json : lines.notes).push_back(line);
+  }
+  return lines;
+}
+
+// The figures in pixels a line names ("... 10.0 px ..." gives 10).
+std::vector<double> PixelFigures(const std::string& line) {
+  static const std::regex kFigure("([0-9]+(\\.[0-9]+)?) px");
+  std::vector<double> figures;
+  for (auto m = std::sregex_iterator(line.begin(), line.end(), kFigure);
+       m != std::sregex_iterator(); ++m) {
+    figures.push_back(std::stod((*m)[1]));
+  }
+  return figures;
+}
+
+// `bytes` written to the file `path`; returns the path.
+std::string WriteFile(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()),
+             static_cast<std::streamsize>(bytes.size()));
+  return path;
+}
+
+// The notes that contain `word`.
+std::vector<std::string> NotesWith(const OutputLines& lines, const std::string& word) {
+  std::vector<std::string> found;
+  for (const std::string& note : lines.notes) {
+    if (note.find(word) != std::string::npos) found.push_back(note);
+  }
+  return found;
+}
+
+// The photo's geometry read off by hand: a pool ball (radius 28.575 mm) is 15 px in radius, so
+// 1.905 mm per pixel; the cloth's bottom-left corner is at pixel (80, 665).
+constexpr double kMetresPerPixel = 0.028575 / 15.0;
+
+// The markers' centres in the photo [px], read off by hand, in image order (top-left, top-right,
+// bottom-right, bottom-left).
+constexpr std::array<std::array<double, 2>, 4> kMarkerPixels = {
+    {{144, 37}, {1177, 34}, {1172, 683}, {149, 681}}};
+
+// The markers' table coordinates (--markers) as that geometry puts them, times `scale`, listed in
+// `order`. At scale 1 in image order they fit the photo and its ball size; at another scale they
+// fit as well (from a camera further away or closer), but the balls the calibration expects are
+// `scale` times too small.
+std::string HandReadMarkers(double scale = 1.0, std::array<int, 4> order = {0, 1, 2, 3}) {
+  std::string list;
+  for (const int i : order) {
+    const auto [u, v] = kMarkerPixels[i];
+    list += (list.empty() ? "" : ",") + std::to_string(scale * (u - 80) * kMetresPerPixel) + "," +
+            std::to_string(scale * (665 - v) * kMetresPerPixel);
+  }
+  return list;
+}
 
 // Each hand-listed ball exactly once within 4 px, and nothing else.
 void ExpectEveryBallOnce(const nlohmann::json& balls) {
@@ -72,28 +165,20 @@ TEST_F(BilliardDetect, FindsTheTwentyOneBallsOfTheRealPhotograph) {
 }
 
 TEST_F(BilliardDetect, TableCoordinatesFromACalibration) {
-  // The photo's geometry read off by hand: a pool ball (radius 28.575 mm) is 15 px in radius, so
-  // 1.905 mm per pixel; the cloth's bottom-left corner is at pixel (80, 665). The markers' table
-  // coordinates follow from their pixels.
-  constexpr double kMetresPerPixel = 0.028575 / 15.0;
-  const auto table = [&](double u, double v) {
-    return std::to_string((u - 80) * kMetresPerPixel) + "," + std::to_string((665 - v) * kMetresPerPixel);
-  };
-  const std::string markers = table(144, 37) + "," + table(1177, 34) + "," + table(1172, 683) +
-                              "," + table(149, 681);
-  char dir[] = "/tmp/billiard_detect_XXXXXX";
-  ASSERT_NE(mkdtemp(dir), nullptr);
-  const std::string camera = std::string(dir) + "/camera.json";
+  const ScratchDir dir;
+  const std::string camera = dir / "camera.json";
   const std::string& photo = this->photo();
-  const std::string calibrate =
-      "calibrate " + photo + " --params pool --markers=" + markers + " --out " + camera + " --json";
+  const std::string calibrate = "calibrate " + photo +
+                                " --params pool --markers=" + HandReadMarkers() + " --out " +
+                                camera + " --json";
   const CommandResult c = Billiard(calibrate);
   ASSERT_EQ(c.status, 0) << calibrate;
   EXPECT_LT(OneObject(c, calibrate)["rms_reprojection_px"].get<double>(), 3.0);
 
   const std::string detect = "detect " + photo + " --calib " + camera + " --params pool --json";
-  const CommandResult r = Billiard(detect);
+  const CommandResult r = Billiard(detect, true);
   ASSERT_EQ(r.status, 0) << detect;
+  // The calibration agrees with the frame: nothing to say on stderr.
   const auto j = OneObject(r, detect);
   ExpectEveryBallOnce(j["balls"]);
   for (const auto& ball : j["balls"]) {
@@ -105,13 +190,79 @@ TEST_F(BilliardDetect, TableCoordinatesFromACalibration) {
     EXPECT_NEAR(ball["x"].get<double>(), x, 0.01) << ball;
     EXPECT_NEAR(ball["y"].get<double>(), y, 0.01) << ball;
   }
-  std::filesystem::remove_all(dir);
+}
+
+TEST_F(BilliardDetect, ACalibrationThatDoesNotFitIsRefused) {
+  const ScratchDir dir;
+  const std::string camera = dir / "camera.json";
+  // The default layout (markers 0.1 m outside the corners of the paper's table) is not this
+  // snooker table's, and the hand-read one with its top markers swapped is a mirror image no
+  // camera sees.
+  const std::string swapped = HandReadMarkers(1.0, {1, 0, 2, 3});
+  for (const std::string& layout : {std::string(), " --markers=" + swapped}) {
+    const std::string args = "calibrate " + photo() + layout + " --out " + camera + " --json";
+    const CommandResult r = Billiard(args, true);
+    EXPECT_EQ(r.status, 3) << args << ": " << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
+    EXPECT_EQ(r.out.find('{'), std::string::npos) << args << ": " << r.out;
+    EXPECT_NE(r.out.find("reprojection"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(" px"), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(camera)) << args;
+  }
+  // The default layout misses the photo's markers by 41.5 px (RMS), which the threshold names.
+  const std::string args = "calibrate " + photo() + " --out " + camera;
+  EXPECT_NE(Billiard(args, true).out.find("41.5 px"), std::string::npos);
+  const CommandResult r = Billiard(args + " --max-reprojection-px 50 --json");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NEAR(OneObject(r, args)["rms_reprojection_px"].get<double>(), 41.5, 0.1);
+  EXPECT_TRUE(std::filesystem::exists(camera));
+}
+
+TEST_F(BilliardDetect, DetectSaysWhenTheCalibrationDisagreesWithTheFrame) {
+  const ScratchDir dir;
+  // Markers 1.5 times too far apart fit as well, from a camera 1.5 times as high: the balls it
+  // expects are 10 px in radius, the photo's 15-16 px.
+  const std::string far = dir / "far.json";
+  const std::string calibrate = "calibrate " + photo() +
+                                " --params pool --markers=" + HandReadMarkers(1.5) + " --out " +
+                                far + " --json";
+  const CommandResult c = Billiard(calibrate);
+  ASSERT_EQ(c.status, 0) << calibrate;
+  EXPECT_LT(OneObject(c, calibrate)["rms_reprojection_px"].get<double>(), 3.0);
+
+  const std::string detect = "detect " + photo() + " --calib " + far + " --params pool --json";
+  const CommandResult r = Billiard(detect, true);
+  EXPECT_EQ(r.status, 0) << r.out;
+  const OutputLines lines = SplitLines(r.out);
+  ASSERT_EQ(lines.json.size(), 1u) << r.out;
+  const std::vector<std::string> radius = NotesWith(lines, "ball radius");
+  ASSERT_EQ(radius.size(), 1u) << r.out;
+  const std::vector<double> figures = PixelFigures(radius[0]);
+  ASSERT_EQ(figures.size(), 2u) << radius[0];
+  EXPECT_NEAR(figures[0], 10.0, 0.5) << "expected: " << radius[0];
+  EXPECT_NEAR(figures[1], 15.9, 0.5) << "measured: " << radius[0];
+  const auto balls = nlohmann::json::parse(lines.json[0])["balls"];
+  EXPECT_EQ(NotesWith(lines, "no balls").size(), balls.empty() ? 1u : 0u) << r.out;
+
+  // A calibration of another camera: its image size is not the frame's.
+  nlohmann::json other;
+  std::ifstream(far) >> other;
+  other["width"] = 1920;
+  other["height"] = 1080;
+  const std::string wide = dir / "wide.json";
+  std::ofstream(wide) << other.dump();
+  const std::string args = "detect " + photo() + " --calib " + wide + " --json";
+  const CommandResult w = Billiard(args, true);
+  EXPECT_EQ(w.status, 2) << w.out;
+  EXPECT_EQ(std::count(w.out.begin(), w.out.end(), '\n'), 1) << w.out;
+  EXPECT_EQ(w.out.find('{'), std::string::npos) << w.out;
+  EXPECT_NE(w.out.find("1920x1080"), std::string::npos) << w.out;
+  EXPECT_NE(w.out.find("1280x720"), std::string::npos) << w.out;
 }
 
 TEST_F(BilliardDetect, BadInputExitsTwoWithAOneLineReason) {
-  char dir[] = "/tmp/billiard_detect_XXXXXX";
-  ASSERT_NE(mkdtemp(dir), nullptr);
-  const std::string empty = std::string(dir) + "/empty.png", text = std::string(dir) + "/text.png";
+  const ScratchDir dir;
+  const std::string empty = dir / "empty.png", text = dir / "text.png";
   std::ofstream(empty).close();
   std::ofstream(text) << "not an image\n";
   const std::string& photo = this->photo();
@@ -124,7 +275,9 @@ TEST_F(BilliardDetect, BadInputExitsTwoWithAOneLineReason) {
       "detect " + photo + " --ball-radius-px=-3 --json",
       "detect " + photo + " --calib /no/such/camera.json --json",
       "detect " + photo + " --calib " + text + " --json",
-      "calibrate " + empty + " --out " + std::string(dir) + "/camera.json --json",
+      "calibrate " + empty + " --out " + (dir / "camera.json") + " --json",
+      "calibrate " + photo + " --out " + (dir / "camera.json") + " --max-reprojection-px nan",
+      "calibrate " + photo + " --out " + (dir / "camera.json") + " --max-reprojection-px=-1",
   };
   for (const std::string& args : bad) {
     const CommandResult r = Billiard(args, true);
@@ -132,13 +285,61 @@ TEST_F(BilliardDetect, BadInputExitsTwoWithAOneLineReason) {
     EXPECT_EQ(r.out.find('{'), std::string::npos) << args;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST_F(BilliardDetect, HumanSummaryGoesToStderr) {
   const CommandResult r = Billiard("detect " + photo());
   EXPECT_EQ(r.status, 0);
   EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+// Damaged JPEG files, made here (no test data needed): each refused in one line, where libjpeg
+// alone would hand back a damaged image for the detector to find phantom balls in.
+TEST(BilliardDetectJpeg, ACorruptOrTruncatedJpegIsRefused) {
+  namespace damage = billiard::messages::testing;
+  // Cloth with three balls on it.
+  cv::Mat frame(360, 640, CV_8UC3, cv::Scalar(40, 140, 30));
+  for (const auto& [x, y] : {std::pair{150, 100}, {320, 200}, {500, 260}}) {
+    cv::circle(frame, {x, y}, 12, cv::Scalar(230, 230, 230), cv::FILLED, cv::LINE_AA);
+  }
+  const damage::JpegBytes jpeg =
+      billiard::messages::EncodeImage(frame, 0, billiard::messages::ImageEncoding::kMjpeg).data;
+  const ScratchDir dir;
+  const std::string good = "detect " + WriteFile(dir / "good.jpg", jpeg) + " --json";
+  const CommandResult r = Billiard(good);
+  EXPECT_EQ(r.status, 0) << good;
+  EXPECT_EQ(OneObject(r, good)["balls"].size(), 3u);
+
+  const std::pair<std::string, damage::JpegBytes> damaged[] = {
+      {"corrupt.jpg", damage::WithStrayMarker(jpeg, 0.5)},
+      {"closed.jpg", damage::CutAndClosed(jpeg, 0.5)},
+      {"junk.jpg", damage::WithJunkBeforeTheEnd(jpeg)},
+      {"truncated.jpg", damage::Truncated(jpeg, jpeg.size() / 2)},
+      {"cut_in_header.jpg", damage::Truncated(jpeg, 100)},
+  };
+  for (const auto& [name, bytes] : damaged) {
+    const std::string args = "detect " + WriteFile(dir / name, bytes) + " --json";
+    const CommandResult d = Billiard(args, true);
+    EXPECT_EQ(d.status, 2) << args << ": " << d.out;
+    EXPECT_EQ(d.out.find('{'), std::string::npos) << args << ": " << d.out;
+    EXPECT_EQ(std::count(d.out.begin(), d.out.end(), '\n'), 1) << args << ": " << d.out;
+    EXPECT_NE(d.out.find(name), std::string::npos) << d.out;
+  }
+}
+
+// An empty table is an answer, but not a silent one.
+TEST(BilliardDetectJpeg, NoBallsFoundIsSaid) {
+  const cv::Mat cloth(360, 640, CV_8UC3, cv::Scalar(40, 140, 30));
+  const auto jpeg =
+      billiard::messages::EncodeImage(cloth, 0, billiard::messages::ImageEncoding::kMjpeg).data;
+  const ScratchDir dir;
+  const CommandResult r =
+      Billiard("detect " + WriteFile(dir / "cloth.jpg", jpeg) + " --json", true);
+  EXPECT_EQ(r.status, 0) << r.out;
+  const OutputLines lines = SplitLines(r.out);
+  ASSERT_EQ(lines.json.size(), 1u) << r.out;
+  EXPECT_TRUE(nlohmann::json::parse(lines.json[0])["balls"].empty());
+  EXPECT_EQ(NotesWith(lines, "no balls").size(), 1u) << r.out;
 }
 
 }  // namespace

@@ -2,9 +2,10 @@
 // tracked balls out as TABLE_STATE.
 //
 //   CAMERA_IMAGE  image_t        decoded and checked (message_checks.h, image_codec.h); a frame
-//                                that does not decode, is empty, oversized, of another size than
-//                                the camera's, or older than the last one (late or reordered) is
-//                                logged and dropped; the same frame again is counted and ignored
+//                                that does not decode (a corrupt or truncated JPEG among them),
+//                                is empty, oversized, of another size than the camera's, or older
+//                                than the last one (late or reordered) is logged and dropped; the
+//                                same frame again is counted and ignored
 //   TABLE_STATE   table_state_t  the confirmed balls, utime of the frame, ball_id of the track
 //   NODE_STATUS   node_status_t  once a second (node_health.h), from Work()
 //

@@ -8,6 +8,7 @@
 
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
+#include "lcmtypes/testing/damaged_jpeg.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/render/table_renderer.h"
 
@@ -109,6 +110,33 @@ TEST_F(EstimatorNodeTest, BadFramesAreDroppedWithAReasonAndTheNodeGoesOn) {
   EXPECT_EQ(states_.size(), 2u);
   EXPECT_EQ(node_.health().counter("duplicate"), 1);
   EXPECT_EQ(node_.health().dropped(), 5);
+}
+
+TEST_F(EstimatorNodeTest, CorruptAndTruncatedJpegFramesAreDroppedAndCounted) {
+  using messages::testing::WithData;
+  Send(Frame(3'000'000, messages::ImageEncoding::kMjpeg));
+  ASSERT_EQ(states_.size(), 1u);
+  const image_t corrupt = Frame(3'008'333, messages::ImageEncoding::kMjpeg);
+  Send(WithData(corrupt, messages::testing::WithStrayMarker(corrupt.data, 0.5)));
+  const image_t closed = Frame(3'016'667, messages::ImageEncoding::kMjpeg);
+  Send(WithData(closed, messages::testing::CutAndClosed(closed.data, 0.5)));
+  const image_t truncated = Frame(3'025'000, messages::ImageEncoding::kMjpeg);
+  Send(WithData(truncated, messages::testing::Truncated(truncated.data, truncated.size / 2)));
+  EXPECT_EQ(states_.size(), 1u) << "no TABLE_STATE for a damaged frame";
+  EXPECT_EQ(node_.frames(), 1);
+  EXPECT_EQ(node_.health().dropped(), 3);
+  ASSERT_EQ(log_.size(), 3u);
+  for (const std::string& line : log_) {
+    EXPECT_EQ(line.rfind("dropped: CAMERA_IMAGE: ", 0), 0u) << line;
+  }
+  EXPECT_NE(log_[0].find("Corrupt JPEG data"), std::string::npos) << log_[0];
+  EXPECT_NE(log_[1].find("Corrupt JPEG data"), std::string::npos) << log_[1];
+  EXPECT_NE(log_[2].find("truncated"), std::string::npos) << log_[2];
+  // The next good frame is tracked as before.
+  Send(Frame(3'033'333, messages::ImageEncoding::kMjpeg));
+  ASSERT_EQ(states_.size(), 2u);
+  EXPECT_EQ(states_.back().utime, 3'033'333);
+  EXPECT_EQ(node_.health().dropped(), 3);
 }
 
 TEST_F(EstimatorNodeTest, ACameraThatRestartsItsClockIsTrackedAfresh) {

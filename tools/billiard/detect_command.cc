@@ -1,16 +1,24 @@
 #include "tools/billiard/detect_command.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <optional>
+#include <sstream>
+#include <vector>
 
 #include "estimator/ball_detector.h"
 #include "estimator/table_calibration.h"
+#include "lcmtypes/image_codec.h"
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
 #include "tools/billiard/command_line.h"
@@ -19,16 +27,81 @@ namespace billiard::cli {
 
 namespace {
 
-// The frame at `path`; a missing, unreadable or empty image is the user's error.
+// As large as a camera's photograph gets; a JPEG header announcing more is not believed (a few
+// bytes can announce 65535 x 65535 pixels).
+constexpr messages::DecodeLimits kImageFileLimits{16384, 16384};
+
+std::string Pixels(double px) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(1) << px << " px";
+  return text.str();
+}
+
+std::string ImageSize(int width, int height) {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+// Whether the file at `path` starts with a JPEG's SOI marker (whatever its name says).
+bool IsJpegFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char start[2] = {};
+  return in.read(start, 2) && static_cast<std::uint8_t>(start[0]) == 0xFF &&
+         static_cast<std::uint8_t>(start[1]) == 0xD8;
+}
+
+std::vector<std::uint8_t> ReadBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The frame at `path`, in BGR. A JPEG is decoded as the estimator node decodes its frames
+// (messages::DecodeJpeg), which refuses a corrupt or truncated one where OpenCV's decoder would
+// hand back a damaged image; other formats by OpenCV. A missing, unreadable, damaged or empty
+// image is the user's error.
 cv::Mat ReadImage(const std::string& path) {
   // Checked first: OpenCV would add a warning line of its own about a missing file.
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {
     throw UsageError("cannot read an image from '" + path + "': no such file");
   }
+  if (IsJpegFile(path)) {
+    const messages::DecodedImage jpeg = messages::DecodeJpeg(ReadBytes(path), kImageFileLimits);
+    if (!jpeg.ok) throw UsageError("cannot read an image from '" + path + "': " + jpeg.error);
+    if (jpeg.image.channels() == 3) return jpeg.image;
+    cv::Mat bgr;  // a gray JPEG, as cv::imread gives it in colour
+    cv::cvtColor(jpeg.image, bgr, cv::COLOR_GRAY2BGR);
+    return bgr;
+  }
   const cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
   if (image.empty()) throw UsageError("cannot read an image from '" + path + "'");
   return image;
+}
+
+// A calibration maps the pixels of its own camera's frames: of another image size, it is another
+// camera's (or the frame was scaled), and every position it gave would be wrong.
+void RequireCalibrationOfThisSize(const camera::CameraModel& camera, const cv::Mat& image,
+                                  const std::string& calib) {
+  if (camera.width == image.cols && camera.height == image.rows) return;
+  throw UsageError("--calib: '" + calib + "' calibrates " + ImageSize(camera.width, camera.height) +
+                   " frames, the image is " + ImageSize(image.cols, image.rows));
+}
+
+// Says on stderr when the ball radius the calibration and --params predict is not that of the
+// balls in the frame: the calibration is of another table or camera position, its markers' table
+// coordinates are off by a scale, or --params has other balls. The detector, looking for balls
+// of the predicted size, then misses some or all of them.
+void WarnIfTheBallRadiusDisagrees(double predicted_px, const cv::Mat& image) {
+  estimator::BallDetector measuring;  // given no radius, it measures the balls' radius
+  measuring.LearnCloth(image);
+  const double measured_px = measuring.radius_px();
+  if (measured_px <= 0) return;  // nothing ball-like: the count of balls found says so
+  if (std::abs(predicted_px - measured_px) <= estimator::kMaxBallRadiusMismatch * measured_px) {
+    return;
+  }
+  std::cerr << "billiard: warning: the calibration and --params predict a ball radius of "
+            << Pixels(predicted_px) << ", the balls in the frame measure " << Pixels(measured_px)
+            << " (more than " << std::lround(100 * estimator::kMaxBallRadiusMismatch)
+            << " % apart): is the calibration of this table, camera and ball size?" << std::endl;
 }
 
 struct DetectArgs {
@@ -50,17 +123,24 @@ void RunDetect(const DetectArgs& args) {
   RequireFinite(args.ball_radius_px, "--ball-radius-px");
   if (args.ball_radius_px < 0) throw UsageError("--ball-radius-px: must be positive");
   const cv::Mat image = ReadImage(args.image);
+  if (camera) RequireCalibrationOfThisSize(*camera, image, args.calib);
 
   estimator::DetectorOptions options;
   options.ball_radius_px = args.ball_radius_px;
-  if (options.ball_radius_px == 0 && camera) {
-    options.ball_radius_px = estimator::ExpectedRadiusPx(*camera, params.ball.radius);
+  if (camera) {
+    const double predicted_px = estimator::ExpectedRadiusPx(*camera, params.ball.radius);
+    WarnIfTheBallRadiusDisagrees(predicted_px, image);
+    if (options.ball_radius_px == 0) options.ball_radius_px = predicted_px;
   }
   estimator::BallDetector detector(options);
   const auto start = std::chrono::steady_clock::now();
   const auto balls = detector.Detect(image);
   const double us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+  // An empty table is an answer, but not one to give silently.
+  if (balls.empty()) {
+    std::cerr << "billiard: warning: no balls found in " << args.image << std::endl;
+  }
 
   nlohmann::json list = nlohmann::json::array();
   for (const auto& b : balls) {
@@ -88,17 +168,29 @@ void RunDetect(const DetectArgs& args) {
 struct CalibrateArgs {
   std::string image, out, params = params::kDefaultParameterSet, markers;
   double margin = 0.1, height = 0.04, fx = 0;
+  double max_reprojection_px = estimator::kMaxReprojectionPx;
   bool json = false;
 };
 
+// A pose that does not reproject the markers where they were found is not the camera's: their
+// table coordinates (the layout) are not where the photo shows them.
+void RequireAFit(const estimator::CalibrationResult& result, double max_reprojection_px) {
+  if (result.rms_reprojection_px <= max_reprojection_px) return;
+  throw Refused("calibration does not fit: the markers reproject " +
+                Pixels(result.rms_reprojection_px) + " (RMS) from where they were found, above " +
+                "--max-reprojection-px " + Pixels(max_reprojection_px) +
+                "; check --markers or --marker-margin and --params (no camera file written)");
+}
+
 void RunCalibrate(const CalibrateArgs& args) {
   const physics::ModelParameters params = LoadParametersOption(args.params);
-  for (const auto& [value, what] : {std::pair{args.margin, "--marker-margin"},
-                                    std::pair{args.height, "--marker-height"},
-                                    std::pair{args.fx, "--fx"}}) {
+  for (const auto& [value, what] :
+       {std::pair{args.margin, "--marker-margin"}, std::pair{args.height, "--marker-height"},
+        std::pair{args.fx, "--fx"}, std::pair{args.max_reprojection_px, "--max-reprojection-px"}}) {
     RequireFinite(value, what);
   }
   if (args.fx < 0) throw UsageError("--fx: must be positive");
+  if (args.max_reprojection_px <= 0) throw UsageError("--max-reprojection-px: must be positive");
   const cv::Mat image = ReadImage(args.image);
   camera::CameraModel intrinsics;
   if (args.fx > 0) {
@@ -114,6 +206,7 @@ void RunCalibrate(const CalibrateArgs& args) {
   }
   const auto result = estimator::CalibrateTable(image, layout, intrinsics);
   if (!result) throw std::runtime_error("did not find all four corner markers in " + args.image);
+  RequireAFit(*result, args.max_reprojection_px);
   std::ofstream out(args.out);
   out << camera::CameraModelJson(result->camera) << "\n";
   if (!out) throw UsageError("--out: cannot write '" + args.out + "'");
@@ -164,6 +257,10 @@ void AddCalibrateCommand(CLI::App& app) {
   cmd->add_option("--marker-height", args->height, "Marker height above the cloth [m]")
       ->capture_default_str();
   cmd->add_option("--fx", args->fx, "Focal length guess [px] (default: the image width)");
+  cmd->add_option("--max-reprojection-px", args->max_reprojection_px,
+                  "Refuse a pose that reprojects the markers further than this [px, RMS] from "
+                  "where they were found (exit 3)")
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { RunCalibrate(*args); });
 }

@@ -5,11 +5,13 @@
 namespace billiard::cli {
 
 // `billiard detect`: the balls in a camera frame (estimator/ball_detector.h), in pixels and, with
-// a calibration, on the table.
+// a calibration, on the table. A calibration of another image size is a usage error; one whose
+// ball radius is not the frame's, and a frame without balls, are said so on stderr.
 void AddDetectCommand(CLI::App& app);
 
 // `billiard calibrate`: the camera's pose over the table from the four corner markers
-// (estimator/table_calibration.h), written as a camera JSON file for `detect --calib`.
+// (estimator/table_calibration.h), written as a camera JSON file for `detect --calib`; refused
+// (exit 3, nothing written) when it reprojects the markers beyond --max-reprojection-px.
 void AddCalibrateCommand(CLI::App& app);
 
 }  // namespace billiard::cli
