@@ -159,15 +159,29 @@ ShotPlan Refused(PlanStatus status, std::string reason) {
   return plan;
 }
 
-ShotPlan Plan(const ShotRequest& q, const physics::ModelParameters& params,
-              const PlannerOptions& options) {
+// The 5-DOF ball, which side spin and rolling resistance while sliding slow down differently
+// from the closed form, is given kArrivalTimeFactor times the closed form's time to the final
+// speed, plus kArrivalTimeMargin, to arrive.
+constexpr double kArrivalTimeFactor = 3.0;
+constexpr double kArrivalTimeMargin = 5.0;  // [s]
+
+// Ceres' own convergence tests, set below anything the miss tolerance reaches: StopWhenClose
+// ends the refinement, or the iteration limit.
+constexpr double kFunctionTolerance = 1e-16;
+constexpr double kGradientTolerance = 1e-16;
+constexpr double kParameterTolerance = 1e-14;
+
+// Step 1: a sound request and parameter set, start and target on the table, and a closed-form
+// launch that reaches the target; the refusal otherwise.
+std::optional<ShotPlan> CheckRequest(const ShotRequest& q, const physics::ModelParameters& params,
+                                     LaunchSolution* guess) {
   try {
     physics::ValidateParameters(params);
   } catch (const std::invalid_argument& e) {
     return Refused(PlanStatus::kInvalid, std::string("invalid parameters: ") + e.what());
   }
-  const LaunchSolution guess = InvertClosedForm(q, physics::ClosedFormParameters::From(params));
-  if (guess.malformed) return Refused(PlanStatus::kInvalid, guess.reason);
+  *guess = InvertClosedForm(q, physics::ClosedFormParameters::From(params));
+  if (guess->malformed) return Refused(PlanStatus::kInvalid, guess->reason);
   if (!OnTable(q.from, params)) {
     return Refused(PlanStatus::kOffTable, "the ball is not on the playing surface");
   }
@@ -177,144 +191,197 @@ ShotPlan Plan(const ShotRequest& q, const physics::ModelParameters& params,
                    "inside the " + std::to_string(params.table.length) + " x " +
                        std::to_string(params.table.width) + " m table)");
   }
-  if (!guess.ok) return Refused(PlanStatus::kUnreachable, guess.reason);
+  if (!guess->ok) return Refused(PlanStatus::kUnreachable, guess->reason);
+  return std::nullopt;
+}
 
-  const double r = params.ball.radius;
-  const double speed0 = guess.v0.norm();
-  const Eigen::Vector2d e0 = guess.v0 / speed0;
-  const double spin_ratio = r * (e0.x() * guess.w0.y() - e0.y() * guess.w0.x()) / speed0;
-  const physics::LaunchSpeedRange speeds =
-      physics::LaunchSpeedsFor(spin_ratio, q.side_spin, params);
-  if (speeds.min > speeds.max) {
-    std::ostringstream reason;
-    reason.precision(3);
-    reason << "no stroke gives this spin (R w / v = " << spin_ratio << " across the line, wz = "
-           << q.side_spin << " rad/s) within the robot's tip offset of "
-           << params.cue.max_tip_offset << " r and cue speed of " << params.cue.max_speed
-           << " m/s";
-    return Refused(PlanStatus::kUnreachable, reason.str());
+std::string NoStrokeGivesTheSpin(double spin_ratio, const ShotRequest& q,
+                                 const physics::ModelParameters& params) {
+  std::ostringstream reason;
+  reason.precision(3);
+  reason << "no stroke gives this spin (R w / v = " << spin_ratio
+         << " across the line, wz = " << q.side_spin << " rad/s) within the robot's tip offset of "
+         << params.cue.max_tip_offset << " r and cue speed of " << params.cue.max_speed << " m/s";
+  return reason.str();
+}
+
+// The shot once its spin is fixed: the launch as speed and heading, their bounds, and the
+// simulations that measure where it arrives.
+class Shot {
+ public:
+  Shot(const ShotRequest& q, const physics::ModelParameters& params, const PlannerOptions& options,
+       const Launch& launch, const physics::LaunchSpeedRange& speeds, double t_max)
+      : q_(q),
+        params_(params),
+        options_(options),
+        launch_(launch),
+        speeds_(speeds),
+        t_max_(t_max) {}
+
+  // Where a launch at (speed, heading) arrives (its speed down to the final speed, or at rest).
+  physics::Arrival Simulate(double speed, double heading, int* simulations) const {
+    ++*simulations;
+    return physics::SimulateArrival(params_, launch_.State(speed, heading), q_.final_speed, t_max_,
+                                    options_.simulation);
   }
-  const Launch launch(q.from, spin_ratio, q.side_spin, r);
-  // Long enough for the 5-DOF ball, which side spin and rolling resistance while sliding slow
-  // down differently from the closed form, to arrive.
-  const physics::ClosedFormTrajectory closed_form(physics::ClosedFormParameters::From(params),
-                                                  launch.State(speed0, std::atan2(e0.y(), e0.x())));
-  const double t_max = 3.0 * closed_form.TimeAtSpeed(q.final_speed) + 5.0;
 
-  ShotPlan plan;
-  plan.slide_length = guess.slide_length;
-  double p[2] = {speed0, std::atan2(e0.y(), e0.x())};
-  const MissFunction miss{params, options.simulation, launch, q, t_max, &plan.simulations};
-  // Not through miss.Evaluate, which hides why a simulation failed: that reason (a step budget,
-  // say) is what the refusal must report.
-  ++plan.simulations;
-  plan.closed_form_miss_m = (physics::SimulateArrival(params, launch.State(p[0], p[1]),
-                                                      q.final_speed, t_max, options.simulation)
-                                 .state.head<2>() -
-                             q.to)
-                                .norm();
+  // The residual of the refinement, for Ceres.
+  MissFunction Miss(int* simulations) const {
+    return {params_, options_.simulation, launch_, q_, t_max_, simulations};
+  }
 
   // Turning the heading turns the whole path about the ball, so how far the ball gets depends on
-  // the launch speed alone, and grows with it: a speed bound that already carries the ball past
-  // the target (or still leaves it short) decides the request without a refinement.
-  const double distance = (q.to - q.from).norm();
-  const auto beyond_reach = [&](double speed) -> std::optional<std::string> {
-    const bool slowest = speed <= speeds.min, fastest = speed >= speeds.max;
+  // the launch speed alone, and grows with it: a speed at a bound that already carries the ball
+  // past the target (or still leaves it short) decides the request without a refinement.
+  std::optional<std::string> BeyondReach(double speed, int* simulations) const {
+    const bool slowest = speed <= speeds_.min, fastest = speed >= speeds_.max;
     if (!slowest && !fastest) return std::nullopt;
-    const double bound = slowest ? speeds.min : speeds.max;
-    ++plan.simulations;
-    const double travel = (physics::SimulateArrival(params, launch.State(bound, 0.0), q.final_speed,
-                                                    t_max, options.simulation)
-                               .state.head<2>() -
-                           q.from)
-                              .norm();
-    if (slowest && travel > distance + options.acceptable_miss) {
-      std::ostringstream reason;
-      reason.precision(3);
+    const double bound = slowest ? speeds_.min : speeds_.max;
+    const double distance = (q_.to - q_.from).norm();
+    const double travel = (Simulate(bound, 0.0, simulations).state.head<2>() - q_.from).norm();
+    std::ostringstream reason;
+    reason.precision(3);
+    if (slowest && travel > distance + options_.acceptable_miss) {
       reason << "the side spin needs a launch of at least " << bound << " m/s to stay within "
-             << "the tip offset of " << params.cue.max_tip_offset << " r, which carries the "
+             << "the tip offset of " << params_.cue.max_tip_offset << " r, which carries the "
              << "ball " << travel << " m, past the target";
       return reason.str();
     }
-    if (fastest && travel < distance - options.acceptable_miss) {
-      std::ostringstream reason;
-      reason.precision(3);
-      reason << "needs a faster launch than the robot's cue speed of " << params.cue.max_speed
+    if (fastest && travel < distance - options_.acceptable_miss) {
+      reason << "needs a faster launch than the robot's cue speed of " << params_.cue.max_speed
              << " m/s gives (at most " << bound << " m/s, which reaches " << travel << " m)";
       return reason.str();
     }
     return std::nullopt;
-  };
-  if (auto reason = beyond_reach(p[0])) return Refused(PlanStatus::kUnreachable, *reason);
+  }
 
-  if (options.refine) {
+  // Step 3: Levenberg-Marquardt on (speed, heading) within the speed bounds, from `launch`;
+  // returns the iterations.
+  int Refine(double launch[2], int* simulations) const {
     ceres::Problem problem;
-    if (options.jacobian == JacobianMethod::kSensitivities) {
-      problem.AddResidualBlock(new ArrivalMiss(miss), nullptr, p);
+    const MissFunction miss = Miss(simulations);
+    if (options_.jacobian == JacobianMethod::kSensitivities) {
+      problem.AddResidualBlock(new ArrivalMiss(miss), nullptr, launch);
     } else {
       problem.AddResidualBlock(
           new ceres::NumericDiffCostFunction<MissFunction, ceres::CENTRAL, 2, 2>(
               new MissFunction(miss)),
-          nullptr, p);
+          nullptr, launch);
     }
-    problem.SetParameterLowerBound(p, 0, speeds.min);
-    problem.SetParameterUpperBound(p, 0, speeds.max);
-    p[0] = std::clamp(p[0], speeds.min, speeds.max);
+    problem.SetParameterLowerBound(launch, 0, speeds_.min);
+    problem.SetParameterUpperBound(launch, 0, speeds_.max);
+    launch[0] = std::clamp(launch[0], speeds_.min, speeds_.max);
     ceres::Solver::Options solver;
     solver.linear_solver_type = ceres::DENSE_QR;
     solver.num_threads = 1;
     solver.logging_type = ceres::SILENT;
-    solver.max_num_iterations = options.max_iterations;
-    solver.function_tolerance = 1e-16;
-    solver.gradient_tolerance = 1e-16;
-    solver.parameter_tolerance = 1e-14;
-    StopWhenClose stop(options.miss_tolerance);
+    solver.max_num_iterations = options_.max_iterations;
+    solver.function_tolerance = kFunctionTolerance;
+    solver.gradient_tolerance = kGradientTolerance;
+    solver.parameter_tolerance = kParameterTolerance;
+    StopWhenClose stop(options_.miss_tolerance);
     solver.callbacks.push_back(&stop);
     ceres::Solver::Summary summary;
     ceres::Solve(solver, &problem, &summary);
-    plan.iterations = static_cast<int>(summary.iterations.size()) - 1;
+    return static_cast<int>(summary.iterations.size()) - 1;
   }
 
-  const physics::Arrival arrival = physics::SimulateArrival(
-      params, launch.State(p[0], p[1]), q.final_speed, t_max, options.simulation);
-  ++plan.simulations;
-  plan.v0 = arrival.trajectory->At(0.0).segment<2>(physics::kVx);
-  plan.w0 = arrival.trajectory->At(0.0).segment<3>(physics::kWx);
-  plan.predicted_final = arrival.state.head<2>();
-  plan.arrival_time = arrival.time;
-  plan.refined_miss_m = (plan.predicted_final - q.to).norm();
-  const int samples = std::max(1, static_cast<int>(std::ceil(arrival.time / options.path_sample_dt)));
-  for (int i = 0; i <= samples; ++i) {
-    const double t = arrival.time * i / samples;
-    plan.predicted_path.push_back(i == samples ? plan.predicted_final
-                                               : Eigen::Vector2d(arrival.trajectory->At(t).head<2>()));
+  // Step 4: the planned launch simulated once more: the launch state, where and when it arrives,
+  // the path there, and the miss. Whether it arrived (within the time limit).
+  bool Predict(const double launch[2], ShotPlan* plan) const {
+    const physics::Arrival arrival = Simulate(launch[0], launch[1], &plan->simulations);
+    const physics::BallState start = arrival.trajectory->At(0.0);
+    plan->v0 = start.segment<2>(physics::kVx);
+    plan->w0 = start.segment<3>(physics::kWx);
+    plan->predicted_final = arrival.state.head<2>();
+    plan->arrival_time = arrival.time;
+    plan->refined_miss_m = (plan->predicted_final - q_.to).norm();
+    const int samples =
+        std::max(1, static_cast<int>(std::ceil(arrival.time / options_.path_sample_dt)));
+    for (int i = 0; i <= samples; ++i) {
+      const double t = arrival.time * i / samples;
+      plan->predicted_path.push_back(i == samples
+                                         ? plan->predicted_final
+                                         : Eigen::Vector2d(arrival.trajectory->At(t).head<2>()));
+    }
+    return arrival.reached;
   }
 
-  if (!arrival.reached || (options.refine && plan.refined_miss_m > options.acceptable_miss)) {
-    if (auto reason = beyond_reach(p[0])) {
-      plan.status = PlanStatus::kUnreachable;
-      plan.reason = *reason;
-    } else {
-      plan.status = PlanStatus::kNotConverged;
-      plan.reason = "refinement ended " + Millimetres(plan.refined_miss_m) + " from the target";
+  // Step 5: the verdict on the prediction: converged, on the table all the way, and a stroke the
+  // robot can give.
+  void Conclude(const double launch[2], bool arrived, ShotPlan* plan) const {
+    if (!arrived || (options_.refine && plan->refined_miss_m > options_.acceptable_miss)) {
+      if (auto reason = BeyondReach(launch[0], &plan->simulations)) {
+        plan->status = PlanStatus::kUnreachable;
+        plan->reason = *reason;
+      } else {
+        plan->status = PlanStatus::kNotConverged;
+        plan->reason = "refinement ended " + Millimetres(plan->refined_miss_m) + " from the target";
+      }
+      return;
     }
-    return plan;
-  }
-  for (const Eigen::Vector2d& x : plan.predicted_path) {
-    if (!OnTable(x, params)) {
-      plan.status = PlanStatus::kUnreachable;
-      plan.reason = "the path leaves the playing surface (a cushion is in the way)";
-      return plan;
+    for (const Eigen::Vector2d& x : plan->predicted_path) {
+      if (!OnTable(x, params_)) {
+        plan->status = PlanStatus::kUnreachable;
+        plan->reason = "the path leaves the playing surface (a cushion is in the way)";
+        return;
+      }
     }
+    const physics::StrokeSolution stroke = physics::StrokeFor(plan->v0, plan->w0, params_);
+    if (!stroke.ok) {
+      plan->status = PlanStatus::kUnreachable;
+      plan->reason = stroke.reason;
+      return;
+    }
+    plan->stroke = stroke.stroke;
+    plan->status = PlanStatus::kOk;
   }
-  const physics::StrokeSolution stroke = physics::StrokeFor(plan.v0, plan.w0, params);
-  if (!stroke.ok) {
-    plan.status = PlanStatus::kUnreachable;
-    plan.reason = stroke.reason;
-    return plan;
+
+ private:
+  const ShotRequest& q_;
+  const physics::ModelParameters& params_;
+  const PlannerOptions& options_;
+  Launch launch_;
+  physics::LaunchSpeedRange speeds_;
+  double t_max_;
+};
+
+ShotPlan Plan(const ShotRequest& q, const physics::ModelParameters& params,
+              const PlannerOptions& options) {
+  LaunchSolution guess;
+  if (auto refusal = CheckRequest(q, params, &guess)) return *refusal;
+
+  // Step 2: the spin the closed form chose, held, and the launch speeds the cue gives with it.
+  const double r = params.ball.radius;
+  const double speed0 = guess.v0.norm();
+  const Eigen::Vector2d e0 = guess.v0 / speed0;
+  const double heading0 = std::atan2(e0.y(), e0.x());
+  const double spin_ratio = r * (e0.x() * guess.w0.y() - e0.y() * guess.w0.x()) / speed0;
+  const physics::LaunchSpeedRange speeds =
+      physics::LaunchSpeedsFor(spin_ratio, q.side_spin, params);
+  if (speeds.min > speeds.max) {
+    return Refused(PlanStatus::kUnreachable, NoStrokeGivesTheSpin(spin_ratio, q, params));
   }
-  plan.stroke = stroke.stroke;
-  plan.status = PlanStatus::kOk;
+  const Launch launch(q.from, spin_ratio, q.side_spin, r);
+  const physics::ClosedFormTrajectory closed_form(physics::ClosedFormParameters::From(params),
+                                                  launch.State(speed0, heading0));
+  const double t_max =
+      kArrivalTimeFactor * closed_form.TimeAtSpeed(q.final_speed) + kArrivalTimeMargin;
+  const Shot shot(q, params, options, launch, speeds, t_max);
+
+  ShotPlan plan;
+  plan.slide_length = guess.slide_length;
+  double p[2] = {speed0, heading0};
+  // Not through the refinement's residual, which hides why a simulation failed: that reason (a
+  // step budget, say) is what the refusal must report.
+  plan.closed_form_miss_m =
+      (shot.Simulate(p[0], p[1], &plan.simulations).state.head<2>() - q.to).norm();
+  if (auto reason = shot.BeyondReach(p[0], &plan.simulations)) {
+    return Refused(PlanStatus::kUnreachable, *reason);
+  }
+  if (options.refine) plan.iterations = shot.Refine(p, &plan.simulations);
+  const bool arrived = shot.Predict(p, &plan);
+  shot.Conclude(p, arrived, &plan);
   return plan;
 }
 

@@ -45,6 +45,92 @@ std::string Describe(const cue_command_t& c) {
   return line.str();
 }
 
+// The answer to `q` before anything is planned: its ids and the request's utime, so that the
+// answer is a function of the messages alone.
+cue_command_t ReplyTo(const shot_request_t& q) {
+  cue_command_t c{};
+  c.utime = q.utime;
+  c.request_id = q.request_id;
+  c.ball_id = q.ball_id;
+  return c;
+}
+
+cue_command_t Refusal(cue_command_t c, int8_t status, std::string reason) {
+  c.status = status;
+  c.reason = std::move(reason);
+  return c;
+}
+
+// The planner's request for the ball at `s`, with the message's spin choice (messages::Check has
+// made sure it is one of the five).
+planner::ShotRequest ToShotRequest(const shot_request_t& q, const ball_state_t& s) {
+  planner::ShotRequest request;
+  switch (q.spin) {
+    case shot_request_t::SPIN_NATURAL:
+      request.style = planner::SpinStyle::kNatural;
+      break;
+    case shot_request_t::SPIN_STUN:
+      request.style = planner::SpinStyle::kStun;
+      break;
+    case shot_request_t::SPIN_FOLLOW:
+      request.style = planner::SpinStyle::kFollow;
+      break;
+    case shot_request_t::SPIN_DRAW:
+      request.style = planner::SpinStyle::kDraw;
+      break;
+    default:
+      request.slide_length = q.slide_length;
+      break;  // SPIN_SLIDE
+  }
+  request.from = {s.position[0], s.position[1]};
+  request.to = {q.target[0], q.target[1]};
+  request.final_speed = q.final_speed;
+  request.side_spin = q.side_spin;
+  return request;
+}
+
+// The plan into the command. The planner's measurements go out with a refusal too (a
+// not-converged plan's miss says by how much); the stroke only with an ok plan, so that a
+// refused command cannot move the cue.
+void WritePlan(const planner::ShotPlan& plan, cue_command_t* c) {
+  std::copy(plan.v0.data(), plan.v0.data() + 2, c->v0);
+  std::copy(plan.w0.data(), plan.w0.data() + 3, c->w0);
+  c->num_path_points = static_cast<int32_t>(plan.predicted_path.size());
+  c->path.reserve(plan.predicted_path.size());
+  for (const Eigen::Vector2d& p : plan.predicted_path) c->path.push_back({p.x(), p.y()});
+  c->predicted_final[0] = plan.predicted_final.x();
+  c->predicted_final[1] = plan.predicted_final.y();
+  c->closed_form_miss_m = plan.closed_form_miss_m;
+  c->refined_miss_m = plan.refined_miss_m;
+  c->solve_us = plan.solve_us;
+  c->iterations = plan.iterations;
+  c->status = ToMessageStatus(plan.status);
+  if (plan.status == planner::PlanStatus::kOk) {
+    c->cue_speed = plan.stroke.speed;
+    c->heading = plan.stroke.heading;
+    c->tip_side = plan.stroke.tip_side;
+    c->tip_height = plan.stroke.tip_height;
+    c->elevation = plan.stroke.elevation;
+  } else {
+    c->reason = plan.reason.empty() ? planner::PlanStatusName(plan.status) : plan.reason;
+  }
+}
+
+// What goes out must pass the receiver's checks, or the answer is lost: a refusal keeps its
+// status without the measurements, and an ok that fails them is no ok.
+cue_command_t Sendable(const cue_command_t& c) {
+  const std::string why = messages::Check(c);
+  if (why.empty()) return c;
+  const bool was_ok = c.status == cue_command_t::STATUS_OK;
+  cue_command_t refused{};
+  refused.utime = c.utime;
+  refused.request_id = c.request_id;
+  refused.ball_id = c.ball_id;
+  std::copy(c.start, c.start + 2, refused.start);
+  return Refusal(refused, was_ok ? cue_command_t::STATUS_NOT_CONVERGED : c.status,
+                 was_ok ? "the plan is not a valid command: " + why : c.reason);
+}
+
 }  // namespace
 
 PlannerNode::PlannerNode(lcm::LCM& lcm, physics::ModelParameters params, PlannerNodeOptions options,
@@ -72,110 +158,48 @@ PlannerNode::~PlannerNode() {
 }
 
 cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
-  cue_command_t c{};
-  c.utime = q.utime;
-  c.request_id = q.request_id;
-  c.ball_id = q.ball_id;
-  const auto refuse = [&c](int8_t status, std::string reason) {
-    c.status = status;
-    c.reason = std::move(reason);
-    return c;
-  };
-
+  const cue_command_t reply = ReplyTo(q);
   if (std::string why = messages::Check(q); !why.empty()) {
-    return refuse(cue_command_t::STATUS_INVALID, why);
+    return Refusal(reply, cue_command_t::STATUS_INVALID, why);
   }
-  planner::ShotRequest request;
-  switch (q.spin) {
-    case shot_request_t::SPIN_NATURAL:
-      request.style = planner::SpinStyle::kNatural;
-      break;
-    case shot_request_t::SPIN_STUN:
-      request.style = planner::SpinStyle::kStun;
-      break;
-    case shot_request_t::SPIN_FOLLOW:
-      request.style = planner::SpinStyle::kFollow;
-      break;
-    case shot_request_t::SPIN_DRAW:
-      request.style = planner::SpinStyle::kDraw;
-      break;
-    default:
-      request.slide_length = q.slide_length;
-      break;  // SPIN_SLIDE, as Check made sure
-  }
-
   const auto ball = balls_.find(q.ball_id);
   if (ball == balls_.end()) {
-    return refuse(cue_command_t::STATUS_NO_BALL_STATE,
-                  "no table state has ball " + std::to_string(q.ball_id));
+    return Refusal(reply, cue_command_t::STATUS_NO_BALL_STATE,
+                   "no table state has ball " + std::to_string(q.ball_id));
   }
-  const ball_state_t& s = ball->second;
-  c.start[0] = s.position[0];
-  c.start[1] = s.position[1];
+  const ball_state_t& state = ball->second;
+  cue_command_t c = reply;
+  std::copy(state.position, state.position + 2, c.start);
+  if (auto unfit = UnfitToPlanFrom(q, state)) return Refusal(c, unfit->status, unfit->reason);
+  planner::ShotPlan plan;
+  try {
+    plan = planner::PlanShot(ToShotRequest(q, state), params_, options_.planner);
+  } catch (const std::exception& e) {
+    return Refusal(c, cue_command_t::STATUS_NOT_CONVERGED,
+                   std::string("planner failed: ") + e.what());
+  }
+  WritePlan(plan, &c);
+  return Sendable(c);
+}
+
+std::optional<PlannerNode::Unfit> PlannerNode::UnfitToPlanFrom(const shot_request_t& q,
+                                                               const ball_state_t& s) const {
   const double age = 1e-6 * static_cast<double>(q.utime - s.utime);
   if (std::abs(age) > options_.max_state_age) {
     std::ostringstream reason;
     reason << "the latest state of ball " << q.ball_id << " is " << std::abs(age) << " s "
            << (age > 0 ? "older" : "newer") << " than the request (at most "
            << options_.max_state_age << " s)";
-    return refuse(cue_command_t::STATUS_STALE_STATE, reason.str());
+    return Unfit{cue_command_t::STATUS_STALE_STATE, reason.str()};
   }
   const double speed = std::hypot(s.velocity[0], s.velocity[1]);
   if (speed > options_.max_ball_speed) {
     std::ostringstream reason;
     reason << "ball " << q.ball_id << " is moving (" << speed << " m/s, more than "
            << options_.max_ball_speed << " m/s)";
-    return refuse(cue_command_t::STATUS_INVALID, reason.str());
+    return Unfit{cue_command_t::STATUS_INVALID, reason.str()};
   }
-
-  request.from = {s.position[0], s.position[1]};
-  request.to = {q.target[0], q.target[1]};
-  request.final_speed = q.final_speed;
-  request.side_spin = q.side_spin;
-  planner::ShotPlan plan;
-  try {
-    plan = planner::PlanShot(request, params_, options_.planner);
-  } catch (const std::exception& e) {
-    return refuse(cue_command_t::STATUS_NOT_CONVERGED, std::string("planner failed: ") + e.what());
-  }
-
-  // The planner's measurements go out with a refusal too (a not-converged plan's miss says by how
-  // much); the stroke only with an ok plan, so that a refused command cannot move the cue.
-  for (int i = 0; i < 2; ++i) c.v0[i] = plan.v0[i];
-  for (int i = 0; i < 3; ++i) c.w0[i] = plan.w0[i];
-  c.num_path_points = static_cast<int32_t>(plan.predicted_path.size());
-  c.path.reserve(plan.predicted_path.size());
-  for (const Eigen::Vector2d& p : plan.predicted_path) c.path.push_back({p.x(), p.y()});
-  c.predicted_final[0] = plan.predicted_final.x();
-  c.predicted_final[1] = plan.predicted_final.y();
-  c.closed_form_miss_m = plan.closed_form_miss_m;
-  c.refined_miss_m = plan.refined_miss_m;
-  c.solve_us = plan.solve_us;
-  c.iterations = plan.iterations;
-  c.status = ToMessageStatus(plan.status);
-  if (plan.status == planner::PlanStatus::kOk) {
-    c.cue_speed = plan.stroke.speed;
-    c.heading = plan.stroke.heading;
-    c.tip_side = plan.stroke.tip_side;
-    c.tip_height = plan.stroke.tip_height;
-    c.elevation = plan.stroke.elevation;
-  } else {
-    c.reason = plan.reason.empty() ? planner::PlanStatusName(plan.status) : plan.reason;
-  }
-  // Whatever goes out must pass the receiver's checks, or the answer is lost: a refusal keeps its
-  // status without the measurements, and an ok that fails them is no ok.
-  if (std::string why = messages::Check(c); !why.empty()) {
-    const bool was_ok = c.status == cue_command_t::STATUS_OK;
-    cue_command_t refused{};
-    refused.utime = c.utime;
-    refused.request_id = c.request_id;
-    refused.ball_id = c.ball_id;
-    std::copy(c.start, c.start + 2, refused.start);
-    refused.status = was_ok ? cue_command_t::STATUS_NOT_CONVERGED : c.status;
-    refused.reason = was_ok ? "the plan is not a valid command: " + why : c.reason;
-    return refused;
-  }
-  return c;
+  return std::nullopt;
 }
 
 std::int64_t PlannerNode::StateUtime(std::int32_t ball_id) const {

@@ -40,6 +40,7 @@
 #include <deque>
 #include <functional>
 #include <lcm/lcm-cpp.hpp>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -106,6 +107,13 @@ class PlannerNode {
     std::int64_t state_utime;  // of the ball's state the answer came from, -1 if none
     cue_command_t command;
   };
+
+  // Why the ball's latest state is no start for a plan (stale, or the ball still moving).
+  struct Unfit {
+    int8_t status;
+    std::string reason;
+  };
+  std::optional<Unfit> UnfitToPlanFrom(const shot_request_t& q, const ball_state_t& s) const;
 
   // Raw handlers: the node decodes the payload itself so that a failure is logged its way.
   void OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
