@@ -20,6 +20,30 @@ command -v javac >/dev/null 2>&1 || packages+=(default-jdk-headless)
 # lcm-spy's window: Swing's X11 toolkit, which a headless JRE lacks, only where no JVM has it.
 ls /usr/lib/jvm/*/lib/libawt_xawt.so >/dev/null 2>&1 || packages+=(default-jre)
 
+# The UDP receive buffer the nodes ask for (launch_scripts/lcm_network.sh: recv_buf_size): a
+# stock kernel grants at most 208 kB, and a burst beyond it is dropped unseen. Raised (and kept
+# across reboots) only by root, and only where it is lower; a container's read-only /proc/sys
+# leaves it as it is, and the nodes say what to run.
+receive_buffer=4194304
+raise_receive_buffer() {
+  local now
+  now=$(cat /proc/sys/net/core/rmem_max 2>/dev/null || echo "$receive_buffer")
+  [ "$now" -ge "$receive_buffer" ] && return 0
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "setup: net.core.rmem_max is $now;" \
+         "run as root: sysctl -w net.core.rmem_max=$receive_buffer" >&2
+    return 0
+  fi
+  if { echo "$receive_buffer" >/proc/sys/net/core/rmem_max; } 2>/dev/null; then
+    { echo "net.core.rmem_max = $receive_buffer" >/etc/sysctl.d/60-billiard-lcm.conf; } \
+      2>/dev/null || true
+    echo "setup: net.core.rmem_max raised from $now to $receive_buffer" >&2
+  else
+    echo "setup: cannot raise net.core.rmem_max from $now (read-only here)" >&2
+  fi
+}
+raise_receive_buffer
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -2,7 +2,9 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 
 namespace billiard::nodes {
@@ -57,6 +59,7 @@ void HandleUntilIdle(lcm::LCM& lcm, const std::function<bool()>& work) {
 int RunNodeUntilStopped(const std::string& name, const std::string& lcm_url,
                         const StartNode& start) {
   StopOnSignals();
+  WarnAboutTheReceiveBuffer(name, lcm_url);
   lcm::LCM lcm(lcm_url);
   if (!lcm.good()) {
     std::cerr << name << ": cannot initialise LCM with " << DescribeUrl(lcm_url) << std::endl;
@@ -64,6 +67,62 @@ int RunNodeUntilStopped(const std::string& name, const std::string& lcm_url,
   }
   const std::function<bool()> work = start(lcm);
   return HandleUntilStopped(lcm, name, work);
+}
+
+namespace {
+
+// The integer after `key=` in a URL's options, 0 when absent.
+long UrlOption(const std::string& url, const std::string& key) {
+  const std::size_t options = url.find('?');
+  if (options == std::string::npos) return 0;
+  std::size_t at = options;
+  while (at != std::string::npos) {
+    const std::size_t start = at + 1;
+    if (url.compare(start, key.size() + 1, key + "=") == 0) {
+      return std::strtol(url.c_str() + start + key.size() + 1, nullptr, 10);
+    }
+    at = url.find('&', start);
+  }
+  return 0;
+}
+
+long ReadLong(const char* path) {
+  std::ifstream file(path);
+  long value = 0;
+  return file >> value ? value : 0;
+}
+
+}  // namespace
+
+std::string ReceiveBufferAdvice(const std::string& lcm_url, long rmem_default, long rmem_max) {
+  const char* from_environment = std::getenv("LCM_DEFAULT_URL");
+  const std::string url = !lcm_url.empty()                                ? lcm_url
+                          : from_environment && *from_environment != '\0' ? from_environment
+                                                                          : kLcmDefaultUrl;
+  if (url.rfind("udpm://", 0) != 0) return "";
+  const long asked = UrlOption(url, "recv_buf_size");
+  const std::string wanted = std::to_string(kBurstReceiveBufferBytes);
+  if (asked == 0 && rmem_default < kBurstReceiveBufferBytes) {
+    return "LCM URL '" + url + "' keeps the kernel's default UDP receive buffer of " +
+           std::to_string(rmem_default) + " bytes, where a burst of messages overflows and is " +
+           "lost unseen: add recv_buf_size=" + wanted + " to the URL (launch_scripts/" +
+           "lcm_network.sh sets LCM_DEFAULT_URL so)";
+  }
+  if (asked > rmem_max) {
+    return "LCM URL '" + url + "' asks for a " + std::to_string(asked) +
+           "-byte UDP receive buffer but the kernel grants at most " + std::to_string(rmem_max) +
+           " (net.core.rmem_max), where a burst of messages overflows and is lost unseen: run "
+           "'sysctl -w net.core.rmem_max=" +
+           std::to_string(asked) + "' as root (launch_scripts/setup.sh does it when run as root)";
+  }
+  return "";
+}
+
+void WarnAboutTheReceiveBuffer(const std::string& name, const std::string& lcm_url) {
+  const std::string advice =
+      ReceiveBufferAdvice(lcm_url, ReadLong("/proc/sys/net/core/rmem_default"),
+                          ReadLong("/proc/sys/net/core/rmem_max"));
+  if (!advice.empty()) std::cerr << name << ": " << advice << std::endl;
 }
 
 std::string DescribeUrl(const std::string& lcm_url) {

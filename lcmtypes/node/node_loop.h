@@ -40,6 +40,23 @@ using StartNode = std::function<std::function<bool()>(lcm::LCM& lcm)>;
 int RunNodeUntilStopped(const std::string& name, const std::string& lcm_url,
                         const StartNode& start);
 
+// The receive buffer a burst needs: a node reads one message at a time, so a burst (a queue of
+// shot requests, camera frames while the estimator is busy) waits in the socket's buffer, and
+// what overflows it is dropped by the kernel, unseen by LCM and the node.
+inline constexpr long kBurstReceiveBufferBytes = 4 << 20;
+// LCM's URL when none is given and $LCM_DEFAULT_URL is not set.
+inline constexpr char kLcmDefaultUrl[] = "udpm://239.255.76.67:7667?ttl=0";
+
+// What to do, in one line, when the UDP multicast URL `lcm_url` ("" for $LCM_DEFAULT_URL, else
+// LCM's default) leaves a burst too small a receive buffer: when it asks for none (the kernel's
+// default, `rmem_default` bytes) or for more than the kernel grants (`rmem_max`,
+// net.core.rmem_max). "" when the buffer is large enough or the URL is not UDP multicast.
+std::string ReceiveBufferAdvice(const std::string& lcm_url, long rmem_default, long rmem_max);
+
+// ReceiveBufferAdvice for this machine (its /proc/sys/net/core), printed on stderr prefixed by
+// `name` when there is any.
+void WarnAboutTheReceiveBuffer(const std::string& name, const std::string& lcm_url);
+
 // "the default URL" or "'URL'", for log lines.
 std::string DescribeUrl(const std::string& lcm_url);
 

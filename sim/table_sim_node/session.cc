@@ -77,6 +77,7 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
     return fail(e.what(), 2);
   }
   nodes::StopOnSignals();
+  nodes::WarnAboutTheReceiveBuffer(name, line.lcm_url);
   lcm::LCM lcm(line.lcm_url);
   if (!lcm.good()) return fail("cannot initialise LCM with " + nodes::DescribeUrl(line.lcm_url), 1);
 

@@ -19,6 +19,7 @@
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
 #include "lcmtypes/node/node_health.h"
+#include "lcmtypes/node/node_loop.h"
 #include "planner/node/planner_node.h"
 #include "tools/billiard/command_line.h"
 
@@ -73,6 +74,7 @@ struct Replies {
 
 void Run(const BurstArgs& args) {
   if (args.requests < 1) throw UsageError("--requests must be at least 1");
+  nodes::WarnAboutTheReceiveBuffer("billiard burst", args.lcm_url);
   lcm::LCM lcm(args.lcm_url);
   if (!lcm.good()) throw UsageError("cannot initialise LCM");
   Replies replies;
