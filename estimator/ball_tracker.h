@@ -2,7 +2,7 @@
 //
 // Process model: what a billiard ball does between two frames, not constant velocity.
 //  - state (x, y, vx, vy, ax, ay): while a ball slides its friction force is constant (mu m g
-//    against a slip direction that does not turn, seed 002 eqs. 6-7), so constant acceleration is
+//    against a slip direction that does not turn, Jaroukh 2019, eqs. 6-7), so constant acceleration is
 //    its exact motion; while it rolls the acceleration is the small 5/7 mu_r g against v;
 //  - the jerk noise is that of rolling, and a maneuver test (the innovation's chi-square) opens
 //    the acceleration to mu g when the phase changes (the cue strike, the end of sliding, a stop);

@@ -1,4 +1,4 @@
-// The inverse of the closed-form sliding-then-rolling model (seed 002, eqs. 17-28) in 2D: the
+// The inverse of the closed-form sliding-then-rolling model (Jaroukh 2019, eqs. 17-28) in 2D: the
 // launch velocity and spin that bring a ball from `from` to `to`, where its speed has fallen to
 // `final_speed` (0: it stops there).
 //

@@ -1,5 +1,5 @@
 // Least-squares fit of the approximate friction model (eq. 17) to the integral model (eq. 5),
-// as in seed 000, section 2.3:
+// as in Kudra et al. 2016, section 2.3:
 //   F_T(b_T, m_T) = int_D (Tsx - Tsx^I)^2 + (Tsy - Tsy^I)^2 dD,
 //   F_M(b_M, m_M) = int_D (Ms - Ms^I)^2 dD
 // over D = {0 <= d <= 1, 0 <= gamma <= pi, -pi/2 <= theta_s <= pi/2} with phi_s = 0, i.e. the slip

@@ -1,5 +1,5 @@
 // The least-squares fit of eq. 17 to the integral model reproduces the paper's table
-// (seed 000, section 2.3; shared/docs/physics-notes.md).
+// (Kudra et al. 2016, section 2.3; shared/docs/physics-notes.md).
 #include "sim/contact_fit/contact_fit.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The approximate friction model of seed 000 (eq. 17, general m_T and m_M).
+// The approximate friction model of Kudra et al. 2016 (eq. 17, general m_T and m_M).
 //
 // Closed-form stand-ins for the integral model that agree with it exactly when either the linear
 // or the angular slip vanishes (eq. 11) and are fitted to it in between (see contact_fit.h).

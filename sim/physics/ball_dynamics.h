@@ -1,4 +1,4 @@
-// Equations of motion of the 5-DOF ball on a deformable cloth (seed 000, eqs. 18-23).
+// Equations of motion of the 5-DOF ball on a deformable cloth (Kudra et al. 2016, eqs. 18-23).
 //
 // The friction resultant comes from a pluggable model (approximate or integral); the rolling
 // resistance is always the regularized moment of eqs. 14-15. The Jacobian is computed by forward

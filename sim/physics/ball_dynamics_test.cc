@@ -77,7 +77,7 @@ TEST(BallDynamics, RollingBallOfFigureSixStopsAfterTheNotesDistance) {
 
 TEST(BallDynamics, ConvergesToTheClosedFormAsRegularizationVanishes) {
   // wz = 0 and d = 0: no pivot friction and no rolling resistance, so the only difference from
-  // the Coulomb point-contact model of seed 002 is the regularization eps_t.
+  // the Coulomb point-contact model of Jaroukh 2019 is the regularization eps_t.
   ModelParameters p = testing::PaperParameters();
   p.contact.d = 0.0;
   const BallState s0 = MakeBallState(0, 0, 0.4, 1.0, 30.0, -10.0, 0.0);

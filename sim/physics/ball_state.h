@@ -2,7 +2,7 @@
 //
 // Seven numbers in table coordinates (SI units): the centre position X, Y, the centre velocity
 // vx, vy, and the angular velocity wx, wy, wz. The ball stays in contact with the cloth, so
-// vz = 0 and the normal force is m g (seed 000, section 3.1).
+// vz = 0 and the normal force is m g (Kudra et al. 2016, section 3.1).
 #pragma once
 
 #include <Eigen/Core>

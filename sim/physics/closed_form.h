@@ -1,4 +1,4 @@
-// The closed-form sliding-then-rolling model of seed 002 (Jaroukh 2019), in two dimensions.
+// The closed-form sliding-then-rolling model of Jaroukh 2019, in two dimensions.
 //
 // Point contact with Coulomb friction mu_s while the contact point slips, then rolling without
 // slip decelerated by rolling resistance mu_r until rest. Both phases are solved exactly, so the

@@ -1,4 +1,4 @@
-// The closed-form model against the formulas of seed 002 (with its misprints corrected).
+// The closed-form model against the formulas of Jaroukh 2019 (with its misprints corrected).
 #include "sim/physics/closed_form.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Dimensionless contact kinematics of the ball (seed 000, eqs. 14, 26, 27).
+// Dimensionless contact kinematics of the ball (Kudra et al. 2016, eqs. 14, 26, 27).
 //
 // Velocities are divided by the patch radius a, so the friction models see the slip of the
 // contact patch in patch radii per second. Templated on the scalar so that the same code runs
@@ -38,7 +38,7 @@ ContactKinematics<T> ComputeContactKinematics(const T& vx, const T& vy, const T&
   return k;
 }
 
-// The friction resultant of seed 000 with its sign convention: the force on the ball is
+// The friction resultant of Kudra et al. 2016 with its sign convention: the force on the ball is
 // -mu N (Tsx, Tsy) and the moment about the normal is -a mu N Ms.
 template <typename T>
 struct FrictionResultant {

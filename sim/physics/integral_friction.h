@@ -1,4 +1,4 @@
-// The integral friction model of seed 000 (eqs. 5 and 16): Coulomb friction integrated over the
+// The integral friction model of Kudra et al. 2016 (eqs. 5 and 16): Coulomb friction integrated over the
 // circular contact patch under the shifted Hertz pressure of eq. 1.
 //
 // Why the quadrature is built around the instantaneous centre of rotation (ICR): the local slip

@@ -1,4 +1,4 @@
-// The integral friction model against the exact values and symmetries of seed 000.
+// The integral friction model against the exact values and symmetries of Kudra et al. 2016.
 #include "sim/physics/integral_friction.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 //
 //   approx       5-DOF model, approximate friction (eq. 17), RODAS4    (default, fast)
 //   integral     5-DOF model, integral friction (eq. 16), RODAS4       (reference)
-//   closed-form  sliding-then-rolling model of seed 002, exact         (no integration)
+//   closed-form  sliding-then-rolling model of Jaroukh 2019, exact         (no integration)
 #pragma once
 
 #include <memory>

@@ -8,13 +8,11 @@
 #include <stdexcept>
 #include <thread>
 
-#include "estimator/node/estimator_node.h"
 #include "lcmtypes/billiard/shot_request_t.hpp"
 #include "lcmtypes/image_codec.h"
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
 #include "lcmtypes/node/node_loop.h"
-#include "planner/node/planner_node.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/physics/simulator.h"
 
@@ -22,10 +20,7 @@ namespace billiard::table_sim_node {
 
 namespace {
 
-using messages::kCameraImageChannel;
-using messages::kCueCommandChannel;
-using messages::kShotRequestChannel;
-using messages::kTableStateChannel;
+// The one ball of a session, as the truth names it.
 constexpr int kCueBall = 0;
 
 }  // namespace

@@ -19,7 +19,7 @@ namespace billiard::physics::testing {
 
 inline ModelParameters PaperParameters() { return params::LoadParameters("paper"); }
 
-// X = Y = 0, vx = 0, vy = 1 m/s and the spins of Figs. 6-10 of seed 000.
+// X = Y = 0, vx = 0, vy = 1 m/s and the spins of Figs. 6-10 of Kudra et al. 2016.
 inline std::array<BallState, 5> PaperFigureStates() {
   return {MakeBallState(0, 0, 0, 1, -50, 0, 0), MakeBallState(0, 0, 0, 1, -50, 5, 0),
           MakeBallState(0, 0, 0, 1, 150, 5, 0), MakeBallState(0, 0, 0, 1, -50, -3.5, -150),
