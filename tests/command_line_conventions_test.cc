@@ -20,6 +20,11 @@ namespace fs = std::filesystem;
 using billiard::testing::RunCommandApart;
 using billiard::testing::SeparateOutput;
 
+// What a usage error or a failure prints on stderr: its reason, in exactly one line.
+bool OneLine(const std::string& text) {
+  return std::count(text.begin(), text.end(), '\n') == 1 && text.back() == '\n';
+}
+
 struct Script {
   std::string path;  // in the source tree
   std::vector<std::string> options;
@@ -84,8 +89,7 @@ class Scripts : public ::testing::Test {
     const std::string what = script.path + " " + args;
     EXPECT_EQ(r.status, 2) << what << ": " << r.err;
     EXPECT_EQ(r.out, "") << what;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << what << ": " << r.err;
-    EXPECT_EQ(r.err.back(), '\n') << what << ": " << r.err;
+    EXPECT_TRUE(OneLine(r.err)) << what << ": " << r.err;
     EXPECT_EQ(WorkDone(), "") << what;
   }
 
@@ -156,11 +160,10 @@ void ExpectStatus(const std::string& command, int status) {
   EXPECT_EQ(r.status, status) << command << ": " << r.err;
 }
 
-// Exit `status` with exactly one line on stderr (the reason).
 void ExpectOneLine(const std::string& command, int status) {
   const SeparateOutput r = RunBinary(command);
   EXPECT_EQ(r.status, status) << command << ": " << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << command << ": " << r.err;
+  EXPECT_TRUE(OneLine(r.err)) << command << ": " << r.err;
 }
 
 const std::string kBilliard = BILLIARD_BIN;

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <exception>
 #include <iostream>
 
 namespace billiard::nodes {
@@ -62,8 +63,14 @@ int RunNodeUntilStopped(const std::string& name, const std::string& lcm_url,
     std::cerr << name << ": cannot initialise LCM with " << DescribeUrl(lcm_url) << std::endl;
     return 1;
   }
-  const std::function<bool()> work = start(lcm);
-  return HandleUntilStopped(lcm, name, work);
+  // What the node throws is a bug: an internal failure with its reason, not an abort.
+  try {
+    const std::function<bool()> work = start(lcm);
+    return HandleUntilStopped(lcm, name, work);
+  } catch (const std::exception& e) {
+    std::cerr << name << ": error: " << e.what() << std::endl;
+    return 1;
+  }
 }
 
 std::string DescribeUrl(const std::string& lcm_url) {
