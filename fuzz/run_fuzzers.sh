@@ -1,16 +1,26 @@
 #!/usr/bin/env bash
+# usage: fuzz/run_fuzzers.sh [--minutes M | --seconds S] [--json] [--seed N] [--corpus DIR]
+#                            [--artifacts DIR] [--bin-dir DIR] [-h | --help] [TARGET...]
+#
 # Runs fuzz targets for a bounded time each, one after the other, from their generated seeds, and
 # reports libFuzzer's final figures per target: a table on stderr, and with --json one JSON object
 # on stdout. Exits 1 when any target crashed (a crash, leak, timeout, out-of-memory, sanitizer
 # report or broken property); the inputs that did are kept under the artifacts folder.
 #
-#   fuzz/run_fuzzers.sh [--minutes M | --seconds S] [--json] [--seed N] [--corpus DIR]
-#                       [--artifacts DIR] [--bin-dir DIR] [TARGET...]
+#   --minutes M      minutes per target (default 1)
+#   --seconds S      seconds per target, instead of --minutes
+#   --json           the figures as one JSON object on stdout
+#   --seed N         libFuzzer's seed (default 1; 0: a random one)
+#   --corpus DIR     keep what the runs find in DIR/TARGET, and go on from there next time
+#                    (default: each run starts from the seeds alone, in a temporary folder)
+#   --artifacts DIR  where the inputs that crashed are kept (default: BIN_DIR/../fuzz-artifacts)
+#   --bin-dir DIR    where the targets are (default: build/bin)
+#   -h, --help       this text
+#   TARGET           fuzz_table_state, fuzz_image, ... (default: every fuzz_* of the bin folder)
 #
-# TARGET: fuzz_table_state, fuzz_image, ... (default: every bin/fuzz_*). Time is per target
-# (default 1 minute). Without --corpus each run starts from the seeds alone in a temporary folder;
-# with it, DIR/TARGET keeps what the runs found and the next run goes on from there.
+# No targets to run, or a TARGET that is not there, is exit 2 (build with launch_scripts/build.sh).
 set -uo pipefail
+source "$(dirname "$0")/../launch_scripts/script_support.sh"
 
 repo=$(cd "$(dirname "$0")/.." && pwd)
 seconds=60
@@ -22,15 +32,15 @@ artifacts=
 targets=()
 while [ $# -gt 0 ]; do
   case "$1" in
-    --minutes) seconds=$(($2 * 60)); shift 2 ;;
-    --seconds) seconds=$2; shift 2 ;;
+    -h | --help) help_and_exit ;;
+    --minutes) need_number 1 "$@"; seconds=$(($2 * 60)); shift 2 ;;
+    --seconds) need_number 1 "$@"; seconds=$2; shift 2 ;;
     --json) json=1; shift ;;
-    --seed) seed=$2; shift 2 ;;
-    --corpus) corpus_root=$2; shift 2 ;;
-    --artifacts) artifacts=$2; shift 2 ;;
-    --bin-dir) bin_dir=$2; shift 2 ;;
-    -h|--help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    -*) echo "run_fuzzers: unknown option $1" >&2; exit 2 ;;
+    --seed) need_number 0 "$@"; seed=$2; shift 2 ;;
+    --corpus) need_value "$@"; corpus_root=$2; shift 2 ;;
+    --artifacts) need_value "$@"; artifacts=$2; shift 2 ;;
+    --bin-dir) need_value "$@"; bin_dir=$2; shift 2 ;;
+    -*) unknown_argument "$1" ;;
     *) targets+=("$1"); shift ;;
   esac
 done
@@ -38,10 +48,12 @@ artifacts=${artifacts:-$bin_dir/../fuzz-artifacts}
 if [ ${#targets[@]} -eq 0 ]; then
   for f in "$bin_dir"/fuzz_*; do [ -x "$f" ] && targets+=("$(basename "$f")"); done
 fi
-if [ ${#targets[@]} -eq 0 ]; then
-  echo "run_fuzzers: no fuzz targets in $bin_dir (build with launch_scripts/build.sh)" >&2
-  exit 2
-fi
+[ ${#targets[@]} -gt 0 ] ||
+  usage_error "no fuzz targets in $bin_dir (build with launch_scripts/build.sh)"
+# Before the first target runs: a mistyped one is said at once, not minutes later.
+for target in "${targets[@]}"; do
+  [ -x "$bin_dir/$target" ] || usage_error "no $bin_dir/$target"
+done
 
 # ASan finds llvm-symbolizer on the PATH only; Debian's llvm-14 installs it with a suffix.
 if ! command -v llvm-symbolizer >/dev/null && command -v llvm-symbolizer-14 >/dev/null; then
@@ -61,14 +73,10 @@ entries=()
 total_crashes=0
 for target in "${targets[@]}"; do
   binary=$bin_dir/$target
-  if [ ! -x "$binary" ]; then
-    echo "run_fuzzers: no $binary" >&2
-    exit 2
-  fi
   corpus=${corpus_root:+$corpus_root/$target}
   corpus=${corpus:-$work/$target/corpus}
   mkdir -p "$corpus" "$work/$target/artifacts"
-  "$binary" -write_seeds="$corpus" || exit 2
+  "$binary" -write_seeds="$corpus" || exit 1
   log=$work/$target/log
   "$binary" -max_total_time="$seconds" -seed="$seed" -rss_limit_mb=2048 -timeout=10 \
     -print_final_stats=1 -artifact_prefix="$work/$target/artifacts/" "$corpus" >"$log" 2>&1

@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
+# usage: launch_scripts/fault_drill.sh [--shots N] [--no-build] [-h | --help]
+#
 # The fault drill: the closed loop over UDP multicast while its nodes are killed (SIGKILL) and
 # started again, then a burst of shot requests at the planner. Prints one JSON object on stdout,
-# the nodes' logs on stderr only when a step fails.
+# the nodes' logs on stderr only when a step fails (exit 1).
 #
-#   launch_scripts/fault_drill.sh [--shots N] [--no-build]
+#   --shots N   lockstep shots of sessions 1 and 2, N/2 of session 3 (default 8, at least 2)
+#   --no-build  run what build/ holds, without build.sh first
+#   -h, --help  this text
 #
 #   session 1  N lockstep shots; the estimator is killed 3 s in and started again 1 s later, then
 #              the planner 4 s after that, likewise
@@ -18,17 +22,22 @@
 # It needs the nodes as separate processes: a private network namespace or a multicast route.
 # Without either it prints {"skipped": "<why>"} and exits 0.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/script_support.sh"
 
 shots=8 build=true
 while [ $# -gt 0 ]; do
   case "$1" in
-    --shots) shots="$2"; shift 2 ;;
+    -h | --help) help_and_exit ;;
+    # Session 3 runs N/2 shots, and a session has one at least.
+    --shots) need_number 2 "$@"; shots=$2; shift 2 ;;
     --no-build) build=false; shift ;;
+    # Added by enter_private_network when the script runs itself again in its namespace.
     --in-namespace) in_namespace=true; shift ;;
-    *) echo "fault_drill: unknown argument '$1'" >&2; exit 2 ;;
+    *) unknown_argument "$1" ;;
   esac
 done
+failures_are_internal
+cd "$(dirname "$0")/.."
 $build && bash launch_scripts/build.sh
 source launch_scripts/lcm_network.sh
 enter_private_network "$0" --no-build --shots "$shots"
@@ -45,7 +54,6 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
-trap 'exit 130' INT TERM
 events=()
 event() { events+=("{\"t_s\": $SECONDS, \"event\": \"$1\"}"); echo "fault_drill: $1" >&2; }
 fail() {

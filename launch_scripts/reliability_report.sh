@@ -1,30 +1,41 @@
 #!/usr/bin/env bash
+# usage: launch_scripts/reliability_report.sh [--fuzz-seconds S] [--shots N] [--no-build]
+#                                             [-h | --help]
+#
 # Measures how the controller holds under bad input, faults and load, and writes
 # docs/reliability.md (and the raw figures, docs/reliability.json). Nothing in the report is
 # typed by hand: every number comes from one of these runs.
 #
-#   launch_scripts/reliability_report.sh [--fuzz-seconds S] [--shots N] [--no-build]
+#   --fuzz-seconds S  seconds per fuzz target (default 30)
+#   --shots N         shots of the fault drill and of the lossy link (default 8, at least 2)
+#   --no-build        run what build/ holds, without build.sh first
+#   -h, --help        this text
 #
-#   fuzzing       fuzz/run_fuzzers.sh, S seconds per target (default 30)
+#   fuzzing       fuzz/run_fuzzers.sh, S seconds per target
 #   fault drill   launch_scripts/fault_drill.sh (kills, restarts, a new clock, a 10,000-request
-#                 burst), N shots (default 8)
+#                 burst), N shots
 #   lossy link    billiard loop (one process), N shots with 10 % of frames dropped, 5 % reordered
 #                 and 5 % repeated, against the same shots without
 #   edge cases    billiard edge-report (mu = 0, d = 0, eps = 1e-9, starved planner)
 #
-# About 3 minutes with the defaults; progress on stderr.
+# About 3 minutes with the defaults; progress on stderr. Exit 1 when a step fails (a fuzz target
+# that crashes among them); the report is then not written.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+source "$(dirname "$0")/script_support.sh"
 
 fuzz_seconds=30 shots=8 build=true
 while [ $# -gt 0 ]; do
   case "$1" in
-    --fuzz-seconds) fuzz_seconds="$2"; shift 2 ;;
-    --shots) shots="$2"; shift 2 ;;
+    -h | --help) help_and_exit ;;
+    --fuzz-seconds) need_number 1 "$@"; fuzz_seconds=$2; shift 2 ;;
+    # The fault drill's least (fault_drill.sh --shots).
+    --shots) need_number 2 "$@"; shots=$2; shift 2 ;;
     --no-build) build=false; shift ;;
-    *) echo "reliability_report: unknown argument '$1'" >&2; exit 2 ;;
+    *) unknown_argument "$1" ;;
   esac
 done
+failures_are_internal
+cd "$(dirname "$0")/.."
 $build && bash launch_scripts/build.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -1,58 +1,70 @@
 #!/usr/bin/env bash
+# usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off] [--log FILE]
+#                                   [--log-frames all|none] [--lockstep | --realtime] [--json]
+#                                   [--no-build] [-h | --help]
+#
 # The closed loop: estimator_node, planner_node and table_sim_node over LCM, for N shots to random
 # targets; prints the summary on stderr and, with --json, one JSON object on stdout.
 #
-#   launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off] [--log FILE]
-#                              [--log-frames all|none] [--lockstep | --realtime] [--json]
-#                              [--no-build]
+#   --shots N              shots (default 20)
+#   --seed S               seed of the targets and the noise (default 1)
+#   --noise on|off         the robot's execution noise (default off)
+#   --log FILE             record every message with lcm-logger into FILE
+#   --log-frames all|none  with --log: record the CAMERA_IMAGE frames or not (default all)
+#   --lockstep             wait for the estimator's state of each frame: deterministic (default)
+#   --realtime             pace the frames by the wall clock
+#   --json                 the summary as one JSON object on stdout
+#   --no-build             run what build/ holds, without build.sh first
+#   -h, --help             this text
 #
-# --log FILE records every message with lcm-logger (a relative FILE is in the caller's
-# directory); --log-frames none leaves out the CAMERA_IMAGE frames, which are nearly all of a
-# log's bytes, and such a log cannot be replayed through the estimator (replay.sh). A log that
-# cannot be written stops the run before it starts (exit 2); one that records nothing, or a
-# logger that dies, fails it at the end (exit 1, after the summary).
+# --log FILE: a relative FILE is in the caller's directory; with --log-frames none the log leaves
+# out the frames, which are nearly all of its bytes, and it cannot be replayed through the
+# estimator (replay.sh). A log that cannot be written stops the run before it starts (exit 2);
+# one that records nothing, or a logger that dies, fails it at the end (exit 1, after the
+# summary). A session the table simulator refuses (the nodes run other physics) exits 3.
 #
 # LCM traffic stays on this host: inside a private network namespace with multicast routed to
 # loopback when one can be made (unshare -n), else UDP multicast with ttl=0, else (no multicast
 # route at all) the three nodes in one process on LCM's in-memory provider, which says so.
 set -euo pipefail
-
-usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
-fail_usage() { echo "run_loop: $1" >&2; exit 2; }
+source "$(dirname "$0")/script_support.sh"
 
 shots=20 seed=1 noise=off log="" log_frames=all clock=--lockstep json=false build=true
 while [ $# -gt 0 ]; do
   case "$1" in
-    --help|-h) usage; exit 0 ;;
-    # Options with a value: checked here, then (;;&) read by their own case below.
-    --shots|--seed|--noise|--log|--log-frames)
-      [ $# -ge 2 ] && [ -n "$2" ] || fail_usage "$1 needs a value (see --help)" ;;&
-    --shots) shots="$2"; shift 2 ;;
-    --seed) seed="$2"; shift 2 ;;
-    --noise) noise="$2"; shift 2 ;;
+    -h | --help) help_and_exit ;;
+    --shots) need_number 1 "$@"; shots=$2; shift 2 ;;
+    --seed) need_number 0 "$@"; seed=$2; shift 2 ;;
+    --noise) need_value "$@"; noise=$2; shift 2 ;;
     # Before the cd to the repository below: a relative path is the caller's.
-    --log) log=$(realpath -m -- "$2"); shift 2 ;;
-    --log-frames) log_frames="$2"; shift 2 ;;
+    --log) need_value "$@"; log=$(realpath -m -- "$2"); shift 2 ;;
+    --log-frames) need_value "$@"; log_frames=$2; shift 2 ;;
     --lockstep) clock=--lockstep; shift ;;
     --realtime) clock=--realtime; shift ;;
     --json) json=true; shift ;;
     --no-build) build=false; shift ;;
+    # Added by enter_private_network when the script runs itself again in its namespace.
     --in-namespace) in_namespace=true; shift ;;
-    *) fail_usage "unknown argument '$1' (see --help)" ;;
+    *) unknown_argument "$1" ;;
   esac
 done
+case "$noise" in
+  on|off) ;;
+  *) usage_error "--noise must be on or off, not '$noise'" ;;
+esac
 case "$log_frames" in
   all|none) ;;
-  *) fail_usage "--log-frames must be all or none, not '$log_frames'" ;;
+  *) usage_error "--log-frames must be all or none, not '$log_frames'" ;;
 esac
 # A log that cannot be written is said before anything is built or started: opened for appending
 # (an existing file keeps its bytes until the logger starts), and a new one removed again.
 if [ -n "$log" ]; then
   log_existed=false
   [ -e "$log" ] && log_existed=true
-  reason=$( { : >>"$log"; } 2>&1 ) || fail_usage "cannot write the log '$log': ${reason##*: }"
+  reason=$( { : >>"$log"; } 2>&1 ) || usage_error "cannot write the log '$log': ${reason##*: }"
   $log_existed || rm -f "$log"
 fi
+failures_are_internal
 cd "$(dirname "$0")/.."
 $build && bash launch_scripts/build.sh
 
@@ -81,7 +93,6 @@ cleanup() {
   rm -f "$summary_file" "$logger_err"
 }
 trap cleanup EXIT
-trap 'exit 130' INT TERM
 
 if [ -n "$log" ]; then
   without_frames=()
@@ -108,8 +119,12 @@ $in_process && session=(build/bin/billiard loop)
 pids+=($!)
 status=0
 wait $! || status=$?
-[ $status -eq 130 ] && exit 130
-[ $status -eq 0 ] || { echo "run_loop: table_sim_node failed (exit $status)" >&2; exit 1; }
+# The session's own refusal (3) and a signal (130) are the run's; anything else is its failure.
+case $status in
+  0) ;;
+  3 | 130) exit $status ;;
+  *) echo "run_loop: table_sim_node failed (exit $status)" >&2; exit 1 ;;
+esac
 summary=$(cat "$summary_file")
 # The logger stops (and writes what it holds) before the log is looked at.
 log_failure=""

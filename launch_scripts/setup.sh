@@ -1,7 +1,15 @@
 #!/usr/bin/env bash
-# Installs the Debian packages the project builds and runs with. Idempotent: when nothing is
-# missing it prints nothing and touches nothing, so every README command can start with it.
+# usage: launch_scripts/setup.sh [-h | --help]
+#
+# Installs the Debian packages the project builds and runs with (apt-get, through sudo unless
+# root). Idempotent: when nothing is missing it prints nothing and touches nothing, so every
+# README command can start with it.
+#
+#   -h, --help  this text
 set -euo pipefail
+source "$(dirname "$0")/script_support.sh"
+no_options "$@"
+failures_are_internal
 
 packages=(
   build-essential cmake pkg-config

@@ -4,6 +4,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <iostream>
 
@@ -65,8 +66,14 @@ int RunNodeUntilStopped(const std::string& name, const std::string& lcm_url,
     std::cerr << name << ": cannot initialise LCM with " << DescribeUrl(lcm_url) << std::endl;
     return 1;
   }
-  const std::function<bool()> work = start(lcm);
-  return HandleUntilStopped(lcm, name, work);
+  // What the node throws is a bug: an internal failure with its reason, not an abort.
+  try {
+    const std::function<bool()> work = start(lcm);
+    return HandleUntilStopped(lcm, name, work);
+  } catch (const std::exception& e) {
+    std::cerr << name << ": error: " << e.what() << std::endl;
+    return 1;
+  }
 }
 
 namespace {

@@ -34,8 +34,8 @@ void HandleUntilIdle(lcm::LCM& lcm, const std::function<bool()>& work = nullptr)
 // What a node's main does once its options are read: stops on SIGINT or SIGTERM, opens LCM at
 // `lcm_url`, lets `start` make the node on it (returning the node's work, as above; the node
 // lives as long as the work), and handles messages until a signal. Returns the exit status: 0
-// when stopped by a signal, 1 when LCM cannot be opened or stops working (the reason on stderr,
-// prefixed by `name`).
+// when stopped by a signal, 1 when LCM cannot be opened or stops working or the node throws (the
+// reason on stderr, prefixed by `name`).
 using StartNode = std::function<std::function<bool()>(lcm::LCM& lcm)>;
 int RunNodeUntilStopped(const std::string& name, const std::string& lcm_url,
                         const StartNode& start);

@@ -91,7 +91,7 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
     shots = node.Run();
   } catch (const ParameterMismatch& e) {
     return fail(e.what(), 3);
-  } catch (const std::runtime_error& e) {
+  } catch (const std::exception& e) {
     return fail(e.what(), nodes::StopRequested() ? 130 : 1);
   }
   const double wall_s =

@@ -2,8 +2,13 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
+
 #include <array>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace billiard::testing {
@@ -23,6 +28,25 @@ inline CommandResult RunCommand(const std::string& command, bool merge_stderr = 
   while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+struct SeparateOutput {
+  int status;  // as CommandResult's
+  std::string out, err;
+};
+
+// stdout and stderr apart, from one run: what a command prints where is part of its contract.
+inline SeparateOutput RunCommandApart(const std::string& command) {
+  std::string err_path = "/tmp/run_command_stderr_XXXXXX";
+  const int fd = mkstemp(err_path.data());
+  if (fd < 0) return {-1, "", ""};
+  close(fd);
+  // The inner redirection wins over RunCommand's own 2>/dev/null, which the outer one takes.
+  const CommandResult r = RunCommand("( (" + command + ") 2>" + err_path + " )");
+  std::ifstream in(err_path);
+  std::string err{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::remove(err_path.c_str());
+  return {r.status, r.out, err};
 }
 
 }  // namespace billiard::testing

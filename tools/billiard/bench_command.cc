@@ -24,6 +24,7 @@ void Run(BenchArgs args) {
   if (args.options.random_shots < 0) throw UsageError("--shots must be >= 0");
   if (args.options.threads < 1) throw UsageError("--threads must be >= 1");
   const physics::ModelParameters params = LoadParametersOption(args.params);
+  RequireWritableDirectory(args.out, "--out");
   args.options.quick = args.quick;
   args.options.progress = [](const std::string& line) { std::cerr << "bench: " << line << std::endl; };
   const bench::BenchmarkResult result = bench::RunBenchmark(params, args.options);

@@ -24,6 +24,7 @@ void Run(const BenchEstimatorArgs& args) {
     throw UsageError("--struck must be between 0 and --balls");
   }
   const physics::ModelParameters params = LoadParametersOption(args.params);
+  RequireWritableDirectory(args.out, "--out");
   bench::EstimatorBenchmarkOptions options = args.options;
   options.progress = [](const std::string& line) {
     std::cerr << "bench-estimator: " << line << std::endl;

@@ -20,6 +20,7 @@ struct BenchPlannerArgs {
 void Run(const BenchPlannerArgs& args) {
   if (args.options.requests < 1) throw UsageError("--requests must be >= 1");
   const physics::ModelParameters params = LoadParametersOption(args.params);
+  RequireWritableDirectory(args.out, "--out");
   bench::PlannerBenchmarkOptions options = args.options;
   options.progress = [](const std::string& line) { std::cerr << "bench-planner: " << line << std::endl; };
   const bench::PlannerBenchmarkResult result = bench::RunPlannerBenchmark(params, options);

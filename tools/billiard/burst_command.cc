@@ -9,6 +9,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ namespace billiard::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The longest wait for the planner's answer to the probe before the burst [s].
+constexpr double kProbeSeconds = 10.0;
 
 struct BurstArgs {
   std::string lcm_url;
@@ -74,9 +78,10 @@ struct Replies {
 
 void Run(const BurstArgs& args) {
   if (args.requests < 1) throw UsageError("--requests must be at least 1");
+  if (!(args.timeout > 0.0)) throw UsageError("--timeout must be a positive number of seconds");
   nodes::WarnAboutTheReceiveBuffer("billiard burst", args.lcm_url);
   lcm::LCM lcm(args.lcm_url);
-  if (!lcm.good()) throw UsageError("cannot initialise LCM");
+  if (!lcm.good()) throw std::runtime_error("cannot initialise LCM");
   Replies replies;
   const std::size_t total = static_cast<std::size_t>(args.requests) + 1;
   replies.sent.resize(total);
@@ -112,16 +117,22 @@ void Run(const BurstArgs& args) {
     while (!done() && Clock::now() < deadline) lcm.handleTimeout(20);
   };
 
-  // The probe: the state, then one request, until the planner answers it.
+  // The probe: the state, then one request, until the planner answers it. --timeout bounds this
+  // wait too, so that a short one checks quickly whether a planner is up.
+  const double probe_s = std::min(kProbeSeconds, args.timeout);
   const Clock::time_point start = Clock::now();
-  while (!replies.answered[0] && Clock::now() - start < std::chrono::seconds(10)) {
+  while (!replies.answered[0] && Clock::now() - start < std::chrono::duration<double>(probe_s)) {
     lcm.publish(messages::kTableStateChannel, &state);
     const shot_request_t probe = request(0);
     replies.sent[0] = Clock::now();
     lcm.publish(messages::kShotRequestChannel, &probe);
     handle_until([&] { return replies.answered[0].has_value(); }, 0.5);
   }
-  if (!replies.answered[0]) throw Refused("no planner_node answered within 10 s");
+  if (!replies.answered[0]) {
+    std::ostringstream reason;
+    reason << "no planner_node answered within " << probe_s << " s";
+    throw std::runtime_error(reason.str());
+  }
   replies.statuses.clear();
 
   std::cerr << "burst: " << args.requests << " requests" << std::endl;
@@ -183,7 +194,8 @@ void Run(const BurstArgs& args) {
             << bench::Quantile(latency_ms, 0.5) << " ms, p99 " << bench::Quantile(latency_ms, 0.99) << " ms"
             << std::endl;
   if (answered != args.requests) {
-    throw Refused(std::to_string(args.requests - answered) + " requests got no answer");
+    throw std::runtime_error(std::to_string(args.requests - answered) +
+                             " requests got no answer");
   }
 }
 
@@ -193,11 +205,12 @@ void AddBurstCommand(CLI::App& app) {
   auto args = std::make_shared<BurstArgs>();
   CLI::App* cmd = app.add_subcommand(
       "burst",
-      "Send a burst of shot requests to a running planner_node and report what came back (exit 3 "
-      "if any request got no answer)");
+      "Send a burst of shot requests to a running planner_node and report what came back (exit 1 "
+      "if the planner or any request got no answer)");
   cmd->add_option("--requests", args->requests, "Requests in the burst")->capture_default_str();
   cmd->add_option("--lcm-url", args->lcm_url, "LCM URL (default: $LCM_DEFAULT_URL)");
-  cmd->add_option("--timeout", args->timeout, "Longest wait for the answers [s]")
+  cmd->add_option("--timeout", args->timeout,
+                  "Longest wait for the answers [s], and for the planner's first (at most 10 s)")
       ->capture_default_str();
   cmd->add_option("--state-age", args->state_age,
                  "Stamp the ball's state this much before the requests [s]: beyond the planner's "

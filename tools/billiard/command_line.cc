@@ -2,9 +2,13 @@
 
 #include "sim/params/parameter_sets.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
 
 namespace billiard::cli {
 
@@ -39,6 +43,17 @@ void RequireFinite(double value, const std::string& what) {
 void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j) {
   (*j)["params"] = p.name;
   if (!p.file.empty()) (*j)["params_file"] = p.file;
+}
+
+void RequireWritableDirectory(const std::string& dir, const std::string& option) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error) {
+    throw UsageError(option + ": cannot make the directory '" + dir + "': " + error.message());
+  }
+  if (access(dir.c_str(), W_OK | X_OK) != 0) {
+    throw UsageError(option + ": cannot write in '" + dir + "': " + std::strerror(errno));
+  }
 }
 
 physics::ModelParameters LoadParametersOption(const std::string& name_or_path) {

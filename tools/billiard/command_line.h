@@ -38,6 +38,11 @@ void RequireFinite(double value, const std::string& what);
 // "params": the set's name, and "params_file": the file it came from (when not built in).
 void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j);
 
+// Makes the directory `dir` of an option (as the report writers would) and checks that files can
+// be made in it; UsageError naming `option` if not. Called before a run of minutes, so that a
+// mistyped path is said at once instead of after the work.
+void RequireWritableDirectory(const std::string& dir, const std::string& option);
+
 // The parameter set of a --params option (a built-in name or a JSON file); UsageError if it
 // does not load.
 physics::ModelParameters LoadParametersOption(const std::string& name_or_path);

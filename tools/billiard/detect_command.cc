@@ -205,7 +205,11 @@ void RunCalibrate(const CalibrateArgs& args) {
     for (int i = 0; i < 4; ++i) layout.centres[i] = {xy[2 * i], xy[2 * i + 1], args.height};
   }
   const auto result = estimator::CalibrateTable(image, layout, intrinsics);
-  if (!result) throw std::runtime_error("did not find all four corner markers in " + args.image);
+  // A frame that does not show the markers is an answer about the frame, not a failure.
+  if (!result) {
+    throw Refused("did not find all four corner markers in " + args.image +
+                  " (no camera file written)");
+  }
   RequireAFit(*result, args.max_reprojection_px);
   std::ofstream out(args.out);
   out << camera::CameraModelJson(result->camera) << "\n";
@@ -259,7 +263,7 @@ void AddCalibrateCommand(CLI::App& app) {
   cmd->add_option("--fx", args->fx, "Focal length guess [px] (default: the image width)");
   cmd->add_option("--max-reprojection-px", args->max_reprojection_px,
                   "Refuse a pose that reprojects the markers further than this [px, RMS] from "
-                  "where they were found (exit 3)")
+                  "where they were found (exit 3, as when the four markers are not found)")
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { RunCalibrate(*args); });

@@ -1,5 +1,8 @@
 // billiard: simulate a ball, fit the contact model, plan a shot, find the balls in a frame.
 #include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <csignal>
 #include <exception>
 #include <iostream>
 
@@ -17,7 +20,17 @@
 #include "tools/billiard/replay_command.h"
 #include "tools/billiard/simulate_command.h"
 
+namespace {
+
+// A command cut short by SIGINT or SIGTERM exits 130 whichever it was (README.md, "Exit codes"),
+// not as a process killed by the signal. `billiard loop` installs handlers of its own that end
+// its session cleanly, with the same status.
+void ExitStopped(int) { _exit(130); }
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  for (int signal_number : {SIGINT, SIGTERM}) std::signal(signal_number, ExitStopped);
   CLI::App app{"billiard: ball physics for a billiard-playing robot"};
   app.require_subcommand(1);
   // Parse errors in one line, like every other user error of the tool.
