@@ -138,7 +138,8 @@ void WritePlannerReport(const PlannerBenchmarkResult& r, const std::string& dir)
      << "0.6 m/s, every spin style and slide lengths, a third with side spin up to 20 rad/s. "
      << "Each plan's launch is simulated again with the simulator's defaults (approx model, "
      << "RODAS4, tolerance 1e-7) and its miss measured where the speed falls to the requested "
-     << "value. Wall times on one core of this 2-core machine; the closed-form variant's include the "
+     << "value. Wall times on one core of this 2-core machine; the closed-form variant's include "
+        "the "
      << "two 5-DOF simulations that measure its miss and path. Produced by `billiard "
      << "bench-planner --requests " << r.requests << " --seed " << r.seed << "`.\n\n"
      << "| variant | planned | refused | median / p95 solve us | median simulations | median "
@@ -149,9 +150,9 @@ void WritePlannerReport(const PlannerBenchmarkResult& r, const std::string& dir)
     md << "| " << v.name << " | " << s.ok << " | " << Refusals(s) << " | "
        << Fixed(Quantile(s.solve_us, 0.5), 0) << " / " << Fixed(Quantile(s.solve_us, 0.95), 0)
        << " | " << Fixed(Quantile(s.simulations, 0.5), 0) << " | "
-       << Fixed(Quantile(s.iterations, 0.5), 0) << " | " << Sci(Quantile(s.verified, 0.5))
-       << " / " << Sci(Quantile(s.verified, 0.95)) << " / " << Sci(Quantile(s.verified, 1.0))
-       << " | " << s.within << "/" << s.ok << " |\n";
+       << Fixed(Quantile(s.iterations, 0.5), 0) << " | " << Sci(Quantile(s.verified, 0.5)) << " / "
+       << Sci(Quantile(s.verified, 0.95)) << " / " << Sci(Quantile(s.verified, 1.0)) << " | "
+       << s.within << "/" << s.ok << " |\n";
   }
 
   const std::string refined = PlannerVariants()[1].name;
@@ -163,9 +164,9 @@ void WritePlannerReport(const PlannerBenchmarkResult& r, const std::string& dir)
   for (const auto& [spin, unused] : spins) {
     const Summary s = Summarise(r, refined, spin);
     md << "| " << spin << " | " << s.ok << "/" << s.runs << " | "
-       << Sci(Quantile(s.closed_form, 0.5)) << " / " << Sci(Quantile(s.closed_form, 0.95))
-       << " / " << Sci(Quantile(s.closed_form, 1.0)) << " | " << Sci(Quantile(s.verified, 1.0))
-       << " | " << Fixed(Quantile(s.solve_us, 0.5), 0) << " |\n";
+       << Sci(Quantile(s.closed_form, 0.5)) << " / " << Sci(Quantile(s.closed_form, 0.95)) << " / "
+       << Sci(Quantile(s.closed_form, 1.0)) << " | " << Sci(Quantile(s.verified, 1.0)) << " | "
+       << Fixed(Quantile(s.solve_us, 0.5), 0) << " |\n";
   }
 
   const Summary s = Summarise(r, refined);
@@ -174,12 +175,13 @@ void WritePlannerReport(const PlannerBenchmarkResult& r, const std::string& dir)
      << "- every planned shot within 0.5 mm when re-simulated: " << s.within << " of " << s.ok
      << ": " << (s.within == s.ok ? "**met**" : "**missed**") << "\n"
      << "- median solve under 5 ms on one core: " << Fixed(median_us / 1000.0, 2) << " ms (p95 "
-     << Fixed(Quantile(s.solve_us, 0.95) / 1000.0, 2) << " ms): "
-     << (median_us < kSolveTargetUs ? "**met**" : "**missed**") << "\n\nRefused requests:\n\n";
+     << Fixed(Quantile(s.solve_us, 0.95) / 1000.0, 2)
+     << " ms): " << (median_us < kSolveTargetUs ? "**met**" : "**missed**")
+     << "\n\nRefused requests:\n\n";
   for (const PlannerRun& run : r.runs) {
     if (run.variant == refined && run.plan.status != planner::PlanStatus::kOk) {
-      md << "- request " << run.request << " (" << SpinChoice(run.shot) << "): "
-         << planner::PlanStatusName(run.plan.status) << ", " << run.plan.reason << "\n";
+      md << "- request " << run.request << " (" << SpinChoice(run.shot)
+         << "): " << planner::PlanStatusName(run.plan.status) << ", " << run.plan.reason << "\n";
     }
   }
   if (!md) throw std::runtime_error("writing the planner report failed");

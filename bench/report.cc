@@ -33,9 +33,9 @@ void WriteCsv(const BenchmarkResult& r, const std::string& path) {
   for (const MethodRun& run : r.runs) {
     std::string failure = run.failure;
     std::replace(failure.begin(), failure.end(), ',', ';');
-    out << run.method << ',' << run.scene << ',' << run.group << ',' << run.kind << ','
-        << run.ok << ',' << run.wall_us << ',' << run.steps << ',' << run.rhs_evals << ','
-        << run.error_self_m << ',' << run.error_integral_m << ',' << failure << '\n';
+    out << run.method << ',' << run.scene << ',' << run.group << ',' << run.kind << ',' << run.ok
+        << ',' << run.wall_us << ',' << run.steps << ',' << run.rhs_evals << ',' << run.error_self_m
+        << ',' << run.error_integral_m << ',' << failure << '\n';
   }
   if (!out) throw std::runtime_error("writing '" + path + "' failed");
 }
@@ -49,8 +49,8 @@ void SummaryTable(std::ostream& md, const BenchmarkResult& r, const std::string&
     md << "| " << s.method.Name() << " | " << Fixed(s.median_us, 2) << " | " << Fixed(s.p95_us, 2)
        << " | " << Fixed(s.median_steps, 0) << " | " << Fixed(s.median_rhs_evals, 0) << " | "
        << Sci(s.p95_error_self_m) << " | " << Sci(s.median_error_integral_m) << " / "
-       << Sci(s.p95_error_integral_m) << " / " << Sci(s.max_error_integral_m) << " | "
-       << s.failures << "/" << s.runs << " |\n";
+       << Sci(s.p95_error_integral_m) << " / " << Sci(s.max_error_integral_m) << " | " << s.failures
+       << "/" << s.runs << " |\n";
   }
 }
 
@@ -65,16 +65,16 @@ void Targets(std::ostream& md, const BenchmarkResult& r) {
   if (approx) {
     const bool met = approx->median_us < 100.0;
     md << "- Approx model, 8 s shot, endpoint error < 1e-6 m (p95 against the approx model "
-          "converged): " << approx->method.Name() << " takes a median of "
-       << Fixed(approx->median_us, 1) << " us (p95 " << Fixed(approx->p95_us, 1) << " us): "
-       << (met ? "**met** (target 100 us)." : "**missed** (target 100 us).") << "\n";
+          "converged): "
+       << approx->method.Name() << " takes a median of " << Fixed(approx->median_us, 1)
+       << " us (p95 " << Fixed(approx->p95_us, 1)
+       << " us): " << (met ? "**met** (target 100 us)." : "**missed** (target 100 us).") << "\n";
   } else {
     md << "- Approx model below 1e-6 m: **missed**, no tolerance reached it on every scene.\n";
   }
   if (const MethodSummary* cf = Find(r, "closed-form", "all")) {
-    md << "- Closed form: median " << Fixed(cf->median_us, 3) << " us, p95 "
-       << Fixed(cf->p95_us, 3) << " us: " << (cf->median_us < 1.0 ? "**met**" : "**missed**")
-       << " (target 1 us).\n";
+    md << "- Closed form: median " << Fixed(cf->median_us, 3) << " us, p95 " << Fixed(cf->p95_us, 3)
+       << " us: " << (cf->median_us < 1.0 ? "**met**" : "**missed**") << " (target 1 us).\n";
   }
   md << "- Integral model as the reference: " << r.integral_reference.Name()
      << ", quadrature error estimate " << Sci(r.integral_reference_quadrature_error)
@@ -138,28 +138,29 @@ void WritePlot(const BenchmarkResult& r, const std::string& path) {
   x_min = std::floor(x_min), x_max = std::ceil(x_max + 1e-9);
   y_min = std::floor(y_min), y_max = std::ceil(y_max + 1e-9);
   const auto to_pixel = [&](double lx, double ly) {
-    return cv::Point(left + static_cast<int>((lx - x_min) / (x_max - x_min) * (width - left - right)),
-                     height - bottom -
-                         static_cast<int>((ly - y_min) / (y_max - y_min) * (height - top - bottom)));
+    return cv::Point(
+        left + static_cast<int>((lx - x_min) / (x_max - x_min) * (width - left - right)),
+        height - bottom -
+            static_cast<int>((ly - y_min) / (y_max - y_min) * (height - top - bottom)));
   };
   const cv::Scalar black(0, 0, 0), grey(210, 210, 210);
   for (double lx = x_min; lx <= x_max; ++lx) {
     cv::line(image, to_pixel(lx, y_min), to_pixel(lx, y_max), grey);
-    cv::putText(image, "1e" + std::to_string(static_cast<int>(lx)), to_pixel(lx, y_min) + cv::Point(-15, 22),
-                cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
+    cv::putText(image, "1e" + std::to_string(static_cast<int>(lx)),
+                to_pixel(lx, y_min) + cv::Point(-15, 22), cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
   }
   for (double ly = y_min; ly <= y_max; ++ly) {
     cv::line(image, to_pixel(x_min, ly), to_pixel(x_max, ly), grey);
-    cv::putText(image, "1e" + std::to_string(static_cast<int>(ly)), to_pixel(x_min, ly) + cv::Point(-50, 5),
-                cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
+    cv::putText(image, "1e" + std::to_string(static_cast<int>(ly)),
+                to_pixel(x_min, ly) + cv::Point(-50, 5), cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
   }
   cv::rectangle(image, to_pixel(x_min, y_max), to_pixel(x_max, y_min), black);
   cv::putText(image, "median wall time per shot [us]", cv::Point(left + 150, height - 25),
               cv::FONT_HERSHEY_SIMPLEX, 0.55, black);
   cv::putText(image, "p95 endpoint error vs integral converged [m]", cv::Point(10, 25),
               cv::FONT_HERSHEY_SIMPLEX, 0.55, black);
-  const cv::Scalar colours[] = {{200, 60, 20}, {30, 140, 30}, {20, 20, 200}, {160, 30, 160},
-                                {0, 140, 200}};
+  const cv::Scalar colours[] = {
+      {200, 60, 20}, {30, 140, 30}, {20, 20, 200}, {160, 30, 160}, {0, 140, 200}};
   int index = 0;
   for (auto& [family, points] : families) {
     const cv::Scalar colour = colours[index % 5];
@@ -217,8 +218,11 @@ nlohmann::json SummaryJson(const BenchmarkResult& r, const std::string& dir) {
                        {"p95_error_integral_m", s.p95_error_integral_m},
                        {"failures", s.failures}});
   }
-  return {{"out", dir},        {"scenes", r.scenes.size()}, {"runs", r.runs.size()},
-          {"wall_s", r.wall_s}, {"methods", methods}};
+  return {{"out", dir},
+          {"scenes", r.scenes.size()},
+          {"runs", r.runs.size()},
+          {"wall_s", r.wall_s},
+          {"methods", methods}};
 }
 
 void WriteReport(const BenchmarkResult& result, const std::string& dir) {

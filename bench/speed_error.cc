@@ -158,11 +158,11 @@ std::vector<Method> BenchmarkMethods(bool quick) {
   using M = physics::Model;
   using I = physics::Integrator;
   std::vector<Method> methods = {{M::kClosedForm, I::kRodas4, 0.0, 0.0}};
-  const std::vector<double> rodas = quick ? std::vector<double>{1e-5, 1e-7}
-                                          : std::vector<double>{1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+  const std::vector<double> rodas =
+      quick ? std::vector<double>{1e-5, 1e-7} : std::vector<double>{1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
   for (double tol : rodas) methods.push_back({M::kApproximate, I::kRodas4, tol, 0.0});
-  const std::vector<double> dopri = quick ? std::vector<double>{1e-6}
-                                          : std::vector<double>{1e-5, 1e-7};
+  const std::vector<double> dopri =
+      quick ? std::vector<double>{1e-6} : std::vector<double>{1e-5, 1e-7};
   for (double tol : dopri) methods.push_back({M::kApproximate, I::kDopri5, tol, 0.0});
   methods.push_back({M::kIntegral, I::kRodas4, 1e-5, 1e-3});
   if (!quick) methods.push_back({M::kIntegral, I::kRodas4, 1e-7, 1e-6});
@@ -217,8 +217,7 @@ BenchmarkResult RunBenchmark(const physics::ModelParameters& p, const BenchmarkO
       result.summaries.push_back(Summarize(method, kind, result.runs));
     }
   }
-  result.wall_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

@@ -33,7 +33,7 @@ struct MethodRun {
   std::string method, scene, group;
   std::string kind;  // SceneKindOf (model_choice.h)
   bool ok = true;
-  std::string failure;  // why the run failed, when !ok
+  std::string failure;   // why the run failed, when !ok
   double wall_us = 0.0;  // mean of repeated runs for the cheap ones
   long steps = 0, rhs_evals = 0;
   double error_self_m = 0.0;      // endpoint distance from the same model converged

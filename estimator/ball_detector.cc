@@ -25,9 +25,9 @@ constexpr int kRays = 32;
 
 // The cloth colour at one place, ready for Ballness().
 struct LocalCloth {
-  cv::Vec3f unit;     // cloth colour direction
-  float inv_norm;     // 1 / |cloth colour|
-  float inv_across;   // 1 / across-hue distance at which ballness saturates
+  cv::Vec3f unit;    // cloth colour direction
+  float inv_norm;    // 1 / |cloth colour|
+  float inv_across;  // 1 / across-hue distance at which ballness saturates
 };
 
 LocalCloth MakeLocalCloth(const cv::Vec3f& colour, double noise) {
@@ -225,7 +225,8 @@ ClothModel LearnCloth(const cv::Mat& small, double scale, double radius_small, c
   const int n = cv::connectedComponentsWithStats(cloth, labels, stats, centroids, 4);
   int largest = 0;
   for (int i = 1; i < n; ++i) {
-    if (largest == 0 || stats.at<int>(i, cv::CC_STAT_AREA) > stats.at<int>(largest, cv::CC_STAT_AREA)) {
+    if (largest == 0 ||
+        stats.at<int>(i, cv::CC_STAT_AREA) > stats.at<int>(largest, cv::CC_STAT_AREA)) {
       largest = i;
     }
   }
@@ -282,7 +283,8 @@ inline float Bilinear(const cv::Mat& m, double x, double y) {
   const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
   const float* r0 = m.ptr<float>(y0);
   const float* r1 = m.ptr<float>(y0 + 1);
-  return (1 - fy) * ((1 - fx) * r0[x0] + fx * r0[x0 + 1]) + fy * ((1 - fx) * r1[x0] + fx * r1[x0 + 1]);
+  return (1 - fy) * ((1 - fx) * r0[x0] + fx * r0[x0 + 1]) +
+         fy * ((1 - fx) * r1[x0] + fx * r1[x0 + 1]);
 }
 
 struct CircleFit {
@@ -609,12 +611,14 @@ std::vector<Eigen::Vector2d> Candidates(const cv::Mat& ballness, const cv::Mat& 
   cv::integral(ballness, sum, CV_32F);
   const auto box = [&](int x, int y, int half) {
     const int x0 = std::max(0, x - half), y0 = std::max(0, y - half);
-    const int x1 = std::min(ballness.cols, x + half + 1), y1 = std::min(ballness.rows, y + half + 1);
+    const int x1 = std::min(ballness.cols, x + half + 1),
+              y1 = std::min(ballness.rows, y + half + 1);
     return sum.at<float>(y1, x1) - sum.at<float>(y0, x1) - sum.at<float>(y1, x0) +
            sum.at<float>(y0, x0);
   };
   const float in_area = static_cast<float>((2 * in + 1) * (2 * in + 1));
-  const float ring_area = static_cast<float>((2 * out + 1) * (2 * out + 1) - (2 * mid + 1) * (2 * mid + 1));
+  const float ring_area =
+      static_cast<float>((2 * out + 1) * (2 * out + 1) - (2 * mid + 1) * (2 * mid + 1));
   cv::Mat response(ballness.size(), CV_32F, cv::Scalar(0));
   for (int y = 0; y < ballness.rows; ++y) {
     const float* b = ballness.ptr<float>(y);
@@ -670,8 +674,8 @@ void BallDetector::LearnCloth(const cv::Mat& image) {
     }
     std::vector<double> radii;
     for (const auto& pixel : Candidates(ballness, cloth_.area, factor, guess / factor)) {
-      const auto fit = RefineBall(bgr, pixel, guess,
-                                  MakeLocalCloth(cloth_.ColourAt(pixel), cloth_.noise), 0.0);
+      const auto fit =
+          RefineBall(bgr, pixel, guess, MakeLocalCloth(cloth_.ColourAt(pixel), cloth_.noise), 0.0);
       if (fit) radii.push_back(fit->radius_px);
       if (radii.size() == 30) break;
     }
@@ -683,8 +687,8 @@ void BallDetector::LearnCloth(const cv::Mat& image) {
     radius_px_ = radii[radii.size() / 2];
   }
   const int factor = SearchFactor(radius_px_);
-  cloth_ = billiard::estimator::LearnCloth(Reduce(bgr, factor), 1.0 / factor,
-                                           radius_px_ / factor, &ballness);
+  cloth_ = billiard::estimator::LearnCloth(Reduce(bgr, factor), 1.0 / factor, radius_px_ / factor,
+                                           &ballness);
   cloth_.frame_size = bgr.size();
 }
 

@@ -21,9 +21,9 @@
 // too) and on lines (never full inside). Each peak is then refined at full resolution by
 // RefineAt: the ball's edge is found along rays from the centre, each where the contrast falls to
 // half that of its own ray's rim (shading and highlights differ from ray to ray), and a circle is
-// fitted to it with outliers (rays into a touching ball, an occluder or the cushion) dropped. The fit says
-// what a ball is: enough of a round edge at the expected radius, ball-coloured inside, and, when
-// brighter than the cloth, shaded like a sphere (a disc of projected light is flat).
+// fitted to it with outliers (rays into a touching ball, an occluder or the cushion) dropped. The
+// fit says what a ball is: enough of a round edge at the expected radius, ball-coloured inside,
+// and, when brighter than the cloth, shaded like a sphere (a disc of projected light is flat).
 #pragma once
 
 #include <Eigen/Core>
@@ -44,10 +44,10 @@ struct BallDetection {
 
 // The local colour of the cloth, learnt from a frame.
 struct ClothModel {
-  cv::Mat colour;     // CV_32FC3 (BGR) map of the cloth colour, one cell per `cell` full-res px
-  double cell = 0;    // full-resolution pixels per cell of `colour`
-  double noise = 0;   // robust spread of the cloth's colour across its own colour, relative
-  cv::Mat area;       // CV_8UC1 playing area (255 inside) at `area_scale` of full resolution
+  cv::Mat colour;    // CV_32FC3 (BGR) map of the cloth colour, one cell per `cell` full-res px
+  double cell = 0;   // full-resolution pixels per cell of `colour`
+  double noise = 0;  // robust spread of the cloth's colour across its own colour, relative
+  cv::Mat area;      // CV_8UC1 playing area (255 inside) at `area_scale` of full resolution
   double area_scale = 0;
   // At the search resolution (area_scale): the cloth's colour direction and 1 / its norm, per
   // pixel, so that a frame's ballness costs a few multiplications per pixel.

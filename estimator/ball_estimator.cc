@@ -37,10 +37,8 @@ bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats
   bool full = frames_++ % options_.full_detect_every == 0 || tracker_.tracks().empty();
   if (!full) {
     for (const Eigen::Vector2d& predicted : tracker_.Predict(time)) {
-      const auto found =
-          detector_.RefineAt(frame, camera_.Project({predicted.x(), predicted.y(),
-                                                     params_.ball.radius}),
-                             radius_px);
+      const auto found = detector_.RefineAt(
+          frame, camera_.Project({predicted.x(), predicted.y(), params_.ball.radius}), radius_px);
       if (!found) {
         full = true;
         break;

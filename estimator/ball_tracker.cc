@@ -19,9 +19,8 @@ void Transition(double dt, double jerk_density, Matrix6* f, Matrix6* q) {
   Eigen::Matrix3d f1, q1;
   f1 << 1, dt, 0.5 * dt * dt, 0, 1, dt, 0, 0, 1;
   const double dt2 = dt * dt, dt3 = dt2 * dt;
-  q1 << dt3 * dt2 / 20, dt2 * dt2 / 8, dt3 / 6,
-        dt2 * dt2 / 8, dt3 / 3, dt2 / 2,
-        dt3 / 6, dt2 / 2, dt;
+  q1 << dt3 * dt2 / 20, dt2 * dt2 / 8, dt3 / 6, dt2 * dt2 / 8, dt3 / 3, dt2 / 2, dt3 / 6, dt2 / 2,
+      dt;
   q1 *= jerk_density;
   // State order x, y, vx, vy, ax, ay: axis k holds entries k, k + 2, k + 4.
   f->setZero();
@@ -99,7 +98,8 @@ void BallTracker::Correct(TrackedBall& t, const Eigen::Vector2d& measured) const
     // and the acceleration to the sliding friction.
     const double dt = std::max(t.time - t.last_seen, 1e-3);
     const double mu_g = params_.contact.mu * params_.ball.gravity;
-    t.covariance.block<2, 2>(2, 2) += (innovation.squaredNorm() / (dt * dt)) * Eigen::Matrix2d::Identity();
+    t.covariance.block<2, 2>(2, 2) +=
+        (innovation.squaredNorm() / (dt * dt)) * Eigen::Matrix2d::Identity();
     t.covariance.block<2, 2>(4, 4) += mu_g * mu_g * Eigen::Matrix2d::Identity();
   }
   const Eigen::Matrix2d s = t.covariance.topLeftCorner<2, 2>() + r2 * Eigen::Matrix2d::Identity();
@@ -145,11 +145,10 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
     t.last_seen = time;
     t.confirmed = t.confirmed || ++t.hits >= options_.hits_to_confirm;
   }
-  tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(),
-                               [&](const TrackedBall& t) {
-                                 return time - t.last_seen > options_.max_coast;
-                               }),
-                tracks_.end());
+  tracks_.erase(
+      std::remove_if(tracks_.begin(), tracks_.end(),
+                     [&](const TrackedBall& t) { return time - t.last_seen > options_.max_coast; }),
+      tracks_.end());
 
   // A new ball: at rest until seen moving, its velocity open to anything a cue gives.
   const double r2 = options_.measurement_sigma * options_.measurement_sigma;

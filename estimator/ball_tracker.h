@@ -2,8 +2,9 @@
 //
 // Process model: what a billiard ball does between two frames, not constant velocity.
 //  - state (x, y, vx, vy, ax, ay): while a ball slides its friction force is constant (mu m g
-//    against a slip direction that does not turn, Jaroukh 2019, eqs. 6-7), so constant acceleration is
-//    its exact motion; while it rolls the acceleration is the small 5/7 mu_r g against v;
+//    against a slip direction that does not turn, Jaroukh 2019, eqs. 6-7), so constant
+//    acceleration is its exact motion; while it rolls the acceleration is the small 5/7 mu_r g
+//    against v;
 //  - the jerk noise is that of rolling, and a maneuver test (the innovation's chi-square) opens
 //    the acceleration to mu g when the phase changes (the cue strike, the end of sliding, a stop);
 //  - a ball never reverses by friction: a prediction that would turn the velocity back stops the
@@ -38,8 +39,8 @@ struct TrackerOptions {
 
 struct TrackedBall {
   int id = 0;
-  double time = 0.0;                    // of the state [s]
-  Eigen::Matrix<double, 6, 1> state;    // x, y, vx, vy, ax, ay
+  double time = 0.0;                  // of the state [s]
+  Eigen::Matrix<double, 6, 1> state;  // x, y, vx, vy, ax, ay
   Eigen::Matrix<double, 6, 6> covariance;
   int hits = 0;
   double last_seen = 0.0;

@@ -51,7 +51,8 @@ double BorderContrast(const cv::Mat& grey, const Quad& q) {
     int n = 0;
     for (int y = from; y < kSize - from; ++y) {
       for (int x = from; x < kSize - from; ++x) {
-        const int depth = std::min({x - from, y - from, kSize - from - 1 - x, kSize - from - 1 - y});
+        const int depth =
+            std::min({x - from, y - from, kSize - from - 1 - x, kSize - from - 1 - y});
         if (depth < to - from) {
           sum += warped.at<uint8_t>(y, x);
           ++n;
@@ -71,8 +72,8 @@ MarkerCandidate Candidate(const cv::Mat& grey, const Quad& q, bool decoded) {
   std::array<double, 4> sides;
   for (int i = 0; i < 4; ++i) sides[i] = cv::norm(q[(i + 1) % 4] - q[i]);
   c.side = (sides[0] + sides[1] + sides[2] + sides[3]) / 4;
-  const double squareness = *std::min_element(sides.begin(), sides.end()) /
-                            *std::max_element(sides.begin(), sides.end());
+  const double squareness =
+      *std::min_element(sides.begin(), sides.end()) / *std::max_element(sides.begin(), sides.end());
   c.contrast = squareness > 0.7 ? BorderContrast(grey, q) : 0.0;
   return c;
 }
@@ -119,8 +120,8 @@ std::optional<std::array<Eigen::Vector2d, 4>> FindCornerMarkers(const cv::Mat& i
   for (int k = 0; k < 4; ++k) {
     const MarkerCandidate* best = nullptr;
     for (const auto& c : candidates) {
-      const bool marker_like = (c.decoded || c.contrast > 40) && c.side > 0.7 * typical &&
-                               c.side < 1.4 * typical;
+      const bool marker_like =
+          (c.decoded || c.contrast > 40) && c.side > 0.7 * typical && c.side < 1.4 * typical;
       // In this corner's quadrant of the image.
       const Eigen::Vector2d half(0.5 * image.cols, 0.5 * image.rows);
       const bool in_quadrant = ((c.centre - half).array() * (corners[k] - half).array() > 0).all();

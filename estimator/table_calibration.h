@@ -58,7 +58,7 @@ std::optional<std::array<Eigen::Vector2d, 4>> FindCornerMarkers(const cv::Mat& i
 struct CalibrationResult {
   camera::CameraModel camera;
   std::array<Eigen::Vector2d, 4> markers;  // found centres [px]
-  double rms_reprojection_px = 0;         // of the marker centres
+  double rms_reprojection_px = 0;          // of the marker centres
 };
 
 // The camera over the table. `intrinsics` supplies the image size, focal lengths, principal

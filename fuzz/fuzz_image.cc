@@ -8,8 +8,7 @@
 #include "lcmtypes/image_codec.h"
 #include "lcmtypes/testing/damaged_jpeg.h"
 
-extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size,
-                                        std::size_t max_size);
+extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size);
 
 namespace billiard::fuzz {
 namespace {
@@ -44,8 +43,7 @@ std::string Describe(const image_t& m) {
 // What a decoded frame must be: the announced size, the channels of its format, and the same
 // pixels again after a round trip through the encoder the simulator uses.
 void RequireDecodedFrame(const image_t& m, const messages::DecodedImage& d) {
-  if (!d.error.empty() || d.image.empty() || d.image.cols != m.width ||
-      d.image.rows != m.height) {
+  if (!d.error.empty() || d.image.empty() || d.image.cols != m.width || d.image.rows != m.height) {
     Fail("DecodeImage accepted a " + Describe(m) + " frame as " + std::to_string(d.image.cols) +
          "x" + std::to_string(d.image.rows) + " (error '" + d.error + "')");
   }
@@ -63,8 +61,8 @@ void RequireDecodedFrame(const image_t& m, const messages::DecodedImage& d) {
   const messages::DecodedImage again =
       messages::DecodeImage(messages::EncodeImage(d.image, m.utime, encoding), kLimits);
   if (!again.ok || again.image.size() != d.image.size() || again.image.type() != d.image.type()) {
-    Fail("a decoded " + Describe(m) + " frame, encoded again, does not decode to its size: " +
-         again.error);
+    Fail("a decoded " + Describe(m) +
+         " frame, encoded again, does not decode to its size: " + again.error);
   }
   if (encoding != messages::ImageEncoding::kMjpeg &&
       cv::norm(again.image, d.image, cv::NORM_INF) != 0) {

@@ -169,8 +169,7 @@ std::string CheckBall(const ball_state_t& b) {
   if (std::hypot(b.velocity[0], b.velocity[1]) > kMaxSpeed) {
     return ball + " is faster than " + std::to_string(kMaxSpeed) + " m/s";
   }
-  if (std::sqrt(b.spin[0] * b.spin[0] + b.spin[1] * b.spin[1] + b.spin[2] * b.spin[2]) >
-      kMaxSpin) {
+  if (std::sqrt(b.spin[0] * b.spin[0] + b.spin[1] * b.spin[1] + b.spin[2] * b.spin[2]) > kMaxSpin) {
     return ball + " spins faster than " + std::to_string(kMaxSpin) + " rad/s";
   }
   return {};

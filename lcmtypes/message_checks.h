@@ -26,14 +26,14 @@
 namespace billiard::messages {
 
 // Limits of a sane message.
-inline constexpr int kMaxBalls = 64;               // balls in one table_state_t
-inline constexpr int kMaxPathPoints = 100000;      // points of a cue_command_t's path
-inline constexpr int kMaxReasonLength = 4096;      // bytes of a string field
-inline constexpr double kMaxPosition = 100.0;      // |X|, |Y| [m]
-inline constexpr double kMaxSpeed = 100.0;         // |v| [m/s]
-inline constexpr double kMaxSpin = 1.0e4;          // |w| [rad/s]
-inline constexpr int kMaxImageBytes = 64 << 20;    // image_t data
-inline constexpr int kMaxImageSide = 16384;        // image_t width, height [px]
+inline constexpr int kMaxBalls = 64;             // balls in one table_state_t
+inline constexpr int kMaxPathPoints = 100000;    // points of a cue_command_t's path
+inline constexpr int kMaxReasonLength = 4096;    // bytes of a string field
+inline constexpr double kMaxPosition = 100.0;    // |X|, |Y| [m]
+inline constexpr double kMaxSpeed = 100.0;       // |v| [m/s]
+inline constexpr double kMaxSpin = 1.0e4;        // |w| [rad/s]
+inline constexpr int kMaxImageBytes = 64 << 20;  // image_t data
+inline constexpr int kMaxImageSide = 16384;      // image_t width, height [px]
 
 // Decodes the `size` bytes at `data` (a whole LCM payload, hash included) into `out`: the empty
 // string, or why the payload is not a message of that type. `out` is unspecified after a refusal.

@@ -15,18 +15,27 @@ std::optional<SpinStyle> ParseSpinStyle(const std::string& name) {
 
 double SpinRatio(SpinStyle style) {
   switch (style) {
-    case SpinStyle::kStun: return 0.0;
-    case SpinStyle::kFollow: return 0.5;
-    case SpinStyle::kNatural: return 1.0;
-    case SpinStyle::kDraw: return -1.0;
+    case SpinStyle::kStun:
+      return 0.0;
+    case SpinStyle::kFollow:
+      return 0.5;
+    case SpinStyle::kNatural:
+      return 1.0;
+    case SpinStyle::kDraw:
+      return -1.0;
   }
   return 1.0;
 }
 
 LaunchSolution InvertClosedForm(const ShotRequest& q, const physics::ClosedFormParameters& p) {
   LaunchSolution s;
-  const double numbers[] = {q.from.x(), q.from.y(), q.to.x(), q.to.y(), q.final_speed,
-                            q.side_spin, q.slide_length.value_or(0.0)};
+  const double numbers[] = {q.from.x(),
+                            q.from.y(),
+                            q.to.x(),
+                            q.to.y(),
+                            q.final_speed,
+                            q.side_spin,
+                            q.slide_length.value_or(0.0)};
   for (double x : numbers) {
     if (!std::isfinite(x)) {
       s.reason = "request has a non-finite number";
@@ -75,9 +84,10 @@ LaunchSolution InvertClosedForm(const ShotRequest& q, const physics::ClosedFormP
     if (roll_decel == 0.0) {
       // v1 = v2: the arrival is where the sliding ends (short of the target unless x1 is the
       // distance), and there the regularized 5-DOF speed only tends to v2.
-      s.reason = "without rolling resistance the ball comes down to its final speed only as it "
-                 "stops sliding, and rolls on at it: give a spin style (draw or stun arrive "
-                 "still sliding)";
+      s.reason =
+          "without rolling resistance the ball comes down to its final speed only as it "
+          "stops sliding, and rolls on at it: give a spin style (draw or stun arrive "
+          "still sliding)";
       return s;
     }
     const double v1 = std::sqrt(v2 * v2 + 2.0 * roll_decel * (distance - x1));
@@ -98,8 +108,9 @@ LaunchSolution InvertClosedForm(const ShotRequest& q, const physics::ClosedFormP
       // stays on the line) and stays at v1 = (5 + 2k) v0 / 7 once it rolls, so the ball must
       // come down to v2 at the target while still sliding.
       if (k >= 1.0) {
-        s.reason = "without rolling resistance a rolling ball keeps its speed: it never slows to "
-                   "the final speed (draw or stun make it slide)";
+        s.reason =
+            "without rolling resistance a rolling ball keeps its speed: it never slows to "
+            "the final speed (draw or stun make it slide)";
         return s;
       }
       v0 = std::sqrt(v2 * v2 + 2.0 * mu_g * distance);
@@ -108,8 +119,8 @@ LaunchSolution InvertClosedForm(const ShotRequest& q, const physics::ClosedFormP
         std::ostringstream reason;
         reason.precision(3);
         reason << "without rolling resistance the ball slows only while it slides: with this "
-                  "spin it rolls on at " << v1 << " m/s before the target and never slows to "
-               << v2 << " m/s";
+                  "spin it rolls on at "
+               << v1 << " m/s before the target and never slows to " << v2 << " m/s";
         s.reason = reason.str();
         return s;
       }

@@ -28,7 +28,7 @@ double SpinRatio(SpinStyle style);
 
 struct ShotRequest {
   Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
-  double final_speed = 0.0;  // at the target [m/s]
+  double final_speed = 0.0;            // at the target [m/s]
   std::optional<double> slide_length;  // x1 [m]; when absent, `style` fixes the spin
   SpinStyle style = SpinStyle::kNatural;
   double side_spin = 0.0;  // wz [rad/s]
@@ -36,7 +36,7 @@ struct ShotRequest {
 
 struct LaunchSolution {
   bool ok = false;
-  std::string reason;  // why not, when !ok
+  std::string reason;      // why not, when !ok
   bool malformed = false;  // refused because the request itself is malformed, not out of reach
   Eigen::Vector2d v0 = Eigen::Vector2d::Zero();
   Eigen::Vector3d w0 = Eigen::Vector3d::Zero();

@@ -11,11 +11,16 @@ namespace billiard::planner {
 
 std::string PlanStatusName(PlanStatus status) {
   switch (status) {
-    case PlanStatus::kOk: return "ok";
-    case PlanStatus::kInvalid: return "invalid";
-    case PlanStatus::kOffTable: return "off_table";
-    case PlanStatus::kUnreachable: return "unreachable";
-    case PlanStatus::kNotConverged: return "not_converged";
+    case PlanStatus::kOk:
+      return "ok";
+    case PlanStatus::kInvalid:
+      return "invalid";
+    case PlanStatus::kOffTable:
+      return "off_table";
+    case PlanStatus::kUnreachable:
+      return "unreachable";
+    case PlanStatus::kNotConverged:
+      return "not_converged";
   }
   return "?";
 }
@@ -188,7 +193,8 @@ std::optional<ShotPlan> CheckRequest(const ShotRequest& q, const physics::ModelP
   if (!OnTable(q.to, params)) {
     return Refused(PlanStatus::kOffTable,
                    "the target is beyond the playing surface (its centre must stay a radius "
-                   "inside the " + std::to_string(params.table.length) + " x " +
+                   "inside the " +
+                       std::to_string(params.table.length) + " x " +
                        std::to_string(params.table.width) + " m table)");
   }
   if (!guess->ok) return Refused(PlanStatus::kUnreachable, guess->reason);

@@ -19,8 +19,9 @@ inline constexpr char kDefaultParameterSet[] = "pool";
 // The names of the built-in parameter sets ("paper", "pool").
 std::vector<std::string> BuiltinParameterSetNames();
 
-// A built-in set by name, or a JSON file by path (then `file` holds the path). Throws std::invalid_argument with a one-line
-// reason on an unknown name, an unreadable file, a missing field or a value out of range.
+// A built-in set by name, or a JSON file by path (then `file` holds the path). Throws
+// std::invalid_argument with a one-line reason on an unknown name, an unreadable file, a missing
+// field or a value out of range.
 physics::ModelParameters LoadParameters(const std::string& name_or_path);
 
 // Parses a parameter set from JSON text (the format of sim/params/*.json): the objects "ball",

@@ -1,5 +1,5 @@
-// The integral friction model of Kudra et al. 2016 (eqs. 5 and 16): Coulomb friction integrated over the
-// circular contact patch under the shifted Hertz pressure of eq. 1.
+// The integral friction model of Kudra et al. 2016 (eqs. 5 and 16): Coulomb friction integrated
+// over the circular contact patch under the shifted Hertz pressure of eq. 1.
 //
 // Why the quadrature is built around the instantaneous centre of rotation (ICR): the local slip
 // v_P = (vsx - ws y, vsy + ws x) vanishes at c = (-vsy, vsx) / ws, where its direction jumps, so

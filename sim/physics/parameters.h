@@ -1,10 +1,10 @@
 // Physical and contact parameters of a ball on a cloth, as named data sets.
 //
-// The contact parameters follow Kudra et al. 2016: the patch radius a (the paper's \hat a), the Coulomb
-// coefficient mu, the rolling-resistance parameter d (shift of the pressure centre, eq. 1), the
-// regularization parameters eps_t and eps_r (eqs. 14-17) and the approximation's fitted
-// constants b_T, m_T, b_M, m_M (eq. 17). The closed-form model (Jaroukh 2019) reads the same set:
-// mu_s = mu and mu_r = a d / (5 r) (shared/docs/physics-notes.md, section 2).
+// The contact parameters follow Kudra et al. 2016: the patch radius a (the paper's \hat a), the
+// Coulomb coefficient mu, the rolling-resistance parameter d (shift of the pressure centre,
+// eq. 1), the regularization parameters eps_t and eps_r (eqs. 14-17) and the approximation's
+// fitted constants b_T, m_T, b_M, m_M (eq. 17). The closed-form model (Jaroukh 2019) reads the
+// same set: mu_s = mu and mu_r = a d / (5 r) (shared/docs/physics-notes.md, section 2).
 #pragma once
 
 #include <array>

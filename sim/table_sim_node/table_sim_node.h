@@ -156,10 +156,10 @@ class TableSimNode {
   std::function<bool()> alongside_;
   std::vector<lcm::Subscription*> subscriptions_;
   Eigen::Vector2d ball_;
-  double time_ = 0.0;                     // sim time [s]
-  std::optional<table_state_t> state_;    // the estimator's latest
-  std::optional<cue_command_t> command_;  // the planner's latest
-  std::optional<image_t> held_frame_;     // reordered: sent after the next
+  double time_ = 0.0;                           // sim time [s]
+  std::optional<table_state_t> state_;          // the estimator's latest
+  std::optional<cue_command_t> command_;        // the planner's latest
+  std::optional<image_t> held_frame_;           // reordered: sent after the next
   std::map<std::string, node_status_t> peers_;  // the latest status of each peer
 };
 

@@ -26,7 +26,9 @@ void Run(BenchArgs args) {
   const physics::ModelParameters params = LoadParametersOption(args.params);
   RequireWritableDirectory(args.out, "--out");
   args.options.quick = args.quick;
-  args.options.progress = [](const std::string& line) { std::cerr << "bench: " << line << std::endl; };
+  args.options.progress = [](const std::string& line) {
+    std::cerr << "bench: " << line << std::endl;
+  };
   const bench::BenchmarkResult result = bench::RunBenchmark(params, args.options);
   bench::WriteReport(result, args.out);
   std::cerr << "bench: wrote " << args.out << "/report.md, results.csv, speed_vs_error.png, "
@@ -46,7 +48,8 @@ void AddBenchCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--params", args->params, "paper | pool | path to a JSON parameter file")
       ->capture_default_str();
-  cmd->add_option("--shots", args->options.random_shots, "Random cue shots (default 200, quick 20)");
+  cmd->add_option("--shots", args->options.random_shots,
+                  "Random cue shots (default 200, quick 20)");
   cmd->add_option("--seed", args->options.seed, "Seed of the random shots")->capture_default_str();
   cmd->add_option("--threads", args->options.threads,
                   "Threads for the converged references (timing always uses one)")

@@ -46,7 +46,8 @@ void AddBenchEstimatorCommand(CLI::App& app) {
   cmd->add_option("--out", args->out, "Directory for estimator_report.md")->required();
   cmd->add_option("--scenes", args->options.scenes, "Number of scenes")->capture_default_str();
   cmd->add_option("--balls", args->options.balls, "Balls per scene (1-16)")->capture_default_str();
-  cmd->add_option("--struck", args->options.struck, "Balls struck per scene")->capture_default_str();
+  cmd->add_option("--struck", args->options.struck, "Balls struck per scene")
+      ->capture_default_str();
   cmd->add_option("--seed", args->options.seed, "Seed of the scenes")->capture_default_str();
   cmd->add_option("--params", args->params, "paper | pool | path to a JSON parameter file")
       ->capture_default_str();

@@ -22,7 +22,9 @@ void Run(const BenchPlannerArgs& args) {
   const physics::ModelParameters params = LoadParametersOption(args.params);
   RequireWritableDirectory(args.out, "--out");
   bench::PlannerBenchmarkOptions options = args.options;
-  options.progress = [](const std::string& line) { std::cerr << "bench-planner: " << line << std::endl; };
+  options.progress = [](const std::string& line) {
+    std::cerr << "bench-planner: " << line << std::endl;
+  };
   const bench::PlannerBenchmarkResult result = bench::RunPlannerBenchmark(params, options);
   bench::WritePlannerReport(result, args.out);
   std::cerr << "bench-planner: wrote " << args.out << "/planner_report.md, planner_results.csv ("

@@ -111,9 +111,8 @@ void Run(const BurstArgs& args) {
     return q;
   };
   const auto handle_until = [&](const std::function<bool()>& done, double seconds) {
-    const Clock::time_point deadline =
-        Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                           std::chrono::duration<double>(seconds));
+    const Clock::time_point deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                          std::chrono::duration<double>(seconds));
     while (!done() && Clock::now() < deadline) lcm.handleTimeout(20);
   };
 
@@ -165,19 +164,20 @@ void Run(const BurstArgs& args) {
               .count());
     }
   }
-  nlohmann::json j = {{"requests", args.requests},
-                      {"answered", answered},
-                      {"unanswered", args.requests - answered},
-                      {"answered_twice", replies.repeated},
-                      {"malformed_answers", replies.malformed},
-                      {"statuses", replies.statuses},
-                      {"send_s", send_s},
-                      {"total_s", total_s},
-                      {"latency_ms",
-                       {{"p50", bench::Quantile(latency_ms, 0.5)},
-                        {"p99", bench::Quantile(latency_ms, 0.99)},
-                        {"max", latency_ms.empty() ? 0.0 : *std::max_element(latency_ms.begin(),
-                                                                             latency_ms.end())}}}};
+  nlohmann::json j = {
+      {"requests", args.requests},
+      {"answered", answered},
+      {"unanswered", args.requests - answered},
+      {"answered_twice", replies.repeated},
+      {"malformed_answers", replies.malformed},
+      {"statuses", replies.statuses},
+      {"send_s", send_s},
+      {"total_s", total_s},
+      {"latency_ms",
+       {{"p50", bench::Quantile(latency_ms, 0.5)},
+        {"p99", bench::Quantile(latency_ms, 0.99)},
+        {"max",
+         latency_ms.empty() ? 0.0 : *std::max_element(latency_ms.begin(), latency_ms.end())}}}};
   if (replies.planner_status) {
     const node_status_t& s = *replies.planner_status;
     j["planner_status"] = {{"received", s.received},
@@ -191,11 +191,10 @@ void Run(const BurstArgs& args) {
   if (args.json) std::cout << j.dump() << std::endl;
   std::cerr << "burst: " << answered << " of " << args.requests << " answered in " << total_s
             << " s (sent in " << send_s << " s); " << j["statuses"].dump() << "; latency p50 "
-            << bench::Quantile(latency_ms, 0.5) << " ms, p99 " << bench::Quantile(latency_ms, 0.99) << " ms"
-            << std::endl;
+            << bench::Quantile(latency_ms, 0.5) << " ms, p99 " << bench::Quantile(latency_ms, 0.99)
+            << " ms" << std::endl;
   if (answered != args.requests) {
-    throw std::runtime_error(std::to_string(args.requests - answered) +
-                             " requests got no answer");
+    throw std::runtime_error(std::to_string(args.requests - answered) + " requests got no answer");
   }
 }
 
@@ -213,8 +212,8 @@ void AddBurstCommand(CLI::App& app) {
                   "Longest wait for the answers [s], and for the planner's first (at most 10 s)")
       ->capture_default_str();
   cmd->add_option("--state-age", args->state_age,
-                 "Stamp the ball's state this much before the requests [s]: beyond the planner's "
-                 "--max-state-age every answer must be stale_state")
+                  "Stamp the ball's state this much before the requests [s]: beyond the planner's "
+                  "--max-state-age every answer must be stale_state")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", args->json, "Print the figures as JSON on stdout");

@@ -30,8 +30,8 @@ std::vector<double> ParseNumberList(const std::string& text, std::size_t count,
     start = end + 1;
   }
   if (numbers.size() != count) {
-    throw UsageError(what + ": expected " + std::to_string(count) + " comma-separated numbers, got " +
-                     std::to_string(numbers.size()));
+    throw UsageError(what + ": expected " + std::to_string(count) +
+                     " comma-separated numbers, got " + std::to_string(numbers.size()));
   }
   return numbers;
 }

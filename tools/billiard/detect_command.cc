@@ -144,8 +144,8 @@ void RunDetect(const DetectArgs& args) {
 
   nlohmann::json list = nlohmann::json::array();
   for (const auto& b : balls) {
-    nlohmann::json j = {{"u", b.pixel.x()}, {"v", b.pixel.y()}, {"radius_px", b.radius_px},
-                        {"score", b.score}};
+    nlohmann::json j = {
+        {"u", b.pixel.x()}, {"v", b.pixel.y()}, {"radius_px", b.radius_px}, {"score", b.score}};
     if (camera) {
       const Eigen::Vector3d p = camera->Unproject(b.pixel, params.ball.radius);
       j["x"] = p.x();
@@ -154,7 +154,8 @@ void RunDetect(const DetectArgs& args) {
     list.push_back(j);
   }
   if (args.json) {
-    std::cout << nlohmann::json{{"balls", list}, {"radius_px", detector.radius_px()},
+    std::cout << nlohmann::json{{"balls", list},
+                                {"radius_px", detector.radius_px()},
                                 {"detect_us", us}}
                      .dump()
               << std::endl;

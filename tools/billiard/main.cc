@@ -1,6 +1,6 @@
 // billiard: simulate a ball, fit the contact model, plan a shot, find the balls in a frame.
-#include <CLI/CLI.hpp>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <csignal>
 #include <exception>

@@ -106,8 +106,8 @@ void AddPlanCommand(CLI::App& app) {
   cmd->add_option("--to", args->to, "Target X,Y [m]")->required();
   cmd->add_option("--final-speed", args->final_speed, "Speed at the target [m/s]; 0: stop there")
       ->capture_default_str();
-  CLI::Option* spin =
-      cmd->add_option("--spin", args->spin, "stun | natural | follow | draw")->capture_default_str();
+  CLI::Option* spin = cmd->add_option("--spin", args->spin, "stun | natural | follow | draw")
+                          ->capture_default_str();
   CLI::Option* slide = cmd->add_option(
       "--slide", args->slide, "Slide length x1 [m] instead of a spin style (excludes --spin)");
   slide->excludes(spin);

@@ -94,8 +94,8 @@ void Run(const SimulateArgs& args) {
     throw UsageError("--accuracy must be a positive number of metres");
   }
   const auto integrator = physics::ParseIntegrator(args.integrator);
-  if (!integrator) throw UsageError("--integrator: unknown integrator '" + args.integrator +
-                                    "' (rodas4, dopri5)");
+  if (!integrator)
+    throw UsageError("--integrator: unknown integrator '" + args.integrator + "' (rodas4, dopri5)");
   const physics::ModelParameters params = LoadParametersOption(args.params);
 
   const physics::BallState initial = Eigen::Map<const physics::BallState>(numbers.data());
