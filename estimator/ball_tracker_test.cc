@@ -8,6 +8,8 @@
 #include <map>
 #include <memory>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "estimator/testing/shot_scenes.h"
 #include "sim/physics/simulator.h"
@@ -95,6 +97,149 @@ TEST(BallTracker, AnUnseenBallIsDroppedAfterTheCoastTime) {
   for (int f = 10; f < 40; ++f) tracker.Update(f / 120.0, {{1.0, 0.5}});
   ASSERT_EQ(tracker.tracks().size(), 1u);
   EXPECT_LT((tracker.tracks()[0].position() - Eigen::Vector2d(1.0, 0.5)).norm(), 1e-9);
+}
+
+// The constant-acceleration transition over dt and the noise a white jerk of density q adds,
+// Q = q int_0^dt F(s) g g^T F(s)^T ds with g the jerk's input (0, 0, 1) per axis, in the
+// tracker's state order (x, y, vx, vy, ax, ay). The integrand is a polynomial of degree 4 in s,
+// which 3-point Gauss-Legendre integrates exactly.
+void WhiteJerkModel(double dt, double q, Eigen::Matrix<double, 6, 6>* f,
+                    Eigen::Matrix<double, 6, 6>* noise) {
+  const auto axis_transition = [](double s) {
+    Eigen::Matrix3d m;
+    m << 1, s, 0.5 * s * s, 0, 1, s, 0, 0, 1;
+    return m;
+  };
+  const double node = std::sqrt(0.6);
+  const double nodes[] = {-node, 0.0, node}, weights[] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+  Eigen::Matrix3d axis_noise = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    const double s = 0.5 * dt * (1.0 + nodes[i]);
+    const Eigen::Vector3d response = axis_transition(s).col(2);
+    axis_noise += 0.5 * dt * weights[i] * q * response * response.transpose();
+  }
+  const Eigen::Matrix3d axis_f = axis_transition(dt);
+  f->setZero();
+  noise->setZero();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      for (int k = 0; k < 2; ++k) {
+        (*f)(2 * i + k, 2 * j + k) = axis_f(i, j);
+        (*noise)(2 * i + k, 2 * j + k) = axis_noise(i, j);
+      }
+    }
+  }
+}
+
+// A sliding ball's friction is constant (seed 002, eqs. 6-7), so between frames the filter's
+// prediction must be the constant-acceleration motion x + v dt + a dt^2 / 2 exactly, and its
+// uncertainty must grow the longer it predicts without a detection.
+TEST(BallTracker, PredictionIsTheConstantAccelerationMotion) {
+  // Noise-free detections of a ball sliding at 1.08 m/s against its friction (mu g = 1.96 m/s^2
+  // in the pool set), so that the filter holds a real acceleration.
+  const Eigen::Vector2d x0(0.5, 0.4), v0(1.0, 0.4), a0 = -0.8 * v0.normalized() * 1.96;
+  const auto truth = [&](double t) { return Eigen::Vector2d(x0 + v0 * t + 0.5 * a0 * t * t); };
+  constexpr double kRate = 120.0;
+  constexpr int kFrames = 24;
+  BallTracker tracker(Pool());
+  for (int f = 0; f < kFrames; ++f) ASSERT_TRUE(tracker.Update(f / kRate, {truth(f / kRate)}));
+  ASSERT_EQ(tracker.tracks().size(), 1u);
+  const TrackedBall start = tracker.tracks()[0];
+  const double t0 = (kFrames - 1) / kRate;
+  ASSERT_EQ(start.time, t0);
+  const Eigen::Vector2d x = start.position(), v = start.velocity(), a = start.state.tail<2>();
+  // The filter has found the motion, so a wrong a dt^2 term would show (1.6 cm after 0.2 s).
+  ASSERT_LT((a - a0).norm(), 0.1 * a0.norm()) << a.transpose();
+
+  double previous_position_variance = start.covariance(0, 0);
+  double previous_velocity_variance = start.covariance(2, 2);
+  for (double dt : {1.0 / kRate, 0.05, 0.1, 0.2}) {
+    const Eigen::Vector2d expected = x + v * dt + 0.5 * a * dt * dt;
+    // Exact up to rounding in metres.
+    constexpr double kRounding = 1e-13;
+    const std::vector<Eigen::Vector2d> predicted = tracker.Predict(t0 + dt);
+    ASSERT_EQ(predicted.size(), 1u);
+    EXPECT_LT((predicted[0] - expected).norm(), kRounding) << "dt = " << dt;
+    // And near where the ball really is: the model is the ball's motion.
+    EXPECT_LT((predicted[0] - truth(t0 + dt)).norm(), 1e-3) << "dt = " << dt;
+
+    // A frame without a detection (within the coast time) advances the track by the same model.
+    BallTracker coasting = tracker;
+    ASSERT_TRUE(coasting.Update(t0 + dt, {}));
+    ASSERT_EQ(coasting.tracks().size(), 1u);
+    const TrackedBall& ahead = coasting.tracks()[0];
+    EXPECT_EQ(ahead.time, t0 + dt);
+    EXPECT_LT((ahead.position() - expected).norm(), kRounding) << "dt = " << dt;
+    EXPECT_LT((ahead.velocity() - (v + a * dt)).norm(), kRounding) << "dt = " << dt;
+    EXPECT_LT((ahead.state.tail<2>() - a).norm(), kRounding) << "dt = " << dt;
+    EXPECT_EQ(ahead.hits, start.hits) << "no detection, no hit";
+
+    // The covariance is the propagated one plus the jerk noise, so it grows with dt.
+    Eigen::Matrix<double, 6, 6> f, noise;
+    WhiteJerkModel(dt, TrackerOptions().jerk_density, &f, &noise);
+    const Eigen::Matrix<double, 6, 6> propagated = f * start.covariance * f.transpose() + noise;
+    EXPECT_LT((ahead.covariance - propagated).norm(), 1e-12 * propagated.norm())
+        << "dt = " << dt << ":\n"
+        << ahead.covariance << "\nexpected\n"
+        << propagated;
+    const double position_variance = ahead.covariance(0, 0);
+    const double velocity_variance = ahead.covariance(2, 2);
+    EXPECT_GT(position_variance, previous_position_variance) << "dt = " << dt;
+    EXPECT_GT(velocity_variance, previous_velocity_variance) << "dt = " << dt;
+    EXPECT_GT(ahead.covariance(1, 1), start.covariance(1, 1)) << "dt = " << dt;
+    EXPECT_GT(ahead.covariance(3, 3), start.covariance(3, 3)) << "dt = " << dt;
+    previous_position_variance = position_variance;
+    previous_velocity_variance = velocity_variance;
+  }
+}
+
+// Every frame, one ball at rest; frame k (from 1) is the k-th detection of it.
+void ExpectConfirmedFromFrame(int hits_to_confirm) {
+  TrackerOptions options;
+  options.hits_to_confirm = hits_to_confirm;
+  options.max_coast = 0.1;
+  BallTracker tracker(Pool(), options);
+  const Eigen::Vector2d ball(1.0, 0.5), flicker(2.0, 0.8);
+  constexpr double kRate = 120.0;
+  int frame = 0;
+  const auto time = [&] { return frame / kRate; };
+  for (int seen = 1; seen <= hits_to_confirm + 3; ++seen, ++frame) {
+    ASSERT_TRUE(tracker.Update(time(), {ball}));
+    ASSERT_EQ(tracker.tracks().size(), 1u);
+    const TrackedBall& t = tracker.tracks()[0];
+    EXPECT_EQ(t.id, 0);
+    // (hits stops counting once the track is confirmed.)
+    if (seen <= hits_to_confirm) {
+      EXPECT_EQ(t.hits, seen);
+    }
+    EXPECT_EQ(t.confirmed, seen >= hits_to_confirm)
+        << "seen " << seen << " times, confirmed after " << hits_to_confirm;
+  }
+  // Something seen one time too few, then gone (a reflection, a hand): never a ball, and dropped
+  // once it has coasted out.
+  for (int seen = 1; seen < hits_to_confirm; ++seen, ++frame) {
+    ASSERT_TRUE(tracker.Update(time(), {ball, flicker}));
+    ASSERT_EQ(tracker.tracks().size(), 2u);
+    EXPECT_FALSE(tracker.tracks()[1].confirmed) << "flicker seen " << seen << " times";
+  }
+  const double gone = time();
+  for (; time() <= gone + 2 * options.max_coast; ++frame) {
+    ASSERT_TRUE(tracker.Update(time(), {ball}));
+    for (const TrackedBall& t : tracker.tracks()) {
+      EXPECT_TRUE(t.id == 0 || !t.confirmed) << "the flicker became ball " << t.id;
+    }
+  }
+  ASSERT_EQ(tracker.tracks().size(), 1u);
+  EXPECT_EQ(tracker.tracks()[0].id, 0);
+  EXPECT_TRUE(tracker.tracks()[0].confirmed);
+}
+
+TEST(BallTracker, ATrackIsConfirmedAtExactlyTheConfiguredDetection) {
+  EXPECT_EQ(TrackerOptions().hits_to_confirm, 3) << "the default the estimator publishes with";
+  for (int hits : {1, 2, 3, 5}) {
+    SCOPED_TRACE("hits_to_confirm = " + std::to_string(hits));
+    ExpectConfirmedFromFrame(hits);
+  }
 }
 
 }  // namespace

@@ -174,6 +174,7 @@ TEST(EdgeParameterPlans, ReportCoversEverySetAndFindsNoWrongOk) {
       EXPECT_FALSE(s.contains("error")) << name << ", " << s["scene"] << ": " << s["error"];
       EXPECT_LE(s["max_energy_rise_J"].get<double>(), 1e-9) << name << ", " << s["scene"];
     }
+    ASSERT_EQ(set["plans"].size(), 8u) << name << ": every request of the report";
     for (const auto& plan : set["plans"]) {
       const std::string what = name + ", " + plan["request"].get<std::string>();
       if (plan["status"] == "ok") {

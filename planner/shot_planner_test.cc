@@ -142,6 +142,7 @@ TEST(ShotPlanner, SensitivityJacobianFindsTheCentralDifferencePlanWithFewerSimul
 
 TEST(ShotPlanner, RefusesBadAndUnreachableRequestsWithAReason) {
   const auto expect_refused = [](const ShotRequest& q, PlanStatus status, const char* words) {
+    ASSERT_STRNE(words, "") << "an empty expected reason is found in any reason";
     const ShotPlan plan = PlanShot(q, Paper());
     EXPECT_EQ(PlanStatusName(plan.status), PlanStatusName(status)) << plan.reason;
     EXPECT_NE(plan.reason.find(words), std::string::npos) << plan.reason;
@@ -174,7 +175,7 @@ TEST(ShotPlanner, RefusesBadAndUnreachableRequestsWithAReason) {
   expect_refused(too_fast, PlanStatus::kUnreachable, "cue speed");
   ShotRequest too_much_side = q;
   too_much_side.side_spin = 3000.0;
-  expect_refused(too_much_side, PlanStatus::kUnreachable, "");
+  expect_refused(too_much_side, PlanStatus::kUnreachable, "no stroke gives this spin");
   ShotRequest too_much_side_for_the_distance = q;
   too_much_side_for_the_distance.side_spin = 100.0;  // needs >= 2.7 m/s within the tip offset
   expect_refused(too_much_side_for_the_distance, PlanStatus::kUnreachable, "past the target");

@@ -2,11 +2,15 @@
 // every method on every scene (the figures themselves are the committed full run's).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "tests/support/billiard_command.h"
 
@@ -19,7 +23,10 @@ using billiard::testing::CommandResult;
 TEST(BilliardBench, QuickRunWritesTheReportAndEveryErrorIsFinite) {
   const std::string dir = ::testing::TempDir() + "/bench_quick";
   const std::string args = "bench --quick --out " + dir;
+  const auto start = std::chrono::steady_clock::now();
   const CommandResult r = Billiard(args);
+  const double process_us =
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(r.status, 0) << args;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["out"], dir);
@@ -37,6 +44,7 @@ TEST(BilliardBench, QuickRunWritesTheReportAndEveryErrorIsFinite) {
   char line[1024];
   ASSERT_NE(std::fgets(line, sizeof line, csv), nullptr);  // header
   long rows = 0;
+  std::map<std::string, std::vector<double>> wall_us;  // each method's runs
   while (std::fgets(line, sizeof line, csv)) {
     ++rows;
     std::string text(line);
@@ -48,12 +56,25 @@ TEST(BilliardBench, QuickRunWritesTheReportAndEveryErrorIsFinite) {
     }
     EXPECT_EQ(field[4], "1") << "failed run: " << text;
     for (int i : {8, 9}) EXPECT_TRUE(std::isfinite(std::stod(field[i]))) << text;
+    wall_us[field[0]].push_back(std::stod(field[5]));
   }
   std::fclose(csv);
   EXPECT_EQ(rows, scenes * methods);
   for (const auto& m : j["methods"]) {
-    EXPECT_TRUE(std::isfinite(m["p95_error_integral_m"].get<double>())) << m["method"];
-    EXPECT_GE(m["median_us"].get<double>(), 0.0);
+    const std::string method = m["method"];
+    EXPECT_TRUE(std::isfinite(m["p95_error_integral_m"].get<double>())) << method;
+    // The summary is the median of the method's runs in results.csv (the mean of the two middle
+    // ones for an even count), and each run took part of the process's time on the test's clock.
+    std::vector<double> runs = wall_us[method];
+    ASSERT_EQ(static_cast<long>(runs.size()), scenes) << method;
+    std::sort(runs.begin(), runs.end());
+    const std::size_t half = runs.size() / 2;
+    const double median = runs.size() % 2 ? runs[half] : 0.5 * (runs[half - 1] + runs[half]);
+    const double median_us = m["median_us"].get<double>();
+    EXPECT_NEAR(median_us, median, 1e-6 * median) << method;
+    EXPECT_GT(runs.front(), 0.0) << method;
+    EXPECT_LE(runs.back(), process_us) << method;
+    EXPECT_LE(median_us, m["p95_us"].get<double>()) << method;
   }
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -34,10 +35,16 @@ void ExpectEveryDocumentedKey(const nlohmann::json& j) {
 
 TEST(BilliardPlan, PrintsTheDocumentedJsonObject) {
   const std::string args = "plan --from 0.5,0.5 --to 1.5,0.8 --json";
+  const auto start = std::chrono::steady_clock::now();
   const CommandResult r = Billiard(args);
+  const double process_us =
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = OneObject(r, args);
   ExpectEveryDocumentedKey(j);
+  // The planning time: something, and within the whole process run on the test's clock.
+  EXPECT_GT(j["solve_us"].get<double>(), 0.0);
+  EXPECT_LE(j["solve_us"].get<double>(), process_us);
   EXPECT_EQ(j["status"], "ok");
   EXPECT_FALSE(j.contains("reason"));
   EXPECT_LT(std::hypot(j["predicted_final"][0].get<double>() - 1.5,
@@ -77,7 +84,8 @@ TEST(BilliardPlan, RefusedPlanSaysWhyAndExitsThree) {
   ExpectEveryDocumentedKey(j);
   EXPECT_EQ(j["status"], "off_table");
   ASSERT_TRUE(j.contains("reason"));
-  EXPECT_FALSE(j["reason"].get<std::string>().empty());
+  EXPECT_NE(j["reason"].get<std::string>().find("beyond the playing surface"), std::string::npos)
+      << j["reason"];
 
   // Without --json: nothing on stdout, the reason in one line on stderr.
   const CommandResult human = Billiard("plan --from 0.5,0.5 --to 5,0.5", true);

@@ -72,6 +72,7 @@ TEST(LossyLink, FramesDroppedReorderedAndRepeatedStillLandEveryShot) {
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json s = nlohmann::json::parse(r.out, nullptr, false);
   ASSERT_TRUE(s.is_object()) << r.out;
+  ASSERT_EQ(s["shots"].size(), 4u) << s;
   ExpectEveryShotLands(s, "lossy link");
   EXPECT_LT(s["max_miss_m"].get<double>(), 3e-3) << s;
   const nlohmann::json& c = s["counters"];

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -22,7 +24,15 @@ TEST(NodeHealth, CountsAndReportsWhatHappened) {
   for (int i = 0; i < 5; ++i) health.Received();
   health.Published();
   health.Dropped("first reason");
+  // The time of the last error is wall-clock time (what a status reader compares with its own).
+  const auto wall_utime = [] {
+    return std::chrono::duration_cast<microseconds>(
+               std::chrono::system_clock::now().time_since_epoch())
+        .count();
+  };
+  const std::int64_t before_error = wall_utime();
   health.Dropped("second reason");
+  const std::int64_t after_error = wall_utime();
   health.Count("duplicate");
   health.Count("duplicate", 2);
   health.SetQueueDepth(3);
@@ -36,7 +46,8 @@ TEST(NodeHealth, CountsAndReportsWhatHappened) {
   EXPECT_EQ(s.published, 1);
   EXPECT_EQ(s.dropped, 2);
   EXPECT_EQ(s.last_error, "second reason");
-  EXPECT_GT(s.last_error_utime, 0);
+  EXPECT_GE(s.last_error_utime, before_error);
+  EXPECT_LE(s.last_error_utime, after_error);
   EXPECT_EQ(s.queue_depth, 3);
   EXPECT_EQ(s.latency_count, 100);
   EXPECT_DOUBLE_EQ(s.latency_p50_us, 50.0);
