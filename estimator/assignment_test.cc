@@ -60,8 +60,7 @@ TEST(Assignment, MatchesBruteForceOnRandomMatrices) {
 TEST(Assignment, PrefersTheGlobalOptimumToGreedyNearest) {
   // Track 0 is nearest to detection 0, but taking it leaves track 1 with a far one.
   Eigen::MatrixXd cost(2, 2);
-  cost << 1.0, 2.0,
-          1.5, 9.0;
+  cost << 1.0, 2.0, 1.5, 9.0;
   const std::vector<int> assigned = AssignMinimumCost(cost, 100.0);
   EXPECT_EQ(assigned[0], 1);
   EXPECT_EQ(assigned[1], 0);

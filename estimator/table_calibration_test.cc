@@ -23,9 +23,9 @@ namespace {
 camera::CameraModel TiltedCamera() {
   const physics::TableParameters table{2.54, 1.27};
   camera::CameraModel c = camera::CameraModel::Overhead(table, 1280, 720, 2.4, 0.75);
-  const Eigen::Matrix3d tilt =
-      (Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(-0.02, Eigen::Vector3d::UnitY()))
-          .toRotationMatrix();
+  const Eigen::Matrix3d tilt = (Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitX()) *
+                                Eigen::AngleAxisd(-0.02, Eigen::Vector3d::UnitY()))
+                                   .toRotationMatrix();
   const Eigen::Vector3d centre = c.Centre();
   c.rotation = tilt * c.rotation;
   c.translation = -c.rotation * centre;
@@ -54,8 +54,10 @@ cv::Mat RenderMarkers(const camera::CameraModel& camera, const MarkerLayout& lay
     const double half = side * 160.0 / 120.0 / 2;  // the quiet zone included
     std::vector<cv::Point2f> from = {{0, 0}, {160, 0}, {160, 160}, {0, 160}}, to;
     // Marker image up = table +y (up the image).
-    for (const auto& [dx, dy] : {std::pair{-1, 1}, std::pair{1, 1}, std::pair{1, -1}, std::pair{-1, -1}}) {
-      const Eigen::Vector2d p = camera.Project(layout.centres[i] + Eigen::Vector3d(dx * half, dy * half, 0));
+    for (const auto& [dx, dy] :
+         {std::pair{-1, 1}, std::pair{1, 1}, std::pair{1, -1}, std::pair{-1, -1}}) {
+      const Eigen::Vector2d p =
+          camera.Project(layout.centres[i] + Eigen::Vector3d(dx * half, dy * half, 0));
       to.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
     }
     cv::Mat warped, mask;
@@ -79,7 +81,8 @@ TEST(TableCalibration, RecoversAKnownCameraFromRenderedMarkers) {
     const auto result = CalibrateTable(image, layout, truth);
     ASSERT_TRUE(result.has_value()) << (inverted ? "inverted" : "normal");
     for (int i = 0; i < 4; ++i) {
-      marker_error = std::max(marker_error, (result->markers[i] - truth.Project(layout.centres[i])).norm());
+      marker_error =
+          std::max(marker_error, (result->markers[i] - truth.Project(layout.centres[i])).norm());
       EXPECT_LT((result->markers[i] - truth.Project(layout.centres[i])).norm(), 0.5)
           << "marker " << i << (inverted ? " (inverted)" : "");
     }
@@ -96,7 +99,8 @@ TEST(TableCalibration, RecoversAKnownCameraFromRenderedMarkers) {
         worst = std::max(worst, (back - p).norm());
       }
     }
-    std::fprintf(stderr, "%s markers: centres within %.2f px, table at ball height within %.2f mm\n",
+    std::fprintf(stderr,
+                 "%s markers: centres within %.2f px, table at ball height within %.2f mm\n",
                  inverted ? "inverted" : "normal", marker_error, 1e3 * worst);
   }
 }
@@ -109,7 +113,8 @@ TEST(TableCalibration, FindsTheMarkersOfTheRealPhotograph) {
   ASSERT_TRUE(markers.has_value());
   // Read off the image by hand: the centres of the four white-bordered squares.
   const std::array<Eigen::Vector2d, 4> hand = {Eigen::Vector2d(144, 37), Eigen::Vector2d(1177, 34),
-                                               Eigen::Vector2d(1172, 683), Eigen::Vector2d(149, 681)};
+                                               Eigen::Vector2d(1172, 683),
+                                               Eigen::Vector2d(149, 681)};
   for (int i = 0; i < 4; ++i) EXPECT_LT(((*markers)[i] - hand[i]).norm(), 3.0) << "marker " << i;
 
   // The photo's own geometry: about 1.75 mm per pixel (a 52.5 mm snooker ball is 15 px across

@@ -128,8 +128,7 @@ TEST(MessageChecks, CountsThatLieAreRefusedBeforeAnythingIsAllocated) {
   constexpr std::size_t kPathCount = 124;
   PutInt32(command, kPathCount, 0x40000000u);
   cue_command_t out;
-  EXPECT_NE(Decode(command.data(), command.size(), out).find("num_path_points"),
-            std::string::npos);
+  EXPECT_NE(Decode(command.data(), command.size(), out).find("num_path_points"), std::string::npos);
   command = Encode(Command());
   const std::size_t reason_length = command.size() - 5;  // an empty reason: length 1, then NUL
   for (std::uint32_t length : {0u, 0xffffffffu, 2u, 1000u}) {
@@ -139,8 +138,7 @@ TEST(MessageChecks, CountsThatLieAreRefusedBeforeAnythingIsAllocated) {
   }
   PutInt32(command, reason_length, 1);
   command.back() = 'x';  // not terminated
-  EXPECT_NE(Decode(command.data(), command.size(), out).find("not terminated"),
-            std::string::npos);
+  EXPECT_NE(Decode(command.data(), command.size(), out).find("not terminated"), std::string::npos);
 }
 
 // Found by fuzz/fuzz_node_status and fuzz_cue_command: lcm-gen's decoder keeps the bytes after a

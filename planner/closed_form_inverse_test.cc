@@ -70,8 +70,10 @@ TEST(ClosedFormInverse, StylesSetTheSpinRatio) {
   const physics::ClosedFormParameters p = Paper();
   ShotRequest q;
   q.to = {1.0, 0.0};
-  for (auto [style, ratio] : {std::pair{SpinStyle::kStun, 0.0}, {SpinStyle::kNatural, 1.0},
-                              {SpinStyle::kFollow, 0.5}, {SpinStyle::kDraw, -1.0}}) {
+  for (auto [style, ratio] : {std::pair{SpinStyle::kStun, 0.0},
+                              {SpinStyle::kNatural, 1.0},
+                              {SpinStyle::kFollow, 0.5},
+                              {SpinStyle::kDraw, -1.0}}) {
     q.style = style;
     const LaunchSolution s = InvertClosedForm(q, p);
     ASSERT_TRUE(s.ok) << s.reason;

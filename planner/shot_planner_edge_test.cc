@@ -80,8 +80,10 @@ struct EdgeSet {
 
 TEST(EdgeParameterPlans, EveryOkLandsOnTheTargetAndEveryRefusalSaysWhy) {
   const EdgeSet sets[] = {
-      {"mu = 0, d = 0", Edge(0.0, 0.0, 0.01)},    {"d = 0", Edge(0.2, 0.0, 0.01)},
-      {"eps = 1e-9", Edge(0.2, 1.0, 1e-9)},       {"d = 0, eps = 1e-9", Edge(0.2, 0.0, 1e-9)},
+      {"mu = 0, d = 0", Edge(0.0, 0.0, 0.01)},
+      {"d = 0", Edge(0.2, 0.0, 0.01)},
+      {"eps = 1e-9", Edge(0.2, 1.0, 1e-9)},
+      {"d = 0, eps = 1e-9", Edge(0.2, 0.0, 1e-9)},
       {"mu = 0, d = 0, eps = 1e-9", Edge(0.0, 0.0, 1e-9)},
   };
   const physics::ModelParameters paper = params::LoadParameters("paper");

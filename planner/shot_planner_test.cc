@@ -67,9 +67,10 @@ TEST(ShotPlanner, FiveHundredReachableRequestsLandWithinHalfAMillimetre) {
   std::sort(solve_us.begin(), solve_us.end());
   // The refinement is needed: the closed form misses by centimetres on spin-heavy shots.
   EXPECT_GT(closed_form_miss[475], 0.01);
-  std::fprintf(stderr, "500 of %d requests planned; closed-form miss median %.2e p95 %.2e m; "
-               "solve median %.0f us p95 %.0f us\n", tried, closed_form_miss[250],
-               closed_form_miss[475], solve_us[250], solve_us[475]);
+  std::fprintf(stderr,
+               "500 of %d requests planned; closed-form miss median %.2e p95 %.2e m; "
+               "solve median %.0f us p95 %.0f us\n",
+               tried, closed_form_miss[250], closed_form_miss[475], solve_us[250], solve_us[475]);
 }
 
 TEST(ShotPlanner, SideSpinCurveIsCompensated) {

@@ -60,8 +60,8 @@ TEST(BilliardSimulate, ApproxEndpointsAgreeWhenTheToleranceIsTightenedHundredfol
     const auto a = Json(base), b = Json(base + " --tol 1e-9");
     EXPECT_NEAR(a["state"][0].get<double>(), b["state"][0].get<double>(), 1e-6) << state;
     EXPECT_NEAR(a["state"][1].get<double>(), b["state"][1].get<double>(), 1e-6) << state;
-    std::fprintf(stderr, "approx %-24s %7.1f us, %ld steps\n", state,
-                 a["wall_us"].get<double>(), a["steps"].get<long>());
+    std::fprintf(stderr, "approx %-24s %7.1f us, %ld steps\n", state, a["wall_us"].get<double>(),
+                 a["steps"].get<long>());
   }
 }
 

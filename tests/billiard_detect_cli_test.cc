@@ -155,7 +155,8 @@ TEST_F(BilliardDetect, FindsTheTwentyOneBallsOfTheRealPhotograph) {
     const auto j = OneObject(r, args);
     ExpectEveryBallOnce(j["balls"]);
     for (const auto& ball : j["balls"]) {
-      for (const char* key : {"u", "v", "radius_px", "score"}) EXPECT_TRUE(ball.contains(key)) << ball;
+      for (const char* key : {"u", "v", "radius_px", "score"})
+        EXPECT_TRUE(ball.contains(key)) << ball;
       EXPECT_FALSE(ball.contains("x")) << "table coordinates need --calib";
       EXPECT_GE(ball["score"].get<double>(), 0.5);
       EXPECT_LE(ball["score"].get<double>(), 1.0);

@@ -138,9 +138,9 @@ TEST(BilliardPlan, PlannedLaunchesLandOnTheTargetWhenBilliardSimulateRunsThem) {
   for (int i = 0; i < 25; ++i) {
     const billiard::planner::ShotRequest q = suite.Next(i);
     std::string args = "plan --from=" + Numbers({q.from.x(), q.from.y()}) +
-                       " --to=" + Numbers({q.to.x(), q.to.y()}) +
-                       " --final-speed " + Numbers({q.final_speed}) +
-                       " --side-spin=" + Numbers({q.side_spin}) + " --json";
+                       " --to=" + Numbers({q.to.x(), q.to.y()}) + " --final-speed " +
+                       Numbers({q.final_speed}) + " --side-spin=" + Numbers({q.side_spin}) +
+                       " --json";
     if (q.slide_length) {
       args += " --slide " + Numbers({*q.slide_length});
     } else {
@@ -155,11 +155,11 @@ TEST(BilliardPlan, PlannedLaunchesLandOnTheTargetWhenBilliardSimulateRunsThem) {
     }
     ASSERT_EQ(plan.status, 0) << args << ": " << plan.out;
     ++planned;
-    const std::string simulate =
-        "simulate --state=" +
-        Numbers({q.from.x(), q.from.y(), j["v0"][0], j["v0"][1], j["w0"][0], j["w0"][1],
-                 j["w0"][2]}) +
-        " --t-end 60 --until-speed " + Numbers({q.final_speed}) + " --json";
+    const std::string simulate = "simulate --state=" +
+                                 Numbers({q.from.x(), q.from.y(), j["v0"][0], j["v0"][1],
+                                          j["w0"][0], j["w0"][1], j["w0"][2]}) +
+                                 " --t-end 60 --until-speed " + Numbers({q.final_speed}) +
+                                 " --json";
     const CommandResult sim = Billiard(simulate);
     ASSERT_EQ(sim.status, 0) << simulate;
     const auto end = OneObject(sim, simulate);
@@ -167,7 +167,8 @@ TEST(BilliardPlan, PlannedLaunchesLandOnTheTargetWhenBilliardSimulateRunsThem) {
     EXPECT_LT(std::hypot(end["state"][0].get<double>() - q.to.x(),
                          end["state"][1].get<double>() - q.to.y()),
               5e-4)
-        << args << "\n" << simulate;
+        << args << "\n"
+        << simulate;
   }
   EXPECT_GE(planned, 22);
 }

@@ -119,7 +119,8 @@ TEST(ClosedLoop, LockstepRunsReplayTheSameShots) {
 TEST(ClosedLoop, CtrlCStopsEveryProcess) {
   // Ctrl-C reaches the whole process group of the script (setsid gives it one of its own).
   const std::string script =
-      std::string("setsid bash ") + RUN_LOOP_SCRIPT + " --no-build --shots 20 >/dev/null 2>&1 & "
+      std::string("setsid bash ") + RUN_LOOP_SCRIPT +
+      " --no-build --shots 20 >/dev/null 2>&1 & "
       "group=$!; sleep 3; kill -INT -- -$group; wait $group; echo \"exit $?\"; sleep 1; "
       "pgrep -g $group >/dev/null && echo orphans || echo clean";
   const billiard::testing::CommandResult r =

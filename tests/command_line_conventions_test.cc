@@ -35,8 +35,8 @@ const std::vector<Script> kScripts = {
     {"launch_scripts/build.sh", {}},
     {"launch_scripts/test.sh", {"--no-build"}},
     {"launch_scripts/run_loop.sh",
-     {"--shots", "--seed", "--noise", "--log", "--log-frames", "--lockstep", "--realtime",
-      "--json", "--no-build"}},
+     {"--shots", "--seed", "--noise", "--log", "--log-frames", "--lockstep", "--realtime", "--json",
+      "--no-build"}},
     {"launch_scripts/replay.sh", {"--params", "--camera", "--json"}},
     {"launch_scripts/fault_drill.sh", {"--shots", "--no-build"}},
     {"launch_scripts/reliability_report.sh", {"--fuzz-seconds", "--shots", "--no-build"}},
@@ -213,12 +213,12 @@ TEST(Binaries, UsageErrorsExitTwo) {
   const std::string unwritable = "/dev/null/out";  // not a directory, even for root
   for (const std::string& args : std::vector<std::string>{
            "plan --from nan,0 --to 1,1", "calibrate /no/such.png --out /tmp/x.json",
-        "detect /no/such.png", "node-status /no/such.lcm", "replay /no/such.lcm",
-        "simulate --state 0,0,0,1,0,0,0 --t-end 1 --trajectory " + unwritable + ".csv",
-        "bench-planner --requests 1 --out " + unwritable,
-        "bench-estimator --scenes 1 --balls 1 --struck 1 --out " + unwritable,
-        "bench --quick --shots 0 --out " + unwritable, "burst --requests 0",
-        "burst --timeout 0"}) {
+           "detect /no/such.png", "node-status /no/such.lcm", "replay /no/such.lcm",
+           "simulate --state 0,0,0,1,0,0,0 --t-end 1 --trajectory " + unwritable + ".csv",
+           "bench-planner --requests 1 --out " + unwritable,
+           "bench-estimator --scenes 1 --balls 1 --struck 1 --out " + unwritable,
+           "bench --quick --shots 0 --out " + unwritable, "burst --requests 0",
+           "burst --timeout 0"}) {
     ExpectOneLine(kBilliard + " " + args, 2);
   }
   ExpectOneLine(kPlannerNode + " --params /no/such.json", 2);
@@ -228,8 +228,8 @@ TEST(Binaries, UsageErrorsExitTwo) {
 
 TEST(Binaries, InternalFailuresExitOne) {
   // LCM that cannot be opened (LCM itself says so in a line of its own first).
-  for (const std::string& command : std::vector<std::string>{
-           kPlannerNode, kEstimatorNode, kTableSimNode, kBilliard + " burst"}) {
+  for (const std::string& command : std::vector<std::string>{kPlannerNode, kEstimatorNode,
+                                                             kTableSimNode, kBilliard + " burst"}) {
     ExpectStatus(command + " --lcm-url nosuch://", 1);
   }
   // Nodes that do not answer in time: there are none on a private in-memory LCM.

@@ -46,8 +46,8 @@ const std::map<std::string, std::set<std::string>>& Layers() {
         "planner/testing", "estimator", "estimator/testing", "tests/support"}},
       {"tools/billiard",
        {"sim/physics", "sim/params", "sim/model_choice", "sim/contact_fit", "sim/camera",
-        "sim/render", "sim/table_sim_node", "lcmtypes", "lcmtypes/node", "planner",
-        "planner/node", "estimator", "estimator/node", "bench"}},
+        "sim/render", "sim/table_sim_node", "lcmtypes", "lcmtypes/node", "planner", "planner/node",
+        "estimator", "estimator/node", "bench"}},
       {"tests", {}},  // the cross-module tests may include anything
   };
   return layers;
@@ -77,7 +77,8 @@ std::vector<Include> IncludesOfTheTree() {
   const fs::path root = PROJECT_SOURCE_DIR;
   const std::regex directive(R"(^\s*#\s*include\s*([<"])([^>"]+)[>"])");
   std::vector<Include> found;
-  for (const char* top : {"sim", "planner", "estimator", "lcmtypes", "tools", "bench", "fuzz", "tests"}) {
+  for (const char* top :
+       {"sim", "planner", "estimator", "lcmtypes", "tools", "bench", "fuzz", "tests"}) {
     for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
       const std::string ext = entry.path().extension();
       if (!entry.is_regular_file() || (ext != ".h" && ext != ".cc" && ext != ".in")) continue;
@@ -88,7 +89,8 @@ std::vector<Include> IncludesOfTheTree() {
       while (std::getline(in, text)) {
         ++line;
         std::smatch m;
-        if (std::regex_search(text, m, directive)) found.push_back({file, line, m[2], m[1] == "\""});
+        if (std::regex_search(text, m, directive))
+          found.push_back({file, line, m[2], m[1] == "\""});
       }
     }
   }

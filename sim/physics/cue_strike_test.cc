@@ -40,7 +40,8 @@ TEST(CueStrike, RightEnglishSpinsTheBallCounterclockwiseSeenFromAbove) {
 }
 
 // With a perfectly elastic tip, a level stroke at any offset keeps the kinetic energy of cue and
-// ball: 1/2 M V^2 = 1/2 M V'^2 + 1/2 m v^2 + 1/2 I w^2, the cue slowed by the impulse, V' = V - J/M.
+// ball: 1/2 M V^2 = 1/2 M V'^2 + 1/2 m v^2 + 1/2 I w^2, the cue slowed by the impulse,
+// V' = V - J / M.
 TEST(CueStrike, ElasticStrikeConservesTheEnergyOfCueAndBallAtAnyOffset) {
   ModelParameters p = testing::PaperParameters();
   p.cue.tip_restitution = 1.0;
