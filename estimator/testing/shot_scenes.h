@@ -1,5 +1,7 @@
 // Simulated shots with ground truth for the estimator's tests and benchmark: balls at rest,
-// some struck, and the comparison of tracks with the truth (accuracy, identities kept).
+// some struck, and the comparison of tracks with the truth (accuracy, identities kept). A testing
+// library (estimator_testing): it includes the estimator, the physics and the parameter sets; the
+// benchmarks and the tests use it, no production code does.
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // Seeded random shot requests over a table: what the planner's acceptance test and benchmark
-// plan. Deterministic for a seed, so both see the same requests.
+// plan. Deterministic for a seed, so both see the same requests. A testing library
+// (planner_testing): it includes the planner and the physics; no production code includes it.
 #pragma once
 
 #include <cstdint>

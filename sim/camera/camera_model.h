@@ -1,6 +1,9 @@
 // The camera over the table: a pinhole with OpenCV's lens distortion (k1, k2, p1, p2, k3) and a
-// pose relative to the table. Shared by the renderer (sim/) and the estimator (estimator/), so
-// that both speak of the same pixels.
+// pose relative to the table. Shared by the renderer (sim/render/) and the estimator
+// (estimator/), so that both speak of the same pixels.
+//
+// Module: billiard::camera, below both. Includes the physics (sim/physics/, for the table's
+// size) and nothing else of the project; the JSON format below is read with nlohmann-json.
 //
 // Table frame: origin at a corner of the playing surface, x along the long side, y along the short
 // side, z up from the cloth [m]. Camera frame (OpenCV): x right, y down in the image, z along the

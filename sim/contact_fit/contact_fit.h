@@ -6,6 +6,9 @@
 // vs = (cos theta_s, 0), ws = sin theta_s and the rolling direction (d cos gamma, d sin gamma).
 // The integrals over D use a tensor Gauss-Legendre grid; the two fits are independent Ceres
 // problems in two unknowns each.
+//
+// Module: billiard::contact_fit, the one user of Ceres' solver among the physics. Includes the
+// physics (sim/physics/) and nothing else of the project.
 #pragma once
 
 #include <functional>

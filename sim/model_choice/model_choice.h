@@ -4,6 +4,9 @@
 // The table is docs/benchmarks/model_choice.json, written by `billiard bench` and compiled into
 // the library: per scene kind, every benchmarked method's median time per 8 s shot and its p95
 // endpoint distance from the integral model converged (the most faithful model here).
+//
+// Module: billiard::model_choice. Includes the physics (sim/physics/) and nothing else of the
+// project.
 #pragma once
 
 #include <string>

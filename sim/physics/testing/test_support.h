@@ -1,4 +1,7 @@
-// Shared fixtures of the physics tests: the paper's parameters and initial states.
+// Shared fixtures of the physics tests: the paper's parameters and initial states, and linear
+// problems with known solutions for the integrators. A testing library (physics_testing): it may
+// include the physics, the parameter sets (sim/params/) and GoogleTest; no production code
+// includes it.
 #pragma once
 
 #include <gtest/gtest.h>
