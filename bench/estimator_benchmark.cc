@@ -106,10 +106,11 @@ void WriteEstimatorReport(const EstimatorBenchmarkResult& r, const std::string& 
   std::ofstream md = OpenForWriting(dir + "/estimator_report.md");
   md << "# Estimator benchmark\n\n"
      << r.options.scenes << " seeded scenes (seed " << r.options.seed << ", "
-     << "`estimator/shot_scenes.h`) on the " << r.params << " parameter set: " << r.options.balls
-     << " balls, " << r.options.struck << " struck at 0.5-3 m/s with draw to follow and side "
-     << "spin, simulated with the 5-DOF model for " << r.options.duration << " s. Frames "
-     << "rendered at 1280x720 and 120 Hz (`sim/table_renderer.h`: noise sigma 3 gray levels, "
+     << "`estimator/testing/shot_scenes.h`) on the " << r.params
+     << " parameter set: " << r.options.balls << " balls, " << r.options.struck
+     << " struck at 0.5-3 m/s with draw to follow and side spin, simulated with the "
+     << "5-DOF model for " << r.options.duration << " s. Frames rendered at 1280x720 and 120 Hz "
+     << "(`sim/render/table_renderer.h`: noise sigma 3 gray levels, "
      << "motion blur over half the frame interval, a mild barrel lens), then detected and "
      << "tracked (`estimator/ball_estimator.h`). Errors count from 0.1 s on; velocity errors "
      << "not within 0.3 s after a strike, the end of sliding or a stop. Times are "

@@ -1,6 +1,6 @@
-// The estimator's benchmark: seeded shots (estimator/shot_scenes.h) rendered at 1280x720 and
-// 120 Hz with sensor noise and motion blur (sim/table_renderer.h), estimated frame by frame, and
-// compared with the ground truth; detection plus tracking timed on one core.
+// The estimator's benchmark: seeded shots (estimator/testing/shot_scenes.h) rendered at
+// 1280x720 and 120 Hz with sensor noise and motion blur (sim/render/table_renderer.h), estimated
+// frame by frame, and compared with the ground truth; detection plus tracking timed on one core.
 #pragma once
 
 #include <cstdint>

@@ -133,7 +133,8 @@ void WritePlannerReport(const PlannerBenchmarkResult& r, const std::string& dir)
   WriteCsv(r, dir + "/planner_results.csv");
   std::ofstream md = OpenForWriting(dir + "/planner_report.md");
   md << "# Planner benchmark\n\n"
-     << r.requests << " seeded random requests (seed " << r.seed << ", `planner/request_suite.h`) "
+     << r.requests << " seeded random requests (seed " << r.seed
+     << ", `planner/testing/request_suite.h`) "
      << "on the " << r.params << " parameter set: stop at the target or pass it at up to "
      << "0.6 m/s, every spin style and slide lengths, a third with side spin up to 20 rad/s. "
      << "Each plan's launch is simulated again with the simulator's defaults (approx model, "

@@ -1,6 +1,7 @@
-// The planner's benchmark: seeded random requests (planner/request_suite.h) planned three ways
-// (closed form alone; refined with the sensitivity Jacobian; refined with central differences),
-// every plan re-simulated independently at the simulator's default tolerance, timed on one core.
+// The planner's benchmark: seeded random requests (planner/testing/request_suite.h) planned three
+// ways (closed form alone; refined with the sensitivity Jacobian; refined with central
+// differences), every plan re-simulated independently at the simulator's default tolerance, timed
+// on one core.
 #pragma once
 
 #include <cstdint>

@@ -334,9 +334,9 @@ TEST(BallDetector, SubPixelCentresOnSyntheticFrames) {
 }
 
 TEST(BallDetector, TablePositionsFromRenderedFramesWithinHalfAMillimetre) {
-  // The simulator's renderer (sim/table_renderer.h): a pool table seen from 2.5 m, about 2.2 mm
-  // per pixel, balls scattered at random (some against the cushions), sensor noise, shading and
-  // contact shadows. The estimator needs 0.5 mm RMS on the table.
+  // The simulator's renderer (sim/render/table_renderer.h): a pool table seen from 2.5 m, about
+  // 2.2 mm per pixel, balls scattered at random (some against the cushions), sensor noise, shading
+  // and contact shadows. The estimator needs 0.5 mm RMS on the table.
   const physics::ModelParameters params = params::LoadParameters("pool");
   const double r = params.ball.radius;
   const camera::CameraModel camera = camera::CameraModel::Overhead(params.table, 1280, 720);

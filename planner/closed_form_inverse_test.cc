@@ -1,4 +1,4 @@
-// The closed-form inverse against the forward closed form (sim/closed_form.h).
+// The closed-form inverse against the forward closed form (sim/physics/closed_form.h).
 #include "planner/closed_form_inverse.h"
 
 #include <gtest/gtest.h>

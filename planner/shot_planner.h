@@ -6,10 +6,10 @@
 //      unknowns are the launch speed and heading, the spin choice (R w / v across the line, and the
 //      side spin wz as asked) is held, and the residual is the miss at the target, where the
 //      simulated speed falls to the requested value (or the ball comes to rest). The Jacobian comes
-//      from forward sensitivities integrated with the simulation (sim/sensitivity.h), so one
-//      iteration costs one simulation;
-//   3. the cue stroke that gives that launch (sim/cue_strike.h), within the robot's limits, which
-//      also bound the refinement (tip offset, cue speed).
+//      from forward sensitivities integrated with the simulation (sim/physics/sensitivity.h), so
+//      one iteration costs one simulation;
+//   3. the cue stroke that gives that launch (sim/physics/cue_strike.h), within the robot's
+//      limits, which also bound the refinement (tip offset, cue speed).
 #pragma once
 
 #include <Eigen/Core>
