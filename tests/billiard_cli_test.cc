@@ -166,6 +166,8 @@ TEST(BilliardSimulate, DefaultsToThePoolSetAndNamesTheFileOfAnother) {
       "contact":{"patch_radius":0.002,"mu":0.15,"d":0.5,"eps_t":0.01,"eps_r":0.02,
                  "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2},
       "cue":{"mass":0.5,"tip_restitution":0.8,"max_tip_offset":0.5,"max_speed":5},
+    "collision":{"ball_restitution":0.95,"ball_friction_a":0.01,"ball_friction_b":0.108,
+                 "ball_friction_c":1.088,"cushion_restitution":0.9,"cushion_friction":0.2},
       "table":{"length":2.84,"width":1.42}})",
                f);
     std::fclose(f);

@@ -100,6 +100,13 @@ ModelParameters ParseParameters(const std::string& json_text, const std::string&
         {"tip_restitution", &p.cue.tip_restitution},
         {"max_tip_offset", &p.cue.max_tip_offset},
         {"max_speed", &p.cue.max_speed}}},
+      {"collision",
+       {{"ball_restitution", &p.collision.ball_restitution},
+        {"ball_friction_a", &p.collision.ball_friction_a},
+        {"ball_friction_b", &p.collision.ball_friction_b},
+        {"ball_friction_c", &p.collision.ball_friction_c},
+        {"cushion_restitution", &p.collision.cushion_restitution},
+        {"cushion_friction", &p.collision.cushion_friction}}},
       {"table", {{"length", &p.table.length}, {"width", &p.table.width}}}};
   for (const auto& [key, value] : j.items()) {
     const bool known = key == "name" || key == "source" ||

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdio>
 #include <fstream>
 
@@ -44,6 +45,8 @@ TEST(Parameters, LoadsAFile) {
     "contact":{"patch_radius":0.002,"mu":0.15,"d":0.5,"eps_t":0.01,"eps_r":0.02,
                "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2},
     "cue":{"mass":0.5,"tip_restitution":0.8,"max_tip_offset":0.5,"max_speed":5},
+    "collision":{"ball_restitution":0.95,"ball_friction_a":0.01,"ball_friction_b":0.108,
+                 "ball_friction_c":1.088,"cushion_restitution":0.9,"cushion_friction":0.2},
     "table":{"length":2.84,"width":1.42}})";
   const physics::ModelParameters p = LoadParameters(path);
   EXPECT_EQ(p.name, "mine");
@@ -61,6 +64,8 @@ TEST(Parameters, RejectsUnknownNamesBadJsonMissingFieldsAndBadValues) {
     "contact":{"patch_radius":0.002,"mu":0.15,"d":D,"eps_t":0.01,"eps_r":0.02,
                "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2},
     "cue":{"mass":0.5,"tip_restitution":E,"max_tip_offset":0.5,"max_speed":5},
+    "collision":{"ball_restitution":0.95,"ball_friction_a":0.01,"ball_friction_b":0.108,
+                 "ball_friction_c":1.088,"cushion_restitution":0.9,"cushion_friction":0.2},
     "table":{"length":2.84,"width":1.42}})";
   const auto with = [&](const std::string& d, const std::string& e) {
     std::string s = good;
@@ -84,6 +89,8 @@ std::string SetWithContact(const std::string& extra) {
                "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2)" +
          extra + R"(},
     "cue":{"mass":0.5,"tip_restitution":0.8,"max_tip_offset":0.5,"max_speed":5},
+    "collision":{"ball_restitution":0.95,"ball_friction_a":0.01,"ball_friction_b":0.108,
+                 "ball_friction_c":1.088,"cushion_restitution":0.9,"cushion_friction":0.2},
     "table":{"length":2.84,"width":1.42}})";
 }
 
@@ -141,15 +148,21 @@ TEST(Parameters, TheHashIsTheSameForTheSameNumbersWhateverTheName) {
   for (std::size_t i = 0; i < physics::kParameterCount; ++i) {
     // Any one number moved by one part in 1e15 is other physics.
     physics::ModelParameters moved = pool;
-    double* fields[] = {&moved.ball.radius,        &moved.ball.mass,
-                        &moved.ball.gravity,       &moved.contact.patch_radius,
-                        &moved.contact.mu,         &moved.contact.d,
-                        &moved.contact.eps_t,      &moved.contact.eps_r,
-                        &moved.contact.b_t,        &moved.contact.m_t,
-                        &moved.contact.b_m,        &moved.contact.m_m,
-                        &moved.cue.mass,           &moved.cue.tip_restitution,
-                        &moved.cue.max_tip_offset, &moved.cue.max_speed,
-                        &moved.table.length,       &moved.table.width};
+    physics::CollisionParameters& k = moved.collision;
+    const std::array<double*, physics::kParameterCount> fields = {
+        &moved.ball.radius,        &moved.ball.mass,
+        &moved.ball.gravity,       &moved.contact.patch_radius,
+        &moved.contact.mu,         &moved.contact.d,
+        &moved.contact.eps_t,      &moved.contact.eps_r,
+        &moved.contact.b_t,        &moved.contact.m_t,
+        &moved.contact.b_m,        &moved.contact.m_m,
+        &moved.cue.mass,           &moved.cue.tip_restitution,
+        &moved.cue.max_tip_offset, &moved.cue.max_speed,
+        &k.ball_restitution,       &k.ball_friction_a,
+        &k.ball_friction_b,        &k.ball_friction_c,
+        &k.cushion_restitution,    &k.cushion_friction,
+        &moved.table.length,       &moved.table.width};
+    ASSERT_NE(fields[i], nullptr) << "number " << i << " is not in the list above";
     *fields[i] *= 1.0 + 1e-15;
     EXPECT_NE(ParameterHash(moved), ParameterHash(pool)) << "number " << i;
   }

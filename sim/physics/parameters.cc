@@ -34,6 +34,12 @@ std::array<double, kParameterCount> ParameterValues(const ModelParameters& p) {
           p.cue.tip_restitution,
           p.cue.max_tip_offset,
           p.cue.max_speed,
+          p.collision.ball_restitution,
+          p.collision.ball_friction_a,
+          p.collision.ball_friction_b,
+          p.collision.ball_friction_c,
+          p.collision.cushion_restitution,
+          p.collision.cushion_friction,
           p.table.length,
           p.table.width};
 }
@@ -67,6 +73,13 @@ void ValidateParameters(const ModelParameters& p) {
           "cue tip restitution must lie in [0, 1]");
   Require(p.cue.max_tip_offset > 0.0 && p.cue.max_tip_offset < 1.0, n,
           "cue max_tip_offset is a fraction of the radius in (0, 1)");
+  const CollisionParameters& k = p.collision;
+  Require(k.ball_restitution >= 0.0 && k.ball_restitution <= 1.0 && k.cushion_restitution >= 0.0 &&
+              k.cushion_restitution <= 1.0,
+          n, "ball and cushion restitution must lie in [0, 1]");
+  Require(k.ball_friction_a >= 0.0 && k.ball_friction_b >= 0.0 && k.ball_friction_c >= 0.0 &&
+              k.cushion_friction >= 0.0,
+          n, "ball-ball and cushion friction must be >= 0");
   Require(p.table.length > 2.0 * p.ball.radius && p.table.width > 2.0 * p.ball.radius, n,
           "the table must be larger than the ball");
 }

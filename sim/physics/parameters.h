@@ -36,6 +36,18 @@ struct CueParameters {
   double max_speed = 0.0;        // fastest cue stroke the robot gives [m/s]
 };
 
+// Impacts between two balls and of a ball with a cushion (sim/table/).
+struct CollisionParameters {
+  double ball_restitution = 0.0;  // e_b, normal restitution between two balls, 0..1
+  // Ball-ball sliding friction against the relative speed v of the contact points,
+  // mu_b = a + b exp(-c v): Alciatore's fit (TP A.14) to the throw measurements of Marlow 1995.
+  double ball_friction_a = 0.0;      // [-]
+  double ball_friction_b = 0.0;      // [-]
+  double ball_friction_c = 0.0;      // [s/m]
+  double cushion_restitution = 0.0;  // e_e, ball-cushion, 0..1
+  double cushion_friction = 0.0;     // mu_w, ball-cushion sliding friction
+};
+
 // The playing surface: origin at a corner, x along the long side [m].
 struct TableParameters {
   double length = 0.0;
@@ -49,6 +61,7 @@ struct ModelParameters {
   BallParameters ball;
   ContactParameters contact;
   CueParameters cue;
+  CollisionParameters collision;
   TableParameters table;
 
   // Rolling-resistance coefficient of the closed-form model that matches this contact.
@@ -62,9 +75,9 @@ struct ModelParameters {
 // energy). mu = 0 with d = 0, d = 0, and eps_t, eps_r as small as 1e-9 are valid.
 void ValidateParameters(const ModelParameters& p);
 
-// Every number of a set, in a fixed order (ball, contact, cue, table, as declared above): what
+// Every number of a set, in a fixed order (ball, contact, cue, collision, table): what
 // makes two sets the same physics whatever their names.
-inline constexpr std::size_t kParameterCount = 18;
+inline constexpr std::size_t kParameterCount = 24;
 std::array<double, kParameterCount> ParameterValues(const ModelParameters& p);
 
 }  // namespace billiard::physics
