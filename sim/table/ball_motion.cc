@@ -1,0 +1,120 @@
+#include "sim/table/ball_motion.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace billiard::table {
+
+using physics::BallState;
+using physics::kVx;
+using physics::kVy;
+using physics::kWx;
+using physics::kWy;
+using physics::kWz;
+using physics::kX;
+
+namespace {
+
+// Below these a state is taken as its phase's limit: a slip of 1e-10 m/s closes in 0.1 ns of
+// sliding, a speed of 1e-10 m/s moves a ball by an atom's width before rolling resistance stops
+// it. The phase ends are set exactly (At), so the thresholds only meet a caller's rounding.
+constexpr double kRollingSlip = 1e-10;  // [m/s]
+constexpr double kStillSpeed = 1e-10;   // [m/s]
+constexpr double kStillSpin = 1e-9;     // [rad/s]
+
+// Ms for pure spin on a uniformly slipping disk (physics notes, section 1).
+constexpr double kPivotMoment = 3.0 * M_PI / 16.0;
+
+double Sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
+
+}  // namespace
+
+const char* PhaseName(MotionPhase phase) {
+  switch (phase) {
+    case MotionPhase::kSliding:
+      return "sliding";
+    case MotionPhase::kRolling:
+      return "rolling";
+    case MotionPhase::kSpinning:
+      return "spinning";
+    case MotionPhase::kStationary:
+      return "stationary";
+  }
+  return "unknown";
+}
+
+ClothParameters ClothParameters::From(const physics::ModelParameters& p) {
+  const double r = p.ball.radius;
+  return {r, p.ball.gravity, p.contact.mu, p.RollingResistance(),
+          2.5 * p.ball.gravity * p.contact.patch_radius * p.contact.mu * kPivotMoment / (r * r)};
+}
+
+Eigen::Vector2d ClothSlip(const BallState& s, double radius) {
+  return {s[kVx] - radius * s[kWy], s[kVy] + radius * s[kWx]};
+}
+
+MotionSegment::MotionSegment(const ClothParameters& cloth, double start_time,
+                             const BallState& state)
+    : cloth_(cloth), start_time_(start_time), start_(state) {
+  const Eigen::Vector2d v = velocity();
+  const Eigen::Vector2d u = ClothSlip(state, cloth.radius);
+  const double spin = std::abs(state[kWz]);
+  spin_stop_ = cloth.spin_decel > 0.0
+                   ? spin / cloth.spin_decel
+                   : (spin > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+  double duration = std::numeric_limits<double>::infinity();
+  if (u.norm() > kRollingSlip) {
+    phase_ = MotionPhase::kSliding;
+    slip_direction_ = u.normalized();
+    acceleration_ = -cloth.mu_slide * cloth.gravity * slip_direction_;
+    duration = 2.0 * u.norm() / (7.0 * cloth.mu_slide * cloth.gravity);  // Jaroukh 2019, eq. 8
+  } else if (v.norm() > kStillSpeed) {
+    phase_ = MotionPhase::kRolling;
+    const double decel = 5.0 / 7.0 * cloth.mu_roll * cloth.gravity;
+    acceleration_ = -decel * v.normalized();
+    if (decel > 0.0) duration = v.norm() / decel;
+  } else if (spin > kStillSpin) {
+    phase_ = MotionPhase::kSpinning;
+    duration = spin_stop_;
+  } else {
+    phase_ = MotionPhase::kStationary;
+    start_.segment<4>(kVx).setZero();
+    start_[kWz] = 0.0;
+  }
+  end_time_ = start_time + duration;
+}
+
+BallState MotionSegment::At(double t) const {
+  const double tau = std::clamp(t - start_time_, 0.0, end_time_ - start_time_);
+  BallState s = start_;
+  s.segment<2>(kX) += velocity() * tau + 0.5 * acceleration_ * tau * tau;
+  s.segment<2>(kVx) += acceleration_ * tau;
+  s[kWz] -= Sign(start_[kWz]) * cloth_.spin_decel * std::min(tau, spin_stop_);
+  if (tau >= spin_stop_) s[kWz] = 0.0;
+  const bool at_end = t >= end_time_;
+  switch (phase_) {
+    case MotionPhase::kSliding: {
+      // dw_xy/dt = 5/2 mu_s g / r (z x u_hat); at the end the contact rolls, exactly.
+      const double rate = 2.5 * cloth_.mu_slide * cloth_.gravity / cloth_.radius * tau;
+      s[kWx] -= rate * slip_direction_.y();
+      s[kWy] += rate * slip_direction_.x();
+      if (at_end) {
+        s[kWx] = -s[kVy] / cloth_.radius;
+        s[kWy] = s[kVx] / cloth_.radius;
+      }
+      break;
+    }
+    case MotionPhase::kRolling:
+      if (at_end) s.segment<2>(kVx).setZero();
+      s[kWx] = -s[kVy] / cloth_.radius;
+      s[kWy] = s[kVx] / cloth_.radius;
+      break;
+    case MotionPhase::kSpinning:
+    case MotionPhase::kStationary:
+      s.segment<4>(kVx).setZero();
+      break;
+  }
+  return s;
+}
+
+}  // namespace billiard::table

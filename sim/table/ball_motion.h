@@ -1,0 +1,71 @@
+// A ball's motion on the cloth between two events, in closed form.
+//
+// The point-contact model of Jaroukh 2019 (`sim/physics/closed_form.h`): Coulomb friction mu_s
+// while the contact point slips, then rolling without slip decelerated by rolling resistance
+// mu_r; to it the table adds the pivot friction of the contact patch, which the 5-DOF model of
+// Kudra et al. 2016 has and a point contact lacks: the spin wz decays at the constant rate
+// 5/2 g a mu Ms / r^2, Ms = 3 pi / 16 the moment of a uniformly slipping disk (pure spin, eq. 16;
+// physics notes, section 1), whatever the ball's translation does. So a ball passes through
+// sliding, rolling, spinning in place and rest, each phase a polynomial in time: the centre moves
+// on a parabola (constant acceleration), which is what makes every collision time the root of a
+// polynomial (`sim/table/polynomial_roots.h`).
+#pragma once
+
+#include <Eigen/Core>
+#include <limits>
+
+#include "sim/physics/ball_state.h"
+#include "sim/physics/parameters.h"
+
+namespace billiard::table {
+
+enum class MotionPhase { kSliding, kRolling, kSpinning, kStationary };
+
+const char* PhaseName(MotionPhase phase);
+
+// The cloth as the closed form sees it.
+struct ClothParameters {
+  double radius = 0.0;      // r [m]
+  double gravity = 0.0;     // g [m/s^2]
+  double mu_slide = 0.0;    // mu_s = mu
+  double mu_roll = 0.0;     // mu_r = a d / (5 r)
+  double spin_decel = 0.0;  // |dwz/dt| = 5/2 g a mu (3 pi / 16) / r^2 [rad/s^2]
+
+  static ClothParameters From(const physics::ModelParameters& p);
+};
+
+// One phase of a ball's motion, from `start_time` to `end_time` (the next transition; infinite
+// for a ball at rest). Times are the table's; the polynomial's variable is tau = t - start_time.
+class MotionSegment {
+ public:
+  // The phase a ball in `state` is in, and its motion from `start_time` until the phase ends.
+  MotionSegment(const ClothParameters& cloth, double start_time, const physics::BallState& state);
+
+  MotionPhase phase() const { return phase_; }
+  double start_time() const { return start_time_; }
+  double end_time() const { return end_time_; }
+  const physics::BallState& start_state() const { return start_; }
+
+  // The state at table time t, start_time <= t <= end_time (clamped to the segment).
+  physics::BallState At(double t) const;
+
+  // The centre's position as p0 + v0 tau + 1/2 a tau^2.
+  Eigen::Vector2d position() const { return start_.segment<2>(physics::kX); }
+  Eigen::Vector2d velocity() const { return start_.segment<2>(physics::kVx); }
+  const Eigen::Vector2d& acceleration() const { return acceleration_; }
+
+ private:
+  ClothParameters cloth_;
+  MotionPhase phase_;
+  double start_time_;
+  double end_time_ = std::numeric_limits<double>::infinity();
+  double spin_stop_ = 0.0;  // tau at which wz reaches 0
+  physics::BallState start_;
+  Eigen::Vector2d acceleration_ = Eigen::Vector2d::Zero();
+  Eigen::Vector2d slip_direction_ = Eigen::Vector2d::Zero();  // sliding: u / |u|
+};
+
+// The slip velocity of the contact point with the cloth, u = v + r z x w.
+Eigen::Vector2d ClothSlip(const physics::BallState& s, double radius);
+
+}  // namespace billiard::table

@@ -1,0 +1,351 @@
+#include "sim/table/table_simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "sim/table/ball_collision.h"
+#include "sim/table/polynomial_roots.h"
+
+namespace billiard::table {
+
+using physics::BallState;
+using physics::kVx;
+using physics::kWx;
+using physics::kWz;
+using physics::kX;
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Two balls, or a ball and a cushion, this close are in contact: a root found to double
+// precision puts them within about 1e-15 m, and a scene may place balls frozen together.
+constexpr double kContactTolerance = 1e-9;  // [m]
+
+// The motion of a ball over tau = t - now: p(tau) = p + v tau + 1/2 a tau^2.
+struct Parabola {
+  Eigen::Vector2d p, v, a;
+};
+
+Parabola ParabolaAt(const MotionSegment& s, double now) {
+  const BallState state = s.At(now);
+  return {state.segment<2>(kX), state.segment<2>(kVx), s.acceleration()};
+}
+
+// |q(tau)|^2 - d^2 for q(tau) = p + v tau + 1/2 a tau^2, lowest order first.
+Quartic DistanceSquaredMinus(const Parabola& q, double d) {
+  return {q.p.squaredNorm() - d * d, 2.0 * q.p.dot(q.v), q.v.squaredNorm() + q.p.dot(q.a),
+          q.v.dot(q.a), 0.25 * q.a.squaredNorm()};
+}
+
+// (q(tau) - origin) . n - offset, a quadratic.
+Quartic AlongMinus(const Parabola& q, const Eigen::Vector2d& origin, const Eigen::Vector2d& n,
+                   double offset) {
+  return {(q.p - origin).dot(n) - offset, q.v.dot(n), 0.5 * q.a.dot(n), 0.0, 0.0};
+}
+
+double Derivative(const Quartic& c, double t) {
+  return c[1] + t * (2.0 * c[2] + t * (3.0 * c[3] + t * 4.0 * c[4]));
+}
+
+Eigen::Vector2d PositionAt(const Parabola& q, double tau) {
+  return q.p + q.v * tau + 0.5 * q.a * tau * tau;
+}
+
+// The first tau in [0, window] where f reaches 0 while decreasing (`sign` = -1; +1: while
+// increasing) and `accept` holds; f(0) within `contact` of 0 and moving the right way is 0.
+template <typename Accept>
+double FirstCrossing(const Quartic& f, double window, double sign, double contact,
+                     const Accept& accept) {
+  if (std::abs(f[0]) <= contact && sign * f[1] > 0.0 && accept(0.0)) return 0.0;
+  std::array<double, 4> roots;
+  const int n = RootsInInterval(f, 0.0, window, &roots);
+  for (int k = 0; k < n; ++k) {
+    if (sign * Derivative(f, roots[k]) > 0.0 && accept(roots[k])) return roots[k];
+  }
+  return kInfinity;
+}
+
+// The frame of a cushion whose normal `n` points into the playing area: x along the cushion,
+// y into it, z up (right-handed: y is x turned by +90 degrees).
+struct CushionFrame {
+  Eigen::Vector2d x, y;
+  explicit CushionFrame(const Eigen::Vector2d& n) : x(-n.y(), n.x()), y(-n) {}
+  Eigen::Vector3d In(const Eigen::Vector2d& xy, double z) const {
+    return {xy.dot(x), xy.dot(y), z};
+  }
+  Eigen::Vector2d Out(const Eigen::Vector3d& c) const { return c.x() * x + c.y() * y; }
+};
+
+}  // namespace
+
+const char* EventTypeName(EventType type) {
+  switch (type) {
+    case EventType::kTransition:
+      return "transition";
+    case EventType::kBallBall:
+      return "ball_ball";
+    case EventType::kBallCushion:
+      return "ball_cushion";
+    case EventType::kBallJaw:
+      return "ball_jaw";
+    case EventType::kBallPocket:
+      return "ball_pocket";
+  }
+  return "unknown";
+}
+
+void ValidateScene(const TableGeometry& table, double radius, const std::vector<SceneBall>& balls) {
+  std::set<int> ids;
+  for (const SceneBall& b : balls) {
+    const std::string name = "ball " + std::to_string(b.id);
+    if (!b.state.allFinite()) throw std::invalid_argument(name + ": a state number is not finite");
+    if (b.id < 0) throw std::invalid_argument(name + ": ids are 0 (the cue ball) or more");
+    if (!ids.insert(b.id).second) throw std::invalid_argument(name + ": the id is repeated");
+    if (!table.OnSurface(b.state.segment<2>(kX), radius)) {
+      std::ostringstream what;
+      what << name << " at (" << b.state[kX] << ", " << b.state[kX + 1] << ") is off the "
+           << table.name << " playing surface (or on a cushion or over a pocket)";
+      throw std::invalid_argument(what.str());
+    }
+  }
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    for (std::size_t j = i + 1; j < balls.size(); ++j) {
+      const double gap =
+          (balls[i].state.segment<2>(kX) - balls[j].state.segment<2>(kX)).norm() - 2.0 * radius;
+      if (gap < -kContactTolerance) {
+        std::ostringstream what;
+        what << "balls " << balls[i].id << " and " << balls[j].id << " overlap by " << -gap << " m";
+        throw std::invalid_argument(what.str());
+      }
+    }
+  }
+}
+
+TableSimulation::TableSimulation(const TableGeometry& table, const physics::ModelParameters& params,
+                                 const std::vector<SceneBall>& balls,
+                                 const TableSimulationOptions& options)
+    : table_(table), params_(params), cloth_(ClothParameters::From(params)), options_(options) {
+  physics::ValidateParameters(params);
+  ValidateScene(table, params.ball.radius, balls);
+  for (const SceneBall& b : balls) {
+    balls_.push_back({b.id, {MotionSegment(cloth_, 0.0, b.state)}, std::nullopt});
+  }
+  boundary_.resize(balls_.size());
+  pair_.assign(balls_.size() * balls_.size(), kInfinity);
+  for (std::size_t i = 0; i < balls_.size(); ++i) Recompute(i);
+}
+
+std::size_t TableSimulation::PairIndex(std::size_t i, std::size_t j) const {
+  return std::min(i, j) * balls_.size() + std::max(i, j);
+}
+
+bool TableSimulation::AtRest() const {
+  for (std::size_t i = 0; i < balls_.size(); ++i) {
+    if (Active(i) && Current(i).phase() != MotionPhase::kStationary) return false;
+  }
+  return true;
+}
+
+BallState TableSimulation::StateAt(std::size_t i, double t) const {
+  const std::vector<MotionSegment>& s = balls_[i].segments;
+  // The last segment that starts at or before t (a zero-length segment gives way to the next).
+  auto it = std::upper_bound(s.begin(), s.end(), t, [](double time, const MotionSegment& m) {
+    return time < m.start_time();
+  });
+  return (it == s.begin() ? s.front() : *(it - 1)).At(t);
+}
+
+TableSimulation::Candidate TableSimulation::NextBallBall(std::size_t i, std::size_t j) const {
+  const MotionSegment& a = Current(i);
+  const MotionSegment& b = Current(j);
+  if (a.phase() == MotionPhase::kStationary && b.phase() == MotionPhase::kStationary) return {};
+  const double window = std::min(a.end_time(), b.end_time()) - time_;
+  const Parabola pa = ParabolaAt(a, time_);
+  const Parabola pb = ParabolaAt(b, time_);
+  const Parabola relative{pb.p - pa.p, pb.v - pa.v, pb.a - pa.a};
+  // Cheap rejection: neither ball can cover the gap within the window.
+  const double reach = [&] {
+    const double w = std::min(window, 1e6);
+    return (relative.v.norm() + 0.5 * relative.a.norm() * w) * w;
+  }();
+  const double gap = relative.p.norm() - 2.0 * params_.ball.radius;
+  if (gap > reach + kContactTolerance) return {};
+  const Quartic f = DistanceSquaredMinus(relative, 2.0 * params_.ball.radius);
+  const double contact = 4.0 * params_.ball.radius * kContactTolerance;
+  return {time_ + FirstCrossing(f, window, -1.0, contact, [](double) { return true; }),
+          EventType::kBallBall};
+}
+
+TableSimulation::Candidate TableSimulation::NextBoundary(std::size_t i) const {
+  Candidate best;
+  if (!Active(i) || Current(i).phase() == MotionPhase::kStationary ||
+      Current(i).phase() == MotionPhase::kSpinning) {
+    return best;
+  }
+  const MotionSegment& m = Current(i);
+  const double window = m.end_time() - time_;
+  const Parabola q = ParabolaAt(m, time_);
+  const double r = params_.ball.radius;
+  const auto consider = [&](double tau, EventType type, int index) {
+    if (time_ + tau < best.time) best = {time_ + tau, type, index};
+  };
+  for (std::size_t k = 0; k < table_.lines.size(); ++k) {
+    const CushionLine& line = table_.lines[k];
+    const Eigen::Vector2d along = line.b - line.a;
+    const double length2 = along.squaredNorm();
+    const auto within = [&](double tau) {
+      const double s = (PositionAt(q, tau) - line.a).dot(along);
+      return s >= 0.0 && s <= length2;
+    };
+    consider(FirstCrossing(AlongMinus(q, line.a, line.normal, r), window, -1.0, kContactTolerance,
+                           within),
+             EventType::kBallCushion, static_cast<int>(k));
+  }
+  for (std::size_t k = 0; k < table_.points.size(); ++k) {
+    const CushionPoint& point = table_.points[k];
+    const Parabola relative{q.p - point.centre, q.v, q.a};
+    const double d = r + point.radius;
+    consider(FirstCrossing(DistanceSquaredMinus(relative, d), window, -1.0,
+                           2.0 * d * kContactTolerance, [](double) { return true; }),
+             EventType::kBallJaw, static_cast<int>(k));
+  }
+  for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
+    const Pocket& pocket = table_.pockets[k];
+    const Eigen::Vector2d along = pocket.capture_b - pocket.capture_a;
+    const auto within = [&](double tau) {
+      const double s = (PositionAt(q, tau) - pocket.capture_a).dot(along);
+      return s >= 0.0 && s <= along.squaredNorm();
+    };
+    consider(FirstCrossing(AlongMinus(q, pocket.capture_a, pocket.inward, 0.0), window, 1.0,
+                           kContactTolerance, within),
+             EventType::kBallPocket, static_cast<int>(k));
+  }
+  return best;
+}
+
+void TableSimulation::Recompute(std::size_t i) {
+  boundary_[i] = NextBoundary(i);
+  for (std::size_t j = 0; j < balls_.size(); ++j) {
+    if (j == i) continue;
+    const bool both = Active(i) && Active(j);
+    pair_[PairIndex(i, j)] = both ? NextBallBall(i, j).time : kInfinity;
+  }
+}
+
+void TableSimulation::StartSegment(std::size_t i, const BallState& state) {
+  balls_[i].segments.emplace_back(cloth_, time_, state);
+}
+
+BallState TableSimulation::CushionImpact(const BallState& s, const Eigen::Vector2d& normal,
+                                         double* impulse) const {
+  const CushionFrame frame(normal);
+  const ImpactVelocities before{frame.In(s.segment<2>(kVx), 0.0),
+                                frame.In(s.segment<2>(kWx), s[kWz])};
+  const CushionParameters cushion{table_.cushion_height, params_.collision.cushion_restitution,
+                                  params_.collision.cushion_friction, params_.contact.mu};
+  const ImpactVelocities after =
+      ResolveCushionImpact(options_.cushion_model, before, params_.ball, cushion);
+  *impulse = params_.ball.mass * (before.v.y() - after.v.y());
+  BallState out = s;
+  out.segment<2>(kVx) = frame.Out(after.v);
+  out.segment<2>(kWx) = frame.Out(after.w);
+  out[kWz] = after.w.z();
+  return out;
+}
+
+void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, int index) {
+  TableEvent event = e;
+  const BallState s = Current(i).At(time_);
+  switch (e.type) {
+    case EventType::kTransition:
+      event.from = Current(i).phase();
+      StartSegment(i, s);
+      event.to = Current(i).phase();
+      break;
+    case EventType::kBallBall: {
+      const BallBallImpulse hit =
+          ResolveBallBallImpact(s, Current(j).At(time_), params_.ball, params_.collision);
+      event.impulse = hit.normal;
+      StartSegment(i, hit.a);
+      StartSegment(j, hit.b);
+      break;
+    }
+    case EventType::kBallCushion:
+      StartSegment(i, CushionImpact(s, table_.lines[index].normal, &event.impulse));
+      break;
+    case EventType::kBallJaw: {
+      const Eigen::Vector2d n = (s.segment<2>(kX) - table_.points[index].centre).normalized();
+      StartSegment(i, CushionImpact(s, n, &event.impulse));
+      break;
+    }
+    case EventType::kBallPocket: {
+      BallState dropped = s;
+      dropped.segment<5>(kVx).setZero();
+      StartSegment(i, dropped);
+      balls_[i].pocket = table_.pockets[index].name;
+      balls_[i].pocket_time = time_;
+      event.pocket = *balls_[i].pocket;
+      break;
+    }
+  }
+  events_.push_back(event);
+  Recompute(i);
+  if (e.type == EventType::kBallBall) Recompute(j);
+}
+
+void TableSimulation::Run(double t_end) {
+  if (!(t_end >= time_)) throw std::invalid_argument("the end time is before the present");
+  while (true) {
+    // The earliest candidate; ties to the lower index and the kinds in declaration order.
+    double best = kInfinity;
+    TableEvent next;
+    std::size_t bi = 0, bj = 0;
+    int index = -1;
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+      if (!Active(i)) continue;
+      if (Current(i).end_time() < best) {
+        best = Current(i).end_time();
+        next.type = EventType::kTransition;
+        bi = i;
+      }
+    }
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+      for (std::size_t j = i + 1; j < balls_.size(); ++j) {
+        if (pair_[PairIndex(i, j)] < best) {
+          best = pair_[PairIndex(i, j)];
+          next.type = EventType::kBallBall;
+          bi = i;
+          bj = j;
+        }
+      }
+    }
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+      if (boundary_[i].time < best) {
+        best = boundary_[i].time;
+        next.type = boundary_[i].type;
+        bi = i;
+        index = boundary_[i].index;
+      }
+    }
+    if (best > t_end) break;
+    if (static_cast<std::int64_t>(events_.size()) >= options_.max_events) {
+      throw std::runtime_error("the scene needs more than " + std::to_string(options_.max_events) +
+                               " events");
+    }
+    time_ = best;
+    next.time = best;
+    next.ball = balls_[bi].id;
+    if (next.type == EventType::kBallBall) next.other = balls_[bj].id;
+    if (next.type == EventType::kBallCushion || next.type == EventType::kBallJaw) {
+      next.cushion = index;
+    }
+    Apply(next, bi, bj, index);
+  }
+  if (std::isfinite(t_end)) time_ = t_end;
+}
+
+}  // namespace billiard::table

@@ -1,0 +1,121 @@
+// Every ball on the table, event by event.
+//
+// Between events each ball moves in closed form (`sim/table/ball_motion.h`: sliding, rolling,
+// spinning, at rest; its centre on a parabola), so the next event of every kind is the first
+// root of a polynomial in time, found exactly (`sim/table/polynomial_roots.h`):
+//  - ball-ball: |p_a(t) - p_b(t)|^2 = (2 r)^2, a quartic;
+//  - ball-cushion: the centre at distance r from a cushion's nose line (a quadratic) or at
+//    r + rho from a jaw's rounded nose of radius rho (a quartic);
+//  - ball-pocket: the centre crossing a pocket's capture line (a quadratic);
+//  - each ball's phase transitions, in closed form.
+// A root counts only where the distance is closing, so balls touching and parting (a rack, a
+// ball leaving a cushion) are no event; touching and closing is an event at once (frozen balls,
+// Newton's cradle: one impact after another at the same time, in a fixed order). The simulation
+// jumps from event to event, resolves it (`ball_collision.h`, `cushion_impact.h`) and recomputes
+// only the next events of the balls it changed. Ties go to the lower ball index and the event
+// kinds in the order transitions, balls, cushions, pockets: the same scene gives the same events,
+// bit for bit.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/physics/ball_state.h"
+#include "sim/physics/parameters.h"
+#include "sim/table/ball_motion.h"
+#include "sim/table/cushion_impact.h"
+#include "sim/table/scene.h"
+#include "sim/table/table_geometry.h"
+
+namespace billiard::table {
+
+enum class EventType { kTransition, kBallBall, kBallCushion, kBallJaw, kBallPocket };
+
+// "transition", "ball_ball", "ball_cushion", "ball_jaw", "ball_pocket".
+const char* EventTypeName(EventType type);
+
+struct TableEvent {
+  double time = 0.0;
+  EventType type = EventType::kTransition;
+  int ball = -1;       // the ball's id
+  int other = -1;      // ball_ball: the other ball's id
+  int cushion = -1;    // ball_cushion: index of TableGeometry::lines; ball_jaw: of points
+  std::string pocket;  // ball_pocket: the pocket's name
+  MotionPhase from = MotionPhase::kStationary, to = MotionPhase::kStationary;  // transition
+  double impulse = 0.0;  // the normal impulse of an impact [N s]
+};
+
+struct TableSimulationOptions {
+  CushionModel cushion_model = CushionModel::kMathavan2010;
+  // A scene that needs more events than this is refused (std::runtime_error): a break takes a
+  // few hundred.
+  std::int64_t max_events = 1000000;
+};
+
+class TableSimulation {
+ public:
+  // Throws std::invalid_argument, naming the ball, for an invalid scene (ValidateScene).
+  TableSimulation(const TableGeometry& table, const physics::ModelParameters& params,
+                  const std::vector<SceneBall>& balls, const TableSimulationOptions& options = {});
+
+  // Runs the events up to time t_end (infinite: until every ball rests or is pocketed).
+  void Run(double t_end = std::numeric_limits<double>::infinity());
+
+  double time() const { return time_; }
+  bool AtRest() const;
+  const std::vector<TableEvent>& events() const { return events_; }
+  std::size_t ball_count() const { return balls_.size(); }
+  int id(std::size_t i) const { return balls_[i].id; }
+  // The state of ball i at time t, 0 <= t <= time() (a pocketed ball: where it dropped, at rest).
+  physics::BallState StateAt(std::size_t i, double t) const;
+  physics::BallState State(std::size_t i) const { return StateAt(i, time_); }
+  // The pocket ball i dropped into by time(), if any.
+  const std::optional<std::string>& pocket(std::size_t i) const { return balls_[i].pocket; }
+  // The motion segments of ball i so far, in time order.
+  const std::vector<MotionSegment>& segments(std::size_t i) const { return balls_[i].segments; }
+
+ private:
+  struct Ball {
+    int id;
+    std::vector<MotionSegment> segments;  // the last one is the current motion
+    std::optional<std::string> pocket;
+    double pocket_time = std::numeric_limits<double>::infinity();
+  };
+  struct Candidate {  // the next event of one kind for one ball or pair
+    double time = std::numeric_limits<double>::infinity();
+    EventType type = EventType::kTransition;
+    int index = -1;  // cushion line, jaw point or pocket
+  };
+
+  const MotionSegment& Current(std::size_t i) const { return balls_[i].segments.back(); }
+  bool Active(std::size_t i) const { return !balls_[i].pocket; }
+  std::size_t PairIndex(std::size_t i, std::size_t j) const;
+
+  void Recompute(std::size_t i);
+  Candidate NextBallBall(std::size_t i, std::size_t j) const;
+  Candidate NextBoundary(std::size_t i) const;
+  void Apply(const TableEvent& event, std::size_t i, std::size_t j, int index);
+  void StartSegment(std::size_t i, const physics::BallState& state);
+  physics::BallState CushionImpact(const physics::BallState& s, const Eigen::Vector2d& normal,
+                                   double* impulse) const;
+
+  TableGeometry table_;
+  physics::ModelParameters params_;
+  ClothParameters cloth_;
+  TableSimulationOptions options_;
+  std::vector<Ball> balls_;
+  double time_ = 0.0;
+  std::vector<TableEvent> events_;
+  std::vector<Candidate> boundary_;  // per ball: cushion, jaw or pocket
+  std::vector<double> pair_;         // per pair i < j: the next ball-ball time
+};
+
+// Refuses, with a one-line reason naming the ball, a scene with a non-finite number, an id below
+// 0 or repeated, a ball off the playing surface (TableGeometry::OnSurface) or two balls
+// overlapping by more than a nanometre.
+void ValidateScene(const TableGeometry& table, double radius, const std::vector<SceneBall>& balls);
+
+}  // namespace billiard::table
