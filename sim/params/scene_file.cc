@@ -1,0 +1,105 @@
+#include "sim/params/scene_file.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+namespace billiard::params {
+
+namespace {
+
+std::string TypeName(const nlohmann::json& j) { return j.is_null() ? "null" : j.type_name(); }
+
+// Refuses any key of `object` that is not in `known`, naming it.
+void RequireKnownKeys(const nlohmann::json& object, std::initializer_list<const char*> known,
+                      const std::string& where) {
+  for (const auto& [key, value] : object.items()) {
+    bool found = false;
+    for (const char* k : known) found = found || key == k;
+    if (!found) throw std::invalid_argument(where + ": unknown key " + key);
+  }
+}
+
+const nlohmann::json& Required(const nlohmann::json& object, const char* key,
+                               const std::string& where) {
+  if (!object.contains(key)) throw std::invalid_argument(where + ": missing " + key);
+  return object.at(key);
+}
+
+std::string RequiredText(const nlohmann::json& object, const char* key, const std::string& where) {
+  const nlohmann::json& value = Required(object, key, where);
+  if (!value.is_string()) {
+    throw std::invalid_argument(where + ": " + key + " must be a string, not " + TypeName(value));
+  }
+  return value.get<std::string>();
+}
+
+table::SceneBall ParseBall(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object()) throw std::invalid_argument(where + " must be an object, not " + TypeName(j));
+  RequireKnownKeys(j, {"id", "state"}, where);
+  const nlohmann::json& id = Required(j, "id", where);
+  if (!id.is_number_integer()) {
+    throw std::invalid_argument(where + ": id must be an integer, not " + TypeName(id));
+  }
+  const nlohmann::json& state = Required(j, "state", where);
+  if (!state.is_array() || state.size() != 7) {
+    throw std::invalid_argument(where + ": state must be 7 numbers [X, Y, vx, vy, wx, wy, wz]");
+  }
+  table::SceneBall ball;
+  ball.id = id.get<int>();
+  for (int k = 0; k < 7; ++k) {
+    if (!state[k].is_number()) {
+      throw std::invalid_argument(where + ": state[" + std::to_string(k) +
+                                  "] must be a number, not " + TypeName(state[k]));
+    }
+    ball.state[k] = state[k].get<double>();
+  }
+  return ball;
+}
+
+}  // namespace
+
+SceneFile ParseScene(const std::string& json_text, const std::string& origin) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(json_text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw std::invalid_argument(origin + ": not valid JSON (" + e.what() + ")");
+  }
+  if (!j.is_object()) throw std::invalid_argument(origin + ": a scene is a JSON object");
+  RequireKnownKeys(j, {"table", "params", "balls"}, origin);
+  SceneFile scene;
+  scene.table = RequiredText(j, "table", origin);
+  scene.params = RequiredText(j, "params", origin);
+  const nlohmann::json& balls = Required(j, "balls", origin);
+  if (!balls.is_array()) {
+    throw std::invalid_argument(origin + ": balls must be an array, not " + TypeName(balls));
+  }
+  for (std::size_t k = 0; k < balls.size(); ++k) {
+    scene.balls.push_back(ParseBall(balls[k], origin + ": balls[" + std::to_string(k) + "]"));
+  }
+  return scene;
+}
+
+SceneFile LoadScene(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw std::invalid_argument("cannot read scene file '" + path + "'");
+  std::stringstream text;
+  text << file.rdbuf();
+  return ParseScene(text.str(), path);
+}
+
+std::string SceneJson(const SceneFile& scene) {
+  nlohmann::json j;
+  j["table"] = scene.table;
+  j["params"] = scene.params;
+  j["balls"] = nlohmann::json::array();
+  for (const table::SceneBall& b : scene.balls) {
+    j["balls"].push_back(
+        {{"id", b.id}, {"state", std::vector<double>(b.state.data(), b.state.data() + 7)}});
+  }
+  return j.dump();
+}
+
+}  // namespace billiard::params

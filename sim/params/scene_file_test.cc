@@ -1,0 +1,71 @@
+// Scene files: the round trip to the bit, and every malformed scene refused naming what is wrong.
+#include "sim/params/scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace billiard::params {
+namespace {
+
+std::string Refusal(const std::string& json) {
+  try {
+    ParseScene(json, "s.json");
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SceneFile, RoundTripsEveryNumberToTheBit) {
+  SceneFile scene{"pool-9ft", "pool", {}};
+  scene.balls.push_back({0, physics::MakeBallState(0.1 + 1e-17, 1.0 / 3.0, -2.5e-300, 7, 0, 0,
+                                                   -123.456789012345678)});
+  scene.balls.push_back({9, physics::MakeBallState(2.2, 0.6, 0, 0, 0, 0, 0)});
+  const SceneFile back = ParseScene(SceneJson(scene), "t");
+  EXPECT_EQ(back.table, "pool-9ft");
+  EXPECT_EQ(back.params, "pool");
+  ASSERT_EQ(back.balls.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(back.balls[k].id, scene.balls[k].id);
+    EXPECT_EQ(back.balls[k].state, scene.balls[k].state);
+  }
+}
+
+TEST(SceneFile, RefusesMalformedScenesNamingTheFault) {
+  const std::string ball = R"({"id":0,"state":[1,0.5,0,0,0,0,0]})";
+  EXPECT_EQ(Refusal(R"({"table":"pool-9ft","params":"pool","balls":[)" + ball + "]}"), "");
+  EXPECT_NE(Refusal("[1, 2]").find("a scene is a JSON object"), std::string::npos);
+  EXPECT_NE(Refusal("{").find("not valid JSON"), std::string::npos);
+  EXPECT_NE(Refusal(R"({"params":"pool","balls":[]})").find("missing table"), std::string::npos);
+  EXPECT_NE(Refusal(R"({"table":"pool-9ft","params":"pool","balls":[],"bals":1})")
+                .find("unknown key bals"),
+            std::string::npos);
+  EXPECT_NE(Refusal(R"({"table":7,"params":"pool","balls":[]})").find("table must be a string"),
+            std::string::npos);
+  EXPECT_NE(Refusal(R"({"table":"t","params":"pool","balls":[{"id":0.5,"state":[1,1,0,0,0,0,0]}]})")
+                .find("balls[0]: id must be an integer"),
+            std::string::npos);
+  EXPECT_NE(Refusal(R"({"table":"t","params":"pool","balls":[{"id":0,"state":[1,1,0]}]})")
+                .find("balls[0]: state must be 7 numbers"),
+            std::string::npos);
+  EXPECT_NE(Refusal(R"({"table":"t","params":"pool","balls":[{"id":0,"state":[1,"x",0,0,0,0,0]}]})")
+                .find("state[1] must be a number"),
+            std::string::npos);
+  EXPECT_NE(Refusal(R"({"table":"t","params":"pool","balls":[{"id":0,"spin":1}]})")
+                .find("unknown key spin"),
+            std::string::npos);
+}
+
+TEST(SceneFile, AMissingFileIsRefusedWithItsPath) {
+  try {
+    LoadScene("/nonexistent/scene.json");
+    FAIL() << "no refusal";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.json"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace billiard::params
