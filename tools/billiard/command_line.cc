@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <sstream>
 
 namespace billiard::cli {
 
@@ -62,6 +63,20 @@ physics::ModelParameters LoadParametersOption(const std::string& name_or_path) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--params: ") + e.what());
   }
+}
+
+double TrajectorySamples(double t_end, double dt) { return std::ceil(t_end / dt - 1e-9) + 1.0; }
+
+void RequireTrajectoryWithinLimit(double t_end, double dt, int balls) {
+  const double samples = TrajectorySamples(t_end, dt);
+  if (samples * balls <= kMaxTrajectoryRows) return;
+  std::ostringstream reason;
+  reason.precision(15);
+  reason << "--sample-dt " << dt << " to t = " << t_end << " s asks for " << samples << " samples";
+  if (balls > 1) reason << " of " << balls << " balls";
+  reason << ", more than the " << kMaxTrajectoryRows << " rows"
+         << " a trajectory file may hold (raise --sample-dt)";
+  throw UsageError(reason.str());
 }
 
 }  // namespace billiard::cli

@@ -47,4 +47,16 @@ void RequireWritableDirectory(const std::string& dir, const std::string& option)
 // does not load.
 physics::ModelParameters LoadParametersOption(const std::string& name_or_path);
 
+// The most rows a trajectory file gets: a sample every 10 us of a 10 s shot, far finer than the
+// integrator's steps (about a hundred a shot), and at 130 to 180 bytes a row about 150 MB. A
+// --sample-dt of 1e-9 would otherwise write gigabytes.
+inline constexpr double kMaxTrajectoryRows = 1e6;
+
+// Samples at 0, dt, 2 dt, ... and at t_end itself; a double, as a tiny dt overflows any integer.
+double TrajectorySamples(double t_end, double dt);
+
+// Refuses (UsageError), before any file is made, a trajectory of `balls` rows per sample that
+// would hold more than kMaxTrajectoryRows rows.
+void RequireTrajectoryWithinLimit(double t_end, double dt, int balls = 1);
+
 }  // namespace billiard::cli

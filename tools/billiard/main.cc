@@ -18,6 +18,7 @@
 #include "tools/billiard/node_status_command.h"
 #include "tools/billiard/plan_command.h"
 #include "tools/billiard/replay_command.h"
+#include "tools/billiard/scene_commands.h"
 #include "tools/billiard/simulate_command.h"
 
 namespace {
@@ -50,6 +51,8 @@ int main(int argc, char** argv) {
   billiard::cli::AddEdgeReportCommand(app);
   billiard::cli::AddDetectCommand(app);
   billiard::cli::AddCalibrateCommand(app);
+  billiard::cli::AddRackCommand(app);
+  billiard::cli::AddBenchScenesCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -14,6 +14,7 @@
 #include "sim/physics/parameters.h"
 #include "sim/physics/simulator.h"
 #include "tools/billiard/command_line.h"
+#include "tools/billiard/scene_commands.h"
 
 namespace billiard::cli {
 
@@ -21,8 +22,10 @@ namespace {
 
 struct SimulateArgs {
   std::string state;
-  double t_end = 0.0;
-  std::string model = "approx";
+  std::optional<double> t_end;
+  std::string scene;
+  std::string cushion_model = "mathavan-2010";
+  std::string model;  // "": approx for one ball, auto for a scene
   std::string integrator = "rodas4";
   double accuracy = 0.0;  // --model auto only
   std::string params = params::kDefaultParameterSet;
@@ -34,26 +37,6 @@ struct SimulateArgs {
   std::optional<double> until_speed;
   bool json = false;
 };
-
-// The most rows a trajectory file gets: a sample every 10 us of a 10 s shot, far finer than the
-// integrator's steps (about a hundred a shot), and at 130 to 180 bytes a row about 150 MB. A
-// --sample-dt of 1e-9 would otherwise write gigabytes.
-constexpr double kMaxTrajectorySamples = 1e6;
-
-// Samples at 0, dt, 2 dt, ... and at t_end itself; a double, as a tiny dt overflows any integer.
-double TrajectorySamples(double t_end, double dt) { return std::ceil(t_end / dt - 1e-9) + 1.0; }
-
-// Refuses, before any file is made, a trajectory of more rows than kMaxTrajectorySamples.
-void RequireTrajectoryWithinLimit(double t_end, double dt) {
-  const double samples = TrajectorySamples(t_end, dt);
-  if (samples <= kMaxTrajectorySamples) return;
-  std::ostringstream reason;
-  reason.precision(15);
-  reason << "--sample-dt " << dt << " to t = " << t_end << " s asks for " << samples
-         << " samples, more than the " << kMaxTrajectorySamples
-         << " a trajectory file may hold (raise --sample-dt)";
-  throw UsageError(reason.str());
-}
 
 void WriteTrajectoryCsv(const physics::Trajectory& trajectory, double t_end, double dt,
                         const std::string& path) {
@@ -74,17 +57,28 @@ void WriteTrajectoryCsv(const physics::Trajectory& trajectory, double t_end, dou
 }
 
 void Run(const SimulateArgs& args) {
+  if (args.scene.empty() == args.state.empty()) {
+    throw UsageError("give one of --state (one ball) and --scene (a table)");
+  }
+  if (!args.scene.empty()) {
+    SimulateScene({args.scene, args.t_end, args.model.empty() ? "auto" : args.model,
+                   args.cushion_model, args.trajectory_path, args.sample_dt, args.json});
+    return;
+  }
+  if (!args.t_end) throw UsageError("--state needs --t-end");
+  const double t_end = *args.t_end;
   const auto numbers = ParseNumberList(args.state, 7, "--state X,Y,vx,vy,wx,wy,wz");
-  RequireFinite(args.t_end, "--t-end");
-  if (args.t_end < 0.0) throw UsageError("--t-end must be >= 0");
+  RequireFinite(t_end, "--t-end");
+  if (t_end < 0.0) throw UsageError("--t-end must be >= 0");
   if (!(args.tol > 0.0) || !std::isfinite(args.tol)) throw UsageError("--tol must be positive");
   if (!(args.sample_dt > 0.0) || !std::isfinite(args.sample_dt)) {
     throw UsageError("--sample-dt must be a positive number of seconds");
   }
-  const bool automatic = args.model == "auto";
-  const auto model = physics::ParseModel(args.model);
+  const std::string model_name = args.model.empty() ? "approx" : args.model;
+  const bool automatic = model_name == "auto";
+  const auto model = physics::ParseModel(model_name);
   if (!model && !automatic) {
-    throw UsageError("--model: unknown model '" + args.model +
+    throw UsageError("--model: unknown model '" + model_name +
                      "' (approx, integral, closed-form, auto)");
   }
   if (automatic != (args.accuracy != 0.0)) {
@@ -122,18 +116,18 @@ void Run(const SimulateArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   // Either to t_end, or to the arrival at a speed with t_end as the limit.
   physics::SimulationResult result;
-  double t = args.t_end;
+  double t = t_end;
   std::optional<bool> arrived;
   if (args.until_speed) {
     physics::Arrival a =
-        physics::SimulateArrival(params, initial, *args.until_speed, args.t_end, options);
+        physics::SimulateArrival(params, initial, *args.until_speed, t_end, options);
     result.final_state = a.state;
     result.stats = a.stats;
     result.trajectory = std::move(a.trajectory);
     t = a.time;
     arrived = a.reached;
   } else {
-    result = physics::Simulate(params, initial, args.t_end, options);
+    result = physics::Simulate(params, initial, t_end, options);
   }
   const double wall_us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
@@ -191,16 +185,22 @@ void AddSimulateCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("simulate", "Simulate one ball from an initial state");
   cmd->add_option("--state", args->state,
                   "Initial state X,Y,vx,vy,wx,wy,wz [m, m/s, rad/s] (write --state=-1,... "
-                  "when it starts with a minus sign)")
-      ->required();
-  cmd->add_option("--t-end", args->t_end, "End time [s] (with --until-speed: the longest)")
-      ->required();
+                  "when it starts with a minus sign)");
+  cmd->add_option("--scene", args->scene,
+                  "A table scene (JSON: table, params, balls; `billiard rack` writes one): every "
+                  "ball, event by event");
+  cmd->add_option("--t-end", args->t_end,
+                  "End time [s] (with --until-speed: the longest; a scene without it runs until "
+                  "every ball rests or is pocketed)");
+  cmd->add_option("--cushion-model", args->cushion_model,
+                  "--scene: mathavan-2010 (default) | han-2005")
+      ->capture_default_str();
   cmd->add_option("--until-speed", args->until_speed,
                   "Stop where the speed first falls to this [m/s] (0: where the ball comes to "
                   "rest); the JSON's t is that time and \"arrived\" says whether it came");
   cmd->add_option("--model", args->model,
-                  "approx | integral | closed-form | auto (the cheapest that meets --accuracy)")
-      ->capture_default_str();
+                  "approx (default for --state) | integral | closed-form | auto (the cheapest "
+                  "that meets --accuracy; the default for --scene)");
   cmd->add_option("--accuracy", args->accuracy,
                   "--model auto: endpoint error allowed [m], per the measured tables "
                   "(docs/benchmarks)");

@@ -1,0 +1,234 @@
+// The whole table, event by event: collision times against their closed forms, the failure
+// cases other simulators' users reported (pooltool issues: balls passing through each other, a
+// corner escape, Newton's cradle, frozen balls, a narrow gap), and 1,000 seeded breaks that must
+// keep every ball apart, on the table and losing energy.
+#include "sim/table/table_simulation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
+#include "sim/table/testing/breaks.h"
+
+namespace billiard::table {
+namespace {
+
+using physics::BallState;
+using physics::kVx;
+using physics::kVy;
+using physics::kX;
+using physics::kY;
+using physics::MakeBallState;
+
+physics::ModelParameters Pool() { return params::LoadParameters("pool"); }
+TableGeometry Table(const std::string& name) { return BuildTable(params::LoadTableSpec(name)); }
+
+// Elastic balls without friction between them: the textbook limits.
+physics::ModelParameters Ideal() {
+  physics::ModelParameters p = Pool();
+  p.collision.ball_restitution = 1.0;
+  p.collision.ball_friction_a = p.collision.ball_friction_b = 0.0;
+  return p;
+}
+
+std::vector<TableEvent> OfType(const TableSimulation& sim, EventType type) {
+  std::vector<TableEvent> out;
+  for (const TableEvent& e : sim.events()) {
+    if (e.type == type) out.push_back(e);
+  }
+  return out;
+}
+
+// The smallest centre distance minus 2 r over all pairs of unpocketed balls at time t.
+double SmallestGap(const TableSimulation& sim, double t, double r) {
+  double smallest = INFINITY;
+  for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+    for (std::size_t j = i + 1; j < sim.ball_count(); ++j) {
+      if (sim.pocket(i) || sim.pocket(j)) continue;
+      const double d = (sim.StateAt(i, t).head<2>() - sim.StateAt(j, t).head<2>()).norm();
+      smallest = std::min(smallest, d - 2.0 * r);
+    }
+  }
+  return smallest;
+}
+
+TEST(TableSimulation, HeadOnStunMeetsAtTheSlidingBallsTimeAndSendsHalfOnePlusE) {
+  const auto p = Pool();
+  const TableGeometry table = Table("pool-9ft");
+  const double r = p.ball.radius, v0 = 2.0, gap = 0.01, g = p.ball.gravity, mu = p.contact.mu;
+  const double y = table.width / 2;
+  TableSimulation sim(table, p,
+                      {{0, MakeBallState(0.6, y, v0, 0, 0, 0, 0)},
+                       {1, MakeBallState(0.6 + 2 * r + gap, y, 0, 0, 0, 0, 0)}});
+  sim.Run(0.05);
+  const auto hits = OfType(sim, EventType::kBallBall);
+  ASSERT_EQ(hits.size(), 1u);
+  // gap = v0 t - mu g t^2 / 2 while the cue ball slides without spin.
+  const double t = (v0 - std::sqrt(v0 * v0 - 2 * mu * g * gap)) / (mu * g);
+  EXPECT_NEAR(hits[0].time, t, 1e-12);
+  const double e = p.collision.ball_restitution;
+  EXPECT_NEAR(sim.StateAt(1, t)[kVx], (1 + e) / 2 * (v0 - mu * g * t), 1e-12);
+}
+
+TEST(TableSimulation, NewtonsCradleSendsTheLastBallAlone) {
+  const auto p = Ideal();
+  const TableGeometry table = Table("pool-9ft");
+  const double r = p.ball.radius, y = table.width / 2, v = 1.0;
+  std::vector<SceneBall> balls{{0, MakeBallState(0.5, y, v, 0, 0, v / r, 0)}};
+  for (int k = 1; k <= 4; ++k) balls.push_back({k, MakeBallState(0.6 + 2 * r * k, y, 0, 0, 0, 0, 0)});
+  TableSimulation sim(table, p, balls);
+  sim.Run(0.3);
+  const auto hits = OfType(sim, EventType::kBallBall);
+  ASSERT_GE(hits.size(), 4u);
+  // The impact runs down the row at one instant, in order.
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(hits[k].time, hits[0].time);
+    EXPECT_EQ(hits[k].ball, k);
+    EXPECT_EQ(hits[k].other, k + 1);
+  }
+  const double t = hits[3].time;
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(sim.StateAt(k, t).segment<2>(kVx).norm(), 0.0, 1e-12);
+  EXPECT_GT(sim.StateAt(4, t)[kVx], 0.99 * v);
+  for (double s = 0.0; s <= 0.3; s += 1e-3) EXPECT_GT(SmallestGap(sim, s, r), -1e-9) << s;
+}
+
+TEST(TableSimulation, FrozenBallsPartWithoutOverlapAndKeepTheMomentum) {
+  const auto p = Pool();
+  const TableGeometry table = Table("pool-9ft");
+  const double r = p.ball.radius, y = table.width / 2;
+  // Two object balls frozen together across the cue ball's line, the cue ball driven between.
+  TableSimulation sim(table, p,
+                      {{0, MakeBallState(0.8, y, 3.0, 0, 0, 0, 0)},
+                       {1, MakeBallState(1.2, y + r, 0, 0, 0, 0, 0)},
+                       {2, MakeBallState(1.2, y - r, 0, 0, 0, 0, 0)}});
+  sim.Run();
+  EXPECT_TRUE(sim.AtRest());
+  for (double s = 0.0; s <= sim.time(); s += 1e-3) EXPECT_GT(SmallestGap(sim, s, r), -1e-9) << s;
+  // By symmetry the two object balls leave mirrored about the cue ball's line, and the first
+  // contact (exactly simultaneous) is resolved in a fixed order.
+  const auto hits = OfType(sim, EventType::kBallBall);
+  ASSERT_GE(hits.size(), 2u);
+  EXPECT_EQ(hits[0].ball, 0);
+  EXPECT_EQ(hits[0].other, 1);
+}
+
+TEST(TableSimulation, AFastBallThreadsAGapOneMillimetreWiderThanItself) {
+  const auto p = Pool();
+  const TableGeometry table = Table("pool-9ft");
+  const double r = p.ball.radius, y = table.width / 2;
+  for (double extra : {+0.001, -0.001}) {
+    // Two balls at rest whose surfaces are 2 r + extra apart, the cue ball at 10 m/s through the
+    // middle.
+    const double half = r + (2 * r + extra) / 2;
+    TableSimulation sim(table, p,
+                        {{0, MakeBallState(0.3, y, 10.0, 0, 0, 0, 0)},
+                         {1, MakeBallState(1.0, y + half, 0, 0, 0, 0, 0)},
+                         {2, MakeBallState(1.0, y - half, 0, 0, 0, 0, 0)}});
+    sim.Run(0.2);
+    EXPECT_EQ(OfType(sim, EventType::kBallBall).empty(), extra > 0) << extra;
+    for (double s = 0.0; s <= 0.2; s += 1e-4) EXPECT_GT(SmallestGap(sim, s, r), -1e-9) << s;
+  }
+}
+
+TEST(TableSimulation, ACornerShotComesBackOffBothCushions) {
+  // A carom table has no pockets: a ball sent into a corner at 45 degrees meets both cushions
+  // at the same instant (and, nudged, a few nanoseconds apart). It must come back out.
+  const physics::ModelParameters p = params::LoadParameters("carom");
+  const TableGeometry table = Table("carom-10ft");
+  const double r = p.ball.radius;
+  for (double nudge : {0.0, 1e-9, -1e-9}) {
+    const double start = 0.5;
+    TableSimulation sim(table, p,
+                        {{0, MakeBallState(table.length - start + nudge, table.width - start,
+                                           3.0, 3.0, 0, 0, 0)}});
+    sim.Run(2.0);
+    EXPECT_GE(OfType(sim, EventType::kBallCushion).size(), 2u) << nudge;
+    for (double s = 0.0; s <= 2.0; s += 1e-4) {
+      const BallState b = sim.StateAt(0, s);
+      EXPECT_TRUE(table.OnSurface(b.head<2>(), r * (1 - 1e-9))) << s << " " << b.transpose();
+    }
+    EXPECT_LT(sim.State(0)[kVx], 0.0);
+    EXPECT_LT(sim.State(0)[kVy], 0.0);
+  }
+}
+
+TEST(TableSimulation, AStraightPotDropsThroughTheCaptureLine) {
+  const auto p = Pool();
+  const TableGeometry table = Table("pool-9ft");
+  const Pocket* corner = nullptr;
+  for (const Pocket& pk : table.pockets) {
+    if (pk.name == "upper_right") corner = &pk;
+  }
+  ASSERT_NE(corner, nullptr);
+  const Eigen::Vector2d start(table.length / 2, table.width / 2);
+  const Eigen::Vector2d aim = (corner->centre - start).normalized() * 3.0;
+  TableSimulation sim(table, p, {{0, MakeBallState(start.x(), start.y(), aim.x(), aim.y(), 0, 0, 0)}});
+  sim.Run();
+  ASSERT_TRUE(sim.pocket(0));
+  EXPECT_EQ(*sim.pocket(0), "upper_right");
+  EXPECT_TRUE(sim.AtRest());
+}
+
+TEST(TableSimulation, BadScenesAreRefusedNamingTheBall) {
+  const auto p = Pool();
+  const TableGeometry table = Table("pool-9ft");
+  const double r = p.ball.radius;
+  const auto refusal = [&](const std::vector<SceneBall>& balls) -> std::string {
+    try {
+      TableSimulation sim(table, p, balls);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const BallState here = MakeBallState(1.0, 0.6, 0, 0, 0, 0, 0);
+  EXPECT_EQ(refusal({{0, here}}), "");
+  EXPECT_NE(refusal({{0, here}, {1, here + MakeBallState(r, 0, 0, 0, 0, 0, 0)}}).find("overlap"),
+            std::string::npos);
+  EXPECT_NE(refusal({{3, MakeBallState(-0.2, 0.6, 0, 0, 0, 0, 0)}}).find("ball 3"),
+            std::string::npos);
+  EXPECT_NE(refusal({{0, here}, {0, MakeBallState(2, 0.6, 0, 0, 0, 0, 0)}}).find("repeated"),
+            std::string::npos);
+  EXPECT_NE(refusal({{0, MakeBallState(1, 0.6, NAN, 0, 0, 0, 0)}}).find("not finite"),
+            std::string::npos);
+  EXPECT_NE(refusal({{-1, here}}).find("ball -1"), std::string::npos);
+}
+
+TEST(TableSimulation, AThousandSeededBreaksKeepBallsApartOnTheTableAndLoseEnergy) {
+  const auto p = Pool();
+  const TableGeometry table = Table("pool-9ft");
+  const double r = p.ball.radius;
+  int pocketed = 0;
+  for (std::uint64_t seed = 0; seed < 1000; ++seed) {
+    TableSimulation sim(table, p, testing::SeededBreak(table, p, seed));
+    sim.Run();
+    ASSERT_TRUE(sim.AtRest()) << "seed " << seed;
+    double energy = INFINITY;
+    for (double t = 0.0; t <= sim.time(); t += 2e-3) {
+      ASSERT_GT(SmallestGap(sim, t, r), -1e-9) << "seed " << seed << ", t = " << t;
+      double e = 0.0;
+      for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+        const BallState s = sim.StateAt(i, t);
+        e += physics::KineticEnergy(s, p.ball.mass, p.ball.radius);
+        const bool dropped = sim.pocket(i) && !sim.segments(i).empty() &&
+                             t >= sim.segments(i).back().start_time();
+        if (!dropped) {
+          ASSERT_TRUE(table.OnSurface(s.head<2>(), r * (1 - 1e-9)))
+              << "seed " << seed << ", ball " << sim.id(i) << ", t = " << t;
+        }
+      }
+      ASSERT_LE(e, energy * (1 + 1e-12)) << "seed " << seed << ", t = " << t;
+      energy = e;
+    }
+    for (std::size_t i = 0; i < sim.ball_count(); ++i) pocketed += sim.pocket(i) ? 1 : 0;
+  }
+  // A break at 7 m/s pockets a ball or two on average; a table that swallows nothing (or
+  // everything) is wrong.
+  EXPECT_GT(pocketed, 300);
+  EXPECT_LT(pocketed, 6000);
+}
+
+}  // namespace
+}  // namespace billiard::table

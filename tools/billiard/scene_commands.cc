@@ -1,0 +1,239 @@
+#include "tools/billiard/scene_commands.h"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "bench/scene_benchmark.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/params/scene_file.h"
+#include "sim/params/table_specs.h"
+#include "sim/table/rack.h"
+#include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
+#include "tools/billiard/command_line.h"
+
+namespace billiard::cli {
+
+namespace {
+
+table::TableGeometry LoadTableOption(const std::string& name_or_path) {
+  try {
+    return table::BuildTable(params::LoadTableSpec(name_or_path));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+}
+
+table::CushionModel ParseCushionModel(const std::string& name) {
+  if (name == "mathavan-2010") return table::CushionModel::kMathavan2010;
+  if (name == "han-2005") return table::CushionModel::kHan2005;
+  throw UsageError("--cushion-model: unknown model '" + name + "' (mathavan-2010, han-2005)");
+}
+
+nlohmann::json EventJson(const table::TableEvent& e) {
+  nlohmann::json j = {{"t", e.time}, {"type", table::EventTypeName(e.type)}};
+  j["balls"] = e.other >= 0 ? std::vector<int>{e.ball, e.other} : std::vector<int>{e.ball};
+  switch (e.type) {
+    case table::EventType::kTransition:
+      j["from"] = table::PhaseName(e.from);
+      j["to"] = table::PhaseName(e.to);
+      break;
+    case table::EventType::kBallPocket:
+      j["pocket"] = e.pocket;
+      break;
+    case table::EventType::kBallCushion:
+    case table::EventType::kBallJaw:
+      j["cushion"] = e.cushion;
+      j["impulse"] = e.impulse;
+      break;
+    case table::EventType::kBallBall:
+      j["impulse"] = e.impulse;
+      break;
+  }
+  return j;
+}
+
+void WriteSceneTrajectoryCsv(const table::TableSimulation& sim, double dt,
+                             const std::string& path) {
+  const double t_end = sim.time();
+  RequireTrajectoryWithinLimit(t_end, dt, static_cast<int>(sim.ball_count()));
+  std::ofstream out(path);
+  if (!out) throw UsageError("cannot write trajectory file '" + path + "'");
+  out.precision(17);
+  out << "t,id,X,Y,vx,vy,wx,wy,wz\n";
+  const long samples = static_cast<long>(TrajectorySamples(t_end, dt));
+  for (long k = 0; k < samples; ++k) {
+    const double t = std::min(k * dt, t_end);
+    for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+      const physics::BallState s = sim.StateAt(i, t);
+      out << t << ',' << sim.id(i);
+      for (int c = 0; c < 7; ++c) out << ',' << s[c];
+      out << '\n';
+    }
+  }
+  if (!out) throw std::runtime_error("writing trajectory file '" + path + "' failed");
+}
+
+}  // namespace
+
+void SimulateScene(const SceneSimulationArgs& args) {
+  if (args.model != "auto" && args.model != "closed-form") {
+    throw UsageError("--model " + args.model +
+                     ": a scene moves its balls in closed form between events (auto, "
+                     "closed-form); the 5-DOF model between events is not built yet");
+  }
+  if (args.t_end && !(std::isfinite(*args.t_end) && *args.t_end >= 0.0)) {
+    throw UsageError("--t-end must be a finite number >= 0");
+  }
+  if (!(args.sample_dt > 0.0) || !std::isfinite(args.sample_dt)) {
+    throw UsageError("--sample-dt must be a positive number of seconds");
+  }
+  params::SceneFile scene;
+  try {
+    scene = params::LoadScene(args.scene_path);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  const physics::ModelParameters params = LoadParametersOption(scene.params);
+  const table::TableGeometry geometry = LoadTableOption(scene.table);
+  table::TableSimulationOptions options;
+  options.cushion_model = ParseCushionModel(args.cushion_model);
+
+  const auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<table::TableSimulation> sim;
+  try {
+    sim = std::make_unique<table::TableSimulation>(geometry, params, scene.balls, options);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(args.scene_path + ": " + e.what());
+  }
+  sim->Run(args.t_end.value_or(std::numeric_limits<double>::infinity()));
+  const double wall_us =
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+
+  if (!args.trajectory_path.empty()) {
+    WriteSceneTrajectoryCsv(*sim, args.sample_dt, args.trajectory_path);
+  }
+  nlohmann::json j;
+  j["table"] = geometry.name;
+  DescribeParameters(params, &j);
+  j["model"] = "closed-form";
+  j["cushion_model"] = args.cushion_model;
+  j["t"] = sim->time();
+  j["balls"] = nlohmann::json::array();
+  int pocketed = 0;
+  for (std::size_t i = 0; i < sim->ball_count(); ++i) {
+    const physics::BallState s = sim->State(i);
+    nlohmann::json ball = {{"id", sim->id(i)},
+                           {"state", std::vector<double>(s.data(), s.data() + 7)}};
+    ball["pocketed"] = sim->pocket(i) ? nlohmann::json(*sim->pocket(i)) : nlohmann::json();
+    pocketed += sim->pocket(i) ? 1 : 0;
+    j["balls"].push_back(ball);
+  }
+  j["events"] = nlohmann::json::array();
+  for (const table::TableEvent& e : sim->events()) j["events"].push_back(EventJson(e));
+  j["at_rest"] = sim->AtRest();
+  j["wall_us"] = wall_us;
+  if (args.json) {
+    std::cout << j.dump() << std::endl;
+  } else {
+    std::cerr << geometry.name << ", " << params::ParameterSetLabel(params)
+              << " parameters: " << sim->ball_count() << " balls, " << sim->events().size()
+              << " events to t = " << sim->time() << " s, " << pocketed << " pocketed"
+              << (sim->AtRest() ? ", all at rest" : "") << ", " << wall_us << " us\n";
+  }
+}
+
+void AddRackCommand(CLI::App& app) {
+  struct Args {
+    std::string kind;
+    std::string table;
+    std::string params = params::kDefaultParameterSet;
+    std::uint64_t seed = 0;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "rack", "The balls of a rack at rest as a scene (JSON on stdout, for simulate --scene)");
+  cmd->add_option("kind", args->kind, "eight-ball | nine-ball | snooker | three-cushion")
+      ->required();
+  cmd->add_option("--table", args->table,
+                  "Table specification (default: pool-9ft; snooker-12ft for snooker, "
+                  "carom-10ft for three-cushion)");
+  cmd->add_option("--params", args->params,
+                  "Parameter set (default: pool; snooker and carom for their racks)");
+  cmd->add_option("--seed", args->seed, "Seed of the rack's order and gaps")->capture_default_str();
+  cmd->add_flag("--json", "The scene as JSON on stdout (the only output; accepted for symmetry)");
+  cmd->callback([args, cmd] {
+    table::RackKind kind;
+    try {
+      kind = table::ParseRackKind(args->kind);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+    const bool params_given = cmd->count("--params") > 0;
+    params::SceneFile scene;
+    scene.table = args->table;
+    scene.params = args->params;
+    if (scene.table.empty()) {
+      scene.table = kind == table::RackKind::kSnooker        ? "snooker-12ft"
+                    : kind == table::RackKind::kThreeCushion ? "carom-10ft"
+                                                             : "pool-9ft";
+    }
+    if (!params_given && kind == table::RackKind::kSnooker) scene.params = "snooker";
+    if (!params_given && kind == table::RackKind::kThreeCushion) scene.params = "carom";
+    const physics::ModelParameters params = LoadParametersOption(scene.params);
+    const table::TableGeometry geometry = LoadTableOption(scene.table);
+    try {
+      scene.balls = table::Rack(kind, geometry, params.ball.radius, args->seed);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+    std::cout << params::SceneJson(scene) << std::endl;
+  });
+}
+
+void AddBenchScenesCommand(CLI::App& app) {
+  struct Args {
+    bench::SceneBenchmarkOptions options;
+    std::string table = "pool-9ft";
+    std::string params = params::kDefaultParameterSet;
+    std::string out;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd =
+      app.add_subcommand("bench-scenes",
+                         "Simulate seeded 16-ball breaks until rest, timed on one core; events per "
+                         "break and cost per event (JSON on stdout, a report with --out)");
+  cmd->add_option("--breaks", args->options.breaks, "Number of seeded breaks")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->options.seed, "Seed of the first break")->capture_default_str();
+  cmd->add_option("--speed", args->options.speed, "The cue ball's launch speed [m/s]")
+      ->capture_default_str();
+  cmd->add_option("--repeats", args->options.repeats, "Timed runs per break (the fastest kept)")
+      ->capture_default_str();
+  cmd->add_option("--table", args->table, "Table specification")->capture_default_str();
+  cmd->add_option("--params", args->params, "Parameter set")->capture_default_str();
+  cmd->add_option("--out", args->out, "Write scenes_report.md into this directory");
+  cmd->callback([args] {
+    if (args->options.breaks < 1) throw UsageError("--breaks must be at least 1");
+    if (!(args->options.speed > 0.0 && std::isfinite(args->options.speed))) {
+      throw UsageError("--speed must be a positive number of m/s");
+    }
+    if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
+    const physics::ModelParameters params = LoadParametersOption(args->params);
+    const table::TableGeometry geometry = LoadTableOption(args->table);
+    args->options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
+    const bench::SceneBenchmarkResult result =
+        bench::RunSceneBenchmark(geometry, params, args->options);
+    if (!args->out.empty()) {
+      bench::WriteSceneReport(result, args->out);
+      std::cerr << "bench-scenes: wrote " << args->out << "/scenes_report.md\n";
+    }
+    std::cout << bench::SceneSummaryJson(result).dump() << std::endl;
+  });
+}
+
+}  // namespace billiard::cli
