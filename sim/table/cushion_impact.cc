@@ -10,9 +10,11 @@ namespace billiard::table {
 namespace {
 
 // Steps per M v.y of normal impulse (compression takes about this many). The steps are explicit
-// and first order; measured against 200000 steps, 250 leave the rebound speed within 1e-4 and its
-// angle within 0.02 degrees over Mathavan 2010's figure 9 cases, so 500 leave margin.
-constexpr double kImpulseStepsPerApproachMomentum = 500.0;
+// and first order, and chatter where a contact grips. Measured against 100000 steps over random
+// incidences and spins up to 3 v / R (pool set): with 250 the velocity is within 2e-4 of the
+// approach speed, R w within 1.2e-3 of it and the rebound angle within 0.01 degrees; 500 are no
+// better (the chatter), 1000 halve those.
+constexpr double kImpulseStepsPerApproachMomentum = 250.0;
 
 constexpr double kMomentOfInertiaFactor = 2.0 / 5.0;  // I = 2/5 M R^2, a solid sphere
 
@@ -31,27 +33,35 @@ NoseContact ContactAt(double height, double radius) {
   return contact;
 }
 
-void Require(bool condition, const std::string& reason) {
-  if (!condition) throw std::invalid_argument("ResolveCushionImpact: " + reason);
+// Builds the reason only when the check fails: the checks run on every call.
+template <typename Reason>
+void Require(bool condition, Reason reason) {
+  if (!condition) throw std::invalid_argument("ResolveCushionImpact: " + std::string(reason()));
 }
 
 void Validate(CushionModel model, const ImpactVelocities& before,
               const physics::BallParameters& ball, const CushionParameters& cushion) {
-  Require(before.v.allFinite() && before.w.allFinite(), "velocities must be finite");
-  Require(before.v.y() > 0.0, "the ball must approach the cushion (v.y > 0), got v.y = " +
-                                  std::to_string(before.v.y()));
-  Require(std::isfinite(ball.radius) && ball.radius > 0.0, "ball radius must be > 0");
-  Require(std::isfinite(ball.mass) && ball.mass > 0.0, "ball mass must be > 0");
+  Require(before.v.allFinite() && before.w.allFinite(), [] { return "velocities must be finite"; });
+  Require(before.v.y() > 0.0, [&] {
+    return "the ball must approach the cushion (v.y > 0), got v.y = " +
+           std::to_string(before.v.y());
+  });
+  Require(std::isfinite(ball.radius) && ball.radius > 0.0,
+          [] { return "ball radius must be > 0"; });
+  Require(std::isfinite(ball.mass) && ball.mass > 0.0, [] { return "ball mass must be > 0"; });
   Require(std::isfinite(cushion.height) && cushion.height >= ball.radius &&
               cushion.height < 2.0 * ball.radius,
-          "cushion height must be in [R, 2R), got " + std::to_string(cushion.height) + " m");
+          [&] {
+            return "cushion height must be in [R, 2R), got " + std::to_string(cushion.height) +
+                   " m";
+          });
   Require(std::isfinite(cushion.restitution) && cushion.restitution >= 0.0 &&
               cushion.restitution <= 1.0,
-          "restitution must be in [0, 1]");
+          [] { return "restitution must be in [0, 1]"; });
   Require(std::isfinite(cushion.friction) && cushion.friction >= 0.0,
-          "cushion friction must be >= 0");
+          [] { return "cushion friction must be >= 0"; });
   Require(std::isfinite(cushion.cloth_friction) && cushion.cloth_friction >= 0.0,
-          "cloth friction must be >= 0");
+          [] { return "cloth friction must be >= 0"; });
   if (model == CushionModel::kMathavan2010) {
     // The least the impulse at I can slow the approach, per unit impulse (slip at I upwards,
     // slip at C towards the cushion).
@@ -59,10 +69,11 @@ void Validate(CushionModel model, const ImpactVelocities& before,
     const double mu_w = cushion.friction, mu_s = cushion.cloth_friction;
     const double least_deceleration = contact.cos_theta - mu_w * contact.sin_theta -
                                       mu_s * (contact.sin_theta + mu_w * contact.cos_theta);
-    Require(least_deceleration > 0.0,
-            "friction too high: the cushion's impulse could push the ball further in");
+    Require(least_deceleration > 0.0, [] {
+      return "friction too high: the cushion's impulse could push the ball further in";
+    });
   } else {
-    Require(model == CushionModel::kHan2005, "unknown cushion model");
+    Require(model == CushionModel::kHan2005, [] { return "unknown cushion model"; });
   }
 }
 

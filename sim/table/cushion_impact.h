@@ -19,7 +19,7 @@
 // force is what keeps the ball from being pushed into the cloth by the cushion. Per unit normal
 // impulse P at I, with t_I, t_C the unit slip directions at I and C,
 //
-//     f_I = -n - mu_w t_I,   N_C = -f_I.z,   f_C = N_C (z - mu_s t_C),
+//     f_I = -n - mu_w t_I,   N_C = max(0, -f_I.z),   f_C = N_C (z - mu_s t_C),
 //     M dv/dP = f_I + f_C,   (2/5) M R^2 dw/dP = r_I x f_I + r_C x f_C,
 //
 // (the paper writes these component by component, with its slip angles phi, phi'; they are the
@@ -29,11 +29,13 @@
 // no friction the normal speed ratio is exactly e_e; with friction it is exactly e_e whenever the
 // slip at I and at C keeps its direction through the impact (then v.y is linear in P), and
 // otherwise lower: 0.84 head-on without spin with Mathavan's snooker set (e_e = 0.98), the spin
-// the friction gives taking the rest. e_e = 0 leaves the ball at the cushion (v.y' = 0). Where a slip reaches zero the contact grips (rolls): the
-// explicit steps then chatter about zero slip, which is Coulomb's static friction to the order of
-// one step. Should the cushion's friction pull the ball up (f_I.z > 0, possible only if
-// mu_w > tan(theta)) the cloth exerts no force (N_C = 0). Mathavan 2010 report the rigid-cushion model
-// valid for normal speeds up to about 2.5 m/s; above that the real cushion's deformation matters.
+// the friction gives taking the rest. e_e = 0 leaves the ball at the cushion (v.y' = 0). Where a
+// slip reaches zero the contact grips (rolls): the explicit steps then chatter about zero slip,
+// which is Coulomb's static friction to the order of one step. Should the cushion's friction pull
+// the ball up (f_I.z > 0, possible only if mu_w > tan(theta)) the cloth exerts no force
+// (N_C = 0). About 500 steps of impulse whatever the speed: the costly model. Mathavan 2010 report
+// the rigid cushion valid for normal speeds up to about 2.5 m/s; above that its deformation
+// matters.
 //
 // kHan2005 (the cheap closed form). Han 2005, "Dynamics in carom and three cushion billiards",
 // J. Mech. Sci. Technol. 19(4):976-984, eqs. 14-23: a single impulse at I on a free sphere, with
@@ -56,8 +58,9 @@
 //     used by Mathavan 2010 (e_e and mu_w found there from the authors' measured rebounds; mu_s
 //     the cloth's sliding friction from their measurements, Mathavan et al. 2009, Am. J. Phys.).
 //   pool, 57.15 mm balls: h = 0.635 D = 36.29 mm (WPA equipment specifications: the nose at
-//     about 63.5 % of the ball's diameter; pooltool takes 64 %); e_e = 0.85, mu_w = 0.2, mu_s = 0.2, pooltool's defaults
-//     for pool (github.com/ekiefl/pooltool, BallParams POOL_GENERIC, which calls them rough).
+//     about 63.5 % of the ball's diameter; pooltool takes 64 %); e_e = 0.85, mu_w = 0.2,
+//     mu_s = 0.2, pooltool's defaults for pool (github.com/ekiefl/pooltool, BallParams
+//     POOL_GENERIC, whose comment calls them not well researched).
 //   carom, 61.5 mm balls: h = 37 mm (UMB rules, as pooltool's BilliardTableSpecs cites them);
 //     e_e = 0.85, mu_w = 0.15, mu_s = 0.2, pooltool's BILLIARD_GENERIC defaults.
 // No measurement fits e_e and mu_w for pool or carom cushions with these models; treat those as
