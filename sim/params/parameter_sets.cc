@@ -1,12 +1,11 @@
 #include "sim/params/parameter_sets.h"
 
+#include "sim/params/strict_json.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <nlohmann/json.hpp>
-#include <sstream>
 #include <stdexcept>
 
 namespace billiard::params {
@@ -24,63 +23,10 @@ std::vector<std::string> BuiltinParameterSetNames() {
   return names;
 }
 
-namespace {
-
-// A number of the set: where it goes, under its section's key.
-struct Field {
-  const char* key;
-  double* value;
-};
-
-// The JSON type of `j` in words, for the refusals.
-std::string TypeName(const nlohmann::json& j) { return j.is_null() ? "null" : j.type_name(); }
-
-// The numbers of one section: every key known, every one there, every one a number.
-void ReadSection(const nlohmann::json& section, const std::string& name,
-                 const std::vector<Field>& fields, const std::string& origin) {
-  if (!section.is_object()) {
-    throw std::invalid_argument(origin + ": \"" + name + "\" must be an object, not " +
-                                TypeName(section));
-  }
-  for (const auto& [key, value] : section.items()) {
-    const bool known = std::any_of(fields.begin(), fields.end(),
-                                   [&key = key](const Field& f) { return key == f.key; });
-    if (!known) throw std::invalid_argument(origin + ": unknown key " + name + "." + key);
-  }
-  for (const Field& f : fields) {
-    if (!section.contains(f.key)) {
-      throw std::invalid_argument(origin + ": missing number " + name + "." + f.key);
-    }
-    const nlohmann::json& value = section.at(f.key);
-    if (!value.is_number()) {
-      throw std::invalid_argument(origin + ": " + name + "." + f.key + " must be a number, not " +
-                                  TypeName(value));
-    }
-    *f.value = value.get<double>();
-  }
-}
-
-// An optional string at the top level.
-std::string ReadText(const nlohmann::json& j, const char* key, const std::string& fallback,
-                     const std::string& origin) {
-  if (!j.contains(key)) return fallback;
-  if (!j.at(key).is_string()) {
-    throw std::invalid_argument(origin + ": " + key + " must be a string, not " +
-                                TypeName(j.at(key)));
-  }
-  return j.at(key).get<std::string>();
-}
-
-}  // namespace
+using internal::Field;
 
 ModelParameters ParseParameters(const std::string& json_text, const std::string& origin) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw std::invalid_argument(origin + ": not valid JSON (" + e.what() + ")");
-  }
-  if (!j.is_object()) throw std::invalid_argument(origin + ": a parameter set is a JSON object");
+  const nlohmann::json j = internal::ParseObject(json_text, origin, "a parameter set");
   ModelParameters p;
   ContactParameters& c = p.contact;
   const std::vector<std::pair<std::string, std::vector<Field>>> sections = {
@@ -117,10 +63,10 @@ ModelParameters ParseParameters(const std::string& json_text, const std::string&
   for (const auto& [name, fields] : sections) {
     if (!j.contains(name))
       throw std::invalid_argument(origin + ": missing object \"" + name + "\"");
-    ReadSection(j.at(name), name, fields, origin);
+    internal::ReadSection(j.at(name), name, fields, origin);
   }
-  p.name = ReadText(j, "name", origin, origin);
-  p.source = ReadText(j, "source", "", origin);
+  p.name = internal::ReadText(j, "name", origin, origin);
+  p.source = internal::ReadText(j, "source", "", origin);
   physics::ValidateParameters(p);
   return p;
 }
@@ -129,16 +75,14 @@ ModelParameters LoadParameters(const std::string& name_or_path) {
   for (const auto& [name, json] : internal::BuiltinParameterJson()) {
     if (name == name_or_path) return ParseParameters(json, name);
   }
-  std::ifstream file(name_or_path);
-  if (!file) {
+  std::string text;
+  if (!internal::ReadFile(name_or_path, &text)) {
     std::string known;
     for (const auto& name : BuiltinParameterSetNames()) known += (known.empty() ? "" : ", ") + name;
     throw std::invalid_argument("unknown parameter set '" + name_or_path +
                                 "' (not a built-in set: " + known + "; not a readable file)");
   }
-  std::stringstream text;
-  text << file.rdbuf();
-  ModelParameters p = ParseParameters(text.str(), name_or_path);
+  ModelParameters p = ParseParameters(text, name_or_path);
   p.file = name_or_path;
   return p;
 }

@@ -1,24 +1,20 @@
 #include "sim/params/scene_file.h"
 
-#include <fstream>
+#include "sim/params/strict_json.h"
+
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <stdexcept>
 
 namespace billiard::params {
 
 namespace {
 
-std::string TypeName(const nlohmann::json& j) { return j.is_null() ? "null" : j.type_name(); }
+using internal::TypeName;
 
 // Refuses any key of `object` that is not in `known`, naming it.
-void RequireKnownKeys(const nlohmann::json& object, std::initializer_list<const char*> known,
+void RequireKnownKeys(const nlohmann::json& object, const std::vector<std::string>& known,
                       const std::string& where) {
-  for (const auto& [key, value] : object.items()) {
-    bool found = false;
-    for (const char* k : known) found = found || key == k;
-    if (!found) throw std::invalid_argument(where + ": unknown key " + key);
-  }
+  internal::ReadSection(object, "", {}, where, known);
 }
 
 const nlohmann::json& Required(const nlohmann::json& object, const char* key,
@@ -61,13 +57,7 @@ table::SceneBall ParseBall(const nlohmann::json& j, const std::string& where) {
 }  // namespace
 
 SceneFile ParseScene(const std::string& json_text, const std::string& origin) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw std::invalid_argument(origin + ": not valid JSON (" + e.what() + ")");
-  }
-  if (!j.is_object()) throw std::invalid_argument(origin + ": a scene is a JSON object");
+  const nlohmann::json j = internal::ParseObject(json_text, origin, "a scene");
   RequireKnownKeys(j, {"table", "params", "balls"}, origin);
   SceneFile scene;
   scene.table = RequiredText(j, "table", origin);
@@ -83,11 +73,11 @@ SceneFile ParseScene(const std::string& json_text, const std::string& origin) {
 }
 
 SceneFile LoadScene(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw std::invalid_argument("cannot read scene file '" + path + "'");
-  std::stringstream text;
-  text << file.rdbuf();
-  return ParseScene(text.str(), path);
+  std::string text;
+  if (!internal::ReadFile(path, &text)) {
+    throw std::invalid_argument("cannot read scene file '" + path + "'");
+  }
+  return ParseScene(text, path);
 }
 
 std::string SceneJson(const SceneFile& scene) {

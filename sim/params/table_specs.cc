@@ -1,0 +1,72 @@
+#include "sim/params/table_specs.h"
+
+#include <stdexcept>
+
+#include "sim/params/strict_json.h"
+
+namespace billiard::params {
+
+namespace internal {
+const std::vector<std::pair<std::string, std::string>>& BuiltinTableJson();
+}
+
+using table::TableSpec;
+
+std::vector<std::string> TableNames() {
+  std::vector<std::string> names;
+  for (const auto& [name, json] : internal::BuiltinTableJson()) names.push_back(name);
+  return names;
+}
+
+namespace {
+
+// A pocket object ("corner" or "side"), if there.
+std::optional<TableSpec::PocketSpec> ReadPocket(const nlohmann::json& j, const char* key,
+                                                const std::string& origin) {
+  if (!j.contains(key)) return std::nullopt;
+  TableSpec::PocketSpec p;
+  internal::ReadSection(j.at(key), key,
+                        {{"mouth", &p.mouth},
+                         {"jaw_angle", &p.jaw_angle},
+                         {"jaw_radius", &p.jaw_radius},
+                         {"capture_depth", &p.capture_depth}},
+                        origin);
+  return p;
+}
+
+}  // namespace
+
+TableSpec ParseTableSpec(const std::string& json_text, const std::string& origin) {
+  const nlohmann::json j = internal::ParseObject(json_text, origin, "a table specification");
+  TableSpec spec;
+  internal::ReadSection(
+      j, "",
+      {{"length", &spec.length}, {"width", &spec.width}, {"cushion_height", &spec.cushion_height}},
+      origin, {"name", "source", "corner", "side"});
+  spec.name = internal::ReadText(j, "name", origin, origin);
+  spec.source = internal::ReadText(j, "source", "", origin);
+  spec.corner = ReadPocket(j, "corner", origin);
+  spec.side = ReadPocket(j, "side", origin);
+  try {
+    table::BuildTable(spec);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(origin + ": " + e.what());
+  }
+  return spec;
+}
+
+TableSpec LoadTableSpec(const std::string& name_or_path) {
+  for (const auto& [name, json] : internal::BuiltinTableJson()) {
+    if (name == name_or_path) return ParseTableSpec(json, name);
+  }
+  std::string text;
+  if (!internal::ReadFile(name_or_path, &text)) {
+    std::string known;
+    for (const auto& name : TableNames()) known += (known.empty() ? "" : ", ") + name;
+    throw std::invalid_argument("unknown table '" + name_or_path +
+                                "' (not a built-in table: " + known + "; not a readable file)");
+  }
+  return ParseTableSpec(text, name_or_path);
+}
+
+}  // namespace billiard::params
