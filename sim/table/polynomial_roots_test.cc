@@ -267,6 +267,41 @@ TEST(PolynomialRoots, NoRootOfTheCompanionMatrixIsMissedInOneHundredThousandQuar
   EXPECT_GT(reference_real_roots_checked, 100000);  // the check was not vacuous
 }
 
+TEST(PolynomialRoots, NoRootOfARandomClosePairIsMissed) {
+  // Quartics with a pair of roots 1e-3 to 1e-12 apart and two more at least 0.1 from the pair,
+  // against the roots they were built from (the companion matrix is itself off by ~sqrt(u) at
+  // such a pair). A root r moves under a perturbation dp of p by about dp / |p'(r)|, or by
+  // sqrt(2 dp / |p''(r)|) where p'(r) is too small for that: each true root in [lo, hi] must be
+  // within twice the smaller of the two of a root found, whether the pair is resolved or not.
+  std::mt19937_64 rng(1010);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), decades(-3.0, 3.0),
+      gap_decades(-12.0, -3.0), bound(-2.5, 2.5);
+  int checked = 0;
+  for (int trial = 0; trial < 100000; ++trial) {
+    const double r = 2.0 * unit(rng);
+    const double gap = std::pow(10.0, gap_decades(rng));
+    const double a = 2.0 * unit(rng), b = 2.0 * unit(rng);
+    if (std::abs(a - r) < 0.1 || std::abs(b - r) < 0.1) continue;
+    const std::array<double, 4> truth = {r, r + gap, a, b};
+    const Quartic p = FromRoots(std::pow(10.0, decades(rng)), {r, r + gap, a, b});
+    double lo = bound(rng), hi = bound(rng);
+    if (lo > hi) std::swap(lo, hi);
+    const std::vector<double> found = Roots(p, lo, hi);
+    for (const double root : truth) {
+      if (root < lo || root > hi) continue;
+      ++checked;
+      const double perturbation = 32.0 * kUnitRoundoff * Magnitude(p, root);
+      const double curvature = 2.0 * p[2] + root * (6.0 * p[3] + root * 12.0 * p[4]);
+      const double tolerance = 2.0 * std::min(perturbation / std::abs(Slope(p, root)),
+                                              std::sqrt(2.0 * perturbation / std::abs(curvature)));
+      const bool matched = std::any_of(found.begin(), found.end(),
+                                       [&](double x) { return std::abs(x - root) <= tolerance; });
+      ASSERT_TRUE(matched) << "trial " << trial << ": missed the root " << root;
+    }
+  }
+  EXPECT_GT(checked, 100000);
+}
+
 // Two balls on parabolic paths x_i(t) = x_i + v_i t + a_i t^2 / 2: their separation
 // d(t) = d0 + w t + b t^2 / 2 gives |d(t)|^2 - (2R)^2 as a quartic in t.
 Quartic ContactQuartic(const Eigen::Vector2d& d0, const Eigen::Vector2d& w,
