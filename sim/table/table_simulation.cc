@@ -55,12 +55,40 @@ Eigen::Vector2d PositionAt(const Parabola& q, double tau) {
   return q.p + q.v * tau + 0.5 * q.a * tau * tau;
 }
 
+// Touching bodies closing slower than this are not closing by their speed but, if at all, by
+// their accelerations (a ball pushed by its own spin into one it touches).
+constexpr double kContactSpeed = 1e-9;  // [m/s]
+
+// Touching bodies that will close within this time are an event now: a root so near is within
+// the rounding of the contact polynomial and could not be told from the contact itself.
+constexpr double kContactHorizon = 1e-6;  // [s]
+
+// Touching balls closing by their accelerations alone, both moving (one carrying the other
+// along: a ball driven by its spin, or two rolling balls whose decelerations differ along the
+// line of centres), are met with the velocities each would have this much later, at the
+// positions of now: each ball's own motion only loses energy, and the impact parts them for
+// about 2 e_b times this. Independent closed-form motions cannot hold two balls in contact, so
+// a sustained push becomes a run of such impacts, one every 1 ms or so, and the pushing balls
+// lose speed about a third faster than a held contact would make them (a ball rolling at
+// 3 cm/s stops some 2 mm short).
+constexpr double kPushTime = 5e-4;  // [s]
+
+// Two impacts of the same pair closer in time than this: the second is elastic (TC model).
+constexpr double kCollapseTime = 1e-5;  // [s]
+
 // The first tau in [0, window] where f reaches 0 while decreasing (`sign` = -1; +1: while
-// increasing) and `accept` holds; f(0) within `contact` of 0 and moving the right way is 0.
+// increasing) and `accept` holds. At f(0) within `contact` of 0 (touching) the way it moves is
+// the slope at kContactHorizon (or the window's end, where a motion changes): touching bodies
+// that close within it faster than kContactSpeed (f' = `speed_scale` times the closing speed),
+// by their speed or their accelerations, are an event at once, so none passes through another.
 template <typename Accept>
 double FirstCrossing(const Quartic& f, double window, double sign, double contact,
-                     const Accept& accept) {
-  if (std::abs(f[0]) <= contact && sign * f[1] > 0.0 && accept(0.0)) return 0.0;
+                     double speed_scale, const Accept& accept) {
+  if (std::abs(f[0]) <= contact) {
+    const double h = std::min(kContactHorizon, window);
+    const double slope = f[1] + h * (2.0 * f[2] + h * (3.0 * f[3] + h * 4.0 * f[4]));
+    if (sign * slope > speed_scale * kContactSpeed && accept(0.0)) return 0.0;
+  }
   std::array<double, 4> roots;
   const int n = RootsInInterval(f, 0.0, window, &roots);
   for (int k = 0; k < n; ++k) {
@@ -80,6 +108,24 @@ struct CushionFrame {
   Eigen::Vector2d Out(const Eigen::Vector3d& c) const { return c.x() * x + c.y() * y; }
 };
 
+// A push: a ball touching a body (`n` the unit direction from the ball's centre to the contact)
+// that closes on it by its acceleration alone, driven by the spin that the cloth's friction turns
+// into motion. The body does not yield (a ball at rest holds by its own cloth friction, as much
+// as the pusher's, a cushion by itself): the pusher spins against it in place until that spin is
+// spent. Spent at once here: the part of the spin that drives the ball into the contact is
+// removed, and any closing speed below kContactSpeed, so the ball's motion no longer closes and
+// its energy only falls.
+BallState Held(const BallState& s, const Eigen::Vector2d& n, double radius) {
+  BallState out = s;
+  const double closing = s.segment<2>(kVx).dot(n);
+  if (closing > 0.0) out.segment<2>(kVx) -= closing * n;
+  const Eigen::Vector2d across(-n.y(), n.x());  // z x n
+  if (ClothSlip(out, radius).dot(n) < 0.0) {
+    out.segment<2>(kWx) -= out.segment<2>(kWx).dot(across) * across;
+  }
+  return out;
+}
+
 }  // namespace
 
 const char* EventTypeName(EventType type) {
@@ -94,6 +140,8 @@ const char* EventTypeName(EventType type) {
       return "ball_jaw";
     case EventType::kBallPocket:
       return "ball_pocket";
+    case EventType::kBallPush:
+      return "ball_push";
   }
   return "unknown";
 }
@@ -136,6 +184,7 @@ TableSimulation::TableSimulation(const TableGeometry& table, const physics::Mode
   }
   boundary_.resize(balls_.size());
   pair_.assign(balls_.size() * balls_.size(), kInfinity);
+  last_impact_.assign(balls_.size() * balls_.size(), -kInfinity);
   for (std::size_t i = 0; i < balls_.size(); ++i) Recompute(i);
 }
 
@@ -175,8 +224,9 @@ TableSimulation::Candidate TableSimulation::NextBallBall(std::size_t i, std::siz
   const double gap = relative.p.norm() - 2.0 * params_.ball.radius;
   if (gap > reach + kContactTolerance) return {};
   const Quartic f = DistanceSquaredMinus(relative, 2.0 * params_.ball.radius);
-  const double contact = 4.0 * params_.ball.radius * kContactTolerance;
-  return {time_ + FirstCrossing(f, window, -1.0, contact, [](double) { return true; }),
+  const double d = 2.0 * params_.ball.radius;
+  return {time_ + FirstCrossing(f, window, -1.0, 2.0 * d * kContactTolerance, 2.0 * d,
+                                [](double) { return true; }),
           EventType::kBallBall};
 }
 
@@ -202,7 +252,7 @@ TableSimulation::Candidate TableSimulation::NextBoundary(std::size_t i) const {
       return s >= 0.0 && s <= length2;
     };
     consider(FirstCrossing(AlongMinus(q, line.a, line.normal, r), window, -1.0, kContactTolerance,
-                           within),
+                           1.0, within),
              EventType::kBallCushion, static_cast<int>(k));
   }
   for (std::size_t k = 0; k < table_.points.size(); ++k) {
@@ -210,7 +260,7 @@ TableSimulation::Candidate TableSimulation::NextBoundary(std::size_t i) const {
     const Parabola relative{q.p - point.centre, q.v, q.a};
     const double d = r + point.radius;
     consider(FirstCrossing(DistanceSquaredMinus(relative, d), window, -1.0,
-                           2.0 * d * kContactTolerance, [](double) { return true; }),
+                           2.0 * d * kContactTolerance, 2.0 * d, [](double) { return true; }),
              EventType::kBallJaw, static_cast<int>(k));
   }
   for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
@@ -221,7 +271,7 @@ TableSimulation::Candidate TableSimulation::NextBoundary(std::size_t i) const {
       return s >= 0.0 && s <= along.squaredNorm();
     };
     consider(FirstCrossing(AlongMinus(q, pocket.capture_a, pocket.inward, 0.0), window, 1.0,
-                           kContactTolerance, within),
+                           kContactTolerance, 1.0, within),
              EventType::kBallPocket, static_cast<int>(k));
   }
   return best;
@@ -261,25 +311,54 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
   TableEvent event = e;
   const BallState s = Current(i).At(time_);
   switch (e.type) {
+    case EventType::kBallPush:  // an outcome of the contact events, never a candidate
     case EventType::kTransition:
       event.from = Current(i).phase();
       StartSegment(i, s);
       event.to = Current(i).phase();
       break;
     case EventType::kBallBall: {
-      const BallBallImpulse hit =
-          ResolveBallBallImpact(s, Current(j).At(time_), params_.ball, params_.collision);
+      BallState b = Current(j).At(time_);
+      const Eigen::Vector2d n = (b.segment<2>(kX) - s.segment<2>(kX)).normalized();
+      BallState a = s;
+      if ((a.segment<2>(kVx) - b.segment<2>(kVx)).dot(n) <= kContactSpeed) {
+        // Closing by the accelerations: against a ball at rest, a push; else met a moment on.
+        const bool at_rest = Current(i).phase() == MotionPhase::kStationary ||
+                             Current(j).phase() == MotionPhase::kStationary;
+        a.tail<5>() = Current(i).At(time_ + kPushTime).tail<5>();
+        b.tail<5>() = Current(j).At(time_ + kPushTime).tail<5>();
+        if (at_rest || !((a.segment<2>(kVx) - b.segment<2>(kVx)).dot(n) > kContactSpeed)) {
+          event.type = EventType::kBallPush;
+          StartSegment(i, Held(s, n, params_.ball.radius));
+          StartSegment(j, Held(Current(j).At(time_), -n, params_.ball.radius));
+          break;
+        }
+      }
+      // Impacts of one pair in quick succession are elastic (the "TC model" of Luding and
+      // McNamara 1998): inelastic ones would shrink the gaps between them geometrically, an
+      // infinity of impacts in a finite time (inelastic collapse) where a ball is driven into
+      // another it carries along.
+      physics::CollisionParameters collision = params_.collision;
+      double& last = last_impact_[PairIndex(i, j)];
+      if (time_ - last < kCollapseTime) collision.ball_restitution = 1.0;
+      last = time_;
+      const BallBallImpulse hit = ResolveBallBallImpact(a, b, params_.ball, collision);
       event.impulse = hit.normal;
       StartSegment(i, hit.a);
       StartSegment(j, hit.b);
       break;
     }
     case EventType::kBallCushion:
-      StartSegment(i, CushionImpact(s, table_.lines[index].normal, &event.impulse));
-      break;
     case EventType::kBallJaw: {
-      const Eigen::Vector2d n = (s.segment<2>(kX) - table_.points[index].centre).normalized();
-      StartSegment(i, CushionImpact(s, n, &event.impulse));
+      const Eigen::Vector2d n = e.type == EventType::kBallCushion
+                                    ? table_.lines[index].normal
+                                    : (s.segment<2>(kX) - table_.points[index].centre).normalized();
+      if (-s.segment<2>(kVx).dot(n) <= kContactSpeed) {
+        event.type = EventType::kBallPush;
+        StartSegment(i, Held(s, -n, params_.ball.radius));
+      } else {
+        StartSegment(i, CushionImpact(s, n, &event.impulse));
+      }
       break;
     }
     case EventType::kBallPocket: {
@@ -331,7 +410,7 @@ void TableSimulation::Run(double t_end) {
         index = boundary_[i].index;
       }
     }
-    if (best > t_end) break;
+    if (best > t_end || best == kInfinity) break;  // the end, or everything at rest
     if (static_cast<std::int64_t>(events_.size()) >= options_.max_events) {
       throw std::runtime_error("the scene needs more than " + std::to_string(options_.max_events) +
                                " events");

@@ -32,9 +32,12 @@
 
 namespace billiard::table {
 
-enum class EventType { kTransition, kBallBall, kBallCushion, kBallJaw, kBallPocket };
+// kBallPush: a ball driven by its spin into a ball or cushion it touches, which does not yield:
+// the spin that drives it is spent against the contact (a contact that closes by accelerations
+// alone, not a collision).
+enum class EventType { kTransition, kBallBall, kBallCushion, kBallJaw, kBallPocket, kBallPush };
 
-// "transition", "ball_ball", "ball_cushion", "ball_jaw", "ball_pocket".
+// "transition", "ball_ball", "ball_cushion", "ball_jaw", "ball_pocket", "ball_push".
 const char* EventTypeName(EventType type);
 
 struct TableEvent {
@@ -111,6 +114,7 @@ class TableSimulation {
   std::vector<TableEvent> events_;
   std::vector<Candidate> boundary_;  // per ball: cushion, jaw or pocket
   std::vector<double> pair_;         // per pair i < j: the next ball-ball time
+  std::vector<double> last_impact_;  // per pair i < j: the time of its last impact
 };
 
 // Refuses, with a one-line reason naming the ball, a scene with a non-finite number, an id below

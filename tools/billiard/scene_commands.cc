@@ -53,6 +53,9 @@ nlohmann::json EventJson(const table::TableEvent& e) {
     case table::EventType::kBallBall:
       j["impulse"] = e.impulse;
       break;
+    case table::EventType::kBallPush:
+      if (e.cushion >= 0) j["cushion"] = e.cushion;
+      break;
   }
   return j;
 }
