@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <stdexcept>
 
 #include "bench/format.h"
 #include "sim/table/table_simulation.h"
@@ -36,7 +37,7 @@ BreakRun TimeBreak(const table::TableGeometry& table, const physics::ModelParame
   run.wall_us = INFINITY;
   for (int k = 0; k < std::max(1, options.repeats); ++k) {
     const auto start = std::chrono::steady_clock::now();
-    table::TableSimulation sim(table, p, balls);
+    table::TableSimulation sim(table, p, balls, options.simulation);
     sim.Run();
     const double us =
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
@@ -84,6 +85,7 @@ nlohmann::json SceneSummaryJson(const SceneBenchmarkResult& r) {
           {"seed", r.options.seed},
           {"speed_m_s", r.options.speed},
           {"model", "closed-form"},
+          {"cushion_model", table::CushionModelName(r.options.simulation.cushion_model)},
           {"median_us", Percentile(wall, 0.5)},
           {"p95_us", Percentile(wall, 0.95)},
           {"max_us", Percentile(wall, 1.0)},
@@ -97,14 +99,36 @@ nlohmann::json SceneSummaryJson(const SceneBenchmarkResult& r) {
           {"wall_s", r.wall_s}};
 }
 
-void WriteSceneReport(const SceneBenchmarkResult& r, const std::string& dir) {
-  std::filesystem::create_directories(dir);
-  const nlohmann::json s = SceneSummaryJson(r);
+// The rows of one run's table.
+std::string SceneTable(const SceneBenchmarkResult& r) {
   const auto column = [&](auto field) { return Column(r, field); };
   const auto line = [&](const std::string& what, const std::vector<double>& v, int digits) {
     return "| " + what + " | " + Fixed(Percentile(v, 0.5), digits) + " | " +
            Fixed(Percentile(v, 0.95), digits) + " | " + Fixed(Percentile(v, 1.0), digits) + " |\n";
   };
+  return "## Cushions by the " +
+         std::string(table::CushionModelName(r.options.simulation.cushion_model)) +
+         " model\n\n| per break | median | p95 | max |\n|---|---|---|---|\n" +
+         line("wall time [us]", column([](const BreakRun& b) { return b.wall_us; }), 0) +
+         line("events", column([](const BreakRun& b) { return double(b.events); }), 0) +
+         line("ball-ball events", column([](const BreakRun& b) { return double(b.ball_ball); }),
+              0) +
+         line("cushion and jaw events", column([](const BreakRun& b) { return double(b.cushion); }),
+              0) +
+         line("motion transitions", column([](const BreakRun& b) { return double(b.transitions); }),
+              0) +
+         line("balls pocketed", column([](const BreakRun& b) { return double(b.pocketed); }), 0) +
+         line("cost per event [us]", column([](const BreakRun& b) { return b.wall_us / b.events; }),
+              3) +
+         line("simulated time until rest [s]",
+              column([](const BreakRun& b) { return b.duration_s; }), 2) +
+         "\n";
+}
+
+void WriteSceneReport(const std::vector<SceneBenchmarkResult>& runs, const std::string& dir) {
+  if (runs.empty()) throw std::invalid_argument("no benchmark run to report");
+  std::filesystem::create_directories(dir);
+  const SceneBenchmarkResult& r = runs.front();
   std::ofstream md = OpenForWriting(dir + "/scenes_report.md");
   md << "# Table benchmark\n\n"
      << r.runs.size() << " seeded eight-ball breaks (seeds " << r.options.seed << "-"
@@ -112,24 +136,12 @@ void WriteSceneReport(const SceneBenchmarkResult& r, const std::string& dir) {
      << " table with the " << r.params << " parameter set: the cue ball launched at "
      << r.options.speed << " m/s by a level cue with a seeded aim error (up to 0.01 rad) and "
      << "tip offset (up to 0.3 r), every ball simulated event by event in closed form "
-     << "(`sim/table/table_simulation.h`, cushions by Mathavan et al. 2010) until all rest or "
-     << "drop. Times are one break on one core of this 2-core machine, construction included, "
-     << "the fastest of " << r.options.repeats << " runs. Produced by `billiard bench-scenes`.\n\n"
-     << "| per break | median | p95 | max |\n|---|---|---|---|\n"
-     << line("wall time [us]", column([](const BreakRun& b) { return b.wall_us; }), 0)
-     << line("events", column([](const BreakRun& b) { return double(b.events); }), 0)
-     << line("ball-ball events", column([](const BreakRun& b) { return double(b.ball_ball); }), 0)
-     << line("cushion and jaw events", column([](const BreakRun& b) { return double(b.cushion); }),
-             0)
-     << line("motion transitions", column([](const BreakRun& b) { return double(b.transitions); }),
-             0)
-     << line("balls pocketed", column([](const BreakRun& b) { return double(b.pocketed); }), 0)
-     << line("cost per event [us]", column([](const BreakRun& b) { return b.wall_us / b.events; }),
-             3)
-     << line("simulated time until rest [s]",
-             column([](const BreakRun& b) { return b.duration_s; }), 2)
-     << "\nTargets (issue 14): a median of 1 ms or less per break with closed-form motion; "
-     << "FastFiz takes about 2.8 ms of CPU and pooltool about 150 ms for a break.\n";
+     << "(`sim/table/table_simulation.h`) until all rest or drop. Times are one break on one "
+     << "core of this 2-core machine, construction included, the fastest of " << r.options.repeats
+     << " runs. Produced by `billiard bench-scenes --out docs/benchmarks`."
+     << "\n\nTargets (issue 14): a median of 1 ms or less per break with closed-form motion; "
+     << "FastFiz takes about 2.8 ms of CPU and pooltool about 150 ms for a break.\n\n";
+  for (const SceneBenchmarkResult& run : runs) md << SceneTable(run);
 }
 
 }  // namespace billiard::bench

@@ -11,6 +11,7 @@
 
 #include "sim/physics/parameters.h"
 #include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
 
 namespace billiard::bench {
 
@@ -19,6 +20,7 @@ struct SceneBenchmarkOptions {
   std::uint64_t seed = 2026;
   double speed = 7.0;  // the cue ball's launch speed [m/s]
   int repeats = 5;     // each break timed this often, the fastest kept (timer noise)
+  table::TableSimulationOptions simulation;
   std::function<void(const std::string&)> progress = [](const std::string&) {};
 };
 
@@ -42,8 +44,8 @@ SceneBenchmarkResult RunSceneBenchmark(const table::TableGeometry& table,
                                        const physics::ModelParameters& p,
                                        const SceneBenchmarkOptions& options);
 
-// Writes scenes_report.md into `dir` (created if missing).
-void WriteSceneReport(const SceneBenchmarkResult& result, const std::string& dir);
+// Writes scenes_report.md into `dir` (created if missing): one table per run (per cushion model).
+void WriteSceneReport(const std::vector<SceneBenchmarkResult>& runs, const std::string& dir);
 
 // One JSON object summarising the run, for stdout.
 nlohmann::json SceneSummaryJson(const SceneBenchmarkResult& result);

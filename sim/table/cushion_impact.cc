@@ -213,4 +213,14 @@ ImpactVelocities ResolveCushionImpact(CushionModel model, const ImpactVelocities
   return MathavanImpact(ball, cushion).Resolve(before);
 }
 
+const char* CushionModelName(CushionModel model) {
+  return model == CushionModel::kHan2005 ? "han-2005" : "mathavan-2010";
+}
+
+std::optional<CushionModel> ParseCushionModel(const std::string& name) {
+  if (name == "mathavan-2010") return CushionModel::kMathavan2010;
+  if (name == "han-2005") return CushionModel::kHan2005;
+  return std::nullopt;
+}
+
 }  // namespace billiard::table

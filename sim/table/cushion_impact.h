@@ -68,6 +68,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
+#include <string>
 
 #include "sim/physics/parameters.h"
 
@@ -85,6 +87,10 @@ inline constexpr CushionParameters kPoolCushion{0.635 * 0.05715, 0.85, 0.2, 0.2}
 inline constexpr CushionParameters kCaromCushion{0.037, 0.85, 0.15, 0.2};
 
 enum class CushionModel { kMathavan2010, kHan2005 };
+
+// "mathavan-2010" or "han-2005"; ParseCushionModel reads them back (std::nullopt otherwise).
+const char* CushionModelName(CushionModel model);
+std::optional<CushionModel> ParseCushionModel(const std::string& name);
 
 // The ball's velocity and angular velocity in the cushion's frame. The ball approaches:
 // v.y() > 0. v.z() is 0 on entry (it is not read).

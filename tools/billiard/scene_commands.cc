@@ -28,10 +28,12 @@ table::TableGeometry LoadTableOption(const std::string& name_or_path) {
   }
 }
 
-table::CushionModel ParseCushionModel(const std::string& name) {
-  if (name == "mathavan-2010") return table::CushionModel::kMathavan2010;
-  if (name == "han-2005") return table::CushionModel::kHan2005;
-  throw UsageError("--cushion-model: unknown model '" + name + "' (mathavan-2010, han-2005)");
+table::CushionModel CushionModelOption(const std::string& name) {
+  const auto model = table::ParseCushionModel(name);
+  if (!model) {
+    throw UsageError("--cushion-model: unknown model '" + name + "' (mathavan-2010, han-2005)");
+  }
+  return *model;
 }
 
 nlohmann::json EventJson(const table::TableEvent& e) {
@@ -104,7 +106,7 @@ void SimulateScene(const SceneSimulationArgs& args) {
   const physics::ModelParameters params = LoadParametersOption(scene.params);
   const table::TableGeometry geometry = LoadTableOption(scene.table);
   table::TableSimulationOptions options;
-  options.cushion_model = ParseCushionModel(args.cushion_model);
+  options.cushion_model = CushionModelOption(args.cushion_model);
 
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<table::TableSimulation> sim;
@@ -204,6 +206,7 @@ void AddBenchScenesCommand(CLI::App& app) {
     std::string table = "pool-9ft";
     std::string params = params::kDefaultParameterSet;
     std::string out;
+    std::string cushion_model;  // "": both
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd =
@@ -219,6 +222,8 @@ void AddBenchScenesCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--table", args->table, "Table specification")->capture_default_str();
   cmd->add_option("--params", args->params, "Parameter set")->capture_default_str();
+  cmd->add_option("--cushion-model", args->cushion_model,
+                  "mathavan-2010 | han-2005 (default: both, one after the other)");
   cmd->add_option("--out", args->out, "Write scenes_report.md into this directory");
   cmd->callback([args] {
     if (args->options.breaks < 1) throw UsageError("--breaks must be at least 1");
@@ -226,16 +231,24 @@ void AddBenchScenesCommand(CLI::App& app) {
       throw UsageError("--speed must be a positive number of m/s");
     }
     if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
+    std::vector<table::CushionModel> models = {table::CushionModel::kMathavan2010,
+                                               table::CushionModel::kHan2005};
+    if (!args->cushion_model.empty()) models = {CushionModelOption(args->cushion_model)};
     const physics::ModelParameters params = LoadParametersOption(args->params);
     const table::TableGeometry geometry = LoadTableOption(args->table);
     args->options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
-    const bench::SceneBenchmarkResult result =
-        bench::RunSceneBenchmark(geometry, params, args->options);
+    std::vector<bench::SceneBenchmarkResult> results;
+    nlohmann::json summary = nlohmann::json::array();
+    for (table::CushionModel model : models) {
+      args->options.simulation.cushion_model = model;
+      results.push_back(bench::RunSceneBenchmark(geometry, params, args->options));
+      summary.push_back(bench::SceneSummaryJson(results.back()));
+    }
     if (!args->out.empty()) {
-      bench::WriteSceneReport(result, args->out);
+      bench::WriteSceneReport(results, args->out);
       std::cerr << "bench-scenes: wrote " << args->out << "/scenes_report.md\n";
     }
-    std::cout << bench::SceneSummaryJson(result).dump() << std::endl;
+    std::cout << (summary.size() == 1 ? summary[0] : summary).dump() << std::endl;
   });
 }
 
