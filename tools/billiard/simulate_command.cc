@@ -182,7 +182,8 @@ void Run(const SimulateArgs& args) {
 
 void AddSimulateCommand(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
-  CLI::App* cmd = app.add_subcommand("simulate", "Simulate one ball from an initial state");
+  CLI::App* cmd = app.add_subcommand(
+      "simulate", "Simulate one ball from an initial state, or every ball of a table scene");
   cmd->add_option("--state", args->state,
                   "Initial state X,Y,vx,vy,wx,wy,wz [m, m/s, rad/s] (write --state=-1,... "
                   "when it starts with a minus sign)");

@@ -1,0 +1,166 @@
+// The table's commands as a user runs them: `billiard rack`, `billiard simulate --scene`,
+// `billiard bench-scenes`; their JSON, their refusals.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "tests/support/billiard_command.h"
+
+namespace billiard::testing {
+namespace {
+
+std::string WriteFile(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+nlohmann::json Rack(const std::string& args) {
+  const CommandResult r = Billiard("rack " + args);
+  EXPECT_EQ(r.status, 0) << args;
+  return OneObject(r, "rack " + args);
+}
+
+// The eight-ball rack of `seed` with its cue ball sent at `speed` m/s up the table.
+std::string BreakScene(int seed, double speed) {
+  nlohmann::json scene = Rack("eight-ball --seed " + std::to_string(seed));
+  scene["balls"][0]["state"][2] = speed;
+  return WriteFile("break_" + std::to_string(seed) + ".json", scene.dump());
+}
+
+TEST(BilliardRack, WritesEveryBallOfTheGameAtRestOnItsTable) {
+  const nlohmann::json eight = Rack("eight-ball --seed 5");
+  EXPECT_EQ(eight["table"], "pool-9ft");
+  EXPECT_EQ(eight["params"], "pool");
+  std::set<int> ids;
+  for (const auto& b : eight["balls"]) {
+    ids.insert(b["id"].get<int>());
+    for (int k = 2; k < 7; ++k) EXPECT_EQ(b["state"][k].get<double>(), 0.0);
+  }
+  EXPECT_EQ(ids.size(), 16u);
+  EXPECT_EQ(*ids.begin(), 0);
+  EXPECT_EQ(*ids.rbegin(), 15);
+  const nlohmann::json snooker = Rack("snooker");
+  EXPECT_EQ(snooker["table"], "snooker-12ft");
+  EXPECT_EQ(snooker["params"], "snooker");
+  EXPECT_EQ(snooker["balls"].size(), 22u);
+  const nlohmann::json carom = Rack("three-cushion");
+  EXPECT_EQ(carom["table"], "carom-10ft");
+  EXPECT_EQ(carom["balls"].size(), 3u);
+  EXPECT_EQ(Rack("nine-ball --seed 2")["balls"].size(), 10u);
+}
+
+TEST(BilliardRack, TheSeedDecidesTheRackAndOnlyIt) {
+  EXPECT_EQ(Rack("eight-ball --seed 7"), Rack("eight-ball --seed 7"));
+  EXPECT_NE(Rack("eight-ball --seed 7"), Rack("eight-ball --seed 8"));
+  const CommandResult bad = Billiard("rack straight-pool", true);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("straight-pool"), std::string::npos) << bad.out;
+}
+
+TEST(BilliardSimulateScene, RunsABreakUntilEveryBallRestsAndReportsItsEvents) {
+  const std::string scene = BreakScene(3, 7.0);
+  const std::string args = "simulate --scene " + scene + " --json";
+  const CommandResult r = Billiard(args);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json j = OneObject(r, args);
+  EXPECT_TRUE(j["at_rest"].get<bool>());
+  EXPECT_EQ(j["table"], "pool-9ft");
+  EXPECT_EQ(j["balls"].size(), 16u);
+  EXPECT_GT(j["wall_us"].get<double>(), 0.0);
+  std::set<std::string> types;
+  double last = 0.0;
+  for (const auto& e : j["events"]) {
+    types.insert(e["type"].get<std::string>());
+    EXPECT_GE(e["t"].get<double>(), last);  // in time order
+    last = e["t"].get<double>();
+  }
+  EXPECT_TRUE(types.count("ball_ball"));
+  EXPECT_TRUE(types.count("ball_cushion"));
+  EXPECT_TRUE(types.count("transition"));
+  EXPECT_EQ(j["t"].get<double>(), last);
+  for (const auto& b : j["balls"]) {
+    if (b["pocketed"].is_null()) {
+      for (int k = 2; k < 7; ++k) EXPECT_EQ(b["state"][k].get<double>(), 0.0) << b;
+    } else {
+      EXPECT_TRUE(b["pocketed"].is_string());
+    }
+  }
+  // Deterministic: the same scene, the same events, bit for bit.
+  const nlohmann::json again = OneObject(Billiard(args), args);
+  EXPECT_EQ(again["events"], j["events"]);
+  EXPECT_EQ(again["balls"], j["balls"]);
+}
+
+TEST(BilliardSimulateScene, StopsAtTEndAndWritesEveryBallsTrajectory) {
+  const std::string scene = BreakScene(4, 5.0);
+  const std::string csv = ::testing::TempDir() + "/break_trajectory.csv";
+  const std::string args =
+      "simulate --scene " + scene + " --t-end 0.5 --sample-dt 0.01 --trajectory " + csv + " --json";
+  const CommandResult r = Billiard(args);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(OneObject(r, args)["t"].get<double>(), 0.5);
+  std::ifstream in(csv);
+  std::string header, line;
+  std::getline(in, header);
+  EXPECT_EQ(header, "t,id,X,Y,vx,vy,wx,wy,wz");
+  int rows = 0;
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 51 * 16);  // t = 0, 0.01, ..., 0.5 for each ball
+}
+
+TEST(BilliardSimulateScene, RefusesBadScenesWithTheReason) {
+  const auto refusal = [](const std::string& scene, const std::string& extra = "") {
+    const std::string path = WriteFile("bad_scene.json", scene);
+    return Billiard("simulate --scene " + path + " " + extra + " --json", true);
+  };
+  const std::string ball0 = R"({"id":0,"state":[1.0,0.6,0,0,0,0,0]})";
+  const std::string ball1 = R"({"id":1,"state":[1.01,0.6,0,0,0,0,0]})";
+  const auto overlap =
+      refusal(R"({"table":"pool-9ft","params":"pool","balls":[)" + ball0 + "," + ball1 + "]}");
+  EXPECT_EQ(overlap.status, 2);
+  EXPECT_NE(overlap.out.find("overlap"), std::string::npos) << overlap.out;
+  const auto table = refusal(R"({"table":"pool-99ft","params":"pool","balls":[)" + ball0 + "]}");
+  EXPECT_EQ(table.status, 2);
+  EXPECT_NE(table.out.find("pool-99ft"), std::string::npos) << table.out;
+  const auto off = refusal(R"({"table":"pool-9ft","params":"pool","balls":[{"id":2,"state":[)"
+                           R"(3.0,0.6,0,0,0,0,0]}]})");
+  EXPECT_EQ(off.status, 2);
+  EXPECT_NE(off.out.find("ball 2"), std::string::npos) << off.out;
+  const auto key = refusal(R"({"table":"pool-9ft","params":"pool","balls":[],"bals":[]})");
+  EXPECT_EQ(key.status, 2);
+  EXPECT_NE(key.out.find("bals"), std::string::npos) << key.out;
+  const auto model =
+      refusal(R"({"table":"pool-9ft","params":"pool","balls":[)" + ball0 + "]}", "--model approx");
+  EXPECT_EQ(model.status, 2);
+  EXPECT_NE(model.out.find("not built yet"), std::string::npos) << model.out;
+  // One line each.
+  for (const auto& r : {overlap, table, off, key, model}) {
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  }
+  const CommandResult both = Billiard("simulate --scene x.json --state 0,0,0,0,0,0,0 --t-end 1");
+  EXPECT_EQ(both.status, 2);
+}
+
+TEST(BilliardBenchScenes, ReportsTimesAndEventsPerBreakForEachCushionModel) {
+  const std::string args = "bench-scenes --breaks 3 --repeats 1";
+  const CommandResult r = Billiard(args);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.is_array());
+  ASSERT_EQ(j.size(), 2u);
+  EXPECT_EQ(j[0]["cushion_model"], "mathavan-2010");
+  EXPECT_EQ(j[1]["cushion_model"], "han-2005");
+  for (const auto& run : j) {
+    EXPECT_EQ(run["breaks"], 3);
+    EXPECT_GT(run["median_events"].get<double>(), 10.0);
+    EXPECT_GT(run["median_us"].get<double>(), 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace billiard::testing
