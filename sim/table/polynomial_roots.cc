@@ -115,33 +115,58 @@ bool ClearOfZeroOn(const Coefficients<N>& c, double lo, double hi) {
   return true;
 }
 
-// Where Newton starts in (a, b): for a quadratic the root of the quadratic formula (in its
-// cancellation-free form) that falls there, which Newton then only confirms; otherwise, or if
-// rounding puts neither root inside, the secant point, which unlike an end that is a critical
-// point never has a vanishing slope.
 template <int N>
-double StartInPiece(const Coefficients<N>& c, double a, double value_a, double b, double value_b) {
+double Curvature(const Coefficients<N>& c, double t) {
+  double curvature = 0.0;
+  for (int k = N; k >= 2; --k) curvature = curvature * t + k * (k - 1) * c[k];
+  return curvature;
+}
+
+// An end of a piece: where it is, p there, and whether it is a critical point of p.
+struct PieceEnd {
+  double t;
+  double value;
+  bool critical;
+};
+
+// Where Newton starts in (a, b). For a quadratic, the root of the quadratic formula (in its
+// cancellation-free form) that falls there, which Newton then only confirms. Otherwise, next to
+// a critical end e, the root of the Taylor model p(e) + p''(e) (t - e)^2 / 2 (at the end with
+// the smaller |p| when both are critical): there the slope vanishes, and a root near e (a near
+// graze) would cost a distant start a long run of linear steps. Failing those, the secant point.
+template <int N>
+double StartInPiece(const Coefficients<N>& c, const PieceEnd& a, const PieceEnd& b) {
+  const auto inside = [&](double t) { return t > a.t && t < b.t; };
   if constexpr (N == 2) {
     const double discriminant = c[1] * c[1] - 4.0 * c[2] * c[0];
     if (discriminant >= 0.0) {
       const double q = -0.5 * (c[1] + std::copysign(std::sqrt(discriminant), c[1]));
       for (const double root : {q / c[2], c[0] / q}) {
-        if (root > a && root < b) return root;
+        if (inside(root)) return root;
       }
     }
+  } else {
+    const bool from_a = a.critical && (!b.critical || std::abs(a.value) < std::abs(b.value));
+    if (from_a || b.critical) {
+      const PieceEnd& end = from_a ? a : b;
+      const double offset = std::sqrt(-2.0 * end.value / Curvature<N>(c, end.t));
+      const double model_root = from_a ? end.t + offset : end.t - offset;
+      if (inside(model_root)) return model_root;
+    }
   }
-  const double secant = a - value_a * (b - a) / (value_b - value_a);
-  return secant > a && secant < b ? secant : a + 0.5 * (b - a);
+  const double secant = a.t - a.value * (b.t - a.t) / (b.value - a.value);
+  return inside(secant) ? secant : a.t + 0.5 * (b.t - a.t);
 }
 
-// The one root of p in (a, b), where p is monotone and value_a, value_b are nonzero of opposite
-// signs: Newton's iteration kept inside the shrinking bracket, bisecting whenever Newton would
-// leave it or fails to halve its previous step (rtsafe, Press et al. 2007, section 9.4).
+// The one root of p between the ends of a piece, where p is monotone and the values at the ends
+// are nonzero of opposite signs: Newton's iteration kept inside the shrinking bracket, bisecting
+// whenever Newton would leave it or fails to halve its previous step (rtsafe, Press et al. 2007,
+// section 9.4).
 template <int N>
-double RootInMonotonePiece(const Coefficients<N>& c, double a, double value_a, double b,
-                           double value_b) {
-  const bool rising = value_b > 0.0;
-  double x = StartInPiece<N>(c, a, value_a, b, value_b);
+double RootInMonotonePiece(const Coefficients<N>& c, const PieceEnd& start, const PieceEnd& end) {
+  const bool rising = end.value > 0.0;
+  double x = StartInPiece<N>(c, start, end);
+  double a = start.t, b = end.t;
   double last_step = b - a;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
     double value, slope;
@@ -197,19 +222,18 @@ int RootsOf(const Coefficients<N>& c, double lo, double hi, StartRule start_rule
     if (hi > lo) points[num_points++] = hi;
 
     int num_roots = 0;
-    double previous_value = 0.0;
+    PieceEnd previous{};
     bool previous_near_zero = false;
     for (int i = 0; i < num_points && num_roots < max_roots; ++i) {
-      const double value = Value<N>(c, points[i]);
+      const PieceEnd point{points[i], Value<N>(c, points[i]), i > 0 && i < num_points - 1};
       const bool near_zero = (i > 0 || start_rule == StartRule::kWithinRounding) &&
-                             std::abs(value) <= RoundingOfValue<N>(c, points[i]);
+                             std::abs(point.value) <= RoundingOfValue<N>(c, point.t);
       if (near_zero) {
-        if (!previous_near_zero) roots[num_roots++] = points[i];
-      } else if (i > 0 && !previous_near_zero && (value > 0.0) != (previous_value > 0.0)) {
-        roots[num_roots++] =
-            RootInMonotonePiece<N>(c, points[i - 1], previous_value, points[i], value);
+        if (!previous_near_zero) roots[num_roots++] = point.t;
+      } else if (i > 0 && !previous_near_zero && (point.value > 0.0) != (previous.value > 0.0)) {
+        roots[num_roots++] = RootInMonotonePiece<N>(c, previous, point);
       }
-      previous_value = value;
+      previous = point;
       previous_near_zero = near_zero;
     }
     return num_roots;
