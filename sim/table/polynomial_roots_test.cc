@@ -118,6 +118,10 @@ TEST(PolynomialRoots, ATouchCountsWithinRoundingAndANearMissDoesNot) {
   ASSERT_EQ(Roots(grazing, -1.0, 1.0).size(), 1u);
   EXPECT_NEAR(Roots(grazing, -1.0, 1.0)[0], 0.3, 1e-14);
   EXPECT_NEAR(FirstNonPositive(grazing, -1.0, 1.0).value(), 0.3, 1e-14);
+  // The same touch at an end of the interval, and at the end of a FirstNonPositive search.
+  EXPECT_EQ(Roots(grazing, 0.3, 1.0), std::vector<double>{0.3});
+  EXPECT_EQ(Roots(grazing, -1.0, 0.3), std::vector<double>{0.3});
+  EXPECT_EQ(FirstNonPositive(grazing, -1.0, 0.3), 0.3);
   // Raised by 1e-9, far beyond rounding: a near miss, not a contact.
   EXPECT_TRUE(Roots(raised(1e-9), -1.0, 1.0).empty());
   EXPECT_FALSE(FirstNonPositive(raised(1e-9), -1.0, 1.0).has_value());
