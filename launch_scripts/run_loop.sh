@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off] [--log FILE]
-#                                   [--log-frames all|none] [--lockstep | --realtime] [--json]
-#                                   [--no-build] [-h | --help]
+# usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off] [--scene break|FILE]
+#                                   [--log FILE] [--log-frames all|none] [--lockstep | --realtime]
+#                                   [--json] [--no-build] [-h | --help]
 #
 # The closed loop: estimator_node, planner_node and table_sim_node over LCM, for N shots to random
 # targets; prints the summary on stderr and, with --json, one JSON object on stdout.
@@ -9,6 +9,9 @@
 #   --shots N              shots (default 20)
 #   --seed S               seed of the targets and the noise (default 1)
 #   --noise on|off         the robot's execution noise (default off)
+#   --scene break|FILE     one whole-table shot instead: the eight-ball rack of --seed (break) or
+#                          a scene file at rest, the cue ball rolled into the ball nearest it;
+#                          prints how the estimator tracked every ball (error, swaps)
 #   --log FILE             record every message with lcm-logger into FILE
 #   --log-frames all|none  with --log: record the CAMERA_IMAGE frames or not (default all)
 #   --lockstep             wait for the estimator's state of each frame: deterministic (default)
@@ -29,13 +32,15 @@
 set -euo pipefail
 source "$(dirname "$0")/script_support.sh"
 
-shots=20 seed=1 noise=off log="" log_frames=all clock=--lockstep json=false build=true
+shots=20 seed=1 noise=off scene="" log="" log_frames=all clock=--lockstep json=false build=true
 while [ $# -gt 0 ]; do
   case "$1" in
     -h | --help) help_and_exit ;;
     --shots) need_number 1 "$@"; shots=$2; shift 2 ;;
     --seed) need_number 0 "$@"; seed=$2; shift 2 ;;
     --noise) need_value "$@"; noise=$2; shift 2 ;;
+    # A scene file, like --log, is the caller's path; "break" is a name.
+    --scene) need_value "$@"; scene=$2; [ "$scene" = break ] || scene=$(realpath -m -- "$2"); shift 2 ;;
     # Before the cd to the repository below: a relative path is the caller's.
     --log) need_value "$@"; log=$(realpath -m -- "$2"); shift 2 ;;
     --log-frames) need_value "$@"; log_frames=$2; shift 2 ;;
@@ -70,7 +75,7 @@ $build && bash launch_scripts/build.sh
 
 source launch_scripts/lcm_network.sh
 enter_private_network launch_scripts/run_loop.sh --no-build --shots "$shots" --seed "$seed" \
-  --noise "$noise" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json)
+  --noise "$noise" ${scene:+--scene "$scene"} ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json)
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
 in_process=false
@@ -115,14 +120,14 @@ sim_clock=""
 session=(build/bin/table_sim_node)
 $in_process && session=(build/bin/billiard loop)
 "${session[@]}" --params pool --shots "$shots" --seed "$seed" --noise "$noise" \
-  $sim_clock >"$summary_file" &
+  ${scene:+--scene "$scene"} $sim_clock >"$summary_file" &
 pids+=($!)
 status=0
 wait $! || status=$?
 # The session's own refusal (3) and a signal (130) are the run's; anything else is its failure.
 case $status in
   0) ;;
-  3 | 130) exit $status ;;
+  2 | 3 | 130) exit $status ;;
   *) echo "run_loop: table_sim_node failed (exit $status)" >&2; exit 1 ;;
 esac
 summary=$(cat "$summary_file")
@@ -148,6 +153,17 @@ for i, shot in enumerate(s["shots"]):
           f"{shot['plan_ms']:8.2f}  {shot['status']}")
 print(f"median miss {1e3*s['median_miss_m']:.2f} mm, max {1e3*s['max_miss_m']:.2f} mm, "
       f"mean {1e3*s['mean_miss_m']:.2f} +- {1e3*s['stddev_miss_m']:.2f} mm, {s['wall_s']:.1f} s")
+if "scene" in s:
+    scene, tracking = s["scene"], s["scene"]["tracking"]
+    pocketed = [f"{b['id']} ({b['pocketed']})" for b in scene["balls"] if b["pocketed"]]
+    print(f"{scene['name']}: {scene['events']} events, pocketed: {', '.join(pocketed) or 'none'}")
+    print(f"{'ball':>4} {'frames':>6} {'lost':>5} {'rms mm':>7} {'max mm':>7}")
+    for b in tracking["balls"]:
+        print(f"{b['id']:>4} {b['frames']:>6} {b['lost']:>5} {b.get('rms_error_mm', float('nan')):7.2f} "
+              f"{b.get('max_error_mm', float('nan')):7.2f}")
+    print(f"tracking: rms {tracking['rms_error_mm']:.2f} mm, max {tracking['max_error_mm']:.2f} mm, "
+          f"{tracking['swaps']} swaps, {tracking['reacquired']} tracks re-acquired, "
+          f"{tracking['lost_ball_frames']} ball-frames without a track")
 PY
 if [ -n "$log_failure" ]; then
   echo "run_loop: the log '$log' is not a record of the run: $log_failure" >&2

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 #include "lcmtypes/node/node_loop.h"
@@ -39,6 +40,13 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
                  "Fault injection: probability a frame or a request is sent twice")
       ->check(CLI::Range(0.0, 1.0));
   app.add_option("--fault-seed", faults.seed, "Seed of the fault injection")->capture_default_str();
+  app.add_option("--scene", options.scene,
+                 "A whole-table session instead of the shots: break (the eight-ball rack of "
+                 "--seed on pool-9ft) or a scene file (every ball at rest); the cue ball is "
+                 "struck once, rolling, at the ball nearest it");
+  app.add_option("--break-speed", options.break_speed,
+                 "--scene: the cue ball's speed where it meets the first ball [m/s]")
+      ->capture_default_str();
   app.add_option("--reply-timeout", options.reply_timeout,
                  "Longest wait for the estimator or the planner [s]")
       ->capture_default_str();
@@ -46,8 +54,10 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
 
 TableSimOptions SessionOptions(const SessionCommandLine& line) {
   TableSimOptions options = line.options;
-  if (options.shots < 1 || !(options.camera_rate > 0.0) || !(options.reply_timeout > 0.0)) {
-    throw std::invalid_argument("--shots, --camera-rate and --reply-timeout must be positive");
+  if (options.shots < 1 || !(options.camera_rate > 0.0) || !(options.reply_timeout > 0.0) ||
+      !(options.break_speed > 0.0)) {
+    throw std::invalid_argument(
+        "--shots, --camera-rate, --reply-timeout and --break-speed must be positive");
   }
   const FaultInjection& f = options.faults;
   if (f.drop_frames + f.reorder_frames + f.duplicate > 1.0) {
@@ -87,16 +97,26 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
   TableSimNode node(lcm, params, camera, options);
   node.RunAlongside(alongside);
   std::vector<ShotResult> shots;
+  std::optional<SceneResult> scene;
   try {
-    shots = node.Run();
+    if (options.scene.empty()) {
+      shots = node.Run();
+    } else {
+      scene = node.RunScene();
+      shots = {scene->shot};
+    }
   } catch (const ParameterMismatch& e) {
     return fail(e.what(), 3);
+  } catch (const std::invalid_argument& e) {  // a scene that does not load or fit
+    return fail(e.what(), options.scene.empty() ? 1 : 2);
   } catch (const std::exception& e) {
     return fail(e.what(), nodes::StopRequested() ? 130 : 1);
   }
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << SessionSummary(shots, node.health().TakeStatus(), wall_s).dump() << std::endl;
+  nlohmann::json summary = SessionSummary(shots, node.health().TakeStatus(), wall_s);
+  if (scene) summary["scene"] = SceneSummary(*scene, options.scene);
+  std::cout << summary.dump() << std::endl;
   return 0;
 }
 
@@ -132,6 +152,38 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
   j["received"] = health.received;
   j["dropped"] = health.dropped;
   j["wall_s"] = wall_s;
+  return j;
+}
+
+nlohmann::json SceneSummary(const SceneResult& scene, const std::string& name) {
+  nlohmann::json j = {{"name", name}, {"events", scene.events}};
+  for (std::size_t k = 0; k < scene.final_balls.size(); ++k) {
+    const table::SceneBall& b = scene.final_balls[k];
+    nlohmann::json ball = {{"id", b.id}, {"final", {b.state[physics::kX], b.state[physics::kY]}}};
+    ball["pocketed"] =
+        scene.pockets[k].empty() ? nlohmann::json() : nlohmann::json(scene.pockets[k]);
+    j["balls"].push_back(ball);
+  }
+  const TrackingReport& t = scene.tracking;
+  double sum = 0.0, worst = 0.0;
+  int frames = 0, lost = 0;
+  for (const BallTracking& b : t.balls) {
+    nlohmann::json ball = {{"id", b.id}, {"frames", b.frames}, {"lost", b.lost}};
+    if (b.frames > 0) {
+      ball["rms_error_mm"] = 1e3 * std::sqrt(b.sum_squared_error / b.frames);
+      ball["max_error_mm"] = 1e3 * b.max_error;
+    }
+    j["tracking"]["balls"].push_back(ball);
+    sum += b.sum_squared_error;
+    frames += b.frames;
+    lost += b.lost;
+    worst = std::max(worst, b.max_error);
+  }
+  j["tracking"]["rms_error_mm"] = frames > 0 ? 1e3 * std::sqrt(sum / frames) : 0.0;
+  j["tracking"]["max_error_mm"] = 1e3 * worst;
+  j["tracking"]["lost_ball_frames"] = lost;
+  j["tracking"]["swaps"] = t.swaps;
+  j["tracking"]["reacquired"] = t.reacquired;
   return j;
 }
 

@@ -51,7 +51,8 @@ using InProcessNodes = std::function<std::function<bool()>(
 // object on stdout. Returns the exit status: 0; 1 when LCM fails or a node does not answer in
 // time; 2 for options that make no session (the reason on stderr, prefixed by `name`); 3 when
 // the estimator or the planner runs other physics (the session refused); 130 when stopped by
-// SIGINT or SIGTERM.
+// SIGINT or SIGTERM. With options.scene, the whole-table session (RunScene), its summary under
+// "scene"; a scene that does not load or fit is exit 2.
 int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
                       const InProcessNodes& in_process = nullptr);
 
@@ -59,5 +60,10 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
 // counters and the wall time.
 nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_status_t& health,
                               double wall_s);
+
+// What a whole-table session adds (the summary's "scene"): the events, where every ball ended
+// (and the pocket it dropped into), and how the estimator tracked each ball (RMS and largest
+// error, frames without a track, swaps of tracks between balls).
+nlohmann::json SceneSummary(const SceneResult& scene, const std::string& name);
 
 }  // namespace billiard::table_sim_node

@@ -14,7 +14,11 @@
 #include "lcmtypes/names.h"
 #include "lcmtypes/node/node_loop.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/scene_file.h"
+#include "sim/params/table_specs.h"
 #include "sim/physics/simulator.h"
+#include "sim/table/rack.h"
+#include "sim/table/table_simulation.h"
 
 namespace billiard::table_sim_node {
 
@@ -22,6 +26,46 @@ namespace {
 
 // The one ball of a session, as the truth names it.
 constexpr int kCueBall = 0;
+
+// The table of the "break" scene, and the longest a whole-table session simulates.
+constexpr char kBreakTable[] = "pool-9ft";
+constexpr double kLongestScene = 120.0;  // [s]
+
+// A track counts for a ball within this many ball radii of its centre: nearer it than to any
+// ball touching it.
+constexpr double kTrackGate = 1.0;
+
+// The balls of options.scene on their table.
+std::pair<table::TableGeometry, std::vector<table::SceneBall>> LoadSessionScene(
+    const TableSimOptions& options, const physics::ModelParameters& params) {
+  if (options.scene == "break") {
+    table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(kBreakTable));
+    auto balls =
+        table::Rack(table::RackKind::kEightBall, geometry, params.ball.radius, options.seed);
+    return {std::move(geometry), std::move(balls)};
+  }
+  const params::SceneFile scene = params::LoadScene(options.scene);
+  if (params::ParameterHash(params::LoadParameters(scene.params)) !=
+      params::ParameterHash(params)) {
+    throw std::invalid_argument(options.scene + ": the scene's parameter set '" + scene.params +
+                                "' is not the session's '" + params::ParameterSetLabel(params) +
+                                "'");
+  }
+  table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(scene.table));
+  if (std::abs(geometry.length - params.table.length) > 1e-9 ||
+      std::abs(geometry.width - params.table.width) > 1e-9) {
+    throw std::invalid_argument(options.scene + ": the " + geometry.name +
+                                " table is not the size of the parameter set's, which the camera "
+                                "sees");
+  }
+  for (const table::SceneBall& b : scene.balls) {
+    if (b.state.tail<5>().norm() != 0.0) {
+      throw std::invalid_argument(options.scene + ": ball " + std::to_string(b.id) +
+                                  " moves; a session's scene starts at rest");
+    }
+  }
+  return {std::move(geometry), scene.balls};
+}
 
 }  // namespace
 
@@ -136,26 +180,29 @@ void TableSimNode::WaitFor(const std::function<bool()>& done, const std::string&
   }
 }
 
-void TableSimNode::Frame(const std::function<physics::BallState(double)>& state, double t) {
+void TableSimNode::Frame(const std::vector<TruthBall>& balls, double t) {
   const std::int64_t utime = Utime(t);
-  const physics::BallState x = state(t);
   table_state_t truth{};
   truth.utime = utime;
-  ball_state_t b{};  // the truth has no covariance
-  b.utime = utime;
-  b.ball_id = kCueBall;
-  std::copy(x.data(), x.data() + 2, b.position);
-  std::copy(x.data() + physics::kVx, x.data() + physics::kVx + 2, b.velocity);
-  std::copy(x.data() + physics::kWx, x.data() + physics::kWx + 3, b.spin);
-  truth.balls.push_back(b);
-  truth.num_balls = 1;
+  std::vector<render::RenderBall> shown;
+  for (const TruthBall& ball : balls) {
+    const physics::BallState x = ball.state(t);
+    ball_state_t b{};  // the truth has no covariance
+    b.utime = utime;
+    b.ball_id = ball.id;
+    std::copy(x.data(), x.data() + 2, b.position);
+    std::copy(x.data() + physics::kVx, x.data() + physics::kVx + 2, b.velocity);
+    std::copy(x.data() + physics::kWx, x.data() + physics::kWx + 3, b.spin);
+    truth.balls.push_back(b);
+    const auto& state = ball.state;
+    shown.push_back({ball.id, render::PoolBallColour(ball.id),
+                     [state](double time) { return Eigen::Vector2d(state(time).head<2>()); }});
+  }
+  truth.num_balls = static_cast<std::int32_t>(truth.balls.size());
   Publish(messages::kTableTruthChannel, truth);
 
-  const render::RenderBall ball{kCueBall, render::PoolBallColour(kCueBall), [&state](double time) {
-                                  return Eigen::Vector2d(state(time).head<2>());
-                                }};
   const image_t image = messages::EncodeImage(
-      renderer_.Render({ball}, t), utime, messages::ImageEncoding::kMjpeg, options_.jpeg_quality);
+      renderer_.Render(shown, t), utime, messages::ImageEncoding::kMjpeg, options_.jpeg_quality);
   if (!options_.lockstep) {
     static const auto wall_start = std::chrono::steady_clock::now();
     std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t));
@@ -188,6 +235,7 @@ void TableSimNode::Frame(const std::function<physics::BallState(double)>& state,
     WaitFor([&] { return state_ && state_->utime == utime; },
             "TABLE_STATE for the frame at utime " + std::to_string(utime),
             [&] { Publish(messages::kCameraImageChannel, image); });
+    if (tracking_) Track(balls, t, *state_);
   } else {
     while (lcm_.handleTimeout(0) > 0) {
     }
@@ -196,37 +244,40 @@ void TableSimNode::Frame(const std::function<physics::BallState(double)>& state,
   }
 }
 
-void TableSimNode::ShowAtRest() {
-  const physics::BallState rest_state = physics::MakeBallState(ball_.x(), ball_.y(), 0, 0, 0, 0, 0);
-  const auto at_rest = [&rest_state](double) { return rest_state; };
+void TableSimNode::ShowAtRest(const std::vector<table::SceneBall>& balls) {
+  std::vector<TruthBall> still;
+  for (const table::SceneBall& b : balls) {
+    physics::BallState rest = b.state;
+    rest.tail<5>().setZero();
+    still.push_back({b.id, [rest](double) { return rest; }});
+  }
   const double frame_dt = 1.0 / options_.camera_rate;
   for (double shown = 0.0; shown < options_.settle_time; shown += frame_dt) {
-    Frame(at_rest, time_);
+    Frame(still, time_);
     time_ += frame_dt;
   }
 }
 
-cue_command_t TableSimNode::Request(int shot, const Eigen::Vector2d& target, ShotResult& result) {
+cue_command_t TableSimNode::Request(int shot, const std::vector<table::SceneBall>& shown,
+                                    const Eigen::Vector2d& ball, const shot_request_t& ask,
+                                    ShotResult& result) {
   for (;;) {
-    ShowAtRest();
+    ShowAtRest(shown);
     // The estimator names balls by its tracks: ask for the one it sees nearest the ball.
     WaitFor([&] { return state_ && state_->num_balls > 0; }, "TABLE_STATE with the ball", nullptr);
     int ball_id = state_->balls[0].ball_id;
     double nearest = 1e300;
     for (const ball_state_t& b : state_->balls) {
-      const double d = std::hypot(b.position[0] - ball_.x(), b.position[1] - ball_.y());
+      const double d = std::hypot(b.position[0] - ball.x(), b.position[1] - ball.y());
       if (d < nearest) {
         nearest = d;
         ball_id = b.ball_id;
       }
     }
-    shot_request_t request{};
+    shot_request_t request = ask;
     request.utime = Utime(time_);
     request.request_id = shot;
     request.ball_id = ball_id;
-    request.target[0] = target.x();
-    request.target[1] = target.y();
-    request.spin = shot_request_t::SPIN_NATURAL;
     Publish(messages::kShotRequestChannel, request);
     if (std::uniform_real_distribution<double>(0.0, 1.0)(fault_rng_) < options_.faults.duplicate) {
       health_.Count("request_duplicated");
@@ -246,6 +297,41 @@ cue_command_t TableSimNode::Request(int shot, const Eigen::Vector2d& target, Sho
     health_.Count("shot_retried");
     log_("shot " + std::to_string(shot) + ": " + messages::CueCommandStatusName(status) + " (" +
          command_->reason + "), asking again");
+  }
+}
+
+void TableSimNode::Track(const std::vector<TruthBall>& balls, double t,
+                         const table_state_t& estimate) {
+  const double gate = kTrackGate * params_.ball.radius;
+  for (const TruthBall& ball : balls) {
+    auto tracking = std::find_if(tracking_->balls.begin(), tracking_->balls.end(),
+                                 [&](const BallTracking& b) { return b.id == ball.id; });
+    if (tracking == tracking_->balls.end()) continue;
+    const Eigen::Vector2d truth = ball.state(t).head<2>();
+    double nearest = gate;
+    const ball_state_t* track = nullptr;
+    for (const ball_state_t& b : estimate.balls) {
+      const double d = (Eigen::Vector2d(b.position[0], b.position[1]) - truth).norm();
+      if (d < nearest) {
+        nearest = d;
+        track = &b;
+      }
+    }
+    if (track == nullptr) {
+      ++tracking->lost;
+      continue;
+    }
+    const auto mapped = track_of_.find(ball.id);
+    if (mapped != track_of_.end() && mapped->second != track->ball_id) {
+      const bool another_balls =
+          std::any_of(track_of_.begin(), track_of_.end(),
+                      [&](const auto& entry) { return entry.second == track->ball_id; });
+      ++(another_balls ? tracking_->swaps : tracking_->reacquired);
+    }
+    track_of_[ball.id] = track->ball_id;
+    ++tracking->frames;
+    tracking->sum_squared_error += nearest * nearest;
+    tracking->max_error = std::max(tracking->max_error, nearest);
   }
 }
 
@@ -283,7 +369,13 @@ std::vector<ShotResult> TableSimNode::Run() {
     do {
       result.target = {x(rng_), y(rng_)};
     } while ((result.target - rest).norm() < options_.min_distance);
-    const cue_command_t command = Request(shot, result.target, result);
+    shot_request_t ask{};
+    ask.target[0] = result.target.x();
+    ask.target[1] = result.target.y();
+    ask.spin = shot_request_t::SPIN_NATURAL;
+    const cue_command_t command =
+        Request(shot, {{kCueBall, physics::MakeBallState(rest.x(), rest.y(), 0, 0, 0, 0, 0)}}, rest,
+                ask, result);
     result.status = messages::CueCommandStatusName(command.status);
     result.reason = command.reason;
     result.plan_ms = 1e-3 * command.solve_us;
@@ -306,7 +398,7 @@ std::vector<ShotResult> TableSimNode::Run() {
     const auto moving = [t_strike, trajectory, &arrival](double t) -> physics::BallState {
       return t - t_strike >= arrival.time ? arrival.state : trajectory->At(t - t_strike);
     };
-    for (; time_ - t_strike < arrival.time; time_ += frame_dt) Frame(moving, time_);
+    for (; time_ - t_strike < arrival.time; time_ += frame_dt) Frame({{kCueBall, moving}}, time_);
     ball_ = final_point;
     result.final_point = final_point;
     result.miss_m = (final_point - result.target).norm();
@@ -320,6 +412,95 @@ std::vector<ShotResult> TableSimNode::Run() {
   }
   health_.PublishIfDue(lcm_);
   return results;
+}
+
+SceneResult TableSimNode::RunScene() {
+  AwaitPeersWithTheSamePhysics();
+  const auto [geometry, balls] = LoadSessionScene(options_, params_);
+  const auto cue = std::find_if(balls.begin(), balls.end(),
+                                [](const table::SceneBall& b) { return b.id == kCueBall; });
+  if (cue == balls.end()) throw std::invalid_argument(options_.scene + ": no cue ball (id 0)");
+  const Eigen::Vector2d cue_at = cue->state.head<2>();
+  // The ball to hit: the nearest to the cue ball; the target, the cue ball's centre at contact.
+  const table::SceneBall* object = nullptr;
+  for (const table::SceneBall& b : balls) {
+    if (b.id == kCueBall) continue;
+    if (object == nullptr ||
+        (b.state.head<2>() - cue_at).norm() < (object->state.head<2>() - cue_at).norm()) {
+      object = &b;
+    }
+  }
+  if (object == nullptr) throw std::invalid_argument(options_.scene + ": no ball to strike at");
+  const Eigen::Vector2d to_object = object->state.head<2>() - cue_at;
+  SceneResult result;
+  result.shot.target = object->state.head<2>() - 2.0 * params_.ball.radius * to_object.normalized();
+
+  health_.Set(messages::kRealtimeClockSetting, options_.lockstep ? 0 : 1);
+  health_.Publish(lcm_);
+  tracking_ = TrackingReport{};
+  for (const table::SceneBall& b : balls) tracking_->balls.push_back({b.id});
+  shot_request_t ask{};
+  ask.target[0] = result.shot.target.x();
+  ask.target[1] = result.shot.target.y();
+  ask.final_speed = options_.break_speed;
+  ask.spin = shot_request_t::SPIN_NATURAL;
+  const cue_command_t command = Request(0, balls, cue_at, ask, result.shot);
+  result.shot.status = messages::CueCommandStatusName(command.status);
+  result.shot.reason = command.reason;
+  result.shot.plan_ms = 1e-3 * command.solve_us;
+  std::vector<table::SceneBall> struck = balls;
+  if (command.status == cue_command_t::STATUS_OK) {
+    const physics::CueStroke stroke =
+        WithNoise({command.cue_speed, command.heading, command.tip_side, command.tip_height,
+                   command.elevation});
+    for (table::SceneBall& b : struck) {
+      if (b.id == kCueBall) b.state = physics::StrikeBall(stroke, cue_at, params_);
+    }
+  } else {
+    log_("the break refused: " + result.shot.status + ", " + result.shot.reason);
+  }
+  table::TableSimulation sim(geometry, params_, struck);
+  sim.Run(kLongestScene);
+  const double t_strike = time_;
+  const double frame_dt = 1.0 / options_.camera_rate;
+  const double last_event = sim.events().empty() ? 0.0 : sim.events().back().time;
+  for (; time_ - t_strike <= last_event + options_.settle_time; time_ += frame_dt) {
+    const double since = time_ - t_strike;
+    std::vector<TruthBall> on_table;
+    for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+      if (sim.pocket(i) && since >= sim.segments(i).back().start_time()) continue;
+      on_table.push_back({sim.id(i), [&sim, i, t_strike](double t) {
+                            return sim.StateAt(i, std::min(t - t_strike, sim.time()));
+                          }});
+    }
+    Frame(on_table, time_);
+  }
+  // The miss: the cue ball's centre where it first meets a ball, against the contact point.
+  result.shot.final_point = sim.State(0).head<2>();
+  for (const table::TableEvent& e : sim.events()) {
+    if (e.type == table::EventType::kBallBall && (e.ball == kCueBall || e.other == kCueBall)) {
+      for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+        if (sim.id(i) == kCueBall) result.shot.final_point = sim.StateAt(i, e.time).head<2>();
+      }
+      break;
+    }
+  }
+  result.shot.miss_m = (result.shot.final_point - result.shot.target).norm();
+  for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+    result.final_balls.push_back({sim.id(i), sim.State(i)});
+    result.pockets.push_back(sim.pocket(i).value_or(""));
+  }
+  result.events = static_cast<int>(sim.events().size());
+  result.tracking = *tracking_;
+  tracking_.reset();
+  std::ostringstream line;
+  line.precision(4);
+  line << "break: " << result.events << " events, cue ball meets the first ball "
+       << 1e3 * result.shot.miss_m << " mm from the contact point, " << result.tracking.swaps
+       << " swaps";
+  log_(line.str());
+  health_.PublishIfDue(lcm_);
+  return result;
 }
 
 }  // namespace billiard::table_sim_node

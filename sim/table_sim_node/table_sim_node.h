@@ -37,6 +37,7 @@
 #include "lcmtypes/billiard/cue_command_t.hpp"
 #include "lcmtypes/billiard/image_t.hpp"
 #include "lcmtypes/billiard/node_status_t.hpp"
+#include "lcmtypes/billiard/shot_request_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/node/node_health.h"
 #include "sim/camera/camera_model.h"
@@ -44,6 +45,8 @@
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
 #include "sim/render/table_renderer.h"
+#include "sim/table/scene.h"
+#include "sim/table/table_geometry.h"
 
 namespace billiard::table_sim_node {
 
@@ -76,6 +79,12 @@ struct TableSimOptions {
   double target_margin = 0.15;        // targets at least this far inside the cushions [m]
   double min_distance = 0.3;          // and at least this far from the ball [m]
   int jpeg_quality = 90;
+  // A whole-table session instead of shots to random targets: "break" (the eight-ball rack of
+  // `seed` on the pool-9ft table) or a scene file (sim/params/scene_file.h, every ball at rest).
+  // The cue ball (id 0) is struck once, rolling, at the ball nearest it, which it meets at
+  // break_speed.
+  std::string scene;
+  double break_speed = 5.0;  // [m/s]
 };
 
 struct ShotResult {
@@ -86,6 +95,33 @@ struct ShotResult {
   std::string status;  // the planner's ("ok", or why not)
   std::string reason;
   int retries = 0;  // requests refused for a cause that time cures, and asked again
+};
+
+// How the estimator followed one ball of a whole-table session, frame by frame (lockstep): the
+// error of the track associated with the ball (the nearest within a ball's radius), the frames
+// without a track there, and how often its track changed.
+struct BallTracking {
+  int id = 0;
+  int frames = 0;  // frames with the ball tracked
+  int lost = 0;    // frames of the ball on the table without a track within a diameter
+  double sum_squared_error = 0.0;
+  double max_error = 0.0;  // [m]
+};
+
+struct TrackingReport {
+  std::vector<BallTracking> balls;  // in the scene's order
+  int swaps = 0;                    // a ball's nearest track was another ball's
+  int reacquired = 0;               // a ball's track changed to a new one
+};
+
+// A whole-table session: the one shot (the cue ball at the ball nearest it), where every ball
+// ended, the events, and the tracking.
+struct SceneResult {
+  ShotResult shot;  // the target is the contact point; the miss, the cue ball's centre there
+  std::vector<table::SceneBall> final_balls;
+  std::vector<std::string> pockets;  // per ball: the pocket it dropped into, or ""
+  int events = 0;
+  TrackingReport tracking;
 };
 
 // The estimator or the planner runs with other physics than the simulator: a session would plan
@@ -112,6 +148,11 @@ class TableSimNode {
   // they run other physics, std::runtime_error when a node does not answer in time.
   std::vector<ShotResult> Run();
 
+  // Runs the whole-table session of options.scene (same preconditions and throws as Run; also
+  // std::invalid_argument for a scene that does not load, is not at rest or lies on another
+  // table than the parameter set's).
+  SceneResult RunScene();
+
   // Other nodes' work, called between messages while the session waits: the estimator and the
   // planner when they run in this process (node_loop.h's `work`).
   void RunAlongside(std::function<bool()> work) { alongside_ = std::move(work); }
@@ -128,14 +169,22 @@ class TableSimNode {
   void OnNodeStatus(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   // Waits for the peers' NODE_STATUS and compares their physics with the simulator's.
   void AwaitPeersWithTheSamePhysics();
-  // Publishes the ball's true state at time t (sim time) and the camera's frame of it and, in
-  // lockstep, waits for the estimator's state of that frame.
-  void Frame(const std::function<physics::BallState(double)>& state, double t);
-  // Shows the ball at rest for the settle time.
-  void ShowAtRest();
-  // Asks the planner for the shot (again after refusals that time cures) and waits for the
-  // answer.
-  cue_command_t Request(int shot, const Eigen::Vector2d& target, ShotResult& result);
+  // A ball on the table and its true state at any sim time.
+  struct TruthBall {
+    int id;
+    std::function<physics::BallState(double)> state;
+  };
+  // Publishes the balls' true states at time t (sim time) and the camera's frame of them and, in
+  // lockstep, waits for the estimator's state of that frame (and scores it, with tracking_).
+  void Frame(const std::vector<TruthBall>& balls, double t);
+  // Shows the balls at rest at `at` for the settle time.
+  void ShowAtRest(const std::vector<table::SceneBall>& balls);
+  // Asks the planner to send the ball estimated nearest `ball` (again after refusals that time
+  // cures) and waits for the answer.
+  cue_command_t Request(int shot, const std::vector<table::SceneBall>& shown,
+                        const Eigen::Vector2d& ball, const shot_request_t& ask, ShotResult& result);
+  // Scores the estimator's state of a frame against the truth of its balls at t.
+  void Track(const std::vector<TruthBall>& balls, double t, const table_state_t& estimate);
   // Handles messages until `done` holds, calling `resend` every retry interval; throws after the
   // reply timeout.
   void WaitFor(const std::function<bool()>& done, const std::string& what,
@@ -161,6 +210,8 @@ class TableSimNode {
   std::optional<cue_command_t> command_;        // the planner's latest
   std::optional<image_t> held_frame_;           // reordered: sent after the next
   std::map<std::string, node_status_t> peers_;  // the latest status of each peer
+  std::optional<TrackingReport> tracking_;      // a whole-table session's, while it runs
+  std::map<int, std::int32_t> track_of_;        // ball id -> the estimator's track id
 };
 
 }  // namespace billiard::table_sim_node
