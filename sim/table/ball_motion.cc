@@ -25,6 +25,11 @@ constexpr double kStillSpin = 1e-9;     // [rad/s]
 // Ms for pure spin on a uniformly slipping disk (physics notes, section 1).
 constexpr double kPivotMoment = 3.0 * M_PI / 16.0;
 
+// The 5-DOF model's friction force stays within mu m g (|T| <= 1 for the integral model, eq. 16;
+// the approximation, eq. 17, within a few per cent of it): the bound on its acceleration, with
+// a margin.
+constexpr double kFiveDofAccelerationMargin = 1.5;
+
 double Sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 
 }  // namespace
@@ -39,6 +44,8 @@ const char* PhaseName(MotionPhase phase) {
       return "spinning";
     case MotionPhase::kStationary:
       return "stationary";
+    case MotionPhase::kFiveDof:
+      return "5-dof";
   }
   return "unknown";
 }
@@ -82,10 +89,30 @@ MotionSegment::MotionSegment(const ClothParameters& cloth, double start_time,
     start_[kWz] = 0.0;
   }
   end_time_ = start_time + duration;
+  max_acceleration_ = acceleration_.norm();
+}
+
+MotionSegment::MotionSegment(const physics::ModelParameters& params,
+                             const physics::SimulationOptions& options, double start_time,
+                             const BallState& state, double horizon)
+    : cloth_(ClothParameters::From(params)),
+      phase_(MotionPhase::kFiveDof),
+      start_time_(start_time),
+      start_(state) {
+  physics::SimulationOptions rest_switched = options;
+  rest_switched.rest_switch = true;
+  const physics::SimulationResult run = physics::Simulate(params, state, horizon, rest_switched);
+  trajectory_ = run.trajectory;
+  const bool rested = run.rest_time >= 0.0;
+  end_time_ = start_time + (rested ? run.rest_time : horizon);
+  end_ = trajectory_->At(end_time_ - start_time);
+  if (rested) end_.segment<4>(kVx).setZero();
+  max_acceleration_ = kFiveDofAccelerationMargin * params.contact.mu * params.ball.gravity;
 }
 
 BallState MotionSegment::At(double t) const {
   const double tau = std::clamp(t - start_time_, 0.0, end_time_ - start_time_);
+  if (trajectory_) return t >= end_time_ ? end_ : trajectory_->At(tau);
   BallState s = start_;
   s.segment<2>(kX) += velocity() * tau + 0.5 * acceleration_ * tau * tau;
   s.segment<2>(kVx) += acceleration_ * tau;
@@ -112,6 +139,8 @@ BallState MotionSegment::At(double t) const {
     case MotionPhase::kSpinning:
     case MotionPhase::kStationary:
       s.segment<4>(kVx).setZero();
+      break;
+    case MotionPhase::kFiveDof:  // returned above
       break;
   }
   return s;

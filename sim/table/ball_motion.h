@@ -1,4 +1,4 @@
-// A ball's motion on the cloth between two events, in closed form.
+// A ball's motion on the cloth between two events: in closed form, or by the 5-DOF model.
 //
 // The point-contact model of Jaroukh 2019 (`sim/physics/closed_form.h`): Coulomb friction mu_s
 // while the contact point slips, then rolling without slip decelerated by rolling resistance
@@ -9,17 +9,28 @@
 // sliding, rolling, spinning in place and rest, each phase a polynomial in time: the centre moves
 // on a parabola (constant acceleration), which is what makes every collision time the root of a
 // polynomial (`sim/table/polynomial_roots.h`).
+//
+// The 5-DOF model of Kudra et al. 2016 (`sim/physics/simulator.h`) is the other motion a ball
+// may have between events: its friction acts over the contact patch, so it has what the point
+// contact lacks (rolling resistance while the ball slides, side spin curving the path), at the
+// cost of an integration. Its segment runs until the ball rests (the rest switch of
+// `sim/physics/rest.h`); its centre's path is no polynomial, so the simulation finds its
+// contacts by conservative advancement, from the bound on how fast it can move.
 #pragma once
 
 #include <Eigen/Core>
 #include <limits>
+#include <memory>
 
 #include "sim/physics/ball_state.h"
 #include "sim/physics/parameters.h"
+#include "sim/physics/simulator.h"
+#include "sim/physics/trajectory.h"
 
 namespace billiard::table {
 
-enum class MotionPhase { kSliding, kRolling, kSpinning, kStationary };
+// kFiveDof: moving by the 5-DOF model (sliding and rolling alike), until it rests.
+enum class MotionPhase { kSliding, kRolling, kSpinning, kStationary, kFiveDof };
 
 const char* PhaseName(MotionPhase phase);
 
@@ -41,6 +52,15 @@ class MotionSegment {
   // The phase a ball in `state` is in, and its motion from `start_time` until the phase ends.
   MotionSegment(const ClothParameters& cloth, double start_time, const physics::BallState& state);
 
+  // The 5-DOF model with `options` from `start_time` until the ball rests, or `horizon` later.
+  // At its end the ball is at rest (v = 0, w_xy = 0; wz as the model left it) unless the horizon
+  // came first.
+  MotionSegment(const physics::ModelParameters& params, const physics::SimulationOptions& options,
+                double start_time, const physics::BallState& state, double horizon);
+
+  // Whether the centre moves on a parabola (position(), velocity(), acceleration() hold).
+  bool closed_form() const { return trajectory_ == nullptr; }
+
   MotionPhase phase() const { return phase_; }
   double start_time() const { return start_time_; }
   double end_time() const { return end_time_; }
@@ -49,7 +69,10 @@ class MotionSegment {
   // The state at table time t, start_time <= t <= end_time (clamped to the segment).
   physics::BallState At(double t) const;
 
-  // The centre's position as p0 + v0 tau + 1/2 a tau^2.
+  // A bound on the centre's acceleration over the segment [m/s^2].
+  double max_acceleration() const { return max_acceleration_; }
+
+  // The centre's position as p0 + v0 tau + 1/2 a tau^2 (closed form only).
   Eigen::Vector2d position() const { return start_.segment<2>(physics::kX); }
   Eigen::Vector2d velocity() const { return start_.segment<2>(physics::kVx); }
   const Eigen::Vector2d& acceleration() const { return acceleration_; }
@@ -63,6 +86,9 @@ class MotionSegment {
   physics::BallState start_;
   Eigen::Vector2d acceleration_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d slip_direction_ = Eigen::Vector2d::Zero();  // sliding: u / |u|
+  double max_acceleration_ = 0.0;
+  std::shared_ptr<const physics::Trajectory> trajectory_;  // the 5-DOF motion, from tau = 0
+  physics::BallState end_ = physics::BallState::Zero();    // the 5-DOF motion's last state
 };
 
 // The slip velocity of the contact point with the cloth, u = v + r z x w.
