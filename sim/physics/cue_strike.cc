@@ -57,14 +57,20 @@ double MomentOfInertia(const ModelParameters& p) {
   return 0.4 * p.ball.mass * p.ball.radius * p.ball.radius;
 }
 
-// The root of f in [lo, hi], f(lo) >= 0 >= f(hi), to the last bit of the double.
-double Bisect(const std::function<double(double)>& f, double lo, double hi) {
+// The root of f in [lo, hi], f(lo) >= 0 >= f(hi), to within `tolerance` or the last bit of the
+// double.
+double Bisect(const std::function<double(double)>& f, double lo, double hi,
+              double tolerance = 0.0) {
   for (;;) {
     const double mid = 0.5 * (lo + hi);
-    if (mid == lo || mid == hi) return mid;
+    if (mid == lo || mid == hi || hi - lo <= tolerance) return mid;
     (f(mid) >= 0.0 ? lo : hi) = mid;
   }
 }
+
+// Far below the last bit of any heading near pi: a squirt angle this close to its root (near
+// zero, where doubles are dense) changes no launch.
+constexpr double kAngleResolution = 1e-18;
 
 std::string Format(double value) {
   std::ostringstream s;
@@ -118,10 +124,9 @@ StrokeSolution SolveStroke(const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
   };
   const auto residual = [&](double alpha) {
     const CueFrame f = frame_at(alpha);
-    const double axial = -contact.dot(f.axis) / r;
-    const double ratio =
-        ContactAt(contact.dot(f.right) / r, std::sqrt(1.0 - axial * axial), p).SquirtRatio();
-    return ratio + impulse.dot(f.right) / impulse.dot(f.axis);
+    const double side = contact.dot(f.right), offset = std::hypot(side, contact.dot(f.up));
+    return ContactAt(side / r, offset / r, p).SquirtRatio() +
+           impulse.dot(f.right) / impulse.dot(f.axis);
   };
   const double ratio_max = MaxSquirtRatio(p), slope = down / forward;
   const double bound = std::asin(
@@ -129,7 +134,7 @@ StrokeSolution SolveStroke(const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
   if (residual(-bound) < 0.0 || residual(bound) > 0.0) {
     return Refusal("no cue elevation below the vertical gives this spin with its squirt");
   }
-  const double alpha = Bisect(residual, -bound, bound);
+  const double alpha = Bisect(residual, -bound, bound, kAngleResolution);
 
   // Step 4, the stroke: heading, elevation, the offsets of P, and the cue speed of TP A.30's
   // restitution along the axis, (1 + e) V = (1 / M + K_cc) J_c + K_cn J_n.
