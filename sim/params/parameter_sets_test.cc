@@ -44,7 +44,8 @@ TEST(Parameters, LoadsAFile) {
   std::ofstream(path) << R"({"name":"mine","ball":{"radius":0.03,"mass":0.2,"gravity":9.8},
     "contact":{"patch_radius":0.002,"mu":0.15,"d":0.5,"eps_t":0.01,"eps_r":0.02,
                "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2},
-    "cue":{"mass":0.5,"tip_restitution":0.8,"max_tip_offset":0.5,"max_speed":5},
+    "cue":{"mass":0.5,"tip_restitution":0.8,"max_tip_offset":0.5,"max_speed":5,
+           "end_mass":0.01},
     "collision":{"ball_restitution":0.95,"ball_friction_a":0.01,"ball_friction_b":0.108,
                  "ball_friction_c":1.088,"cushion_restitution":0.9,"cushion_friction":0.2},
     "table":{"length":2.84,"width":1.42}})";
@@ -63,7 +64,8 @@ TEST(Parameters, RejectsUnknownNamesBadJsonMissingFieldsAndBadValues) {
   const std::string good = R"({"ball":{"radius":0.03,"mass":0.2,"gravity":9.8},
     "contact":{"patch_radius":0.002,"mu":0.15,"d":D,"eps_t":0.01,"eps_r":0.02,
                "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2},
-    "cue":{"mass":0.5,"tip_restitution":E,"max_tip_offset":0.5,"max_speed":5},
+    "cue":{"mass":0.5,"tip_restitution":E,"max_tip_offset":0.5,"max_speed":5,
+           "end_mass":0.01},
     "collision":{"ball_restitution":0.95,"ball_friction_a":0.01,"ball_friction_b":0.108,
                  "ball_friction_c":1.088,"cushion_restitution":0.9,"cushion_friction":0.2},
     "table":{"length":2.84,"width":1.42}})";
@@ -88,7 +90,8 @@ std::string SetWithContact(const std::string& extra) {
     "contact":{"patch_radius":0.002,"mu":0.15,"d":0.5,"eps_t":0.01,"eps_r":0.02,
                "b_t":0.7,"m_t":2,"b_m":0.5,"m_m":2)" +
          extra + R"(},
-    "cue":{"mass":0.5,"tip_restitution":0.8,"max_tip_offset":0.5,"max_speed":5},
+    "cue":{"mass":0.5,"tip_restitution":0.8,"max_tip_offset":0.5,"max_speed":5,
+           "end_mass":0.01},
     "collision":{"ball_restitution":0.95,"ball_friction_a":0.01,"ball_friction_b":0.108,
                  "ball_friction_c":1.088,"cushion_restitution":0.9,"cushion_friction":0.2},
     "table":{"length":2.84,"width":1.42}})";
@@ -158,6 +161,7 @@ TEST(Parameters, TheHashIsTheSameForTheSameNumbersWhateverTheName) {
         &moved.contact.b_m,        &moved.contact.m_m,
         &moved.cue.mass,           &moved.cue.tip_restitution,
         &moved.cue.max_tip_offset, &moved.cue.max_speed,
+        &moved.cue.end_mass,
         &k.ball_restitution,       &k.ball_friction_a,
         &k.ball_friction_b,        &k.ball_friction_c,
         &k.cushion_restitution,    &k.cushion_friction,

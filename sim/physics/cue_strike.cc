@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -9,7 +10,8 @@ namespace billiard::physics {
 
 namespace {
 
-// The cue axis c and the unit vectors of the tip offset plane: right (horizontal) and up.
+// The cue axis c and the unit vectors of the tip offset plane: right (horizontal, the direction
+// the tip end is free to move in) and up.
 struct CueFrame {
   Eigen::Vector3d axis, right, up;
 };
@@ -23,13 +25,52 @@ CueFrame FrameOf(double heading, double elevation) {
   return f;
 }
 
-// Impulse per unit cue speed for a tip offset |b| (Alciatore 2004, TP A.30). The tip meets the
-// ball's effective mass at the contact, 1 / m_eff = 1 / m + b^2 / I = (1 + 5/2 q^2) / m, so
-// J = (1 + e) V / (1 / M + 1 / m_eff) = (1 + e) M m V / (m + M (1 + 5/2 q^2)).
-double ImpulsePerCueSpeed(double offset, const ModelParameters& p) {
-  const double m = p.ball.mass, big_m = p.cue.mass, q = offset / p.ball.radius;
-  return (1.0 + p.cue.tip_restitution) * big_m * m / (m + big_m * (1.0 + 2.5 * q * q));
+// The impact's inverse masses in the directions of the impulse, the cue axis c and the tip end's
+// sideways direction n, for the contact point P = b - sqrt(r^2 - b^2) c. The ball's is
+// (7/2 - 5/2 p p^T) / m at P (p = P / r: v_P = J / m + (P x J / I) x P); the cue adds 1 / M along
+// c and the end mass 1 / m_e along n.
+struct TipContact {
+  double axial = 0.0;     // 1 / M + (1 + 5/2 q^2) / m
+  double coupling = 0.0;  // 5/2 q_n sqrt(1 - q^2) / m
+  double side = 0.0;      // 1 / m_e + (1 + 5/2 (1 - q_n^2)) / m
+  // -J_n / J_c: with the tip end moving with the ball's contact point along n (TP A.31).
+  double SquirtRatio() const { return coupling / side; }
+};
+
+// `side` = b . n / r, `offset` = |b| / r.
+TipContact ContactAt(double side, double offset, const ModelParameters& p) {
+  const double m = p.ball.mass;
+  TipContact k;
+  k.axial = 1.0 / p.cue.mass + (1.0 + 2.5 * offset * offset) / m;
+  k.coupling = 2.5 * side * std::sqrt(1.0 - offset * offset) / m;
+  k.side = 1.0 / p.cue.end_mass + (1.0 + 2.5 * (1.0 - side * side)) / m;
+  return k;
 }
+
+// The largest |J_n / J_c| of any contact: 5/2 |q_n| sqrt(1 - q^2) <= 5/4 and the side inverse
+// mass is above (1 + m / m_e) / m.
+double MaxSquirtRatio(const ModelParameters& p) {
+  return 1.25 / (1.0 + p.ball.mass / p.cue.end_mass);
+}
+
+double MomentOfInertia(const ModelParameters& p) {
+  return 0.4 * p.ball.mass * p.ball.radius * p.ball.radius;
+}
+
+// The root of f in [lo, hi], f(lo) >= 0 >= f(hi), to within `tolerance` or the last bit of the
+// double.
+double Bisect(const std::function<double(double)>& f, double lo, double hi,
+              double tolerance = 0.0) {
+  for (;;) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid == lo || mid == hi || hi - lo <= tolerance) return mid;
+    (f(mid) >= 0.0 ? lo : hi) = mid;
+  }
+}
+
+// Far below the last bit of any heading near pi: a squirt angle this close to its root (near
+// zero, where doubles are dense) changes no launch.
+constexpr double kAngleResolution = 1e-18;
 
 std::string Format(double value) {
   std::ostringstream s;
@@ -38,7 +79,105 @@ std::string Format(double value) {
   return s.str();
 }
 
+StrokeSolution Refusal(std::string reason) {
+  StrokeSolution s;
+  s.reason = std::move(reason);
+  return s;
+}
+
+// The stroke that launches v0 and w0, its tip offset and cue speed not yet held to the robot's
+// limits.
+StrokeSolution SolveStroke(const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
+                           const ModelParameters& p) {
+  if (!v0.allFinite() || !w0.allFinite()) {
+    return Refusal("launch velocity or spin has a non-finite number");
+  }
+  const double speed = v0.norm();
+  if (speed == 0.0) return Refusal("a cue stroke cannot leave the ball without velocity");
+  const double r = p.ball.radius, m = p.ball.mass;
+
+  // Step 1, the impulse: m v0 and the vertical part the table took. w0 = P x J / I is
+  // perpendicular to J, which fixes that part (and the elevation); a level cue without spin about
+  // the travel.
+  const Eigen::Vector3d e(v0.x() / speed, v0.y() / speed, 0.0);
+  double along = w0.dot(e);
+  if (std::abs(along) <= 1e-12 * w0.norm()) along = 0.0;
+  if (along != 0.0 && !(w0.z() != 0.0 && along / w0.z() > 0.0)) {
+    return Refusal("spin about the direction of travel that a cue from above cannot give");
+  }
+  const double forward = m * speed, down = along == 0.0 ? 0.0 : m * speed * along / w0.z();
+  const Eigen::Vector3d impulse = forward * e - down * Eigen::Vector3d::UnitZ();
+
+  // Step 2, the contact point: P x J = I w0, |P| = r, behind the ball's centre.
+  const Eigen::Vector3d across = MomentOfInertia(p) / impulse.squaredNorm() * impulse.cross(w0);
+  if (across.norm() >= r) return Refusal("needs a tip offset beyond the edge of the ball");
+  const Eigen::Vector3d contact =
+      across - std::sqrt(r * r - across.squaredNorm()) * impulse.normalized();
+
+  // Step 3, the squirt angle alpha from the cue's heading to the launch heading: J = J_c c + J_n n
+  // with J_n = -SquirtRatio J_c, where turning the cue by alpha off the launch turns n and c and
+  // with them P's offsets. Per unit J_c the residual SquirtRatio - (-J_n / J_c) falls from >= 0
+  // to <= 0 across the angles where -J_n / J_c = +-MaxSquirtRatio.
+  const double launch_heading = std::atan2(v0.y(), v0.x());
+  const auto frame_at = [&](double alpha) {
+    return FrameOf(launch_heading - alpha, std::atan2(down, forward * std::cos(alpha)));
+  };
+  const auto residual = [&](double alpha) {
+    const CueFrame f = frame_at(alpha);
+    const double side = contact.dot(f.right), offset = std::hypot(side, contact.dot(f.up));
+    return ContactAt(side / r, offset / r, p).SquirtRatio() +
+           impulse.dot(f.right) / impulse.dot(f.axis);
+  };
+  const double ratio_max = MaxSquirtRatio(p), slope = down / forward;
+  const double bound = std::asin(
+      std::min(1.0, ratio_max * std::sqrt((1.0 + slope * slope) / (1.0 + ratio_max * ratio_max))));
+  if (residual(-bound) < 0.0 || residual(bound) > 0.0) {
+    return Refusal("no cue elevation below the vertical gives this spin with its squirt");
+  }
+  const double alpha = Bisect(residual, -bound, bound, kAngleResolution);
+
+  // Step 4, the stroke: heading, elevation, the offsets of P, and the cue speed of TP A.30's
+  // restitution along the axis, (1 + e) V = (1 / M + K_cc) J_c + K_cn J_n.
+  const CueFrame f = frame_at(alpha);
+  StrokeSolution s;
+  s.stroke.heading = std::remainder(launch_heading - alpha, 2.0 * M_PI);
+  s.stroke.elevation = std::atan2(down, forward * std::cos(alpha));
+  s.stroke.tip_side = contact.dot(f.right);
+  s.stroke.tip_height = contact.dot(f.up);
+  const double offset = std::hypot(s.stroke.tip_side, s.stroke.tip_height) / r;
+  const TipContact k = ContactAt(s.stroke.tip_side / r, offset, p);
+  s.stroke.speed = (k.axial * impulse.dot(f.axis) + k.coupling * impulse.dot(f.right)) /
+                   (1.0 + p.cue.tip_restitution);
+  s.ok = true;
+  return s;
+}
+
+// Golden-section search for the minimum of a unimodal f on [lo, hi].
+double Minimise(const std::function<double(double)>& f, double lo, double hi) {
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+  double fa = f(a), fb = f(b);
+  while (hi - lo > 1e-12 * hi) {
+    if (fa < fb) {
+      hi = b, b = a, fb = fa;
+      a = hi - golden * (hi - lo), fa = f(a);
+    } else {
+      lo = a, a = b, fa = fb;
+      b = lo + golden * (hi - lo), fb = f(b);
+    }
+  }
+  return 0.5 * (lo + hi);
+}
+
 }  // namespace
+
+double SquirtAngle(double tip_side, const ModelParameters& p) {
+  const double q = tip_side / p.ball.radius;
+  if (!(std::abs(q) < 1.0)) {
+    throw std::invalid_argument("tip offset must be smaller than the ball radius");
+  }
+  return std::atan(ContactAt(q, std::abs(q), p).SquirtRatio());
+}
 
 BallState StrikeBall(const CueStroke& stroke, const Eigen::Vector2d& position,
                      const ModelParameters& p) {
@@ -51,78 +190,77 @@ BallState StrikeBall(const CueStroke& stroke, const Eigen::Vector2d& position,
   if (stroke.elevation < 0.0 || stroke.elevation >= M_PI / 2) {
     throw std::invalid_argument("cue elevation must lie in [0, pi/2)");
   }
-  const double offset = std::hypot(stroke.tip_side, stroke.tip_height);
-  if (offset >= r) throw std::invalid_argument("tip offset must be smaller than the ball radius");
+  const double offset = std::hypot(stroke.tip_side, stroke.tip_height) / r;
+  if (offset >= 1.0) throw std::invalid_argument("tip offset must be smaller than the ball radius");
 
   const CueFrame f = FrameOf(stroke.heading, stroke.elevation);
   const Eigen::Vector3d b = stroke.tip_side * f.right + stroke.tip_height * f.up;
-  const double impulse = ImpulsePerCueSpeed(offset, p) * stroke.speed;
-  const Eigen::Vector3d v = impulse / p.ball.mass * f.axis;
-  const Eigen::Vector3d w = 5.0 * impulse / (2.0 * p.ball.mass * r * r) * b.cross(f.axis);
+  // [axial coupling; coupling side] [J_c; J_n] = [(1 + e) V; 0].
+  const TipContact k = ContactAt(stroke.tip_side / r, offset, p);
+  const double squirt = k.SquirtRatio();
+  const double axial =
+      (1.0 + p.cue.tip_restitution) * stroke.speed / (k.axial - k.coupling * squirt);
+  const double side = -squirt * axial;
+  const Eigen::Vector3d impulse = axial * f.axis + side * f.right;
+  // The moment P x J of the impulse, P = b - sqrt(r^2 - b^2) c, with c x J = J_n c x n (none,
+  // exactly, without a side offset).
+  const Eigen::Vector3d moment =
+      b.cross(impulse) - r * std::sqrt(1.0 - offset * offset) * side * f.axis.cross(f.right);
+  const Eigen::Vector3d v = impulse / p.ball.mass;
+  const Eigen::Vector3d w = moment / MomentOfInertia(p);
   return MakeBallState(position.x(), position.y(), v.x(), v.y(), w.x(), w.y(), w.z());
 }
 
 StrokeSolution StrokeFor(const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
                          const ModelParameters& p) {
-  StrokeSolution s;
-  if (!v0.allFinite() || !w0.allFinite()) {
-    s.reason = "launch velocity or spin has a non-finite number";
-    return s;
+  StrokeSolution s = SolveStroke(v0, w0, p);
+  if (!s.ok) return s;
+  const double offset = std::hypot(s.stroke.tip_side, s.stroke.tip_height) / p.ball.radius;
+  if (offset > p.cue.max_tip_offset * (1.0 + 1e-12)) {
+    return Refusal("needs a tip offset of " + Format(offset) + " r, beyond the " +
+                   Format(p.cue.max_tip_offset) + " r that does not miscue");
   }
-  const double speed = v0.norm();
-  if (speed == 0.0) {
-    s.reason = "a cue stroke cannot leave the ball without velocity";
-    return s;
+  if (s.stroke.speed > p.cue.max_speed) {
+    return Refusal("needs a cue speed of " + Format(s.stroke.speed) + " m/s, beyond the robot's " +
+                   Format(p.cue.max_speed) + " m/s");
   }
-  const Eigen::Vector3d e(v0.x() / speed, v0.y() / speed, 0.0);
-  // w0 must be perpendicular to the cue axis (b x c is): cos(el) (w0 . e) = sin(el) wz.
-  double along = w0.dot(e);
-  if (std::abs(along) <= 1e-12 * w0.norm()) along = 0.0;
-  if (along != 0.0 && !(w0.z() != 0.0 && along / w0.z() > 0.0)) {
-    s.reason = "spin about the direction of travel that a cue from above cannot give";
-    return s;
-  }
-  const double elevation = along == 0.0 ? 0.0 : std::atan(along / w0.z());
-  const double heading = std::atan2(v0.y(), v0.x());
-  const CueFrame f = FrameOf(heading, elevation);
-
-  const double r = p.ball.radius, m = p.ball.mass;
-  const double impulse = m * speed / std::cos(elevation);
-  const Eigen::Vector3d b = f.axis.cross(w0) * (2.0 * m * r * r / (5.0 * impulse));
-  const double offset = b.norm();
-  if (offset > p.cue.max_tip_offset * r * (1.0 + 1e-12)) {
-    s.reason = "needs a tip offset of " + Format(offset / r) + " r, beyond the " +
-               Format(p.cue.max_tip_offset) + " r that does not miscue";
-    return s;
-  }
-  const double cue_speed = impulse / ImpulsePerCueSpeed(offset, p);
-  if (cue_speed > p.cue.max_speed) {
-    s.reason = "needs a cue speed of " + Format(cue_speed) + " m/s, beyond the robot's " +
-               Format(p.cue.max_speed) + " m/s";
-    return s;
-  }
-  s.ok = true;
-  s.stroke = {cue_speed, heading, b.dot(f.right), b.dot(f.up), elevation};
   return s;
 }
 
 LaunchSpeedRange LaunchSpeedsFor(double spin_ratio, double side_spin, const ModelParameters& p) {
-  // A level stroke at speed s gives |w| = 5 s |b| / (2 r^2), so the offset fraction is
-  // q = |b| / r = 2/5 sqrt(k^2 + (r wz / s)^2).
-  const double r = p.ball.radius, m = p.ball.mass, big_m = p.cue.mass;
-  const double k2 = spin_ratio * spin_ratio, rw2 = r * r * side_spin * side_spin;
-  const double q_max = 2.5 * p.cue.max_tip_offset;  // in units of 2/5
+  const double r = p.ball.radius, q_max = p.cue.max_tip_offset;
   LaunchSpeedRange range{0.0, -1.0};
-  if (k2 > q_max * q_max) return range;
-  range.min = std::sqrt(rw2 / (q_max * q_max - k2));
-  // The cue speed (TP A.30, 5/2 q^2 = 0.4 (k^2 + (r wz / s)^2)) is
-  // V = [s (m + M (1 + 0.4 k^2)) + 0.4 M r^2 wz^2 / s] / ((1 + e) M); V = max_speed is a
-  // quadratic in s whose larger root is the fastest launch.
-  const double a = m + big_m * (1.0 + 0.4 * k2), b = 0.4 * big_m * rw2;
-  const double c = (1.0 + p.cue.tip_restitution) * big_m * p.cue.max_speed;
-  const double discriminant = c * c - 4.0 * a * b;
-  if (discriminant < 0.0) return range;
-  range.max = (c + std::sqrt(discriminant)) / (2.0 * a);
+  // A level launch at speed s along x: the tip meets the ball 2/5 k r above its centre and
+  // (2/5) r wz / s to the right of the launch line (w = P x J / I, J = m s x).
+  const double height = 0.4 * std::abs(spin_ratio);
+  if (height > q_max || (height == q_max && side_spin != 0.0)) return range;
+
+  // The slowest launch: the tip at max_tip_offset, turned by its squirt angle off the launch line.
+  if (side_spin != 0.0) {
+    const double side = std::sqrt(q_max * q_max - height * height);
+    const double axial = std::sqrt(1.0 - q_max * q_max);
+    const double alpha = std::atan(ContactAt(side, q_max, p).SquirtRatio());
+    const double off_line = side * std::cos(alpha) - axial * std::sin(alpha);
+    range.min = 0.4 * r * std::abs(side_spin) / off_line;
+  }
+
+  // The cue speed V(s) falls, then rises (the offset, then the speed, costs it). The ball's
+  // energy is at most the cue's, so V(s) >= s sqrt(m / M): V = max_speed below
+  // max_speed sqrt(M / m). When the slowest launch already needs more than max_speed, the range
+  // starts where V, past its lowest, comes down to max_speed.
+  const auto cue_speed = [&](double s) {
+    const StrokeSolution stroke = SolveStroke({s, 0.0}, {0.0, spin_ratio * s / r, side_spin}, p);
+    return stroke.ok ? stroke.stroke.speed : INFINITY;
+  };
+  const auto above_max = [&](double s) { return cue_speed(s) - p.cue.max_speed; };
+  const double fastest = p.cue.max_speed * std::sqrt(p.cue.mass / p.ball.mass);
+  double lo = range.min;
+  if (lo > 0.0 && above_max(lo) > 0.0) {
+    lo = Minimise(cue_speed, lo, fastest);
+    if (above_max(lo) > 0.0) return LaunchSpeedRange{0.0, -1.0};
+    range.min = Bisect(above_max, range.min, lo);
+  }
+  range.max = Bisect([&](double s) { return -above_max(s); }, lo, fastest);
   return range;
 }
 

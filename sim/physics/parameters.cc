@@ -34,6 +34,7 @@ std::array<double, kParameterCount> ParameterValues(const ModelParameters& p) {
           p.cue.tip_restitution,
           p.cue.max_tip_offset,
           p.cue.max_speed,
+          p.cue.end_mass,
           p.collision.ball_restitution,
           p.collision.ball_friction_a,
           p.collision.ball_friction_b,
@@ -69,6 +70,7 @@ void ValidateParameters(const ModelParameters& p) {
   Require(c.b_t > 0.0 && c.b_m > 0.0, n, "b_T and b_M must be positive");
   Require(c.m_t >= 1.0 && c.m_m >= 1.0, n, "m_T and m_M must be >= 1");
   Require(p.cue.mass > 0.0 && p.cue.max_speed > 0.0, n, "cue mass and top speed must be positive");
+  Require(p.cue.end_mass > 0.0, n, "cue end_mass must be positive");
   Require(p.cue.tip_restitution >= 0.0 && p.cue.tip_restitution <= 1.0, n,
           "cue tip restitution must lie in [0, 1]");
   Require(p.cue.max_tip_offset > 0.0 && p.cue.max_tip_offset < 1.0, n,

@@ -34,6 +34,10 @@ struct CueParameters {
   double tip_restitution = 0.0;  // e, 0..1
   double max_tip_offset = 0.0;   // largest tip offset from the ball centre, as a fraction of r
   double max_speed = 0.0;        // fastest cue stroke the robot gives [m/s]
+  // m_e [kg]: the mass of the shaft's tip end that moves sideways with the ball during the impact
+  // (Alciatore, TP A.31; Shepard 2001), which sets the squirt: about 5-7 g for a low-deflection
+  // shaft, 10-12 g for a standard one.
+  double end_mass = 0.0;
 };
 
 // Impacts between two balls and of a ball with a cushion (sim/table/).
@@ -77,7 +81,7 @@ void ValidateParameters(const ModelParameters& p);
 
 // Every number of a set, in a fixed order (ball, contact, cue, collision, table): what
 // makes two sets the same physics whatever their names.
-inline constexpr std::size_t kParameterCount = 24;
+inline constexpr std::size_t kParameterCount = 25;
 std::array<double, kParameterCount> ParameterValues(const ModelParameters& p);
 
 }  // namespace billiard::physics

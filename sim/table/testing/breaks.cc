@@ -36,11 +36,12 @@ std::vector<SceneBall> SeededBreak(const TableGeometry& table, const physics::Mo
   stroke.heading = std::atan2(line.y(), line.x()) + symmetric(options.max_aim_error);
   stroke.tip_side = symmetric(options.max_tip_offset) * p.ball.radius;
   stroke.tip_height = symmetric(options.max_tip_offset) * p.ball.radius;
-  // The cue speed that launches the ball at options.speed (TP A.30).
-  const double q2 = (stroke.tip_side * stroke.tip_side + stroke.tip_height * stroke.tip_height) /
-                    (p.ball.radius * p.ball.radius);
-  stroke.speed =
-      options.speed * (1.0 + p.ball.mass / p.cue.mass + 2.5 * q2) / (1.0 + p.cue.tip_restitution);
+  // The launch speed is proportional to the cue speed (TP A.30, with the squirt of TP A.31):
+  // strike once at 1 m/s, then at the cue speed that launches the ball at options.speed.
+  stroke.speed = 1.0;
+  const double per_cue_speed =
+      physics::StrikeBall(stroke, cue->state.head<2>(), p).segment<2>(physics::kVx).norm();
+  stroke.speed = options.speed / per_cue_speed;
   cue->state = physics::StrikeBall(stroke, cue->state.head<2>(), p);
   return balls;
 }
