@@ -59,6 +59,11 @@ Eigen::Vector2d PositionAt(const Parabola& q, double tau) {
 // their accelerations (a ball pushed by its own spin into one it touches).
 constexpr double kContactSpeed = 1e-9;  // [m/s]
 
+// Impacts slower than this are pushes, not collisions: their energy (below 1e-9 J) is nothing,
+// and met as collisions they would part the bodies for a few nanoseconds each, millions of times
+// while one drives the other.
+constexpr double kSlowImpact = 1e-4;  // [m/s]
+
 // Touching bodies that will close within this time are an event now: a root so near is within
 // the rounding of the contact polynomial and could not be told from the contact itself.
 constexpr double kContactHorizon = 1e-6;  // [s]
@@ -73,11 +78,15 @@ constexpr double kContactHorizon = 1e-6;  // [s]
 // 3 cm/s stops some 2 mm short).
 constexpr double kPushTime = 5e-4;  // [s]
 
+// A 5-DOF motion runs until the ball rests or this long, then starts again.
+constexpr double kFiveDofHorizon = 60.0;  // [s]
+
 // Two impacts of the same pair closer in time than this: the second is elastic (TC model).
 constexpr double kCollapseTime = 1e-5;  // [s]
 
 // The first tau in [0, window] where f reaches 0 while decreasing (`sign` = -1; +1: while
-// increasing) and `accept` holds. At f(0) within `contact` of 0 (touching) the way it moves is
+// increasing) faster than kContactSpeed (a root where the bodies graze, or touch and part, is
+// none) and `accept` holds. At f(0) within `contact` of 0 (touching) the way it moves is
 // the slope at kContactHorizon (or the window's end, where a motion changes): touching bodies
 // that close within it faster than kContactSpeed (f' = `speed_scale` times the closing speed),
 // by their speed or their accelerations, are an event at once, so none passes through another.
@@ -92,9 +101,144 @@ double FirstCrossing(const Quartic& f, double window, double sign, double contac
   std::array<double, 4> roots;
   const int n = RootsInInterval(f, 0.0, window, &roots);
   for (int k = 0; k < n; ++k) {
-    if (sign * Derivative(f, roots[k]) > 0.0 && accept(roots[k])) return roots[k];
+    if (sign * Derivative(f, roots[k]) > speed_scale * kContactSpeed && accept(roots[k])) {
+      return roots[k];
+    }
   }
   return kInfinity;
+}
+
+// Conservative advancement, for motions that are no polynomial (the 5-DOF model): a clearance
+// can close no faster than `speed` + `accel` t (the bodies' speeds now and the bound on their
+// accelerations), so no contact comes sooner than the root of speed t + accel t^2 / 2 = gap.
+double SafeStep(double gap, double speed, double accel) {
+  return 2.0 * gap / (speed + std::sqrt(speed * speed + 2.0 * accel * gap));
+}
+
+// The most steps a search by advancement takes before it gives up (std::runtime_error): near a
+// contact each step closes a fixed part of the clearance, and a landing try ends most searches
+// within a few dozen.
+constexpr int kMaxAdvances = 100000;
+
+// Touching bodies that are not closing are passed by at least this long a step.
+constexpr double kSmallestAdvance = 1e-9;  // [s]
+
+// The clearance of a ball to a contact at one instant: the gap, how fast it closes, what it is.
+struct Clearance {
+  double gap = std::numeric_limits<double>::infinity();
+  double closing = 0.0;
+  EventType type = EventType::kBallBall;
+  int index = -1;
+};
+
+// How far a 5-DOF ball pressed against a body by its accelerations alone (side spin curving it
+// into a ball it rolls past) may overlap it before the push is met: a push closes at no speed,
+// so its contact could otherwise not be told from a touch that parts, and met at every
+// nanosecond it would be met millions of times.
+constexpr double kPushOverlap = 1e-7;  // [m]
+
+// The first time in [t0, t1] at which the clearance falls to kContactTolerance while closing
+// faster than kSlowImpact, or to -kPushOverlap while closing at all (kInfinity if neither), by
+// safe steps. Where the nearest contact's closing speed promises it within reach, a try at
+// twice the time it would take: when that lands past it, bisected back onto it (on that
+// contact's own clearance, `element(t, c)`), and taken once safe steps over all contacts find
+// none sooner.
+template <typename ClearanceAt, typename ElementAt>
+std::pair<double, Clearance> FirstContactByAdvancement(const ClearanceAt& clearance,
+                                                       const ElementAt& element,
+                                                       const std::function<double(double)>& speed,
+                                                       double accel, double t0, double t1,
+                                                       bool land = true) {
+  const auto contact = [](const Clearance& c) {
+    return (c.gap <= kContactTolerance && c.closing > kSlowImpact) ||
+           (c.gap <= -kPushOverlap && c.closing > kContactSpeed);
+  };
+  double t = t0;
+  for (int step = 0; step < kMaxAdvances; ++step) {
+    const Clearance c = clearance(t);
+    if (contact(c)) return {t, c};
+    if (c.gap <= kContactTolerance) {
+      // Touching, not (yet) closing: on by the time the overlap allowed takes to fill (at least
+      // half of it, so that a push sliding along at full overlap is passed too).
+      const double room = std::max(c.gap + kPushOverlap, 0.5 * kPushOverlap);
+      t += std::max(SafeStep(room, speed(t), accel), kSmallestAdvance);
+    } else {
+      const double reach = t + 2.0 * c.gap / c.closing;
+      if (land && c.closing > 0.0 && reach <= t1 && element(reach, c).gap <= kContactTolerance) {
+        double lo = t, hi = reach;
+        while (hi - lo > 1e-13 * std::max(1.0, hi)) {
+          const double mid = 0.5 * (lo + hi);
+          (element(mid, c).gap > kContactTolerance ? lo : hi) = mid;
+        }
+        const Clearance at = element(hi, c);
+        if (contact(at)) {
+          const auto sooner = FirstContactByAdvancement(clearance, element, speed, accel, t, lo,
+                                                        /*land=*/false);
+          return sooner.first <= lo ? sooner : std::pair<double, Clearance>{hi, at};
+        }
+      }
+      t += SafeStep(c.gap, speed(t), accel);
+    }
+    if (t > t1) return {kInfinity, {}};
+  }
+  throw std::runtime_error("a contact search by advancement did not converge");
+}
+
+// The clearance of a ball of radius r in state s to one cushion line, jaw or capture line (an
+// infinite gap where that one cannot be met: beside a capture line, far behind a cushion).
+Clearance ElementClearance(const TableGeometry& table, double r, const BallState& s, EventType type,
+                           std::size_t k) {
+  const Eigen::Vector2d p = s.segment<2>(kX), v = s.segment<2>(kVx);
+  const int index = static_cast<int>(k);
+  switch (type) {
+    case EventType::kBallCushion: {
+      const CushionLine& line = table.lines[k];
+      const double height = (p - line.a).dot(line.normal);
+      const Eigen::Vector2d along = line.b - line.a;
+      const double s_along = (p - line.a).dot(along) / along.squaredNorm();
+      if (s_along < 0.0 || s_along > 1.0) {  // past an end: no nearer than the end
+        const Eigen::Vector2d end = s_along < 0.0 ? line.a : line.b;
+        return {(p - end).norm() - r, 0.0, type, index};
+      }
+      // Behind the nose line (the ball went through it) the gap is negative, so a search that
+      // lands past the contact sees it; farther behind than a diameter is over a pocket.
+      if (height < -2.0 * r) return {kInfinity, 0.0, type, index};
+      return {height - r, -v.dot(line.normal), type, index};
+    }
+    case EventType::kBallJaw: {
+      const Eigen::Vector2d out = p - table.points[k].centre;
+      const double distance = out.norm();
+      return {distance - r - table.points[k].radius, -v.dot(out) / distance, type, index};
+    }
+    case EventType::kBallPocket: {
+      const Pocket& pocket = table.pockets[k];
+      const Eigen::Vector2d along = pocket.capture_b - pocket.capture_a;
+      const double s_along = (p - pocket.capture_a).dot(along) / along.squaredNorm();
+      if (s_along < 0.0 || s_along > 1.0) return {kInfinity, 0.0, type, index};  // the jaws bound
+      return {-(p - pocket.capture_a).dot(pocket.inward), v.dot(pocket.inward), type, index};
+    }
+    default:
+      return {};
+  }
+}
+
+// The nearest cushion, jaw or capture line of a ball of radius r in state s (or the first one
+// it touches while closing).
+Clearance BoundaryClearance(const TableGeometry& table, double r, const BallState& s) {
+  Clearance nearest, touching;
+  const auto consider = [&](EventType type, std::size_t count) {
+    for (std::size_t k = 0; k < count; ++k) {
+      const Clearance c = ElementClearance(table, r, s, type, k);
+      if (c.gap < nearest.gap) nearest = c;
+      if (c.gap <= kContactTolerance && c.closing > kSlowImpact && touching.index < 0) {
+        touching = c;
+      }
+    }
+  };
+  consider(EventType::kBallCushion, table.lines.size());
+  consider(EventType::kBallJaw, table.points.size());
+  consider(EventType::kBallPocket, table.pockets.size());
+  return touching.index >= 0 ? touching : nearest;
 }
 
 // The frame of a cushion whose normal `n` points into the playing area: x along the cushion,
@@ -113,7 +257,7 @@ struct CushionFrame {
 // into motion. The body does not yield (a ball at rest holds by its own cloth friction, as much
 // as the pusher's, a cushion by itself): the pusher spins against it in place until that spin is
 // spent. Spent at once here: the part of the spin that drives the ball into the contact is
-// removed, and any closing speed below kContactSpeed, so the ball's motion no longer closes and
+// removed, and any closing speed (below kSlowImpact), so the ball's motion no longer closes and
 // its energy only falls.
 BallState Held(const BallState& s, const Eigen::Vector2d& n, double radius) {
   BallState out = s;
@@ -180,7 +324,8 @@ TableSimulation::TableSimulation(const TableGeometry& table, const physics::Mode
   physics::ValidateParameters(params);
   ValidateScene(table, params.ball.radius, balls);
   for (const SceneBall& b : balls) {
-    balls_.push_back({b.id, {MotionSegment(cloth_, 0.0, b.state)}, std::nullopt});
+    balls_.push_back({b.id, {}, std::nullopt});
+    StartSegment(balls_.size() - 1, b.state);
   }
   boundary_.resize(balls_.size());
   pair_.assign(balls_.size() * balls_.size(), kInfinity);
@@ -212,6 +357,7 @@ TableSimulation::Candidate TableSimulation::NextBallBall(std::size_t i, std::siz
   const MotionSegment& a = Current(i);
   const MotionSegment& b = Current(j);
   if (a.phase() == MotionPhase::kStationary && b.phase() == MotionPhase::kStationary) return {};
+  if (!a.closed_form() || !b.closed_form()) return BallBallByAdvancement(i, j);
   const double window = std::min(a.end_time(), b.end_time()) - time_;
   const Parabola pa = ParabolaAt(a, time_);
   const Parabola pb = ParabolaAt(b, time_);
@@ -237,6 +383,7 @@ TableSimulation::Candidate TableSimulation::NextBoundary(std::size_t i) const {
     return best;
   }
   const MotionSegment& m = Current(i);
+  if (!m.closed_form()) return BoundaryByAdvancement(i);
   const double window = m.end_time() - time_;
   const Parabola q = ParabolaAt(m, time_);
   const double r = params_.ball.radius;
@@ -277,6 +424,43 @@ TableSimulation::Candidate TableSimulation::NextBoundary(std::size_t i) const {
   return best;
 }
 
+TableSimulation::Candidate TableSimulation::BallBallByAdvancement(std::size_t i,
+                                                                  std::size_t j) const {
+  const MotionSegment& a = Current(i);
+  const MotionSegment& b = Current(j);
+  const double end = std::min(a.end_time(), b.end_time());
+  const double d = 2.0 * params_.ball.radius;
+  const double accel = a.max_acceleration() + b.max_acceleration();
+  const auto speed = [&](double t) {
+    return a.At(t).segment<2>(kVx).norm() + b.At(t).segment<2>(kVx).norm();
+  };
+  const auto clearance = [&](double t) {
+    const BallState sa = a.At(t), sb = b.At(t);
+    const Eigen::Vector2d between = sb.segment<2>(kX) - sa.segment<2>(kX);
+    const double distance = between.norm();
+    return Clearance{distance - d,
+                     (sa.segment<2>(kVx) - sb.segment<2>(kVx)).dot(between) / distance,
+                     EventType::kBallBall, -1};
+  };
+  const auto element = [&](double t, const Clearance&) { return clearance(t); };
+  return {FirstContactByAdvancement(clearance, element, speed, accel, time_, end).first,
+          EventType::kBallBall};
+}
+
+TableSimulation::Candidate TableSimulation::BoundaryByAdvancement(std::size_t i) const {
+  const MotionSegment& m = Current(i);
+  const auto speed = [&](double t) { return m.At(t).segment<2>(kVx).norm(); };
+  const auto clearance = [&](double t) {
+    return BoundaryClearance(table_, params_.ball.radius, m.At(t));
+  };
+  const auto element = [&](double t, const Clearance& c) {
+    return ElementClearance(table_, params_.ball.radius, m.At(t), c.type, c.index);
+  };
+  const auto [time, at] = FirstContactByAdvancement(clearance, element, speed, m.max_acceleration(),
+                                                    time_, m.end_time());
+  return {time, at.type, at.index};
+}
+
 void TableSimulation::Recompute(std::size_t i) {
   boundary_[i] = NextBoundary(i);
   for (std::size_t j = 0; j < balls_.size(); ++j) {
@@ -287,7 +471,15 @@ void TableSimulation::Recompute(std::size_t i) {
 }
 
 void TableSimulation::StartSegment(std::size_t i, const BallState& state) {
-  balls_[i].segments.emplace_back(cloth_, time_, state);
+  const bool moving =
+      state.segment<2>(kVx).norm() > 0.0 || ClothSlip(state, params_.ball.radius).norm() > 0.0;
+  const std::optional<physics::SimulationOptions> five_dof =
+      moving && options_.five_dof ? options_.five_dof(state) : std::nullopt;
+  if (five_dof) {
+    balls_[i].segments.emplace_back(params_, *five_dof, time_, state, kFiveDofHorizon);
+  } else {
+    balls_[i].segments.emplace_back(cloth_, time_, state);
+  }
 }
 
 BallState TableSimulation::CushionImpact(const BallState& s, const Eigen::Vector2d& normal,
@@ -321,13 +513,13 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
       BallState b = Current(j).At(time_);
       const Eigen::Vector2d n = (b.segment<2>(kX) - s.segment<2>(kX)).normalized();
       BallState a = s;
-      if ((a.segment<2>(kVx) - b.segment<2>(kVx)).dot(n) <= kContactSpeed) {
+      if ((a.segment<2>(kVx) - b.segment<2>(kVx)).dot(n) <= kSlowImpact) {
         // Closing by the accelerations: against a ball at rest, a push; else met a moment on.
         const bool at_rest = Current(i).phase() == MotionPhase::kStationary ||
                              Current(j).phase() == MotionPhase::kStationary;
         a.tail<5>() = Current(i).At(time_ + kPushTime).tail<5>();
         b.tail<5>() = Current(j).At(time_ + kPushTime).tail<5>();
-        if (at_rest || !((a.segment<2>(kVx) - b.segment<2>(kVx)).dot(n) > kContactSpeed)) {
+        if (at_rest || !((a.segment<2>(kVx) - b.segment<2>(kVx)).dot(n) > kSlowImpact)) {
           event.type = EventType::kBallPush;
           StartSegment(i, Held(s, n, params_.ball.radius));
           StartSegment(j, Held(Current(j).At(time_), -n, params_.ball.radius));
@@ -353,7 +545,7 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
       const Eigen::Vector2d n = e.type == EventType::kBallCushion
                                     ? table_.lines[index].normal
                                     : (s.segment<2>(kX) - table_.points[index].centre).normalized();
-      if (-s.segment<2>(kVx).dot(n) <= kContactSpeed) {
+      if (-s.segment<2>(kVx).dot(n) <= kSlowImpact) {
         event.type = EventType::kBallPush;
         StartSegment(i, Held(s, -n, params_.ball.radius));
       } else {

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -25,6 +26,7 @@
 
 #include "sim/physics/ball_state.h"
 #include "sim/physics/parameters.h"
+#include "sim/physics/simulator.h"
 #include "sim/table/ball_motion.h"
 #include "sim/table/cushion_impact.h"
 #include "sim/table/scene.h"
@@ -53,6 +55,10 @@ struct TableEvent {
 
 struct TableSimulationOptions {
   CushionModel cushion_model = CushionModel::kMathavan2010;
+  // How a ball moves between events, asked whenever a moving ball starts a new motion, from its
+  // state: the 5-DOF model with the options returned, or the closed form (std::nullopt; always,
+  // when this is empty).
+  std::function<std::optional<physics::SimulationOptions>(const physics::BallState&)> five_dof;
   // A scene that needs more events than this is refused (std::runtime_error): a break takes a
   // few hundred.
   std::int64_t max_events = 1000000;
@@ -100,6 +106,9 @@ class TableSimulation {
   void Recompute(std::size_t i);
   Candidate NextBallBall(std::size_t i, std::size_t j) const;
   Candidate NextBoundary(std::size_t i) const;
+  // The same for a ball or pair that moves by the 5-DOF model: by conservative advancement.
+  Candidate BallBallByAdvancement(std::size_t i, std::size_t j) const;
+  Candidate BoundaryByAdvancement(std::size_t i) const;
   void Apply(const TableEvent& event, std::size_t i, std::size_t j, int index);
   void StartSegment(std::size_t i, const physics::BallState& state);
   physics::BallState CushionImpact(const physics::BallState& s, const Eigen::Vector2d& normal,

@@ -267,5 +267,77 @@ TEST(TableSimulation, AThousandSeededBreaksKeepBallsApartOnTheTableAndLoseEnergy
   EXPECT_LT(pocketed, 6000);
 }
 
+// Every ball moving by the approximate 5-DOF model between events, as `--model approx` runs
+// them.
+TableSimulationOptions FiveDof() {
+  TableSimulationOptions options;
+  options.five_dof = [](const BallState&) {
+    return std::optional<physics::SimulationOptions>(physics::SimulationOptions{});
+  };
+  return options;
+}
+
+TEST(TableSimulation, AFiveDofBallMovesAsTheOneBallSimulatorAndCurvesWhereTheClosedFormCannot) {
+  // A stun shot with side spin down the middle of the table, alone: between events the table
+  // runs the very simulation of sim/physics/simulator.h, and the spin bends its path, which the
+  // closed form's point contact leaves straight.
+  const auto p = Pool();
+  const TableGeometry table = Table("pool-9ft");
+  const BallState start = MakeBallState(0.5, table.width / 2, 1.2, 0, 0, 0, 40);
+  TableSimulation five(table, p, {{0, start}}, FiveDof());
+  five.Run(1.5);
+  const BallState alone = physics::Simulate(p, start, 1.5).final_state;
+  EXPECT_LT((five.State(0).head<2>() - alone.head<2>()).norm(), 1e-6);  // its dense output
+  TableSimulation closed(table, p, {{0, start}});
+  closed.Run(1.5);
+  EXPECT_EQ(closed.State(0)[kY], table.width / 2);
+  EXPECT_GT(std::abs(five.State(0)[kY] - table.width / 2), 1e-4);
+}
+
+TEST(TableSimulation, AFiveDofBallMeetsAnotherWhereTheyTouch) {
+  const auto p = Pool();
+  const TableGeometry table = Table("pool-9ft");
+  const double r = p.ball.radius, y = table.width / 2;
+  TableSimulation sim(table, p,
+                      {{0, MakeBallState(0.5, y, 2.0, 0.02, 0, 0, 25)},
+                       {1, MakeBallState(1.2, y + 0.02, 0, 0, 0, 0, 0)}},
+                      FiveDof());
+  sim.Run(1.0);
+  const auto hits = OfType(sim, EventType::kBallBall);
+  ASSERT_GE(hits.size(), 1u);
+  // At the event the centres are 2 r apart (to the contact tolerance), and never nearer before.
+  EXPECT_NEAR(SmallestGap(sim, hits[0].time, r), 0.0, 2e-9);
+  for (double t = 0.0; t < hits[0].time; t += 1e-4) EXPECT_GT(SmallestGap(sim, t, r), 0.0) << t;
+  EXPECT_GT(sim.StateAt(1, hits[0].time + 1e-3)[kVx], 1.0);
+}
+
+TEST(TableSimulation, SeededBreaksByTheFiveDofModelKeepBallsApartOnTheTableAndLoseEnergy) {
+  // A pushed 5-DOF ball (its spin curving it into a ball it rolls past) may overlap that ball by
+  // up to 1.5e-7 m before the push is met (table_simulation.cc, kPushOverlap).
+  const auto p = Pool();
+  const TableGeometry table = Table("pool-9ft");
+  const double r = p.ball.radius;
+  for (std::uint64_t seed = 0; seed < 60; ++seed) {
+    TableSimulation sim(table, p, testing::SeededBreak(table, p, seed), FiveDof());
+    sim.Run();
+    ASSERT_TRUE(sim.AtRest()) << "seed " << seed;
+    double energy = INFINITY;
+    for (double t = 0.0; t <= sim.time(); t += 5e-3) {
+      ASSERT_GT(SmallestGap(sim, t, r), -2e-7) << "seed " << seed << ", t = " << t;
+      double e = 0.0;
+      for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+        const BallState s = sim.StateAt(i, t);
+        e += physics::KineticEnergy(s, p.ball.mass, p.ball.radius);
+        if (!Dropped(sim, i, t)) {
+          ASSERT_TRUE(table.OnSurface(s.head<2>(), r * (1 - 1e-6)))
+              << "seed " << seed << ", ball " << sim.id(i) << ", t = " << t;
+        }
+      }
+      ASSERT_LE(e, energy * (1 + 1e-9)) << "seed " << seed << ", t = " << t;
+      energy = e;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace billiard::table

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/scene_benchmark.h"
+#include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/scene_file.h"
 #include "sim/params/table_specs.h"
@@ -19,6 +20,12 @@
 namespace billiard::cli {
 
 namespace {
+
+// --model auto on a scene without --accuracy: 5 mm per motion between events, just above the
+// approximate 5-DOF model's own p95 error on side-spin motion (4.1 mm against the integral
+// model, docs/benchmarks/model_choice.json), so that the approximate model, not the integral
+// one (17 times slower), moves a spinning ball; the closed form moves the rolling ones.
+constexpr double kSceneAccuracy = 5e-3;  // [m]
 
 table::TableGeometry LoadTableOption(const std::string& name_or_path) {
   try {
@@ -85,12 +92,27 @@ void WriteSceneTrajectoryCsv(const table::TableSimulation& sim, double dt,
 
 }  // namespace
 
-void SimulateScene(const SceneSimulationArgs& args) {
-  if (args.model != "auto" && args.model != "closed-form") {
-    throw UsageError("--model " + args.model +
-                     ": a scene moves its balls in closed form between events (auto, "
-                     "closed-form); the 5-DOF model between events is not built yet");
+decltype(table::TableSimulationOptions::five_dof) SceneMotionModel(
+    const std::string& model, double accuracy, const physics::ModelParameters& params) {
+  using Choice = std::optional<physics::SimulationOptions>;
+  if (model == "closed-form") return nullptr;
+  if (model == "approx") return [](const physics::BallState&) -> Choice { return {{}}; };
+  if (model != "auto") {
+    throw UsageError("--model: unknown model '" + model +
+                     "' for a scene (auto, closed-form, approx)");
   }
+  if (accuracy < 0.0 || !std::isfinite(accuracy)) {
+    throw UsageError("--accuracy must be a positive number of metres");
+  }
+  const double allowed = accuracy > 0.0 ? accuracy : kSceneAccuracy;
+  return [allowed, params](const physics::BallState& state) -> Choice {
+    const model_choice::ModelChoice choice = model_choice::ChooseModel(state, params, allowed);
+    if (choice.options.model == physics::Model::kClosedForm) return std::nullopt;
+    return choice.options;
+  };
+}
+
+void SimulateScene(const SceneSimulationArgs& args) {
   if (args.t_end && !(std::isfinite(*args.t_end) && *args.t_end >= 0.0)) {
     throw UsageError("--t-end must be a finite number >= 0");
   }
@@ -107,6 +129,7 @@ void SimulateScene(const SceneSimulationArgs& args) {
   const table::TableGeometry geometry = LoadTableOption(scene.table);
   table::TableSimulationOptions options;
   options.cushion_model = CushionModelOption(args.cushion_model);
+  options.five_dof = SceneMotionModel(args.model, args.accuracy, params);
 
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<table::TableSimulation> sim;
@@ -125,7 +148,8 @@ void SimulateScene(const SceneSimulationArgs& args) {
   nlohmann::json j;
   j["table"] = geometry.name;
   DescribeParameters(params, &j);
-  j["model"] = "closed-form";
+  j["model"] = args.model;
+  if (args.model == "auto") j["accuracy_m"] = args.accuracy > 0.0 ? args.accuracy : kSceneAccuracy;
   j["cushion_model"] = args.cushion_model;
   j["t"] = sim->time();
   j["balls"] = nlohmann::json::array();

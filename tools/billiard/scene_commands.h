@@ -6,12 +6,16 @@
 #include <optional>
 #include <string>
 
+#include "sim/physics/parameters.h"
+#include "sim/table/table_simulation.h"
+
 namespace billiard::cli {
 
 struct SceneSimulationArgs {
   std::string scene_path;
   std::optional<double> t_end;  // none: until every ball rests or is pocketed
-  std::string model;            // auto | closed-form
+  std::string model;            // auto | closed-form | approx
+  double accuracy = 0.0;        // auto: the endpoint error allowed a ball's motion (0: 5 mm)
   std::string cushion_model;    // mathavan-2010 | han-2005
   std::string trajectory_path;
   double sample_dt = 1e-3;
@@ -21,6 +25,12 @@ struct SceneSimulationArgs {
 // `billiard simulate --scene SCENE.json`: the scene's JSON result on stdout (with --json) or a
 // summary on stderr.
 void SimulateScene(const SceneSimulationArgs& args);
+
+// The motion model of every new motion of a ball for --model closed-form | approx | auto (the
+// cheapest whose measured error on that kind of motion, sim/model_choice/, is within `accuracy`
+// metres); UsageError for another name.
+decltype(table::TableSimulationOptions::five_dof) SceneMotionModel(
+    const std::string& model, double accuracy, const physics::ModelParameters& params);
 
 void AddRackCommand(CLI::App& app);
 void AddBenchScenesCommand(CLI::App& app);

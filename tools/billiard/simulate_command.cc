@@ -61,7 +61,7 @@ void Run(const SimulateArgs& args) {
     throw UsageError("give one of --state (one ball) and --scene (a table)");
   }
   if (!args.scene.empty()) {
-    SimulateScene({args.scene, args.t_end, args.model.empty() ? "auto" : args.model,
+    SimulateScene({args.scene, args.t_end, args.model.empty() ? "auto" : args.model, args.accuracy,
                    args.cushion_model, args.trajectory_path, args.sample_dt, args.json});
     return;
   }
