@@ -84,7 +84,7 @@ nlohmann::json SceneSummaryJson(const SceneBenchmarkResult& r) {
           {"breaks", r.runs.size()},
           {"seed", r.options.seed},
           {"speed_m_s", r.options.speed},
-          {"model", "closed-form"},
+          {"model", r.options.motion_model},
           {"cushion_model", table::CushionModelName(r.options.simulation.cushion_model)},
           {"median_us", Percentile(wall, 0.5)},
           {"p95_us", Percentile(wall, 0.95)},
@@ -106,9 +106,9 @@ std::string SceneTable(const SceneBenchmarkResult& r) {
     return "| " + what + " | " + Fixed(Percentile(v, 0.5), digits) + " | " +
            Fixed(Percentile(v, 0.95), digits) + " | " + Fixed(Percentile(v, 1.0), digits) + " |\n";
   };
-  return "## Cushions by the " +
+  return "## Motion " + r.options.motion_model + ", cushions " +
          std::string(table::CushionModelName(r.options.simulation.cushion_model)) +
-         " model\n\n| per break | median | p95 | max |\n|---|---|---|---|\n" +
+         "\n\n| per break | median | p95 | max |\n|---|---|---|---|\n" +
          line("wall time [us]", column([](const BreakRun& b) { return b.wall_us; }), 0) +
          line("events", column([](const BreakRun& b) { return double(b.events); }), 0) +
          line("ball-ball events", column([](const BreakRun& b) { return double(b.ball_ball); }),
@@ -135,12 +135,16 @@ void WriteSceneReport(const std::vector<SceneBenchmarkResult>& runs, const std::
      << r.options.seed + r.runs.size() - 1 << ", `sim/table/testing/breaks.h`) on the " << r.table
      << " table with the " << r.params << " parameter set: the cue ball launched at "
      << r.options.speed << " m/s by a level cue with a seeded aim error (up to 0.01 rad) and "
-     << "tip offset (up to 0.3 r), every ball simulated event by event in closed form "
-     << "(`sim/table/table_simulation.h`) until all rest or drop. Times are one break on one "
+     << "tip offset (up to 0.3 r), every ball simulated event by event "
+     << "(`sim/table/table_simulation.h`) until all rest or drop: in closed form, or with "
+     << "`auto` by the approximate 5-DOF model where the closed form's measured error on the "
+     << "ball's kind of motion (sliding, side spin) exceeds 5 mm (`docs/benchmarks/"
+     << "model_choice.json`). Times are one break on one "
      << "core of this 2-core machine, construction included, the fastest of " << r.options.repeats
      << " runs. Produced by `billiard bench-scenes --out docs/benchmarks`."
-     << "\n\nTargets (issue 14): a median of 1 ms or less per break with closed-form motion; "
-     << "FastFiz takes about 2.8 ms of CPU and pooltool about 150 ms for a break.\n\n";
+     << "\n\nTargets (issue 14): a median of 1 ms or less per break with closed-form motion, "
+     << "10 ms with the 5-DOF model where the scene asks for it; FastFiz takes about 2.8 ms of "
+     << "CPU and pooltool about 150 ms for a break.\n\n";
   for (const SceneBenchmarkResult& run : runs) md << SceneTable(run);
 }
 

@@ -21,6 +21,7 @@ struct SceneBenchmarkOptions {
   double speed = 7.0;  // the cue ball's launch speed [m/s]
   int repeats = 5;     // each break timed this often, the fastest kept (timer noise)
   table::TableSimulationOptions simulation;
+  std::string motion_model = "closed-form";  // what simulation.five_dof chooses, for the report
   std::function<void(const std::string&)> progress = [](const std::string&) {};
 };
 

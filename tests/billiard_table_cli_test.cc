@@ -134,10 +134,10 @@ TEST(BilliardSimulateScene, RefusesBadScenesWithTheReason) {
   const auto key = refusal(R"({"table":"pool-9ft","params":"pool","balls":[],"bals":[]})");
   EXPECT_EQ(key.status, 2);
   EXPECT_NE(key.out.find("bals"), std::string::npos) << key.out;
-  const auto model =
-      refusal(R"({"table":"pool-9ft","params":"pool","balls":[)" + ball0 + "]}", "--model approx");
+  const auto model = refusal(R"({"table":"pool-9ft","params":"pool","balls":[)" + ball0 + "]}",
+                             "--model integral");
   EXPECT_EQ(model.status, 2);
-  EXPECT_NE(model.out.find("not built yet"), std::string::npos) << model.out;
+  EXPECT_NE(model.out.find("auto, closed-form, approx"), std::string::npos) << model.out;
   // One line each.
   for (const auto& r : {overlap, table, off, key, model}) {
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
@@ -146,15 +146,40 @@ TEST(BilliardSimulateScene, RefusesBadScenesWithTheReason) {
   EXPECT_EQ(both.status, 2);
 }
 
-TEST(BilliardBenchScenes, ReportsTimesAndEventsPerBreakForEachCushionModel) {
+TEST(BilliardSimulateScene, MovesBallsByTheFiveDofModelWhereAskedOrNeeded) {
+  const std::string scene = BreakScene(5, 7.0);
+  nlohmann::json by_model;
+  for (const char* model : {"closed-form", "approx", "auto"}) {
+    const std::string args =
+        std::string("simulate --scene ") + scene + " --model " + model + " --json";
+    const CommandResult r = Billiard(args);
+    ASSERT_EQ(r.status, 0) << r.out;
+    by_model[model] = OneObject(r, args);
+    EXPECT_EQ(by_model[model]["model"], model);
+    EXPECT_TRUE(by_model[model]["at_rest"].get<bool>()) << model;
+  }
+  EXPECT_EQ(by_model["auto"]["accuracy_m"], 5e-3);
+  // The 5-DOF model's balls end elsewhere than the closed form's (rolling resistance while they
+  // slide, side spin).
+  const auto cue_apart = [&](const char* a, const char* b) {
+    const auto& sa = by_model[a]["balls"][0]["state"];
+    const auto& sb = by_model[b]["balls"][0]["state"];
+    return std::hypot(sa[0].get<double>() - sb[0].get<double>(),
+                      sa[1].get<double>() - sb[1].get<double>());
+  };
+  EXPECT_GT(cue_apart("closed-form", "approx"), 1e-3);
+}
+
+TEST(BilliardBenchScenes, ReportsTimesAndEventsPerBreakForEachModel) {
   const std::string args = "bench-scenes --breaks 3 --repeats 1";
   const CommandResult r = Billiard(args);
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_TRUE(j.is_array());
-  ASSERT_EQ(j.size(), 2u);
+  ASSERT_EQ(j.size(), 3u);
   EXPECT_EQ(j[0]["cushion_model"], "mathavan-2010");
   EXPECT_EQ(j[1]["cushion_model"], "han-2005");
+  EXPECT_EQ(j[2]["model"], "auto");
   for (const auto& run : j) {
     EXPECT_EQ(run["breaks"], 3);
     EXPECT_GT(run["median_events"].get<double>(), 10.0);

@@ -78,8 +78,13 @@ constexpr double kContactHorizon = 1e-6;  // [s]
 // 3 cm/s stops some 2 mm short).
 constexpr double kPushTime = 5e-4;  // [s]
 
-// A 5-DOF motion runs until the ball rests or this long, then starts again.
+// A 5-DOF motion runs until the ball rests or this long, then starts again; a sliding ball's
+// until twice the closed form's slide time.
 constexpr double kFiveDofHorizon = 60.0;  // [s]
+constexpr double kSlideHorizonFactor = 2.0;
+constexpr double kShortestHorizon = 0.05;  // [s]
+// A slip above this is a slide (below it, the regularized 5-DOF contact's residue of one).
+constexpr double kSlideSlip = 1e-3;  // [m/s]
 
 // Two impacts of the same pair closer in time than this: the second is elastic (TC model).
 constexpr double kCollapseTime = 1e-5;  // [s]
@@ -290,6 +295,16 @@ const char* EventTypeName(EventType type) {
   return "unknown";
 }
 
+std::optional<physics::SimulationOptions> FiveDofWhereNeeded(
+    const BallState& state, const physics::ModelParameters& params,
+    const physics::SimulationOptions& options) {
+  constexpr double kRollingSlip = 1e-3;   // [m/s]
+  constexpr double kStraightSpin = 20.0;  // [rad/s]
+  const bool rolling = ClothSlip(state, params.ball.radius).norm() <= kRollingSlip;
+  if (rolling && std::abs(state[kWz]) <= kStraightSpin) return std::nullopt;
+  return options;
+}
+
 void ValidateScene(const TableGeometry& table, double radius, const std::vector<SceneBall>& balls) {
   std::set<int> ids;
   for (const SceneBall& b : balls) {
@@ -476,7 +491,15 @@ void TableSimulation::StartSegment(std::size_t i, const BallState& state) {
   const std::optional<physics::SimulationOptions> five_dof =
       moving && options_.five_dof ? options_.five_dof(state) : std::nullopt;
   if (five_dof) {
-    balls_[i].segments.emplace_back(params_, *five_dof, time_, state, kFiveDofHorizon);
+    // A sliding ball's 5-DOF motion is asked again once its slide should be over (the closed
+    // form's slide time, with a margin for the rolling resistance that lengthens it), so that a
+    // ball rolling on can change to the closed form.
+    const MotionSegment closed(cloth_, time_, state);
+    const bool slides = ClothSlip(state, params_.ball.radius).norm() > kSlideSlip;
+    const double horizon = slides ? std::clamp(kSlideHorizonFactor * (closed.end_time() - time_),
+                                               kShortestHorizon, kFiveDofHorizon)
+                                  : kFiveDofHorizon;
+    balls_[i].segments.emplace_back(params_, *five_dof, time_, state, horizon);
   } else {
     balls_[i].segments.emplace_back(cloth_, time_, state);
   }

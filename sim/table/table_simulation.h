@@ -126,6 +126,16 @@ class TableSimulation {
   std::vector<double> last_impact_;  // per pair i < j: the time of its last impact
 };
 
+// The motion `--model auto` gives a ball on the table, phase by phase: the closed form while it
+// rolls with little side spin (slip below 1e-3 m/s, |wz| below 20 rad/s: rolling 7 m at 1 m/s
+// with 20 rad/s of side spin, the 5-DOF path bends by 0.9 mm, at 5 rad/s by 0.05 mm; measured
+// with `billiard simulate`), the 5-DOF model with `options` otherwise: while it slides (the
+// point contact has no rolling resistance during the slide, a few centimetres over a shot) and
+// while its side spin curves it.
+std::optional<physics::SimulationOptions> FiveDofWhereNeeded(
+    const physics::BallState& state, const physics::ModelParameters& params,
+    const physics::SimulationOptions& options);
+
 // Refuses, with a one-line reason naming the ball, a scene with a non-finite number, an id below
 // 0 or repeated, a ball off the playing surface (TableGeometry::OnSurface) or two balls
 // overlapping by more than a nanometre.

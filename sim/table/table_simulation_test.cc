@@ -339,5 +339,21 @@ TEST(TableSimulation, SeededBreaksByTheFiveDofModelKeepBallsApartOnTheTableAndLo
   }
 }
 
+TEST(TableSimulation, AutoGivesTheClosedFormToRollingBallsWithLittleSideSpin) {
+  const auto p = Pool();
+  const double r = p.ball.radius;
+  const physics::SimulationOptions method;
+  EXPECT_FALSE(FiveDofWhereNeeded(MakeBallState(1, 0.6, 1, 0, 0, 1 / r, 5), p, method));
+  EXPECT_TRUE(FiveDofWhereNeeded(MakeBallState(1, 0.6, 1, 0, 0, 0, 0), p, method));  // sliding
+  EXPECT_TRUE(FiveDofWhereNeeded(MakeBallState(1, 0.6, 1, 0, 0, 1 / r, 40), p, method));
+  // Why 20 rad/s: rolling 7 m with that much side spin the 5-DOF path bends by under a mm.
+  const BallState rolling = MakeBallState(0, 0, 1, 0, 0, 1 / r, 20);
+  const BallState five = physics::Simulate(p, rolling, 20.0).final_state;
+  const BallState closed =
+      physics::Simulate(p, rolling, 20.0, {physics::Model::kClosedForm}).final_state;
+  EXPECT_LT((five.head<2>() - closed.head<2>()).norm(), 1e-3);
+  EXPECT_GT(five[kX], 7.0);
+}
+
 }  // namespace
 }  // namespace billiard::table

@@ -104,11 +104,14 @@ decltype(table::TableSimulationOptions::five_dof) SceneMotionModel(
   if (accuracy < 0.0 || !std::isfinite(accuracy)) {
     throw UsageError("--accuracy must be a positive number of metres");
   }
-  const double allowed = accuracy > 0.0 ? accuracy : kSceneAccuracy;
-  return [allowed, params](const physics::BallState& state) -> Choice {
-    const model_choice::ModelChoice choice = model_choice::ChooseModel(state, params, allowed);
-    if (choice.options.model == physics::Model::kClosedForm) return std::nullopt;
-    return choice.options;
+  // The 5-DOF model's method for what it moves (sliding or spinning balls): the cheapest that
+  // meets the accuracy on side-spin motion (docs/benchmarks/model_choice.json).
+  const physics::SimulationOptions method =
+      model_choice::ChooseModel(physics::MakeBallState(0, 0, 1, 0, 0, 0, 1), params,
+                                accuracy > 0.0 ? accuracy : kSceneAccuracy)
+          .options;
+  return [method, params](const physics::BallState& state) {
+    return table::FiveDofWhereNeeded(state, params, method);
   };
 }
 
@@ -230,7 +233,8 @@ void AddBenchScenesCommand(CLI::App& app) {
     std::string table = "pool-9ft";
     std::string params = params::kDefaultParameterSet;
     std::string out;
-    std::string cushion_model;  // "": both
+    std::string cushion_model;  // "" with model "": every run below
+    std::string model;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd =
@@ -247,7 +251,9 @@ void AddBenchScenesCommand(CLI::App& app) {
   cmd->add_option("--table", args->table, "Table specification")->capture_default_str();
   cmd->add_option("--params", args->params, "Parameter set")->capture_default_str();
   cmd->add_option("--cushion-model", args->cushion_model,
-                  "mathavan-2010 | han-2005 (default: both, one after the other)");
+                  "mathavan-2010 | han-2005 (without it and --model: closed form with each, and "
+                  "auto with mathavan-2010, one after the other)");
+  cmd->add_option("--model", args->model, "closed-form | approx | auto (5-DOF where needed)");
   cmd->add_option("--out", args->out, "Write scenes_report.md into this directory");
   cmd->callback([args] {
     if (args->options.breaks < 1) throw UsageError("--breaks must be at least 1");
@@ -255,16 +261,25 @@ void AddBenchScenesCommand(CLI::App& app) {
       throw UsageError("--speed must be a positive number of m/s");
     }
     if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
-    std::vector<table::CushionModel> models = {table::CushionModel::kMathavan2010,
-                                               table::CushionModel::kHan2005};
-    if (!args->cushion_model.empty()) models = {CushionModelOption(args->cushion_model)};
     const physics::ModelParameters params = LoadParametersOption(args->params);
     const table::TableGeometry geometry = LoadTableOption(args->table);
+    // The runs: both cushion models in closed form, and the 5-DOF model where it is needed.
+    std::vector<std::pair<std::string, table::CushionModel>> runs = {
+        {"closed-form", table::CushionModel::kMathavan2010},
+        {"closed-form", table::CushionModel::kHan2005},
+        {"auto", table::CushionModel::kMathavan2010}};
+    if (!args->cushion_model.empty() || !args->model.empty()) {
+      runs = {{args->model.empty() ? "closed-form" : args->model,
+               args->cushion_model.empty() ? table::CushionModel::kMathavan2010
+                                           : CushionModelOption(args->cushion_model)}};
+    }
     args->options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
     std::vector<bench::SceneBenchmarkResult> results;
     nlohmann::json summary = nlohmann::json::array();
-    for (table::CushionModel model : models) {
-      args->options.simulation.cushion_model = model;
+    for (const auto& [motion, cushion] : runs) {
+      args->options.motion_model = motion;
+      args->options.simulation.five_dof = SceneMotionModel(motion, 0.0, params);
+      args->options.simulation.cushion_model = cushion;
       results.push_back(bench::RunSceneBenchmark(geometry, params, args->options));
       summary.push_back(bench::SceneSummaryJson(results.back()));
     }
