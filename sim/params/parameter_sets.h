@@ -25,8 +25,8 @@ std::vector<std::string> BuiltinParameterSetNames();
 physics::ModelParameters LoadParameters(const std::string& name_or_path);
 
 // Parses a parameter set from JSON text (the format of sim/params/*.json): the objects "ball",
-// "contact", "cue", "collision" and "table" with every number of physics::ModelParameters, and optional
-// strings "name" (default: `origin`) and "source". An unknown key, a missing number or a value
+// "contact", "cue", "collision" and "table" with every number of physics::ModelParameters, and
+// optional strings "name" (default: `origin`) and "source". An unknown key, a missing number or a value
 // of the wrong type is refused, naming the key ("t.json: unknown key contact.muu").
 physics::ModelParameters ParseParameters(const std::string& json_text, const std::string& origin);
 
