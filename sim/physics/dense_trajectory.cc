@@ -24,6 +24,22 @@ BallState DenseTrajectory::At(double t) const {
   return Interpolate(step.x0, step.x1, step.c3, step.c4, (t - step.t0) / (step.t1 - step.t0));
 }
 
+void DenseTrajectory::TruncateLastStepAt(double t) {
+  if (steps_.empty()) throw std::logic_error("dense trajectory has no steps");
+  Step& step = steps_.back();
+  if (!(t >= step.t0 && t <= step.t1)) throw std::logic_error("truncation outside the last step");
+  if (step.t1 <= step.t0) return;
+  // The interpolant as x0 + B s + C s^2 + D s^3, rescaled to s' = s / lambda over [t0, t].
+  const double lambda = (t - step.t0) / (step.t1 - step.t0);
+  const BallState b = lambda * (step.x1 - step.x0 + step.c3);
+  const BallState c = lambda * lambda * (step.c4 - step.c3);
+  const BallState d = -lambda * lambda * lambda * step.c4;
+  step.t1 = t;
+  step.x1 = step.x0 + b + c + d;
+  step.c4 = -d;
+  step.c3 = -c - d;
+}
+
 BallState DenseTrajectory::Interpolate(const BallState& x0, const BallState& x1,
                                        const BallState& c3, const BallState& c4, double s) {
   return (1.0 - s) * x0 + s * (x1 + (1.0 - s) * (c3 + s * c4));

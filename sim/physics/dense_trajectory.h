@@ -24,6 +24,9 @@ class DenseTrajectory : public Trajectory {
   std::size_t size() const { return steps_.size(); }
   // Where the last step began (an event found after it lies within that step).
   double last_step_start() const;
+  // Ends the trajectory at t inside its last step (an event located there): the step's cubic
+  // restricted to [t0, t], the same curve to rounding.
+  void TruncateLastStepAt(double t);
 
  private:
   struct Step {

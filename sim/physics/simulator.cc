@@ -68,6 +68,24 @@ IntegrationResult Run(Integrator integrator, const System& system, const BallSta
   return IntegrateWith<Rodas4Stepper>(system, x0, t0, t_end, options, stats, dense, stop);
 }
 
+// The first time within the last step of `dense` at which ClassifyRest calls the ball stopped
+// (bisection on the dense output: the step began moving and ended stopped); the trajectory and
+// *run end there.
+template <class Dynamics>
+void LocateRestWithinLastStep(const Dynamics& dynamics, DenseTrajectory* dense,
+                              IntegrationResult* run) {
+  if (dense->size() == 0) return;
+  double lo = dense->last_step_start(), hi = dense->end_time();
+  if (ClassifyRest(dense->At(lo), dynamics) != RestKind::kMoving) return;
+  for (int i = 0; i < 60 && hi - lo > 1e-13 * std::max(1.0, hi); ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (ClassifyRest(dense->At(mid), dynamics) == RestKind::kMoving ? lo : hi) = mid;
+  }
+  dense->TruncateLastStepAt(hi);
+  run->t = hi;
+  run->state = dense->At(hi);
+}
+
 template <class Friction>
 SimulationResult Integrate(const ModelParameters& params, Friction friction,
                            const BallState& initial, double t_end,
@@ -87,6 +105,9 @@ SimulationResult Integrate(const ModelParameters& params, Friction friction,
               dense.get());
   }
   if (run.stopped) {
+    // Where the ball stopped inside the last step, not where the step happened to end: so the
+    // rest point converges with the tolerance instead of moving with the steps.
+    LocateRestWithinLastStep(dynamics, dense.get(), &run);
     const BallAtRest<BallDynamics<Friction>> rest(dynamics, run.state,
                                                   ClassifyRest(run.state, dynamics));
     result.rest_time = run.t;
@@ -158,7 +179,16 @@ Arrival IntegrateToArrival(const ModelParameters& params, Friction friction,
       if (rate < 0.0) s += f * (-(v_hat.transpose() * s.middleRows<2>(kVx)) / rate);
     }
   } else if (run.stopped && rest != RestKind::kMoving) {
-    a.state = BallAtRest<BallDynamics<Friction>>(dynamics, run.state, rest).start();
+    // Where it stopped inside the last step, as Simulate locates it.
+    const double step_start = dense->last_step_start(), step = dense->end_time() - step_start;
+    LocateRestWithinLastStep(dynamics, dense.get(), &run);
+    a.time = run.t;
+    if (stepper && step > 0.0) {
+      a.sensitivity = stepper->SensitivityWithinLastStep((run.t - step_start) / step);
+    }
+    a.state =
+        BallAtRest<BallDynamics<Friction>>(dynamics, run.state, ClassifyRest(run.state, dynamics))
+            .start();
   }
   a.trajectory = std::move(dense);
   return a;
