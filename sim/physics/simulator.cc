@@ -77,7 +77,9 @@ void LocateRestWithinLastStep(const Dynamics& dynamics, DenseTrajectory* dense,
   if (dense->size() == 0) return;
   double lo = dense->last_step_start(), hi = dense->end_time();
   if (ClassifyRest(dense->At(lo), dynamics) != RestKind::kMoving) return;
-  for (int i = 0; i < 60 && hi - lo > 1e-13 * std::max(1.0, hi); ++i) {
+  // A nanosecond: at the stop's speed (10 eps_r a, a few mm/s at most) a fraction of a picometre.
+  constexpr double kRestTimeResolution = 1e-9;  // [s]
+  while (hi - lo > kRestTimeResolution) {
     const double mid = 0.5 * (lo + hi);
     (ClassifyRest(dense->At(mid), dynamics) == RestKind::kMoving ? lo : hi) = mid;
   }
