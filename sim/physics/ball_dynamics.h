@@ -149,7 +149,9 @@ class BallDynamics {
   // The 7-vector derivative and 7x7 Jacobian from the accelerations as Jets on (vx, ..., wz).
   static void Assemble(const BallState& s, const Eigen::Matrix<Jet, 5, 1>& du, BallState* ds,
                        StateJacobian* jac) {
-    jac->setZero();
+    // Column by column: the 7x7 setZero() becomes a slow `rep stos` (8 % of the analytic call).
+    jac->leftCols<2>().setZero();
+    jac->topRightCorner<2, 5>().setZero();
     (*jac)(kX, kVx) = 1.0;
     (*jac)(kY, kVy) = 1.0;
     (*ds)[kX] = s[kVx];
