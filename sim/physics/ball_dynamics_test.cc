@@ -3,8 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "sim/physics/closed_form.h"
 #include "sim/physics/simulator.h"
@@ -39,6 +43,121 @@ TEST(BallDynamics, JacobianMatchesCentralDifferences) {
         EXPECT_LT((jac.col(j) - column).norm(), 1e-5 * (1 + column.norm()))
             << "model " << model << " column " << j;
       }
+    }
+  }
+}
+
+// The approximate model's parameter sets: the paper's and the pool set, each with its m_T = m_M = 2
+// fit and with the free fit of Kudra et al. 2016, section 2.3 (b_T 0.771, m_T 2.655, b_M 0.419,
+// m_M 3.073).
+std::vector<std::pair<std::string, ModelParameters>> ApproximateModelSets() {
+  std::vector<std::pair<std::string, ModelParameters>> sets;
+  for (const char* name : {"paper", "pool"}) {
+    ModelParameters p = params::LoadParameters(name);
+    sets.emplace_back(std::string(name) + ", m = 2", p);
+    p.contact.b_t = 0.771;
+    p.contact.m_t = 2.655;
+    p.contact.b_m = 0.419;
+    p.contact.m_m = 3.073;
+    sets.emplace_back(std::string(name) + ", free fit", p);
+  }
+  return sets;
+}
+
+// States of one regime of the motion, drawn from `rng` for the parameters `p`.
+struct Regime {
+  const char* name;
+  std::function<BallState(std::mt19937&, const ModelParameters&)> draw;
+};
+
+// A state moving at v with the contact point slipping at u (m/s) and spin wz.
+BallState WithSlip(const Eigen::Vector2d& v, const Eigen::Vector2d& u, double wz, double r) {
+  return MakeBallState(0.1, 0.2, v.x(), v.y(), (u.y() - v.y()) / r, (v.x() - u.x()) / r, wz);
+}
+
+Eigen::Vector2d RandomDirection(std::mt19937& rng) {
+  const double angle = std::uniform_real_distribution<double>(-M_PI, M_PI)(rng);
+  return {std::cos(angle), std::sin(angle)};
+}
+
+// 10^x for x uniform in [lo, hi].
+double LogUniform(std::mt19937& rng, double lo, double hi) {
+  return std::pow(10.0, std::uniform_real_distribution<double>(lo, hi)(rng));
+}
+
+std::vector<Regime> MotionRegimes() {
+  using U = std::uniform_real_distribution<double>;
+  return {
+      {"sliding",
+       [](std::mt19937& rng, const ModelParameters&) {
+         U v(-3, 3), w(-200, 200);
+         return MakeBallState(0.1, 0.2, v(rng), v(rng), w(rng), w(rng), w(rng));
+       }},
+      // Slip from 100 times below to 10 times above the regularization scale eps_t a.
+      {"rolling",
+       [](std::mt19937& rng, const ModelParameters& p) {
+         const double slip = p.contact.eps_t * p.contact.patch_radius * LogUniform(rng, -2, 1);
+         return WithSlip(U(0.05, 3)(rng) * RandomDirection(rng), slip * RandomDirection(rng),
+                         U(-50, 50)(rng), p.ball.radius);
+       }},
+      // Half of them exactly still, where the linear slip vanishes and only the norm's spin part
+      // remains.
+      {"pure spin",
+       [](std::mt19937& rng, const ModelParameters&) {
+         const double wz = U(-200, 200)(rng);
+         if (U(0, 1)(rng) < 0.5) return MakeBallState(0.1, 0.2, 0, 0, 0, 0, wz);
+         const Eigen::Vector2d v = 1e-6 * RandomDirection(rng);
+         return MakeBallState(0.1, 0.2, v.x(), v.y(), U(-1, 1)(rng), U(-1, 1)(rng), wz);
+       }},
+      // Speeds from 100 times below to 10 times above the rolling regularization eps_r a.
+      {"near rest",
+       [](std::mt19937& rng, const ModelParameters& p) {
+         const double scale = p.contact.eps_r * p.contact.patch_radius;
+         const double speed = scale * LogUniform(rng, -2, 1);
+         const double slip = scale * LogUniform(rng, -2, 1);
+         return WithSlip(speed * RandomDirection(rng), slip * RandomDirection(rng), U(-1, 1)(rng),
+                         p.ball.radius);
+       }},
+      {"large spins",
+       [](std::mt19937& rng, const ModelParameters&) {
+         U v(-5, 5), w(-1000, 1000);
+         return MakeBallState(0.1, 0.2, v(rng), v(rng), w(rng), w(rng), w(rng));
+       }},
+  };
+}
+
+// max |a - b| / max |b| over the entries.
+template <class Derived>
+double RelativeDifference(const Eigen::MatrixBase<Derived>& a,
+                          const Eigen::MatrixBase<Derived>& b) {
+  return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
+}
+
+TEST(BallDynamics, AnalyticJacobianEqualsAutomaticDifferentiation) {
+  static_assert(HasAnalyticJacobian<ApproximateFrictionModel>::value);
+  static_assert(!HasAnalyticJacobian<IntegralFrictionModel>::value);
+  constexpr int kStatesPerRegime = 500;  // 5 regimes x 4 parameter sets: 10,000 states
+  std::mt19937 rng(16);
+  for (const auto& [set, p] : ApproximateModelSets()) {
+    const BallDynamics<ApproximateFrictionModel> dynamics(p, {p.contact});
+    for (const Regime& regime : MotionRegimes()) {
+      double worst = 0.0, worst_derivative = 0.0;
+      for (int i = 0; i < kStatesPerRegime; ++i) {
+        const BallState s = regime.draw(rng, p);
+        BallState f, f_ad;
+        StateJacobian jac, jac_ad;
+        dynamics.DerivativeAndJacobian(s, &f, &jac);
+        dynamics.DerivativeAndJacobianByAutoDiff(s, &f_ad, &jac_ad);
+        ASSERT_TRUE(jac_ad.allFinite()) << set << ", " << regime.name << ": " << s.transpose();
+        // The derivative is the same computation on doubles as Derivative, hence the same bits;
+        // automatic differentiation divides by multiplying with the reciprocal (ceres::Jet), so
+        // it may differ in the last bit.
+        ASSERT_TRUE(f == dynamics.Derivative(s)) << set << ", " << regime.name;
+        worst_derivative = std::max(worst_derivative, RelativeDifference(f, f_ad));
+        worst = std::max(worst, RelativeDifference(jac, jac_ad));
+      }
+      EXPECT_LT(worst, 1e-12) << set << ", " << regime.name;
+      EXPECT_LT(worst_derivative, 1e-15) << set << ", " << regime.name;
     }
   }
 }

@@ -5,6 +5,7 @@
 // on doubles and on ceres::Jet (the integrators' Jacobians come from automatic differentiation).
 #pragma once
 
+#include <Eigen/Core>
 #include <cmath>
 
 #include "sim/physics/parameters.h"
@@ -36,6 +37,26 @@ ContactKinematics<T> ComputeContactKinematics(const T& vx, const T& vy, const T&
   k.dc = vrx * scale;
   k.ds = vry * scale;
   return k;
+}
+
+// d(vsx, vsy, ws, dc, ds) / d(vx, vy, wx, wy, wz) of ComputeContactKinematics: the slips are
+// linear; the rolling direction (dc, ds) = d vr / sqrt(|vr|^2 + eps_r^2) has the derivative
+// d (n^2 I - vr vr^T) / n^3 with n^2 = |vr|^2 + eps_r^2, vr = v / a.
+inline Eigen::Matrix<double, 5, 5> ContactKinematicsJacobian(double vx, double vy,
+                                                             const ContactParameters& c,
+                                                             double radius) {
+  const double inv_a = 1.0 / c.patch_radius;
+  const double vrx = vx * inv_a, vry = vy * inv_a, er2 = c.eps_r * c.eps_r;
+  const double n2 = vrx * vrx + vry * vry + er2;
+  const double scale = c.d / (n2 * std::sqrt(n2)) * inv_a;  // d / n^3, per m/s of v
+  const double cross = -scale * vrx * vry;
+  Eigen::Matrix<double, 5, 5> jac;
+  jac << inv_a, 0.0, 0.0, -radius * inv_a, 0.0,         //
+      0.0, inv_a, radius * inv_a, 0.0, 0.0,             //
+      0.0, 0.0, 0.0, 0.0, 1.0,                          //
+      scale * (vry * vry + er2), cross, 0.0, 0.0, 0.0,  //
+      cross, scale * (vrx * vrx + er2), 0.0, 0.0, 0.0;
+  return jac;
 }
 
 // The friction resultant of Kudra et al. 2016 with its sign convention: the force on the ball is
