@@ -26,8 +26,8 @@ physics::ModelParameters LoadParameters(const std::string& name_or_path);
 
 // Parses a parameter set from JSON text (the format of sim/params/*.json): the objects "ball",
 // "contact", "cue", "collision" and "table" with every number of physics::ModelParameters, and
-// optional strings "name" (default: `origin`) and "source". An unknown key, a missing number or a value
-// of the wrong type is refused, naming the key ("t.json: unknown key contact.muu").
+// optional strings "name" (default: `origin`) and "source". An unknown key, a missing number or
+// a value of the wrong type is refused, naming the key ("t.json: unknown key contact.muu").
 physics::ModelParameters ParseParameters(const std::string& json_text, const std::string& origin);
 
 // The set's name, and the file it came from when not built in: "pool", "mine (my/set.json)".

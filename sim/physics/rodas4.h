@@ -9,7 +9,8 @@
 // phase (about 540,000 steps for Fig. 6); an L-stable linearly implicit method damps the stiff
 // slip mode at any step size, so its step is set by accuracy alone and grows to tens of
 // milliseconds while the ball rolls. Rosenbrock methods need no Newton iteration, only one LU of
-// the 7x7 matrix I/(gamma h) - J per step, and J is exact (hand-derived or automatic differentiation, ball_dynamics.h).
+// the 7x7 matrix I/(gamma h) - J per step, and J is exact (hand-derived for the approximate
+// model, automatic differentiation for the integral one: ball_dynamics.h).
 #pragma once
 
 #include <Eigen/Core>
