@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "estimator/testing/real_table_photo.h"
@@ -163,6 +165,28 @@ TEST_F(BilliardDetect, FindsTheTwentyOneBallsOfTheRealPhotograph) {
       EXPECT_NEAR(ball["radius_px"].get<double>(), 15.0, 2.5);
     }
   }
+}
+
+TEST_F(BilliardDetect, DrawsTheDetectionsOnAnOverlay) {
+  const std::string overlay = ::testing::TempDir() + "/detect_overlay.png";
+  std::remove(overlay.c_str());
+  const std::string args = "detect " + photo() + " --overlay " + overlay + " --json";
+  const CommandResult r = Billiard(args);
+  ASSERT_EQ(r.status, 0) << args;
+  const auto j = OneObject(r, args);
+  const cv::Mat frame = cv::imread(photo()), drawn = cv::imread(overlay);
+  ASSERT_FALSE(drawn.empty()) << "no overlay written";
+  ASSERT_EQ(drawn.size(), frame.size());
+  // Each ball's outline is drawn: the frame differs on the circle of every detection.
+  for (const auto& ball : j["balls"]) {
+    const int u =
+        static_cast<int>(std::lround(ball["u"].get<double>() - ball["radius_px"].get<double>()));
+    const int v = static_cast<int>(std::lround(ball["v"].get<double>()));
+    EXPECT_NE(drawn.at<cv::Vec3b>(v, u), frame.at<cv::Vec3b>(v, u)) << ball;
+  }
+  const CommandResult bad = Billiard("detect " + photo() + " --overlay /nonexistent/o.png", true);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("--overlay"), std::string::npos) << bad.out;
 }
 
 TEST_F(BilliardDetect, TableCoordinatesFromACalibration) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "estimator/ball_detector.h"
+#include "estimator/detection_overlay.h"
 #include "estimator/table_calibration.h"
 #include "lcmtypes/image_codec.h"
 #include "sim/camera/camera_model.h"
@@ -105,7 +106,7 @@ void WarnIfTheBallRadiusDisagrees(double predicted_px, const cv::Mat& image) {
 }
 
 struct DetectArgs {
-  std::string image, calib, params = params::kDefaultParameterSet;
+  std::string image, calib, params = params::kDefaultParameterSet, overlay;
   double ball_radius_px = 0;
   bool json = false;
 };
@@ -142,6 +143,10 @@ void RunDetect(const DetectArgs& args) {
     std::cerr << "billiard: warning: no balls found in " << args.image << std::endl;
   }
 
+  if (!args.overlay.empty() &&
+      !cv::imwrite(args.overlay, estimator::DetectionOverlay(image, balls))) {
+    throw UsageError("--overlay: cannot write '" + args.overlay + "' (an image file: .png, .jpg)");
+  }
   nlohmann::json list = nlohmann::json::array();
   for (const auto& b : balls) {
     nlohmann::json j = {
@@ -241,6 +246,8 @@ void AddDetectCommand(CLI::App& app) {
                   "Expected ball radius [px] (default: from --calib, else estimated)");
   cmd->add_option("--params", args->params, "paper | pool | JSON file: the ball radius")
       ->capture_default_str();
+  cmd->add_option("--overlay", args->overlay,
+                  "Also write the frame with the detections drawn on it (PNG or JPEG)");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { RunDetect(*args); });
 }

@@ -1,0 +1,42 @@
+#include "estimator/detection_overlay.h"
+
+#include <cmath>
+#include <cstdio>
+#include <opencv2/imgproc.hpp>
+
+namespace billiard::estimator {
+
+namespace {
+
+constexpr double kConfidentScore = 0.5;
+const cv::Scalar kConfident(60, 220, 60);  // BGR
+const cv::Scalar kDoubtful(40, 40, 230);
+const cv::Scalar kLabel(255, 255, 255);
+
+}  // namespace
+
+cv::Mat DetectionOverlay(const cv::Mat& image, const std::vector<BallDetection>& balls) {
+  cv::Mat out;
+  if (image.channels() == 1) {
+    cv::cvtColor(image, out, cv::COLOR_GRAY2BGR);
+  } else {
+    out = image.clone();
+  }
+  // Lines a pixel wide on a 720p frame, thicker on larger ones.
+  const int thickness = std::max(1, static_cast<int>(std::lround(out.cols / 1280.0)));
+  for (std::size_t k = 0; k < balls.size(); ++k) {
+    const BallDetection& b = balls[k];
+    const cv::Point2d centre(b.pixel.x(), b.pixel.y());
+    const cv::Scalar colour = b.score >= kConfidentScore ? kConfident : kDoubtful;
+    cv::circle(out, centre, static_cast<int>(std::lround(b.radius_px)), colour, thickness,
+               cv::LINE_AA);
+    cv::drawMarker(out, centre, colour, cv::MARKER_CROSS, 5, thickness);
+    char label[32];
+    std::snprintf(label, sizeof label, "%zu %.2f", k, b.score);
+    cv::putText(out, label, centre + cv::Point2d(b.radius_px + 2, -b.radius_px),
+                cv::FONT_HERSHEY_SIMPLEX, 0.4 * thickness, kLabel, thickness, cv::LINE_AA);
+  }
+  return out;
+}
+
+}  // namespace billiard::estimator

@@ -1,0 +1,16 @@
+// Detections drawn on the frame they were found in, for a person to look at: each ball's
+// outline at its fitted radius, its centre, and its index and score beside it.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "estimator/ball_detector.h"
+
+namespace billiard::estimator {
+
+// A copy of `image` (BGR, or gray: drawn in colour) with `balls` drawn on it. The outline is
+// green above score 0.5 and red below, so weak detections stand out.
+cv::Mat DetectionOverlay(const cv::Mat& image, const std::vector<BallDetection>& balls);
+
+}  // namespace billiard::estimator
