@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "sim/table/ball_collision.h"
-#include "sim/table/polynomial_roots.h"
+#include "sim/table/contact_search.h"
 
 namespace billiard::table {
 
@@ -18,55 +18,6 @@ using physics::kWz;
 using physics::kX;
 
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// Two balls, or a ball and a cushion, this close are in contact: a root found to double
-// precision puts them within about 1e-15 m, and a scene may place balls frozen together.
-constexpr double kContactTolerance = 1e-9;  // [m]
-
-// The motion of a ball over tau = t - now: p(tau) = p + v tau + 1/2 a tau^2.
-struct Parabola {
-  Eigen::Vector2d p, v, a;
-};
-
-Parabola ParabolaAt(const MotionSegment& s, double now) {
-  const BallState state = s.At(now);
-  return {state.segment<2>(kX), state.segment<2>(kVx), s.acceleration()};
-}
-
-// |q(tau)|^2 - d^2 for q(tau) = p + v tau + 1/2 a tau^2, lowest order first.
-Quartic DistanceSquaredMinus(const Parabola& q, double d) {
-  return {q.p.squaredNorm() - d * d, 2.0 * q.p.dot(q.v), q.v.squaredNorm() + q.p.dot(q.a),
-          q.v.dot(q.a), 0.25 * q.a.squaredNorm()};
-}
-
-// (q(tau) - origin) . n - offset, a quadratic.
-Quartic AlongMinus(const Parabola& q, const Eigen::Vector2d& origin, const Eigen::Vector2d& n,
-                   double offset) {
-  return {(q.p - origin).dot(n) - offset, q.v.dot(n), 0.5 * q.a.dot(n), 0.0, 0.0};
-}
-
-double Derivative(const Quartic& c, double t) {
-  return c[1] + t * (2.0 * c[2] + t * (3.0 * c[3] + t * 4.0 * c[4]));
-}
-
-Eigen::Vector2d PositionAt(const Parabola& q, double tau) {
-  return q.p + q.v * tau + 0.5 * q.a * tau * tau;
-}
-
-// Touching bodies closing slower than this are not closing by their speed but, if at all, by
-// their accelerations (a ball pushed by its own spin into one it touches).
-constexpr double kContactSpeed = 1e-9;  // [m/s]
-
-// Impacts slower than this are pushes, not collisions: their energy (below 1e-9 J) is nothing,
-// and met as collisions they would part the bodies for a few nanoseconds each, millions of times
-// while one drives the other.
-constexpr double kSlowImpact = 1e-4;  // [m/s]
-
-// Touching bodies that will close within this time are an event now: a root so near is within
-// the rounding of the contact polynomial and could not be told from the contact itself.
-constexpr double kContactHorizon = 1e-6;  // [s]
 
 // Touching balls closing by their accelerations alone, both moving (one carrying the other
 // along: a ball driven by its spin, or two rolling balls whose decelerations differ along the
@@ -83,168 +34,12 @@ constexpr double kPushTime = 5e-4;  // [s]
 constexpr double kFiveDofHorizon = 60.0;  // [s]
 constexpr double kSlideHorizonFactor = 2.0;
 constexpr double kShortestHorizon = 0.05;  // [s]
-// A slip above this is a slide (below it, the regularized 5-DOF contact's residue of one).
+// A slip above this is a slide (below it, the regularized 5-DOF contact's residue of one, or a
+// ball the closed form rolls).
 constexpr double kSlideSlip = 1e-3;  // [m/s]
 
 // Two impacts of the same pair closer in time than this: the second is elastic (TC model).
 constexpr double kCollapseTime = 1e-5;  // [s]
-
-// The first tau in [0, window] where f reaches 0 while decreasing (`sign` = -1; +1: while
-// increasing) faster than kContactSpeed (a root where the bodies graze, or touch and part, is
-// none) and `accept` holds. At f(0) within `contact` of 0 (touching) the way it moves is
-// the slope at kContactHorizon (or the window's end, where a motion changes): touching bodies
-// that close within it faster than kContactSpeed (f' = `speed_scale` times the closing speed),
-// by their speed or their accelerations, are an event at once, so none passes through another.
-template <typename Accept>
-double FirstCrossing(const Quartic& f, double window, double sign, double contact,
-                     double speed_scale, const Accept& accept) {
-  if (std::abs(f[0]) <= contact) {
-    const double h = std::min(kContactHorizon, window);
-    const double slope = f[1] + h * (2.0 * f[2] + h * (3.0 * f[3] + h * 4.0 * f[4]));
-    if (sign * slope > speed_scale * kContactSpeed && accept(0.0)) return 0.0;
-  }
-  std::array<double, 4> roots;
-  const int n = RootsInInterval(f, 0.0, window, &roots);
-  for (int k = 0; k < n; ++k) {
-    if (sign * Derivative(f, roots[k]) > speed_scale * kContactSpeed && accept(roots[k])) {
-      return roots[k];
-    }
-  }
-  return kInfinity;
-}
-
-// Conservative advancement, for motions that are no polynomial (the 5-DOF model): a clearance
-// can close no faster than `speed` + `accel` t (the bodies' speeds now and the bound on their
-// accelerations), so no contact comes sooner than the root of speed t + accel t^2 / 2 = gap.
-double SafeStep(double gap, double speed, double accel) {
-  return 2.0 * gap / (speed + std::sqrt(speed * speed + 2.0 * accel * gap));
-}
-
-// The most steps a search by advancement takes before it gives up (std::runtime_error): near a
-// contact each step closes a fixed part of the clearance, and a landing try ends most searches
-// within a few dozen.
-constexpr int kMaxAdvances = 100000;
-
-// Touching bodies that are not closing are passed by at least this long a step.
-constexpr double kSmallestAdvance = 1e-9;  // [s]
-
-// The clearance of a ball to a contact at one instant: the gap, how fast it closes, what it is.
-struct Clearance {
-  double gap = std::numeric_limits<double>::infinity();
-  double closing = 0.0;
-  EventType type = EventType::kBallBall;
-  int index = -1;
-};
-
-// How far a 5-DOF ball pressed against a body by its accelerations alone (side spin curving it
-// into a ball it rolls past) may overlap it before the push is met: a push closes at no speed,
-// so its contact could otherwise not be told from a touch that parts, and met at every
-// nanosecond it would be met millions of times.
-constexpr double kPushOverlap = 1e-7;  // [m]
-
-// The first time in [t0, t1] at which the clearance falls to kContactTolerance while closing
-// faster than kSlowImpact, or to -kPushOverlap while closing at all (kInfinity if neither), by
-// safe steps. Where the nearest contact's closing speed promises it within reach, a try at
-// twice the time it would take: when that lands past it, bisected back onto it (on that
-// contact's own clearance, `element(t, c)`), and taken once safe steps over all contacts find
-// none sooner.
-template <typename ClearanceAt, typename ElementAt>
-std::pair<double, Clearance> FirstContactByAdvancement(const ClearanceAt& clearance,
-                                                       const ElementAt& element,
-                                                       const std::function<double(double)>& speed,
-                                                       double accel, double t0, double t1,
-                                                       bool land = true) {
-  const auto contact = [](const Clearance& c) {
-    return (c.gap <= kContactTolerance && c.closing > kSlowImpact) ||
-           (c.gap <= -kPushOverlap && c.closing > kContactSpeed);
-  };
-  double t = t0;
-  for (int step = 0; step < kMaxAdvances; ++step) {
-    const Clearance c = clearance(t);
-    if (contact(c)) return {t, c};
-    if (c.gap <= kContactTolerance) {
-      // Touching, not (yet) closing: on by the time the overlap allowed takes to fill (at least
-      // half of it, so that a push sliding along at full overlap is passed too).
-      const double room = std::max(c.gap + kPushOverlap, 0.5 * kPushOverlap);
-      t += std::max(SafeStep(room, speed(t), accel), kSmallestAdvance);
-    } else {
-      const double reach = t + 2.0 * c.gap / c.closing;
-      if (land && c.closing > 0.0 && reach <= t1 && element(reach, c).gap <= kContactTolerance) {
-        double lo = t, hi = reach;
-        while (hi - lo > 1e-13 * std::max(1.0, hi)) {
-          const double mid = 0.5 * (lo + hi);
-          (element(mid, c).gap > kContactTolerance ? lo : hi) = mid;
-        }
-        const Clearance at = element(hi, c);
-        if (contact(at)) {
-          const auto sooner = FirstContactByAdvancement(clearance, element, speed, accel, t, lo,
-                                                        /*land=*/false);
-          return sooner.first <= lo ? sooner : std::pair<double, Clearance>{hi, at};
-        }
-      }
-      t += SafeStep(c.gap, speed(t), accel);
-    }
-    if (t > t1) return {kInfinity, {}};
-  }
-  throw std::runtime_error("a contact search by advancement did not converge");
-}
-
-// The clearance of a ball of radius r in state s to one cushion line, jaw or capture line (an
-// infinite gap where that one cannot be met: beside a capture line, far behind a cushion).
-Clearance ElementClearance(const TableGeometry& table, double r, const BallState& s, EventType type,
-                           std::size_t k) {
-  const Eigen::Vector2d p = s.segment<2>(kX), v = s.segment<2>(kVx);
-  const int index = static_cast<int>(k);
-  switch (type) {
-    case EventType::kBallCushion: {
-      const CushionLine& line = table.lines[k];
-      const double height = (p - line.a).dot(line.normal);
-      const Eigen::Vector2d along = line.b - line.a;
-      const double s_along = (p - line.a).dot(along) / along.squaredNorm();
-      if (s_along < 0.0 || s_along > 1.0) {  // past an end: no nearer than the end
-        const Eigen::Vector2d end = s_along < 0.0 ? line.a : line.b;
-        return {(p - end).norm() - r, 0.0, type, index};
-      }
-      // Behind the nose line (the ball went through it) the gap is negative, so a search that
-      // lands past the contact sees it; farther behind than a diameter is over a pocket.
-      if (height < -2.0 * r) return {kInfinity, 0.0, type, index};
-      return {height - r, -v.dot(line.normal), type, index};
-    }
-    case EventType::kBallJaw: {
-      const Eigen::Vector2d out = p - table.points[k].centre;
-      const double distance = out.norm();
-      return {distance - r - table.points[k].radius, -v.dot(out) / distance, type, index};
-    }
-    case EventType::kBallPocket: {
-      const Pocket& pocket = table.pockets[k];
-      const Eigen::Vector2d along = pocket.capture_b - pocket.capture_a;
-      const double s_along = (p - pocket.capture_a).dot(along) / along.squaredNorm();
-      if (s_along < 0.0 || s_along > 1.0) return {kInfinity, 0.0, type, index};  // the jaws bound
-      return {-(p - pocket.capture_a).dot(pocket.inward), v.dot(pocket.inward), type, index};
-    }
-    default:
-      return {};
-  }
-}
-
-// The nearest cushion, jaw or capture line of a ball of radius r in state s (or the first one
-// it touches while closing).
-Clearance BoundaryClearance(const TableGeometry& table, double r, const BallState& s) {
-  Clearance nearest, touching;
-  const auto consider = [&](EventType type, std::size_t count) {
-    for (std::size_t k = 0; k < count; ++k) {
-      const Clearance c = ElementClearance(table, r, s, type, k);
-      if (c.gap < nearest.gap) nearest = c;
-      if (c.gap <= kContactTolerance && c.closing > kSlowImpact && touching.index < 0) {
-        touching = c;
-      }
-    }
-  };
-  consider(EventType::kBallCushion, table.lines.size());
-  consider(EventType::kBallJaw, table.points.size());
-  consider(EventType::kBallPocket, table.pockets.size());
-  return touching.index >= 0 ? touching : nearest;
-}
 
 // The frame of a cushion whose normal `n` points into the playing area: x along the cushion,
 // y into it, z up (right-handed: y is x turned by +90 degrees).
@@ -298,9 +93,8 @@ const char* EventTypeName(EventType type) {
 std::optional<physics::SimulationOptions> FiveDofWhereNeeded(
     const BallState& state, const physics::ModelParameters& params,
     const physics::SimulationOptions& options) {
-  constexpr double kRollingSlip = 1e-3;   // [m/s]
   constexpr double kStraightSpin = 20.0;  // [rad/s]
-  const bool rolling = ClothSlip(state, params.ball.radius).norm() <= kRollingSlip;
+  const bool rolling = ClothSlip(state, params.ball.radius).norm() <= kSlideSlip;
   if (rolling && std::abs(state[kWz]) <= kStraightSpin) return std::nullopt;
   return options;
 }
@@ -581,7 +375,6 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
       dropped.segment<5>(kVx).setZero();
       StartSegment(i, dropped);
       balls_[i].pocket = table_.pockets[index].name;
-      balls_[i].pocket_time = time_;
       event.pocket = *balls_[i].pocket;
       break;
     }

@@ -90,8 +90,7 @@ class TableSimulation {
   struct Ball {
     int id;
     std::vector<MotionSegment> segments;  // the last one is the current motion
-    std::optional<std::string> pocket;
-    double pocket_time = std::numeric_limits<double>::infinity();
+    std::optional<std::string> pocket;    // dropped: its last segment starts at the drop
   };
   struct Candidate {  // the next event of one kind for one ball or pair
     double time = std::numeric_limits<double>::infinity();

@@ -1,0 +1,177 @@
+// When two bodies on the table meet: the contact searches of the event loop
+// (`sim/table/table_simulation.h`), and the thresholds that tell a contact from a touch.
+//
+// A closed-form ball's centre moves on a parabola, so a contact is the first root of a
+// polynomial in time, closing (FirstCrossing on `sim/table/polynomial_roots.h`): ball-ball a
+// quartic, a cushion's nose line or a capture line a quadratic, a jaw's rounded nose a quartic.
+// A 5-DOF ball's path is no polynomial: its contacts are found by conservative advancement
+// (FirstContactByAdvancement), safe steps from the bound on how fast it can move, so none is
+// skipped either. Touching bodies are judged over a short horizon: closing by their speeds or
+// by their accelerations is an event at once, parting or grazing is none.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include "sim/physics/ball_state.h"
+#include "sim/table/ball_motion.h"
+#include "sim/table/polynomial_roots.h"
+#include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
+
+namespace billiard::table {
+
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Two balls, or a ball and a cushion, this close are in contact: a root found to double
+// precision puts them within about 1e-15 m, and a scene may place balls frozen together.
+inline constexpr double kContactTolerance = 1e-9;  // [m]
+
+// Touching bodies closing slower than this are not closing by their speed but, if at all, by
+// their accelerations (a ball pushed by its own spin into one it touches).
+inline constexpr double kContactSpeed = 1e-9;  // [m/s]
+
+// Impacts slower than this are pushes, not collisions: their energy (below 1e-9 J) is nothing,
+// and met as collisions they would part the bodies for a few nanoseconds each, millions of times
+// while one drives the other.
+inline constexpr double kSlowImpact = 1e-4;  // [m/s]
+
+// Touching bodies that will close within this time are an event now: a root so near is within
+// the rounding of the contact polynomial and could not be told from the contact itself.
+inline constexpr double kContactHorizon = 1e-6;  // [s]
+
+// The motion of a ball over tau = t - now: p(tau) = p + v tau + 1/2 a tau^2.
+struct Parabola {
+  Eigen::Vector2d p, v, a;
+};
+
+// A closed-form segment's motion from `now` on.
+Parabola ParabolaAt(const MotionSegment& s, double now);
+
+// |q(tau)|^2 - d^2 for q(tau) = p + v tau + 1/2 a tau^2, lowest order first.
+Quartic DistanceSquaredMinus(const Parabola& q, double d);
+
+// (q(tau) - origin) . n - offset, a quadratic.
+Quartic AlongMinus(const Parabola& q, const Eigen::Vector2d& origin, const Eigen::Vector2d& n,
+                   double offset);
+
+// p'(t).
+double Derivative(const Quartic& p, double t);
+
+// q(tau).
+Eigen::Vector2d PositionAt(const Parabola& q, double tau);
+
+// The first tau in [0, window] where f reaches 0 while decreasing (`sign` = -1; +1: while
+// increasing) faster than kContactSpeed (a root where the bodies graze, or touch and part, is
+// none) and `accept` holds. At f(0) within `contact` of 0 (touching) the way it moves is
+// the slope at kContactHorizon (or the window's end, where a motion changes): touching bodies
+// that close within it faster than kContactSpeed (f' = `speed_scale` times the closing speed),
+// by their speed or their accelerations, are an event at once, so none passes through another.
+template <typename Accept>
+double FirstCrossing(const Quartic& f, double window, double sign, double contact,
+                     double speed_scale, const Accept& accept) {
+  if (std::abs(f[0]) <= contact) {
+    const double h = std::min(kContactHorizon, window);
+    const double slope = f[1] + h * (2.0 * f[2] + h * (3.0 * f[3] + h * 4.0 * f[4]));
+    if (sign * slope > speed_scale * kContactSpeed && accept(0.0)) return 0.0;
+  }
+  std::array<double, 4> roots;
+  const int n = RootsInInterval(f, 0.0, window, &roots);
+  for (int k = 0; k < n; ++k) {
+    if (sign * Derivative(f, roots[k]) > speed_scale * kContactSpeed && accept(roots[k])) {
+      return roots[k];
+    }
+  }
+  return kInfinity;
+}
+
+// Conservative advancement, for motions that are no polynomial (the 5-DOF model): a clearance
+// can close no faster than `speed` + `accel` t (the bodies' speeds now and the bound on their
+// accelerations), so no contact comes sooner than the root of speed t + accel t^2 / 2 = gap.
+double SafeStep(double gap, double speed, double accel);
+
+// The most steps a search by advancement takes before it gives up (std::runtime_error): near a
+// contact each step closes a fixed part of the clearance, and a landing try ends most searches
+// within a few dozen.
+inline constexpr int kMaxAdvances = 100000;
+
+// Touching bodies that are not closing are passed by at least this long a step.
+inline constexpr double kSmallestAdvance = 1e-9;  // [s]
+
+// The clearance of a ball to a contact at one instant: the gap, how fast it closes, what it is.
+struct Clearance {
+  double gap = std::numeric_limits<double>::infinity();
+  double closing = 0.0;
+  EventType type = EventType::kBallBall;
+  int index = -1;
+};
+
+// How far a 5-DOF ball pressed against a body by its accelerations alone (side spin curving it
+// into a ball it rolls past) may overlap it before the push is met: a push closes at no speed,
+// so its contact could otherwise not be told from a touch that parts, and met at every
+// nanosecond it would be met millions of times.
+inline constexpr double kPushOverlap = 1e-7;  // [m]
+
+// The first time in [t0, t1] at which the clearance falls to kContactTolerance while closing
+// faster than kSlowImpact, or to -kPushOverlap while closing at all (kInfinity if neither), by
+// safe steps. Where the nearest contact's closing speed promises it within reach, a try at
+// twice the time it would take: when that lands past it, bisected back onto it (on that
+// contact's own clearance, `element(t, c)`), and taken once safe steps over all contacts find
+// none sooner.
+template <typename ClearanceAt, typename ElementAt>
+std::pair<double, Clearance> FirstContactByAdvancement(const ClearanceAt& clearance,
+                                                       const ElementAt& element,
+                                                       const std::function<double(double)>& speed,
+                                                       double accel, double t0, double t1,
+                                                       bool land = true) {
+  const auto contact = [](const Clearance& c) {
+    return (c.gap <= kContactTolerance && c.closing > kSlowImpact) ||
+           (c.gap <= -kPushOverlap && c.closing > kContactSpeed);
+  };
+  double t = t0;
+  for (int step = 0; step < kMaxAdvances; ++step) {
+    const Clearance c = clearance(t);
+    if (contact(c)) return {t, c};
+    if (c.gap <= kContactTolerance) {
+      // Touching, not (yet) closing: on by the time the overlap allowed takes to fill (at least
+      // half of it, so that a push sliding along at full overlap is passed too).
+      const double room = std::max(c.gap + kPushOverlap, 0.5 * kPushOverlap);
+      t += std::max(SafeStep(room, speed(t), accel), kSmallestAdvance);
+    } else {
+      const double reach = t + 2.0 * c.gap / c.closing;
+      if (land && c.closing > 0.0 && reach <= t1 && element(reach, c).gap <= kContactTolerance) {
+        double lo = t, hi = reach;
+        while (hi - lo > 1e-13 * std::max(1.0, hi)) {
+          const double mid = 0.5 * (lo + hi);
+          (element(mid, c).gap > kContactTolerance ? lo : hi) = mid;
+        }
+        const Clearance at = element(hi, c);
+        if (contact(at)) {
+          const auto sooner = FirstContactByAdvancement(clearance, element, speed, accel, t, lo,
+                                                        /*land=*/false);
+          return sooner.first <= lo ? sooner : std::pair<double, Clearance>{hi, at};
+        }
+      }
+      t += SafeStep(c.gap, speed(t), accel);
+    }
+    if (t > t1) return {kInfinity, {}};
+  }
+  throw std::runtime_error("a contact search by advancement did not converge");
+}
+
+// The clearance of a ball of radius r in state s to one cushion line, jaw or capture line (an
+// infinite gap where that one cannot be met: beside a capture line, far behind a cushion).
+Clearance ElementClearance(const TableGeometry& table, double r, const physics::BallState& s,
+                           EventType type, std::size_t k);
+
+// The nearest cushion, jaw or capture line of a ball of radius r in state s (or the first one
+// it touches while closing).
+Clearance BoundaryClearance(const TableGeometry& table, double r, const physics::BallState& s);
+
+}  // namespace billiard::table
