@@ -48,10 +48,9 @@ BreakRun TimeBreak(const table::TableGeometry& table, const physics::ModelParame
       run.ball_ball += e.type == table::EventType::kBallBall;
       run.cushion +=
           e.type == table::EventType::kBallCushion || e.type == table::EventType::kBallJaw;
-      run.pocket += e.type == table::EventType::kBallPocket;
+      run.pocketed += e.type == table::EventType::kBallPocket;
       run.transitions += e.type == table::EventType::kTransition;
     }
-    run.pocketed = run.pocket;
     run.duration_s = sim.events().empty() ? 0.0 : sim.events().back().time;
   }
   return run;

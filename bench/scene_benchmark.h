@@ -29,8 +29,7 @@ struct BreakRun {
   std::uint64_t seed = 0;
   double wall_us = 0.0;  // the fastest of the repeats, construction included
   int events = 0;
-  int ball_ball = 0, cushion = 0, pocket = 0, transitions = 0;
-  int pocketed = 0;
+  int ball_ball = 0, cushion = 0, pocketed = 0, transitions = 0;  // events of each kind
   double duration_s = 0.0;  // simulated time until everything rests
 };
 

@@ -73,18 +73,11 @@ ModelParameters ParseParameters(const std::string& json_text, const std::string&
 }
 
 ModelParameters LoadParameters(const std::string& name_or_path) {
-  for (const auto& [name, json] : internal::BuiltinParameterJson()) {
-    if (name == name_or_path) return ParseParameters(json, name);
-  }
-  std::string text;
-  if (!internal::ReadFile(name_or_path, &text)) {
-    std::string known;
-    for (const auto& name : BuiltinParameterSetNames()) known += (known.empty() ? "" : ", ") + name;
-    throw std::invalid_argument("unknown parameter set '" + name_or_path +
-                                "' (not a built-in set: " + known + "; not a readable file)");
-  }
+  bool from_file = false;
+  const std::string text = internal::BuiltinOrFileText(
+      internal::BuiltinParameterJson(), name_or_path, "parameter set", "set", &from_file);
   ModelParameters p = ParseParameters(text, name_or_path);
-  p.file = name_or_path;
+  if (from_file) p.file = name_or_path;
   return p;
 }
 

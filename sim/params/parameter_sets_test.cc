@@ -161,11 +161,11 @@ TEST(Parameters, TheHashIsTheSameForTheSameNumbersWhateverTheName) {
         &moved.contact.b_m,        &moved.contact.m_m,
         &moved.cue.mass,           &moved.cue.tip_restitution,
         &moved.cue.max_tip_offset, &moved.cue.max_speed,
-        &moved.cue.end_mass,
-        &k.ball_restitution,       &k.ball_friction_a,
-        &k.ball_friction_b,        &k.ball_friction_c,
-        &k.cushion_restitution,    &k.cushion_friction,
-        &moved.table.length,       &moved.table.width};
+        &moved.cue.end_mass,       &k.ball_restitution,
+        &k.ball_friction_a,        &k.ball_friction_b,
+        &k.ball_friction_c,        &k.cushion_restitution,
+        &k.cushion_friction,       &moved.table.length,
+        &moved.table.width};
     ASSERT_NE(fields[i], nullptr) << "number " << i << " is not in the list above";
     *fields[i] *= 1.0 + 1e-15;
     EXPECT_NE(ParameterHash(moved), ParameterHash(pool)) << "number " << i;

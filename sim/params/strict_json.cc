@@ -74,4 +74,22 @@ bool ReadFile(const std::string& path, std::string* text) {
   return true;
 }
 
+std::string BuiltinOrFileText(const std::vector<std::pair<std::string, std::string>>& builtin,
+                              const std::string& name_or_path, const std::string& what,
+                              const std::string& short_what, bool* from_file) {
+  if (from_file) *from_file = false;
+  for (const auto& [name, json] : builtin) {
+    if (name == name_or_path) return json;
+  }
+  std::string text;
+  if (!ReadFile(name_or_path, &text)) {
+    std::string known;
+    for (const auto& [name, json] : builtin) known += (known.empty() ? "" : ", ") + name;
+    throw std::invalid_argument("unknown " + what + " '" + name_or_path + "' (not a built-in " +
+                                short_what + ": " + known + "; not a readable file)");
+  }
+  if (from_file) *from_file = true;
+  return text;
+}
+
 }  // namespace billiard::params::internal

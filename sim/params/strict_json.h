@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace billiard::params::internal {
@@ -36,5 +37,12 @@ nlohmann::json ParseObject(const std::string& json_text, const std::string& orig
 
 // Reads the file at `path` into `text`; false when it cannot be opened.
 bool ReadFile(const std::string& path, std::string* text);
+
+// The JSON text of the built-in entry named `name_or_path`, else of the file at that path
+// (*from_file, when given, says which). Throws std::invalid_argument when it is neither: "unknown `what`
+// 'x' (not a built-in `short_what`: a, b; not a readable file)".
+std::string BuiltinOrFileText(const std::vector<std::pair<std::string, std::string>>& builtin,
+                              const std::string& name_or_path, const std::string& what,
+                              const std::string& short_what, bool* from_file = nullptr);
 
 }  // namespace billiard::params::internal

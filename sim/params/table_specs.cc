@@ -56,17 +56,9 @@ TableSpec ParseTableSpec(const std::string& json_text, const std::string& origin
 }
 
 TableSpec LoadTableSpec(const std::string& name_or_path) {
-  for (const auto& [name, json] : internal::BuiltinTableJson()) {
-    if (name == name_or_path) return ParseTableSpec(json, name);
-  }
-  std::string text;
-  if (!internal::ReadFile(name_or_path, &text)) {
-    std::string known;
-    for (const auto& name : TableNames()) known += (known.empty() ? "" : ", ") + name;
-    throw std::invalid_argument("unknown table '" + name_or_path +
-                                "' (not a built-in table: " + known + "; not a readable file)");
-  }
-  return ParseTableSpec(text, name_or_path);
+  return ParseTableSpec(
+      internal::BuiltinOrFileText(internal::BuiltinTableJson(), name_or_path, "table", "table"),
+      name_or_path);
 }
 
 }  // namespace billiard::params
