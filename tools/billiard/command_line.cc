@@ -4,11 +4,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace billiard::cli {
@@ -77,6 +79,28 @@ void RequireTrajectoryWithinLimit(double t_end, double dt, int balls) {
   reason << ", more than the " << kMaxTrajectoryRows << " rows"
          << " a trajectory file may hold (raise --sample-dt)";
   throw UsageError(reason.str());
+}
+
+void WriteTrajectoryCsv(const std::string& path, double t_end, double dt, int balls,
+                        const std::function<physics::BallState(double t, int k)>& state,
+                        const std::function<int(int k)>& id) {
+  RequireTrajectoryWithinLimit(t_end, dt, balls);
+  std::ofstream out(path);
+  if (!out) throw UsageError("cannot write trajectory file '" + path + "'");
+  out.precision(17);
+  out << (id ? "t,id," : "t,") << "X,Y,vx,vy,wx,wy,wz\n";
+  const long samples = static_cast<long>(TrajectorySamples(t_end, dt));
+  for (long i = 0; i < samples; ++i) {
+    const double t = std::min(i * dt, t_end);
+    for (int k = 0; k < balls; ++k) {
+      const physics::BallState s = state(t, k);
+      out << t;
+      if (id) out << ',' << id(k);
+      for (int c = 0; c < 7; ++c) out << ',' << s[c];
+      out << '\n';
+    }
+  }
+  if (!out) throw std::runtime_error("writing trajectory file '" + path + "' failed");
 }
 
 }  // namespace billiard::cli

@@ -1,11 +1,13 @@
 // Helpers shared by the billiard subcommands: strict number parsing and one-line errors.
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "sim/physics/ball_state.h"
 #include "sim/physics/parameters.h"
 
 namespace billiard::cli {
@@ -58,5 +60,12 @@ double TrajectorySamples(double t_end, double dt);
 // Refuses (UsageError), before any file is made, a trajectory of `balls` rows per sample that
 // would hold more than kMaxTrajectoryRows rows.
 void RequireTrajectoryWithinLimit(double t_end, double dt, int balls = 1);
+
+// Writes the trajectory CSV "t,[id,]X,Y,vx,vy,wx,wy,wz": at t = 0, dt, ..., t_end a row of each
+// of `balls` balls, `state(t, k)` for ball k (and its `id(k)`, a column only when given). Refuses
+// (UsageError) too many rows or a file it cannot make.
+void WriteTrajectoryCsv(const std::string& path, double t_end, double dt, int balls,
+                        const std::function<physics::BallState(double t, int k)>& state,
+                        const std::function<int(int k)>& id = nullptr);
 
 }  // namespace billiard::cli

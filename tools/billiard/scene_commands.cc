@@ -69,27 +69,6 @@ nlohmann::json EventJson(const table::TableEvent& e) {
   return j;
 }
 
-void WriteSceneTrajectoryCsv(const table::TableSimulation& sim, double dt,
-                             const std::string& path) {
-  const double t_end = sim.time();
-  RequireTrajectoryWithinLimit(t_end, dt, static_cast<int>(sim.ball_count()));
-  std::ofstream out(path);
-  if (!out) throw UsageError("cannot write trajectory file '" + path + "'");
-  out.precision(17);
-  out << "t,id,X,Y,vx,vy,wx,wy,wz\n";
-  const long samples = static_cast<long>(TrajectorySamples(t_end, dt));
-  for (long k = 0; k < samples; ++k) {
-    const double t = std::min(k * dt, t_end);
-    for (std::size_t i = 0; i < sim.ball_count(); ++i) {
-      const physics::BallState s = sim.StateAt(i, t);
-      out << t << ',' << sim.id(i);
-      for (int c = 0; c < 7; ++c) out << ',' << s[c];
-      out << '\n';
-    }
-  }
-  if (!out) throw std::runtime_error("writing trajectory file '" + path + "' failed");
-}
-
 }  // namespace
 
 decltype(table::TableSimulationOptions::five_dof) SceneMotionModel(
@@ -146,7 +125,9 @@ void SimulateScene(const SceneSimulationArgs& args) {
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
 
   if (!args.trajectory_path.empty()) {
-    WriteSceneTrajectoryCsv(*sim, args.sample_dt, args.trajectory_path);
+    WriteTrajectoryCsv(
+        args.trajectory_path, sim->time(), args.sample_dt, static_cast<int>(sim->ball_count()),
+        [&](double t, int k) { return sim->StateAt(k, t); }, [&](int k) { return sim->id(k); });
   }
   nlohmann::json j;
   j["table"] = geometry.name;

@@ -38,24 +38,6 @@ struct SimulateArgs {
   bool json = false;
 };
 
-void WriteTrajectoryCsv(const physics::Trajectory& trajectory, double t_end, double dt,
-                        const std::string& path) {
-  RequireTrajectoryWithinLimit(t_end, dt);
-  std::ofstream out(path);
-  if (!out) throw UsageError("cannot write trajectory file '" + path + "'");
-  out.precision(17);
-  out << "t,X,Y,vx,vy,wx,wy,wz\n";
-  const long samples = static_cast<long>(TrajectorySamples(t_end, dt));
-  for (long i = 0; i < samples; ++i) {
-    const double t = std::min(i * dt, t_end);
-    const physics::BallState s = trajectory.At(t);
-    out << t;
-    for (int j = 0; j < 7; ++j) out << ',' << s[j];
-    out << '\n';
-  }
-  if (!out) throw std::runtime_error("writing trajectory file '" + path + "' failed");
-}
-
 void Run(const SimulateArgs& args) {
   if (args.scene.empty() == args.state.empty()) {
     throw UsageError("give one of --state (one ball) and --scene (a table)");
@@ -133,7 +115,8 @@ void Run(const SimulateArgs& args) {
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
 
   if (!args.trajectory_path.empty()) {
-    WriteTrajectoryCsv(*result.trajectory, t, args.sample_dt, args.trajectory_path);
+    WriteTrajectoryCsv(args.trajectory_path, t, args.sample_dt, 1,
+                       [&](double time, int) { return result.trajectory->At(time); });
   }
 
   const physics::BallState& s = result.final_state;
