@@ -39,8 +39,8 @@ nlohmann::json ParseObject(const std::string& json_text, const std::string& orig
 bool ReadFile(const std::string& path, std::string* text);
 
 // The JSON text of the built-in entry named `name_or_path`, else of the file at that path
-// (*from_file, when given, says which). Throws std::invalid_argument when it is neither: "unknown `what`
-// 'x' (not a built-in `short_what`: a, b; not a readable file)".
+// (*from_file, when given, says which). Throws std::invalid_argument when it is neither:
+// "unknown `what` 'x' (not a built-in `short_what`: a, b; not a readable file)".
 std::string BuiltinOrFileText(const std::vector<std::pair<std::string, std::string>>& builtin,
                               const std::string& name_or_path, const std::string& what,
                               const std::string& short_what, bool* from_file = nullptr);
