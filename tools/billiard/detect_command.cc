@@ -23,14 +23,11 @@
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
 #include "tools/billiard/command_line.h"
+#include "tools/billiard/image_files.h"
 
 namespace billiard::cli {
 
 namespace {
-
-// As large as a camera's photograph gets; a JPEG header announcing more is not believed (a few
-// bytes can announce 65535 x 65535 pixels).
-constexpr messages::DecodeLimits kImageFileLimits{16384, 16384};
 
 std::string Pixels(double px) {
   std::ostringstream text;
@@ -40,42 +37,6 @@ std::string Pixels(double px) {
 
 std::string ImageSize(int width, int height) {
   return std::to_string(width) + "x" + std::to_string(height);
-}
-
-// Whether the file at `path` starts with a JPEG's SOI marker (whatever its name says).
-bool IsJpegFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char start[2] = {};
-  return in.read(start, 2) && static_cast<std::uint8_t>(start[0]) == 0xFF &&
-         static_cast<std::uint8_t>(start[1]) == 0xD8;
-}
-
-std::vector<std::uint8_t> ReadBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// The frame at `path`, in BGR. A JPEG is decoded as the estimator node decodes its frames
-// (messages::DecodeJpeg), which refuses a corrupt or truncated one where OpenCV's decoder would
-// hand back a damaged image; other formats by OpenCV. A missing, unreadable, damaged or empty
-// image is the user's error.
-cv::Mat ReadImage(const std::string& path) {
-  // Checked first: OpenCV would add a warning line of its own about a missing file.
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throw UsageError("cannot read an image from '" + path + "': no such file");
-  }
-  if (IsJpegFile(path)) {
-    const messages::DecodedImage jpeg = messages::DecodeJpeg(ReadBytes(path), kImageFileLimits);
-    if (!jpeg.ok) throw UsageError("cannot read an image from '" + path + "': " + jpeg.error);
-    if (jpeg.image.channels() == 3) return jpeg.image;
-    cv::Mat bgr;  // a gray JPEG, as cv::imread gives it in colour
-    cv::cvtColor(jpeg.image, bgr, cv::COLOR_GRAY2BGR);
-    return bgr;
-  }
-  const cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
-  if (image.empty()) throw UsageError("cannot read an image from '" + path + "'");
-  return image;
 }
 
 // A calibration maps the pixels of its own camera's frames: of another image size, it is another
@@ -93,7 +54,7 @@ void RequireCalibrationOfThisSize(const camera::CameraModel& camera, const cv::M
 // of the predicted size, then misses some or all of them.
 void WarnIfTheBallRadiusDisagrees(double predicted_px, const cv::Mat& image) {
   estimator::BallDetector measuring;  // given no radius, it measures the balls' radius
-  measuring.LearnCloth(image);
+  measuring.LearnTable(image);
   const double measured_px = measuring.radius_px();
   if (measured_px <= 0) return;  // nothing ball-like: the count of balls found says so
   if (std::abs(predicted_px - measured_px) <= estimator::kMaxBallRadiusMismatch * measured_px) {

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "tools/billiard/bench_command.h"
+#include "tools/billiard/bench_detect_command.h"
 #include "tools/billiard/bench_estimator_command.h"
 #include "tools/billiard/bench_planner_command.h"
 #include "tools/billiard/burst_command.h"
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddEdgeReportCommand(app);
   billiard::cli::AddDetectCommand(app);
   billiard::cli::AddCalibrateCommand(app);
+  billiard::cli::AddBenchDetectCommand(app);
   billiard::cli::AddRackCommand(app);
   billiard::cli::AddBenchScenesCommand(app);
   try {

@@ -1,0 +1,291 @@
+#include "bench/detection_benchmark.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <tuple>
+
+#include "bench/format.h"
+
+namespace billiard::bench {
+
+namespace {
+
+// A detection matches within max(kMinMatchPx, kMatchRadii R) of its label.
+constexpr double kMinMatchPx = 8.0, kMatchRadii = 0.6;
+
+std::vector<Eigen::Vector2d> Points(const nlohmann::json& entry, const char* key,
+                                    const std::string& where) {
+  std::vector<Eigen::Vector2d> points;
+  if (!entry.contains(key)) return points;
+  const auto& list = entry.at(key);
+  if (!list.is_array()) throw std::invalid_argument(where + ": '" + key + "' is not a list");
+  for (const auto& p : list) {
+    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) {
+      throw std::invalid_argument(where + ": '" + key + "' holds an entry that is not [u, v]");
+    }
+    points.emplace_back(p[0].get<double>(), p[1].get<double>());
+  }
+  return points;
+}
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+std::string Stem(const std::string& file) { return std::filesystem::path(file).stem().string(); }
+
+}  // namespace
+
+std::vector<LabelledFrame> LoadLabelledSet(const std::string& directory) {
+  const std::string path = directory + "/labels.json";
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument("cannot read '" + path + "'");
+  nlohmann::json labels;
+  try {
+    in >> labels;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument("'" + path + "' is not JSON: " + e.what());
+  }
+  if (!labels.is_object()) throw std::invalid_argument("'" + path + "' is not a JSON object");
+  std::vector<LabelledFrame> frames;
+  for (const auto& [file, entry] : labels.items()) {
+    if (!file.empty() && file[0] == '_') continue;  // notes
+    const std::string where = path + ": '" + file + "'";
+    if (!entry.is_object()) throw std::invalid_argument(where + " is not an object");
+    LabelledFrame frame;
+    frame.file = file;
+    frame.balls = Points(entry, "balls", where);
+    for (const char* key : {"in_pocket", "ignore"}) {
+      const auto more = Points(entry, key, where);
+      frame.ignored.insert(frame.ignored.end(), more.begin(), more.end());
+    }
+    if (!entry.contains("ball_radius_px") || !entry.at("ball_radius_px").is_number() ||
+        !(entry.at("ball_radius_px").get<double>() > 0)) {
+      throw std::invalid_argument(where + ": 'ball_radius_px' is not a positive number");
+    }
+    frame.radius_px = entry.at("ball_radius_px").get<double>();
+    if (entry.contains("view")) {
+      frame.view = entry.at("view").is_string() ? entry.at("view").get<std::string>() : "";
+      if (frame.view != "overhead" && frame.view != "oblique") {
+        throw std::invalid_argument(where + ": 'view' is neither \"overhead\" nor \"oblique\"");
+      }
+    }
+    if (entry.contains("source") && entry.at("source").is_string()) {
+      frame.source = entry.at("source").get<std::string>();
+    }
+    frames.push_back(frame);
+  }
+  if (frames.empty()) throw std::invalid_argument("'" + path + "' labels no frame");
+  return frames;
+}
+
+double MatchDistancePx(double radius_px) { return std::max(kMinMatchPx, kMatchRadii * radius_px); }
+
+FrameScore ScoreFrame(const LabelledFrame& frame,
+                      const std::vector<estimator::BallDetection>& detections) {
+  FrameScore score;
+  score.file = frame.file;
+  score.source = frame.source;
+  score.labels = static_cast<int>(frame.balls.size());
+  score.detections = detections;
+  score.detection_matched.assign(detections.size(), false);
+  const double gate = MatchDistancePx(frame.radius_px);
+  std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;
+  for (std::size_t i = 0; i < detections.size(); ++i) {
+    for (std::size_t j = 0; j < frame.balls.size(); ++j) {
+      const double d = (detections[i].pixel - frame.balls[j]).norm();
+      if (d < gate) pairs.emplace_back(d, i, j);
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  std::vector<bool> label_matched(frame.balls.size(), false);
+  for (const auto& [d, i, j] : pairs) {
+    if (score.detection_matched[i] || label_matched[j]) continue;
+    score.detection_matched[i] = label_matched[j] = true;
+    score.centre_errors.push_back(d);
+  }
+  score.found = static_cast<int>(score.centre_errors.size());
+  for (std::size_t j = 0; j < frame.balls.size(); ++j) {
+    if (!label_matched[j]) score.missed.push_back(frame.balls[j]);
+  }
+  for (std::size_t i = 0; i < detections.size(); ++i) {
+    if (score.detection_matched[i]) continue;
+    const bool ignored = std::any_of(frame.ignored.begin(), frame.ignored.end(), [&](const auto& p) {
+      return (detections[i].pixel - p).norm() < gate;
+    });
+    if (ignored) {
+      score.detection_matched[i] = true;
+    } else {
+      ++score.false_detections;
+    }
+  }
+  return score;
+}
+
+DetectionBenchmarkResult RunDetectionBenchmark(const std::string& directory,
+                                               const DetectionBenchmarkOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  DetectionBenchmarkResult result;
+  result.set = directory;
+  if (!options.overlay_dir.empty()) std::filesystem::create_directories(options.overlay_dir);
+  for (const LabelledFrame& frame : LoadLabelledSet(directory)) {
+    const cv::Mat image = options.read_image(directory + "/" + frame.file);
+    estimator::BallDetector detector;
+    const auto begin = std::chrono::steady_clock::now();
+    const auto balls = detector.Detect(image);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+            .count();
+    FrameScore score = ScoreFrame(frame, balls);
+    score.detect_ms = ms;
+    score.failure = detector.failure();
+    score.table_view = detector.table() ? estimator::TableViewName(detector.table()->view) : "";
+    score.view = !frame.view.empty() ? frame.view : score.table_view;
+    if (!options.overlay_dir.empty()) {
+      const std::string path = options.overlay_dir + "/" + Stem(frame.file) + ".jpg";
+      if (!cv::imwrite(path, ScoreOverlay(image, frame, score))) {
+        throw std::runtime_error("cannot write '" + path + "'");
+      }
+    }
+    options.progress(frame.file + ": " + std::to_string(score.found) + " of " +
+                     std::to_string(score.labels) + " found, " +
+                     std::to_string(score.false_detections) + " false, " + Fixed(ms, 1) + " ms" +
+                     (score.failure.empty() ? "" : " (" + score.failure + ")"));
+    result.frames.push_back(std::move(score));
+  }
+  result.wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+cv::Mat ScoreOverlay(const cv::Mat& image, const LabelledFrame& frame, const FrameScore& score) {
+  cv::Mat out = image.clone();
+  const double gate = MatchDistancePx(frame.radius_px);
+  const auto point = [](const Eigen::Vector2d& p) {
+    return cv::Point(static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())));
+  };
+  const int thickness = std::max(1, static_cast<int>(frame.radius_px / 8));
+  for (const auto& p : frame.ignored) {
+    cv::circle(out, point(p), static_cast<int>(gate), {160, 160, 160}, thickness);
+  }
+  for (const auto& p : score.missed) {
+    cv::circle(out, point(p), static_cast<int>(frame.radius_px + 3), {0, 255, 255}, 2 * thickness);
+  }
+  for (std::size_t i = 0; i < score.detections.size(); ++i) {
+    const auto& d = score.detections[i];
+    const cv::Scalar colour = score.detection_matched[i] ? cv::Scalar(0, 255, 0)
+                                                          : cv::Scalar(0, 0, 255);
+    cv::circle(out, point(d.pixel), static_cast<int>(std::lround(d.radius_px)), colour, thickness);
+    cv::drawMarker(out, point(d.pixel), colour, cv::MARKER_CROSS, 5, 1);
+  }
+  for (const auto& p : frame.balls) cv::drawMarker(out, point(p), {255, 0, 255}, cv::MARKER_TILTED_CROSS, 5, 1);
+  return out;
+}
+
+Totals Total(const std::vector<const FrameScore*>& frames) {
+  Totals t;
+  std::vector<double> errors, ms;
+  for (const FrameScore* f : frames) {
+    ++t.frames;
+    t.labels += f->labels;
+    t.found += f->found;
+    t.false_detections += f->false_detections;
+    errors.insert(errors.end(), f->centre_errors.begin(), f->centre_errors.end());
+    ms.push_back(f->detect_ms);
+  }
+  t.recall = t.labels ? static_cast<double>(t.found) / t.labels : 0;
+  t.precision = t.found + t.false_detections
+                    ? static_cast<double>(t.found) / (t.found + t.false_detections)
+                    : 0;
+  t.median_error_px = Median(errors);
+  t.median_detect_ms = Median(ms);
+  return t;
+}
+
+namespace {
+
+std::map<std::string, std::vector<const FrameScore*>> ByView(const DetectionBenchmarkResult& r) {
+  std::map<std::string, std::vector<const FrameScore*>> groups;
+  for (const FrameScore& f : r.frames) {
+    groups[f.view.empty() ? "no table" : f.view].push_back(&f);
+    groups["all"].push_back(&f);
+  }
+  return groups;
+}
+
+nlohmann::json TotalsJson(const Totals& t) {
+  return {{"frames", t.frames},
+          {"labels", t.labels},
+          {"found", t.found},
+          {"false", t.false_detections},
+          {"recall", t.recall},
+          {"precision", t.precision},
+          {"median_centre_error_px", t.median_error_px},
+          {"median_detect_ms", t.median_detect_ms}};
+}
+
+}  // namespace
+
+nlohmann::json DetectionSummaryJson(const DetectionBenchmarkResult& result) {
+  nlohmann::json views = nlohmann::json::object();
+  for (const auto& [view, frames] : ByView(result)) views[view] = TotalsJson(Total(frames));
+  return {{"set", result.set}, {"views", views}, {"wall_s", result.wall_s}};
+}
+
+void WriteDetectionReport(const DetectionBenchmarkResult& result, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  nlohmann::json frames = nlohmann::json::array();
+  for (const FrameScore& f : result.frames) {
+    nlohmann::json missed = nlohmann::json::array();
+    for (const auto& p : f.missed) missed.push_back({p.x(), p.y()});
+    frames.push_back({{"file", f.file},
+                      {"view", f.view},
+                      {"table_view", f.table_view},
+                      {"labels", f.labels},
+                      {"found", f.found},
+                      {"false", f.false_detections},
+                      {"median_centre_error_px", Median(f.centre_errors)},
+                      {"detect_ms", f.detect_ms},
+                      {"missed", missed},
+                      {"failure", f.failure}});
+  }
+  nlohmann::json all = DetectionSummaryJson(result);
+  all["frames"] = frames;
+  OpenForWriting(dir + "/detection_results.json") << all.dump(1) << "\n";
+
+  std::ofstream md = OpenForWriting(dir + "/detection_report.md");
+  md << "# Ball detection on a labelled set\n\n"
+     << "`billiard bench-detect --set " << result.set << "`: every frame through the detector "
+     << "from scratch (table, cloth, scale, balls), no radius given. A detection matches a label "
+     << "within max(8 px, 0.6 R); balls labelled in a pocket or ignored count neither way. "
+     << "Overlays: matched detections green, false ones red, missed labels yellow.\n\n"
+     << "| view | frames | labels | found | false | recall | precision | median centre error "
+        "[px] | median time [ms] |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& [view, group] : ByView(result)) {
+    const Totals t = Total(group);
+    md << "| " << view << " | " << t.frames << " | " << t.labels << " | " << t.found << " | "
+       << t.false_detections << " | " << Fixed(100 * t.recall, 1) << " % | "
+       << Fixed(100 * t.precision, 1) << " % | " << Fixed(t.median_error_px, 2) << " | "
+       << Fixed(t.median_detect_ms, 1) << " |\n";
+  }
+  md << "\n| frame | view (found) | labels | found | false | median error [px] | time [ms] | "
+        "note |\n|---|---|---|---|---|---|---|---|\n";
+  for (const FrameScore& f : result.frames) {
+    md << "| " << f.file << " | " << f.view
+       << (f.table_view.empty() || f.table_view == f.view ? "" : " (" + f.table_view + ")")
+       << " | " << f.labels << " | " << f.found << " | " << f.false_detections << " | "
+       << Fixed(Median(f.centre_errors), 2) << " | " << Fixed(f.detect_ms, 1) << " | "
+       << f.failure << " |\n";
+  }
+  if (!md) throw std::runtime_error("writing the detection report failed");
+}
+
+}  // namespace billiard::bench

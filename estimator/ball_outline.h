@@ -1,0 +1,43 @@
+// One ball's outline to a fraction of a pixel, from a guess of its centre and radius: what the
+// detector does with each candidate (ball_detector.h), for isolated balls, balls touching in a
+// rack, balls half hidden by a cushion or an arm.
+//
+// Along each of kOutlineRays rays from the guessed centre, the ball's edge is where the colour
+// (CIE L*a*b*, so that a change of hue counts as much as one of brightness) changes fastest: the
+// outline of a ball against the cloth, against its own shadow, or against the dark crease where
+// it touches another ball. A ray may cross several such places (a stripe, the number's disc, a
+// highlight, the neighbour's far side): every local maximum of the colour's rate of change is
+// kept as a candidate. The circle is then fitted by iteratively reweighted least squares (Tukey's
+// biweight) to the candidate of each ray nearest the current circle, with the expected radius as
+// a weak prior, so that internal edges and occluders (outliers) lose their say; the rays are cast
+// again from the new centre (crossing the edge square on) and the circle fitted once more.
+//
+// A ray supports the circle when an edge of at least `min_edge` lies within a pixel (or 8 % of
+// the radius) of it: the fraction of supporting rays and the largest gap between them say how
+// much of a round outline is there.
+#pragma once
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+#include <optional>
+
+namespace billiard::estimator {
+
+inline constexpr int kOutlineRays = 48;
+
+struct BallOutline {
+  Eigen::Vector2d centre;    // [px], OpenCV convention
+  double radius = 0;         // [px]
+  int supporting_rays = 0;   // of kOutlineRays
+  double largest_gap = 0;    // [rad] between neighbouring supporting rays
+  double edge_strength = 0;  // mean rate of colour change across the outline [L*a*b* per px]
+};
+
+// The outline of the ball whose centre is about `start` [px] and radius about `radius` [px] in
+// a BGR frame; `min_edge` [L*a*b* units per px] is the weakest change of colour that counts as an
+// edge (a few times the cloth's noise). Empty when the rays find too few edges, or the circle
+// they fit moves more than a radius away or changes its radius by more than 40 %.
+std::optional<BallOutline> FitBallOutline(const cv::Mat& bgr, const Eigen::Vector2d& start,
+                                          double radius, double min_edge);
+
+}  // namespace billiard::estimator

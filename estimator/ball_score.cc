@@ -1,0 +1,94 @@
+#include "estimator/ball_score.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+namespace billiard::estimator {
+
+namespace {
+
+constexpr double kOutlineFrom = 0.45, kOutlineWidth = 0.35;
+constexpr double kMaxGap = 0.9 * M_PI;
+constexpr double kSizeTolerance = 0.25;
+constexpr double kVotesFrom = 0.08, kVotesWidth = 0.25;
+constexpr double kColourFrom = 8.0, kColourWidth = 12.0;
+constexpr double kShineFrom = 15.0, kShineWidth = 20.0;
+constexpr double kShinePercentile = 0.98;
+// The colour is measured over the disc of kColourRadii of the fitted radius (inside the blur of
+// the outline), the shine over kShineRadii (a highlight may sit near the rim).
+constexpr double kColourRadii = 0.7, kShineRadii = 0.85;
+
+double Ramp(double x, double from, double width) {
+  return std::clamp((x - from) / width, 0.0, 1.0);
+}
+
+cv::Vec3f LabOf(const cv::Vec3f& bgr) {
+  const cv::Mat pixel(1, 1, CV_32FC3, cv::Scalar(bgr[0] / 255.0, bgr[1] / 255.0, bgr[2] / 255.0));
+  cv::Mat lab;
+  cv::cvtColor(pixel, lab, cv::COLOR_BGR2Lab);
+  return lab.at<cv::Vec3f>(0, 0);
+}
+
+// The median colour distance from the cloth and the shine (98th percentile less the median of
+// L*) of the ball's disc; false when the disc is outside the frame.
+bool MeasureLook(const cv::Mat& bgr, const BallOutline& outline, const cv::Vec3f& cloth_bgr,
+                 double* colour_distance, double* shine) {
+  const double reach = kShineRadii * outline.radius;
+  const cv::Rect rect =
+      cv::Rect(static_cast<int>(std::floor(outline.centre.x() - reach)),
+               static_cast<int>(std::floor(outline.centre.y() - reach)),
+               static_cast<int>(2 * reach) + 2, static_cast<int>(2 * reach) + 2) &
+      cv::Rect(0, 0, bgr.cols, bgr.rows);
+  if (rect.empty()) return false;
+  cv::Mat scaled, lab;
+  bgr(rect).convertTo(scaled, CV_32F, 1.0 / 255);
+  cv::cvtColor(scaled, lab, cv::COLOR_BGR2Lab);
+  const cv::Vec3f cloth = LabOf(cloth_bgr);
+  const double colour_reach2 = std::pow(kColourRadii * outline.radius, 2);
+  std::vector<float> distances, lightness;
+  for (int y = 0; y < lab.rows; ++y) {
+    const auto* row = lab.ptr<cv::Vec3f>(y);
+    const double dy = rect.y + y - outline.centre.y();
+    for (int x = 0; x < lab.cols; ++x) {
+      const double dx = rect.x + x - outline.centre.x();
+      const double d2 = dx * dx + dy * dy;
+      if (d2 > reach * reach) continue;
+      lightness.push_back(row[x][0]);
+      if (d2 <= colour_reach2) distances.push_back(static_cast<float>(cv::norm(row[x] - cloth)));
+    }
+  }
+  if (distances.empty() || lightness.empty()) return false;
+  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+  *colour_distance = distances[distances.size() / 2];
+  std::sort(lightness.begin(), lightness.end());
+  *shine = lightness[static_cast<std::size_t>(kShinePercentile * (lightness.size() - 1))] -
+           lightness[lightness.size() / 2];
+  return true;
+}
+
+}  // namespace
+
+double BallEvidence::Score() const { return std::sqrt(outline * size * votes * look); }
+
+BallEvidence EvidenceForBall(const cv::Mat& bgr, const BallOutline& outline, double expected_radius,
+                             const cv::Vec3f& cloth_bgr, double vote_support) {
+  BallEvidence evidence;
+  evidence.outline =
+      outline.largest_gap < kMaxGap
+          ? Ramp(static_cast<double>(outline.supporting_rays) / kOutlineRays, kOutlineFrom,
+                 kOutlineWidth)
+          : 0.0;
+  const double q = (outline.radius / expected_radius - 1.0) / kSizeTolerance;
+  evidence.size = std::clamp(1.0 - q * q, 0.0, 1.0);
+  evidence.votes = Ramp(vote_support, kVotesFrom, kVotesWidth);
+  double colour_distance = 0, shine = 0;
+  if (MeasureLook(bgr, outline, cloth_bgr, &colour_distance, &shine)) {
+    evidence.look = std::max(Ramp(colour_distance, kColourFrom, kColourWidth),
+                             Ramp(shine, kShineFrom, kShineWidth));
+  }
+  return evidence;
+}
+
+}  // namespace billiard::estimator

@@ -1,0 +1,411 @@
+#include "estimator/table_finder.h"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <random>
+#include <vector>
+
+namespace billiard::estimator {
+
+namespace {
+
+// The search resolution: the frame's longer side reduced to this many pixels.
+constexpr double kSearchSize = 400.0;
+// The cloth colour's mode: a histogram of L* in bins of kLightnessBin and a*, b* in bins of
+// kChromaBin, each pixel weighted by 1 - d^2 (d: its offset from the image centre over half the
+// image's width and height), so that a cloth filling the middle wins over a floor filling the
+// edges.
+constexpr int kLightnessBins = 10;
+constexpr double kLightnessBin = 10.0;
+constexpr int kChromaBins = 64;
+constexpr double kChromaBin = 4.0;
+// A pixel is cloth when its chromaticity (b, g over b + g + r) is within kChromaSpreads robust
+// spreads of the cloth's (but never less than kMinChromaTolerance: a clean synthetic cloth), its
+// brightness within [kMinBrightness, kMaxBrightness] of the cloth's (shadows, vignetting, a
+// light), and it is not on an edge stronger than kMaxRelativeGradient (Sobel magnitude over
+// brightness): the barrier of the cushion's nose and the rail, which a floor of the cloth's
+// colour beyond them would otherwise join.
+constexpr double kChromaSpreads = 4.0;
+constexpr double kMinChromaTolerance = 0.02;
+constexpr double kMinBrightness = 0.4, kMaxBrightness = 1.7;
+constexpr double kMaxRelativeGradient = 0.8;
+// The cloth must cover this fraction of the frame at least.
+constexpr double kMinClothFraction = 0.04;
+// The outline's sides: the hull is reduced to four vertices with a tolerance growing from
+// kFirstPolygonTolerance of its perimeter; each side is fitted to the outline points within
+// kSideBand of the perimeter of it and between kSideEnd and 1 - kSideEnd along it (the corner
+// pockets and their jaws are outside); RANSAC keeps the points within kRansacInlierPx (search px).
+constexpr double kFirstPolygonTolerance = 0.01, kPolygonToleranceStep = 0.005,
+                 kLastPolygonTolerance = 0.3;
+constexpr double kSideBand = 0.02;
+constexpr double kSideEnd = 0.12;
+constexpr double kRansacInlierPx = 1.5;
+constexpr int kRansacTries = 200;
+// The table's long side over its short side.
+constexpr double kTableAspect = 2.0;
+// The two focal lengths of Zhang's constraints agree within this factor for the right
+// assignment of the long sides (an overhead view makes them 0 / 0: no camera, no answer).
+constexpr double kFocalAgreement = 1.3;
+
+struct Line {
+  Eigen::Vector3d coefficients;  // a x + b y + c = 0, (a, b) unit
+  double rms = 0;
+  int points = 0;
+};
+
+cv::Mat ToLab(const cv::Mat& bgr) {
+  cv::Mat scaled, lab;
+  bgr.convertTo(scaled, CV_32F, 1.0 / 255);
+  cv::cvtColor(scaled, lab, cv::COLOR_BGR2Lab);
+  return lab;
+}
+
+int HistogramBin(const cv::Vec3f& lab) {
+  const int l = std::clamp(static_cast<int>(lab[0] / kLightnessBin), 0, kLightnessBins - 1);
+  const int a = std::clamp(static_cast<int>((lab[1] + 128) / kChromaBin), 0, kChromaBins - 1);
+  const int b = std::clamp(static_cast<int>((lab[2] + 128) / kChromaBin), 0, kChromaBins - 1);
+  return (l * kChromaBins + a) * kChromaBins + b;
+}
+
+// The cloth's colour (BGR): the mean of the pixels in the mode of the centre-weighted L*a*b*
+// histogram (the bins next to the fullest neighbourhood of bins).
+cv::Vec3f ClothColour(const cv::Mat& small, const cv::Mat& lab) {
+  std::vector<float> histogram(kLightnessBins * kChromaBins * kChromaBins, 0.0f);
+  const double half_w = 0.5 * small.cols, half_h = 0.5 * small.rows;
+  for (int y = 0; y < lab.rows; ++y) {
+    const auto* row = lab.ptr<cv::Vec3f>(y);
+    const double dy = (y - half_h) / half_h;
+    for (int x = 0; x < lab.cols; ++x) {
+      const double dx = (x - half_w) / half_w;
+      const double weight = 1.0 - (dx * dx + dy * dy);  // 0 from the middle of each edge out
+      if (weight > 0) histogram[HistogramBin(row[x])] += static_cast<float>(weight);
+    }
+  }
+  int best_l = 0, best_a = 0, best_b = 0;
+  float best = -1;
+  for (int l = 0; l < kLightnessBins; ++l) {
+    for (int a = 1; a + 1 < kChromaBins; ++a) {
+      for (int b = 1; b + 1 < kChromaBins; ++b) {
+        float sum = 0;
+        for (int dl = std::max(0, l - 1); dl <= std::min(kLightnessBins - 1, l + 1); ++dl) {
+          for (int da = -1; da <= 1; ++da) {
+            for (int db = -1; db <= 1; ++db) {
+              sum += histogram[(dl * kChromaBins + a + da) * kChromaBins + b + db];
+            }
+          }
+        }
+        if (sum > best) {
+          best = sum;
+          best_l = l;
+          best_a = a;
+          best_b = b;
+        }
+      }
+    }
+  }
+  cv::Vec3d sum(0, 0, 0);
+  double count = 0;
+  for (int y = 0; y < lab.rows; ++y) {
+    const auto* row = lab.ptr<cv::Vec3f>(y);
+    const auto* colour = small.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < lab.cols; ++x) {
+      const int bin = HistogramBin(row[x]);
+      const int l = bin / (kChromaBins * kChromaBins), a = (bin / kChromaBins) % kChromaBins,
+                b = bin % kChromaBins;
+      if (std::abs(l - best_l) <= 1 && std::abs(a - best_a) <= 1 && std::abs(b - best_b) <= 1) {
+        sum += cv::Vec3d(colour[x][0], colour[x][1], colour[x][2]);
+        ++count;
+      }
+    }
+  }
+  return cv::Vec3f(sum / std::max(1.0, count));
+}
+
+// Pixels of about the cloth's chromaticity and brightness, off strong edges.
+cv::Mat ClothLike(const cv::Mat& small, const cv::Vec3f& cloth) {
+  const double cloth_sum = cloth[0] + cloth[1] + cloth[2];
+  const double cb = cloth[0] / cloth_sum, cg = cloth[1] / cloth_sum;
+  cv::Mat distance(small.size(), CV_32F), brightness(small.size(), CV_32F);
+  for (int y = 0; y < small.rows; ++y) {
+    const auto* in = small.ptr<cv::Vec3b>(y);
+    auto* d = distance.ptr<float>(y);
+    auto* s = brightness.ptr<float>(y);
+    for (int x = 0; x < small.cols; ++x) {
+      const double sum = in[x][0] + in[x][1] + in[x][2] + 1e-3;
+      d[x] = static_cast<float>(std::hypot(in[x][0] / sum - cb, in[x][1] / sum - cg));
+      s[x] = static_cast<float>(sum / cloth_sum);
+    }
+  }
+  // The spread of the chromaticity among the cloth-like pixels of the frame's middle.
+  std::vector<float> near;
+  for (int y = small.rows / 4; y < 3 * small.rows / 4; ++y) {
+    for (int x = small.cols / 4; x < 3 * small.cols / 4; ++x) {
+      const float d = distance.at<float>(y, x);
+      if (d < 0.05f && std::abs(brightness.at<float>(y, x) - 1.0f) < 0.3f) near.push_back(d);
+    }
+  }
+  double tolerance = kMinChromaTolerance;
+  if (!near.empty()) {
+    std::nth_element(near.begin(), near.begin() + near.size() / 2, near.end());
+    tolerance = std::max(tolerance, kChromaSpreads * near[near.size() / 2]);
+  }
+  cv::Mat grey, gx, gy, magnitude, grey_f;
+  cv::cvtColor(small, grey, cv::COLOR_BGR2GRAY);
+  grey.convertTo(grey_f, CV_32F);
+  cv::Sobel(grey_f, gx, CV_32F, 1, 0);
+  cv::Sobel(grey_f, gy, CV_32F, 0, 1);
+  cv::magnitude(gx, gy, magnitude);
+  const cv::Mat relative = magnitude / (grey_f + 10.0f);
+  cv::Mat cloth_like = (distance < tolerance) & (brightness > kMinBrightness) &
+                       (brightness < kMaxBrightness) & (relative < kMaxRelativeGradient);
+  cv::morphologyEx(cloth_like, cloth_like, cv::MORPH_OPEN,
+                   cv::getStructuringElement(cv::MORPH_ELLIPSE, {3, 3}));
+  return cloth_like;
+}
+
+// The cloth-like region that is largest once weighted by how central it is.
+cv::Mat LargestCentralRegion(const cv::Mat& cloth_like) {
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(cloth_like, labels, stats, centroids, 4);
+  int best = 0;
+  double best_score = 0;
+  for (int i = 1; i < n; ++i) {
+    const double dx = centroids.at<double>(i, 0) / cloth_like.cols - 0.5;
+    const double dy = centroids.at<double>(i, 1) / cloth_like.rows - 0.5;
+    const double score = stats.at<int>(i, cv::CC_STAT_AREA) *
+                         std::max(0.1, 1.0 - 2.0 * (dx * dx + dy * dy));
+    if (score > best_score) {
+      best_score = score;
+      best = i;
+    }
+  }
+  if (best == 0) return cv::Mat::zeros(cloth_like.size(), CV_8U);
+  return labels == best;
+}
+
+cv::Mat FillHoles(const cv::Mat& region) {
+  cv::Mat padded(region.rows + 2, region.cols + 2, CV_8U, cv::Scalar(0));
+  region.copyTo(padded(cv::Rect(1, 1, region.cols, region.rows)));
+  cv::floodFill(padded, cv::Point(0, 0), 128);
+  return padded(cv::Rect(1, 1, region.cols, region.rows)) != 128;
+}
+
+// The line through the outline points near the side from `a` to `b`: RANSAC (seeded, so that a
+// frame always gives the same table) then least squares over its inliers.
+std::optional<Line> FitSide(const std::vector<cv::Point>& outline, const cv::Point2d& a,
+                            const cv::Point2d& b, double perimeter) {
+  const cv::Point2d along = b - a;
+  const double length = cv::norm(along);
+  if (length < 1) return std::nullopt;
+  const cv::Point2d u = along / length, normal(-u.y, u.x);
+  std::vector<cv::Point2d> points;
+  for (const cv::Point& p : outline) {
+    const cv::Point2d q = cv::Point2d(p) - a;
+    const double t = q.dot(u) / length;
+    if (t > kSideEnd && t < 1 - kSideEnd && std::abs(q.dot(normal)) < kSideBand * perimeter) {
+      points.push_back(p);
+    }
+  }
+  if (points.size() < 2) return std::nullopt;
+  std::mt19937 random(1);
+  std::uniform_int_distribution<std::size_t> pick(0, points.size() - 1);
+  Eigen::Vector3d best_line = Eigen::Vector3d::Zero();
+  int best_count = 0;
+  for (int attempt = 0; attempt < kRansacTries; ++attempt) {
+    const cv::Point2d p1 = points[pick(random)], p2 = points[pick(random)];
+    const cv::Point2d d = p2 - p1;
+    const double n = cv::norm(d);
+    if (n < 5) continue;
+    const Eigen::Vector3d line(-d.y / n, d.x / n, (d.y * p1.x - d.x * p1.y) / n);
+    int count = 0;
+    for (const auto& p : points) {
+      count += std::abs(line.dot(Eigen::Vector3d(p.x, p.y, 1))) < kRansacInlierPx;
+    }
+    if (count > best_count) {
+      best_count = count;
+      best_line = line;
+    }
+  }
+  std::vector<cv::Point2f> inliers;
+  for (const auto& p : points) {
+    if (std::abs(best_line.dot(Eigen::Vector3d(p.x, p.y, 1))) < kRansacInlierPx) {
+      inliers.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+    }
+  }
+  if (inliers.size() < 2) return std::nullopt;
+  cv::Vec4f fitted;
+  cv::fitLine(inliers, fitted, cv::DIST_L2, 0, 0.01, 0.01);
+  Line line;
+  line.coefficients = {-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]};
+  double squares = 0;
+  for (const auto& p : inliers) {
+    const double e = line.coefficients.dot(Eigen::Vector3d(p.x, p.y, 1));
+    squares += e * e;
+  }
+  line.points = static_cast<int>(inliers.size());
+  line.rms = std::sqrt(squares / inliers.size());
+  return line;
+}
+
+// The homography from the table (long side along x when `long_first`, else along y first and
+// then turned so that x is the long side) to the image of `corners`.
+Eigen::Matrix3d ImageFromTable(const std::array<Eigen::Vector2d, 4>& corners, bool long_first) {
+  const float a = static_cast<float>(kTableAspect);
+  const std::vector<cv::Point2f> table =
+      long_first ? std::vector<cv::Point2f>{{0, 0}, {a, 0}, {a, 1}, {0, 1}}
+                 : std::vector<cv::Point2f>{{0, 0}, {0, 1}, {a, 1}, {a, 0}};
+  std::vector<cv::Point2f> image;
+  for (const auto& c : corners) {
+    image.emplace_back(static_cast<float>(c.x()), static_cast<float>(c.y()));
+  }
+  const cv::Mat h = cv::getPerspectiveTransform(table, image);
+  Eigen::Matrix3d m;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) m(i, j) = h.at<double>(i, j);
+  }
+  return m;
+}
+
+// The squared focal lengths of the pinhole (square pixels, principal point at the image centre)
+// a homography from a plane implies, from each of Zhang's (2000) two constraints on the rotation
+// (its first two columns orthogonal, of equal length). Negative or infinite when the homography
+// allows no such camera, or cannot tell (an overhead view).
+std::pair<double, double> FocalLengthsSquared(const Eigen::Matrix3d& image_from_table,
+                                              const cv::Size& size) {
+  Eigen::Matrix3d centred = Eigen::Matrix3d::Identity();
+  centred(0, 2) = -0.5 * (size.width - 1);
+  centred(1, 2) = -0.5 * (size.height - 1);
+  const Eigen::Matrix3d h = centred * image_from_table;
+  const double orthogonal = -(h(0, 0) * h(0, 1) + h(1, 0) * h(1, 1)) / (h(2, 0) * h(2, 1));
+  const double equal = (h(0, 0) * h(0, 0) + h(1, 0) * h(1, 0) - h(0, 1) * h(0, 1) -
+                        h(1, 1) * h(1, 1)) /
+                       (h(2, 1) * h(2, 1) - h(2, 0) * h(2, 0));
+  return {orthogonal, equal};
+}
+
+// Whether the first side (corner 0 to 1) and its opposite are the long ones.
+bool LongSideFirst(const std::array<Eigen::Vector2d, 4>& corners, const cv::Size& size) {
+  double disagreement[2];
+  for (const bool long_first : {true, false}) {
+    const auto [f1, f2] = FocalLengthsSquared(ImageFromTable(corners, long_first), size);
+    const bool camera = f1 > 0 && f2 > 0 && std::isfinite(f1) && std::isfinite(f2);
+    disagreement[long_first ? 0 : 1] = camera ? std::abs(std::log(f1 / f2)) : HUGE_VAL;
+  }
+  const double agreement = 2 * std::log(kFocalAgreement);  // squared focal lengths
+  if (disagreement[0] < agreement && disagreement[1] > agreement) return true;
+  if (disagreement[1] < agreement && disagreement[0] > agreement) return false;
+  const double first = (corners[1] - corners[0]).norm() + (corners[2] - corners[3]).norm();
+  const double second = (corners[2] - corners[1]).norm() + (corners[3] - corners[0]).norm();
+  return first >= second;
+}
+
+}  // namespace
+
+const char* TableViewName(TableView view) {
+  return view == TableView::kOverhead ? "overhead" : "oblique";
+}
+
+bool TableRegion::Contains(const Eigen::Vector2d& pixel, double margin_px) const {
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector2d a = corners[i], b = corners[(i + 1) % 4];
+    const Eigen::Vector2d edge = (b - a).normalized();
+    const Eigen::Vector2d inward(-edge.y(), edge.x());
+    const Eigen::Vector2d opposite = corners[(i + 2) % 4] - a;
+    const double sign = inward.dot(opposite) > 0 ? 1.0 : -1.0;
+    if (sign * inward.dot(pixel - a) < margin_px) return false;
+  }
+  return true;
+}
+
+double TableRegion::InverseDepthAt(const Eigen::Vector2d& pixel) const {
+  return inverse_depth.dot(pixel.homogeneous());
+}
+
+Eigen::Vector2d TableRegion::TableAt(const Eigen::Vector2d& pixel) const {
+  return (image_from_table.inverse() * pixel.homogeneous()).hnormalized();
+}
+
+Eigen::Vector2d TableRegion::Centre() const {
+  return (image_from_table * Eigen::Vector3d(0.5 * kTableAspect, 0.5, 1.0)).hnormalized();
+}
+
+cv::Rect TableRegion::Bounds() const {
+  std::vector<cv::Point2f> points;
+  for (const auto& c : corners) {
+    points.emplace_back(static_cast<float>(c.x()), static_cast<float>(c.y()));
+  }
+  return cv::boundingRect(points);
+}
+
+TableSearch FindTable(const cv::Mat& bgr) {
+  if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame"};
+  const double scale = std::min(1.0, kSearchSize / std::max(bgr.cols, bgr.rows));
+  cv::Mat small;
+  cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
+  TableRegion table;
+  table.mask_scale = scale;
+  table.cloth_colour = ClothColour(small, ToLab(small));
+  table.cloth = LargestCentralRegion(ClothLike(small, table.cloth_colour));
+  if (cv::countNonZero(table.cloth) < kMinClothFraction * small.total()) {
+    return {std::nullopt, "no table: no evenly coloured cloth covers " +
+                              std::to_string(static_cast<int>(100 * kMinClothFraction)) +
+                              " % of the frame"};
+  }
+  table.surface = FillHoles(table.cloth);
+
+  std::vector<std::vector<cv::Point>> contours;
+  cv::findContours(table.surface.clone(), contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+  const auto& outline = *std::max_element(
+      contours.begin(), contours.end(),
+      [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  std::vector<cv::Point> hull, polygon;
+  cv::convexHull(outline, hull);
+  const double perimeter = cv::arcLength(hull, true);
+  for (double tolerance = kFirstPolygonTolerance; tolerance < kLastPolygonTolerance;
+       tolerance += kPolygonToleranceStep) {
+    cv::approxPolyDP(hull, polygon, tolerance * perimeter, true);
+    if (polygon.size() <= 4) break;
+  }
+  if (polygon.size() != 4) {
+    return {std::nullopt, "no table: the cloth's outline is not a quadrilateral"};
+  }
+  std::array<Line, 4> sides;
+  for (int i = 0; i < 4; ++i) {
+    const auto side = FitSide(outline, polygon[i], polygon[(i + 1) % 4], perimeter);
+    if (!side) return {std::nullopt, "no table: a side of the cloth is not straight"};
+    sides[i] = *side;
+  }
+  double squares = 0;
+  int points = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector3d corner =
+        sides[(i + 3) % 4].coefficients.cross(sides[i].coefficients);
+    if (std::abs(corner.z()) < 1e-12) {
+      return {std::nullopt, "no table: two opposite sides of the cloth do not meet"};
+    }
+    table.corners[i] = corner.hnormalized() / scale;
+    squares += sides[i].rms * sides[i].rms * sides[i].points;
+    points += sides[i].points;
+  }
+  table.side_fit_rms_px = std::sqrt(squares / points) / scale;
+
+  table.image_from_table = ImageFromTable(table.corners, LongSideFirst(table.corners, bgr.size()));
+  const Eigen::Vector3d inverse_depth = table.image_from_table.inverse().row(2).transpose();
+  table.inverse_depth = inverse_depth / inverse_depth.dot(table.Centre().homogeneous());
+  double nearest = 0, farthest = HUGE_VAL;
+  for (const auto& corner : table.corners) {
+    const double w = table.InverseDepthAt(corner);
+    nearest = std::max(nearest, w);
+    farthest = std::min(farthest, w);
+  }
+  if (!(farthest > 0)) {
+    return {std::nullopt, "no table: the cloth's corners are not those of a plane in view"};
+  }
+  table.depth_ratio = nearest / farthest;
+  table.view = table.depth_ratio <= kOverheadDepthRatio ? TableView::kOverhead : TableView::kOblique;
+  return {table, ""};
+}
+
+}  // namespace billiard::estimator

@@ -1,0 +1,91 @@
+// The playing surface in a camera frame, found without markers: the cloth, its four sides, and
+// what they say of the camera.
+//
+// The cloth is the largest evenly coloured thing near the middle of a table camera's view, of any
+// colour (green, blue, navy, red, grey). Its colour is the mode of the frame's colours weighted
+// towards the image centre; its pixels are those of about that chromaticity (which vignetting and
+// mixed lights leave nearly alone while they change the brightness), not across a strong edge
+// (the cushion's nose, the rail), connected to the mode's largest region. Balls, chalk and hands
+// on it are holes, filled; pockets and the cushions' noses are notches in its outline.
+//
+// The outline's four sides are straight lines in the image (a plane seen through a pinhole; lens
+// distortion bends them a little): the convex hull reduced to four vertices says roughly where,
+// and a line fitted (RANSAC, then least squares) to the outline points along the middle of each
+// side, away from the corner pockets, says exactly. The corners are the lines' intersections,
+// where the cloth would meet without pockets.
+//
+// What the four corners give:
+//   - A homography between the frame and the table's plane. The table is twice as long as it is
+//     wide (pool, snooker and carom alike); which pair of sides is the long one comes from the
+//     camera: the pinhole with square pixels and a centred principal point that the homography
+//     implies must have the same focal length from both of Zhang's (2000) constraints when the
+//     sides are assigned right. Where the view is too square-on for that to tell, the longer
+//     pair in the image is the long side.
+//   - The depth of every place on the table, up to a scale, whichever side is long: the inverse
+//     depth of the plane's points is an affine function of the pixel (the third row of the
+//     inverse homography). A ball's apparent radius is proportional to it (ball_scale.h).
+//   - The view: overhead when the depth varies by less than kOverheadDepthRatio across the table.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string>
+
+namespace billiard::estimator {
+
+// A view is overhead when the farthest corner of the table is at most this much farther from the
+// camera than the nearest (ball sizes then differ by at most as much across the table).
+inline constexpr double kOverheadDepthRatio = 1.2;
+
+enum class TableView { kOverhead, kOblique };
+const char* TableViewName(TableView view);
+
+struct TableRegion {
+  // The corners of the cloth's outline [full-resolution px], in order around the table.
+  std::array<Eigen::Vector2d, 4> corners;
+  // RMS distance [full-resolution px] of the outline's points along the middle of each side from
+  // the side's fitted line: how straight the sides are (lens distortion, a cloth that is not the
+  // table's) and how well they were found.
+  double side_fit_rms_px = 0;
+  // Image pixel from table point (x along the long side in [0, 2], y along the short side in
+  // [0, 1], homogeneous): the table's corners in units of its width.
+  Eigen::Matrix3d image_from_table = Eigen::Matrix3d::Identity();
+  // The inverse depth of the table's plane, relative to the table's centre: 1 / depth at pixel
+  // (u, v) is inverse_depth.dot((u, v, 1)) / depth at the centre.
+  Eigen::Vector3d inverse_depth = Eigen::Vector3d::UnitZ();
+  TableView view = TableView::kOverhead;
+  // The largest over the smallest depth of the four corners.
+  double depth_ratio = 1.0;
+  // The cloth [255 where cloth] and the playing surface (the cloth with its holes filled) at
+  // `mask_scale` of the full resolution.
+  cv::Mat cloth, surface;
+  double mask_scale = 1.0;
+  // The cloth's dominant colour (BGR).
+  cv::Vec3f cloth_colour;
+
+  // Whether a full-resolution pixel is inside the four sides, at least `margin_px` from them.
+  bool Contains(const Eigen::Vector2d& pixel, double margin_px = 0.0) const;
+  // Relative inverse depth (1 at the table's centre) at a full-resolution pixel.
+  double InverseDepthAt(const Eigen::Vector2d& pixel) const;
+  // The table point (x in [0, 2], y in [0, 1] on the surface) seen at a pixel.
+  Eigen::Vector2d TableAt(const Eigen::Vector2d& pixel) const;
+  // The centre of the table in the image.
+  Eigen::Vector2d Centre() const;
+  // The smallest rectangle of full-resolution pixels holding the four corners.
+  cv::Rect Bounds() const;
+};
+
+// A table found, or the one-line reason why none was.
+struct TableSearch {
+  std::optional<TableRegion> table;
+  std::string reason;
+};
+
+// The table in a BGR (CV_8UC3) frame. About 5 ms at 1280x720: the frame is searched at about 400
+// pixels across.
+TableSearch FindTable(const cv::Mat& bgr);
+
+}  // namespace billiard::estimator
