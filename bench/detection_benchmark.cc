@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "bench/format.h"
+#include "estimator/detection_overlay.h"
 
 namespace billiard::bench {
 
@@ -147,7 +148,8 @@ DetectionBenchmarkResult RunDetectionBenchmark(const std::string& directory,
     FrameScore score = ScoreFrame(frame, balls);
     score.detect_ms = ms;
     score.failure = detector.failure();
-    score.table_view = detector.table() ? estimator::TableViewName(detector.table()->view) : "";
+    score.table = detector.table();
+    score.table_view = score.table ? estimator::TableViewName(score.table->view) : "";
     score.view = !frame.view.empty() ? frame.view : score.table_view;
     if (!options.overlay_dir.empty()) {
       const std::string path = options.overlay_dir + "/" + Stem(frame.file) + ".jpg";
@@ -168,6 +170,7 @@ DetectionBenchmarkResult RunDetectionBenchmark(const std::string& directory,
 
 cv::Mat ScoreOverlay(const cv::Mat& image, const LabelledFrame& frame, const FrameScore& score) {
   cv::Mat out = image.clone();
+  if (score.table) estimator::DrawTable(*score.table, &out);
   const double gate = MatchDistancePx(frame.radius_px);
   const auto point = [](const Eigen::Vector2d& p) {
     return cv::Point(static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())));

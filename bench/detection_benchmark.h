@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <string>
@@ -47,6 +48,7 @@ struct FrameScore {
   std::vector<Eigen::Vector2d> missed;  // labels no detection matched
   std::vector<estimator::BallDetection> detections;
   std::vector<bool> detection_matched;  // per detection: a label's (or an ignored ball's)
+  std::optional<estimator::TableRegion> table;
 };
 
 // Detections scored against a frame's labels.

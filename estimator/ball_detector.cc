@@ -22,8 +22,10 @@ namespace {
 // than kMinCellCloth of its area cloth takes its neighbours' colour.
 constexpr int kClothCells = 24;
 constexpr double kMinCellCloth = 0.2;
-// An edge is a colour change of at least kEdgeNoises times the cloth's own.
-constexpr double kEdgeNoises = 3.0;
+// An edge is a colour change of at least kEdgeNoises times the cloth's own, and never less than
+// kMinEdge L*a*b* units per pixel (a clean frame's cloth has almost no noise, and the least
+// ball, black on navy, changes by several units per pixel).
+constexpr double kEdgeNoises = 3.0, kMinEdge = 2.0;
 // The balls' scale is measured on the compact blobs of not-cloth (contrast of at least 1,
 // local_cloth.h) at a resolution where the table is at most kBlobTableSize pixels across: blobs
 // of at least kMinBlobArea pixels, about as wide as high (kMaxBlobAspect), filling at least
@@ -33,11 +35,14 @@ constexpr int kMinBlobArea = 12;
 constexpr double kMaxBlobAspect = 1.55;
 constexpr double kMinBlobFill = 0.75;
 constexpr double kMinScaleSupport = 0.35;
-// Peaks of the votes from kMinVoteSupport are outlined, strongest first, up to kMaxCandidates;
-// one within kSamePeakRadii of an outline already fitted is the same ball.
+// Peaks of the votes from kMinVoteSupport are outlined, strongest first, up to kMaxCandidates
+// (every one: two peaks of one ball, one between the ball and its shadow, may give different
+// outlines, and the better must win).
 constexpr double kMinVoteSupport = 0.08;
 constexpr std::size_t kMaxCandidates = 400;
-constexpr double kSamePeakRadii = 0.5;
+// A ball's centre is a radius inside the cushions' noses; one found up to kOffSurfaceRadii outside
+// them is still taken (a nose found at the top of the cushion's face rather than its foot).
+constexpr double kOffSurfaceRadii = 0.5;
 // Two balls' centres are at least two radii apart; closer than kOverlapRadii radii (touching
 // balls' outlines fitted a little large, or a ball's shadow beside it) only the better is kept.
 constexpr double kOverlapRadii = 1.75;
@@ -47,6 +52,8 @@ constexpr double kOverlapRadii = 1.75;
 constexpr double kUnknownEdgeNoise = 1.0;
 constexpr int kRingSamples = 64;
 constexpr double kRingRadii = 2.5;
+
+double MinEdge(double edge_noise) { return std::max(kMinEdge, kEdgeNoises * edge_noise); }
 
 cv::Mat AsBgr(const cv::Mat& image) {
   if (image.type() == CV_8UC3) return image;
@@ -171,7 +178,7 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
     if (area < kMinBlobArea || aspect > kMaxBlobAspect || fill < kMinBlobFill) continue;
     const auto outline =
         FitBallOutline(bgr, to_full(centroids.at<double>(i, 0), centroids.at<double>(i, 1)),
-                       factor * std::sqrt(area / M_PI), kEdgeNoises * cloth.edge_noise);
+                       factor * std::sqrt(area / M_PI), MinEdge(cloth.edge_noise));
     if (outline && outline->supporting_rays >= kMinScaleSupport * kOutlineRays) {
       outlines.push_back(*outline);
     }
@@ -230,24 +237,22 @@ std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
   for (std::size_t i = 0; i < peaks.size() && i < kMaxCandidates; ++i) {
     const CircleVote& peak = peaks[i];
     const double radius = scale_->RadiusAt(peak.pixel);
-    const bool seen = std::any_of(outlined.begin(), outlined.end(), [&](const auto& o) {
-      return (o.first.pixel - peak.pixel).norm() < kSamePeakRadii * radius;
-    });
-    if (seen) continue;
     const auto outline =
-        FitBallOutline(bgr, peak.pixel, radius, kEdgeNoises * cloth_.edge_noise);
-    if (!outline || !table_->Contains(outline->centre)) continue;
+        FitBallOutline(bgr, peak.pixel, radius, MinEdge(cloth_.edge_noise));
+    if (!outline || !table_->Contains(outline->centre, -kOffSurfaceRadii * radius)) continue;
     const double score = EvidenceForBall(bgr, *outline, radius, cloth_.ColourAt(outline->centre),
                                          peak.support)
                              .Score();
     outlined.push_back({{outline->centre, outline->radius, score}, peak.support});
   }
-  std::sort(outlined.begin(), outlined.end(), [](const auto& a, const auto& b) {
-    return a.first.score != b.first.score ? a.first.score > b.first.score : a.second > b.second;
-  });
+  // Best first; among outlines of one ball (from a peak at its centre, or between it and its
+  // shadow) that its own outline voted for most.
+  const auto rank = [](const auto& o) { return o.first.score * (0.5 + o.second); };
+  std::sort(outlined.begin(), outlined.end(),
+            [&](const auto& a, const auto& b) { return rank(a) > rank(b); });
   std::vector<BallDetection> balls;
   for (const auto& [ball, support] : outlined) {
-    if (ball.score < options_.min_score) break;
+    if (ball.score < options_.min_score) continue;
     const bool overlaps = std::any_of(balls.begin(), balls.end(), [&](const BallDetection& b) {
       return (b.pixel - ball.pixel).norm() < kOverlapRadii * std::max(b.radius_px, ball.radius_px);
     });
@@ -282,7 +287,7 @@ std::optional<BallDetection> BallDetector::RefineAt(const cv::Mat& image,
     }
     edge_noise = kUnknownEdgeNoise;
   }
-  const auto outline = FitBallOutline(bgr, predicted, radius_px, kEdgeNoises * edge_noise);
+  const auto outline = FitBallOutline(bgr, predicted, radius_px, MinEdge(edge_noise));
   if (!outline) return std::nullopt;
   const double score = EvidenceForBall(bgr, *outline, radius_px, cloth, 1.0).Score();
   if (score < options_.min_score) return std::nullopt;

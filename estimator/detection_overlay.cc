@@ -12,6 +12,23 @@ constexpr double kConfidentScore = 0.5;
 const cv::Scalar kConfident(60, 220, 60);  // BGR
 const cv::Scalar kDoubtful(40, 40, 230);
 const cv::Scalar kLabel(255, 255, 255);
+const cv::Scalar kCloth(200, 160, 120);
+const cv::Scalar kSurface(255, 120, 0);
+
+int LineWidth(const cv::Mat& image) {
+  // A pixel wide on a 720p frame, thicker on larger ones.
+  return std::max(1, static_cast<int>(std::lround(image.cols / 1280.0)));
+}
+
+void DrawQuadrilateral(const std::array<Eigen::Vector2d, 4>& corners, const cv::Scalar& colour,
+                       int thickness, cv::Mat* image) {
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector2d a = corners[i], b = corners[(i + 1) % 4];
+    cv::line(*image, {static_cast<int>(std::lround(a.x())), static_cast<int>(std::lround(a.y()))},
+             {static_cast<int>(std::lround(b.x())), static_cast<int>(std::lround(b.y()))}, colour,
+             thickness, cv::LINE_AA);
+  }
+}
 
 }  // namespace
 
@@ -22,8 +39,7 @@ cv::Mat DetectionOverlay(const cv::Mat& image, const std::vector<BallDetection>&
   } else {
     out = image.clone();
   }
-  // Lines a pixel wide on a 720p frame, thicker on larger ones.
-  const int thickness = std::max(1, static_cast<int>(std::lround(out.cols / 1280.0)));
+  const int thickness = LineWidth(out);
   for (std::size_t k = 0; k < balls.size(); ++k) {
     const BallDetection& b = balls[k];
     const cv::Point2d centre(b.pixel.x(), b.pixel.y());
@@ -37,6 +53,12 @@ cv::Mat DetectionOverlay(const cv::Mat& image, const std::vector<BallDetection>&
                 cv::FONT_HERSHEY_SIMPLEX, 0.4 * thickness, kLabel, thickness, cv::LINE_AA);
   }
   return out;
+}
+
+void DrawTable(const TableRegion& table, cv::Mat* image) {
+  const int thickness = LineWidth(*image);
+  DrawQuadrilateral(table.cloth_corners, kCloth, thickness, image);
+  DrawQuadrilateral(table.corners, kSurface, thickness, image);
 }
 
 }  // namespace billiard::estimator

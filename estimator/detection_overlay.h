@@ -6,11 +6,16 @@
 #include <vector>
 
 #include "estimator/ball_detector.h"
+#include "estimator/table_finder.h"
 
 namespace billiard::estimator {
 
 // A copy of `image` (BGR, or gray: drawn in colour) with `balls` drawn on it. The outline is
 // green above score 0.5 and red below, so weak detections stand out.
 cv::Mat DetectionOverlay(const cv::Mat& image, const std::vector<BallDetection>& balls);
+
+// Draws the table found on a BGR image: the cloth's outline thin and grey-blue, the playing
+// surface (the cushions' noses) in blue.
+void DrawTable(const TableRegion& table, cv::Mat* image);
 
 }  // namespace billiard::estimator

@@ -45,6 +45,20 @@ constexpr double kRansacInlierPx = 1.5;
 constexpr int kRansacTries = 200;
 // The table's long side over its short side.
 constexpr double kTableAspect = 2.0;
+// The noses are looked for at kNoseSamples places on each half of a side, from kNoseFrom of its
+// length from a corner to kNoseMiddle from its middle (the pockets are at both), from
+// kOutlineClearancePx inside the outline (the cloth against the rail is no nose); an edge is a
+// colour change of at least kMinNoseEdge L*a*b* units per pixel. Of up to kNoseLines lines
+// through the edges of at least kMinNosePlaces of the places on each half of the side, the nose
+// is the best supported, or the innermost of those nearly as well (kNoseOfBest of its places): an
+// old cloth's worn track along the cushion is a line too, fainter, and more broken.
+constexpr int kNoseSamples = 24;
+constexpr double kNoseFrom = 0.12, kNoseMiddle = 0.08;
+constexpr int kOutlineClearancePx = 3;
+constexpr double kMinNoseEdge = 2.0;
+constexpr int kNoseLines = 3;
+constexpr double kMinNosePlaces = 0.3;
+constexpr double kNoseOfBest = 0.95;
 // The two focal lengths of Zhang's constraints agree within this factor for the right
 // assignment of the long sides (an overhead view makes them 0 / 0: no camera, no answer).
 constexpr double kFocalAgreement = 1.3;
@@ -249,14 +263,20 @@ std::optional<Line> FitSide(const std::vector<cv::Point>& outline, const cv::Poi
   return line;
 }
 
+// The table's corners in the order ImageFromTable maps them.
+std::array<Eigen::Vector2d, 4> TableCorners(bool long_first) {
+  const double a = kTableAspect;
+  return long_first ? std::array<Eigen::Vector2d, 4>{{{0, 0}, {a, 0}, {a, 1}, {0, 1}}}
+                    : std::array<Eigen::Vector2d, 4>{{{0, 0}, {0, 1}, {a, 1}, {a, 0}}};
+}
+
 // The homography from the table (long side along x when `long_first`, else along y first and
 // then turned so that x is the long side) to the image of `corners`.
 Eigen::Matrix3d ImageFromTable(const std::array<Eigen::Vector2d, 4>& corners, bool long_first) {
-  const float a = static_cast<float>(kTableAspect);
-  const std::vector<cv::Point2f> table =
-      long_first ? std::vector<cv::Point2f>{{0, 0}, {a, 0}, {a, 1}, {0, 1}}
-                 : std::vector<cv::Point2f>{{0, 0}, {0, 1}, {a, 1}, {a, 0}};
-  std::vector<cv::Point2f> image;
+  std::vector<cv::Point2f> table, image;
+  for (const auto& c : TableCorners(long_first)) {
+    table.emplace_back(static_cast<float>(c.x()), static_cast<float>(c.y()));
+  }
   for (const auto& c : corners) {
     image.emplace_back(static_cast<float>(c.x()), static_cast<float>(c.y()));
   }
@@ -266,6 +286,136 @@ Eigen::Matrix3d ImageFromTable(const std::array<Eigen::Vector2d, 4>& corners, bo
     for (int j = 0; j < 3; ++j) m(i, j) = h.at<double>(i, j);
   }
   return m;
+}
+
+// Bilinear BGR colours of a frame at `points` [px] in float L*a*b*; points outside the frame get
+// NaN.
+std::vector<cv::Vec3f> LabAt(const cv::Mat& bgr, const std::vector<Eigen::Vector2d>& points) {
+  cv::Mat samples(static_cast<int>(points.size()), 1, CV_32FC3);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double x = points[i].x(), y = points[i].y();
+    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+    if (x0 < 0 || y0 < 0 || x0 + 1 >= bgr.cols || y0 + 1 >= bgr.rows) {
+      samples.at<cv::Vec3f>(static_cast<int>(i)) = cv::Vec3f(NAN, NAN, NAN);
+      continue;
+    }
+    const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+    const auto at = [&](int yy, int xx) {
+      const cv::Vec3b p = bgr.at<cv::Vec3b>(yy, xx);
+      return cv::Vec3f(p[0], p[1], p[2]) / 255.0f;
+    };
+    samples.at<cv::Vec3f>(static_cast<int>(i)) =
+        (1 - fy) * ((1 - fx) * at(y0, x0) + fx * at(y0, x0 + 1)) +
+        fy * ((1 - fx) * at(y0 + 1, x0) + fx * at(y0 + 1, x0 + 1));
+  }
+  cv::Mat lab;
+  cv::cvtColor(samples, lab, cv::COLOR_BGR2Lab);
+  return std::vector<cv::Vec3f>(lab.begin<cv::Vec3f>(), lab.end<cv::Vec3f>());
+}
+
+// The nose of the cushion along side `side` (table corners side, side + 1) as a homogeneous image
+// line: at places along the side, the edges (local maxima of the colour's rate of change) met
+// going inward from the cloth's outline; the lines through many of them (RANSAC, seeded); the
+// innermost of those as well supported as kNoseOfStrongest of the best. The outline's own line
+// when none is.
+Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table,
+                         bool long_first, int side) {
+  const auto table = TableCorners(long_first);
+  const Eigen::Vector2d a = table[side], b = table[(side + 1) % 4];
+  const Eigen::Vector2d centre(0.5 * kTableAspect, 0.5);
+  Eigen::Vector2d inward(-(b - a).y(), (b - a).x());
+  inward.normalize();
+  if (inward.dot(centre - a) < 0) inward = -inward;
+  const auto image = [&](double t, double u) {
+    return (image_from_table * (a + t * (b - a) + u * inward).homogeneous()).hnormalized();
+  };
+  const Eigen::Vector3d outline = image(0, 0).homogeneous().cross(image(1, 0).homogeneous());
+  // Offsets a pixel apart where the side is nearest the camera (the largest scale along it).
+  double px_per_unit = 0;
+  for (const double t : {0.0, 0.5, 1.0}) {
+    px_per_unit = std::max(px_per_unit, (image(t, 0.01) - image(t, 0)).norm() / 0.01);
+  }
+  const double step = 1.0 / std::max(1.0, px_per_unit);
+  const int offsets = static_cast<int>(kMaxCushionWidth / step) + 1;
+  std::vector<double> along;
+  for (int k = 0; k < kNoseSamples; ++k) {
+    const double t = kNoseFrom + (k + 0.5) * (0.5 - kNoseFrom - kNoseMiddle) / kNoseSamples;
+    along.push_back(t);
+    along.push_back(1.0 - t);
+  }
+  std::vector<Eigen::Vector2d> points;
+  for (const double t : along) {
+    for (int i = 0; i <= offsets; ++i) points.push_back(image(t, i * step));
+  }
+  const std::vector<cv::Vec3f> lab = LabAt(bgr, points);
+  // The edges along each place: (image point, place).
+  std::vector<std::pair<Eigen::Vector2d, int>> edges;
+  std::vector<double> rate(offsets);
+  for (std::size_t k = 0; k < along.size(); ++k) {
+    const std::size_t base = k * (offsets + 1);
+    for (int i = 0; i < offsets; ++i) {
+      const cv::Vec3f d = lab[base + i + 1] - lab[base + i];
+      const double pixels = (points[base + i + 1] - points[base + i]).norm();
+      rate[i] = std::sqrt(d.dot(d)) / std::max(pixels, 1e-6);
+      if (!std::isfinite(rate[i])) rate[i] = 0;
+    }
+    for (int i = std::max(1, kOutlineClearancePx); i + 1 < offsets; ++i) {
+      if (rate[i] >= kMinNoseEdge && rate[i] >= rate[i - 1] && rate[i] > rate[i + 1]) {
+        edges.push_back({0.5 * (points[base + i] + points[base + i + 1]), static_cast<int>(k)});
+      }
+    }
+  }
+  // Lines through the edges of many places, best supported first, each taking its edges.
+  struct Support {
+    Eigen::Vector3d line;
+    int places = 0;
+    double inward_px = 0;  // mean distance of its edges from the outline
+  };
+  std::vector<Support> lines;
+  std::vector<bool> taken(edges.size(), false);
+  std::mt19937 random(side + 1);
+  for (int found = 0; found < kNoseLines && edges.size() >= 2; ++found) {
+    std::uniform_int_distribution<std::size_t> pick(0, edges.size() - 1);
+    Support best;
+    std::vector<std::size_t> best_inliers;
+    for (int attempt = 0; attempt < kRansacTries; ++attempt) {
+      const std::size_t i = pick(random), j = pick(random);
+      if (taken[i] || taken[j] || edges[i].second == edges[j].second) continue;
+      Eigen::Vector3d line = edges[i].first.homogeneous().cross(edges[j].first.homogeneous());
+      line /= line.head<2>().norm();
+      std::vector<bool> place_seen(along.size(), false);
+      std::vector<std::size_t> inliers;
+      for (std::size_t e = 0; e < edges.size(); ++e) {
+        if (taken[e] || std::abs(line.dot(edges[e].first.homogeneous())) > kRansacInlierPx) continue;
+        inliers.push_back(e);
+        place_seen[edges[e].second] = true;
+      }
+      // Places alternate between the side's halves: a nose runs along both, a row of balls
+      // against the cushion along one at most.
+      int halves[2] = {0, 0};
+      for (std::size_t k = 0; k < along.size(); ++k) halves[k % 2] += place_seen[k];
+      const int places = 2 * std::min(halves[0], halves[1]);
+      if (places > best.places) {
+        best = {line, places, 0.0};
+        best_inliers = inliers;
+      }
+    }
+    if (best.places < kMinNosePlaces * static_cast<double>(along.size())) break;
+    const Eigen::Vector3d unit_outline = outline / outline.head<2>().norm();
+    for (const std::size_t e : best_inliers) {
+      taken[e] = true;
+      best.inward_px += std::abs(unit_outline.dot(edges[e].first.homogeneous()));
+    }
+    best.inward_px /= best_inliers.size();
+    lines.push_back(best);
+  }
+  if (lines.empty()) return outline;
+  const int most = lines.front().places;
+  const Support* nose = &lines.front();
+  for (const Support& l : lines) {
+    if (l.places >= kNoseOfBest * most && l.inward_px > nose->inward_px) nose = &l;
+  }
+  return nose->line;
 }
 
 // The squared focal lengths of the pinhole (square pixels, principal point at the image centre)
@@ -283,6 +433,17 @@ std::pair<double, double> FocalLengthsSquared(const Eigen::Matrix3d& image_from_
                         h(1, 1) * h(1, 1)) /
                        (h(2, 1) * h(2, 1) - h(2, 0) * h(2, 0));
   return {orthogonal, equal};
+}
+
+// The corners where each side meets the previous one; false when two are parallel.
+bool Intersections(const std::array<Eigen::Vector3d, 4>& lines,
+                   std::array<Eigen::Vector2d, 4>* corners) {
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector3d corner = lines[(i + 3) % 4].cross(lines[i]);
+    if (std::abs(corner.z()) < 1e-12 * corner.head<2>().norm()) return false;
+    (*corners)[i] = corner.hnormalized();
+  }
+  return true;
 }
 
 // Whether the first side (corner 0 to 1) and its opposite are the long ones.
@@ -333,7 +494,7 @@ Eigen::Vector2d TableRegion::Centre() const {
 
 cv::Rect TableRegion::Bounds() const {
   std::vector<cv::Point2f> points;
-  for (const auto& c : corners) {
+  for (const auto& c : cloth_corners) {
     points.emplace_back(static_cast<float>(c.x()), static_cast<float>(c.y()));
   }
   return cv::boundingRect(points);
@@ -379,19 +540,24 @@ TableSearch FindTable(const cv::Mat& bgr) {
   }
   double squares = 0;
   int points = 0;
+  std::array<Eigen::Vector3d, 4> lines;
   for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector3d corner =
-        sides[(i + 3) % 4].coefficients.cross(sides[i].coefficients);
-    if (std::abs(corner.z()) < 1e-12) {
-      return {std::nullopt, "no table: two opposite sides of the cloth do not meet"};
-    }
-    table.corners[i] = corner.hnormalized() / scale;
+    lines[i] = sides[i].coefficients;
+    lines[i].z() /= scale;  // to full-resolution pixels
     squares += sides[i].rms * sides[i].rms * sides[i].points;
     points += sides[i].points;
   }
   table.side_fit_rms_px = std::sqrt(squares / points) / scale;
-
-  table.image_from_table = ImageFromTable(table.corners, LongSideFirst(table.corners, bgr.size()));
+  if (!Intersections(lines, &table.cloth_corners)) {
+    return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
+  }
+  const bool long_first = LongSideFirst(table.cloth_corners, bgr.size());
+  const Eigen::Matrix3d cloth_from_table = ImageFromTable(table.cloth_corners, long_first);
+  for (int i = 0; i < 4; ++i) lines[i] = NoseLine(bgr, cloth_from_table, long_first, i);
+  if (!Intersections(lines, &table.corners)) {
+    return {std::nullopt, "no table: two neighbouring cushions do not meet"};
+  }
+  table.image_from_table = ImageFromTable(table.corners, long_first);
   const Eigen::Vector3d inverse_depth = table.image_from_table.inverse().row(2).transpose();
   table.inverse_depth = inverse_depth / inverse_depth.dot(table.Centre().homogeneous());
   double nearest = 0, farthest = HUGE_VAL;

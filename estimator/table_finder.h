@@ -14,6 +14,13 @@
 // side, away from the corner pockets, says exactly. The corners are the lines' intersections,
 // where the cloth would meet without pockets.
 //
+// The cloth covers the cushions too, so its outline may be their outer edge. The playing surface
+// ends at the cushions' noses: inside each side, up to kMaxCushionWidth of the table's width in,
+// the line through the edges (sharp changes of colour) at most places along both halves of the
+// side: the edge of the cushion's face, in shadow or light. A row of balls against the cushion
+// makes a line along one half at most. Where no such line is, the outline is the nose (a cushion
+// seen from behind hides its face).
+//
 // What the four corners give:
 //   - A homography between the frame and the table's plane. The table is twice as long as it is
 //     wide (pool, snooker and carom alike); which pair of sides is the long one comes from the
@@ -43,15 +50,21 @@ inline constexpr double kOverheadDepthRatio = 1.2;
 enum class TableView { kOverhead, kOblique };
 const char* TableViewName(TableView view);
 
+// How far in from the cloth's outline the cushions' noses are looked for, in table widths.
+inline constexpr double kMaxCushionWidth = 0.12;
+
 struct TableRegion {
-  // The corners of the cloth's outline [full-resolution px], in order around the table.
+  // The corners of the playing surface (where the cushions' noses meet) [full-resolution px], in
+  // order around the table.
   std::array<Eigen::Vector2d, 4> corners;
+  // The corners of the cloth's outline, the cushions' tops included, in the same order.
+  std::array<Eigen::Vector2d, 4> cloth_corners;
   // RMS distance [full-resolution px] of the outline's points along the middle of each side from
   // the side's fitted line: how straight the sides are (lens distortion, a cloth that is not the
   // table's) and how well they were found.
   double side_fit_rms_px = 0;
   // Image pixel from table point (x along the long side in [0, 2], y along the short side in
-  // [0, 1], homogeneous): the table's corners in units of its width.
+  // [0, 1], homogeneous): the playing surface in units of its width.
   Eigen::Matrix3d image_from_table = Eigen::Matrix3d::Identity();
   // The inverse depth of the table's plane, relative to the table's centre: 1 / depth at pixel
   // (u, v) is inverse_depth.dot((u, v, 1)) / depth at the centre.
@@ -66,7 +79,7 @@ struct TableRegion {
   // The cloth's dominant colour (BGR).
   cv::Vec3f cloth_colour;
 
-  // Whether a full-resolution pixel is inside the four sides, at least `margin_px` from them.
+  // Whether a full-resolution pixel is on the playing surface, at least `margin_px` inside it.
   bool Contains(const Eigen::Vector2d& pixel, double margin_px = 0.0) const;
   // Relative inverse depth (1 at the table's centre) at a full-resolution pixel.
   double InverseDepthAt(const Eigen::Vector2d& pixel) const;
@@ -74,7 +87,7 @@ struct TableRegion {
   Eigen::Vector2d TableAt(const Eigen::Vector2d& pixel) const;
   // The centre of the table in the image.
   Eigen::Vector2d Centre() const;
-  // The smallest rectangle of full-resolution pixels holding the four corners.
+  // The smallest rectangle of full-resolution pixels holding the cloth's outline.
   cv::Rect Bounds() const;
 };
 
