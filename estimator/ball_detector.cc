@@ -7,6 +7,7 @@
 
 #include "estimator/ball_score.h"
 #include "estimator/circle_votes.h"
+#include "estimator/lab_image.h"
 #include "estimator/local_cloth.h"
 
 namespace billiard::estimator {
@@ -35,14 +36,25 @@ constexpr int kMinBlobArea = 12;
 constexpr double kMaxBlobAspect = 1.55;
 constexpr double kMinBlobFill = 0.75;
 constexpr double kMinScaleSupport = 0.35;
-// Peaks of the votes from kMinVoteSupport are outlined, strongest first, up to kMaxCandidates
-// (every one: two peaks of one ball, one between the ball and its shadow, may give different
-// outlines, and the better must win).
+// Peaks of the votes from kMinVoteSupport are outlined, strongest first, up to kMaxCandidates:
+// every one (two peaks of one ball, one between the ball and its shadow, may give different
+// outlines, and the better must win) but those within kExplainedRadii of an outline scoring
+// kExplainedScore, which are that ball again.
 constexpr double kMinVoteSupport = 0.08;
 constexpr std::size_t kMaxCandidates = 400;
-// A ball's centre is a radius inside the cushions' noses; one found up to kOffSurfaceRadii outside
-// them is still taken (a nose found at the top of the cushion's face rather than its foot).
-constexpr double kOffSurfaceRadii = 0.5;
+constexpr double kExplainedRadii = 0.3, kExplainedScore = 0.9;
+// The frame's colours are read over the table and kWindowRadiiAroundTable of the largest ball
+// radius around it (an outline's window around a ball on the cushion).
+constexpr double kWindowRadiiAroundTable = 3.0;
+// Where a ball may be: its centre is a radius inside the cushions' noses. Those are found less
+// surely than the cloth's outline (an old cloth's worn track, a cushion's face hidden), so a ball
+// is only held to them near a pocket (within kPocketRadii of a corner or the middle of a side),
+// where pocket liners and holes look like balls, and taken up to kOffSurfaceRadii outside them;
+// elsewhere its centre may be up to kOffClothRadii outside the cloth's outline (which a dark edge
+// of the cloth, in the cushion's shade, can pull in).
+constexpr double kPocketRadii = 3.0;
+constexpr double kOffSurfaceRadii = 1.0;
+constexpr double kOffClothRadii = 1.0;
 // Two balls' centres are at least two radii apart; closer than kOverlapRadii radii (touching
 // balls' outlines fitted a little large, or a ball's shadow beside it) only the better is kept.
 constexpr double kOverlapRadii = 1.75;
@@ -52,6 +64,15 @@ constexpr double kOverlapRadii = 1.75;
 constexpr double kUnknownEdgeNoise = 1.0;
 constexpr int kRingSamples = 64;
 constexpr double kRingRadii = 2.5;
+
+bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double radius) {
+  if (!table.InsideCloth(centre, -kOffClothRadii * radius)) return false;
+  const auto pockets = table.PocketPlaces();
+  const bool near_pocket = std::any_of(pockets.begin(), pockets.end(), [&](const auto& p) {
+    return (p - centre).norm() < kPocketRadii * radius;
+  });
+  return !near_pocket || table.Contains(centre, -kOffSurfaceRadii * radius);
+}
 
 double MinEdge(double edge_noise) { return std::max(kMinEdge, kEdgeNoises * edge_noise); }
 
@@ -137,7 +158,7 @@ ClothModel LearnClothModel(const cv::Mat& bgr, const TableRegion& table) {
     std::nth_element(across.begin(), across.begin() + across.size() / 2, across.end());
     model.noise = 1.4826 * across[across.size() / 2];
   }
-  model.edge_noise = EdgeNoise(bgr, table);
+  model.edge_noise = EdgeNoise(LabImage(bgr, table.Bounds()), table);
   return model;
 }
 
@@ -154,14 +175,30 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
   const auto to_full = [&](double x, double y) {
     return Eigen::Vector2d((x + 0.5) * factor - 0.5 + region.x, (y + 0.5) * factor - 0.5 + region.y);
   };
+  cv::Mat surface = cv::Mat::zeros(small.size(), CV_8U);
+  std::vector<cv::Point> corners;
+  for (const auto& c : table.corners) {
+    corners.emplace_back(static_cast<int>(std::lround((c.x() - region.x + 0.5) / factor - 0.5)),
+                         static_cast<int>(std::lround((c.y() - region.y + 0.5) / factor - 0.5)));
+  }
+  cv::fillConvexPoly(surface, corners, 255);
+  // The cloth's colour at each pixel of `small`: its map resampled (cell coordinates of a pixel
+  // are an affine function of the pixel's).
+  const double per_cell = factor / cloth.cell;
+  const cv::Matx23d cell_from_small(per_cell, 0, (region.x + 0.5 * factor - 0.5) / cloth.cell - 0.5,
+                                    0, per_cell, (region.y + 0.5 * factor - 0.5) / cloth.cell - 0.5);
+  cv::Mat colour;
+  cv::warpAffine(cloth.colour, colour, cell_from_small, small.size(),
+                 cv::INTER_LINEAR | cv::WARP_INVERSE_MAP, cv::BORDER_REPLICATE);
   cv::Mat not_cloth = cv::Mat::zeros(small.size(), CV_8U);
   for (int y = 0; y < small.rows; ++y) {
     const auto* in = small.ptr<cv::Vec3b>(y);
+    const auto* on = surface.ptr<uint8_t>(y);
+    const auto* local_colour = colour.ptr<cv::Vec3f>(y);
     auto* out = not_cloth.ptr<uint8_t>(y);
     for (int x = 0; x < small.cols; ++x) {
-      const Eigen::Vector2d pixel = to_full(x, y);
-      if (!table.Contains(pixel)) continue;
-      const LocalCloth local = MakeLocalCloth(cloth.ColourAt(pixel), cloth.noise);
+      if (!on[x]) continue;
+      const LocalCloth local = MakeLocalCloth(local_colour[x], cloth.noise);
       float along, across;
       Decompose(cv::Vec3f(in[x][0], in[x][1], in[x][2]), local, &along, &across);
       out[x] = Contrast(along, across, local) >= 1.0f ? 255 : 0;
@@ -169,6 +206,7 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
   }
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(not_cloth, labels, stats, centroids, 8);
+  const LabImage lab(bgr, region);
   std::vector<BallOutline> outlines;
   for (int i = 1; i < n; ++i) {
     const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
@@ -177,7 +215,7 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
     const double fill = area / (0.25 * M_PI * w * h);
     if (area < kMinBlobArea || aspect > kMaxBlobAspect || fill < kMinBlobFill) continue;
     const auto outline =
-        FitBallOutline(bgr, to_full(centroids.at<double>(i, 0), centroids.at<double>(i, 1)),
+        FitBallOutline(lab, to_full(centroids.at<double>(i, 0), centroids.at<double>(i, 1)),
                        factor * std::sqrt(area / M_PI), MinEdge(cloth.edge_noise));
     if (outline && outline->supporting_rays >= kMinScaleSupport * kOutlineRays) {
       outlines.push_back(*outline);
@@ -232,16 +270,27 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
 std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
   const cv::Mat bgr = AsBgr(image);
   if ((bgr.size() != frame_size_ || !scale_) && !LearnTable(bgr)) return {};
+  // The table and a ball's width around it: every outline and every vote's edge is there.
+  double largest = 0;
+  for (const auto& c : table_->cloth_corners) largest = std::max(largest, scale_->RadiusAt(c));
+  const int margin = static_cast<int>(std::ceil(kWindowRadiiAroundTable * largest));
+  const LabImage lab(bgr, table_->Bounds() + cv::Size(2 * margin, 2 * margin) -
+                              cv::Point(margin, margin));
   const std::vector<CircleVote> peaks = VoteForCircles(bgr, *table_, *scale_, kMinVoteSupport);
   std::vector<std::pair<BallDetection, double>> outlined;  // with their vote support
   for (std::size_t i = 0; i < peaks.size() && i < kMaxCandidates; ++i) {
     const CircleVote& peak = peaks[i];
     const double radius = scale_->RadiusAt(peak.pixel);
+    const bool explained = std::any_of(outlined.begin(), outlined.end(), [&](const auto& o) {
+      return o.first.score >= kExplainedScore &&
+             (o.first.pixel - peak.pixel).norm() < kExplainedRadii * radius;
+    });
+    if (explained) continue;
     const auto outline =
-        FitBallOutline(bgr, peak.pixel, radius, MinEdge(cloth_.edge_noise));
-    if (!outline || !table_->Contains(outline->centre, -kOffSurfaceRadii * radius)) continue;
-    const double score = EvidenceForBall(bgr, *outline, radius, cloth_.ColourAt(outline->centre),
-                                         peak.support)
+        FitBallOutline(lab, peak.pixel, radius, MinEdge(cloth_.edge_noise));
+    if (!outline || !OnTable(*table_, outline->centre, radius)) continue;
+    const double score = EvidenceForBall(lab, *outline, radius,
+                                         LabOf(cloth_.ColourAt(outline->centre)), peak.support)
                              .Score();
     outlined.push_back({{outline->centre, outline->radius, score}, peak.support});
   }
@@ -287,9 +336,10 @@ std::optional<BallDetection> BallDetector::RefineAt(const cv::Mat& image,
     }
     edge_noise = kUnknownEdgeNoise;
   }
-  const auto outline = FitBallOutline(bgr, predicted, radius_px, MinEdge(edge_noise));
+  const LabImage lab(bgr, OutlineWindow(predicted, radius_px));
+  const auto outline = FitBallOutline(lab, predicted, radius_px, MinEdge(edge_noise));
   if (!outline) return std::nullopt;
-  const double score = EvidenceForBall(bgr, *outline, radius_px, cloth, 1.0).Score();
+  const double score = EvidenceForBall(lab, *outline, radius_px, LabOf(cloth), 1.0).Score();
   if (score < options_.min_score) return std::nullopt;
   return BallDetection{outline->centre, outline->radius, score};
 }

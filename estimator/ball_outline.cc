@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <opencv2/imgproc.hpp>
 #include <vector>
 
 namespace billiard::estimator {
@@ -35,45 +34,11 @@ constexpr double kMaxShiftRadii = 1.0, kMaxRadiusChange = 0.4;
 // A ray supports the circle with an edge within max(kSupportPx, kSupportRadii r) of it.
 constexpr double kSupportPx = 1.0, kSupportRadii = 0.08;
 
-// The window's colours in float L*a*b* (L* 0..100).
-struct LabWindow {
-  cv::Mat lab;
-  Eigen::Vector2d origin;
-  // Bilinear colour at a frame pixel; false outside the window.
-  bool At(const Eigen::Vector2d& pixel, cv::Vec3f* colour) const {
-    const double x = pixel.x() - origin.x(), y = pixel.y() - origin.y();
-    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-    if (x0 < 0 || y0 < 0 || x0 + 1 >= lab.cols || y0 + 1 >= lab.rows) return false;
-    const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
-    const auto* r0 = lab.ptr<cv::Vec3f>(y0);
-    const auto* r1 = lab.ptr<cv::Vec3f>(y0 + 1);
-    *colour = (1 - fy) * ((1 - fx) * r0[x0] + fx * r0[x0 + 1]) +
-              fy * ((1 - fx) * r1[x0] + fx * r1[x0 + 1]);
-    return true;
-  }
-};
-
-std::optional<LabWindow> WindowAround(const cv::Mat& bgr, const Eigen::Vector2d& centre,
-                                      double radius) {
-  const int half = static_cast<int>(std::ceil(kWindowRadii * radius)) + kWindowMarginPx;
-  const cv::Rect rect = cv::Rect(static_cast<int>(std::lround(centre.x())) - half,
-                                 static_cast<int>(std::lround(centre.y())) - half, 2 * half + 1,
-                                 2 * half + 1) &
-                        cv::Rect(0, 0, bgr.cols, bgr.rows);
-  if (rect.width < 3 || rect.height < 3) return std::nullopt;
-  LabWindow window;
-  cv::Mat scaled;
-  bgr(rect).convertTo(scaled, CV_32F, 1.0 / 255);
-  cv::cvtColor(scaled, window.lab, cv::COLOR_BGR2Lab);
-  window.origin = {rect.x, rect.y};
-  return window;
-}
-
 // The places along each ray from `centre` where the colour changes fastest (frame pixels), and
-// how fast; rays that leave the window have none.
+// how fast; rays that leave the image have none.
 using RayEdges = std::vector<std::pair<Eigen::Vector2d, double>>;
 
-std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabWindow& window,
+std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabImage& lab,
                                                   const Eigen::Vector2d& centre, double radius,
                                                   double min_edge) {
   std::array<RayEdges, kOutlineRays> edges;
@@ -86,7 +51,7 @@ std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabWindow& window,
     const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
     bool inside = true;
     for (int i = 0; i < samples && inside; ++i) {
-      inside = window.At(centre + (from + i * kRayStepPx) * direction, &colour[i]);
+      inside = lab.At(centre + (from + i * kRayStepPx) * direction, &colour[i]);
     }
     if (!inside) continue;
     double largest = 0;
@@ -162,27 +127,22 @@ bool FitCircle(const std::array<RayEdges, kOutlineRays>& edges, double expected,
   return true;
 }
 
-// How the fitted circle is supported: rays with an edge of at least `min_edge` on it.
-void MeasureSupport(const LabWindow& window, double expected, double min_edge,
+// How the fitted circle is supported: rays with an edge of at least `min_edge` within a band of
+// it (the edges of the last round, cast from about the fitted centre).
+void MeasureSupport(const std::array<RayEdges, kOutlineRays>& edges, double expected,
                     BallOutline* outline) {
   const double band = std::max(kSupportPx, kSupportRadii * expected);
   std::vector<double> angles;
   double strength = 0;
   for (int k = 0; k < kOutlineRays; ++k) {
-    const double angle = 2 * M_PI * k / kOutlineRays;
-    const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
     double best = 0;
-    for (double rho = outline->radius - band; rho <= outline->radius + band; rho += kRayStepPx) {
-      cv::Vec3f inner, outer;
-      if (!window.At(outline->centre + (rho - 0.5) * direction, &inner) ||
-          !window.At(outline->centre + (rho + 0.5) * direction, &outer)) {
-        continue;
+    for (const auto& [point, rate] : edges[k]) {
+      if (std::abs((point - outline->centre).norm() - outline->radius) <= band) {
+        best = std::max(best, rate);
       }
-      const cv::Vec3f d = outer - inner;
-      best = std::max(best, static_cast<double>(std::sqrt(d.dot(d))));
     }
-    if (best >= min_edge) {
-      angles.push_back(angle);
+    if (best > 0) {
+      angles.push_back(2 * M_PI * k / kOutlineRays);
       strength += best;
     }
   }
@@ -198,14 +158,20 @@ void MeasureSupport(const LabWindow& window, double expected, double min_edge,
 
 }  // namespace
 
-std::optional<BallOutline> FitBallOutline(const cv::Mat& bgr, const Eigen::Vector2d& start,
+cv::Rect OutlineWindow(const Eigen::Vector2d& start, double radius) {
+  const int half = static_cast<int>(std::ceil(kWindowRadii * radius)) + kWindowMarginPx;
+  return {static_cast<int>(std::lround(start.x())) - half,
+          static_cast<int>(std::lround(start.y())) - half, 2 * half + 1, 2 * half + 1};
+}
+
+std::optional<BallOutline> FitBallOutline(const LabImage& lab, const Eigen::Vector2d& start,
                                           double radius, double min_edge) {
-  const std::optional<LabWindow> window = WindowAround(bgr, start, radius);
-  if (!window || !(radius > 0)) return std::nullopt;
+  if (!(radius > 0)) return std::nullopt;
   Eigen::Vector2d centre = start;
   double fitted = radius;
+  std::array<RayEdges, kOutlineRays> edges;
   for (int round = 0; round < 2; ++round) {
-    const auto edges = EdgesAlongRays(*window, centre, radius, min_edge);
+    edges = EdgesAlongRays(lab, centre, radius, min_edge);
     if (!FitCircle(edges, radius, &centre, &fitted)) return std::nullopt;
     if ((centre - start).norm() > kMaxShiftRadii * radius ||
         std::abs(fitted - radius) > kMaxRadiusChange * radius) {
@@ -215,7 +181,7 @@ std::optional<BallOutline> FitBallOutline(const cv::Mat& bgr, const Eigen::Vecto
   BallOutline outline;
   outline.centre = centre;
   outline.radius = fitted;
-  MeasureSupport(*window, radius, min_edge, &outline);
+  MeasureSupport(edges, radius, &outline);
   return outline;
 }
 

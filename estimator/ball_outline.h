@@ -12,14 +12,16 @@
 // a weak prior, so that internal edges and occluders (outliers) lose their say; the rays are cast
 // again from the new centre (crossing the edge square on) and the circle fitted once more.
 //
-// A ray supports the circle when an edge of at least `min_edge` lies within a pixel (or 8 % of
-// the radius) of it: the fraction of supporting rays and the largest gap between them say how
-// much of a round outline is there.
+// A ray supports the circle when one of its edges lies within a pixel (or 8 % of the radius) of
+// it: the fraction of supporting rays and the largest gap between them say how much of a round
+// outline is there.
 #pragma once
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 #include <optional>
+
+#include "estimator/lab_image.h"
 
 namespace billiard::estimator {
 
@@ -33,11 +35,15 @@ struct BallOutline {
   double edge_strength = 0;  // mean rate of colour change across the outline [L*a*b* per px]
 };
 
-// The outline of the ball whose centre is about `start` [px] and radius about `radius` [px] in
-// a BGR frame; `min_edge` [L*a*b* units per px] is the weakest change of colour that counts as an
-// edge (a few times the cloth's noise). Empty when the rays find too few edges, or the circle
-// they fit moves more than a radius away or changes its radius by more than 40 %.
-std::optional<BallOutline> FitBallOutline(const cv::Mat& bgr, const Eigen::Vector2d& start,
+// The outline of the ball whose centre is about `start` [px] and radius about `radius` [px] in a
+// frame (`lab` must hold 2.6 radii around `start`); `min_edge` [L*a*b* units per px] is the
+// weakest change of colour that counts as an edge (a few times the cloth's noise). Empty when the
+// rays find too few edges, or the circle they fit moves more than a radius away or changes its
+// radius by more than 40 %.
+std::optional<BallOutline> FitBallOutline(const LabImage& lab, const Eigen::Vector2d& start,
                                           double radius, double min_edge);
+
+// The pixels FitBallOutline may read around `start`.
+cv::Rect OutlineWindow(const Eigen::Vector2d& start, double radius);
 
 }  // namespace billiard::estimator

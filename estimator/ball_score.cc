@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgproc.hpp>
 #include <vector>
 
 namespace billiard::estimator {
@@ -24,39 +23,28 @@ double Ramp(double x, double from, double width) {
   return std::clamp((x - from) / width, 0.0, 1.0);
 }
 
-cv::Vec3f LabOf(const cv::Vec3f& bgr) {
-  const cv::Mat pixel(1, 1, CV_32FC3, cv::Scalar(bgr[0] / 255.0, bgr[1] / 255.0, bgr[2] / 255.0));
-  cv::Mat lab;
-  cv::cvtColor(pixel, lab, cv::COLOR_BGR2Lab);
-  return lab.at<cv::Vec3f>(0, 0);
-}
-
 // The median colour distance from the cloth and the shine (98th percentile less the median of
 // L*) of the ball's disc; false when the disc is outside the frame.
-bool MeasureLook(const cv::Mat& bgr, const BallOutline& outline, const cv::Vec3f& cloth_bgr,
+bool MeasureLook(const LabImage& lab, const BallOutline& outline, const cv::Vec3f& cloth,
                  double* colour_distance, double* shine) {
   const double reach = kShineRadii * outline.radius;
   const cv::Rect rect =
       cv::Rect(static_cast<int>(std::floor(outline.centre.x() - reach)),
                static_cast<int>(std::floor(outline.centre.y() - reach)),
                static_cast<int>(2 * reach) + 2, static_cast<int>(2 * reach) + 2) &
-      cv::Rect(0, 0, bgr.cols, bgr.rows);
+      lab.region();
   if (rect.empty()) return false;
-  cv::Mat scaled, lab;
-  bgr(rect).convertTo(scaled, CV_32F, 1.0 / 255);
-  cv::cvtColor(scaled, lab, cv::COLOR_BGR2Lab);
-  const cv::Vec3f cloth = LabOf(cloth_bgr);
   const double colour_reach2 = std::pow(kColourRadii * outline.radius, 2);
   std::vector<float> distances, lightness;
-  for (int y = 0; y < lab.rows; ++y) {
-    const auto* row = lab.ptr<cv::Vec3f>(y);
-    const double dy = rect.y + y - outline.centre.y();
-    for (int x = 0; x < lab.cols; ++x) {
-      const double dx = rect.x + x - outline.centre.x();
+  for (int y = rect.y; y < rect.y + rect.height; ++y) {
+    const double dy = y - outline.centre.y();
+    for (int x = rect.x; x < rect.x + rect.width; ++x) {
+      const double dx = x - outline.centre.x();
       const double d2 = dx * dx + dy * dy;
       if (d2 > reach * reach) continue;
-      lightness.push_back(row[x][0]);
-      if (d2 <= colour_reach2) distances.push_back(static_cast<float>(cv::norm(row[x] - cloth)));
+      const cv::Vec3f colour = lab.Pixel(x, y);
+      lightness.push_back(colour[0]);
+      if (d2 <= colour_reach2) distances.push_back(static_cast<float>(cv::norm(colour - cloth)));
     }
   }
   if (distances.empty() || lightness.empty()) return false;
@@ -72,8 +60,9 @@ bool MeasureLook(const cv::Mat& bgr, const BallOutline& outline, const cv::Vec3f
 
 double BallEvidence::Score() const { return std::sqrt(outline * size * votes * look); }
 
-BallEvidence EvidenceForBall(const cv::Mat& bgr, const BallOutline& outline, double expected_radius,
-                             const cv::Vec3f& cloth_bgr, double vote_support) {
+BallEvidence EvidenceForBall(const LabImage& lab, const BallOutline& outline,
+                             double expected_radius, const cv::Vec3f& cloth,
+                             double vote_support) {
   BallEvidence evidence;
   evidence.outline =
       outline.largest_gap < kMaxGap
@@ -84,7 +73,7 @@ BallEvidence EvidenceForBall(const cv::Mat& bgr, const BallOutline& outline, dou
   evidence.size = std::clamp(1.0 - q * q, 0.0, 1.0);
   evidence.votes = Ramp(vote_support, kVotesFrom, kVotesWidth);
   double colour_distance = 0, shine = 0;
-  if (MeasureLook(bgr, outline, cloth_bgr, &colour_distance, &shine)) {
+  if (MeasureLook(lab, outline, cloth, &colour_distance, &shine)) {
     evidence.look = std::max(Ramp(colour_distance, kColourFrom, kColourWidth),
                              Ramp(shine, kShineFrom, kShineWidth));
   }

@@ -19,6 +19,7 @@
 #include <opencv2/core.hpp>
 
 #include "estimator/ball_outline.h"
+#include "estimator/lab_image.h"
 
 namespace billiard::estimator {
 
@@ -27,10 +28,11 @@ struct BallEvidence {
   double Score() const;
 };
 
-// The evidence for the outline being a ball of `expected_radius` [px] in a BGR frame, on cloth of
-// `cloth_bgr`, with `vote_support` of its circle voting for it (circle_votes.h; 1 when the
-// outline came from elsewhere, a tracker's prediction).
-BallEvidence EvidenceForBall(const cv::Mat& bgr, const BallOutline& outline, double expected_radius,
-                             const cv::Vec3f& cloth_bgr, double vote_support);
+// The evidence for the outline being a ball of `expected_radius` [px] in a frame, on cloth of
+// colour `cloth` (float L*a*b*), with `vote_support` of its circle voting for it
+// (circle_votes.h; 1 when the outline came from elsewhere, a tracker's prediction).
+BallEvidence EvidenceForBall(const LabImage& lab, const BallOutline& outline,
+                             double expected_radius, const cv::Vec3f& cloth,
+                             double vote_support);
 
 }  // namespace billiard::estimator

@@ -17,43 +17,57 @@ constexpr double kMinNoise = 0.1;
 // a peak is the largest within kPeakSeparationRadii of it.
 constexpr double kPeakRadii = 0.1;
 constexpr double kPeakSeparationRadii = 0.5;
-// The noise at full resolution is the median over a grid of kNoiseGrid x kNoiseGrid points.
-constexpr int kNoiseGrid = 32;
-// 8-bit L*a*b* stores L* times 255 / 100; Sobel's 3x3 derivative is 8 times the slope.
-constexpr float kLightnessUnit = 100.0f / 255.0f;
+// The noise at full resolution is the median over kNoisePatches x kNoisePatches patches of
+// kNoisePatchPx x kNoisePatchPx pixels (a ball in one changes the median little).
+constexpr int kNoisePatches = 5;
+constexpr int kNoisePatchPx = 16;
+// Sobel's 3x3 derivative is 8 times the slope.
 constexpr float kSobelGain = 1.0f / 8.0f;
 
-// The colour structure tensor's strength (square root of its larger eigenvalue) and direction
-// [rad] at every pixel of an 8-bit BGR image.
-void ColourGradient(const cv::Mat& bgr, cv::Mat* magnitude, cv::Mat* angle) {
-  cv::Mat lab;
-  cv::cvtColor(bgr, lab, cv::COLOR_BGR2Lab);
+// The colour structure tensor (Di Zenzo 1986) of the three channels' derivatives at one pixel:
+// its strength (the square root of the larger eigenvalue) and the unit direction of fastest
+// change (the larger eigenvector, without trigonometry).
+void StructureTensor(float xx, float yy, float xy, float* strength, float* dx, float* dy) {
+  const float root = std::sqrt((xx - yy) * (xx - yy) + 4 * xy * xy);
+  const float largest = 0.5f * (xx + yy + root);
+  *strength = std::sqrt(largest);
+  // (largest - yy, xy) and (xy, largest - xx) are both eigenvectors; the longer is exact.
+  float ex = largest - yy, ey = xy;
+  if (ex * ex + ey * ey < xy * xy + (largest - xx) * (largest - xx)) {
+    ex = xy;
+    ey = largest - xx;
+  }
+  const float norm = std::sqrt(ex * ex + ey * ey);
+  *dx = norm > 0 ? ex / norm : 1.0f;
+  *dy = norm > 0 ? ey / norm : 0.0f;
+}
+
+// The colour gradient's strength [L*a*b* units per px] and direction at every pixel of an 8-bit
+// L*a*b* image.
+void ColourGradient(const cv::Mat& lab, cv::Mat* magnitude, cv::Mat* dx, cv::Mat* dy) {
   cv::Mat channels[3];
   cv::split(lab, channels);
-  cv::Mat jxx = cv::Mat::zeros(bgr.size(), CV_32F), jyy = jxx.clone(), jxy = jxx.clone();
+  cv::Mat jxx = cv::Mat::zeros(lab.size(), CV_32F), jyy = jxx.clone(), jxy = jxx.clone();
   for (int c = 0; c < 3; ++c) {
     cv::Mat gx, gy;
-    const double unit = kSobelGain * (c == 0 ? kLightnessUnit : 1.0f);
+    const double unit = kSobelGain * (c == 0 ? LabImage::kLightnessUnit : 1.0f);
     cv::Sobel(channels[c], gx, CV_32F, 1, 0, 3, unit);
     cv::Sobel(channels[c], gy, CV_32F, 0, 1, 3, unit);
     cv::accumulateSquare(gx, jxx);
     cv::accumulateSquare(gy, jyy);
     cv::accumulateProduct(gx, gy, jxy);
   }
-  magnitude->create(bgr.size(), CV_32F);
-  angle->create(bgr.size(), CV_32F);
-  for (int y = 0; y < bgr.rows; ++y) {
+  magnitude->create(lab.size(), CV_32F);
+  dx->create(lab.size(), CV_32F);
+  dy->create(lab.size(), CV_32F);
+  for (int y = 0; y < lab.rows; ++y) {
     const float* a = jxx.ptr<float>(y);
     const float* b = jyy.ptr<float>(y);
     const float* c = jxy.ptr<float>(y);
     float* m = magnitude->ptr<float>(y);
-    float* t = angle->ptr<float>(y);
-    for (int x = 0; x < bgr.cols; ++x) {
-      const float trace = a[x] + b[x];
-      const float root = std::sqrt((a[x] - b[x]) * (a[x] - b[x]) + 4 * c[x] * c[x]);
-      m[x] = std::sqrt(0.5f * (trace + root));
-      t[x] = 0.5f * std::atan2(2 * c[x], a[x] - b[x]);
-    }
+    float* u = dx->ptr<float>(y);
+    float* v = dy->ptr<float>(y);
+    for (int x = 0; x < lab.cols; ++x) StructureTensor(a[x], b[x], c[x], &m[x], &u[x], &v[x]);
   }
 }
 
@@ -71,19 +85,29 @@ void Splat(cv::Mat& votes, double x, double y, float weight) {
 
 }  // namespace
 
-double EdgeNoise(const cv::Mat& bgr, const TableRegion& table) {
-  // From a grid of 3x3 patches: a rate of change at every pixel of a frame costs more than the
-  // rest of the search.
-  const cv::Rect box = table.Bounds() & cv::Rect(1, 1, bgr.cols - 2, bgr.rows - 2);
+double EdgeNoise(const LabImage& lab, const TableRegion& table) {
+  // From kNoisePatches x kNoisePatches patches spread over the table: a rate of change at every
+  // pixel of a frame costs more than the rest of the search.
+  const cv::Rect region = lab.region();
+  const cv::Rect box = table.Bounds() & cv::Rect(region.x + 1, region.y + 1, region.width - 2,
+                                                 region.height - 2);
   std::vector<float> rates;
-  for (int j = 0; j < kNoiseGrid; ++j) {
-    for (int i = 0; i < kNoiseGrid; ++i) {
-      const cv::Point p(box.x + (i + 0.5) * box.width / kNoiseGrid,
-                        box.y + (j + 0.5) * box.height / kNoiseGrid);
-      if (!table.Contains({p.x, p.y})) continue;
-      cv::Mat magnitude, angle;
-      ColourGradient(bgr(cv::Rect(p.x - 1, p.y - 1, 3, 3)), &magnitude, &angle);
-      rates.push_back(magnitude.at<float>(1, 1));
+  for (int j = 0; j < kNoisePatches && !box.empty(); ++j) {
+    for (int i = 0; i < kNoisePatches; ++i) {
+      const int cx = box.x + (2 * i + 1) * box.width / (2 * kNoisePatches);
+      const int cy = box.y + (2 * j + 1) * box.height / (2 * kNoisePatches);
+      if (!table.Contains({cx, cy})) continue;
+      const cv::Rect patch = cv::Rect(cx - kNoisePatchPx / 2, cy - kNoisePatchPx / 2,
+                                      kNoisePatchPx, kNoisePatchPx) & box;
+      for (int y = patch.y; y < patch.y + patch.height; ++y) {
+        for (int x = patch.x; x < patch.x + patch.width; ++x) {
+          const cv::Vec3f gx = 0.5f * (lab.Pixel(x + 1, y) - lab.Pixel(x - 1, y));
+          const cv::Vec3f gy = 0.5f * (lab.Pixel(x, y + 1) - lab.Pixel(x, y - 1));
+          float strength, dx, dy;
+          StructureTensor(gx.dot(gx), gy.dot(gy), gx.dot(gy), &strength, &dx, &dy);
+          rates.push_back(strength);
+        }
+      }
     }
   }
   if (rates.empty()) return kMinNoise;
@@ -91,8 +115,8 @@ double EdgeNoise(const cv::Mat& bgr, const TableRegion& table) {
   return std::max(kMinNoise, static_cast<double>(rates[rates.size() / 2]));
 }
 
-std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& table, const BallScale& scale,
-                           double min_support) {
+std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& table,
+                                       const BallScale& scale, double min_support) {
   double smallest = HUGE_VAL, largest = 0;
   for (const auto& c : table.corners) {
     smallest = std::min(smallest, scale.RadiusAt(c));
@@ -106,8 +130,9 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
       cv::Rect(0, 0, bgr.cols, bgr.rows);
   if (region.width < 8 || region.height < 8) return peaks;
   const int factor = std::max(1, static_cast<int>(smallest / kVoteRadiusPx));
-  cv::Mat small;
-  cv::resize(bgr(region), small, {}, 1.0 / factor, 1.0 / factor, cv::INTER_AREA);
+  cv::Mat reduced;
+  cv::resize(bgr(region), reduced, {}, 1.0 / factor, 1.0 / factor, cv::INTER_AREA);
+  const cv::Mat small = LabImage(reduced).pixels();
   const auto to_small = [&](const Eigen::Vector2d& p) {
     return Eigen::Vector2d((p.x() - region.x + 0.5) / factor - 0.5,
                            (p.y() - region.y + 0.5) / factor - 0.5);
@@ -115,19 +140,19 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
   const auto to_full = [&](double x, double y) {
     return Eigen::Vector2d((x + 0.5) * factor - 0.5 + region.x, (y + 0.5) * factor - 0.5 + region.y);
   };
-  // Where votes are cast from: the table, and a ball's width around it (balls on the cushion).
-  cv::Mat voting = cv::Mat::zeros(small.size(), CV_8U), inside = voting.clone();
+  // Peaks count inside the cloth's outline (the detector decides which are on the playing
+  // surface); votes come from the region, the rails included (a ball against the cushion has its
+  // outline there).
+  cv::Mat inside = cv::Mat::zeros(small.size(), CV_8U);
   std::vector<cv::Point> quad;
-  for (const auto& c : table.corners) {
+  for (const auto& c : table.cloth_corners) {
     const Eigen::Vector2d s = to_small(c);
     quad.emplace_back(static_cast<int>(std::lround(s.x())), static_cast<int>(std::lround(s.y())));
   }
   cv::fillConvexPoly(inside, quad, 255);
-  const int reach = 2 * static_cast<int>(std::ceil(largest / factor)) + 1;
-  cv::dilate(inside, voting, cv::getStructuringElement(cv::MORPH_ELLIPSE, {reach, reach}));
 
-  cv::Mat magnitude, angle;
-  ColourGradient(small, &magnitude, &angle);
+  cv::Mat magnitude, along_x, along_y;
+  ColourGradient(small, &magnitude, &along_x, &along_y);
   std::vector<float> rates;
   for (int y = 0; y < small.rows; y += 2) {
     for (int x = 0; x < small.cols; x += 2) {
@@ -145,11 +170,11 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
   cv::Mat votes = cv::Mat::zeros(small.size(), CV_32F);
   for (int y = 1; y + 1 < small.rows; ++y) {
     const float* m = magnitude.ptr<float>(y);
-    const float* t = angle.ptr<float>(y);
-    const uint8_t* cast = voting.ptr<uint8_t>(y);
+    const float* cs = along_x.ptr<float>(y);
+    const float* sn = along_y.ptr<float>(y);
     for (int x = 1; x + 1 < small.cols; ++x) {
-      if (!cast[x] || m[x] < min_edge) continue;
-      const float c = std::cos(t[x]), s = std::sin(t[x]);
+      if (m[x] < min_edge) continue;
+      const float c = cs[x], s = sn[x];
       // Thin: only the strongest pixel across the edge votes.
       const int dx = static_cast<int>(std::lround(c)), dy = static_cast<int>(std::lround(s));
       if (m[x] < magnitude.at<float>(y + dy, x + dx) || m[x] < magnitude.at<float>(y - dy, x - dx)) {

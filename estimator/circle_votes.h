@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "estimator/ball_scale.h"
+#include "estimator/lab_image.h"
 #include "estimator/table_finder.h"
 
 namespace billiard::estimator {
@@ -38,12 +39,13 @@ struct CircleVote {
   double support = 0;     // the fraction of a circle's outline voting for it (about 0..1)
 };
 
-// The local maxima of the votes inside the table with at least `min_support`, strongest first.
+// The local maxima of the votes inside the table of a BGR frame with at least `min_support`,
+// strongest first.
 std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& table,
                                        const BallScale& scale, double min_support);
 
 // The median rate of colour change over the table [L*a*b* units per full-resolution px]: the
 // cloth's own texture and noise, the scale of what counts as an edge.
-double EdgeNoise(const cv::Mat& bgr, const TableRegion& table);
+double EdgeNoise(const LabImage& lab, const TableRegion& table);
 
 }  // namespace billiard::estimator

@@ -7,11 +7,13 @@
 #include <random>
 #include <vector>
 
+#include "estimator/lab_image.h"
+
 namespace billiard::estimator {
 
 namespace {
 
-// The search resolution: the frame's longer side reduced to this many pixels.
+// The search resolution: the frame's longer side reduced to at most this many pixels.
 constexpr double kSearchSize = 400.0;
 // The cloth colour's mode: a histogram of L* in bins of kLightnessBin and a*, b* in bins of
 // kChromaBin, each pixel weighted by 1 - d^2 (d: its offset from the image centre over half the
@@ -69,27 +71,23 @@ struct Line {
   int points = 0;
 };
 
-cv::Mat ToLab(const cv::Mat& bgr) {
-  cv::Mat scaled, lab;
-  bgr.convertTo(scaled, CV_32F, 1.0 / 255);
-  cv::cvtColor(scaled, lab, cv::COLOR_BGR2Lab);
-  return lab;
-}
-
-int HistogramBin(const cv::Vec3f& lab) {
-  const int l = std::clamp(static_cast<int>(lab[0] / kLightnessBin), 0, kLightnessBins - 1);
-  const int a = std::clamp(static_cast<int>((lab[1] + 128) / kChromaBin), 0, kChromaBins - 1);
-  const int b = std::clamp(static_cast<int>((lab[2] + 128) / kChromaBin), 0, kChromaBins - 1);
+// The histogram bin of an 8-bit L*a*b* colour (lab_image.h).
+int HistogramBin(const cv::Vec3b& lab) {
+  const int l = std::min(kLightnessBins - 1, static_cast<int>(lab[0] * LabImage::kLightnessUnit /
+                                                              kLightnessBin));
+  const int a = std::min(kChromaBins - 1, static_cast<int>(lab[1] / kChromaBin));
+  const int b = std::min(kChromaBins - 1, static_cast<int>(lab[2] / kChromaBin));
   return (l * kChromaBins + a) * kChromaBins + b;
 }
 
 // The cloth's colour (BGR): the mean of the pixels in the mode of the centre-weighted L*a*b*
 // histogram (the bins next to the fullest neighbourhood of bins).
-cv::Vec3f ClothColour(const cv::Mat& small, const cv::Mat& lab) {
+cv::Vec3f ClothColour(const cv::Mat& small) {
+  const cv::Mat lab = LabImage(small).pixels();
   std::vector<float> histogram(kLightnessBins * kChromaBins * kChromaBins, 0.0f);
   const double half_w = 0.5 * small.cols, half_h = 0.5 * small.rows;
   for (int y = 0; y < lab.rows; ++y) {
-    const auto* row = lab.ptr<cv::Vec3f>(y);
+    const auto* row = lab.ptr<cv::Vec3b>(y);
     const double dy = (y - half_h) / half_h;
     for (int x = 0; x < lab.cols; ++x) {
       const double dx = (x - half_w) / half_w;
@@ -122,7 +120,7 @@ cv::Vec3f ClothColour(const cv::Mat& small, const cv::Mat& lab) {
   cv::Vec3d sum(0, 0, 0);
   double count = 0;
   for (int y = 0; y < lab.rows; ++y) {
-    const auto* row = lab.ptr<cv::Vec3f>(y);
+    const auto* row = lab.ptr<cv::Vec3b>(y);
     const auto* colour = small.ptr<cv::Vec3b>(y);
     for (int x = 0; x < lab.cols; ++x) {
       const int bin = HistogramBin(row[x]);
@@ -468,16 +466,39 @@ const char* TableViewName(TableView view) {
   return view == TableView::kOverhead ? "overhead" : "oblique";
 }
 
-bool TableRegion::Contains(const Eigen::Vector2d& pixel, double margin_px) const {
+namespace {
+
+bool InsideQuadrilateral(const std::array<Eigen::Vector2d, 4>& corners,
+                         const Eigen::Vector2d& pixel, double margin_px) {
   for (int i = 0; i < 4; ++i) {
     const Eigen::Vector2d a = corners[i], b = corners[(i + 1) % 4];
     const Eigen::Vector2d edge = (b - a).normalized();
     const Eigen::Vector2d inward(-edge.y(), edge.x());
-    const Eigen::Vector2d opposite = corners[(i + 2) % 4] - a;
-    const double sign = inward.dot(opposite) > 0 ? 1.0 : -1.0;
+    const double sign = inward.dot(corners[(i + 2) % 4] - a) > 0 ? 1.0 : -1.0;
     if (sign * inward.dot(pixel - a) < margin_px) return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool TableRegion::Contains(const Eigen::Vector2d& pixel, double margin_px) const {
+  return InsideQuadrilateral(corners, pixel, margin_px);
+}
+
+bool TableRegion::InsideCloth(const Eigen::Vector2d& pixel, double margin_px) const {
+  return InsideQuadrilateral(cloth_corners, pixel, margin_px);
+}
+
+std::array<Eigen::Vector2d, 8> TableRegion::PocketPlaces() const {
+  std::array<Eigen::Vector2d, 8> places;
+  const double a = kTableAspect;
+  const std::array<Eigen::Vector2d, 8> table = {{{0, 0}, {a / 2, 0}, {a, 0}, {a, 0.5},
+                                                 {a, 1}, {a / 2, 1}, {0, 1}, {0, 0.5}}};
+  for (int i = 0; i < 8; ++i) {
+    places[i] = (image_from_table * table[i].homogeneous()).hnormalized();
+  }
+  return places;
 }
 
 double TableRegion::InverseDepthAt(const Eigen::Vector2d& pixel) const {
@@ -502,12 +523,14 @@ cv::Rect TableRegion::Bounds() const {
 
 TableSearch FindTable(const cv::Mat& bgr) {
   if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame"};
-  const double scale = std::min(1.0, kSearchSize / std::max(bgr.cols, bgr.rows));
+  // An integer reduction: OpenCV's area averaging is much faster by whole factors.
+  const int factor = static_cast<int>(std::ceil(std::max(bgr.cols, bgr.rows) / kSearchSize));
+  const double scale = 1.0 / factor;
   cv::Mat small;
   cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
   TableRegion table;
   table.mask_scale = scale;
-  table.cloth_colour = ClothColour(small, ToLab(small));
+  table.cloth_colour = ClothColour(small);
   table.cloth = LargestCentralRegion(ClothLike(small, table.cloth_colour));
   if (cv::countNonZero(table.cloth) < kMinClothFraction * small.total()) {
     return {std::nullopt, "no table: no evenly coloured cloth covers " +

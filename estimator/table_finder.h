@@ -81,6 +81,11 @@ struct TableRegion {
 
   // Whether a full-resolution pixel is on the playing surface, at least `margin_px` inside it.
   bool Contains(const Eigen::Vector2d& pixel, double margin_px = 0.0) const;
+  // Whether a full-resolution pixel is inside the cloth's outline, at least `margin_px` inside.
+  bool InsideCloth(const Eigen::Vector2d& pixel, double margin_px = 0.0) const;
+  // The places pockets may be [full-resolution px]: the corners of the playing surface and the
+  // middles of its sides (which two are the long ones the frame may not tell).
+  std::array<Eigen::Vector2d, 8> PocketPlaces() const;
   // Relative inverse depth (1 at the table's centre) at a full-resolution pixel.
   double InverseDepthAt(const Eigen::Vector2d& pixel) const;
   // The table point (x in [0, 2], y in [0, 1] on the surface) seen at a pixel.
