@@ -10,10 +10,16 @@ namespace billiard::estimator {
 
 namespace {
 
-// Along a ray, samples every kRayStepPx from kRayFrom to kRayTo radii; an edge candidate is a
-// local maximum of the colour's rate of change of at least kEdgeOfRayMax of the ray's largest.
-constexpr double kRayStepPx = 0.5;
-constexpr double kRayFrom = 0.5, kRayTo = 1.5;
+// Along a ray, samples every `step` pixels over a range of radii: the first round, from a guess,
+// widely and coarsely (kFirstRange radii either side of the radius, every kFirstStepPx), the
+// second, from about the centre, narrowly and finely (kSecondRange, kSecondStepPx). An edge
+// candidate is a local maximum of the colour's rate of change of at least kEdgeOfRayMax of the
+// ray's largest.
+struct RaySampling {
+  double range;  // radii either side of the radius
+  double step;   // [px]
+};
+constexpr RaySampling kRounds[] = {{0.5, 1.0}, {0.3, 0.5}};
 constexpr double kEdgeOfRayMax = 0.25;
 // The window holds every ray from a centre that may move a radius.
 constexpr double kWindowRadii = 2.6;
@@ -40,10 +46,11 @@ using RayEdges = std::vector<std::pair<Eigen::Vector2d, double>>;
 
 std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabImage& lab,
                                                   const Eigen::Vector2d& centre, double radius,
-                                                  double min_edge) {
+                                                  double min_edge, const RaySampling& sampling) {
   std::array<RayEdges, kOutlineRays> edges;
-  const double from = kRayFrom * radius;
-  const int samples = static_cast<int>((kRayTo - kRayFrom) * radius / kRayStepPx) + 1;
+  const double step = sampling.step;
+  const double from = (1.0 - sampling.range) * radius;
+  const int samples = static_cast<int>(2 * sampling.range * radius / step) + 1;
   std::vector<cv::Vec3f> colour(samples);
   std::vector<double> rate(samples, 0.0);
   for (int k = 0; k < kOutlineRays; ++k) {
@@ -51,13 +58,13 @@ std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabImage& lab,
     const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
     bool inside = true;
     for (int i = 0; i < samples && inside; ++i) {
-      inside = lab.At(centre + (from + i * kRayStepPx) * direction, &colour[i]);
+      inside = lab.At(centre + (from + i * step) * direction, &colour[i]);
     }
     if (!inside) continue;
     double largest = 0;
     for (int i = 1; i + 1 < samples; ++i) {
       const cv::Vec3f d = colour[i + 1] - colour[i - 1];
-      rate[i] = std::sqrt(d.dot(d)) / (2 * kRayStepPx);
+      rate[i] = std::sqrt(d.dot(d)) / (2 * step);
       largest = std::max(largest, rate[i]);
     }
     for (int i = 2; i + 2 < samples; ++i) {
@@ -69,7 +76,7 @@ std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabImage& lab,
       const double curvature = rate[i - 1] - 2 * rate[i] + rate[i + 1];
       double offset = curvature < 0 ? 0.5 * (rate[i - 1] - rate[i + 1]) / curvature : 0.0;
       offset = std::clamp(offset, -1.0, 1.0);
-      edges[k].push_back({centre + (from + (i + offset) * kRayStepPx) * direction, rate[i]});
+      edges[k].push_back({centre + (from + (i + offset) * step) * direction, rate[i]});
     }
   }
   return edges;
@@ -170,8 +177,8 @@ std::optional<BallOutline> FitBallOutline(const LabImage& lab, const Eigen::Vect
   Eigen::Vector2d centre = start;
   double fitted = radius;
   std::array<RayEdges, kOutlineRays> edges;
-  for (int round = 0; round < 2; ++round) {
-    edges = EdgesAlongRays(lab, centre, radius, min_edge);
+  for (const RaySampling& sampling : kRounds) {
+    edges = EdgesAlongRays(lab, centre, radius, min_edge, sampling);
     if (!FitCircle(edges, radius, &centre, &fitted)) return std::nullopt;
     if ((centre - start).norm() > kMaxShiftRadii * radius ||
         std::abs(fitted - radius) > kMaxRadiusChange * radius) {

@@ -2,7 +2,8 @@
 // detector does with each candidate (ball_detector.h), for isolated balls, balls touching in a
 // rack, balls half hidden by a cushion or an arm.
 //
-// Along each of kOutlineRays rays from the guessed centre, the ball's edge is where the colour
+// Along each of kOutlineRays rays from the guessed centre (out to half a radius either side of the
+// outline), the ball's edge is where the colour
 // (CIE L*a*b*, so that a change of hue counts as much as one of brightness) changes fastest: the
 // outline of a ball against the cloth, against its own shadow, or against the dark crease where
 // it touches another ball. A ray may cross several such places (a stripe, the number's disc, a
@@ -10,7 +11,8 @@
 // kept as a candidate. The circle is then fitted by iteratively reweighted least squares (Tukey's
 // biweight) to the candidate of each ray nearest the current circle, with the expected radius as
 // a weak prior, so that internal edges and occluders (outliers) lose their say; the rays are cast
-// again from the new centre (crossing the edge square on) and the circle fitted once more.
+// again from the new centre (crossing the edge square on, sampled more finely over a narrower
+// range) and the circle fitted once more.
 //
 // A ray supports the circle when one of its edges lies within a pixel (or 8 % of the radius) of
 // it: the fraction of supporting rays and the largest gap between them say how much of a round
@@ -25,7 +27,7 @@
 
 namespace billiard::estimator {
 
-inline constexpr int kOutlineRays = 48;
+inline constexpr int kOutlineRays = 32;
 
 struct BallOutline {
   Eigen::Vector2d centre;    // [px], OpenCV convention

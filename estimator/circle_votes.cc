@@ -12,6 +12,7 @@ namespace {
 // median, and with full weight from kFullEdgeNoises times it (but never below kMinFullEdge
 // L*a*b* units per pixel: a clean synthetic cloth has no noise to speak of).
 constexpr double kMinEdgeNoises = 2.0, kFullEdgeNoises = 6.0, kMinFullEdge = 4.0;
+// The L*a*b* noise (EdgeNoise) is never taken below kMinNoise units per pixel.
 constexpr double kMinNoise = 0.1;
 // The votes are summed over a Gaussian of kPeakRadii of the smallest radius (at least a pixel);
 // a peak is the largest within kPeakSeparationRadii of it.
@@ -24,13 +25,14 @@ constexpr int kNoisePatchPx = 16;
 // Sobel's 3x3 derivative is 8 times the slope.
 constexpr float kSobelGain = 1.0f / 8.0f;
 
-// The colour structure tensor (Di Zenzo 1986) of the three channels' derivatives at one pixel:
-// its strength (the square root of the larger eigenvalue) and the unit direction of fastest
-// change (the larger eigenvector, without trigonometry).
-void StructureTensor(float xx, float yy, float xy, float* strength, float* dx, float* dy) {
-  const float root = std::sqrt((xx - yy) * (xx - yy) + 4 * xy * xy);
-  const float largest = 0.5f * (xx + yy + root);
-  *strength = std::sqrt(largest);
+// The larger eigenvalue of a 2x2 structure tensor [[xx, xy], [xy, yy]]: the squared strength of
+// the change of colour (Di Zenzo 1986).
+float LargestEigenvalue(float xx, float yy, float xy) {
+  return 0.5f * (xx + yy + std::sqrt((xx - yy) * (xx - yy) + 4 * xy * xy));
+}
+
+// The unit direction of fastest change (the larger eigenvector), without trigonometry.
+void Direction(float xx, float yy, float xy, float largest, float* dx, float* dy) {
   // (largest - yy, xy) and (xy, largest - xx) are both eigenvectors; the longer is exact.
   float ex = largest - yy, ey = xy;
   if (ex * ex + ey * ey < xy * xy + (largest - xx) * (largest - xx)) {
@@ -42,34 +44,50 @@ void StructureTensor(float xx, float yy, float xy, float* strength, float* dx, f
   *dy = norm > 0 ? ey / norm : 0.0f;
 }
 
-// The colour gradient's strength [L*a*b* units per px] and direction at every pixel of an 8-bit
-// L*a*b* image.
-void ColourGradient(const cv::Mat& lab, cv::Mat* magnitude, cv::Mat* dx, cv::Mat* dy) {
-  cv::Mat channels[3];
-  cv::split(lab, channels);
-  cv::Mat jxx = cv::Mat::zeros(lab.size(), CV_32F), jyy = jxx.clone(), jxy = jxx.clone();
-  for (int c = 0; c < 3; ++c) {
-    cv::Mat gx, gy;
-    const double unit = kSobelGain * (c == 0 ? LabImage::kLightnessUnit : 1.0f);
-    cv::Sobel(channels[c], gx, CV_32F, 1, 0, 3, unit);
-    cv::Sobel(channels[c], gy, CV_32F, 0, 1, 3, unit);
-    cv::accumulateSquare(gx, jxx);
-    cv::accumulateSquare(gy, jyy);
-    cv::accumulateProduct(gx, gy, jxy);
+// The colour gradient of an 8-bit L*a*b* image: the channels' derivatives (16-bit, all three at
+// once: OpenCV's fastest path), the structure tensor's squared strength at every pixel
+// [(L*a*b* units per px)^2], and its direction where asked.
+class ColourGradient {
+ public:
+  explicit ColourGradient(const cv::Mat& image) {
+    cv::Sobel(image, gx_, CV_16S, 1, 0, 3);
+    cv::Sobel(image, gy_, CV_16S, 0, 1, 3);
+    strength2_.create(image.size(), CV_32F);
+    for (int y = 0; y < image.rows; ++y) {
+      float* m = strength2_.ptr<float>(y);
+      for (int x = 0; x < image.cols; ++x) {
+        float xx, yy, xy;
+        Tensor(x, y, &xx, &yy, &xy);
+        m[x] = LargestEigenvalue(xx, yy, xy);
+      }
+    }
   }
-  magnitude->create(lab.size(), CV_32F);
-  dx->create(lab.size(), CV_32F);
-  dy->create(lab.size(), CV_32F);
-  for (int y = 0; y < lab.rows; ++y) {
-    const float* a = jxx.ptr<float>(y);
-    const float* b = jyy.ptr<float>(y);
-    const float* c = jxy.ptr<float>(y);
-    float* m = magnitude->ptr<float>(y);
-    float* u = dx->ptr<float>(y);
-    float* v = dy->ptr<float>(y);
-    for (int x = 0; x < lab.cols; ++x) StructureTensor(a[x], b[x], c[x], &m[x], &u[x], &v[x]);
+  const cv::Mat& strength2() const { return strength2_; }
+  // The unit direction of fastest change at (x, y).
+  void DirectionAt(int x, int y, float* dx, float* dy) const {
+    float xx, yy, xy;
+    Tensor(x, y, &xx, &yy, &xy);
+    Direction(xx, yy, xy, strength2_.at<float>(y, x), dx, dy);
   }
-}
+
+ private:
+  void Tensor(int x, int y, float* xx, float* yy, float* xy) const {
+    // 8-bit L*a*b* stores L* times 255 / 100.
+    static constexpr float kUnit[3] = {kSobelGain * LabImage::kLightnessUnit, kSobelGain,
+                                       kSobelGain};
+    const cv::Vec3s& ax = gx_.at<cv::Vec3s>(y, x);
+    const cv::Vec3s& ay = gy_.at<cv::Vec3s>(y, x);
+    *xx = *yy = *xy = 0;
+    for (int c = 0; c < 3; ++c) {
+      const float u = kUnit[c] * ax[c], v = kUnit[c] * ay[c];
+      *xx += u * u;
+      *yy += v * v;
+      *xy += u * v;
+    }
+  }
+
+  cv::Mat gx_, gy_, strength2_;
+};
 
 void Splat(cv::Mat& votes, double x, double y, float weight) {
   const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
@@ -103,9 +121,7 @@ double EdgeNoise(const LabImage& lab, const TableRegion& table) {
         for (int x = patch.x; x < patch.x + patch.width; ++x) {
           const cv::Vec3f gx = 0.5f * (lab.Pixel(x + 1, y) - lab.Pixel(x - 1, y));
           const cv::Vec3f gy = 0.5f * (lab.Pixel(x, y + 1) - lab.Pixel(x, y - 1));
-          float strength, dx, dy;
-          StructureTensor(gx.dot(gx), gy.dot(gy), gx.dot(gy), &strength, &dx, &dy);
-          rates.push_back(strength);
+          rates.push_back(std::sqrt(LargestEigenvalue(gx.dot(gx), gy.dot(gy), gx.dot(gy))));
         }
       }
     }
@@ -130,9 +146,9 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
       cv::Rect(0, 0, bgr.cols, bgr.rows);
   if (region.width < 8 || region.height < 8) return peaks;
   const int factor = std::max(1, static_cast<int>(smallest / kVoteRadiusPx));
-  cv::Mat reduced;
-  cv::resize(bgr(region), reduced, {}, 1.0 / factor, 1.0 / factor, cv::INTER_AREA);
-  const cv::Mat small = LabImage(reduced).pixels();
+  cv::Mat small;
+  cv::resize(bgr(region), small, {}, 1.0 / factor, 1.0 / factor, cv::INTER_AREA);
+  cv::cvtColor(small, small, cv::COLOR_BGR2Lab);
   const auto to_small = [&](const Eigen::Vector2d& p) {
     return Eigen::Vector2d((p.x() - region.x + 0.5) / factor - 0.5,
                            (p.y() - region.y + 0.5) / factor - 0.5);
@@ -151,38 +167,38 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
   }
   cv::fillConvexPoly(inside, quad, 255);
 
-  cv::Mat magnitude, along_x, along_y;
-  ColourGradient(small, &magnitude, &along_x, &along_y);
+  const ColourGradient gradient(small);
+  const cv::Mat& strength2 = gradient.strength2();
   std::vector<float> rates;
   for (int y = 0; y < small.rows; y += 2) {
     for (int x = 0; x < small.cols; x += 2) {
-      if (inside.at<uint8_t>(y, x)) rates.push_back(magnitude.at<float>(y, x));
+      if (inside.at<uint8_t>(y, x)) rates.push_back(strength2.at<float>(y, x));
     }
   }
   double noise = kMinNoise;
   if (!rates.empty()) {
     std::nth_element(rates.begin(), rates.begin() + rates.size() / 2, rates.end());
-    noise = std::max(noise, static_cast<double>(rates[rates.size() / 2]));
+    noise = std::max(noise, std::sqrt(static_cast<double>(rates[rates.size() / 2])));
   }
-  const float min_edge = static_cast<float>(kMinEdgeNoises * noise);
+  const float min_edge2 = static_cast<float>(std::pow(kMinEdgeNoises * noise, 2));
   const float full_edge = static_cast<float>(std::max(kMinFullEdge, kFullEdgeNoises * noise));
 
   cv::Mat votes = cv::Mat::zeros(small.size(), CV_32F);
   for (int y = 1; y + 1 < small.rows; ++y) {
-    const float* m = magnitude.ptr<float>(y);
-    const float* cs = along_x.ptr<float>(y);
-    const float* sn = along_y.ptr<float>(y);
+    const float* m = strength2.ptr<float>(y);
     for (int x = 1; x + 1 < small.cols; ++x) {
-      if (m[x] < min_edge) continue;
-      const float c = cs[x], s = sn[x];
+      if (m[x] < min_edge2) continue;
+      float c, s;
+      gradient.DirectionAt(x, y, &c, &s);
       // Thin: only the strongest pixel across the edge votes.
       const int dx = static_cast<int>(std::lround(c)), dy = static_cast<int>(std::lround(s));
-      if (m[x] < magnitude.at<float>(y + dy, x + dx) || m[x] < magnitude.at<float>(y - dy, x - dx)) {
+      if (m[x] < strength2.at<float>(y + dy, x + dx) || m[x] < strength2.at<float>(y - dy, x - dx)) {
         continue;
       }
       const double r = scale.RadiusAt(to_full(x, y)) / factor;
       if (!(r > 1)) continue;
-      const float weight = std::min(1.0f, m[x] / full_edge) / static_cast<float>(2 * M_PI * r);
+      const float weight =
+          std::min(1.0f, std::sqrt(m[x]) / full_edge) / static_cast<float>(2 * M_PI * r);
       Splat(votes, x + r * c, y + r * s, weight);
       Splat(votes, x - r * c, y - r * s, weight);
     }
