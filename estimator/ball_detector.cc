@@ -26,7 +26,7 @@ constexpr double kMinCellCloth = 0.2;
 // An edge is a colour change of at least kEdgeNoises times the cloth's own, and never less than
 // kMinEdge L*a*b* units per pixel (a clean frame's cloth has almost no noise, and the least
 // ball, black on navy, changes by several units per pixel).
-constexpr double kEdgeNoises = 3.0, kMinEdge = 2.0;
+constexpr double kEdgeNoises = 1.5, kMinEdge = 2.0;
 // The balls' scale is measured on the compact blobs of not-cloth (contrast of at least 1,
 // local_cloth.h) at a resolution where the table is at most kBlobTableSize pixels across: blobs
 // of at least kMinBlobArea pixels, about as wide as high (kMaxBlobAspect), filling at least
@@ -53,7 +53,7 @@ constexpr double kWindowRadiiAroundTable = 3.0;
 // elsewhere its centre may be up to kOffClothRadii outside the cloth's outline (which a dark edge
 // of the cloth, in the cushion's shade, can pull in).
 constexpr double kPocketRadii = 3.0;
-constexpr double kOffSurfaceRadii = 1.0;
+constexpr double kOffSurfaceRadii = 0.5;
 constexpr double kOffClothRadii = 1.0;
 // Two balls' centres are at least two radii apart; closer than kOverlapRadii radii (touching
 // balls' outlines fitted a little large, or a ball's shadow beside it) only the better is kept.
@@ -289,8 +289,9 @@ std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
     const auto outline =
         FitBallOutline(lab, peak.pixel, radius, MinEdge(cloth_.edge_noise));
     if (!outline || !OnTable(*table_, outline->centre, radius)) continue;
-    const double score = EvidenceForBall(lab, *outline, radius,
-                                         LabOf(cloth_.ColourAt(outline->centre)), peak.support)
+    const double score = EvidenceForBall(bgr, lab, *outline, radius,
+                                         {cloth_.ColourAt(outline->centre), cloth_.noise},
+                                         peak.support)
                              .Score();
     outlined.push_back({{outline->centre, outline->radius, score}, peak.support});
   }
@@ -339,7 +340,8 @@ std::optional<BallDetection> BallDetector::RefineAt(const cv::Mat& image,
   const LabImage lab(bgr, OutlineWindow(predicted, radius_px));
   const auto outline = FitBallOutline(lab, predicted, radius_px, MinEdge(edge_noise));
   if (!outline) return std::nullopt;
-  const double score = EvidenceForBall(lab, *outline, radius_px, LabOf(cloth), 1.0).Score();
+  const double score =
+      EvidenceForBall(bgr, lab, *outline, radius_px, {cloth, cloth_.noise}, 1.0).Score();
   if (score < options_.min_score) return std::nullopt;
   return BallDetection{outline->centre, outline->radius, score};
 }

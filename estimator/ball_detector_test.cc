@@ -400,7 +400,7 @@ TEST_F(RealPhoto, TimePerFrame) {
   BallDetector detector(options);
   using Clock = std::chrono::steady_clock;
   auto start = Clock::now();
-  detector.LearnCloth(photo);
+  detector.LearnTable(photo);
   const double learn_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   std::vector<BallDetection> balls;
   constexpr int kFrames = 30;
@@ -422,7 +422,7 @@ TEST_F(RealPhoto, TimePerFrame) {
   std::sort(detect_ms.begin(), detect_ms.end());
   std::sort(refine_us.begin(), refine_us.end());
   std::fprintf(stderr,
-               "1280x720, %zu balls: LearnCloth %.2f ms, Detect median %.2f ms (min %.2f), "
+               "1280x720, %zu balls: LearnTable %.2f ms, Detect median %.2f ms (min %.2f), "
                "RefineAt median %.1f us (min %.1f)\n",
                balls.size(), learn_ms, detect_ms[kFrames / 2], detect_ms[0],
                refine_us[refine_us.size() / 2], refine_us[0]);

@@ -16,21 +16,21 @@ namespace {
 // candidate is a local maximum of the colour's rate of change of at least kEdgeOfRayMax of the
 // ray's largest.
 struct RaySampling {
-  double range;  // radii either side of the radius
-  double step;   // [px]
+  double range;       // radii either side of the radius
+  double step;        // [px]
+  double prior_rays;  // the weight of the radius prior, in rays
 };
-constexpr RaySampling kRounds[] = {{0.5, 1.0}, {0.3, 0.5}};
+constexpr RaySampling kRounds[] = {{0.5, 1.0, 0.5}, {0.3, 0.5, 0.5}};
 constexpr double kEdgeOfRayMax = 0.25;
 // The window holds every ray from a centre that may move a radius.
 constexpr double kWindowRadii = 2.6;
 constexpr int kWindowMarginPx = 2;
 // The fit: a candidate counts when within kCandidateReach radii of the circle; Tukey's constant
-// on the robust scale (never below kMinScalePx); the prior on the radius weighs as much as
-// kRadiusPriorRays rays; up to kIterations Gauss-Newton steps, ended by a step below kStepPx.
+// on the robust scale (never below kMinScalePx); up to kIterations Gauss-Newton steps, ended by a
+// step below kStepPx.
 constexpr double kCandidateReach = 0.35;
 constexpr double kTukey = 4.685;
 constexpr double kMinScalePx = 0.4;
-constexpr double kRadiusPriorRays = 2.0;
 constexpr int kIterations = 8;
 constexpr double kStepPx = 1e-3;
 constexpr int kMinCandidateRays = 6;
@@ -85,17 +85,19 @@ std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabImage& lab,
 // The circle through the candidate of each ray nearest it, by IRLS from (centre, radius), with
 // the radius pulled towards `expected`. False when too few rays have a candidate near it.
 bool FitCircle(const std::array<RayEdges, kOutlineRays>& edges, double expected,
-               Eigen::Vector2d* centre, double* radius) {
+               double prior_rays, Eigen::Vector2d* centre, double* radius) {
   for (int iteration = 0; iteration < kIterations; ++iteration) {
     std::vector<Eigen::Vector2d> points;
     std::vector<double> residuals;
     for (const RayEdges& ray : edges) {
-      double nearest = kCandidateReach * expected;
+      // The strongest edge within reach of the circle: a ball's outline against the cloth or
+      // another ball changes the colour most; its shading, number and stripe less.
+      double strongest = 0;
       const Eigen::Vector2d* chosen = nullptr;
       for (const auto& [point, rate] : ray) {
         const double distance = std::abs((point - *centre).norm() - *radius);
-        if (distance < nearest) {
-          nearest = distance;
+        if (distance < kCandidateReach * expected && rate > strongest) {
+          strongest = rate;
           chosen = &point;
         }
       }
@@ -123,8 +125,8 @@ bool FitCircle(const std::array<RayEdges, kOutlineRays>& edges, double expected,
       normal += weight * j * j.transpose();
       gradient += weight * j * residuals[i];
     }
-    normal(2, 2) += kRadiusPriorRays;
-    gradient(2) += kRadiusPriorRays * (*radius - expected);
+    normal(2, 2) += prior_rays;
+    gradient(2) += prior_rays * (*radius - expected);
     const Eigen::Vector3d step = -normal.ldlt().solve(gradient);
     if (!step.allFinite()) return false;
     *centre += step.head<2>();
@@ -179,7 +181,7 @@ std::optional<BallOutline> FitBallOutline(const LabImage& lab, const Eigen::Vect
   std::array<RayEdges, kOutlineRays> edges;
   for (const RaySampling& sampling : kRounds) {
     edges = EdgesAlongRays(lab, centre, radius, min_edge, sampling);
-    if (!FitCircle(edges, radius, &centre, &fitted)) return std::nullopt;
+    if (!FitCircle(edges, radius, sampling.prior_rays, &centre, &fitted)) return std::nullopt;
     if ((centre - start).norm() > kMaxShiftRadii * radius ||
         std::abs(fitted - radius) > kMaxRadiusChange * radius) {
       return std::nullopt;

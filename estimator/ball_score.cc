@@ -4,7 +4,15 @@
 #include <cmath>
 #include <vector>
 
+#include "estimator/local_cloth.h"
+
 namespace billiard::estimator {
+
+using internal::Decompose;
+using internal::kDarkRamp;
+using internal::kDarkStart;
+using internal::LocalCloth;
+using internal::MakeLocalCloth;
 
 namespace {
 
@@ -12,56 +20,80 @@ constexpr double kOutlineFrom = 0.45, kOutlineWidth = 0.35;
 constexpr double kMaxGap = 0.9 * M_PI;
 constexpr double kSizeTolerance = 0.25;
 constexpr double kVotesFrom = 0.08, kVotesWidth = 0.25;
-constexpr double kColourFrom = 8.0, kColourWidth = 12.0;
+constexpr double kNotClothFrom = 0.5, kNotClothWidth = 0.5;
 constexpr double kShineFrom = 15.0, kShineWidth = 20.0;
 constexpr double kShinePercentile = 0.98;
-// The colour is measured over the disc of kColourRadii of the fitted radius (inside the blur of
-// the outline), the shine over kShineRadii (a highlight may sit near the rim).
+constexpr double kSphereRimToCore = 0.97, kSphereWidth = 0.1;
+// Where each is measured, in fitted radii: the colour over the disc inside the outline's blur,
+// the shine out to where a highlight may sit, the sphere's core and rim band.
 constexpr double kColourRadii = 0.7, kShineRadii = 0.85;
+constexpr double kCoreRadii = 0.5, kRimFrom = 0.65, kRimTo = 0.9;
 
 double Ramp(double x, double from, double width) {
   return std::clamp((x - from) / width, 0.0, 1.0);
 }
 
-// The median colour distance from the cloth and the shine (98th percentile less the median of
-// L*) of the ball's disc; false when the disc is outside the frame.
-bool MeasureLook(const LabImage& lab, const BallOutline& outline, const cv::Vec3f& cloth,
-                 double* colour_distance, double* shine) {
+double Median(std::vector<float>& values) {
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+// The look term (see the header); 0 when the disc is outside the frame.
+double Look(const cv::Mat& bgr, const LabImage& lab, const BallOutline& outline,
+            const ClothColour& cloth) {
   const double reach = kShineRadii * outline.radius;
   const cv::Rect rect =
       cv::Rect(static_cast<int>(std::floor(outline.centre.x() - reach)),
                static_cast<int>(std::floor(outline.centre.y() - reach)),
                static_cast<int>(2 * reach) + 2, static_cast<int>(2 * reach) + 2) &
-      lab.region();
-  if (rect.empty()) return false;
-  const double colour_reach2 = std::pow(kColourRadii * outline.radius, 2);
-  std::vector<float> distances, lightness;
+      lab.region() & cv::Rect(0, 0, bgr.cols, bgr.rows);
+  if (rect.empty()) return 0.0;
+  const LocalCloth local = MakeLocalCloth(cloth.bgr, cloth.noise);
+  std::vector<float> not_cloth, brightness, lightness;
+  double core = 0, rim = 0;
+  int core_n = 0, rim_n = 0;
   for (int y = rect.y; y < rect.y + rect.height; ++y) {
     const double dy = y - outline.centre.y();
+    const auto* row = bgr.ptr<cv::Vec3b>(y);
     for (int x = rect.x; x < rect.x + rect.width; ++x) {
-      const double dx = x - outline.centre.x();
-      const double d2 = dx * dx + dy * dy;
-      if (d2 > reach * reach) continue;
-      const cv::Vec3f colour = lab.Pixel(x, y);
-      lightness.push_back(colour[0]);
-      if (d2 <= colour_reach2) distances.push_back(static_cast<float>(cv::norm(colour - cloth)));
+      const double rho = std::hypot(x - outline.centre.x(), dy) / outline.radius;
+      if (rho > kShineRadii) continue;
+      const float l = lab.Pixel(x, y)[0];
+      lightness.push_back(l);
+      if (rho < kCoreRadii) {
+        core += l;
+        ++core_n;
+      } else if (rho >= kRimFrom && rho <= kRimTo) {
+        rim += l;
+        ++rim_n;
+      }
+      if (rho > kColourRadii) continue;
+      float along, across;
+      Decompose(cv::Vec3f(row[x][0], row[x][1], row[x][2]), local, &along, &across);
+      not_cloth.push_back(std::max(across * local.inv_across, (kDarkStart - along) / kDarkRamp));
+      brightness.push_back(along);
     }
   }
-  if (distances.empty() || lightness.empty()) return false;
-  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
-  *colour_distance = distances[distances.size() / 2];
+  if (not_cloth.empty() || core_n == 0 || rim_n == 0) return 0.0;
+  double look = Ramp(Median(not_cloth), kNotClothFrom, kNotClothWidth);
   std::sort(lightness.begin(), lightness.end());
-  *shine = lightness[static_cast<std::size_t>(kShinePercentile * (lightness.size() - 1))] -
-           lightness[lightness.size() / 2];
-  return true;
+  const double shine =
+      lightness[static_cast<std::size_t>(kShinePercentile * (lightness.size() - 1))] -
+      lightness[lightness.size() / 2];
+  look = std::max(look, Ramp(shine, kShineFrom, kShineWidth));
+  if (Median(brightness) > 1.0 && core > 0) {
+    look = std::max(look, Ramp(kSphereRimToCore - (rim / rim_n) / (core / core_n), 0.0,
+                               kSphereWidth));
+  }
+  return look;
 }
 
 }  // namespace
 
 double BallEvidence::Score() const { return std::sqrt(outline * size * votes * look); }
 
-BallEvidence EvidenceForBall(const LabImage& lab, const BallOutline& outline,
-                             double expected_radius, const cv::Vec3f& cloth,
+BallEvidence EvidenceForBall(const cv::Mat& bgr, const LabImage& lab, const BallOutline& outline,
+                             double expected_radius, const ClothColour& cloth,
                              double vote_support) {
   BallEvidence evidence;
   evidence.outline =
@@ -72,11 +104,7 @@ BallEvidence EvidenceForBall(const LabImage& lab, const BallOutline& outline,
   const double q = (outline.radius / expected_radius - 1.0) / kSizeTolerance;
   evidence.size = std::clamp(1.0 - q * q, 0.0, 1.0);
   evidence.votes = Ramp(vote_support, kVotesFrom, kVotesWidth);
-  double colour_distance = 0, shine = 0;
-  if (MeasureLook(lab, outline, cloth, &colour_distance, &shine)) {
-    evidence.look = std::max(Ramp(colour_distance, kColourFrom, kColourWidth),
-                             Ramp(shine, kShineFrom, kShineWidth));
-  }
+  evidence.look = Look(bgr, lab, outline, cloth);
   return evidence;
 }
 

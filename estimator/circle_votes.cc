@@ -166,6 +166,9 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
     quad.emplace_back(static_cast<int>(std::lround(s.x())), static_cast<int>(std::lround(s.y())));
   }
   cv::fillConvexPoly(inside, quad, 255);
+  // A radius beyond it too: the outline found may be a little inside the cloth's edge.
+  const int reach = 2 * static_cast<int>(std::ceil(largest / factor)) + 1;
+  cv::dilate(inside, inside, cv::getStructuringElement(cv::MORPH_RECT, {reach, reach}));
 
   const ColourGradient gradient(small);
   const cv::Mat& strength2 = gradient.strength2();

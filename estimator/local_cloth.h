@@ -1,6 +1,6 @@
-// The cloth's colour at one place and how far a pixel is from it: the ballness that the
-// detector's search (ball_detector.cc) and its refinement of each ball (ball_refinement.h) both
-// measure. Internal to the estimator's detector.
+// The cloth's colour at one place and how far a pixel is from it, ignoring what light does to the
+// cloth: the "not cloth" whose compact blobs give the detector the balls' scale
+// (ball_detector.cc). Internal to the estimator's detector.
 #pragma once
 
 #include <algorithm>

@@ -50,14 +50,15 @@ constexpr double kTableAspect = 2.0;
 // The noses are looked for at kNoseSamples places on each half of a side, from kNoseFrom of its
 // length from a corner to kNoseMiddle from its middle (the pockets are at both), from
 // kOutlineClearancePx inside the outline (the cloth against the rail is no nose); an edge is a
-// colour change of at least kMinNoseEdge L*a*b* units per pixel. Of up to kNoseLines lines
+// colour change of at least kMinNoseEdge L*a*b* units per pixel and kNoseEdgeNoises times the
+// median over the side's cushion band (the cloth's weave and the camera's noise). Of up to kNoseLines lines
 // through the edges of at least kMinNosePlaces of the places on each half of the side, the nose
 // is the best supported, or the innermost of those nearly as well (kNoseOfBest of its places): an
 // old cloth's worn track along the cushion is a line too, fainter, and more broken.
 constexpr int kNoseSamples = 24;
 constexpr double kNoseFrom = 0.12, kNoseMiddle = 0.08;
 constexpr int kOutlineClearancePx = 3;
-constexpr double kMinNoseEdge = 2.0;
+constexpr double kMinNoseEdge = 2.0, kNoseEdgeNoises = 4.0;
 constexpr int kNoseLines = 3;
 constexpr double kMinNosePlaces = 0.3;
 constexpr double kNoseOfBest = 0.95;
@@ -346,19 +347,28 @@ Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_t
     for (int i = 0; i <= offsets; ++i) points.push_back(image(t, i * step));
   }
   const std::vector<cv::Vec3f> lab = LabAt(bgr, points);
-  // The edges along each place: (image point, place).
-  std::vector<std::pair<Eigen::Vector2d, int>> edges;
-  std::vector<double> rate(offsets);
+  // The colour's rate of change inward at each place and offset; an edge is a local maximum of
+  // it well above the cloth's noise (the median rate).
+  std::vector<double> rate(along.size() * offsets);
   for (std::size_t k = 0; k < along.size(); ++k) {
     const std::size_t base = k * (offsets + 1);
     for (int i = 0; i < offsets; ++i) {
       const cv::Vec3f d = lab[base + i + 1] - lab[base + i];
       const double pixels = (points[base + i + 1] - points[base + i]).norm();
-      rate[i] = std::sqrt(d.dot(d)) / std::max(pixels, 1e-6);
-      if (!std::isfinite(rate[i])) rate[i] = 0;
+      const double r = std::sqrt(d.dot(d)) / std::max(pixels, 1e-6);
+      rate[k * offsets + i] = std::isfinite(r) ? r : 0.0;
     }
+  }
+  std::vector<double> sorted = rate;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double min_edge = std::max(kMinNoseEdge, kNoseEdgeNoises * sorted[sorted.size() / 2]);
+  // The edges along each place: (image point, place).
+  std::vector<std::pair<Eigen::Vector2d, int>> edges;
+  for (std::size_t k = 0; k < along.size(); ++k) {
+    const std::size_t base = k * (offsets + 1);
+    const double* r = &rate[k * offsets];
     for (int i = std::max(1, kOutlineClearancePx); i + 1 < offsets; ++i) {
-      if (rate[i] >= kMinNoseEdge && rate[i] >= rate[i - 1] && rate[i] > rate[i + 1]) {
+      if (r[i] >= min_edge && r[i] >= r[i - 1] && r[i] > r[i + 1]) {
         edges.push_back({0.5 * (points[base + i] + points[base + i + 1]), static_cast<int>(k)});
       }
     }
