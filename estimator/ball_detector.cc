@@ -5,6 +5,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "estimator/ball_identity.h"
 #include "estimator/ball_score.h"
 #include "estimator/circle_votes.h"
 #include "estimator/lab_image.h"
@@ -307,6 +308,11 @@ std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
       return (b.pixel - ball.pixel).norm() < kOverlapRadii * std::max(b.radius_px, ball.radius_px);
     });
     if (!overlaps) balls.push_back(ball);
+  }
+  const std::vector<BallIdentity> identities = IdentifyBalls(bgr, balls, options_.ball_set);
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    balls[i].ball_class = identities[i].ball_class;
+    balls[i].class_confidence = identities[i].confidence;
   }
   return balls;
 }

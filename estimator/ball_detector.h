@@ -23,6 +23,7 @@
 //      also tells a dark ball from a shadow).
 //   4. Best first, an outline is kept unless it overlaps one kept already (balls touch but never
 //      overlap): a shadow beside its ball, a second outline of one ball.
+//   5. Each ball kept is identified by its colours (ball_identity.h).
 //
 // RefineAt is the tracker's: the ball near a predicted pixel, outlined and scored the same way.
 #pragma once
@@ -33,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "estimator/ball_class.h"
 #include "estimator/ball_scale.h"
 #include "estimator/table_finder.h"
 #include "sim/camera/camera_model.h"
@@ -44,6 +46,9 @@ struct BallDetection {
                           // integers)
   double radius_px = 0;   // fitted radius of the ball's outline [px]
   double score = 0;       // 0..1: how ball-like (outline, radius, colour, shine)
+  // Which ball it is (ball_identity.h), and how sure: set by Detect, unknown from RefineAt.
+  BallClass ball_class = BallClass::kUnknown;
+  double class_confidence = 0;
 };
 
 // The local colour of the cloth, learnt from a frame.
@@ -65,6 +70,8 @@ struct DetectorOptions {
   double ball_radius_px = 0;
   // Detections scoring below this are not reported.
   double min_score = 0.5;
+  // The balls' set, for their classes.
+  BallSet ball_set = BallSet::kPool;
 };
 
 // The expected radius [px] of a ball of radius `ball_radius` [m] at the image centre.
@@ -80,8 +87,8 @@ class BallDetector {
   // the frame size changes, or when asked).
   bool LearnTable(const cv::Mat& image);
 
-  // Every ball in a frame, best score first. Empty when the table or the balls' scale could not
-  // be learnt (failure() says why) or no ball is there.
+  // Every ball in a frame, best score first, identified. Empty when the table or the balls'
+  // scale could not be learnt (failure() says why) or no ball is there.
   std::vector<BallDetection> Detect(const cv::Mat& image);
 
   // The ball near `predicted` (within about one radius of `radius_px`), for a tracker. Before a

@@ -47,8 +47,9 @@ cv::Mat DetectionOverlay(const cv::Mat& image, const std::vector<BallDetection>&
     cv::circle(out, centre, static_cast<int>(std::lround(b.radius_px)), colour, thickness,
                cv::LINE_AA);
     cv::drawMarker(out, centre, colour, cv::MARKER_CROSS, 5, thickness);
-    char label[32];
-    std::snprintf(label, sizeof label, "%zu %.2f", k, b.score);
+    char label[48];
+    std::snprintf(label, sizeof label, "%zu %.2f %s", k, b.score,
+                  BallClassName(b.ball_class).c_str());
     cv::putText(out, label, centre + cv::Point2d(b.radius_px + 2, -b.radius_px),
                 cv::FONT_HERSHEY_SIMPLEX, 0.4 * thickness, kLabel, thickness, cv::LINE_AA);
   }

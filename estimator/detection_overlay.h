@@ -1,5 +1,5 @@
 // Detections drawn on the frame they were found in, for a person to look at: each ball's
-// outline at its fitted radius, its centre, and its index and score beside it.
+// outline at its fitted radius, its centre, and its index, score and class beside it.
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -179,4 +179,18 @@ std::optional<CalibrationResult> CalibrateTable(const cv::Mat& image, const Mark
   return result;
 }
 
+double CalibrationDisagreementPx(const TableRegion& found, const camera::CameraModel& camera,
+                                 const physics::TableParameters& table) {
+  double largest = 0;
+  for (const Eigen::Vector3d& corner :
+       {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(table.length, 0, 0),
+        Eigen::Vector3d(table.length, table.width, 0), Eigen::Vector3d(0, table.width, 0)}) {
+    const Eigen::Vector2d projected = camera.Project(corner);
+    double nearest = HUGE_VAL;
+    for (const Eigen::Vector2d& c : found.corners) nearest = std::min(nearest, (c - projected).norm());
+    largest = std::max(largest, nearest);
+  }
+  return largest;
+}
+
 }  // namespace billiard::estimator

@@ -22,6 +22,7 @@
 #include <optional>
 #include <string>
 
+#include "estimator/table_finder.h"
 #include "sim/camera/camera_model.h"
 #include "sim/physics/parameters.h"
 
@@ -67,5 +68,14 @@ struct CalibrationResult {
 // the markers are not all found.
 std::optional<CalibrationResult> CalibrateTable(const cv::Mat& image, const MarkerLayout& layout,
                                                 const camera::CameraModel& intrinsics = {});
+
+// How far [px] the playing surface found in a frame without markers (table_finder.h) is from where
+// a calibrated camera puts the table's corners on the cloth: the largest distance of a projected
+// corner from the nearest corner found. The two are found independently (markers, cloth), so they
+// check each other: a few pixels apart when both are right (the found corners are the cushions'
+// noses, a few centimetres above the cloth), tens when the calibration is of another table or the
+// finder took something else for the cloth.
+double CalibrationDisagreementPx(const TableRegion& found, const camera::CameraModel& camera,
+                                 const physics::TableParameters& table);
 
 }  // namespace billiard::estimator

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <vector>
 
+#include "estimator/ball_class.h"
 #include "estimator/ball_detector.h"
 #include "estimator/detection_overlay.h"
 #include "estimator/table_calibration.h"
@@ -67,10 +68,41 @@ void WarnIfTheBallRadiusDisagrees(double predicted_px, const cv::Mat& image) {
 }
 
 struct DetectArgs {
-  std::string image, calib, params = params::kDefaultParameterSet, overlay;
+  std::string image, calib, params = params::kDefaultParameterSet, overlay, ball_set;
   double ball_radius_px = 0;
   bool json = false;
 };
+
+estimator::BallSet BallSetOption(const std::string& name, const physics::ModelParameters& params) {
+  if (name.empty()) return estimator::BallSetOf(params.name);
+  if (name == "pool") return estimator::BallSet::kPool;
+  if (name == "snooker") return estimator::BallSet::kSnooker;
+  if (name == "carom") return estimator::BallSet::kCarom;
+  throw UsageError("--ball-set: '" + name + "' is none of pool, snooker, carom");
+}
+
+nlohmann::json Points(const std::array<Eigen::Vector2d, 4>& corners) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& c : corners) list.push_back({c.x(), c.y()});
+  return list;
+}
+
+// The table found, as JSON; with a calibration, how far its playing surface's corners are from
+// where the calibration puts them [px].
+nlohmann::json TableJson(const estimator::TableRegion& table,
+                         const std::optional<camera::CameraModel>& camera,
+                         const physics::ModelParameters& params) {
+  nlohmann::json j = {{"corners", Points(table.corners)},
+                      {"cloth_corners", Points(table.cloth_corners)},
+                      {"view", estimator::TableViewName(table.view)},
+                      {"depth_ratio", table.depth_ratio},
+                      {"side_fit_rms_px", table.side_fit_rms_px}};
+  if (camera) {
+    j["calibration_disagreement_px"] =
+        estimator::CalibrationDisagreementPx(table, *camera, params.table);
+  }
+  return j;
+}
 
 void RunDetect(const DetectArgs& args) {
   const physics::ModelParameters params = LoadParametersOption(args.params);
@@ -84,10 +116,11 @@ void RunDetect(const DetectArgs& args) {
   }
   RequireFinite(args.ball_radius_px, "--ball-radius-px");
   if (args.ball_radius_px < 0) throw UsageError("--ball-radius-px: must be positive");
+  estimator::DetectorOptions options;
+  options.ball_set = BallSetOption(args.ball_set, params);
   const cv::Mat image = ReadImage(args.image);
   if (camera) RequireCalibrationOfThisSize(*camera, image, args.calib);
 
-  estimator::DetectorOptions options;
   options.ball_radius_px = args.ball_radius_px;
   if (camera) {
     const double predicted_px = estimator::ExpectedRadiusPx(*camera, params.ball.radius);
@@ -99,19 +132,30 @@ void RunDetect(const DetectArgs& args) {
   const auto balls = detector.Detect(image);
   const double us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+  // No table, or nothing on it the size of a ball: the frame's answer is no, and why.
+  if (!detector.failure().empty()) {
+    throw Refused(detector.failure() + " in " + args.image);
+  }
   // An empty table is an answer, but not one to give silently.
   if (balls.empty()) {
     std::cerr << "billiard: warning: no balls found in " << args.image << std::endl;
   }
-
-  if (!args.overlay.empty() &&
-      !cv::imwrite(args.overlay, estimator::DetectionOverlay(image, balls))) {
-    throw UsageError("--overlay: cannot write '" + args.overlay + "' (an image file: .png, .jpg)");
+  if (!args.overlay.empty()) {
+    cv::Mat overlay = estimator::DetectionOverlay(image, balls);
+    estimator::DrawTable(*detector.table(), &overlay);
+    if (!cv::imwrite(args.overlay, overlay)) {
+      throw UsageError("--overlay: cannot write '" + args.overlay +
+                       "' (an image file: .png, .jpg)");
+    }
   }
   nlohmann::json list = nlohmann::json::array();
   for (const auto& b : balls) {
-    nlohmann::json j = {
-        {"u", b.pixel.x()}, {"v", b.pixel.y()}, {"radius_px", b.radius_px}, {"score", b.score}};
+    nlohmann::json j = {{"u", b.pixel.x()},
+                        {"v", b.pixel.y()},
+                        {"radius_px", b.radius_px},
+                        {"score", b.score},
+                        {"class", estimator::BallClassName(b.ball_class)},
+                        {"class_confidence", b.class_confidence}};
     if (camera) {
       const Eigen::Vector3d p = camera->Unproject(b.pixel, params.ball.radius);
       j["x"] = p.x();
@@ -119,15 +163,17 @@ void RunDetect(const DetectArgs& args) {
     }
     list.push_back(j);
   }
+  const nlohmann::json table = TableJson(*detector.table(), camera, params);
   if (args.json) {
     std::cout << nlohmann::json{{"balls", list},
+                                {"table", table},
                                 {"radius_px", detector.radius_px()},
                                 {"detect_us", us}}
                      .dump()
               << std::endl;
   } else {
     std::cerr << balls.size() << " balls in " << args.image << " (radius " << detector.radius_px()
-              << " px, " << us << " us)\n";
+              << " px, " << us << " us); table " << table.dump() << "\n";
     for (const auto& j : list) std::cerr << "  " << j.dump() << "\n";
   }
 }
@@ -207,8 +253,11 @@ void AddDetectCommand(CLI::App& app) {
                   "Expected ball radius [px] (default: from --calib, else estimated)");
   cmd->add_option("--params", args->params, "paper | pool | JSON file: the ball radius")
       ->capture_default_str();
+  cmd->add_option("--ball-set", args->ball_set,
+                  "pool | snooker | carom: the balls' classes (default: --params' set)");
   cmd->add_option("--overlay", args->overlay,
-                  "Also write the frame with the detections drawn on it (PNG or JPEG)");
+                  "Also write the frame with the table and the detections drawn on it (PNG or "
+                  "JPEG)");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { RunDetect(*args); });
 }

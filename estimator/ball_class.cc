@@ -1,0 +1,42 @@
+#include "estimator/ball_class.h"
+
+#include <stdexcept>
+
+namespace billiard::estimator {
+
+BallSet BallSetOf(const std::string& parameter_set_name) {
+  if (parameter_set_name == "snooker") return BallSet::kSnooker;
+  if (parameter_set_name == "carom") return BallSet::kCarom;
+  return BallSet::kPool;
+}
+
+BallClass PoolBall(int number) {
+  if (number < 1 || number > 15) throw std::invalid_argument("pool balls are numbered 1..15");
+  return static_cast<BallClass>(number);
+}
+
+std::string BallClassName(BallClass ball_class) {
+  switch (ball_class) {
+    case BallClass::kUnknown:
+      return "unknown";
+    case BallClass::kCue:
+      return "cue";
+    case BallClass::kRed:
+      return "red";
+    case BallClass::kYellow:
+      return "yellow";
+    case BallClass::kGreen:
+      return "green";
+    case BallClass::kBrown:
+      return "brown";
+    case BallClass::kBlue:
+      return "blue";
+    case BallClass::kPink:
+      return "pink";
+    case BallClass::kBlack:
+      return "black";
+  }
+  return std::to_string(static_cast<int>(ball_class));  // pool's numbers
+}
+
+}  // namespace billiard::estimator
