@@ -12,12 +12,12 @@ enum class BallSet { kPool, kSnooker, kCarom };
 // The set a parameter set's balls belong to: "snooker" and "carom" by name, pool otherwise.
 BallSet BallSetOf(const std::string& parameter_set_name);
 
-// A ball's class, as table_state_t carries it: kUnknown, the cue ball, pool's numbers 1-15 (8
-// the black), or one of the named colours of snooker and carom.
+// A ball's class, with the values table_state_t carries (ball_state_t's CLASS_ constants): kUnknown
+// (zero, so that a message filled with zeros claims nothing), pool's numbers 1-15 (1-7 solids, 8
+// the black, 9-15 stripes), the cue ball, or one of the named colours of snooker and carom.
 enum class BallClass : std::int8_t {
-  kUnknown = -1,
-  kCue = 0,
-  // Pool: 1-7 solids, 8 the black, 9-15 stripes, as numbered.
+  kUnknown = 0,
+  kCue = 16,
   kRed = 20,  // snooker's reds, carom's red
   kYellow = 21,
   kGreen = 22,

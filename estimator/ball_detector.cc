@@ -264,12 +264,13 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
   } else {
     scale_ = ScaleFromOutlines(*table_, BlobOutlines(bgr, *table_, cloth_));
   }
-  failure_ = scale_ ? "" : "no balls: nothing on the table is the size and shape of a ball";
+  failure_.clear();
   return scale_.has_value();
 }
 
 std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
   const cv::Mat bgr = AsBgr(image);
+  // No scale yet is an empty table so far (or none): learnt again, from this frame.
   if ((bgr.size() != frame_size_ || !scale_) && !LearnTable(bgr)) return {};
   // The table and a ball's width around it: every outline and every vote's edge is there.
   double largest = 0;

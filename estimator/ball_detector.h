@@ -82,13 +82,14 @@ class BallDetector {
   explicit BallDetector(DetectorOptions options = {});
 
   // Learns the table, its cloth and the balls' scale from a BGR (CV_8UC3) or grey (CV_8UC1)
-  // frame; true when all three were found, else failure() says why. The table and its lights
-  // do not change between frames, so this runs once, on Detect's first frame (and again when
-  // the frame size changes, or when asked).
+  // frame; true when all three were found. Without a table, failure() says why; without a
+  // scale (nothing on the table is the size and shape of a ball: an empty table), it is learnt
+  // again from the next frame. The table and its lights do not change between frames, so this
+  // runs once, on Detect's first frame (and again when the frame size changes, or when asked).
   bool LearnTable(const cv::Mat& image);
 
-  // Every ball in a frame, best score first, identified. Empty when the table or the balls'
-  // scale could not be learnt (failure() says why) or no ball is there.
+  // Every ball in a frame, best score first, identified. Empty when no table is found
+  // (failure() says why), nothing on it is ball-sized, or no ball is there.
   std::vector<BallDetection> Detect(const cv::Mat& image);
 
   // The ball near `predicted` (within about one radius of `radius_px`), for a tracker. Before a
@@ -103,7 +104,7 @@ class BallDetector {
   // The ball radius at the table's centre [px] (the option, or the measure); 0 before one is
   // learnt.
   double radius_px() const { return scale_ ? scale_->radius_at_centre : 0.0; }
-  // Why the last LearnTable failed; empty when it did not.
+  // Why the last LearnTable found no table; empty when it found one.
   const std::string& failure() const { return failure_; }
 
  private:

@@ -4,9 +4,13 @@ namespace billiard::estimator {
 
 namespace {
 
-DetectorOptions WithRadius(DetectorOptions options, const camera::CameraModel& camera,
-                           double radius) {
-  if (options.ball_radius_px <= 0.0) options.ball_radius_px = ExpectedRadiusPx(camera, radius);
+// The detector looks for the camera's balls: of their size, and of their set's classes.
+DetectorOptions ForTheBalls(DetectorOptions options, const camera::CameraModel& camera,
+                            const physics::ModelParameters& params) {
+  if (options.ball_radius_px <= 0.0) {
+    options.ball_radius_px = ExpectedRadiusPx(camera, params.ball.radius);
+  }
+  options.ball_set = BallSetOf(params.name);
   return options;
 }
 
@@ -17,7 +21,7 @@ BallEstimator::BallEstimator(const camera::CameraModel& camera,
     : camera_(camera),
       params_(params),
       options_(options),
-      detector_(WithRadius(options.detector, camera, params.ball.radius)),
+      detector_(ForTheBalls(options.detector, camera, params)),
       tracker_(params, options.tracker) {}
 
 Eigen::Vector2d BallEstimator::ToTable(const Eigen::Vector2d& pixel) const {
@@ -51,11 +55,15 @@ bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats
       if (!seen) measured.push_back(x);
     }
   }
+  std::vector<ClassEvidence> classes;
   if (full) {
     measured.clear();
-    for (const BallDetection& d : detector_.Detect(frame)) measured.push_back(ToTable(d.pixel));
+    for (const BallDetection& d : detector_.Detect(frame)) {
+      measured.push_back(ToTable(d.pixel));
+      classes.push_back({d.ball_class, d.class_confidence});
+    }
   }
-  tracker_.Update(time, measured);
+  tracker_.Update(time, measured, classes);
   if (stats) *stats = {static_cast<int>(measured.size()), full};
   return true;
 }

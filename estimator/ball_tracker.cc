@@ -11,6 +11,36 @@ namespace billiard::estimator {
 
 namespace {
 
+// How much a detection's class disagrees with its track's: the product of both confidences when
+// both are known and differ, else 0.
+double ClassMismatch(const TrackedBall& track, const ClassEvidence& detection) {
+  if (track.ball_class == BallClass::kUnknown || detection.ball_class == BallClass::kUnknown ||
+      track.ball_class == detection.ball_class) {
+    return 0.0;
+  }
+  return track.class_confidence * detection.confidence;
+}
+
+// Adds a detection's class to its track's votes and takes the track's class from them.
+void AddClassEvidence(const ClassEvidence& detection, TrackedBall* track) {
+  if (detection.ball_class == BallClass::kUnknown || !(detection.confidence > 0)) return;
+  auto vote = std::find_if(track->class_votes.begin(), track->class_votes.end(),
+                           [&](const ClassEvidence& v) { return v.ball_class == detection.ball_class; });
+  if (vote == track->class_votes.end()) {
+    track->class_votes.push_back({detection.ball_class, 0.0});
+    vote = track->class_votes.end() - 1;
+  }
+  vote->confidence += detection.confidence;
+  double total = 1.0;  // one unseen vote: a single detection is not yet certain
+  const ClassEvidence* best = &track->class_votes.front();
+  for (const ClassEvidence& v : track->class_votes) {
+    total += v.confidence;
+    if (v.confidence > best->confidence) best = &v;
+  }
+  track->ball_class = best->ball_class;
+  track->class_confidence = best->confidence / total;
+}
+
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
@@ -121,18 +151,25 @@ std::vector<Eigen::Vector2d> BallTracker::Predict(double time) const {
   return predicted;
 }
 
-bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detections) {
+bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detections,
+                         const std::vector<ClassEvidence>& classes) {
   if (time < time_) return false;
   const double dt = tracks_.empty() ? 0.0 : time - time_;
   time_ = time;
   for (TrackedBall& t : tracks_) Advance(t, time);
+  const auto class_of = [&](std::size_t j) {
+    return j < classes.size() ? classes[j] : ClassEvidence{};
+  };
 
-  // Cost: distance to the prediction; no pair beyond how far a ball can move in the frame.
+  // Cost: distance to the prediction, and a disagreeing class; no pair beyond how far a ball can
+  // move in the frame.
   const double gate = options_.min_gate + options_.max_speed * dt;
   Eigen::MatrixXd cost(tracks_.size(), detections.size());
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     for (std::size_t j = 0; j < detections.size(); ++j) {
-      cost(i, j) = (detections[j] - tracks_[i].position()).norm();
+      cost(i, j) = (detections[j] - tracks_[i].position()).norm() +
+                   ClassMismatch(tracks_[i], class_of(j)) * kClassMismatchRadii *
+                       params_.ball.radius;
     }
   }
   const std::vector<int> assigned = AssignMinimumCost(cost, gate);
@@ -141,6 +178,7 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
     if (assigned[i] < 0) continue;
     TrackedBall& t = tracks_[i];
     Correct(t, detections[assigned[i]]);
+    AddClassEvidence(class_of(assigned[i]), &t);
     used[assigned[i]] = true;
     t.last_seen = time;
     t.confirmed = t.confirmed || ++t.hits >= options_.hits_to_confirm;
@@ -163,6 +201,7 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
     t.covariance.diagonal() << r2, r2, 1.0, 1.0, mu_g * mu_g, mu_g * mu_g;
     t.hits = 1;
     t.confirmed = options_.hits_to_confirm <= 1;
+    AddClassEvidence(class_of(j), &t);
     tracks_.push_back(t);
   }
   return true;

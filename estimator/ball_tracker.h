@@ -11,7 +11,12 @@
 //    ball instead, which is how a rolling ball ends.
 // Association: the minimum-cost assignment (assignment.h) of detections to predicted positions,
 // gated by how far the fastest ball moves in a frame, so that a ball struck next to others keeps
-// its identity and balls passing close do not swap.
+// its identity and balls passing close do not swap. A detection whose class (ball_identity.h)
+// disagrees with its track's costs kClassMismatchRadii ball radii more, in proportion to how sure
+// both are: two balls of different colours passing close keep their tracks.
+// Class: each track sums the confidence of every class its detections were given; its class is
+// the largest sum, its confidence that sum over all of them and one more (a single confident
+// detection is not yet certain; disagreeing ones make it less so).
 // Spin is observable only while rolling (w = z x v / r, about the horizontal); it is published with
 // its variance, and with a variance of kUnobservedSpinVariance while sliding and for wz.
 #pragma once
@@ -19,11 +24,19 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "estimator/ball_class.h"
 #include "sim/physics/parameters.h"
 
 namespace billiard::estimator {
 
 inline constexpr double kUnobservedSpinVariance = 1e6;  // [(rad/s)^2]
+inline constexpr double kClassMismatchRadii = 1.0;
+
+// What a detection says of which ball it is (ball_identity.h).
+struct ClassEvidence {
+  BallClass ball_class = BallClass::kUnknown;
+  double confidence = 0;
+};
 
 struct TrackerOptions {
   double measurement_sigma = 0.5e-3;  // detector's position noise on the table [m]
@@ -45,6 +58,9 @@ struct TrackedBall {
   int hits = 0;
   double last_seen = 0.0;
   bool confirmed = false;
+  BallClass ball_class = BallClass::kUnknown;
+  double class_confidence = 0;
+  std::vector<ClassEvidence> class_votes;  // the summed confidence of each class seen
 
   Eigen::Vector2d position() const { return state.head<2>(); }
   Eigen::Vector2d velocity() const { return state.segment<2>(2); }
@@ -58,8 +74,10 @@ class BallTracker {
   BallTracker(const physics::ModelParameters& params, TrackerOptions options = {});
 
   // Advances the tracks to `time` and updates them with the balls detected then (table
-  // positions at the ball-centre height). Returns false, changing nothing, if time goes back.
-  bool Update(double time, const std::vector<Eigen::Vector2d>& detections);
+  // positions at the ball-centre height) and, when given (one per detection), their classes.
+  // Returns false, changing nothing, if time goes back.
+  bool Update(double time, const std::vector<Eigen::Vector2d>& detections,
+              const std::vector<ClassEvidence>& classes = {});
 
   // Where each track expects its ball at `time` (for a detector that searches near predictions).
   std::vector<Eigen::Vector2d> Predict(double time) const;

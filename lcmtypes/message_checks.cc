@@ -152,6 +152,12 @@ std::string Utime(std::int64_t utime, const char* what) {
                    : std::string();
 }
 
+// CLASS_UNKNOWN, pool's numbers 1-15, the cue ball or a named colour.
+bool KnownBallClass(std::int8_t c) {
+  return (c >= ball_state_t::CLASS_UNKNOWN && c <= ball_state_t::CLASS_CUE) ||
+         (c >= ball_state_t::CLASS_RED && c <= ball_state_t::CLASS_BLACK);
+}
+
 std::string CheckBall(const ball_state_t& b) {
   const std::string ball = "ball " + std::to_string(b.ball_id);
   if (b.ball_id < 0) return "negative ball_id " + std::to_string(b.ball_id);
@@ -171,6 +177,12 @@ std::string CheckBall(const ball_state_t& b) {
   }
   if (std::sqrt(b.spin[0] * b.spin[0] + b.spin[1] * b.spin[1] + b.spin[2] * b.spin[2]) > kMaxSpin) {
     return ball + " spins faster than " + std::to_string(kMaxSpin) + " rad/s";
+  }
+  if (!KnownBallClass(b.ball_class)) {
+    return ball + " has an unknown ball_class " + std::to_string(b.ball_class);
+  }
+  if (!(b.class_confidence >= 0.0f && b.class_confidence <= 1.0f)) {
+    return ball + " has a class_confidence outside [0, 1]";
   }
   return {};
 }
@@ -211,7 +223,13 @@ std::string Check(const table_state_t& m) {
 std::string Check(const shot_request_t& m) {
   if (std::string why = Utime(m.utime, "request"); !why.empty()) return why;
   if (m.request_id < 0) return "negative request_id " + std::to_string(m.request_id);
-  if (m.ball_id < 0) return "negative ball_id " + std::to_string(m.ball_id);
+  if (m.ball_id == shot_request_t::BALL_BY_CLASS) {
+    if (m.ball_class == ball_state_t::CLASS_UNKNOWN || !KnownBallClass(m.ball_class)) {
+      return "a ball by class needs a known ball_class, not " + std::to_string(m.ball_class);
+    }
+  } else if (m.ball_id < 0) {
+    return "negative ball_id " + std::to_string(m.ball_id);
+  }
   if (m.spin < shot_request_t::SPIN_NATURAL || m.spin > shot_request_t::SPIN_SLIDE) {
     return "unknown spin value " + std::to_string(m.spin) + " (0-4, see shot_request_t)";
   }

@@ -109,8 +109,9 @@ TEST(InProcessLoop, ABreakIsPlannedSimulatedAndTrackedBallByBall) {
   });
   const table_sim_node::SceneResult scene = node.RunScene();
   EXPECT_EQ(scene.shot.status, "ok") << scene.shot.reason;
-  // The cue ball meets the apex ball where the planner aimed it, to a tenth of a millimetre.
-  EXPECT_LT(scene.shot.miss_m, 1e-4);
+  // The cue ball meets the apex ball where the planner aimed it: plans are good to microns, so
+  // the miss is the estimator's error on the cue ball at rest, held to its 0.5 mm.
+  EXPECT_LT(scene.shot.miss_m, 0.5e-3);
   EXPECT_GT(scene.events, 50);
   ASSERT_EQ(scene.final_balls.size(), 16u);
   const table_sim_node::TrackingReport& tracking = scene.tracking;

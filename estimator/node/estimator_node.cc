@@ -11,6 +11,12 @@
 
 namespace billiard::estimator_node {
 
+// The estimator's classes are the message's.
+static_assert(static_cast<int>(estimator::BallClass::kUnknown) == ball_state_t::CLASS_UNKNOWN &&
+              static_cast<int>(estimator::BallClass::kCue) == ball_state_t::CLASS_CUE &&
+              static_cast<int>(estimator::BallClass::kRed) == ball_state_t::CLASS_RED &&
+              static_cast<int>(estimator::BallClass::kBlack) == ball_state_t::CLASS_BLACK);
+
 table_state_t TableStateMessage(const std::vector<estimator::TrackedBall>& balls,
                                 std::int64_t utime, double ball_radius) {
   table_state_t m{};
@@ -19,6 +25,8 @@ table_state_t TableStateMessage(const std::vector<estimator::TrackedBall>& balls
     ball_state_t s{};
     s.utime = utime;
     s.ball_id = b.id;
+    s.ball_class = static_cast<int8_t>(b.ball_class);
+    s.class_confidence = static_cast<float>(b.class_confidence);
     const Eigen::Matrix<double, 7, 1> x = b.BallState(ball_radius);
     const Eigen::Matrix<double, 7, 7, Eigen::RowMajor> c = b.BallCovariance(ball_radius);
     for (int i = 0; i < 2; ++i) s.position[i] = x[i];

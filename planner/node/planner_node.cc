@@ -162,13 +162,18 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   if (std::string why = messages::Check(q); !why.empty()) {
     return Refusal(reply, cue_command_t::STATUS_INVALID, why);
   }
-  const auto ball = balls_.find(q.ball_id);
-  if (ball == balls_.end()) {
+  const ball_state_t* ball = BallFor(q);
+  if (ball == nullptr) {
     return Refusal(reply, cue_command_t::STATUS_NO_BALL_STATE,
-                   "no table state has ball " + std::to_string(q.ball_id));
+                   q.ball_id == shot_request_t::BALL_BY_CLASS
+                       ? "no table state has a ball of class " + std::to_string(q.ball_class) +
+                             " with a confidence of " + std::to_string(kMinClassConfidence) +
+                             " or more"
+                       : "no table state has ball " + std::to_string(q.ball_id));
   }
-  const ball_state_t& state = ball->second;
+  const ball_state_t& state = *ball;
   cue_command_t c = reply;
+  c.ball_id = state.ball_id;
   std::copy(state.position, state.position + 2, c.start);
   if (auto unfit = UnfitToPlanFrom(q, state)) return Refusal(c, unfit->status, unfit->reason);
   planner::ShotPlan plan;
@@ -202,9 +207,26 @@ std::optional<PlannerNode::Unfit> PlannerNode::UnfitToPlanFrom(const shot_reques
   return std::nullopt;
 }
 
-std::int64_t PlannerNode::StateUtime(std::int32_t ball_id) const {
-  const auto ball = balls_.find(ball_id);
-  return ball == balls_.end() ? -1 : ball->second.utime;
+const ball_state_t* PlannerNode::BallFor(const shot_request_t& q) const {
+  if (q.ball_id != shot_request_t::BALL_BY_CLASS) {
+    const auto ball = balls_.find(q.ball_id);
+    return ball == balls_.end() ? nullptr : &ball->second;
+  }
+  const ball_state_t* surest = nullptr;
+  for (const auto& [id, ball] : balls_) {
+    if (ball.ball_class != q.ball_class || ball.class_confidence < kMinClassConfidence) continue;
+    // Ties by id: the answer must not depend on the map's order.
+    if (surest == nullptr || ball.class_confidence > surest->class_confidence ||
+        (ball.class_confidence == surest->class_confidence && ball.ball_id < surest->ball_id)) {
+      surest = &ball;
+    }
+  }
+  return surest;
+}
+
+std::int64_t PlannerNode::StateUtime(const shot_request_t& q) const {
+  const ball_state_t* ball = BallFor(q);
+  return ball == nullptr ? -1 : ball->utime;
 }
 
 void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
@@ -265,7 +287,7 @@ void PlannerNode::OnShotRequest(const lcm::ReceiveBuffer* rbuf, const std::strin
         return;
       }
     }
-    const std::int64_t state_utime = StateUtime(request.ball_id);
+    const std::int64_t state_utime = StateUtime(request);
     for (const Answered& a : answered_) {
       if (a.request == bytes && a.state_utime == state_utime) {
         health_.Count("duplicate");
@@ -314,7 +336,7 @@ bool PlannerNode::Work() {
       const cue_command_t command = Answer(w.request);
       Publish(command, w.arrived);
       log_(Describe(command));
-      answered_.push_back({std::move(w.bytes), StateUtime(w.request.ball_id), command});
+      answered_.push_back({std::move(w.bytes), StateUtime(w.request), command});
       if (answered_.size() > kRememberedAnswers) answered_.pop_front();
       if (refusing_busy_ && waiting_.empty()) {
         refusing_busy_ = false;

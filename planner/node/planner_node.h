@@ -71,6 +71,9 @@ struct PlannerNodeOptions {
 inline constexpr std::size_t kMaxRememberedBalls = 256;
 // Answers remembered for requests sent again.
 inline constexpr std::size_t kRememberedAnswers = 64;
+// A ball asked for by class (shot_request_t::BALL_BY_CLASS) must be of that class with at least
+// this confidence: an even guess between two classes is no ball to strike.
+inline constexpr float kMinClassConfidence = 0.5f;
 
 class PlannerNode {
  public:
@@ -123,7 +126,11 @@ class PlannerNode {
   const physics::ModelParameters params_;
   const PlannerNodeOptions options_;
   void Publish(const cue_command_t& command, nodes::NodeHealth::Clock::time_point arrived);
-  std::int64_t StateUtime(std::int32_t ball_id) const;
+  // The ball a request is for: by its id, or by class the one the estimator is surest of (at
+  // least kMinClassConfidence); nullptr when the table state has none.
+  const ball_state_t* BallFor(const shot_request_t& q) const;
+  // The utime of that ball's latest state, -1 if none.
+  std::int64_t StateUtime(const shot_request_t& q) const;
 
   const Log log_;
   nodes::NodeHealth health_;

@@ -190,6 +190,8 @@ void TableSimNode::Frame(const std::vector<TruthBall>& balls, double t) {
     ball_state_t b{};  // the truth has no covariance
     b.utime = utime;
     b.ball_id = ball.id;
+    b.ball_class = ball.id == kCueBall ? ball_state_t::CLASS_CUE : static_cast<int8_t>(ball.id);
+    b.class_confidence = 1.0f;
     std::copy(x.data(), x.data() + 2, b.position);
     std::copy(x.data() + physics::kVx, x.data() + physics::kVx + 2, b.velocity);
     std::copy(x.data() + physics::kWx, x.data() + physics::kWx + 3, b.spin);
@@ -263,21 +265,21 @@ cue_command_t TableSimNode::Request(int shot, const std::vector<table::SceneBall
                                     ShotResult& result) {
   for (;;) {
     ShowAtRest(shown);
-    // The estimator names balls by its tracks: ask for the one it sees nearest the ball.
     WaitFor([&] { return state_ && state_->num_balls > 0; }, "TABLE_STATE with the ball", nullptr);
-    int ball_id = state_->balls[0].ball_id;
-    double nearest = 1e300;
-    for (const ball_state_t& b : state_->balls) {
-      const double d = std::hypot(b.position[0] - ball.x(), b.position[1] - ball.y());
-      if (d < nearest) {
-        nearest = d;
-        ball_id = b.ball_id;
-      }
-    }
     shot_request_t request = ask;
     request.utime = Utime(time_);
     request.request_id = shot;
-    request.ball_id = ball_id;
+    if (request.ball_id != shot_request_t::BALL_BY_CLASS) {
+      // The estimator names balls by its tracks: ask for the one it sees nearest the ball.
+      double nearest = 1e300;
+      for (const ball_state_t& b : state_->balls) {
+        const double d = std::hypot(b.position[0] - ball.x(), b.position[1] - ball.y());
+        if (d < nearest) {
+          nearest = d;
+          request.ball_id = b.ball_id;
+        }
+      }
+    }
     Publish(messages::kShotRequestChannel, request);
     if (std::uniform_real_distribution<double>(0.0, 1.0)(fault_rng_) < options_.faults.duplicate) {
       health_.Count("request_duplicated");
@@ -440,6 +442,9 @@ SceneResult TableSimNode::RunScene() {
   tracking_ = TrackingReport{};
   for (const table::SceneBall& b : balls) tracking_->balls.push_back({b.id});
   shot_request_t ask{};
+  // The robot strikes the cue ball, which the estimator tells from the others by its colours.
+  ask.ball_id = shot_request_t::BALL_BY_CLASS;
+  ask.ball_class = ball_state_t::CLASS_CUE;
   ask.target[0] = result.shot.target.x();
   ask.target[1] = result.shot.target.y();
   ask.final_speed = options_.break_speed;
