@@ -131,14 +131,16 @@ FrameScore ScoreFrame(const LabelledFrame& frame,
   return score;
 }
 
-DetectionBenchmarkResult RunDetectionBenchmark(const std::string& directory,
+DetectionBenchmarkResult RunDetectionBenchmark(const std::string& set,
+                                               const std::vector<LabelledFrame>& frames,
                                                const DetectionBenchmarkOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   DetectionBenchmarkResult result;
-  result.set = directory;
+  result.set = set;
   if (!options.overlay_dir.empty()) std::filesystem::create_directories(options.overlay_dir);
-  for (const LabelledFrame& frame : LoadLabelledSet(directory)) {
-    const cv::Mat image = options.read_image(directory + "/" + frame.file);
+  for (const LabelledFrame& frame : frames) {
+    const cv::Mat image =
+        frame.image.empty() ? options.read_image(set + "/" + frame.file) : frame.image;
     estimator::BallDetector detector;
     const auto begin = std::chrono::steady_clock::now();
     const auto balls = detector.Detect(image);

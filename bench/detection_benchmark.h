@@ -30,6 +30,7 @@ struct LabelledFrame {
   double radius_px = 0;                    // typical ball radius [px]
   std::string view;                        // "overhead", "oblique" or "" (not labelled)
   std::string source;
+  cv::Mat image;                           // the frame, when not read from `file`
 };
 
 // The frames of a labelled set, in the order of labels.json. Throws std::invalid_argument with a
@@ -69,7 +70,10 @@ struct DetectionBenchmarkResult {
   double wall_s = 0;
 };
 
-DetectionBenchmarkResult RunDetectionBenchmark(const std::string& directory,
+// The detector on every frame: its image, or the file `set`/`file` read with
+// options.read_image. `set` names the set in the report.
+DetectionBenchmarkResult RunDetectionBenchmark(const std::string& set,
+                                               const std::vector<LabelledFrame>& frames,
                                                const DetectionBenchmarkOptions& options);
 
 // The frame with its labels and detections drawn: matched detections green, false ones red,

@@ -56,8 +56,14 @@ constexpr double kWindowRadiiAroundTable = 3.0;
 constexpr double kPocketRadii = 3.0;
 constexpr double kOffSurfaceRadii = 0.5;
 constexpr double kOffClothRadii = 1.0;
-// Two balls' centres are at least two radii apart; closer than kOverlapRadii radii (touching
-// balls' outlines fitted a little large, or a ball's shadow beside it) only the better is kept.
+// Unless given, the balls' scale is settled on the first frame with balls: from those scoring at
+// least kSettlingScore, and if it changes by more than kSettledScaleChange they are looked for
+// again.
+constexpr double kSettlingScore = 0.8;
+constexpr double kSettledScaleChange = 0.05;
+// Two balls' centres are at least two radii apart on the table; closer than kOverlapRadii radii
+// (touching balls' outlines fitted a little large, or a ball's shadow beside it) only the better
+// is kept.
 constexpr double kOverlapRadii = 1.75;
 // Before a table is learnt, RefineAt takes the cloth's colour as the median of kRingSamples
 // pixels on a circle of kRingRadii radii around the prediction, and its edge noise as
@@ -259,19 +265,45 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
   }
   table_ = std::move(search.table);
   cloth_ = LearnClothModel(bgr, *table_);
-  if (options_.ball_radius_px > 0) {
+  scale_settled_ = options_.ball_radius_px > 0;
+  if (scale_settled_) {
     scale_ = BallScale{table_->inverse_depth, options_.ball_radius_px};
   } else {
     scale_ = ScaleFromOutlines(*table_, BlobOutlines(bgr, *table_, cloth_));
+    if (!scale_) scale_ = ScaleFromTable(*table_, options_.ball_to_table_width);
   }
   failure_.clear();
-  return scale_.has_value();
+  return true;
 }
 
 std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
   const cv::Mat bgr = AsBgr(image);
-  // No scale yet is an empty table so far (or none): learnt again, from this frame.
-  if ((bgr.size() != frame_size_ || !scale_) && !LearnTable(bgr)) return {};
+  if ((bgr.size() != frame_size_ || !table_) && !LearnTable(bgr)) return {};
+  std::vector<BallDetection> balls = FindBalls(bgr);
+  if (!scale_settled_) SettleScale(bgr, &balls);
+  const std::vector<BallIdentity> identities = IdentifyBalls(bgr, balls, options_.ball_set);
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    balls[i].ball_class = identities[i].ball_class;
+    balls[i].class_confidence = identities[i].confidence;
+  }
+  return balls;
+}
+
+void BallDetector::SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* balls) {
+  std::vector<BallOutline> outlines;
+  for (const BallDetection& ball : *balls) {
+    if (ball.score >= kSettlingScore) outlines.push_back({ball.pixel, ball.radius_px, kOutlineRays});
+  }
+  const std::optional<BallScale> settled = ScaleFromOutlines(*table_, outlines);
+  if (!settled) return;  // nothing sure yet: an empty table so far
+  scale_settled_ = true;
+  const double change = settled->radius_at_centre / scale_->radius_at_centre;
+  if (std::abs(change - 1.0) <= kSettledScaleChange) return;
+  scale_ = settled;
+  *balls = FindBalls(bgr);
+}
+
+std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
   // The table and a ball's width around it: every outline and every vote's edge is there.
   double largest = 0;
   for (const auto& c : table_->cloth_corners) largest = std::max(largest, scale_->RadiusAt(c));
@@ -306,14 +338,10 @@ std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
   for (const auto& [ball, support] : outlined) {
     if (ball.score < options_.min_score) continue;
     const bool overlaps = std::any_of(balls.begin(), balls.end(), [&](const BallDetection& b) {
-      return (b.pixel - ball.pixel).norm() < kOverlapRadii * std::max(b.radius_px, ball.radius_px);
+      return table_->TableDistancePx(b.pixel, ball.pixel) <
+             kOverlapRadii * std::max(b.radius_px, ball.radius_px);
     });
     if (!overlaps) balls.push_back(ball);
-  }
-  const std::vector<BallIdentity> identities = IdentifyBalls(bgr, balls, options_.ball_set);
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    balls[i].ball_class = identities[i].ball_class;
-    balls[i].class_confidence = identities[i].confidence;
   }
   return balls;
 }

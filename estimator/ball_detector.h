@@ -10,7 +10,9 @@
 //   - The balls' scale (ball_scale.h): how large a ball looks at each place. Given as
 //     DetectorOptions::ball_radius_px (by a calibrated camera) or measured: the compact blobs of
 //     not-cloth on the table are outlined (ball_outline.h) and the radius most of them agree on,
-//     relative to the table's depth at each, is the scale.
+//     relative to the table's depth at each, is the scale; without such blobs (an empty table, a
+//     rack), the table's size gives a first one. A measured scale is settled on the first frame
+//     with balls, from the balls found.
 //
 // Then every frame (Detect):
 //   1. Every edge on the table votes for the centres of the ball-sized circles it could lie on
@@ -72,6 +74,9 @@ struct DetectorOptions {
   double min_score = 0.5;
   // The balls' set, for their classes.
   BallSet ball_set = BallSet::kPool;
+  // The ball's radius over the playing surface's width, for a first scale where nothing on the
+  // table is the size and shape of a ball (an empty table, a rack): pool balls on a 9-ft table.
+  double ball_to_table_width = 0.028575 / 1.27;
 };
 
 // The expected radius [px] of a ball of radius `ball_radius` [m] at the image centre.
@@ -82,14 +87,13 @@ class BallDetector {
   explicit BallDetector(DetectorOptions options = {});
 
   // Learns the table, its cloth and the balls' scale from a BGR (CV_8UC3) or grey (CV_8UC1)
-  // frame; true when all three were found. Without a table, failure() says why; without a
-  // scale (nothing on the table is the size and shape of a ball: an empty table), it is learnt
-  // again from the next frame. The table and its lights do not change between frames, so this
-  // runs once, on Detect's first frame (and again when the frame size changes, or when asked).
+  // frame; false, failure() saying why, when no table is found. The table and its lights do not
+  // change between frames, so this runs once, on Detect's first frame (and again when the frame
+  // size changes, or when asked).
   bool LearnTable(const cv::Mat& image);
 
   // Every ball in a frame, best score first, identified. Empty when no table is found
-  // (failure() says why), nothing on it is ball-sized, or no ball is there.
+  // (failure() says why) or no ball is there.
   std::vector<BallDetection> Detect(const cv::Mat& image);
 
   // The ball near `predicted` (within about one radius of `radius_px`), for a tracker. Before a
@@ -108,9 +112,15 @@ class BallDetector {
   const std::string& failure() const { return failure_; }
 
  private:
+  // Steps 1 to 4 (see the top of the file) at the current scale.
+  std::vector<BallDetection> FindBalls(const cv::Mat& bgr) const;
+  // Settles a measured scale from the balls found, finding them again if it changed.
+  void SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* balls);
+
   DetectorOptions options_;
   std::optional<TableRegion> table_;
   std::optional<BallScale> scale_;
+  bool scale_settled_ = false;
   ClothModel cloth_;
   cv::Size frame_size_;
   std::string failure_;

@@ -31,10 +31,16 @@ struct BallScale {
   }
 };
 
-// The scale most of the outlines agree with (within kScaleAgreement): the median of the largest
-// agreeing group, so that a pocket, a shadow or a half-hidden ball among them changes nothing.
-// Empty without outlines.
+// The scale most of the outlines agree with (within kScaleAgreement), each weighed by the rays
+// that found its edge: the weighted median of the heaviest agreeing group, so that a pocket, a
+// shadow, a half-hidden ball or a piece of a rack among them changes nothing. Empty without
+// outlines.
 std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
                                            const std::vector<BallOutline>& outlines);
+
+// The scale the table's size says, for balls of `ball_to_table_width` (radius over the width of
+// the playing surface, 0.0225 for pool balls on a 9-ft table): for an empty table, or one whose
+// balls all touch (a rack). As good as the table is known: a 7-ft table's balls look 29 % larger.
+BallScale ScaleFromTable(const TableRegion& table, double ball_to_table_width);
 
 }  // namespace billiard::estimator

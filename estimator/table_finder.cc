@@ -1,6 +1,7 @@
 #include "estimator/table_finder.h"
 
 #include <Eigen/LU>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
@@ -517,6 +518,22 @@ double TableRegion::InverseDepthAt(const Eigen::Vector2d& pixel) const {
 
 Eigen::Vector2d TableRegion::TableAt(const Eigen::Vector2d& pixel) const {
   return (image_from_table.inverse() * pixel.homogeneous()).hnormalized();
+}
+
+double TableRegion::PixelsPerWidthAt(const Eigen::Vector2d& pixel) const {
+  const Eigen::Vector3d q = TableAt(pixel).homogeneous();
+  const Eigen::Matrix3d& h = image_from_table;
+  const Eigen::Vector3d p = h * q;
+  Eigen::Matrix2d jacobian;
+  for (int j = 0; j < 2; ++j) {
+    jacobian(0, j) = (h(0, j) - p.x() / p.z() * h(2, j)) / p.z();
+    jacobian(1, j) = (h(1, j) - p.y() / p.z() * h(2, j)) / p.z();
+  }
+  return Eigen::JacobiSVD<Eigen::Matrix2d>(jacobian).singularValues()(0);
+}
+
+double TableRegion::TableDistancePx(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
+  return (TableAt(a) - TableAt(b)).norm() * PixelsPerWidthAt(0.5 * (a + b));
 }
 
 Eigen::Vector2d TableRegion::Centre() const {

@@ -90,6 +90,14 @@ struct TableRegion {
   double InverseDepthAt(const Eigen::Vector2d& pixel) const;
   // The table point (x in [0, 2], y in [0, 1] on the surface) seen at a pixel.
   Eigen::Vector2d TableAt(const Eigen::Vector2d& pixel) const;
+  // Image pixels per table width at a pixel, along the direction the view does not foreshorten
+  // (the larger singular value of the homography's Jacobian): how large things on the table at
+  // that place look, in pixels, when seen square on.
+  double PixelsPerWidthAt(const Eigen::Vector2d& pixel) const;
+  // How far apart on the table two pixels are, in the pixels of PixelsPerWidthAt at their middle:
+  // balls touching in an oblique view are closer in the image along the view than across it,
+  // never on the table.
+  double TableDistancePx(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
   // The centre of the table in the image.
   Eigen::Vector2d Centre() const;
   // The smallest rectangle of full-resolution pixels holding the cloth's outline.

@@ -1,5 +1,6 @@
 #include "sim/camera/camera_model.h"
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
 #include <fstream>
@@ -25,6 +26,27 @@ CameraModel CameraModel::Overhead(const physics::TableParameters& table, int wid
   c.rotation = Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal();
   const Eigen::Vector3d centre(0.5 * table.length, 0.5 * table.width, height_above_cloth);
   c.translation = -c.rotation * centre;
+  return c;
+}
+
+CameraModel CameraModel::LookingAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
+                                   int width, int height, double horizontal_fov) {
+  CameraModel c;
+  c.width = width;
+  c.height = height;
+  c.fx = c.fy = 0.5 * width / std::tan(0.5 * horizontal_fov);
+  c.cx = 0.5 * (width - 1);
+  c.cy = 0.5 * (height - 1);
+  // Camera axes in table coordinates: z along the view, x level and to the right, y down.
+  const Eigen::Vector3d forward = (target - eye).normalized();
+  Eigen::Vector3d right = forward.cross(Eigen::Vector3d::UnitZ());
+  if (right.norm() < 1e-9) right = Eigen::Vector3d::UnitX();  // straight down
+  right.normalize();
+  const Eigen::Vector3d down = forward.cross(right);
+  c.rotation.row(0) = right.transpose();
+  c.rotation.row(1) = down.transpose();
+  c.rotation.row(2) = forward.transpose();
+  c.translation = -c.rotation * eye;
   return c;
 }
 

@@ -33,6 +33,12 @@ struct CameraModel {
                               double height_above_cloth = 2.5, double fill = 0.92,
                               const std::array<double, 5>& distortion = {});
 
+  // A camera at `eye` looking at `target` (table coordinates [m]), with the image's up towards
+  // the table's +z (its x axis level), a horizontal field of view of `horizontal_fov` [rad], no
+  // distortion: the oblique views of a phone held over the table or a broadcast camera.
+  static CameraModel LookingAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
+                               int width, int height, double horizontal_fov);
+
   // Pixel (u, v) of a point in table coordinates (in front of the camera).
   Eigen::Vector2d Project(const Eigen::Vector3d& table_point) const;
   // The point at height z above the cloth seen at `pixel`.

@@ -70,6 +70,26 @@ TEST(CameraModel, OverheadCameraSeesTheWholeTableUprightAndFilled) {
   EXPECT_NEAR(c.MetresPerPixel({1.27, 0.635, 0.0}), 2.54 / (0.92 * 1280), 1e-6);
 }
 
+TEST(CameraModel, ACameraLookingAtAPointSeesItInTheMiddleUprightAndLevel) {
+  const Eigen::Vector3d eye(1.27, -1.5, 1.2), target(1.27, 0.635, 0.0);
+  const CameraModel c = CameraModel::LookingAt(eye, target, 1280, 720, 1.0);
+  EXPECT_LT((c.Project(target) - Eigen::Vector2d(c.cx, c.cy)).norm(), 1e-9);
+  EXPECT_LT((c.Centre() - eye).norm(), 1e-12);
+  EXPECT_NEAR(c.fx, 640.0 / std::tan(0.5), 1e-9);
+  // Up the table's z is up the image; along the table's x (level, across the view) is right.
+  EXPECT_LT(c.Project(target + Eigen::Vector3d(0, 0, 0.1)).y(), c.cy);
+  EXPECT_GT(c.Project(target + Eigen::Vector3d(0.1, 0, 0)).x(), c.cx);
+  EXPECT_NEAR(c.Project(target + Eigen::Vector3d(0.1, 0, 0)).y(), c.cy, 1e-9);
+  // A rotation: orthonormal, right-handed.
+  EXPECT_LT((c.rotation * c.rotation.transpose() - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+  EXPECT_NEAR(c.rotation.determinant(), 1.0, 1e-12);
+  // The far side of the table is higher up the image and smaller than the near side.
+  const double near = (c.Project({2.54, 0, 0}) - c.Project({0, 0, 0})).norm();
+  const double far = (c.Project({2.54, 1.27, 0}) - c.Project({0, 1.27, 0})).norm();
+  EXPECT_LT(far, near);
+  EXPECT_LT(c.Project({1.27, 1.27, 0}).y(), c.Project({1.27, 0, 0}).y());
+}
+
 TEST(CameraModel, JsonRoundTripsAndBadFilesAreRefused) {
   const CameraModel c = Tilted();
   const CameraModel d = ParseCameraModel(CameraModelJson(c), "test");

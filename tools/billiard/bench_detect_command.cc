@@ -3,8 +3,11 @@
 #include <iostream>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include "bench/detection_benchmark.h"
+#include "bench/detection_suite.h"
+#include "sim/params/parameter_sets.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/image_files.h"
 
@@ -13,24 +16,37 @@ namespace billiard::cli {
 namespace {
 
 struct BenchDetectArgs {
-  std::string set, out;
-  bool no_overlays = false;
+  std::string set, out, params = params::kDefaultParameterSet;
+  bool synthetic = false, no_overlays = false;
+  std::uint32_t seed = 2026;
 };
 
 void Run(const BenchDetectArgs& args) {
+  if (args.set.empty() == !args.synthetic) {
+    throw UsageError("give one of --set DIR (a labelled set) and --synthetic (the rendered suite)");
+  }
   RequireWritableDirectory(args.out, "--out");
+  std::vector<bench::LabelledFrame> frames;
+  std::string set = args.set;
+  if (args.synthetic) {
+    set = args.out + "/synthetic";
+    std::cerr << "bench-detect: rendering the synthetic suite into " << set << std::endl;
+    frames = bench::RenderDetectionSuite(LoadParametersOption(args.params), args.seed);
+    bench::WriteLabelledSet(frames, set);
+  } else {
+    try {
+      frames = bench::LoadLabelledSet(args.set);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--set: ") + e.what());
+    }
+  }
   bench::DetectionBenchmarkOptions options;
   options.read_image = ReadImage;
   if (!args.no_overlays) options.overlay_dir = args.out + "/overlays";
   options.progress = [](const std::string& line) {
     std::cerr << "bench-detect: " << line << std::endl;
   };
-  bench::DetectionBenchmarkResult result;
-  try {
-    result = bench::RunDetectionBenchmark(args.set, options);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--set: ") + e.what());
-  }
+  const bench::DetectionBenchmarkResult result = bench::RunDetectionBenchmark(set, frames, options);
   bench::WriteDetectionReport(result, args.out);
   std::cerr << "bench-detect: wrote " << args.out << "/detection_report.md (" << result.wall_s
             << " s)" << std::endl;
@@ -45,7 +61,13 @@ void AddBenchDetectCommand(CLI::App& app) {
       "bench-detect",
       "Run the detector on a labelled set of frames (DIR/labels.json): recall, precision and "
       "centre error per frame and per view");
-  cmd->add_option("--set", args->set, "Directory with labels.json and its images")->required();
+  cmd->add_option("--set", args->set, "Directory with labels.json and its images");
+  cmd->add_flag("--synthetic", args->synthetic,
+                "Render the synthetic suite (overhead and oblique cameras, racks, five cloths) "
+                "into OUT/synthetic and run on it instead");
+  cmd->add_option("--params", args->params, "The balls and table of --synthetic")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of --synthetic")->capture_default_str();
   cmd->add_option("--out", args->out,
                   "Directory for detection_report.md, detection_results.json and overlays/")
       ->required();
