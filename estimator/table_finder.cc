@@ -59,12 +59,17 @@ constexpr double kTableAspect = 2.0;
 constexpr int kNoseSamples = 24;
 constexpr double kNoseFrom = 0.12, kNoseMiddle = 0.08;
 constexpr int kOutlineClearancePx = 3;
+// The outline found at the search resolution is refined within kOutlineSearchPx pixels of that
+// resolution of it (its barrier and opening leave it a pixel or two inside).
+constexpr double kOutlineSearchPx = 3.0;
 constexpr double kMinNoseEdge = 2.0, kNoseEdgeNoises = 4.0;
 constexpr int kNoseLines = 3;
 constexpr double kMinNosePlaces = 0.3;
 constexpr double kNoseOfBest = 0.95;
-// The two focal lengths of Zhang's constraints agree within this factor for the right
+// A camera's focal length is between kMinFocal and kMaxFocal image widths (a field of view from
+// 118 to 19 degrees); the two of Zhang's constraints agree within kFocalAgreement for the right
 // assignment of the long sides (an overhead view makes them 0 / 0: no camera, no answer).
+constexpr double kMinFocal = 0.3, kMaxFocal = 3.0;
 constexpr double kFocalAgreement = 1.3;
 
 struct Line {
@@ -313,13 +318,31 @@ std::vector<cv::Vec3f> LabAt(const cv::Mat& bgr, const std::vector<Eigen::Vector
   return std::vector<cv::Vec3f>(lab.begin<cv::Vec3f>(), lab.end<cv::Vec3f>());
 }
 
-// The nose of the cushion along side `side` (table corners side, side + 1) as a homogeneous image
-// line: at places along the side, the edges (local maxima of the colour's rate of change) met
-// going inward from the cloth's outline; the lines through many of them (RANSAC, seeded); the
-// innermost of those as well supported as kNoseOfStrongest of the best. The outline's own line
-// when none is.
-Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table,
-                         bool long_first, int side) {
+// The image line of side `side` (table corners side, side + 1) of `image_from_table`.
+Eigen::Vector3d SideLine(const Eigen::Matrix3d& image_from_table, bool long_first, int side) {
+  const auto table = TableCorners(long_first);
+  return (image_from_table * table[side].homogeneous())
+      .cross(image_from_table * table[(side + 1) % 4].homogeneous());
+}
+
+// A straight edge along a side: its homogeneous image line, at how many places along the side it
+// was met, and its mean distance inward from the side's line [px] (negative: outward).
+struct EdgeLine {
+  Eigen::Vector3d line;
+  int places = 0;
+  double inward_px = 0;
+  double rms_px = 0;  // of its edges from it
+};
+
+// The straight edges along side `side` (table corners side, side + 1, as `image_from_table` maps
+// them) between `from` and `to` table widths inward of it (negative: outward), best supported
+// first: at places along the side, the edges (local maxima of the colour's rate of change, well
+// above the band's median, at least `clearance_px` from the side's line) met going inward; the
+// lines through the edges of many places on both halves of the side (RANSAC, seeded, then least
+// squares), each taking its edges.
+std::vector<EdgeLine> EdgeLinesAlong(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table,
+                                     bool long_first, int side, double from, double to,
+                                     double clearance_px) {
   const auto table = TableCorners(long_first);
   const Eigen::Vector2d a = table[side], b = table[(side + 1) % 4];
   const Eigen::Vector2d centre(0.5 * kTableAspect, 0.5);
@@ -329,14 +352,16 @@ Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_t
   const auto image = [&](double t, double u) {
     return (image_from_table * (a + t * (b - a) + u * inward).homogeneous()).hnormalized();
   };
-  const Eigen::Vector3d outline = image(0, 0).homogeneous().cross(image(1, 0).homogeneous());
+  Eigen::Vector3d side_line = image(0, 0).homogeneous().cross(image(1, 0).homogeneous());
+  side_line /= side_line.head<2>().norm();
+  const double towards_centre = side_line.dot(image(0.5, 0.1).homogeneous()) > 0 ? 1.0 : -1.0;
   // Offsets a pixel apart where the side is nearest the camera (the largest scale along it).
   double px_per_unit = 0;
   for (const double t : {0.0, 0.5, 1.0}) {
     px_per_unit = std::max(px_per_unit, (image(t, 0.01) - image(t, 0)).norm() / 0.01);
   }
   const double step = 1.0 / std::max(1.0, px_per_unit);
-  const int offsets = static_cast<int>(kMaxCushionWidth / step) + 1;
+  const int offsets = static_cast<int>((to - from) / step) + 1;
   std::vector<double> along;
   for (int k = 0; k < kNoseSamples; ++k) {
     const double t = kNoseFrom + (k + 0.5) * (0.5 - kNoseFrom - kNoseMiddle) / kNoseSamples;
@@ -345,11 +370,10 @@ Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_t
   }
   std::vector<Eigen::Vector2d> points;
   for (const double t : along) {
-    for (int i = 0; i <= offsets; ++i) points.push_back(image(t, i * step));
+    for (int i = 0; i <= offsets; ++i) points.push_back(image(t, from + i * step));
   }
   const std::vector<cv::Vec3f> lab = LabAt(bgr, points);
-  // The colour's rate of change inward at each place and offset; an edge is a local maximum of
-  // it well above the cloth's noise (the median rate).
+  // The colour's rate of change inward at each place and offset.
   std::vector<double> rate(along.size() * offsets);
   for (std::size_t k = 0; k < along.size(); ++k) {
     const std::size_t base = k * (offsets + 1);
@@ -363,29 +387,30 @@ Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_t
   std::vector<double> sorted = rate;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   const double min_edge = std::max(kMinNoseEdge, kNoseEdgeNoises * sorted[sorted.size() / 2]);
-  // The edges along each place: (image point, place).
+  // The edges along each place, to a fraction of a sample (the parabola through the maximum and
+  // its neighbours): (image point, place).
   std::vector<std::pair<Eigen::Vector2d, int>> edges;
   for (std::size_t k = 0; k < along.size(); ++k) {
     const std::size_t base = k * (offsets + 1);
     const double* r = &rate[k * offsets];
-    for (int i = std::max(1, kOutlineClearancePx); i + 1 < offsets; ++i) {
-      if (r[i] >= min_edge && r[i] >= r[i - 1] && r[i] > r[i + 1]) {
-        edges.push_back({0.5 * (points[base + i] + points[base + i + 1]), static_cast<int>(k)});
-      }
+    for (int i = 1; i + 1 < offsets; ++i) {
+      if (r[i] < min_edge || r[i] < r[i - 1] || r[i] <= r[i + 1]) continue;
+      const double curvature = r[i - 1] - 2 * r[i] + r[i + 1];
+      const double offset =
+          curvature < 0 ? std::clamp(0.5 * (r[i - 1] - r[i + 1]) / curvature, -1.0, 1.0) : 0.0;
+      const Eigen::Vector2d middle = 0.5 * (points[base + i] + points[base + i + 1]);
+      const Eigen::Vector2d next = 0.5 * (points[base + i + 1] + points[base + i + 2]);
+      const Eigen::Vector2d edge = middle + offset * (next - middle);
+      if (std::abs(side_line.dot(edge.homogeneous())) < clearance_px) continue;
+      edges.push_back({edge, static_cast<int>(k)});
     }
   }
-  // Lines through the edges of many places, best supported first, each taking its edges.
-  struct Support {
-    Eigen::Vector3d line;
-    int places = 0;
-    double inward_px = 0;  // mean distance of its edges from the outline
-  };
-  std::vector<Support> lines;
+  std::vector<EdgeLine> lines;
   std::vector<bool> taken(edges.size(), false);
   std::mt19937 random(side + 1);
   for (int found = 0; found < kNoseLines && edges.size() >= 2; ++found) {
     std::uniform_int_distribution<std::size_t> pick(0, edges.size() - 1);
-    Support best;
+    int best_places = 0;
     std::vector<std::size_t> best_inliers;
     for (int attempt = 0; attempt < kRansacTries; ++attempt) {
       const std::size_t i = pick(random), j = pick(random);
@@ -399,30 +424,78 @@ Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_t
         inliers.push_back(e);
         place_seen[edges[e].second] = true;
       }
-      // Places alternate between the side's halves: a nose runs along both, a row of balls
-      // against the cushion along one at most.
+      // Places alternate between the side's halves: a cushion runs along both, a row of balls
+      // against it along one at most.
       int halves[2] = {0, 0};
       for (std::size_t k = 0; k < along.size(); ++k) halves[k % 2] += place_seen[k];
       const int places = 2 * std::min(halves[0], halves[1]);
-      if (places > best.places) {
-        best = {line, places, 0.0};
+      if (places > best_places) {
+        best_places = places;
         best_inliers = inliers;
       }
     }
-    if (best.places < kMinNosePlaces * static_cast<double>(along.size())) break;
-    const Eigen::Vector3d unit_outline = outline / outline.head<2>().norm();
+    if (best_places < kMinNosePlaces * static_cast<double>(along.size())) break;
+    std::vector<cv::Point2f> inlier_points;
+    EdgeLine edge_line;
+    edge_line.places = best_places;
     for (const std::size_t e : best_inliers) {
       taken[e] = true;
-      best.inward_px += std::abs(unit_outline.dot(edges[e].first.homogeneous()));
+      inlier_points.emplace_back(static_cast<float>(edges[e].first.x()),
+                                 static_cast<float>(edges[e].first.y()));
+      edge_line.inward_px += towards_centre * side_line.dot(edges[e].first.homogeneous());
     }
-    best.inward_px /= best_inliers.size();
-    lines.push_back(best);
+    edge_line.inward_px /= best_inliers.size();
+    cv::Vec4f fitted;
+    cv::fitLine(inlier_points, fitted, cv::DIST_L2, 0, 0.01, 0.01);
+    edge_line.line = {-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]};
+    double squares = 0;
+    for (const auto& p : inlier_points) {
+      squares += std::pow(edge_line.line.dot(Eigen::Vector3d(p.x, p.y, 1.0)), 2);
+    }
+    edge_line.rms_px = std::sqrt(squares / inlier_points.size());
+    lines.push_back(edge_line);
   }
-  if (lines.empty()) return outline;
-  const int most = lines.front().places;
-  const Support* nose = &lines.front();
-  for (const Support& l : lines) {
-    if (l.places >= kNoseOfBest * most && l.inward_px > nose->inward_px) nose = &l;
+  return lines;
+}
+
+// The cloth's outline along a side, to a fraction of a pixel: the best supported straight edge
+// within `search_px` of the side found at the search resolution, or that side (`rough`, in
+// full-resolution pixels) when there is none.
+Line ClothSide(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table, bool long_first,
+               int side, double search_px, const Line& rough) {
+  // The search's reach in table widths, where the side is farthest (foreshortened most).
+  const auto table = TableCorners(long_first);
+  const Eigen::Vector2d a = table[side], b = table[(side + 1) % 4];
+  Eigen::Vector2d inward(-(b - a).y(), (b - a).x());
+  inward.normalize();
+  double px_per_unit = HUGE_VAL;
+  for (const double t : {0.0, 0.5, 1.0}) {
+    const Eigen::Vector2d p = a + t * (b - a);
+    const auto image = [&](const Eigen::Vector2d& q) {
+      return (image_from_table * q.homogeneous()).hnormalized();
+    };
+    px_per_unit = std::min(px_per_unit, (image(p + 0.01 * inward) - image(p)).norm() / 0.01);
+  }
+  const double reach = search_px / std::max(1e-9, px_per_unit);
+  const auto lines =
+      EdgeLinesAlong(bgr, image_from_table, long_first, side, -reach, reach, 0.0);
+  if (lines.empty()) return rough;
+  return {lines.front().line, lines.front().rms_px, lines.front().places};
+}
+
+// The nose of the cushion along side `side`, as the header says: of the straight edges inward of
+// the cloth's outline, the best supported, or the innermost nearly as well supported; the
+// outline itself when there is none.
+Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table,
+                         bool long_first, int side) {
+  const auto lines = EdgeLinesAlong(bgr, image_from_table, long_first, side, 0.0,
+                                    kMaxCushionWidth, kOutlineClearancePx);
+  if (lines.empty()) return SideLine(image_from_table, long_first, side);
+  const EdgeLine* nose = &lines.front();
+  for (const EdgeLine& l : lines) {
+    if (l.places >= kNoseOfBest * lines.front().places && l.inward_px > nose->inward_px) {
+      nose = &l;
+    }
   }
   return nose->line;
 }
@@ -455,20 +528,44 @@ bool Intersections(const std::array<Eigen::Vector3d, 4>& lines,
   return true;
 }
 
-// Whether the first side (corner 0 to 1) and its opposite are the long ones.
-bool LongSideFirst(const std::array<Eigen::Vector2d, 4>& corners, const cv::Size& size) {
-  double disagreement[2];
-  for (const bool long_first : {true, false}) {
-    const auto [f1, f2] = FocalLengthsSquared(ImageFromTable(corners, long_first), size);
-    const bool camera = f1 > 0 && f2 > 0 && std::isfinite(f1) && std::isfinite(f2);
-    disagreement[long_first ? 0 : 1] = camera ? std::abs(std::log(f1 / f2)) : HUGE_VAL;
+// The largest over the smallest depth of the quadrilateral's corners, seen as a rectangle in a
+// plane (whichever pair of sides is the long one): 0 when they cannot be one.
+double DepthRatio(const std::array<Eigen::Vector2d, 4>& corners) {
+  const Eigen::Vector3d inverse_depth = ImageFromTable(corners, true).inverse().row(2).transpose();
+  double nearest = 0, farthest = HUGE_VAL;
+  for (const auto& corner : corners) {
+    const double w = inverse_depth.dot(corner.homogeneous());
+    nearest = std::max(nearest, std::abs(w));
+    farthest = std::min(farthest, std::abs(w));
+    if (w * inverse_depth.dot(corners[0].homogeneous()) <= 0) return 0.0;  // a corner behind
   }
-  const double agreement = 2 * std::log(kFocalAgreement);  // squared focal lengths
-  if (disagreement[0] < agreement && disagreement[1] > agreement) return true;
-  if (disagreement[1] < agreement && disagreement[0] > agreement) return false;
+  return nearest / farthest;
+}
+
+// Whether the first side (corner 0 to 1) and its opposite are the long ones. In an oblique view,
+// the assignment for which the implied camera is one (a focal length between kMinFocal and
+// kMaxFocal image widths from each constraint that gives one, the two within kFocalAgreement of
+// each other), when only one of the two is. Otherwise, and in an overhead view (which leaves the
+// constraints 0 / 0), the longer pair in the image.
+bool LongSideFirst(const std::array<Eigen::Vector2d, 4>& corners, const cv::Size& size) {
   const double first = (corners[1] - corners[0]).norm() + (corners[2] - corners[3]).norm();
   const double second = (corners[2] - corners[1]).norm() + (corners[3] - corners[0]).norm();
-  return first >= second;
+  if (DepthRatio(corners) <= kOverheadDepthRatio) return first >= second;
+  bool camera[2];
+  for (const bool long_first : {true, false}) {
+    const auto [f1, f2] = FocalLengthsSquared(ImageFromTable(corners, long_first), size);
+    std::vector<double> focal;  // [image widths]
+    for (const double f : {f1, f2}) {
+      if (f > 0 && std::isfinite(f)) focal.push_back(std::sqrt(f) / size.width);
+    }
+    bool plausible = !focal.empty();
+    for (const double f : focal) plausible = plausible && f >= kMinFocal && f <= kMaxFocal;
+    if (focal.size() == 2) {
+      plausible = plausible && std::abs(std::log(focal[0] / focal[1])) < std::log(kFocalAgreement);
+    }
+    camera[long_first ? 0 : 1] = plausible;
+  }
+  return camera[0] != camera[1] ? camera[0] : first >= second;
 }
 
 }  // namespace
@@ -588,20 +685,30 @@ TableSearch FindTable(const cv::Mat& bgr) {
     if (!side) return {std::nullopt, "no table: a side of the cloth is not straight"};
     sides[i] = *side;
   }
-  double squares = 0;
-  int points = 0;
   std::array<Eigen::Vector3d, 4> lines;
   for (int i = 0; i < 4; ++i) {
+    sides[i].coefficients.z() /= scale;  // to full-resolution pixels
+    sides[i].rms /= scale;
     lines[i] = sides[i].coefficients;
-    lines[i].z() /= scale;  // to full-resolution pixels
-    squares += sides[i].rms * sides[i].rms * sides[i].points;
-    points += sides[i].points;
   }
-  table.side_fit_rms_px = std::sqrt(squares / points) / scale;
   if (!Intersections(lines, &table.cloth_corners)) {
     return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
   }
   const bool long_first = LongSideFirst(table.cloth_corners, bgr.size());
+  const Eigen::Matrix3d rough_from_table = ImageFromTable(table.cloth_corners, long_first);
+  double squares = 0;
+  int points = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Line side =
+        ClothSide(bgr, rough_from_table, long_first, i, kOutlineSearchPx / scale, sides[i]);
+    lines[i] = side.coefficients;
+    squares += side.rms * side.rms * side.points;
+    points += side.points;
+  }
+  table.side_fit_rms_px = std::sqrt(squares / std::max(1, points));
+  if (!Intersections(lines, &table.cloth_corners)) {
+    return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
+  }
   const Eigen::Matrix3d cloth_from_table = ImageFromTable(table.cloth_corners, long_first);
   for (int i = 0; i < 4; ++i) lines[i] = NoseLine(bgr, cloth_from_table, long_first, i);
   if (!Intersections(lines, &table.corners)) {
@@ -610,16 +717,10 @@ TableSearch FindTable(const cv::Mat& bgr) {
   table.image_from_table = ImageFromTable(table.corners, long_first);
   const Eigen::Vector3d inverse_depth = table.image_from_table.inverse().row(2).transpose();
   table.inverse_depth = inverse_depth / inverse_depth.dot(table.Centre().homogeneous());
-  double nearest = 0, farthest = HUGE_VAL;
-  for (const auto& corner : table.corners) {
-    const double w = table.InverseDepthAt(corner);
-    nearest = std::max(nearest, w);
-    farthest = std::min(farthest, w);
-  }
-  if (!(farthest > 0)) {
+  table.depth_ratio = DepthRatio(table.corners);
+  if (!(table.depth_ratio > 0)) {
     return {std::nullopt, "no table: the cloth's corners are not those of a plane in view"};
   }
-  table.depth_ratio = nearest / farthest;
   table.view = table.depth_ratio <= kOverheadDepthRatio ? TableView::kOverhead : TableView::kOblique;
   return {table, ""};
 }

@@ -1,0 +1,165 @@
+// The table finder against the simulator's renderer, whose camera is the truth: the playing
+// surface's corners where the camera projects the table's, the view told overhead from oblique,
+// the depth and the scale across the table those of the camera, on cloths of every colour; a
+// frame without a table refused with the reason.
+#include "estimator/table_finder.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/SVD>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+#include "sim/camera/camera_model.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/render/table_renderer.h"
+
+namespace billiard::estimator {
+namespace {
+
+const physics::ModelParameters& Pool() {
+  static const physics::ModelParameters params = params::LoadParameters("pool");
+  return params;
+}
+
+struct Scene {
+  const char* name;
+  camera::CameraModel camera;
+  bool overhead;
+};
+
+std::vector<Scene> Cameras() {
+  const physics::TableParameters& table = Pool().table;
+  const Eigen::Vector3d middle(0.5 * table.length, 0.5 * table.width, 0.0);
+  return {{"overhead", camera::CameraModel::Overhead(table, 1280, 720), true},
+          {"side", camera::CameraModel::LookingAt(middle + Eigen::Vector3d(0, -2.3, 1.6), middle,
+                                                  1280, 720, 1.2),
+           false},
+          {"end", camera::CameraModel::LookingAt(middle + Eigen::Vector3d(-3.0, 0, 1.8), middle,
+                                                 1280, 720, 0.9),
+           false}};
+}
+
+cv::Mat Render(const camera::CameraModel& camera, const cv::Vec3b& cloth) {
+  render::RenderOptions options;
+  options.exposure_s = 0;
+  options.cloth = cloth;
+  options.cushion = cloth * 0.8;
+  const render::TableRenderer renderer(camera, Pool(), options);
+  return renderer.Render({render::RenderBall::AtRest(0, render::PoolBallColour(0), {0.6, 0.6}),
+                          render::RenderBall::AtRest(3, render::PoolBallColour(3), {1.8, 0.4})},
+                         0.0);
+}
+
+constexpr double kSurfaceTolerancePx = 4.0;
+
+// The table's corners on the cloth (z = 0) and at the cushions' nose (the top of their face).
+std::array<Eigen::Vector3d, 4> TableCorners(double z) {
+  const physics::TableParameters& t = Pool().table;
+  return {Eigen::Vector3d(0, 0, z), Eigen::Vector3d(t.length, 0, z),
+          Eigen::Vector3d(t.length, t.width, z), Eigen::Vector3d(0, t.width, z)};
+}
+
+// Each side of the table lies along a side found: its points at a quarter, half and three
+// quarters of its length within kSurfaceTolerancePx of the found side's line, on the cloth or at
+// the nose's height (where the view shows the face of the cushion, the surface found ends at its
+// foot; where it shows the cushion from behind, at its top; where the top is the bed's colour,
+// navy seen from the side, at the rail, a little further out).
+void ExpectTheSurface(const TableRegion& table, const camera::CameraModel& camera,
+                      const std::string& what) {
+  const double nose = render::RenderOptions{}.cushion_height;
+  for (int i = 0; i < 4; ++i) {
+    double best = HUGE_VAL;
+    for (const double z : {0.0, nose}) {
+      const Eigen::Vector3d a = TableCorners(z)[i], b = TableCorners(z)[(i + 1) % 4];
+      for (int j = 0; j < 4; ++j) {
+        const Eigen::Vector3d line =
+            table.corners[j].homogeneous().cross(table.corners[(j + 1) % 4].homogeneous());
+        double worst = 0;
+        for (const double t : {0.25, 0.5, 0.75}) {
+          const Eigen::Vector2d p = camera.Project(a + t * (b - a));
+          worst = std::max(worst, std::abs(line.dot(p.homogeneous())) / line.head<2>().norm());
+        }
+        best = std::min(best, worst);
+      }
+    }
+    EXPECT_LT(best, kSurfaceTolerancePx) << what << ": table side " << i;
+  }
+}
+
+TEST(TableFinder, FindsThePlayingSurfaceInEveryViewOnEveryCloth) {
+  const std::vector<cv::Vec3b> cloths = {
+      {60, 110, 30}, {200, 140, 40}, {90, 45, 25}, {45, 30, 140}, {175, 175, 170}};
+  for (const Scene& scene : Cameras()) {
+    for (const cv::Vec3b& cloth : cloths) {
+      const std::string what = std::string(scene.name) + ", cloth " +
+                               std::to_string(cloth[0]) + "," + std::to_string(cloth[1]) + "," +
+                               std::to_string(cloth[2]);
+      const TableSearch search = FindTable(Render(scene.camera, cloth));
+      ASSERT_TRUE(search.table) << what << ": " << search.reason;
+      ExpectTheSurface(*search.table, scene.camera, what);
+      EXPECT_EQ(search.table->view, scene.overhead ? TableView::kOverhead : TableView::kOblique)
+          << what << ", depth ratio " << search.table->depth_ratio;
+      EXPECT_LT(search.table->side_fit_rms_px, 1.5) << what;
+    }
+  }
+}
+
+// The camera's depth of a table point (its z in the camera frame).
+double Depth(const camera::CameraModel& camera, const Eigen::Vector3d& p) {
+  return (camera.rotation * p + camera.translation).z();
+}
+
+TEST(TableFinder, TheDepthAndScaleAcrossTheTableAreTheCamerasOwn) {
+  for (const Scene& scene : Cameras()) {
+    const TableSearch search = FindTable(Render(scene.camera, {60, 110, 30}));
+    ASSERT_TRUE(search.table) << scene.name << ": " << search.reason;
+    const TableRegion& table = *search.table;
+    const physics::TableParameters& t = Pool().table;
+    const Eigen::Vector3d middle(0.5 * t.length, 0.5 * t.width, 0.0);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> x(0.1, t.length - 0.1), y(0.1, t.width - 0.1);
+    for (int k = 0; k < 20; ++k) {
+      const Eigen::Vector3d p(x(rng), y(rng), 0.0);
+      const Eigen::Vector2d pixel = scene.camera.Project(p);
+      // Relative inverse depth: 1 / depth over 1 / (the table middle's depth). The found
+      // surface is at the cushions' nose, a few centimetres off: within 2 %.
+      const double truth = Depth(scene.camera, middle) / Depth(scene.camera, p);
+      EXPECT_NEAR(table.InverseDepthAt(pixel), truth, 0.02 * truth) << scene.name;
+      // Pixels per table width where the view does not foreshorten: the larger singular value
+      // of the camera's own Jacobian there (f W / depth, more off the optical axis).
+      Eigen::Matrix2d jacobian;
+      const double h = 1e-4;
+      jacobian.col(0) = (scene.camera.Project(p + Eigen::Vector3d(h, 0, 0)) - pixel) / h;
+      jacobian.col(1) = (scene.camera.Project(p + Eigen::Vector3d(0, h, 0)) - pixel) / h;
+      const double scale =
+          t.width * Eigen::JacobiSVD<Eigen::Matrix2d>(jacobian).singularValues()(0);
+      EXPECT_NEAR(table.PixelsPerWidthAt(pixel), scale, 0.03 * scale) << scene.name;
+    }
+    // Distances on the table: two points half a metre apart along each side.
+    for (const Eigen::Vector3d& step : {Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d(0, 0.5, 0)}) {
+      const Eigen::Vector3d a = middle - 0.5 * step, b = middle + 0.5 * step;
+      const double px = table.TableDistancePx(scene.camera.Project(a), scene.camera.Project(b));
+      const double truth = 0.5 / t.width * table.PixelsPerWidthAt(scene.camera.Project(middle));
+      EXPECT_NEAR(px, truth, 0.04 * truth) << scene.name << " along " << step.transpose();
+    }
+  }
+}
+
+TEST(TableFinder, AFrameWithoutATableIsRefusedWithTheReason) {
+  cv::Mat noise(480, 640, CV_8UC3);
+  cv::RNG(5).fill(noise, cv::RNG::UNIFORM, 0, 256);
+  const TableSearch in_noise = FindTable(noise);
+  EXPECT_FALSE(in_noise.table);
+  EXPECT_NE(in_noise.reason.find("no table"), std::string::npos) << in_noise.reason;
+  // A small patch of cloth in a busy room is no table either.
+  cv::Mat room = noise.clone();
+  cv::rectangle(room, {300, 220, 30, 20}, cv::Scalar(60, 110, 30), cv::FILLED);
+  EXPECT_FALSE(FindTable(room).table);
+  EXPECT_FALSE(FindTable(cv::Mat()).table);
+  EXPECT_FALSE(FindTable(cv::Mat(10, 10, CV_8UC1, cv::Scalar(0))).table);
+}
+
+}  // namespace
+}  // namespace billiard::estimator
