@@ -55,7 +55,7 @@ constexpr double kWindowRadiiAroundTable = 3.0;
 // of the cloth, in the cushion's shade, can pull in).
 constexpr double kPocketRadii = 3.0;
 constexpr double kOffSurfaceRadii = 0.5;
-constexpr double kOffClothRadii = 1.0;
+constexpr double kOffClothRadii = 0.5;
 // Unless given, the balls' scale is settled on the first frame with balls: from those scoring at
 // least kSettlingScore, and if it changes by more than kSettledScaleChange they are looked for
 // again.

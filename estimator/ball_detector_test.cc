@@ -14,6 +14,7 @@
 #include <random>
 
 #include "estimator/testing/real_table_photo.h"
+#include "estimator/testing/synthetic_table.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/render/table_renderer.h"
 #include "tests/support/test_data.h"
@@ -22,7 +23,9 @@ namespace billiard::estimator {
 namespace {
 
 using testing::HandBall;
+using testing::DrawTable;
 using testing::kRealTablePhotoRadiusPx;
+using testing::SyntheticBall;
 
 // The tests on the real photograph, skipped with the reason where the test data is absent.
 class RealPhoto : public ::testing::Test {
@@ -209,66 +212,6 @@ TEST_F(RealPhoto, LearnsAnotherClothColourAndLight) {
   ExpectTheBalls(DetectWithHint(recoloured), "blue cloth, 0.7 brightness");
   BallDetector detector;
   ExpectTheBalls(detector.Detect(recoloured), "blue cloth, estimated radius");
-}
-
-// A synthetic table: a noisy cloth inside a dark rail, balls drawn as Lambert-shaded spheres lit
-// from above with exact anti-aliasing (8x8 samples per edge pixel).
-struct SyntheticBall {
-  Eigen::Vector2d centre;
-  cv::Vec3d colour;
-};
-
-cv::Mat DrawTable(const std::vector<SyntheticBall>& balls, double radius, cv::Size size,
-                  cv::Rect cloth_rect, double noise_sigma, unsigned seed) {
-  const cv::Vec3d cloth(60, 140, 40), rail(30, 40, 70);
-  cv::Mat f(size, CV_64FC3);
-  for (int y = 0; y < size.height; ++y) {
-    for (int x = 0; x < size.width; ++x) {
-      f.at<cv::Vec3d>(y, x) = cloth_rect.contains({x, y}) ? cloth : rail;
-    }
-  }
-  const auto shade = [&](const SyntheticBall& b, double x, double y) {
-    const double rho2 = ((Eigen::Vector2d(x, y) - b.centre) / radius).squaredNorm();
-    return b.colour * (0.35 + 0.65 * std::sqrt(std::max(0.0, 1.0 - rho2)));
-  };
-  for (const SyntheticBall& b : balls) {
-    for (int y = static_cast<int>(b.centre.y() - radius) - 2; y <= b.centre.y() + radius + 2; ++y) {
-      for (int x = static_cast<int>(b.centre.x() - radius) - 2; x <= b.centre.x() + radius + 2;
-           ++x) {
-        const double d = (Eigen::Vector2d(x, y) - b.centre).norm();
-        if (d > radius + 1) continue;
-        cv::Vec3d& p = f.at<cv::Vec3d>(y, x);
-        if (d < radius - 1) {
-          p = shade(b, x, y);
-          continue;
-        }
-        cv::Vec3d sum(0, 0, 0);
-        int inside = 0;
-        for (int sy = 0; sy < 8; ++sy) {
-          for (int sx = 0; sx < 8; ++sx) {
-            const double px = x - 0.4375 + sx / 8.0, py = y - 0.4375 + sy / 8.0;
-            if ((Eigen::Vector2d(px, py) - b.centre).norm() <= radius) {
-              sum += shade(b, px, py);
-              ++inside;
-            }
-          }
-        }
-        p = (sum + (64 - inside) * p) / 64.0;
-      }
-    }
-  }
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> noise(0.0, noise_sigma);
-  cv::Mat out(size, CV_8UC3);
-  for (int y = 0; y < size.height; ++y) {
-    for (int x = 0; x < size.width; ++x) {
-      for (int c = 0; c < 3; ++c) {
-        out.at<cv::Vec3b>(y, x)[c] =
-            cv::saturate_cast<uint8_t>(f.at<cv::Vec3d>(y, x)[c] + noise(rng));
-      }
-    }
-  }
-  return out;
 }
 
 TEST(BallDetector, SubPixelCentresOnSyntheticFrames) {

@@ -242,5 +242,37 @@ TEST(BallTracker, ATrackIsConfirmedAtExactlyTheConfiguredDetection) {
   }
 }
 
+// Two balls of different colours side by side, then detected where the nearer pairing by
+// position alone would give each track the other's detection (a jolt, a blur): the classes keep
+// each track on its ball. Each track's class is the one its detections were mostly given, surer
+// the more often.
+TEST(BallTracker, ClassesKeepBallsOfDifferentColoursOnTheirTracks) {
+  TrackerOptions options;
+  options.hits_to_confirm = 1;
+  BallTracker tracker(Pool(), options);
+  const ClassEvidence red{BallClass::kRed, 0.8}, cue{BallClass::kCue, 0.9};
+  const Eigen::Vector2d a(1.0, 0.500), b(1.0, 0.530);  // track 0 red, track 1 cue
+  for (int f = 0; f < 5; ++f) ASSERT_TRUE(tracker.Update(f / 120.0, {a, b}, {red, cue}));
+  // The red ball seen to the right and up, the cue ball to the left and down: by distance, 9.5 mm
+  // less in all if track 0 took the cue ball's detection.
+  ASSERT_TRUE(tracker.Update(5 / 120.0, {{0.98, 0.512}, {1.02, 0.520}}, {cue, red}));
+  ASSERT_EQ(tracker.tracks().size(), 2u);
+  EXPECT_GT(tracker.tracks()[0].position().x(), 1.0) << "the red track took the cue ball";
+  EXPECT_LT(tracker.tracks()[1].position().x(), 1.0) << "the cue track took the red ball";
+  EXPECT_EQ(tracker.tracks()[0].ball_class, BallClass::kRed);
+  EXPECT_EQ(tracker.tracks()[1].ball_class, BallClass::kCue);
+  for (const TrackedBall& track : tracker.tracks()) {
+    EXPECT_GT(track.class_confidence, 0.75);
+    EXPECT_LE(track.class_confidence, 1.0);
+  }
+  // A track that has been given two classes is less sure of the one it keeps.
+  BallTracker doubtful(Pool(), options);
+  ASSERT_TRUE(doubtful.Update(0.0, {{1.0, 0.5}}, {red}));
+  ASSERT_TRUE(doubtful.Update(0.01, {{1.0, 0.5}}, {red}));
+  ASSERT_TRUE(doubtful.Update(0.02, {{1.0, 0.5}}, {cue}));
+  EXPECT_EQ(doubtful.tracks()[0].ball_class, BallClass::kRed);
+  EXPECT_NEAR(doubtful.tracks()[0].class_confidence, 1.6 / (1.0 + 1.6 + 0.9), 1e-12);
+}
+
 }  // namespace
 }  // namespace billiard::estimator

@@ -181,6 +181,21 @@ TEST(MessageChecks, TableStateMeaning) {
   EXPECT_NE(refused([](table_state_t& m) { m.balls[0].covariance[13] = kNaN; }), "");
   EXPECT_NE(refused([](table_state_t& m) { m.balls[0].covariance[16] = -1.0; }), "");
   EXPECT_NE(refused([](table_state_t& m) { m.balls[0].position[0] = 1e3; }), "");
+  // Classes: unknown, pool's 1-15, the cue ball and the named colours; confidences in [0, 1].
+  for (const int8_t known : {ball_state_t::CLASS_UNKNOWN, int8_t{1}, int8_t{15},
+                             ball_state_t::CLASS_CUE, ball_state_t::CLASS_RED,
+                             ball_state_t::CLASS_BLACK}) {
+    EXPECT_EQ(refused([&](table_state_t& m) { m.balls[0].ball_class = known; }), "") << +known;
+  }
+  for (const int8_t unknown : {int8_t{-1}, int8_t{17}, int8_t{19}, int8_t{27}}) {
+    EXPECT_NE(refused([&](table_state_t& m) { m.balls[0].ball_class = unknown; }).find("class"),
+              std::string::npos)
+        << +unknown;
+  }
+  EXPECT_EQ(refused([](table_state_t& m) { m.balls[0].class_confidence = 1.0f; }), "");
+  for (const float bad : {-0.1f, 1.5f, std::numeric_limits<float>::quiet_NaN()}) {
+    EXPECT_NE(refused([&](table_state_t& m) { m.balls[0].class_confidence = bad; }), "") << bad;
+  }
 }
 
 TEST(MessageChecks, ShotRequestMeaning) {
@@ -200,7 +215,19 @@ TEST(MessageChecks, ShotRequestMeaning) {
   EXPECT_NE(refused([](shot_request_t& m) { m.spin = 5; }).find("spin"), std::string::npos);
   EXPECT_NE(refused([](shot_request_t& m) { m.spin = -1; }), "");
   EXPECT_NE(refused([](shot_request_t& m) { m.request_id = -1; }), "");
-  EXPECT_NE(refused([](shot_request_t& m) { m.ball_id = -1; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.ball_id = -2; }), "");
+  // By class: a known class, not CLASS_UNKNOWN.
+  EXPECT_NE(refused([](shot_request_t& m) { m.ball_id = shot_request_t::BALL_BY_CLASS; }), "");
+  EXPECT_EQ(refused([](shot_request_t& m) {
+              m.ball_id = shot_request_t::BALL_BY_CLASS;
+              m.ball_class = ball_state_t::CLASS_CUE;
+            }),
+            "");
+  EXPECT_NE(refused([](shot_request_t& m) {
+              m.ball_id = shot_request_t::BALL_BY_CLASS;
+              m.ball_class = 30;
+            }),
+            "");
   EXPECT_NE(refused([](shot_request_t& m) { m.utime = -1; }), "");
   EXPECT_NE(refused([](shot_request_t& m) { m.target[0] = kNaN; }), "");
   EXPECT_NE(refused([](shot_request_t& m) { m.final_speed = -0.1; }), "");

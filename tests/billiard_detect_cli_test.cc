@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -165,6 +166,79 @@ TEST_F(BilliardDetect, FindsTheTwentyOneBallsOfTheRealPhotograph) {
       EXPECT_NEAR(ball["radius_px"].get<double>(), 15.0, 2.5);
     }
   }
+}
+
+// Which ball each is: the photograph's hand-read colours (snooker), and its table.
+TEST_F(BilliardDetect, SaysWhichBallEachIsAndWhereTheTableIs) {
+  const std::string args = "detect " + photo() + " --ball-set snooker --json";
+  const CommandResult r = Billiard(args);
+  ASSERT_EQ(r.status, 0) << args;
+  const auto j = OneObject(r, args);
+  std::map<std::string, int> classes;
+  for (const auto& ball : j["balls"]) {
+    ASSERT_TRUE(ball.contains("class")) << ball;
+    const double confidence = ball["class_confidence"].get<double>();
+    EXPECT_GE(confidence, 0.0);
+    EXPECT_LE(confidence, 1.0);
+    // Each hand-read ball's name is its class.
+    for (const HandBall& hand : billiard::estimator::testing::RealTablePhotoBalls()) {
+      if (std::hypot(ball["u"].get<double>() - hand.pixel.x(),
+                     ball["v"].get<double>() - hand.pixel.y()) > 4.0) {
+        continue;
+      }
+      const std::string name = std::string(hand.name) == "white"    ? "cue"
+                               : std::string(hand.name) == "orange" ? "yellow"
+                                                                    : hand.name;
+      EXPECT_EQ(ball["class"], name) << ball;
+    }
+    ++classes[ball["class"]];
+  }
+  EXPECT_EQ(classes["red"], 15);
+  EXPECT_EQ(classes["cue"], 1);
+  // The table: an overhead view, the playing surface inside the cloth's outline.
+  const auto& table = j["table"];
+  EXPECT_EQ(table["view"], "overhead");
+  ASSERT_EQ(table["corners"].size(), 4u);
+  ASSERT_EQ(table["cloth_corners"].size(), 4u);
+  EXPECT_LT(table["side_fit_rms_px"].get<double>(), 2.0);
+  EXPECT_LT(table["depth_ratio"].get<double>(), 1.2);
+  // A frame without a table is refused, with the reason, in one line.
+  cv::Mat noise(300, 400, CV_8UC3);
+  cv::RNG(3).fill(noise, cv::RNG::UNIFORM, 0, 256);
+  const std::string path = ::testing::TempDir() + "/no_table.png";
+  ASSERT_TRUE(cv::imwrite(path, noise));
+  const CommandResult none = Billiard("detect " + path + " --json", true);
+  EXPECT_EQ(none.status, 3) << none.out;
+  EXPECT_EQ(std::count(none.out.begin(), none.out.end(), '\n'), 1) << none.out;
+  EXPECT_NE(none.out.find("no table"), std::string::npos) << none.out;
+  EXPECT_EQ(none.out.find('{'), std::string::npos) << none.out;
+}
+
+// The real frames of the test data's dev set through `billiard bench-detect`: the report and
+// the results, and the bounds (overhead views 98 % recall and precision, oblique 90 %
+// and 95 %, median centre error 1.5 px) on these frames, which the detector was developed on.
+TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
+  BILLIARD_TEST_DATA_OR_SKIP(labels, "real-tables/dev/labels.json");
+  const std::string set = labels.substr(0, labels.rfind('/'));
+  const ScratchDir out;
+  const std::string args = "bench-detect --set " + set + " --out " + (out / "report");
+  const CommandResult r = Billiard(args);
+  ASSERT_EQ(r.status, 0) << args;
+  const auto j = OneObject(r, args);
+  const auto& views = j["views"];
+  EXPECT_GE(views["overhead"]["recall"].get<double>(), 0.98) << views;
+  EXPECT_GE(views["overhead"]["precision"].get<double>(), 0.97) << views;
+  EXPECT_GE(views["oblique"]["recall"].get<double>(), 0.90) << views;
+  EXPECT_GE(views["oblique"]["precision"].get<double>(), 0.95) << views;
+  EXPECT_LT(views["all"]["median_centre_error_px"].get<double>(), 1.5) << views;
+  EXPECT_EQ(views["all"]["frames"], 15);
+  for (const char* file : {"detection_report.md", "detection_results.json",
+                           "overlays/lk_halo_01.jpg"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / ("report/" + std::string(file)))) << file;
+  }
+  // Neither a set nor the synthetic suite, or both: a usage error.
+  EXPECT_EQ(Billiard("bench-detect --out " + (out / "x"), true).status, 2);
+  EXPECT_EQ(Billiard("bench-detect --set /nonexistent --out " + (out / "x"), true).status, 2);
 }
 
 TEST_F(BilliardDetect, DrawsTheDetectionsOnAnOverlay) {

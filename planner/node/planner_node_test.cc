@@ -248,6 +248,43 @@ TEST_F(PlannerNodeTest, RefusesToPlanForAMovingBall) {
   EXPECT_EQ(LogLinesContaining("ball 4 has a non-finite position"), 1);
 }
 
+// A ball of a class, as the estimator would publish it.
+ball_state_t Classed(int32_t id, double x, double y, int8_t ball_class, float confidence) {
+  ball_state_t b = Ball(id, x, y);
+  b.ball_class = ball_class;
+  b.class_confidence = confidence;
+  return b;
+}
+
+TEST_F(PlannerNodeTest, ABallAskedForByClassIsTheOneTheEstimatorIsSurestOf) {
+  PublishTable({Classed(1, 0.6, 0.5, ball_state_t::CLASS_CUE, 0.55f),
+                Classed(2, 1.6, 0.7, ball_state_t::CLASS_CUE, 0.9f),
+                Classed(3, 1.0, 0.3, 8, 0.95f), Classed(4, 0.4, 0.8, ball_state_t::CLASS_RED, 0.3f)});
+  shot_request_t q = Request(1, shot_request_t::BALL_BY_CLASS, 1.2, 0.6);
+  q.ball_class = ball_state_t::CLASS_CUE;
+  const cue_command_t cue = AskOk(q);
+  EXPECT_EQ(cue.ball_id, 2);  // the surer of the two cue balls
+  EXPECT_EQ(cue.start[0], 1.6);
+  q.request_id = 2;
+  q.ball_class = 8;
+  EXPECT_EQ(AskOk(q).ball_id, 3);
+  // Not sure enough (a red at 0.3), or none of the class: no ball state to plan from.
+  for (const int8_t missing : {ball_state_t::CLASS_RED, ball_state_t::CLASS_PINK}) {
+    q.request_id += 1;
+    q.ball_class = missing;
+    const auto none = Ask(q);
+    ASSERT_TRUE(none);
+    EXPECT_EQ(Status(*none), kNoBallState);
+    EXPECT_NE(none->reason.find("class"), std::string::npos) << none->reason;
+  }
+  // A request by class with no class is invalid.
+  q.request_id += 1;
+  q.ball_class = ball_state_t::CLASS_UNKNOWN;
+  const auto unknown = Ask(q);
+  ASSERT_TRUE(unknown);
+  EXPECT_EQ(Status(*unknown), kInvalid);
+}
+
 TEST_F(PlannerNodeTest, KeepsTheLatestStateOfEachBall) {
   PublishTable({Ball(1, 0.6, 0.5), Ball(2, 2.0, 1.0)});
   PublishTable({Ball(1, 0.7, 0.4)}, 1'500'000);  // ball 2 not seen this time
