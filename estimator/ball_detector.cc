@@ -65,6 +65,11 @@ constexpr double kSettledScaleChange = 0.05;
 // (touching balls' outlines fitted a little large, or a ball's shadow beside it) only the better
 // is kept.
 constexpr double kOverlapRadii = 1.75;
+// A frame whose cloth changes colour by more than kNoisyEdges L*a*b* units per pixel (a camera's
+// heavy sensor noise; the clean real and rendered frames are 0.2-2.5) is smoothed by a Gaussian
+// of kNoiseSmoothingPx before its balls are looked for, as Canny (1986) smooths before finding
+// edges: the noise would otherwise be edges everywhere, and weaken a ball's own.
+constexpr double kNoisyEdges = 4.0, kNoiseSmoothingPx = 1.5;
 // Before a table is learnt, RefineAt takes the cloth's colour as the median of kRingSamples
 // pixels on a circle of kRingRadii radii around the prediction, and its edge noise as
 // kUnknownEdgeNoise L*a*b* units per pixel (a clean 8-bit frame's: a level of L* is 0.4).
@@ -258,6 +263,7 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
   table_.reset();
   scale_.reset();
   cloth_ = {};
+  smoothing_px_ = 0;
   TableSearch search = FindTable(bgr);
   if (!search.table) {
     failure_ = search.reason;
@@ -265,11 +271,15 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
   }
   table_ = std::move(search.table);
   cloth_ = LearnClothModel(bgr, *table_);
+  unsmoothed_edge_noise_ = cloth_.edge_noise;
+  smoothing_px_ = cloth_.edge_noise > kNoisyEdges ? kNoiseSmoothingPx : 0.0;
+  const cv::Mat searched = Smoothed(bgr);
+  if (smoothing_px_ > 0) cloth_ = LearnClothModel(searched, *table_);
   scale_settled_ = options_.ball_radius_px > 0;
   if (scale_settled_) {
     scale_ = BallScale{table_->inverse_depth, options_.ball_radius_px};
   } else {
-    scale_ = ScaleFromOutlines(*table_, BlobOutlines(bgr, *table_, cloth_));
+    scale_ = ScaleFromOutlines(*table_, BlobOutlines(searched, *table_, cloth_));
     if (!scale_) scale_ = ScaleFromTable(*table_, options_.ball_to_table_width);
   }
   failure_.clear();
@@ -277,8 +287,9 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
 }
 
 std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
-  const cv::Mat bgr = AsBgr(image);
-  if ((bgr.size() != frame_size_ || !table_) && !LearnTable(bgr)) return {};
+  const cv::Mat raw = AsBgr(image);
+  if ((raw.size() != frame_size_ || !table_) && !LearnTable(raw)) return {};
+  const cv::Mat bgr = Smoothed(raw);
   std::vector<BallDetection> balls = FindBalls(bgr);
   if (!scale_settled_) SettleScale(bgr, &balls);
   const std::vector<BallIdentity> identities = IdentifyBalls(bgr, balls, options_.ball_set);
@@ -346,12 +357,21 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
   return balls;
 }
 
+cv::Mat BallDetector::Smoothed(const cv::Mat& bgr) const {
+  if (smoothing_px_ <= 0) return bgr;
+  cv::Mat smoothed;
+  cv::GaussianBlur(bgr, smoothed, {0, 0}, smoothing_px_);
+  return smoothed;
+}
+
 std::optional<BallDetection> BallDetector::RefineAt(const cv::Mat& image,
                                                     const Eigen::Vector2d& predicted,
                                                     double radius_px) const {
   const cv::Mat bgr = AsBgr(image);
   cv::Vec3f cloth;
-  double edge_noise = cloth_.edge_noise;
+  // The frame is not smoothed here: the outline is looked for only near the prediction, where a
+  // noisy camera's edges compete less, and smoothing every frame would cost the tracker its speed.
+  double edge_noise = unsmoothed_edge_noise_;
   if (!cloth_.empty()) {
     cloth = cloth_.ColourAt(predicted);
   } else {

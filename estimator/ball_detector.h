@@ -116,12 +116,16 @@ class BallDetector {
   std::vector<BallDetection> FindBalls(const cv::Mat& bgr) const;
   // Settles a measured scale from the balls found, finding them again if it changed.
   void SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* balls);
+  // The frame as the balls are looked for in it: smoothed a little if the camera is noisy.
+  cv::Mat Smoothed(const cv::Mat& bgr) const;
 
   DetectorOptions options_;
   std::optional<TableRegion> table_;
   std::optional<BallScale> scale_;
   bool scale_settled_ = false;
-  ClothModel cloth_;
+  ClothModel cloth_;  // of the frame as searched
+  double unsmoothed_edge_noise_ = 0;
+  double smoothing_px_ = 0;
   cv::Size frame_size_;
   std::string failure_;
 };
