@@ -23,7 +23,7 @@ TEST(DetectionOverlay, DrawsEachBallOnItsOutlineAndNothingElse) {
   // Far from both: the frame as it was, and the frame itself untouched.
   EXPECT_EQ(overlay.at<cv::Vec3b>(180, 150), frame.at<cv::Vec3b>(180, 150));
   EXPECT_EQ(
-      cv::countNonZero(frame.reshape(1) != 20 & frame.reshape(1) != 90 & frame.reshape(1) != 30),
+      cv::countNonZero((frame.reshape(1) != 20) & (frame.reshape(1) != 90) & (frame.reshape(1) != 30)),
       0);
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "estimator/lab_image.h"
+#include "estimator/table_edges.h"
 
 namespace billiard::estimator {
 
@@ -46,26 +47,9 @@ constexpr double kSideBand = 0.02;
 constexpr double kSideEnd = 0.12;
 constexpr double kRansacInlierPx = 1.5;
 constexpr int kRansacTries = 200;
-// The table's long side over its short side.
-constexpr double kTableAspect = 2.0;
-// The noses are looked for at kNoseSamples places on each half of a side, from kNoseFrom of its
-// length from a corner to kNoseMiddle from its middle (the pockets are at both), from
-// kOutlineClearancePx inside the outline (the cloth against the rail is no nose); an edge is a
-// colour change of at least kMinNoseEdge L*a*b* units per pixel and kNoseEdgeNoises times the
-// median over the side's cushion band (the cloth's weave and the camera's noise). Of up to kNoseLines lines
-// through the edges of at least kMinNosePlaces of the places on each half of the side, the nose
-// is the best supported, or the innermost of those nearly as well (kNoseOfBest of its places): an
-// old cloth's worn track along the cushion is a line too, fainter, and more broken.
-constexpr int kNoseSamples = 24;
-constexpr double kNoseFrom = 0.12, kNoseMiddle = 0.08;
-constexpr int kOutlineClearancePx = 3;
 // The outline found at the search resolution is refined within kOutlineSearchPx pixels of that
 // resolution of it (its barrier and opening leave it a pixel or two inside).
 constexpr double kOutlineSearchPx = 3.0;
-constexpr double kMinNoseEdge = 2.0, kNoseEdgeNoises = 4.0;
-constexpr int kNoseLines = 3;
-constexpr double kMinNosePlaces = 0.3;
-constexpr double kNoseOfBest = 0.95;
 // A camera's focal length is between kMinFocal and kMaxFocal image widths (a field of view from
 // 118 to 19 degrees); the two of Zhang's constraints agree within kFocalAgreement for the right
 // assignment of the long sides (an overhead view makes them 0 / 0: no camera, no answer).
@@ -268,12 +252,6 @@ std::optional<Line> FitSide(const std::vector<cv::Point>& outline, const cv::Poi
   return line;
 }
 
-// The table's corners in the order ImageFromTable maps them.
-std::array<Eigen::Vector2d, 4> TableCorners(bool long_first) {
-  const double a = kTableAspect;
-  return long_first ? std::array<Eigen::Vector2d, 4>{{{0, 0}, {a, 0}, {a, 1}, {0, 1}}}
-                    : std::array<Eigen::Vector2d, 4>{{{0, 0}, {0, 1}, {a, 1}, {a, 0}}};
-}
 
 // The homography from the table (long side along x when `long_first`, else along y first and
 // then turned so that x is the long side) to the image of `corners`.
@@ -291,213 +269,6 @@ Eigen::Matrix3d ImageFromTable(const std::array<Eigen::Vector2d, 4>& corners, bo
     for (int j = 0; j < 3; ++j) m(i, j) = h.at<double>(i, j);
   }
   return m;
-}
-
-// Bilinear BGR colours of a frame at `points` [px] in float L*a*b*; points outside the frame get
-// NaN.
-std::vector<cv::Vec3f> LabAt(const cv::Mat& bgr, const std::vector<Eigen::Vector2d>& points) {
-  cv::Mat samples(static_cast<int>(points.size()), 1, CV_32FC3);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double x = points[i].x(), y = points[i].y();
-    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-    if (x0 < 0 || y0 < 0 || x0 + 1 >= bgr.cols || y0 + 1 >= bgr.rows) {
-      samples.at<cv::Vec3f>(static_cast<int>(i)) = cv::Vec3f(NAN, NAN, NAN);
-      continue;
-    }
-    const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
-    const auto at = [&](int yy, int xx) {
-      const cv::Vec3b p = bgr.at<cv::Vec3b>(yy, xx);
-      return cv::Vec3f(p[0], p[1], p[2]) / 255.0f;
-    };
-    samples.at<cv::Vec3f>(static_cast<int>(i)) =
-        (1 - fy) * ((1 - fx) * at(y0, x0) + fx * at(y0, x0 + 1)) +
-        fy * ((1 - fx) * at(y0 + 1, x0) + fx * at(y0 + 1, x0 + 1));
-  }
-  cv::Mat lab;
-  cv::cvtColor(samples, lab, cv::COLOR_BGR2Lab);
-  return std::vector<cv::Vec3f>(lab.begin<cv::Vec3f>(), lab.end<cv::Vec3f>());
-}
-
-// The image line of side `side` (table corners side, side + 1) of `image_from_table`.
-Eigen::Vector3d SideLine(const Eigen::Matrix3d& image_from_table, bool long_first, int side) {
-  const auto table = TableCorners(long_first);
-  return (image_from_table * table[side].homogeneous())
-      .cross(image_from_table * table[(side + 1) % 4].homogeneous());
-}
-
-// A straight edge along a side: its homogeneous image line, at how many places along the side it
-// was met, and its mean distance inward from the side's line [px] (negative: outward).
-struct EdgeLine {
-  Eigen::Vector3d line;
-  int places = 0;
-  double inward_px = 0;
-  double rms_px = 0;  // of its edges from it
-};
-
-// The straight edges along side `side` (table corners side, side + 1, as `image_from_table` maps
-// them) between `from` and `to` table widths inward of it (negative: outward), best supported
-// first: at places along the side, the edges (local maxima of the colour's rate of change, well
-// above the band's median, at least `clearance_px` from the side's line) met going inward; the
-// lines through the edges of many places on both halves of the side (RANSAC, seeded, then least
-// squares), each taking its edges.
-std::vector<EdgeLine> EdgeLinesAlong(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table,
-                                     bool long_first, int side, double from, double to,
-                                     double clearance_px) {
-  const auto table = TableCorners(long_first);
-  const Eigen::Vector2d a = table[side], b = table[(side + 1) % 4];
-  const Eigen::Vector2d centre(0.5 * kTableAspect, 0.5);
-  Eigen::Vector2d inward(-(b - a).y(), (b - a).x());
-  inward.normalize();
-  if (inward.dot(centre - a) < 0) inward = -inward;
-  const auto image = [&](double t, double u) {
-    return (image_from_table * (a + t * (b - a) + u * inward).homogeneous()).hnormalized();
-  };
-  Eigen::Vector3d side_line = image(0, 0).homogeneous().cross(image(1, 0).homogeneous());
-  side_line /= side_line.head<2>().norm();
-  const double towards_centre = side_line.dot(image(0.5, 0.1).homogeneous()) > 0 ? 1.0 : -1.0;
-  // Offsets a pixel apart where the side is nearest the camera (the largest scale along it).
-  double px_per_unit = 0;
-  for (const double t : {0.0, 0.5, 1.0}) {
-    px_per_unit = std::max(px_per_unit, (image(t, 0.01) - image(t, 0)).norm() / 0.01);
-  }
-  const double step = 1.0 / std::max(1.0, px_per_unit);
-  const int offsets = static_cast<int>((to - from) / step) + 1;
-  std::vector<double> along;
-  for (int k = 0; k < kNoseSamples; ++k) {
-    const double t = kNoseFrom + (k + 0.5) * (0.5 - kNoseFrom - kNoseMiddle) / kNoseSamples;
-    along.push_back(t);
-    along.push_back(1.0 - t);
-  }
-  std::vector<Eigen::Vector2d> points;
-  for (const double t : along) {
-    for (int i = 0; i <= offsets; ++i) points.push_back(image(t, from + i * step));
-  }
-  const std::vector<cv::Vec3f> lab = LabAt(bgr, points);
-  // The colour's rate of change inward at each place and offset.
-  std::vector<double> rate(along.size() * offsets);
-  for (std::size_t k = 0; k < along.size(); ++k) {
-    const std::size_t base = k * (offsets + 1);
-    for (int i = 0; i < offsets; ++i) {
-      const cv::Vec3f d = lab[base + i + 1] - lab[base + i];
-      const double pixels = (points[base + i + 1] - points[base + i]).norm();
-      const double r = std::sqrt(d.dot(d)) / std::max(pixels, 1e-6);
-      rate[k * offsets + i] = std::isfinite(r) ? r : 0.0;
-    }
-  }
-  std::vector<double> sorted = rate;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double min_edge = std::max(kMinNoseEdge, kNoseEdgeNoises * sorted[sorted.size() / 2]);
-  // The edges along each place, to a fraction of a sample (the parabola through the maximum and
-  // its neighbours): (image point, place).
-  std::vector<std::pair<Eigen::Vector2d, int>> edges;
-  for (std::size_t k = 0; k < along.size(); ++k) {
-    const std::size_t base = k * (offsets + 1);
-    const double* r = &rate[k * offsets];
-    for (int i = 1; i + 1 < offsets; ++i) {
-      if (r[i] < min_edge || r[i] < r[i - 1] || r[i] <= r[i + 1]) continue;
-      const double curvature = r[i - 1] - 2 * r[i] + r[i + 1];
-      const double offset =
-          curvature < 0 ? std::clamp(0.5 * (r[i - 1] - r[i + 1]) / curvature, -1.0, 1.0) : 0.0;
-      const Eigen::Vector2d middle = 0.5 * (points[base + i] + points[base + i + 1]);
-      const Eigen::Vector2d next = 0.5 * (points[base + i + 1] + points[base + i + 2]);
-      const Eigen::Vector2d edge = middle + offset * (next - middle);
-      if (std::abs(side_line.dot(edge.homogeneous())) < clearance_px) continue;
-      edges.push_back({edge, static_cast<int>(k)});
-    }
-  }
-  std::vector<EdgeLine> lines;
-  std::vector<bool> taken(edges.size(), false);
-  std::mt19937 random(side + 1);
-  for (int found = 0; found < kNoseLines && edges.size() >= 2; ++found) {
-    std::uniform_int_distribution<std::size_t> pick(0, edges.size() - 1);
-    int best_places = 0;
-    std::vector<std::size_t> best_inliers;
-    for (int attempt = 0; attempt < kRansacTries; ++attempt) {
-      const std::size_t i = pick(random), j = pick(random);
-      if (taken[i] || taken[j] || edges[i].second == edges[j].second) continue;
-      Eigen::Vector3d line = edges[i].first.homogeneous().cross(edges[j].first.homogeneous());
-      line /= line.head<2>().norm();
-      std::vector<bool> place_seen(along.size(), false);
-      std::vector<std::size_t> inliers;
-      for (std::size_t e = 0; e < edges.size(); ++e) {
-        if (taken[e] || std::abs(line.dot(edges[e].first.homogeneous())) > kRansacInlierPx) continue;
-        inliers.push_back(e);
-        place_seen[edges[e].second] = true;
-      }
-      // Places alternate between the side's halves: a cushion runs along both, a row of balls
-      // against it along one at most.
-      int halves[2] = {0, 0};
-      for (std::size_t k = 0; k < along.size(); ++k) halves[k % 2] += place_seen[k];
-      const int places = 2 * std::min(halves[0], halves[1]);
-      if (places > best_places) {
-        best_places = places;
-        best_inliers = inliers;
-      }
-    }
-    if (best_places < kMinNosePlaces * static_cast<double>(along.size())) break;
-    std::vector<cv::Point2f> inlier_points;
-    EdgeLine edge_line;
-    edge_line.places = best_places;
-    for (const std::size_t e : best_inliers) {
-      taken[e] = true;
-      inlier_points.emplace_back(static_cast<float>(edges[e].first.x()),
-                                 static_cast<float>(edges[e].first.y()));
-      edge_line.inward_px += towards_centre * side_line.dot(edges[e].first.homogeneous());
-    }
-    edge_line.inward_px /= best_inliers.size();
-    cv::Vec4f fitted;
-    cv::fitLine(inlier_points, fitted, cv::DIST_L2, 0, 0.01, 0.01);
-    edge_line.line = {-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]};
-    double squares = 0;
-    for (const auto& p : inlier_points) {
-      squares += std::pow(edge_line.line.dot(Eigen::Vector3d(p.x, p.y, 1.0)), 2);
-    }
-    edge_line.rms_px = std::sqrt(squares / inlier_points.size());
-    lines.push_back(edge_line);
-  }
-  return lines;
-}
-
-// The cloth's outline along a side, to a fraction of a pixel: the best supported straight edge
-// within `search_px` of the side found at the search resolution, or that side (`rough`, in
-// full-resolution pixels) when there is none.
-Line ClothSide(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table, bool long_first,
-               int side, double search_px, const Line& rough) {
-  // The search's reach in table widths, where the side is farthest (foreshortened most).
-  const auto table = TableCorners(long_first);
-  const Eigen::Vector2d a = table[side], b = table[(side + 1) % 4];
-  Eigen::Vector2d inward(-(b - a).y(), (b - a).x());
-  inward.normalize();
-  double px_per_unit = HUGE_VAL;
-  for (const double t : {0.0, 0.5, 1.0}) {
-    const Eigen::Vector2d p = a + t * (b - a);
-    const auto image = [&](const Eigen::Vector2d& q) {
-      return (image_from_table * q.homogeneous()).hnormalized();
-    };
-    px_per_unit = std::min(px_per_unit, (image(p + 0.01 * inward) - image(p)).norm() / 0.01);
-  }
-  const double reach = search_px / std::max(1e-9, px_per_unit);
-  const auto lines =
-      EdgeLinesAlong(bgr, image_from_table, long_first, side, -reach, reach, 0.0);
-  if (lines.empty()) return rough;
-  return {lines.front().line, lines.front().rms_px, lines.front().places};
-}
-
-// The nose of the cushion along side `side`, as the header says: of the straight edges inward of
-// the cloth's outline, the best supported, or the innermost nearly as well supported; the
-// outline itself when there is none.
-Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table,
-                         bool long_first, int side) {
-  const auto lines = EdgeLinesAlong(bgr, image_from_table, long_first, side, 0.0,
-                                    kMaxCushionWidth, kOutlineClearancePx);
-  if (lines.empty()) return SideLine(image_from_table, long_first, side);
-  const EdgeLine* nose = &lines.front();
-  for (const EdgeLine& l : lines) {
-    if (l.places >= kNoseOfBest * lines.front().places && l.inward_px > nose->inward_px) {
-      nose = &l;
-    }
-  }
-  return nose->line;
 }
 
 // The squared focal lengths of the pinhole (square pixels, principal point at the image centre)
@@ -699,18 +470,20 @@ TableSearch FindTable(const cv::Mat& bgr) {
   double squares = 0;
   int points = 0;
   for (int i = 0; i < 4; ++i) {
-    const Line side =
-        ClothSide(bgr, rough_from_table, long_first, i, kOutlineSearchPx / scale, sides[i]);
-    lines[i] = side.coefficients;
-    squares += side.rms * side.rms * side.points;
-    points += side.points;
+    // Where no straight edge is near it, the side found at the search resolution stands.
+    const EdgeLine side = ClothSide(bgr, rough_from_table, long_first, i, kOutlineSearchPx / scale)
+                              .value_or(EdgeLine{sides[i].coefficients, sides[i].points, 0.0,
+                                                 sides[i].rms});
+    lines[i] = side.line;
+    squares += side.rms_px * side.rms_px * side.places;
+    points += side.places;
   }
   table.side_fit_rms_px = std::sqrt(squares / std::max(1, points));
   if (!Intersections(lines, &table.cloth_corners)) {
     return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
   }
   const Eigen::Matrix3d cloth_from_table = ImageFromTable(table.cloth_corners, long_first);
-  for (int i = 0; i < 4; ++i) lines[i] = NoseLine(bgr, cloth_from_table, long_first, i);
+  for (int i = 0; i < 4; ++i) lines[i] = NoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet"};
   }
