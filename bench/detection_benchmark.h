@@ -45,7 +45,10 @@ struct FrameScore {
   std::string failure;  // why the detector found no table or no balls' scale, else ""
   int labels = 0, found = 0, false_detections = 0;
   std::vector<double> centre_errors;  // [px], of the matched labels
-  double detect_ms = 0;
+  cv::Size size;
+  // On one core: the first frame (the table, the cloth and the scale learnt, then the balls) and
+  // a next frame of the same camera (the balls only; the median of a few), wall time [ms].
+  double first_frame_ms = 0, next_frame_ms = 0;
   std::vector<Eigen::Vector2d> missed;  // labels no detection matched
   std::vector<estimator::BallDetection> detections;
   std::vector<bool> detection_matched;  // per detection: a label's (or an ignored ball's)
@@ -71,7 +74,7 @@ struct DetectionBenchmarkResult {
 };
 
 // The detector on every frame: its image, or the file `set`/`file` read with
-// options.read_image. `set` names the set in the report.
+// options.read_image, with OpenCV on one thread. `set` names the set in the report.
 DetectionBenchmarkResult RunDetectionBenchmark(const std::string& set,
                                                const std::vector<LabelledFrame>& frames,
                                                const DetectionBenchmarkOptions& options);
@@ -83,7 +86,8 @@ cv::Mat ScoreOverlay(const cv::Mat& image, const LabelledFrame& frame, const Fra
 // recall, precision, median centre error over a group of frames.
 struct Totals {
   int frames = 0, labels = 0, found = 0, false_detections = 0;
-  double recall = 0, precision = 0, median_error_px = 0, median_detect_ms = 0;
+  double recall = 0, precision = 0, median_error_px = 0;
+  double median_first_frame_ms = 0, median_next_frame_ms = 0;
 };
 Totals Total(const std::vector<const FrameScore*>& frames);
 

@@ -56,7 +56,8 @@ double Look(const cv::Mat& bgr, const LabImage& lab, const BallOutline& outline,
     const double dy = y - outline.centre.y();
     const auto* row = bgr.ptr<cv::Vec3b>(y);
     for (int x = rect.x; x < rect.x + rect.width; ++x) {
-      const double rho = std::hypot(x - outline.centre.x(), dy) / outline.radius;
+      const double dx = x - outline.centre.x();
+      const double rho = std::sqrt(dx * dx + dy * dy) / outline.radius;
       if (rho > kShineRadii) continue;
       const float l = lab.Pixel(x, y)[0];
       lightness.push_back(l);
@@ -76,10 +77,11 @@ double Look(const cv::Mat& bgr, const LabImage& lab, const BallOutline& outline,
   }
   if (not_cloth.empty() || core_n == 0 || rim_n == 0) return 0.0;
   double look = Ramp(Median(not_cloth), kNotClothFrom, kNotClothWidth);
-  std::sort(lightness.begin(), lightness.end());
-  const double shine =
-      lightness[static_cast<std::size_t>(kShinePercentile * (lightness.size() - 1))] -
-      lightness[lightness.size() / 2];
+  const auto shine_rank = lightness.begin() + static_cast<std::ptrdiff_t>(
+                                                  kShinePercentile * (lightness.size() - 1));
+  std::nth_element(lightness.begin(), shine_rank, lightness.end());
+  const double bright = *shine_rank;
+  const double shine = bright - Median(lightness);
   look = std::max(look, Ramp(shine, kShineFrom, kShineWidth));
   if (Median(brightness) > 1.0 && core > 0) {
     look = std::max(look, Ramp(kSphereRimToCore - (rim / rim_n) / (core / core_n), 0.0,
@@ -104,7 +106,9 @@ BallEvidence EvidenceForBall(const cv::Mat& bgr, const LabImage& lab, const Ball
   const double q = (outline.radius / expected_radius - 1.0) / kSizeTolerance;
   evidence.size = std::clamp(1.0 - q * q, 0.0, 1.0);
   evidence.votes = Ramp(vote_support, kVotesFrom, kVotesWidth);
-  evidence.look = Look(bgr, lab, outline, cloth);
+  // The look is the costliest to measure, and moot where the rest already rule a ball out.
+  evidence.look =
+      evidence.outline * evidence.size * evidence.votes > 0 ? Look(bgr, lab, outline, cloth) : 0.0;
   return evidence;
 }
 

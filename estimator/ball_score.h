@@ -18,7 +18,7 @@
 //         (the rim band's mean L* below 0.97 of the core's, full at 0.87): a white ball on a pale
 //         cloth, where a disc of projected light is flat.
 // The score is the square root of the terms' product: the default threshold, 0.5, asks for a
-// product of a quarter.
+// product of a quarter. The look is measured only where the other three are not 0.
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -145,7 +145,7 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
       (table.Bounds() + cv::Size(2 * margin, 2 * margin) - cv::Point(margin, margin)) &
       cv::Rect(0, 0, bgr.cols, bgr.rows);
   if (region.width < 8 || region.height < 8) return peaks;
-  const int factor = std::max(1, static_cast<int>(smallest / kVoteRadiusPx));
+  const double factor = std::max(1.0, smallest / kVoteRadiusPx);
   cv::Mat small;
   cv::resize(bgr(region), small, {}, 1.0 / factor, 1.0 / factor, cv::INTER_AREA);
   cv::cvtColor(small, small, cv::COLOR_BGR2Lab);
