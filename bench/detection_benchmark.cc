@@ -142,9 +142,9 @@ FrameScore ScoreFrame(const LabelledFrame& frame,
   }
   for (std::size_t i = 0; i < detections.size(); ++i) {
     if (score.detection_matched[i]) continue;
-    const bool ignored = std::any_of(frame.ignored.begin(), frame.ignored.end(), [&](const auto& p) {
-      return (detections[i].pixel - p).norm() < gate;
-    });
+    const bool ignored =
+        std::any_of(frame.ignored.begin(), frame.ignored.end(),
+                    [&](const auto& p) { return (detections[i].pixel - p).norm() < gate; });
     if (ignored) {
       score.detection_matched[i] = true;
     } else {
@@ -188,12 +188,11 @@ DetectionBenchmarkResult RunDetectionBenchmark(const std::string& set,
     }
     options.progress(frame.file + ": " + std::to_string(score.found) + " of " +
                      std::to_string(score.labels) + " found, " +
-                     std::to_string(score.false_detections) + " false, " + Fixed(first_ms, 1) + " ms" +
-                     (score.failure.empty() ? "" : " (" + score.failure + ")"));
+                     std::to_string(score.false_detections) + " false, " + Fixed(first_ms, 1) +
+                     " ms" + (score.failure.empty() ? "" : " (" + score.failure + ")"));
     result.frames.push_back(std::move(score));
   }
-  result.wall_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
@@ -213,12 +212,13 @@ cv::Mat ScoreOverlay(const cv::Mat& image, const LabelledFrame& frame, const Fra
   }
   for (std::size_t i = 0; i < score.detections.size(); ++i) {
     const auto& d = score.detections[i];
-    const cv::Scalar colour = score.detection_matched[i] ? cv::Scalar(0, 255, 0)
-                                                          : cv::Scalar(0, 0, 255);
+    const cv::Scalar colour =
+        score.detection_matched[i] ? cv::Scalar(0, 255, 0) : cv::Scalar(0, 0, 255);
     cv::circle(out, point(d.pixel), static_cast<int>(std::lround(d.radius_px)), colour, thickness);
     cv::drawMarker(out, point(d.pixel), colour, cv::MARKER_CROSS, 5, 1);
   }
-  for (const auto& p : frame.balls) cv::drawMarker(out, point(p), {255, 0, 255}, cv::MARKER_TILTED_CROSS, 5, 1);
+  for (const auto& p : frame.balls)
+    cv::drawMarker(out, point(p), {255, 0, 255}, cv::MARKER_TILTED_CROSS, 5, 1);
   return out;
 }
 
@@ -315,18 +315,16 @@ void WriteDetectionReport(const DetectionBenchmarkResult& result, const std::str
     md << "| " << view << " | " << t.frames << " | " << t.labels << " | " << t.found << " | "
        << t.false_detections << " | " << Fixed(100 * t.recall, 1) << " % | "
        << Fixed(100 * t.precision, 1) << " % | " << Fixed(t.median_error_px, 2) << " | "
-       << Fixed(t.median_first_frame_ms, 1) << " / " << Fixed(t.median_next_frame_ms, 1)
-       << " |\n";
+       << Fixed(t.median_first_frame_ms, 1) << " / " << Fixed(t.median_next_frame_ms, 1) << " |\n";
   }
   md << "\n| frame | size | view (found) | labels | found | false | median error [px] | time, "
         "first / next frame [ms] | note |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const FrameScore& f : result.frames) {
     md << "| " << f.file << " | " << f.size.width << "x" << f.size.height << " | " << f.view
-       << (f.table_view.empty() || f.table_view == f.view ? "" : " (" + f.table_view + ")")
-       << " | " << f.labels << " | " << f.found << " | " << f.false_detections << " | "
+       << (f.table_view.empty() || f.table_view == f.view ? "" : " (" + f.table_view + ")") << " | "
+       << f.labels << " | " << f.found << " | " << f.false_detections << " | "
        << Fixed(Median(f.centre_errors), 2) << " | " << Fixed(f.first_frame_ms, 1) << " / "
-       << Fixed(f.next_frame_ms, 1) << " | "
-       << f.failure << " |\n";
+       << Fixed(f.next_frame_ms, 1) << " | " << f.failure << " |\n";
   }
   if (!md) throw std::runtime_error("writing the detection report failed");
 }

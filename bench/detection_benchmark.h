@@ -13,9 +13,9 @@
 
 #include <Eigen/Core>
 #include <functional>
-#include <optional>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,13 +24,13 @@
 namespace billiard::bench {
 
 struct LabelledFrame {
-  std::string file;                        // relative to the set's directory
-  std::vector<Eigen::Vector2d> balls;      // must be found [px]
-  std::vector<Eigen::Vector2d> ignored;    // in a pocket, in hand, hidden [px]
-  double radius_px = 0;                    // typical ball radius [px]
-  std::string view;                        // "overhead", "oblique" or "" (not labelled)
+  std::string file;                      // relative to the set's directory
+  std::vector<Eigen::Vector2d> balls;    // must be found [px]
+  std::vector<Eigen::Vector2d> ignored;  // in a pocket, in hand, hidden [px]
+  double radius_px = 0;                  // typical ball radius [px]
+  std::string view;                      // "overhead", "oblique" or "" (not labelled)
   std::string source;
-  cv::Mat image;                           // the frame, when not read from `file`
+  cv::Mat image;  // the frame, when not read from `file`
 };
 
 // The frames of a labelled set, in the order of labels.json. Throws std::invalid_argument with a

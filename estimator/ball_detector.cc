@@ -185,7 +185,8 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
   cv::Mat small;
   cv::resize(bgr(region), small, {}, 1.0 / factor, 1.0 / factor, cv::INTER_AREA);
   const auto to_full = [&](double x, double y) {
-    return Eigen::Vector2d((x + 0.5) * factor - 0.5 + region.x, (y + 0.5) * factor - 0.5 + region.y);
+    return Eigen::Vector2d((x + 0.5) * factor - 0.5 + region.x,
+                           (y + 0.5) * factor - 0.5 + region.y);
   };
   cv::Mat surface = cv::Mat::zeros(small.size(), CV_8U);
   std::vector<cv::Point> corners;
@@ -198,7 +199,8 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
   // are an affine function of the pixel's).
   const double per_cell = factor / cloth.cell;
   const cv::Matx23d cell_from_small(per_cell, 0, (region.x + 0.5 * factor - 0.5) / cloth.cell - 0.5,
-                                    0, per_cell, (region.y + 0.5 * factor - 0.5) / cloth.cell - 0.5);
+                                    0, per_cell,
+                                    (region.y + 0.5 * factor - 0.5) / cloth.cell - 0.5);
   cv::Mat colour;
   cv::warpAffine(cloth.colour, colour, cell_from_small, small.size(),
                  cv::INTER_LINEAR | cv::WARP_INVERSE_MAP, cv::BORDER_REPLICATE);
@@ -303,7 +305,8 @@ std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
 void BallDetector::SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* balls) {
   std::vector<BallOutline> outlines;
   for (const BallDetection& ball : *balls) {
-    if (ball.score >= kSettlingScore) outlines.push_back({ball.pixel, ball.radius_px, kOutlineRays});
+    if (ball.score >= kSettlingScore)
+      outlines.push_back({ball.pixel, ball.radius_px, kOutlineRays});
   }
   const std::optional<BallScale> settled = ScaleFromOutlines(*table_, outlines);
   if (!settled) return;  // nothing sure yet: an empty table so far
@@ -319,8 +322,8 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
   double largest = 0;
   for (const auto& c : table_->cloth_corners) largest = std::max(largest, scale_->RadiusAt(c));
   const int margin = static_cast<int>(std::ceil(kWindowRadiiAroundTable * largest));
-  const LabImage lab(bgr, table_->Bounds() + cv::Size(2 * margin, 2 * margin) -
-                              cv::Point(margin, margin));
+  const LabImage lab(
+      bgr, table_->Bounds() + cv::Size(2 * margin, 2 * margin) - cv::Point(margin, margin));
   const std::vector<CircleVote> peaks = VoteForCircles(bgr, *table_, *scale_, kMinVoteSupport);
   std::vector<std::pair<BallDetection, double>> outlined;  // with their vote support
   for (std::size_t i = 0; i < peaks.size() && i < kMaxCandidates; ++i) {
@@ -331,13 +334,12 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
              (o.first.pixel - peak.pixel).norm() < kExplainedRadii * radius;
     });
     if (explained) continue;
-    const auto outline =
-        FitBallOutline(lab, peak.pixel, radius, MinEdge(cloth_.edge_noise));
+    const auto outline = FitBallOutline(lab, peak.pixel, radius, MinEdge(cloth_.edge_noise));
     if (!outline || !OnTable(*table_, outline->centre, radius)) continue;
-    const double score = EvidenceForBall(bgr, lab, *outline, radius,
-                                         {cloth_.ColourAt(outline->centre), cloth_.noise},
-                                         peak.support)
-                             .Score();
+    const double score =
+        EvidenceForBall(bgr, lab, *outline, radius,
+                        {cloth_.ColourAt(outline->centre), cloth_.noise}, peak.support)
+            .Score();
     outlined.push_back({{outline->centre, outline->radius, score}, peak.support});
   }
   // Best first; among outlines of one ball (from a peak at its centre, or between it and its

@@ -42,11 +42,10 @@ double Median(std::vector<float>& values) {
 double Look(const cv::Mat& bgr, const LabImage& lab, const BallOutline& outline,
             const ClothColour& cloth) {
   const double reach = kShineRadii * outline.radius;
-  const cv::Rect rect =
-      cv::Rect(static_cast<int>(std::floor(outline.centre.x() - reach)),
-               static_cast<int>(std::floor(outline.centre.y() - reach)),
-               static_cast<int>(2 * reach) + 2, static_cast<int>(2 * reach) + 2) &
-      lab.region() & cv::Rect(0, 0, bgr.cols, bgr.rows);
+  const cv::Rect rect = cv::Rect(static_cast<int>(std::floor(outline.centre.x() - reach)),
+                                 static_cast<int>(std::floor(outline.centre.y() - reach)),
+                                 static_cast<int>(2 * reach) + 2, static_cast<int>(2 * reach) + 2) &
+                        lab.region() & cv::Rect(0, 0, bgr.cols, bgr.rows);
   if (rect.empty()) return 0.0;
   const LocalCloth local = MakeLocalCloth(cloth.bgr, cloth.noise);
   std::vector<float> not_cloth, brightness, lightness;
@@ -77,15 +76,15 @@ double Look(const cv::Mat& bgr, const LabImage& lab, const BallOutline& outline,
   }
   if (not_cloth.empty() || core_n == 0 || rim_n == 0) return 0.0;
   double look = Ramp(Median(not_cloth), kNotClothFrom, kNotClothWidth);
-  const auto shine_rank = lightness.begin() + static_cast<std::ptrdiff_t>(
-                                                  kShinePercentile * (lightness.size() - 1));
+  const auto shine_rank =
+      lightness.begin() + static_cast<std::ptrdiff_t>(kShinePercentile * (lightness.size() - 1));
   std::nth_element(lightness.begin(), shine_rank, lightness.end());
   const double bright = *shine_rank;
   const double shine = bright - Median(lightness);
   look = std::max(look, Ramp(shine, kShineFrom, kShineWidth));
   if (Median(brightness) > 1.0 && core > 0) {
-    look = std::max(look, Ramp(kSphereRimToCore - (rim / rim_n) / (core / core_n), 0.0,
-                               kSphereWidth));
+    look =
+        std::max(look, Ramp(kSphereRimToCore - (rim / rim_n) / (core / core_n), 0.0, kSphereWidth));
   }
   return look;
 }
@@ -98,11 +97,10 @@ BallEvidence EvidenceForBall(const cv::Mat& bgr, const LabImage& lab, const Ball
                              double expected_radius, const ClothColour& cloth,
                              double vote_support) {
   BallEvidence evidence;
-  evidence.outline =
-      outline.largest_gap < kMaxGap
-          ? Ramp(static_cast<double>(outline.supporting_rays) / kOutlineRays, kOutlineFrom,
-                 kOutlineWidth)
-          : 0.0;
+  evidence.outline = outline.largest_gap < kMaxGap
+                         ? Ramp(static_cast<double>(outline.supporting_rays) / kOutlineRays,
+                                kOutlineFrom, kOutlineWidth)
+                         : 0.0;
   const double q = (outline.radius / expected_radius - 1.0) / kSizeTolerance;
   evidence.size = std::clamp(1.0 - q * q, 0.0, 1.0);
   evidence.votes = Ramp(vote_support, kVotesFrom, kVotesWidth);

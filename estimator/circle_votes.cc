@@ -107,16 +107,17 @@ double EdgeNoise(const LabImage& lab, const TableRegion& table) {
   // From kNoisePatches x kNoisePatches patches spread over the table: a rate of change at every
   // pixel of a frame costs more than the rest of the search.
   const cv::Rect region = lab.region();
-  const cv::Rect box = table.Bounds() & cv::Rect(region.x + 1, region.y + 1, region.width - 2,
-                                                 region.height - 2);
+  const cv::Rect box =
+      table.Bounds() & cv::Rect(region.x + 1, region.y + 1, region.width - 2, region.height - 2);
   std::vector<float> rates;
   for (int j = 0; j < kNoisePatches && !box.empty(); ++j) {
     for (int i = 0; i < kNoisePatches; ++i) {
       const int cx = box.x + (2 * i + 1) * box.width / (2 * kNoisePatches);
       const int cy = box.y + (2 * j + 1) * box.height / (2 * kNoisePatches);
       if (!table.Contains({cx, cy})) continue;
-      const cv::Rect patch = cv::Rect(cx - kNoisePatchPx / 2, cy - kNoisePatchPx / 2,
-                                      kNoisePatchPx, kNoisePatchPx) & box;
+      const cv::Rect patch =
+          cv::Rect(cx - kNoisePatchPx / 2, cy - kNoisePatchPx / 2, kNoisePatchPx, kNoisePatchPx) &
+          box;
       for (int y = patch.y; y < patch.y + patch.height; ++y) {
         for (int x = patch.x; x < patch.x + patch.width; ++x) {
           const cv::Vec3f gx = 0.5f * (lab.Pixel(x + 1, y) - lab.Pixel(x - 1, y));
@@ -154,7 +155,8 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
                            (p.y() - region.y + 0.5) / factor - 0.5);
   };
   const auto to_full = [&](double x, double y) {
-    return Eigen::Vector2d((x + 0.5) * factor - 0.5 + region.x, (y + 0.5) * factor - 0.5 + region.y);
+    return Eigen::Vector2d((x + 0.5) * factor - 0.5 + region.x,
+                           (y + 0.5) * factor - 0.5 + region.y);
   };
   // Peaks count inside the cloth's outline (the detector decides which are on the playing
   // surface); votes come from the region, the rails included (a ball against the cushion has its
@@ -195,7 +197,8 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
       gradient.DirectionAt(x, y, &c, &s);
       // Thin: only the strongest pixel across the edge votes.
       const int dx = static_cast<int>(std::lround(c)), dy = static_cast<int>(std::lround(s));
-      if (m[x] < strength2.at<float>(y + dy, x + dx) || m[x] < strength2.at<float>(y - dy, x - dx)) {
+      if (m[x] < strength2.at<float>(y + dy, x + dx) ||
+          m[x] < strength2.at<float>(y - dy, x - dx)) {
         continue;
       }
       const double r = scale.RadiusAt(to_full(x, y)) / factor;

@@ -202,16 +202,15 @@ std::optional<EdgeLine> ClothSide(const cv::Mat& bgr, const Eigen::Matrix3d& ima
     px_per_unit = std::min(px_per_unit, (image(p + 0.01 * inward) - image(p)).norm() / 0.01);
   }
   const double reach = search_px / std::max(1e-9, px_per_unit);
-  const auto lines =
-      EdgeLinesAlong(bgr, image_from_table, long_first, side, -reach, reach, 0.0);
+  const auto lines = EdgeLinesAlong(bgr, image_from_table, long_first, side, -reach, reach, 0.0);
   if (lines.empty()) return std::nullopt;
   return lines.front();
 }
 
 Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& cloth_from_table,
                          bool long_first, int side, double max_cushion_width) {
-  const auto lines = EdgeLinesAlong(bgr, cloth_from_table, long_first, side, 0.0,
-                                    max_cushion_width, kOutlineClearancePx);
+  const auto lines = EdgeLinesAlong(bgr, cloth_from_table, long_first, side, 0.0, max_cushion_width,
+                                    kOutlineClearancePx);
   if (lines.empty()) return SideLine(cloth_from_table, long_first, side);
   const EdgeLine* nose = &lines.front();
   for (const EdgeLine& l : lines) {

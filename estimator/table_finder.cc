@@ -64,8 +64,8 @@ struct Line {
 
 // The histogram bin of an 8-bit L*a*b* colour (lab_image.h).
 int HistogramBin(const cv::Vec3b& lab) {
-  const int l = std::min(kLightnessBins - 1, static_cast<int>(lab[0] * LabImage::kLightnessUnit /
-                                                              kLightnessBin));
+  const int l = std::min(kLightnessBins - 1,
+                         static_cast<int>(lab[0] * LabImage::kLightnessUnit / kLightnessBin));
   const int a = std::min(kChromaBins - 1, static_cast<int>(lab[1] / kChromaBin));
   const int b = std::min(kChromaBins - 1, static_cast<int>(lab[2] / kChromaBin));
   return (l * kChromaBins + a) * kChromaBins + b;
@@ -177,8 +177,8 @@ cv::Mat LargestCentralRegion(const cv::Mat& cloth_like) {
   for (int i = 1; i < n; ++i) {
     const double dx = centroids.at<double>(i, 0) / cloth_like.cols - 0.5;
     const double dy = centroids.at<double>(i, 1) / cloth_like.rows - 0.5;
-    const double score = stats.at<int>(i, cv::CC_STAT_AREA) *
-                         std::max(0.1, 1.0 - 2.0 * (dx * dx + dy * dy));
+    const double score =
+        stats.at<int>(i, cv::CC_STAT_AREA) * std::max(0.1, 1.0 - 2.0 * (dx * dx + dy * dy));
     if (score > best_score) {
       best_score = score;
       best = i;
@@ -252,7 +252,6 @@ std::optional<Line> FitSide(const std::vector<cv::Point>& outline, const cv::Poi
   return line;
 }
 
-
 // The homography from the table (long side along x when `long_first`, else along y first and
 // then turned so that x is the long side) to the image of `corners`.
 Eigen::Matrix3d ImageFromTable(const std::array<Eigen::Vector2d, 4>& corners, bool long_first) {
@@ -282,9 +281,9 @@ std::pair<double, double> FocalLengthsSquared(const Eigen::Matrix3d& image_from_
   centred(1, 2) = -0.5 * (size.height - 1);
   const Eigen::Matrix3d h = centred * image_from_table;
   const double orthogonal = -(h(0, 0) * h(0, 1) + h(1, 0) * h(1, 1)) / (h(2, 0) * h(2, 1));
-  const double equal = (h(0, 0) * h(0, 0) + h(1, 0) * h(1, 0) - h(0, 1) * h(0, 1) -
-                        h(1, 1) * h(1, 1)) /
-                       (h(2, 1) * h(2, 1) - h(2, 0) * h(2, 0));
+  const double equal =
+      (h(0, 0) * h(0, 0) + h(1, 0) * h(1, 0) - h(0, 1) * h(0, 1) - h(1, 1) * h(1, 1)) /
+      (h(2, 1) * h(2, 1) - h(2, 0) * h(2, 0));
   return {orthogonal, equal};
 }
 
@@ -372,8 +371,8 @@ bool TableRegion::InsideCloth(const Eigen::Vector2d& pixel, double margin_px) co
 std::array<Eigen::Vector2d, 8> TableRegion::PocketPlaces() const {
   std::array<Eigen::Vector2d, 8> places;
   const double a = kTableAspect;
-  const std::array<Eigen::Vector2d, 8> table = {{{0, 0}, {a / 2, 0}, {a, 0}, {a, 0.5},
-                                                 {a, 1}, {a / 2, 1}, {0, 1}, {0, 0.5}}};
+  const std::array<Eigen::Vector2d, 8> table = {
+      {{0, 0}, {a / 2, 0}, {a, 0}, {a, 0.5}, {a, 1}, {a / 2, 1}, {0, 1}, {0, 0.5}}};
   for (int i = 0; i < 8; ++i) {
     places[i] = (image_from_table * table[i].homogeneous()).hnormalized();
   }
@@ -436,9 +435,9 @@ TableSearch FindTable(const cv::Mat& bgr) {
 
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours(table.surface.clone(), contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
-  const auto& outline = *std::max_element(
-      contours.begin(), contours.end(),
-      [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  const auto& outline =
+      *std::max_element(contours.begin(), contours.end(),
+                        [](const auto& a, const auto& b) { return a.size() < b.size(); });
   std::vector<cv::Point> hull, polygon;
   cv::convexHull(outline, hull);
   const double perimeter = cv::arcLength(hull, true);
@@ -471,9 +470,9 @@ TableSearch FindTable(const cv::Mat& bgr) {
   int points = 0;
   for (int i = 0; i < 4; ++i) {
     // Where no straight edge is near it, the side found at the search resolution stands.
-    const EdgeLine side = ClothSide(bgr, rough_from_table, long_first, i, kOutlineSearchPx / scale)
-                              .value_or(EdgeLine{sides[i].coefficients, sides[i].points, 0.0,
-                                                 sides[i].rms});
+    const EdgeLine side =
+        ClothSide(bgr, rough_from_table, long_first, i, kOutlineSearchPx / scale)
+            .value_or(EdgeLine{sides[i].coefficients, sides[i].points, 0.0, sides[i].rms});
     lines[i] = side.line;
     squares += side.rms_px * side.rms_px * side.places;
     points += side.places;
@@ -483,7 +482,8 @@ TableSearch FindTable(const cv::Mat& bgr) {
     return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
   }
   const Eigen::Matrix3d cloth_from_table = ImageFromTable(table.cloth_corners, long_first);
-  for (int i = 0; i < 4; ++i) lines[i] = NoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+  for (int i = 0; i < 4; ++i)
+    lines[i] = NoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet"};
   }
@@ -494,7 +494,8 @@ TableSearch FindTable(const cv::Mat& bgr) {
   if (!(table.depth_ratio > 0)) {
     return {std::nullopt, "no table: the cloth's corners are not those of a plane in view"};
   }
-  table.view = table.depth_ratio <= kOverheadDepthRatio ? TableView::kOverhead : TableView::kOblique;
+  table.view =
+      table.depth_ratio <= kOverheadDepthRatio ? TableView::kOverhead : TableView::kOblique;
   return {table, ""};
 }
 

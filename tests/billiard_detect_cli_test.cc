@@ -186,10 +186,7 @@ TEST_F(BilliardDetect, SaysWhichBallEachIsAndWhereTheTableIs) {
                      ball["v"].get<double>() - hand.pixel.y()) > 4.0) {
         continue;
       }
-      const std::string name = std::string(hand.name) == "white"    ? "cue"
-                               : std::string(hand.name) == "orange" ? "yellow"
-                                                                    : hand.name;
-      EXPECT_EQ(ball["class"], name) << ball;
+      EXPECT_EQ(ball["class"], hand.name) << ball;
     }
     ++classes[ball["class"]];
   }
