@@ -1,6 +1,7 @@
 #include "bench/peer_comparison.h"
 
 #include <Eigen/LU>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -8,6 +9,7 @@
 
 #include "sim/physics/ball_dynamics.h"
 #include "sim/physics/simulator.h"
+#include "sim/physics/trajectory.h"
 
 namespace billiard::bench {
 
@@ -19,7 +21,8 @@ constexpr double kConvergedTolerance = 1e-10;
 // are allowed to fail).
 constexpr long kPeerMaxSteps = 1'000'000;
 // The floor's per-step arithmetic: states sampled along the figure's trajectory, so that it is
-// not timed on one state the branch predictor has learned; gamma and a step size for the matrix
+// not timed on one state the branch predictor has learned (held in the timed object itself, not
+// on the heap: where the heap puts them moved the time by up to 2x from run to run); gamma and a step size for the matrix
 // I/(gamma h) - J (their values do not change the cost).
 constexpr int kArithmeticStates = 64;
 constexpr double kRodas4Gamma = 0.25;
@@ -37,86 +40,120 @@ physics::SimulationOptions OurOptions(double tolerance, bool rest_switch) {
   return o;
 }
 
-// Time of the floor's per-step arithmetic [us], averaged over `states`.
-double StepArithmeticUs(const physics::ModelParameters& p,
-                        const std::vector<physics::BallState>& states) {
-  using Matrix = physics::StateJacobian;
-  const physics::BallDynamics<physics::ApproximateFrictionModel> dynamics(
-      p, physics::ApproximateFrictionModel{p.contact});
-  const Matrix shift = Matrix::Identity() / (kRodas4Gamma * kNominalStep);
-  double sink = 0.0;  // every result feeds it, so that nothing is optimised away
-  const auto pass = [&] {
-    for (const physics::BallState& s : states) {
+// The floor's per-step arithmetic over states along a trajectory: one call is one pass over them.
+class StepArithmetic {
+ public:
+  StepArithmetic(const physics::ModelParameters& p, const physics::Trajectory& trajectory,
+                 double t_end)
+      : dynamics_(p, physics::ApproximateFrictionModel{p.contact}),
+        shift_(Matrix::Identity() / (kRodas4Gamma * kNominalStep)) {
+    for (int i = 0; i < kArithmeticStates; ++i) {
+      states_[i] = trajectory.At(t_end * i / (kArithmeticStates - 1));
+    }
+  }
+
+  void operator()() {
+    for (const physics::BallState& s : states_) {
       physics::BallState f;
       Matrix jac;
-      dynamics.DerivativeAndJacobian(s, &f, &jac);
+      dynamics_.DerivativeAndJacobian(s, &f, &jac);
       // The LU RODAS4 uses (sim/physics/rodas4.h); each solve feeds the next, as the stages do.
-      const Eigen::PartialPivLU<Matrix> lu(shift - jac);
+      const Eigen::PartialPivLU<Matrix> lu(shift_ - jac);
       physics::BallState g = f;
       for (int k = 0; k < kRodas4Solves; ++k) g = lu.solve(g);
-      sink += g.sum();
+      sink_ = sink_ + g.sum();
     }
-  };
-  const double us = MedianWallUs(pass, kPeerTiming) / states.size();
-  volatile double keep = sink;
-  (void)keep;
-  return us;
-}
-
-OursOnFigure TimeOurs(const physics::ModelParameters& p, const Scene& scene,
-                      const physics::BallState& converged) {
-  OursOnFigure ours;
-  const physics::SimulationOptions options;  // the defaults, as `billiard simulate` runs
-  ours.tolerance = options.tolerance;
-  physics::SimulationResult result;
-  ours.wall_us = MedianWallUs(
-      [&] { result = physics::Simulate(p, scene.initial, scene.t_end, options); }, kPeerTiming);
-  ours.stats = result.stats;
-  ours.error_m = Distance(result.final_state, converged);
-  return ours;
-}
-
-// The floor on one figure: the fewest steps, and the arithmetic per step along the converged
-// trajectory.
-FloorOnFigure Floor(const physics::ModelParameters& p, const Scene& scene,
-                    const physics::SimulationResult& converged) {
-  FloorOnFigure floor;
-  const FloorSteps fewest = FewestAcceptedSteps(p, scene, converged.final_state);
-  floor.steps = fewest.steps;
-  floor.tolerance = fewest.tolerance;
-  std::vector<physics::BallState> states;
-  for (int i = 0; i < kArithmeticStates; ++i) {
-    states.push_back(converged.trajectory->At(scene.t_end * i / (kArithmeticStates - 1)));
   }
-  floor.step_us = StepArithmeticUs(p, states);
-  floor.wall_us = floor.steps * floor.step_us;
-  return floor;
-}
 
-// The loosest tolerance at which the peer ends within the accuracy of `converged`, timed there.
-// make(tol) returns the run at that tolerance, a callable returning PeerRun: what it sets up is
-// not timed.
+ private:
+  using Matrix = physics::StateJacobian;
+  const physics::BallDynamics<physics::ApproximateFrictionModel> dynamics_;
+  const Matrix shift_;
+  std::array<physics::BallState, kArithmeticStates> states_;
+  volatile double sink_ = 0.0;  // every result feeds it, so that nothing is optimised away
+};
+
+// The loosest tolerance at which the peer ends within the accuracy of `converged` (untimed), and
+// in *timed_run the run at that tolerance, to be timed. make(tol) returns the run at a tolerance,
+// a callable returning PeerRun: what make sets up is not timed.
 template <class MakeRun>
-PeerOnFigure Peer(const std::string& name, const physics::BallState& converged, MakeRun make) {
+PeerOnFigure Peer(const std::string& name, const physics::BallState& converged, MakeRun make,
+                  std::function<PeerRun()>* timed_run) {
   PeerOnFigure peer;
   peer.peer = name;
   for (double tol : PeerToleranceSweep()) {
-    auto run = make(tol);
-    PeerRun result;
+    std::function<PeerRun()> run = make(tol);
     try {
-      result = run();
+      peer.run = run();
     } catch (const std::runtime_error&) {
       continue;  // a step budget exceeded at a loose tolerance: not accurate there
     }
-    const double error = Distance(result.final_state, converged);
-    if (error > kPeerEndpointAccuracy) continue;
+    peer.error_m = Distance(peer.run.final_state, converged);
+    if (peer.error_m > kPeerEndpointAccuracy) continue;
     peer.found = true;
     peer.tolerance = tol;
-    peer.error_m = error;
-    peer.wall_us = MedianWallUs([&] { peer.run = run(); }, kPeerTiming);
-    break;
+    *timed_run = run;
+    return peer;
   }
+  peer = PeerOnFigure();
+  peer.peer = name;
   return peer;
+}
+
+// One figure: the references, the sweeps, then ours, the floor's arithmetic and the peers timed
+// interleaved (MedianWallUsInterleaved), so that their ratios hold on a busy machine.
+FigureComparison CompareOnFigure(const physics::ModelParameters& p, const Scene& scene) {
+  FigureComparison fig;
+  fig.scene = scene.name;
+  const physics::SimulationResult ours_converged =
+      physics::Simulate(p, scene.initial, scene.t_end, OurOptions(kConvergedTolerance, true));
+  const physics::BallState regularized_converged =
+      physics::Simulate(p, scene.initial, scene.t_end, OurOptions(kConvergedTolerance, false))
+          .final_state;
+  fig.rest_switch_shift_m = Distance(ours_converged.final_state, regularized_converged);
+
+  const FloorSteps fewest = FewestAcceptedSteps(p, scene, ours_converged.final_state);
+  fig.floor.steps = fewest.steps;
+  fig.floor.tolerance = fewest.tolerance;
+  StepArithmetic arithmetic(p, *ours_converged.trajectory, scene.t_end);
+
+  std::function<PeerRun()> odeint_run, cvode_run;
+  fig.odeint = Peer(
+      "odeint-rosenbrock4", regularized_converged,
+      [&](double tol) {
+        return [&p, &scene, tol] {
+          return OdeintRosenbrock4(p, scene.initial, scene.t_end, tol, kPeerMaxSteps);
+        };
+      },
+      &odeint_run);
+  fig.cvode = Peer(
+      "cvode-bdf", regularized_converged,
+      [&](double tol) {
+        // The solver is made once per tolerance; each run re-initialises it (CvodeBdf).
+        auto solver = std::make_shared<CvodeBdf>(p, tol, kPeerMaxSteps);
+        return [&scene, solver] { return solver->Run(scene.initial, scene.t_end); };
+      },
+      &cvode_run);
+
+  const physics::SimulationOptions defaults;  // ours, as `billiard simulate` runs
+  fig.ours.tolerance = defaults.tolerance;
+  physics::SimulationResult ours;
+  std::vector<std::function<void()>> timed = {
+      [&] { ours = physics::Simulate(p, scene.initial, scene.t_end, defaults); },
+      [&] { arithmetic(); }};
+  if (fig.odeint.found) timed.push_back([&] { fig.odeint.run = odeint_run(); });
+  if (fig.cvode.found) timed.push_back([&] { fig.cvode.run = cvode_run(); });
+  const std::vector<double> wall_us = MedianWallUsInterleaved(timed, kPeerTiming);
+
+  fig.ours.wall_us = wall_us[0];
+  fig.ours.stats = ours.stats;
+  fig.ours.error_m = Distance(ours.final_state, ours_converged.final_state);
+  fig.floor.step_us = wall_us[1] / kArithmeticStates;
+  fig.floor.wall_us = fig.floor.steps * fig.floor.step_us;
+  std::size_t next = 2;
+  if (fig.odeint.found) fig.odeint.wall_us = wall_us[next++];
+  if (fig.cvode.found) fig.cvode.wall_us = wall_us[next++];
+  return fig;
 }
 
 }  // namespace
@@ -153,26 +190,7 @@ PeerComparison ComparePeers(const physics::ModelParameters& p, const std::vector
   PeerComparison comparison;
   for (const Scene& scene : figures) {
     progress("peers: " + scene.name);
-    FigureComparison fig;
-    fig.scene = scene.name;
-    const physics::SimulationResult ours_converged =
-        physics::Simulate(p, scene.initial, scene.t_end, OurOptions(kConvergedTolerance, true));
-    const physics::BallState regularized_converged =
-        physics::Simulate(p, scene.initial, scene.t_end, OurOptions(kConvergedTolerance, false))
-            .final_state;
-    fig.rest_switch_shift_m = Distance(ours_converged.final_state, regularized_converged);
-    fig.ours = TimeOurs(p, scene, ours_converged.final_state);
-    fig.floor = Floor(p, scene, ours_converged);
-    fig.odeint = Peer("odeint-rosenbrock4", regularized_converged, [&](double tol) {
-      return
-          [&, tol] { return OdeintRosenbrock4(p, scene.initial, scene.t_end, tol, kPeerMaxSteps); };
-    });
-    fig.cvode = Peer("cvode-bdf", regularized_converged, [&](double tol) {
-      // The solver is made once per tolerance; each run re-initialises it (CvodeBdf).
-      auto solver = std::make_shared<CvodeBdf>(p, tol, kPeerMaxSteps);
-      return [&, solver] { return solver->Run(scene.initial, scene.t_end); };
-    });
-    comparison.figures.push_back(fig);
+    comparison.figures.push_back(CompareOnFigure(p, scene));
   }
   return comparison;
 }

@@ -42,9 +42,10 @@ inline constexpr double kPeerEndpointAccuracy = 1e-6;
 inline constexpr double kTargetOursOverOdeint = 0.5;
 inline constexpr double kTargetOursOverFloor = 3.0;
 
-// Every timed run gets 20 ms in 9 batches: tens of repeats of a 50 us run, one per batch of a
-// 2 ms one; the median of nine discards the batches an interruption landed in.
-inline constexpr TimingBudget kPeerTiming{20000.0, 9};
+// Every timed run gets 50 ms in 15 batches: tens of repeats of a 50 us run, one or two per batch
+// of a 2 ms one; the median of fifteen discards the batches an interruption landed in. (A machine
+// busy with other work for the whole 50 ms slows every batch alike: time on a quiet one.)
+inline constexpr TimingBudget kPeerTiming{50000.0, 15};
 
 // The tolerances tried, loosest first: 1e-3, 3e-4, 1e-4, ..., 3e-10, 1e-10.
 std::vector<double> PeerToleranceSweep();
@@ -88,9 +89,10 @@ struct PeerComparison {
   std::vector<FigureComparison> figures;
 };
 
-// Runs the comparison on `figures` (the "figure" group of SceneSuite), everything timed on the
-// calling thread (MedianWallUs, timing.h). Throws std::runtime_error when a converged reference
-// fails.
+// Runs the comparison on `figures` (the "figure" group of SceneSuite). On each figure ours, the
+// floor's arithmetic and the two peers are timed on the calling thread, interleaved
+// (MedianWallUsInterleaved, timing.h: a busy stretch of the machine slows all four alike).
+// Throws std::runtime_error when a converged reference fails.
 PeerComparison ComparePeers(const physics::ModelParameters& p, const std::vector<Scene>& figures,
                             const std::function<void(const std::string&)>& progress);
 
