@@ -19,8 +19,9 @@ double DenseTrajectory::last_step_start() const { return size_ == 0 ? 0.0 : step
 BallState DenseTrajectory::At(double t) const {
   if (size_ == 0) throw std::logic_error("dense trajectory has no steps");
   t = std::clamp(t, start_time(), end_time());
-  // The first step that ends at or after t (the last one if none does).
-  std::size_t lo = 0, hi = size_ - 1;
+  // The first step that ends at or after t (the last one if none does); the last step first,
+  // where events are searched.
+  std::size_t lo = t >= step(size_ - 1).t0 ? size_ - 1 : 0, hi = size_ - 1;
   while (lo < hi) {
     const std::size_t mid = lo + (hi - lo) / 2;
     if (step(mid).t1 < t) {
