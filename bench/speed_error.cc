@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "bench/timing.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 
@@ -66,7 +67,7 @@ std::vector<physics::BallState> Converged(const physics::ModelParameters& p,
   return finals;
 }
 
-// Runs once; cheap methods are repeated until 2 ms have passed and their mean is reported.
+// Timed warm (bench/timing.h); *result is the first run's.
 MethodRun TimeRun(const physics::ModelParameters& p, const Scene& scene, const Method& method,
                   physics::SimulationResult* result) {
   MethodRun run;
@@ -74,19 +75,14 @@ MethodRun TimeRun(const physics::ModelParameters& p, const Scene& scene, const M
   run.scene = scene.name;
   run.group = scene.group;
   run.kind = model_choice::SceneKindOf(scene.initial, p);
-  using Clock = std::chrono::steady_clock;
   const physics::SimulationOptions options = method.Options();
   try {
-    auto start = Clock::now();
-    *result = physics::Simulate(p, scene.initial, scene.t_end, options);
-    double us = std::chrono::duration<double, std::micro>(Clock::now() - start).count();
-    const int repeats = static_cast<int>(std::clamp(2000.0 / std::max(us, 1e-3), 1.0, 5000.0));
-    if (repeats > 1) {
-      start = Clock::now();
-      for (int i = 0; i < repeats; ++i) physics::Simulate(p, scene.initial, scene.t_end, options);
-      us = std::chrono::duration<double, std::micro>(Clock::now() - start).count() / repeats;
-    }
-    run.wall_us = us;
+    bool first = true;
+    run.wall_us = WarmWallMicroseconds([&] {
+      physics::SimulationResult r = physics::Simulate(p, scene.initial, scene.t_end, options);
+      if (first) *result = std::move(r);
+      first = false;
+    });
     run.steps = result->stats.steps;
     run.rhs_evals = result->stats.rhs_evals;
   } catch (const std::exception& e) {

@@ -95,9 +95,10 @@ class RestEvent {
       return true;
     }
     const double t0 = dense_->last_step_start(), t1 = dense_->end_time();
-    const double end_speed = end.segment<2>(kVx).norm();
-    if (end_speed >= near_rest_speed_ &&
-        dense_->At(t0).segment<2>(kVx).norm() >= near_rest_speed_) {
+    const double start_speed =
+        dense_->size() == 1 ? dense_->At(t0).segment<2>(kVx).norm() : previous_end_speed_;
+    previous_end_speed_ = end.segment<2>(kVx).norm();
+    if (std::min(start_speed, previous_end_speed_) >= near_rest_speed_) {
       return false;  // a ball this fast at both ends of a step does not stop inside it
     }
     double moving = t0;
@@ -143,6 +144,7 @@ class RestEvent {
   const Dynamics& dynamics_;
   const DenseTrajectory* dense_;
   double near_rest_speed_ = 0.0;
+  double previous_end_speed_ = 0.0;  // the speed where the last step began
   double time_ = -1.0;
   BallState state_ = BallState::Zero();
 };
