@@ -68,6 +68,10 @@ class BallDynamics {
   BallDynamics(const ModelParameters& p, Friction friction)
       : p_(p), friction_(std::move(friction)) {}
 
+  // The motion does not depend on where the ball is: RODAS4 factors only the 5x5 block of its
+  // stage matrix (stage_matrix.h).
+  static constexpr bool kTranslationInvariant = true;
+
   // Time derivatives of (vx, vy, wx, wy, wz) from those five numbers (eqs. 21-22).
   template <typename T>
   Eigen::Matrix<T, 5, 1> Accelerations(const Eigen::Matrix<T, 5, 1>& u) const {

@@ -7,26 +7,37 @@ namespace billiard::physics {
 
 void DenseTrajectory::Append(double t0, double t1, const BallState& x0, const BallState& x1,
                              const BallState& c3, const BallState& c4) {
-  steps_.push_back({t0, t1, x0, x1, c3, c4});
+  // Default-initialized: a block is written step by step, never read before.
+  if (size_ % kBlockSteps == 0) blocks_.emplace_back(new Block);
+  step(size_++) = {t0, t1, x0, x1, c3, c4};
 }
 
-double DenseTrajectory::start_time() const { return steps_.empty() ? 0.0 : steps_.front().t0; }
-double DenseTrajectory::end_time() const { return steps_.empty() ? 0.0 : steps_.back().t1; }
-double DenseTrajectory::last_step_start() const { return steps_.empty() ? 0.0 : steps_.back().t0; }
+double DenseTrajectory::start_time() const { return size_ == 0 ? 0.0 : step(0).t0; }
+double DenseTrajectory::end_time() const { return size_ == 0 ? 0.0 : step(size_ - 1).t1; }
+double DenseTrajectory::last_step_start() const { return size_ == 0 ? 0.0 : step(size_ - 1).t0; }
 
 BallState DenseTrajectory::At(double t) const {
-  if (steps_.empty()) throw std::logic_error("dense trajectory has no steps");
+  if (size_ == 0) throw std::logic_error("dense trajectory has no steps");
   t = std::clamp(t, start_time(), end_time());
-  const auto it = std::lower_bound(steps_.begin(), steps_.end(), t,
-                                   [](const Step& step, double time) { return step.t1 < time; });
-  const Step& step = it == steps_.end() ? steps_.back() : *it;
-  if (step.t1 <= step.t0) return step.x0;
-  return Interpolate(step.x0, step.x1, step.c3, step.c4, (t - step.t0) / (step.t1 - step.t0));
+  // The first step that ends at or after t (the last one if none does); the last step first,
+  // where events are searched.
+  std::size_t lo = t >= step(size_ - 1).t0 ? size_ - 1 : 0, hi = size_ - 1;
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (step(mid).t1 < t) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  const Step& s = step(lo);
+  if (s.t1 <= s.t0) return s.x0;
+  return Interpolate(s.x0, s.x1, s.c3, s.c4, (t - s.t0) / (s.t1 - s.t0));
 }
 
 void DenseTrajectory::TruncateLastStepAt(double t) {
-  if (steps_.empty()) throw std::logic_error("dense trajectory has no steps");
-  Step& step = steps_.back();
+  if (size_ == 0) throw std::logic_error("dense trajectory has no steps");
+  Step& step = this->step(size_ - 1);
   if (!(t >= step.t0 && t <= step.t1)) throw std::logic_error("truncation outside the last step");
   if (step.t1 <= step.t0) return;
   // The interpolant as x0 + B s + C s^2 + D s^3, rescaled to s' = s / lambda over [t0, t].

@@ -72,6 +72,9 @@ class BallAtRest {
     }
   }
 
+  // Only wz moves (stage_matrix.h).
+  static constexpr bool kTranslationInvariant = true;
+
   // The state the reduced dynamics starts from (see the file comment).
   const BallState& start() const { return start_; }
 

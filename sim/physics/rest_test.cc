@@ -127,11 +127,13 @@ TEST(Rest, BalancedPivotKeepsTheFullModelsSpinDecay) {
 }
 
 TEST(Rest, TheRestPointConvergesWithTheTolerance) {
-  // The stop is located inside the step in which the ball came to rest, on the dense output, so
-  // where it rests does not move with where the steps happen to end: 200 seeded shots of the
-  // pool ball (0.3-3 m/s, top or back spin up to 1.5 v/r, side spin up to 60 rad/s on two of
-  // three) rest within 0.1 um of their 1e-9 rest point at every tolerance from 1e-7 (the default)
-  // down. (Taken at the end of that step they moved up to 0.42 um.)
+  // The stop is an event on the dense output, searched inside every step near the rest speed, so
+  // where the ball rests does not move with where the steps happen to end: 200 seeded shots of
+  // the pool ball (0.3-3 m/s, top or back spin up to 1.5 v/r, side spin up to 60 rad/s on two of
+  // three) rest within 1 um of their 1e-9 rest point at every tolerance from 1e-6 down (measured:
+  // at most 0.59 um at 1e-6, 0.04 um at 1e-7). Checked at step ends only, one shot was 1.3 um
+  // off at 1e-6 (the criterion holds in windows shorter than a step while the pivot settles);
+  // taken where the stopping step ended, they moved up to 0.42 um at 1e-7.
   const ModelParameters pool = params::LoadParameters("pool");
   const double r = pool.ball.radius;
   std::mt19937_64 rng(16);
@@ -150,8 +152,8 @@ TEST(Rest, TheRestPointConvergesWithTheTolerance) {
       return Simulate(pool, shot, 30.0, options).final_state.head<2>().eval();
     };
     const Eigen::Vector2d converged = rest_at(1e-9);
-    for (double tolerance : {1e-7, 1e-8}) {
-      EXPECT_LT((rest_at(tolerance) - converged).norm(), 1e-7)
+    for (double tolerance : {1e-6, 1e-7, 1e-8}) {
+      EXPECT_LT((rest_at(tolerance) - converged).norm(), 1e-6)
           << "shot " << k << " at tolerance " << tolerance;
     }
   }

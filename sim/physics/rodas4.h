@@ -9,22 +9,24 @@
 // phase (about 540,000 steps for Fig. 6); an L-stable linearly implicit method damps the stiff
 // slip mode at any step size, so its step is set by accuracy alone and grows to tens of
 // milliseconds while the ball rolls. Rosenbrock methods need no Newton iteration, only one LU of
-// the 7x7 matrix I/(gamma h) - J per step, and J is exact (hand-derived for the approximate
-// model, automatic differentiation for the integral one: ball_dynamics.h).
+// the 7x7 matrix I/(gamma h) - J per step (of its 5x5 block for the ball: stage_matrix.h), and J
+// is exact (hand-derived for the approximate model, automatic differentiation for the integral
+// one: ball_dynamics.h).
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include "sim/physics/ball_state.h"
 #include "sim/physics/dense_trajectory.h"
 #include "sim/physics/integrator.h"
+#include "sim/physics/stage_matrix.h"
 
 namespace billiard::physics {
 
 // One RODAS4 step at a time, for IntegrateAdaptive. System provides
 //   BallState Derivative(const BallState&) const and
-//   void DerivativeAndJacobian(const BallState&, BallState*, StateJacobian*) const.
+//   void DerivativeAndJacobian(const BallState&, BallState*, StateJacobian*) const,
+// and may declare kTranslationInvariant (stage_matrix.h).
 template <class System>
 class Rodas4Stepper {
  public:
@@ -33,8 +35,7 @@ class Rodas4Stepper {
 
   explicit Rodas4Stepper(const System& system) : system_(system) {}
 
-  void Attempt(const BallState& x, double h, StepAttempt* out, IntegrationStats* st) const {
-    using Matrix = Eigen::Matrix<double, 7, 7>;
+  void Attempt(const BallState& x, double h, StepAttempt* out, IntegrationStats* st) {
     constexpr double gamma = 0.25;
     // The stage times (0.386, 0.21, 0.63, 1) do not enter: the ball's equations are autonomous.
     constexpr double a21 = 1.544;
@@ -54,38 +55,46 @@ class Rodas4Stepper {
     constexpr double d31 = -0.6762803392801253, d32 = 6.087714651680015, d33 = 16.43084320892478,
                      d34 = 24.76722511418386, d35 = -6.594389125716872;
 
-    BallState f0;
-    Matrix jac;
-    system_.DerivativeAndJacobian(x, &f0, &jac);
-    ++st->jacobian_evals;
-    st->rhs_evals += 6;
-    const Eigen::PartialPivLU<Matrix> lu(Matrix::Identity() / (gamma * h) - jac);
+    // A rejected step is retried from the same state with a smaller h: f0 and J stay valid.
+    if (!has_jacobian_) {
+      system_.DerivativeAndJacobian(x, &f0_, &jac_);
+      ++st->jacobian_evals;
+      ++st->rhs_evals;
+      has_jacobian_ = true;
+    }
+    st->rhs_evals += 5;
+    StageMatrix<IsTranslationInvariant<System>::value> m;
+    m.Factor(jac_, 1.0 / (gamma * h));
+    const BallState& f0 = f0_;
     const double inv_h = 1.0 / h;
 
-    const BallState g1 = lu.solve(f0);
+    const BallState g1 = m.Solve(f0);
     BallState xs = x + a21 * g1;
-    const BallState g2 = lu.solve(system_.Derivative(xs) + (c21 * inv_h) * g1);
+    const BallState g2 = m.Solve(system_.Derivative(xs) + (c21 * inv_h) * g1);
     xs = x + a31 * g1 + a32 * g2;
-    const BallState g3 = lu.solve(system_.Derivative(xs) + inv_h * (c31 * g1 + c32 * g2));
+    const BallState g3 = m.Solve(system_.Derivative(xs) + inv_h * (c31 * g1 + c32 * g2));
     xs = x + a41 * g1 + a42 * g2 + a43 * g3;
-    const BallState g4 =
-        lu.solve(system_.Derivative(xs) + inv_h * (c41 * g1 + c42 * g2 + c43 * g3));
+    const BallState g4 = m.Solve(system_.Derivative(xs) + inv_h * (c41 * g1 + c42 * g2 + c43 * g3));
     xs = x + a51 * g1 + a52 * g2 + a53 * g3 + a54 * g4;
     const BallState g5 =
-        lu.solve(system_.Derivative(xs) + inv_h * (c51 * g1 + c52 * g2 + c53 * g3 + c54 * g4));
+        m.Solve(system_.Derivative(xs) + inv_h * (c51 * g1 + c52 * g2 + c53 * g3 + c54 * g4));
     xs += g5;
     // g6 is the difference between the fourth- and the embedded third-order solutions.
-    out->error = lu.solve(system_.Derivative(xs) +
-                          inv_h * (c61 * g1 + c62 * g2 + c63 * g3 + c64 * g4 + c65 * g5));
+    out->error = m.Solve(system_.Derivative(xs) +
+                         inv_h * (c61 * g1 + c62 * g2 + c63 * g3 + c64 * g4 + c65 * g5));
     out->x_new = xs + out->error;
     out->c3 = d21 * g1 + d22 * g2 + d23 * g3 + d24 * g4 + d25 * g5;
     out->c4 = d31 * g1 + d32 * g2 + d33 * g3 + d34 * g4 + d35 * g5;
   }
 
-  void Accept() const {}
+  void Accept() { has_jacobian_ = false; }
 
  private:
   const System& system_;
+  // f and J at the state of the last attempt, until a step from it is accepted.
+  BallState f0_;
+  Eigen::Matrix<double, 7, 7> jac_;
+  bool has_jacobian_ = false;
 };
 
 }  // namespace billiard::physics

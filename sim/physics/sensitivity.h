@@ -45,6 +45,7 @@ class Rodas4SensitivityStepper {
   }
 
   void Accept() {
+    state_.Accept();
     previous_ = s_;
     s_ = Advance(previous_, 1.0);
   }

@@ -84,7 +84,8 @@ TEST(Sensitivity, ArrivalAtSpeedIsTheFirstTimeTheSpeedFallsThere) {
   const Arrival a = SimulateArrival(p, x0, 0.7, 60.0);
   ASSERT_TRUE(a.reached);
   EXPECT_NEAR(a.state.segment<2>(kVx).norm(), 0.7, 1e-9);
-  for (double t = 0.0; t < a.time; t += a.time / 50) {
+  for (int i = 0; i < 50; ++i) {  // by index: a sum of 50 increments can land on a.time itself
+    const double t = a.time * i / 50;
     EXPECT_GT(a.trajectory->At(t).segment<2>(kVx).norm(), 0.7) << t;
   }
   const Arrival never = SimulateArrival(p, x0, 0.7, 0.1);

@@ -68,24 +68,93 @@ IntegrationResult Run(Integrator integrator, const System& system, const BallSta
   return IntegrateWith<Rodas4Stepper>(system, x0, t0, t_end, options, stats, dense, stop);
 }
 
-// The first time within the last step of `dense` at which ClassifyRest calls the ball stopped
-// (bisection on the dense output: the step began moving and ended stopped); the trajectory and
-// *run end there.
+// The stop of a 5-DOF ball as an event on the dense output: the first time ClassifyRest calls the
+// ball stopped, searched inside every step that comes near the rest speed, not only at the ends
+// of steps. Near its stop a pivoting ball's force rings about the balanced value (period a few
+// ms) while its speed hovers about the rest speed, so the criterion holds in windows shorter than
+// a step, and which window the step ends happened to land in decided where the ball rested: up
+// to 15 um apart between tolerances (issue 16). Sampled inside the step, the first window is
+// found whatever the step size, and bisection locates its start.
+//
+// Used as IntegrateAdaptive's stop predicate; `dense` must be the integration's dense output
+// (each accepted step is appended before the predicate sees its end state).
 template <class Dynamics>
-void LocateRestWithinLastStep(const Dynamics& dynamics, DenseTrajectory* dense,
-                              IntegrationResult* run) {
-  if (dense->size() == 0) return;
-  double lo = dense->last_step_start(), hi = dense->end_time();
-  if (ClassifyRest(dense->At(lo), dynamics) != RestKind::kMoving) return;
-  // A nanosecond: at the stop's speed (10 eps_r a, a few mm/s at most) a fraction of a picometre.
-  constexpr double kRestTimeResolution = 1e-9;  // [s]
-  while (hi - lo > kRestTimeResolution) {
-    const double mid = 0.5 * (lo + hi);
-    (ClassifyRest(dense->At(mid), dynamics) == RestKind::kMoving ? lo : hi) = mid;
+class RestEvent {
+ public:
+  RestEvent(const Dynamics& dynamics, const DenseTrajectory* dense)
+      : dynamics_(dynamics), dense_(dense) {
+    const ContactParameters& c = dynamics.parameters().contact;
+    near_rest_speed_ = kNearRestFactor * 10.0 * c.eps_r * c.patch_radius;  // ClassifyRest's
   }
-  dense->TruncateLastStepAt(hi);
-  run->t = hi;
-  run->state = dense->At(hi);
+
+  bool operator()(const BallState& end) {
+    if (dense_->size() == 0) {  // the initial state
+      if (!Stopped(end)) return false;
+      time_ = dense_->end_time();
+      state_ = end;
+      return true;
+    }
+    const double t0 = dense_->last_step_start(), t1 = dense_->end_time();
+    const double start_speed =
+        dense_->size() == 1 ? dense_->At(t0).segment<2>(kVx).norm() : previous_end_speed_;
+    previous_end_speed_ = end.segment<2>(kVx).norm();
+    if (std::min(start_speed, previous_end_speed_) >= near_rest_speed_) {
+      return false;  // a ball this fast at both ends of a step does not stop inside it
+    }
+    double moving = t0;
+    for (int k = 1; k <= kSamplesPerStep; ++k) {
+      const double t = k == kSamplesPerStep ? t1 : t0 + (t1 - t0) * k / kSamplesPerStep;
+      if (!Stopped(k == kSamplesPerStep ? end : dense_->At(t))) {
+        moving = t;
+        continue;
+      }
+      double lo = moving;
+      time_ = t;
+      state_ = k == kSamplesPerStep ? end : dense_->At(t);
+      while (time_ - lo > kRestTimeResolution) {
+        const double mid = 0.5 * (lo + time_);
+        const BallState s = dense_->At(mid);
+        if (Stopped(s)) {
+          time_ = mid;
+          state_ = s;
+        } else {
+          lo = mid;
+        }
+      }
+      return true;
+    }
+    return false;
+  }
+
+  // Where the ball stopped, once the predicate has held (time() < 0 before), and its state there,
+  // which ClassifyRest calls stopped.
+  double time() const { return time_; }
+  const BallState& state() const { return state_; }
+
+ private:
+  // A step is searched when the ball is slower than this many rest speeds at one of its ends.
+  static constexpr double kNearRestFactor = 2.0;
+  // The windows measured last about half a millisecond; steps near the stop are a few ms long.
+  static constexpr int kSamplesPerStep = 8;
+  // A nanosecond: at the stop's speed (10 eps_r a, a few mm/s at most) a fraction of a picometre.
+  static constexpr double kRestTimeResolution = 1e-9;  // [s]
+
+  bool Stopped(const BallState& s) const { return ClassifyRest(s, dynamics_) != RestKind::kMoving; }
+
+  const Dynamics& dynamics_;
+  const DenseTrajectory* dense_;
+  double near_rest_speed_ = 0.0;
+  double previous_end_speed_ = 0.0;  // the speed where the last step began
+  double time_ = -1.0;
+  BallState state_ = BallState::Zero();
+};
+
+// Ends the integration `run` at the stop `rest` found in the last step of `dense`.
+template <class Dynamics>
+void EndAtRest(const RestEvent<Dynamics>& rest, DenseTrajectory* dense, IntegrationResult* run) {
+  if (dense->size() > 0) dense->TruncateLastStepAt(rest.time());
+  run->t = rest.time();
+  run->state = rest.state();
 }
 
 template <class Friction>
@@ -98,10 +167,10 @@ SimulationResult Integrate(const ModelParameters& params, Friction friction,
   auto dense = std::make_shared<DenseTrajectory>();
   SimulationResult result;
   IntegrationResult run;
+  RestEvent<BallDynamics<Friction>> rest_event(dynamics, dense.get());
   if (options.rest_switch) {
-    run = Run(
-        options.integrator, dynamics, initial, 0.0, t_end, integrator, &result.stats, dense.get(),
-        [&dynamics](const BallState& s) { return ClassifyRest(s, dynamics) != RestKind::kMoving; });
+    run = Run(options.integrator, dynamics, initial, 0.0, t_end, integrator, &result.stats,
+              dense.get(), [&rest_event](const BallState& s) { return rest_event(s); });
   } else {
     run = Run(options.integrator, dynamics, initial, 0.0, t_end, integrator, &result.stats,
               dense.get());
@@ -109,7 +178,7 @@ SimulationResult Integrate(const ModelParameters& params, Friction friction,
   if (run.stopped) {
     // Where the ball stopped inside the last step, not where the step happened to end: so the
     // rest point converges with the tolerance instead of moving with the steps.
-    LocateRestWithinLastStep(dynamics, dense.get(), &run);
+    EndAtRest(rest_event, dense.get(), &run);
     const BallAtRest<BallDynamics<Friction>> rest(dynamics, run.state,
                                                   ClassifyRest(run.state, dynamics));
     result.rest_time = run.t;
@@ -143,8 +212,9 @@ Arrival IntegrateToArrival(const ModelParameters& params, Friction friction,
   IntegratorOptions integrator = IntegratorOptionsFor(params, options.tolerance);
   integrator.max_steps = options.max_steps;
   auto dense = std::make_shared<DenseTrajectory>();
-  const auto arrived = [&dynamics, speed](const BallState& s) {
-    return s.segment<2>(kVx).norm() <= speed || ClassifyRest(s, dynamics) != RestKind::kMoving;
+  RestEvent<BallDynamics<Friction>> rest_event(dynamics, dense.get());
+  const auto arrived = [&rest_event, speed](const BallState& s) {
+    return rest_event(s) || s.segment<2>(kVx).norm() <= speed;
   };
   Arrival a;
   IntegrationResult run;
@@ -164,8 +234,8 @@ Arrival IntegrateToArrival(const ModelParameters& params, Friction friction,
     dense->Append(0.0, 0.0, initial, initial, BallState::Zero(), BallState::Zero());
   }
   if (stepper) a.sensitivity = stepper->sensitivity();
-  const RestKind rest = ClassifyRest(run.state, dynamics);
-  if (run.stopped && run.t > 0.0 && rest == RestKind::kMoving) {
+  const bool at_rest = rest_event.time() >= 0.0;
+  if (run.stopped && run.t > 0.0 && !at_rest) {
     // The speed fell to `speed` within the last step: locate it, and take S there.
     a.time = SpeedCrossing(*dense, speed);
     a.state = dense->At(a.time);
@@ -180,10 +250,10 @@ Arrival IntegrateToArrival(const ModelParameters& params, Friction friction,
       const double rate = v_hat.dot(f.segment<2>(kVx));
       if (rate < 0.0) s += f * (-(v_hat.transpose() * s.middleRows<2>(kVx)) / rate);
     }
-  } else if (run.stopped && rest != RestKind::kMoving) {
+  } else if (run.stopped && at_rest) {
     // Where it stopped inside the last step, as Simulate locates it.
     const double step_start = dense->last_step_start(), step = dense->end_time() - step_start;
-    LocateRestWithinLastStep(dynamics, dense.get(), &run);
+    EndAtRest(rest_event, dense.get(), &run);
     a.time = run.t;
     if (stepper && step > 0.0) {
       a.sensitivity = stepper->SensitivityWithinLastStep((run.t - step_start) / step);

@@ -1,6 +1,5 @@
 #include "tools/billiard/simulate_command.h"
 
-#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -9,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "bench/timing.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/physics/parameters.h"
@@ -95,24 +95,24 @@ void Run(const SimulateArgs& args) {
   if (args.until_speed && !(*args.until_speed >= 0.0 && std::isfinite(*args.until_speed))) {
     throw UsageError("--until-speed must be a finite number >= 0");
   }
-  const auto start = std::chrono::steady_clock::now();
-  // Either to t_end, or to the arrival at a speed with t_end as the limit.
+  // Either to t_end, or to the arrival at a speed with t_end as the limit; timed warm, as a
+  // library caller sees it and as `billiard bench` times it (bench/timing.h).
   physics::SimulationResult result;
   double t = t_end;
   std::optional<bool> arrived;
-  if (args.until_speed) {
-    physics::Arrival a =
-        physics::SimulateArrival(params, initial, *args.until_speed, t_end, options);
-    result.final_state = a.state;
-    result.stats = a.stats;
-    result.trajectory = std::move(a.trajectory);
-    t = a.time;
-    arrived = a.reached;
-  } else {
-    result = physics::Simulate(params, initial, t_end, options);
-  }
-  const double wall_us =
-      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+  const double wall_us = bench::MedianWallUs([&] {
+    if (args.until_speed) {
+      physics::Arrival a =
+          physics::SimulateArrival(params, initial, *args.until_speed, t_end, options);
+      result.final_state = a.state;
+      result.stats = a.stats;
+      result.trajectory = std::move(a.trajectory);
+      t = a.time;
+      arrived = a.reached;
+    } else {
+      result = physics::Simulate(params, initial, t_end, options);
+    }
+  });
 
   if (!args.trajectory_path.empty()) {
     WriteTrajectoryCsv(args.trajectory_path, t, args.sample_dt, 1,
