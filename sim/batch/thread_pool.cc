@@ -1,0 +1,78 @@
+#include "sim/batch/thread_pool.h"
+
+#include <stdexcept>
+
+namespace billiard::batch {
+
+namespace {
+
+// The pool whose batch this thread is working on, if any: a batch started from inside one of
+// its own jobs would wait for the job that waits for it.
+thread_local const ThreadPool* working_for = nullptr;
+
+}  // namespace
+
+int DefaultThreadCount() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores == 0 ? 1 : static_cast<int>(cores);
+}
+
+ThreadPool::ThreadPool(int threads) {
+  if (threads < 1) throw std::invalid_argument("a thread pool needs at least one thread");
+  workers_.reserve(threads - 1);
+  for (int i = 1; i < threads; ++i) workers_.emplace_back([this] { WorkerLoop(); });
+}
+
+ThreadPool::~ThreadPool() {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  for (std::thread& t : workers_) t.join();
+}
+
+void ThreadPool::ForEach(std::size_t n, const std::function<void(std::size_t)>& body) {
+  if (working_for == this) {
+    throw std::logic_error("a job started a batch on the thread pool that runs it");
+  }
+  const std::lock_guard<std::mutex> one_batch(batch_mutex_);
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    body_ = &body;
+    size_ = n;
+    next_ = 0;
+    working_ = workers_.size();
+    ++generation_;
+  }
+  wake_.notify_all();
+  Work();
+  std::unique_lock<std::mutex> lock(mutex_);
+  finished_.wait(lock, [this] { return working_ == 0; });
+  body_ = nullptr;
+}
+
+void ThreadPool::Work() {
+  working_for = this;
+  for (std::size_t i; (i = next_.fetch_add(1)) < size_;) (*body_)(i);
+  working_for = nullptr;
+}
+
+void ThreadPool::WorkerLoop() {
+  std::uint64_t seen = 0;
+  for (;;) {
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+      if (stopping_) return;
+      seen = generation_;
+    }
+    Work();
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (--working_ == 0) finished_.notify_one();
+    }
+  }
+}
+
+}  // namespace billiard::batch
