@@ -117,7 +117,8 @@ void WriteMarkdown(const BenchmarkResult& r, const std::string& path) {
     md << '\n';
   }
   md << "\nFailures, if any, are runs that exceeded the integrator's step budget; see "
-        "results.csv.\n";
+        "results.csv.\n\n## Many shots on all cores\n\n"
+     << BatchScalingMarkdown(r.batch_scaling);
   if (!md) throw std::runtime_error("writing '" + path + "' failed");
 }
 
@@ -222,7 +223,8 @@ nlohmann::json SummaryJson(const BenchmarkResult& r, const std::string& dir) {
           {"scenes", r.scenes.size()},
           {"runs", r.runs.size()},
           {"wall_s", r.wall_s},
-          {"methods", methods}};
+          {"methods", methods},
+          {"batch_scaling", BatchScalingJson(r.batch_scaling)}};
 }
 
 void WriteReport(const BenchmarkResult& result, const std::string& dir) {

@@ -1,5 +1,6 @@
 #include "sim/batch/thread_pool.h"
 
+#include <atomic>
 #include <stdexcept>
 
 namespace billiard::batch {
@@ -32,46 +33,57 @@ ThreadPool::~ThreadPool() {
   for (std::thread& t : workers_) t.join();
 }
 
+struct ThreadPool::Batch {
+  const std::function<void(std::size_t)>* body = nullptr;
+  std::size_t size = 0;
+  std::atomic<std::size_t> next{0};  // the next index to hand out
+  std::atomic<std::size_t> done{0};  // calls returned
+};
+
 void ThreadPool::ForEach(std::size_t n, const std::function<void(std::size_t)>& body) {
   if (working_for == this) {
     throw std::logic_error("a job started a batch on the thread pool that runs it");
   }
   const std::lock_guard<std::mutex> one_batch(batch_mutex_);
+  const auto batch = std::make_shared<Batch>();
+  batch->body = &body;
+  batch->size = n;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
-    body_ = &body;
-    size_ = n;
-    next_ = 0;
-    working_ = workers_.size();
+    batch_ = batch;
     ++generation_;
   }
   wake_.notify_all();
-  Work();
+  Work(*batch);
   std::unique_lock<std::mutex> lock(mutex_);
-  finished_.wait(lock, [this] { return working_ == 0; });
-  body_ = nullptr;
+  finished_.wait(lock, [&] { return batch->done == n; });
+  batch_.reset();
 }
 
-void ThreadPool::Work() {
+void ThreadPool::Work(Batch& batch) {
   working_for = this;
-  for (std::size_t i; (i = next_.fetch_add(1)) < size_;) (*body_)(i);
+  for (std::size_t i; (i = batch.next.fetch_add(1)) < batch.size;) {
+    (*batch.body)(i);
+    if (batch.done.fetch_add(1) + 1 == batch.size) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      finished_.notify_all();
+    }
+  }
   working_for = nullptr;
 }
 
 void ThreadPool::WorkerLoop() {
   std::uint64_t seen = 0;
   for (;;) {
+    std::shared_ptr<Batch> batch;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
       if (stopping_) return;
       seen = generation_;
+      batch = batch_;
     }
-    Work();
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      if (--working_ == 0) finished_.notify_one();
-    }
+    if (batch) Work(*batch);
   }
 }
 

@@ -13,11 +13,11 @@
 // the other jobs run on.
 #pragma once
 
-#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -83,24 +83,26 @@ class ThreadPool {
   }
 
  private:
+  struct Batch;
+
   // Calls body(i) once for every i in [0, n), on all the pool's threads; body must not throw.
+  // Returns once every call has returned, without waiting for threads that took no job: on a
+  // busy machine a worker may wake after the caller has done the whole batch.
   void ForEach(std::size_t n, const std::function<void(std::size_t)>& body);
-  // Takes the current batch's next index until none is left.
-  void Work();
+  // Takes the batch's next index until none is left.
+  void Work(Batch& batch);
   void WorkerLoop();
 
   std::vector<std::thread> workers_;
   std::mutex batch_mutex_;  // one batch at a time
 
-  // The current batch, published under mutex_ with a new generation.
+  // The current batch, published under mutex_ with a new generation; a worker keeps its batch
+  // alive while it looks at it.
   std::mutex mutex_;
   std::condition_variable wake_, finished_;
   std::uint64_t generation_ = 0;
   bool stopping_ = false;
-  const std::function<void(std::size_t)>* body_ = nullptr;
-  std::size_t size_ = 0;
-  std::atomic<std::size_t> next_{0};
-  std::size_t working_ = 0;  // workers still on the current batch
+  std::shared_ptr<Batch> batch_;
 };
 
 }  // namespace billiard::batch
