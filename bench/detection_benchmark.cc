@@ -159,10 +159,6 @@ DetectionBenchmarkResult RunDetectionBenchmark(const std::string& set,
                                                const DetectionBenchmarkOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const OneThread one_thread;
-  // OpenCV builds its 8-bit L*a*b* tables on a process's first conversion (about 0.1 s here),
-  // which no camera's first frame should be charged.
-  cv::Mat lab;
-  cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar::all(0)), lab, cv::COLOR_BGR2Lab);
   DetectionBenchmarkResult result;
   result.set = set;
   if (!options.overlay_dir.empty()) std::filesystem::create_directories(options.overlay_dir);

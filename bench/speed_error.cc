@@ -6,6 +6,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "bench/timing.h"
 #include "sim/batch/simulate_batch.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
@@ -17,9 +18,9 @@ namespace {
 // The references report their progress every this many scenes.
 constexpr std::size_t kReferenceProgressEvery = 10;
 
-// The batch scaling's repeats of each batch (the median is reported): 200 shots take about
-// 15 ms on one core.
-constexpr int kBatchScalingRepeats = 20;
+// The batch scaling's timing: 15 samples of each thread count, about 0.5 s of each (200 shots
+// take about 25 ms on one core).
+constexpr TimingBudget kBatchScalingTiming{500000.0, 15};
 
 std::string Scientific(double x) {
   char text[16];
@@ -58,7 +59,8 @@ std::vector<physics::BallState> Converged(const physics::ModelParameters& p,
   return finals;
 }
 
-// Runs once; cheap methods are repeated until 2 ms have passed and their mean is reported.
+// Timed on the calling thread (MedianWallUs: cheap methods repeated for about 2 ms, the median
+// of the batch means); *result holds the last run.
 MethodRun TimeRun(const physics::ModelParameters& p, const Scene& scene, const Method& method,
                   physics::SimulationResult* result) {
   MethodRun run;
@@ -66,19 +68,10 @@ MethodRun TimeRun(const physics::ModelParameters& p, const Scene& scene, const M
   run.scene = scene.name;
   run.group = scene.group;
   run.kind = model_choice::SceneKindOf(scene.initial, p);
-  using Clock = std::chrono::steady_clock;
   const physics::SimulationOptions options = method.Options();
   try {
-    auto start = Clock::now();
-    *result = physics::Simulate(p, scene.initial, scene.t_end, options);
-    double us = std::chrono::duration<double, std::micro>(Clock::now() - start).count();
-    const int repeats = static_cast<int>(std::clamp(2000.0 / std::max(us, 1e-3), 1.0, 5000.0));
-    if (repeats > 1) {
-      start = Clock::now();
-      for (int i = 0; i < repeats; ++i) physics::Simulate(p, scene.initial, scene.t_end, options);
-      us = std::chrono::duration<double, std::micro>(Clock::now() - start).count() / repeats;
-    }
-    run.wall_us = us;
+    run.wall_us =
+        MedianWallUs([&] { *result = physics::Simulate(p, scene.initial, scene.t_end, options); });
     run.steps = result->stats.steps;
     run.rhs_evals = result->stats.rhs_evals;
   } catch (const std::exception& e) {
@@ -210,12 +203,16 @@ BenchmarkResult RunBenchmark(const physics::ModelParameters& p, const BenchmarkO
                [](const Scene& s) { return s.group == "random"; });
   options.progress("batch scaling on " + std::to_string(random_shots.size()) + " shots");
   result.batch_scaling =
-      MeasureBatchScaling(p, random_shots, {}, options.threads, kBatchScalingRepeats);
+      MeasureBatchScaling(p, random_shots, {}, options.threads, kBatchScalingTiming);
   for (const Method& method : result.methods) {
     for (const std::string& kind : kSceneKinds) {
       result.summaries.push_back(Summarize(method, kind, result.runs));
     }
   }
+  std::vector<Scene> figures;
+  std::copy_if(result.scenes.begin(), result.scenes.end(), std::back_inserter(figures),
+               [](const Scene& s) { return s.group == "figure"; });
+  result.peers = ComparePeers(p, figures, options.progress);
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -1,5 +1,6 @@
 // The speed-against-error benchmark: every method on every scene, timed on one core, its endpoint
-// compared with the same model converged and with the integral model converged.
+// compared with the same model converged and with the integral model converged; and our default
+// method against the peers and the floor on Figs. 6-10 (peer_comparison.h).
 #pragma once
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "bench/batch_scaling.h"
+#include "bench/peer_comparison.h"
 #include "bench/scene_suite.h"
 #include "sim/physics/parameters.h"
 #include "sim/physics/simulator.h"
@@ -35,7 +37,7 @@ struct MethodRun {
   std::string kind;  // SceneKindOf (model_choice.h)
   bool ok = true;
   std::string failure;   // why the run failed, when !ok
-  double wall_us = 0.0;  // mean of repeated runs for the cheap ones
+  double wall_us = 0.0;  // MedianWallUs (timing.h): cheap runs repeated, median of batch means
   long steps = 0, rhs_evals = 0;
   double error_self_m = 0.0;      // endpoint distance from the same model converged
   double error_integral_m = 0.0;  // endpoint distance from the integral model converged
@@ -71,6 +73,7 @@ struct BenchmarkResult {
   double integral_reference_quadrature_error = 0.0;
   std::vector<MethodRun> runs;
   std::vector<MethodSummary> summaries;
+  PeerComparison peers;        // on the "figure" scenes
   BatchScaling batch_scaling;  // the random shots as one batch on 1, 2, ... threads
   double wall_s = 0.0;
 };

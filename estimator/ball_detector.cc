@@ -257,7 +257,9 @@ double ExpectedRadiusPx(const camera::CameraModel& camera, double ball_radius) {
   return ball_radius / camera.MetresPerPixel(centre);
 }
 
-BallDetector::BallDetector(DetectorOptions options) : options_(options) {}
+BallDetector::BallDetector(DetectorOptions options) : options_(options) {
+  PrepareLabConversion();
+}
 
 bool BallDetector::LearnTable(const cv::Mat& image) {
   const cv::Mat bgr = AsBgr(image);

@@ -84,6 +84,7 @@ double ExpectedRadiusPx(const camera::CameraModel& camera, double ball_radius);
 
 class BallDetector {
  public:
+  // The first detector of a process also builds OpenCV's L*a*b* tables (PrepareLabConversion).
   explicit BallDetector(DetectorOptions options = {});
 
   // Learns the table, its cloth and the balls' scale from a BGR (CV_8UC3) or grey (CV_8UC1)

@@ -40,4 +40,13 @@ cv::Vec3f LabOf(const cv::Vec3f& bgr) {
   return lab.at<cv::Vec3f>(0, 0);
 }
 
+void PrepareLabConversion() {
+  static const bool prepared = [] {
+    cv::Mat lab;
+    cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar::all(0)), lab, cv::COLOR_BGR2Lab);
+    return true;
+  }();
+  (void)prepared;
+}
+
 }  // namespace billiard::estimator

@@ -78,4 +78,8 @@ class LabImage {
 // The float L*a*b* of one BGR colour (0..255 per channel).
 cv::Vec3f LabOf(const cv::Vec3f& bgr);
 
+// OpenCV builds the tables of its 8-bit L*a*b* conversion on a process's first one (about 0.2 s
+// on this machine). Builds them, once per process: at start-up, so that no frame waits for them.
+void PrepareLabConversion();
+
 }  // namespace billiard::estimator

@@ -19,6 +19,9 @@ packages=(
   libjchart2d-java
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
+  # bench/peer_solvers.h: the solvers `billiard bench` measures ours against (Boost.Odeint,
+  # header-only; SUNDIALS CVODE)
+  libboost-dev libsundials-dev
   python3 iproute2 procps
   # fuzz/: clang with libFuzzer and the sanitizer runtimes; llvm-14 for llvm-symbolizer
   clang libclang-rt-14-dev llvm-14

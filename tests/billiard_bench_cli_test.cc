@@ -8,6 +8,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -77,6 +79,22 @@ TEST(BilliardBench, QuickRunWritesTheReportAndEveryErrorIsFinite) {
     EXPECT_LE(runs.back(), process_us) << method;
     EXPECT_LE(median_us, m["p95_us"].get<double>()) << method;
   }
+  // Against the peers (bench/peer_comparison.h): Figs. 6-10, both peers reach the endpoint
+  // accuracy somewhere in their sweep, and the report has the table (no timing).
+  const auto& figures = j.at("peers").at("figures");
+  EXPECT_EQ(figures.size(), 5u);
+  for (const auto& f : figures) {
+    for (const char* peer : {"odeint", "cvode"}) {
+      ASSERT_TRUE(f.at(peer).at("found").get<bool>()) << f["scene"] << " " << peer;
+      EXPECT_LE(f[peer]["error_m"].get<double>(), j["peers"]["endpoint_accuracy_m"].get<double>())
+          << f["scene"] << " " << peer;
+    }
+    EXPECT_GT(f.at("floor").at("steps").get<long>(), 0) << f["scene"];
+  }
+  std::ifstream report(dir + "/report.md");
+  const std::string text((std::istreambuf_iterator<char>(report)),
+                         std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("## Against the peers"), std::string::npos);
   // The batch's scaling: the quick run's 20 random shots on 1 and 2 threads (--threads, 2 by
   // default), the same final states on both.
   const auto& scaling = j["batch_scaling"];

@@ -41,7 +41,9 @@ void Run(BenchArgs args) {
 void AddBenchCommand(CLI::App& app) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "bench", "Speed against error of every model and integrator over a seeded scene suite");
+      "bench",
+      "Speed against error of every model and integrator over a seeded scene suite, and our "
+      "default against Odeint, CVODE and the floor on Figs. 6-10");
   cmd->add_flag("--quick", args->quick,
                 "Fewer methods and 20 random shots (under a minute; the test suite runs it)");
   cmd->add_option("--out", args->out, "Directory for report.md, results.csv, speed_vs_error.png")
