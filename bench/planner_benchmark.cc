@@ -7,6 +7,7 @@
 #include "bench/format.h"
 #include "bench/speed_error.h"
 #include "planner/testing/request_suite.h"
+#include "sim/batch/thread_pool.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/physics/simulator.h"
 
@@ -113,16 +114,27 @@ PlannerBenchmarkResult RunPlannerBenchmark(const physics::ModelParameters& p,
   for (int i = 0; i < options.requests; ++i) shots.push_back(suite.Next(i));
   for (const PlannerVariant& variant : PlannerVariants()) {
     for (int i = 0; i < options.requests; ++i) {
-      PlannerRun run{variant.name, i, shots[i], planner::PlanShot(shots[i], p, variant.options)};
-      if (run.plan.status == planner::PlanStatus::kOk) {
-        run.verified_miss_m = VerifiedMiss(p, run.shot, run.plan);
-      }
-      r.runs.push_back(std::move(run));
+      r.runs.push_back(
+          {variant.name, i, shots[i], planner::PlanShot(shots[i], p, variant.options)});
       if ((i + 1) % 100 == 0 || i + 1 == options.requests) {
         options.progress(variant.name + ": " + std::to_string(i + 1) + "/" +
                          std::to_string(options.requests) + " requests");
       }
     }
+  }
+  // Every plan timed, the re-simulations of the plans need no single core.
+  batch::ThreadPool pool;
+  options.progress("re-simulating the plans on " + std::to_string(pool.threads()) + " threads");
+  const auto verified = pool.Map(r.runs.size(), [&](std::size_t i) {
+    const PlannerRun& run = r.runs[i];
+    return run.plan.status == planner::PlanStatus::kOk ? VerifiedMiss(p, run.shot, run.plan) : -1.0;
+  });
+  for (std::size_t i = 0; i < r.runs.size(); ++i) {
+    if (!verified[i].ok()) {
+      throw std::runtime_error("re-simulating the plan of request " +
+                               std::to_string(r.runs[i].request) + " failed: " + verified[i].error);
+    }
+    r.runs[i].verified_miss_m = *verified[i].value;
   }
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -177,6 +177,7 @@ void WriteMarkdown(const BenchmarkResult& r, const std::string& path) {
         "results.csv.\n";
   md << '\n';
   PeersTable(md, r.peers);
+  md << "## Many shots on all cores\n\n" << BatchScalingMarkdown(r.batch_scaling);
   if (!md) throw std::runtime_error("writing '" + path + "' failed");
 }
 
@@ -283,6 +284,7 @@ nlohmann::json SummaryJson(const BenchmarkResult& r, const std::string& dir) {
                             {"wall_s", r.wall_s},
                             {"methods", methods}};
   summary["peers"] = PeerComparisonJson(r.peers);
+  summary["batch_scaling"] = BatchScalingJson(r.batch_scaling);
   return summary;
 }
 

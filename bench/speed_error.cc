@@ -1,20 +1,26 @@
 #include "bench/speed_error.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <iterator>
 #include <stdexcept>
-#include <thread>
 
 #include "bench/timing.h"
+#include "sim/batch/simulate_batch.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 
 namespace billiard::bench {
 
 namespace {
+
+// The references report their progress every this many scenes.
+constexpr std::size_t kReferenceProgressEvery = 10;
+
+// The batch scaling's timing: 15 samples of each thread count, about 0.5 s of each (200 shots
+// take about 25 ms on one core).
+constexpr TimingBudget kBatchScalingTiming{500000.0, 15};
 
 std::string Scientific(double x) {
   char text[16];
@@ -26,44 +32,29 @@ double EndpointDistance(const physics::BallState& a, const physics::BallState& b
   return (a.head<2>() - b.head<2>()).norm();
 }
 
-// Final states of `method` on every scene, computed on `threads` threads.
+// Final states of `method` on every scene, simulated as one batch on `pool`.
 std::vector<physics::BallState> Converged(const physics::ModelParameters& p,
                                           const std::vector<Scene>& scenes, const Method& method,
-                                          int threads, const BenchmarkOptions& options,
+                                          batch::ThreadPool& pool, const BenchmarkOptions& options,
                                           double* quadrature_error) {
-  std::vector<physics::BallState> finals(scenes.size());
-  std::atomic<std::size_t> next{0}, done{0};
-  std::vector<std::string> failures(scenes.size());
-  const auto work = [&] {
-    for (std::size_t i; (i = next++) < scenes.size();) {
-      try {
-        const physics::SimulationResult r =
-            physics::Simulate(p, scenes[i].initial, scenes[i].t_end, method.Options());
-        finals[i] = r.final_state;
-        if (r.quadrature && quadrature_error) *quadrature_error = r.quadrature->error_estimate;
-      } catch (const std::exception& e) {
-        failures[i] = e.what();
-      }
-      ++done;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < std::max(1, threads); ++t) pool.emplace_back(work);
-  std::size_t reported = 0;
-  while (done < scenes.size()) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    if (done >= reported + 10 || done == scenes.size()) {
-      reported = done;
-      options.progress("reference " + method.Name() + ": " + std::to_string(reported) + "/" +
-                       std::to_string(scenes.size()) + " scenes");
-    }
-  }
-  for (std::thread& t : pool) t.join();
+  std::vector<batch::BatchShot> shots;
+  for (const Scene& s : scenes) shots.push_back({s.initial, s.t_end});
+  const auto results = batch::SimulateBatch(
+      p, shots, method.Options(), pool, [&](std::size_t done, std::size_t total) {
+        if (done % kReferenceProgressEvery == 0 || done == total) {
+          options.progress("reference " + method.Name() + ": " + std::to_string(done) + "/" +
+                           std::to_string(total) + " scenes");
+        }
+      });
+  std::vector<physics::BallState> finals;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    if (!failures[i].empty()) {
+    if (!results[i].ok()) {
       throw std::runtime_error("reference " + method.Name() + " failed on " + scenes[i].name +
-                               ": " + failures[i]);
+                               ": " + results[i].error);
     }
+    const physics::SimulationResult& r = *results[i].value;
+    finals.push_back(r.final_state);
+    if (r.quadrature && quadrature_error) *quadrature_error = r.quadrature->error_estimate;
   }
   return finals;
 }
@@ -183,10 +174,11 @@ BenchmarkResult RunBenchmark(const physics::ModelParameters& p, const BenchmarkO
                              0.0};
   result.integral_reference = {physics::Model::kIntegral, physics::Integrator::kRodas4,
                                options.quick ? 1e-8 : 1e-9, 1e-6};
+  batch::ThreadPool pool(options.threads);
   const std::vector<physics::BallState> approx_ref =
-      Converged(p, result.scenes, result.approx_reference, options.threads, options, nullptr);
+      Converged(p, result.scenes, result.approx_reference, pool, options, nullptr);
   const std::vector<physics::BallState> integral_ref =
-      Converged(p, result.scenes, result.integral_reference, options.threads, options,
+      Converged(p, result.scenes, result.integral_reference, pool, options,
                 &result.integral_reference_quadrature_error);
 
   for (const Method& method : result.methods) {
@@ -206,6 +198,12 @@ BenchmarkResult RunBenchmark(const physics::ModelParameters& p, const BenchmarkO
       result.runs.push_back(run);
     }
   }
+  std::vector<Scene> random_shots;
+  std::copy_if(result.scenes.begin(), result.scenes.end(), std::back_inserter(random_shots),
+               [](const Scene& s) { return s.group == "random"; });
+  options.progress("batch scaling on " + std::to_string(random_shots.size()) + " shots");
+  result.batch_scaling =
+      MeasureBatchScaling(p, random_shots, {}, options.threads, kBatchScalingTiming);
   for (const Method& method : result.methods) {
     for (const std::string& kind : kSceneKinds) {
       result.summaries.push_back(Summarize(method, kind, result.runs));

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/batch_scaling.h"
 #include "bench/peer_comparison.h"
 #include "bench/scene_suite.h"
 #include "sim/physics/parameters.h"
@@ -58,7 +59,9 @@ struct BenchmarkOptions {
   bool quick = false;
   int random_shots = 200;
   std::uint32_t seed = 2026;
-  int threads = 2;  // for the references only; every timed run is on one thread
+  // Threads for the references, and the most the batch scaling measures; every other timed run
+  // is on one thread.
+  int threads = 2;
   std::function<void(const std::string&)> progress = [](const std::string&) {};
 };
 
@@ -70,7 +73,8 @@ struct BenchmarkResult {
   double integral_reference_quadrature_error = 0.0;
   std::vector<MethodRun> runs;
   std::vector<MethodSummary> summaries;
-  PeerComparison peers;  // on the "figure" scenes
+  PeerComparison peers;        // on the "figure" scenes
+  BatchScaling batch_scaling;  // the random shots as one batch on 1, 2, ... threads
   double wall_s = 0.0;
 };
 

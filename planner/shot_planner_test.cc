@@ -141,6 +141,46 @@ TEST(ShotPlanner, SensitivityJacobianFindsTheCentralDifferencePlanWithFewerSimul
   EXPECT_LT(a.simulations, b.simulations);
 }
 
+TEST(ShotPlanner, SimulatesEachLaunchOnceAndNewtonNeedsOneRunWithSensitivities) {
+  // Centimetres off (stun, follow and draw, some with side spin): the closed-form launch is run
+  // once, with sensitivities, for its miss and Newton's first step; each correction is one run
+  // more; the plan's prediction is the last run read again; two corrections at most.
+  const ShotRequest shots[] = {
+      Shot({0.3, 0.4}, {1.9, 0.9}, 0.0, SpinStyle::kStun),
+      Shot({0.4, 1.0}, {2.1, 0.3}, 0.3, SpinStyle::kFollow, -15.0),
+      Shot({0.5, 0.3}, {1.7, 1.0}, 0.2, SpinStyle::kDraw, 12.0),
+  };
+  for (const ShotRequest& q : shots) {
+    const ShotPlan plan = PlanShot(q, Paper());
+    ASSERT_EQ(plan.status, PlanStatus::kOk) << plan.reason;
+    EXPECT_GT(plan.closed_form_miss_m, 1e-3);
+    EXPECT_LT(plan.refined_miss_m, PlannerOptions().miss_tolerance);
+    EXPECT_GE(plan.iterations, 1);
+    EXPECT_LE(plan.iterations, 2);
+    EXPECT_EQ(plan.simulations, plan.iterations + 1);
+    PlannerOptions closed_form;
+    closed_form.refine = false;
+    EXPECT_EQ(PlanShot(q, Paper(), closed_form).simulations, 1);
+  }
+}
+
+TEST(ShotPlanner, CeresFinishesWhereNewtonsStepLeavesTheSpeedBounds) {
+  // A short draw with side spin on the pool set (request 447 of seed 3): the closed-form launch
+  // and Newton's step from it are slower than the tip offset allows with that side spin, so
+  // Ceres refines within the bounds and stops at the slowest launch, a little past the target;
+  // more corrections than Newton's three at most are its own.
+  const physics::ModelParameters pool = params::LoadParameters("pool");
+  planner::testing::RequestSuite suite(pool.table, 3);
+  ShotRequest q;
+  for (int i = 0; i <= 447; ++i) q = suite.Next(i);
+  ASSERT_EQ(q.style, SpinStyle::kDraw);
+  ASSERT_NE(q.side_spin, 0.0);
+  const ShotPlan plan = PlanShot(q, pool);
+  ASSERT_EQ(plan.status, PlanStatus::kOk) << plan.reason;
+  EXPECT_GT(plan.iterations, 3);
+  EXPECT_LT(plan.refined_miss_m, PlannerOptions().acceptable_miss);
+}
+
 TEST(ShotPlanner, RefusesBadAndUnreachableRequestsWithAReason) {
   const auto expect_refused = [](const ShotRequest& q, PlanStatus status, const char* words) {
     ASSERT_STRNE(words, "") << "an empty expected reason is found in any reason";

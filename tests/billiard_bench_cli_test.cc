@@ -1,5 +1,6 @@
 // `billiard bench --quick` as a user runs it: the report's files and structure, a finite error for
-// every method on every scene (the figures themselves are the committed full run's).
+// every method on every scene, the batch's scaling (the figures themselves are the committed full
+// run's).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -94,6 +95,17 @@ TEST(BilliardBench, QuickRunWritesTheReportAndEveryErrorIsFinite) {
   const std::string text((std::istreambuf_iterator<char>(report)),
                          std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("## Against the peers"), std::string::npos);
+  // The batch's scaling: the quick run's 20 random shots on 1 and 2 threads (--threads, 2 by
+  // default), the same final states on both.
+  const auto& scaling = j["batch_scaling"];
+  EXPECT_EQ(scaling["shots"], 20);
+  ASSERT_EQ(scaling["runs"].size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& run = scaling["runs"][i];
+    EXPECT_EQ(run["threads"], 1 << i);
+    EXPECT_TRUE(run["identical"].get<bool>());
+    EXPECT_GT(run["shots_per_s"].get<double>(), 0.0);
+  }
 }
 
 }  // namespace

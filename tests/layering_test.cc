@@ -25,6 +25,7 @@ const std::map<std::string, std::set<std::string>>& Layers() {
       {"lcmtypes/node", {"lcmtypes"}},
       {"lcmtypes/testing", {"lcmtypes"}},
       {"sim/physics", {}},
+      {"sim/batch", {"sim/physics"}},
       {"sim/table", {"sim/physics"}},
       {"sim/table/testing", {"sim/table", "sim/physics", "sim/params"}},
       {"sim/params", {"sim/physics", "sim/table"}},
@@ -45,13 +46,13 @@ const std::map<std::string, std::set<std::string>>& Layers() {
        {"estimator", "sim/camera", "sim/physics", "sim/params", "lcmtypes", "lcmtypes/node"}},
       {"fuzz", {"lcmtypes", "lcmtypes/testing"}},
       {"bench",
-       {"sim/physics", "sim/table", "sim/table/testing", "sim/params", "sim/model_choice",
-        "sim/camera", "sim/render", "planner", "planner/testing", "estimator", "estimator/testing",
-        "tests/support"}},
+       {"sim/physics", "sim/batch", "sim/table", "sim/table/testing", "sim/params",
+        "sim/model_choice", "sim/camera", "sim/render", "planner", "planner/testing", "estimator",
+        "estimator/testing", "tests/support"}},
       {"tools/billiard",
-       {"sim/physics", "sim/table", "sim/params", "sim/model_choice", "sim/contact_fit",
-        "sim/camera", "sim/render", "sim/table_sim_node", "lcmtypes", "lcmtypes/node", "planner",
-        "planner/node", "estimator", "estimator/node", "bench"}},
+       {"sim/physics", "sim/batch", "sim/table", "sim/params", "sim/model_choice",
+        "sim/contact_fit", "sim/camera", "sim/render", "sim/table_sim_node", "lcmtypes",
+        "lcmtypes/node", "planner", "planner/node", "estimator", "estimator/node", "bench"}},
       {"tests", {}},  // the cross-module tests may include anything
   };
   return layers;

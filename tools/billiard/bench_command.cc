@@ -54,7 +54,8 @@ void AddBenchCommand(CLI::App& app) {
                   "Random cue shots (default 200, quick 20)");
   cmd->add_option("--seed", args->options.seed, "Seed of the random shots")->capture_default_str();
   cmd->add_option("--threads", args->options.threads,
-                  "Threads for the converged references (timing always uses one)")
+                  "Threads for the converged references, and the most the batch scaling "
+                  "measures (1, 2, 4, ... up to it, at least 2; other timing always uses one)")
       ->capture_default_str();
   cmd->callback([args, cmd] {
     BenchArgs a = *args;
