@@ -1,7 +1,7 @@
 // Our RODAS4 against the off-the-shelf solvers and against the floor, on the same equations
 // (issue 16): the approximate 5-DOF model on the paper's Figs. 6-10, 8 s, endpoints within 1e-6 m.
 //
-// Ours: physics::Simulate with its default options (tolerance 1e-7, rest switch on), what
+// Ours: physics::Simulate with its default options (tolerance 1e-6, rest switch on), what
 // `billiard simulate --json` reports as wall_us.
 //
 // The peers (peer_solvers.h: Boost.Odeint's rosenbrock4, SUNDIALS CVODE's BDF, both with our

@@ -27,8 +27,8 @@ struct PlannerRun {
   int request = 0;  // index in the suite
   planner::ShotRequest shot;
   planner::ShotPlan plan;
-  // Miss of the plan's launch re-simulated with the simulator's defaults (approx model, RODAS4,
-  // tolerance 1e-7), where the speed falls to the final speed; -1 when the plan is not ok.
+  // Miss of the plan's launch re-simulated (approx model, RODAS4, tolerance 1e-7, tighter than
+  // the planner's own), where the speed falls to the final speed; -1 when the plan is not ok.
   double verified_miss_m = -1.0;
 };
 

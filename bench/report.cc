@@ -92,7 +92,7 @@ void PeersTable(std::ostream& md, const PeerComparison& peers) {
      << Sci(kPeerEndpointAccuracy) << " m of its converged one, on one core (median of "
      << kPeerTiming.batches
      << " batches, the four interleaved). Ours: `physics::Simulate` at its defaults (tolerance "
-     << "1e-7, rest switch on), the call `billiard simulate --json` times, as it times it. Boost.Odeint's rosenbrock4 (Ahnert & Mulansky "
+     << "1e-6, rest switch on), the call `billiard simulate --json` times, as it times it. Boost.Odeint's rosenbrock4 (Ahnert & Mulansky "
      << "2011) and SUNDIALS CVODE's BDF with the dense solver (Hindmarsh et al. 2005) run the same "
      << "equations with our analytic Jacobian and our error weights, at the loosest tolerance of "
      << "1e-3 .. 1e-10 (factors of about 3) that reaches the accuracy, against the regularized "

@@ -20,7 +20,7 @@ namespace billiard::planner {
 //                         simulator's default tolerance)}]}],
 //    "non_convergence": [{"case", and the fields of a plan above}]}
 // Simulations are of the approximate 5-DOF model with the simulator's defaults (RODAS4, tolerance
-// 1e-7) over 8 s; plans use PlanShot's defaults on the paper set's table and cue.
+// 1e-6) over 8 s; plans use PlanShot's defaults on the paper set's table and cue.
 nlohmann::json EdgeParameterReport();
 
 }  // namespace billiard::planner
