@@ -53,4 +53,12 @@ std::vector<Scene> SceneSuite(const physics::ModelParameters& p, int random_shot
   return scenes;
 }
 
+std::vector<Scene> ScenesOfGroup(const std::vector<Scene>& scenes, const std::string& group) {
+  std::vector<Scene> of_group;
+  for (const Scene& s : scenes) {
+    if (s.group == group) of_group.push_back(s);
+  }
+  return of_group;
+}
+
 }  // namespace billiard::bench

@@ -25,4 +25,7 @@ struct Scene {
 std::vector<Scene> SceneSuite(const physics::ModelParameters& p, int random_shots,
                               std::uint32_t seed);
 
+// The scenes of one group ("figure", "random" or "hard"), in suite order.
+std::vector<Scene> ScenesOfGroup(const std::vector<Scene>& scenes, const std::string& group);
+
 }  // namespace billiard::bench

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <iterator>
 #include <stdexcept>
 
 #include "bench/timing.h"
@@ -198,9 +197,7 @@ BenchmarkResult RunBenchmark(const physics::ModelParameters& p, const BenchmarkO
       result.runs.push_back(run);
     }
   }
-  std::vector<Scene> random_shots;
-  std::copy_if(result.scenes.begin(), result.scenes.end(), std::back_inserter(random_shots),
-               [](const Scene& s) { return s.group == "random"; });
+  const std::vector<Scene> random_shots = ScenesOfGroup(result.scenes, "random");
   options.progress("batch scaling on " + std::to_string(random_shots.size()) + " shots");
   result.batch_scaling =
       MeasureBatchScaling(p, random_shots, {}, options.threads, kBatchScalingTiming);
@@ -209,10 +206,7 @@ BenchmarkResult RunBenchmark(const physics::ModelParameters& p, const BenchmarkO
       result.summaries.push_back(Summarize(method, kind, result.runs));
     }
   }
-  std::vector<Scene> figures;
-  std::copy_if(result.scenes.begin(), result.scenes.end(), std::back_inserter(figures),
-               [](const Scene& s) { return s.group == "figure"; });
-  result.peers = ComparePeers(p, figures, options.progress);
+  result.peers = ComparePeers(p, ScenesOfGroup(result.scenes, "figure"), options.progress);
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -45,13 +45,6 @@ struct StepAttempt {
   BallState x_new, error, c3, c4;
 };
 
-// Integrates x' = f(x) from x0 at t0 to t_end, or until stop(x) holds after an accepted step
-// (or at t0), with steps attempted by `stepper`:
-//   static constexpr const char* kName; static constexpr int kErrorOrder;  (error ~ h^order)
-//   void Attempt(const BallState& x, double h, StepAttempt* out, IntegrationStats* stats);
-//   void Accept();  (the last attempt became the current state)
-// Appends every accepted step to *dense when dense is non-null. Throws std::runtime_error when
-// the step size underflows or max_steps is exceeded.
 namespace internal {
 
 // x^(-1/order), the step-size factor of an error ratio: for RODAS4's order 4 by two square roots,
@@ -67,6 +60,13 @@ double InverseRoot(double x) {
 
 }  // namespace internal
 
+// Integrates x' = f(x) from x0 at t0 to t_end, or until stop(x) holds after an accepted step
+// (or at t0), with steps attempted by `stepper`:
+//   static constexpr const char* kName; static constexpr int kErrorOrder;  (error ~ h^order)
+//   void Attempt(const BallState& x, double h, StepAttempt* out, IntegrationStats* stats);
+//   void Accept();  (the last attempt became the current state)
+// Appends every accepted step to *dense when dense is non-null. Throws std::runtime_error when
+// the step size underflows or max_steps is exceeded.
 template <class Stepper, class Stop = NeverStop>
 IntegrationResult IntegrateAdaptive(Stepper& stepper, const BallState& x0, double t0, double t_end,
                                     const IntegratorOptions& options, IntegrationStats* stats,

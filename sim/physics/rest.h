@@ -34,13 +34,17 @@ enum class RestKind { kMoving, kStill, kBalancedPivot };
 // about mu m g; a balanced pivot by less than a thousandth of that.
 inline constexpr double kBalancedForceFraction = 0.01;
 
-// Classifies `s` with the thresholds 10 eps_r a on |v|, 10 eps_t a on the slip and
+// The speed below which a ball may be at rest: 10 eps_r a, ten times the width of the rolling
+// resistance's regularization.
+inline double RestSpeed(const ContactParameters& c) { return 10.0 * c.eps_r * c.patch_radius; }
+
+// Classifies `s` with the thresholds RestSpeed (10 eps_r a) on |v|, 10 eps_t a on the slip and
 // kBalancedForceFraction mu g on |dv/dt|.
 template <class Dynamics>
 RestKind ClassifyRest(const BallState& s, const Dynamics& dynamics) {
   const ModelParameters& p = dynamics.parameters();
   const ContactParameters& c = p.contact;
-  const double v_rest = 10.0 * c.eps_r * c.patch_radius;
+  const double v_rest = RestSpeed(c);
   if (s.segment<2>(kVx).squaredNorm() >= v_rest * v_rest) return RestKind::kMoving;
   const double u_rest = 10.0 * c.eps_t * c.patch_radius;
   const double r = p.ball.radius;

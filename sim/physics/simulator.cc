@@ -97,8 +97,7 @@ class RestEvent {
  public:
   RestEvent(const Dynamics& dynamics, const DenseTrajectory* dense)
       : dynamics_(dynamics), dense_(dense) {
-    const ContactParameters& c = dynamics.parameters().contact;
-    near_rest_speed_ = kNearRestFactor * 10.0 * c.eps_r * c.patch_radius;  // ClassifyRest's
+    near_rest_speed_ = kNearRestFactor * RestSpeed(dynamics.parameters().contact);
   }
 
   bool operator()(const BallState& end) {
