@@ -62,10 +62,16 @@ FrictionResultant<T> ResultantFromDenominators(const ContactKinematics<T>& k, co
                                                const T& denom_m, const ContactParameters& c) {
   const double kt = TangentialSpinCoefficient(c);
   const double km = MomentSpinCoefficient(c);
+  // The rolling direction (dc, ds) is the latest input (a square root and a division of its
+  // own): it enters last, and the division by a denominator is a product with its reciprocal,
+  // computed while the numerators wait for it.
+  const T inv_t = 1.0 / denom_t;
+  const T inv_m = 1.0 / denom_m;
+  const T kt_ws = kt * k.ws;
   FrictionResultant<T> f;
-  f.tsx = (k.vsx - kt * k.ds * k.ws) / denom_t;
-  f.tsy = (k.vsy + kt * k.dc * k.ws) / denom_t;
-  f.ms = (km * k.ws - 0.2 * k.ds * k.vsx + 0.2 * k.dc * k.vsy) / denom_m;
+  f.tsx = (k.vsx - k.ds * kt_ws) * inv_t;
+  f.tsy = (k.vsy + k.dc * kt_ws) * inv_t;
+  f.ms = (km * k.ws + 0.2 * (k.dc * k.vsy - k.ds * k.vsx)) * inv_m;
   return f;
 }
 

@@ -117,13 +117,17 @@ class BallDynamics {
                                            const FrictionResultant<T>& f) const {
     const ContactParameters& c = p_.contact;
     const double g = p_.ball.gravity, r = p_.ball.radius, a = c.patch_radius, mu = c.mu;
-    const T mrx = 0.2 * k.ds;  // rolling resistance, eq. 15
-    const T mry = -0.2 * k.dc;
+    // The rolling resistance, eq. 15, is (mrx, mry) = 0.2 (ds, -dc). The constants are folded so
+    // that each acceleration is at most two products and a sum of its inputs (see
+    // ComputeContactKinematics).
+    const double friction = mu * g;
+    const double spin_by_friction = 2.5 * g * mu / r;
+    const double spin_by_rolling = 2.5 * g * a / (r * r) * 0.2;
     Eigen::Matrix<T, 5, 1> du;
-    du[0] = -mu * g * f.tsx;
-    du[1] = -mu * g * f.tsy;
-    du[2] = -2.5 * g / r * (mu * f.tsy - a / r * mrx);
-    du[3] = 2.5 * g / r * (mu * f.tsx + a / r * mry);
+    du[0] = -friction * f.tsx;
+    du[1] = -friction * f.tsy;
+    du[2] = spin_by_rolling * k.ds - spin_by_friction * f.tsy;
+    du[3] = spin_by_friction * f.tsx - spin_by_rolling * k.dc;
     du[4] = -2.5 * g / (r * r) * a * mu * f.ms;
     return du;
   }

@@ -26,9 +26,12 @@ ContactKinematics<T> ComputeContactKinematics(const T& vx, const T& vy, const T&
                                               double radius) {
   using std::sqrt;
   const double inv_a = 1.0 / c.patch_radius;
+  const double radius_over_a = radius * inv_a;
   ContactKinematics<T> k;
-  k.vsx = (vx - radius * wy) * inv_a;
-  k.vsy = (vy + radius * wx) * inv_a;
+  // Each slip is two independent products and a sum: the integrator's stages wait on this
+  // derivative, so its chain of dependent operations is kept short.
+  k.vsx = vx * inv_a - radius_over_a * wy;
+  k.vsy = vy * inv_a + radius_over_a * wx;
   k.ws = wz;
   // The ball is rigid and the cloth deforms, so the rolling velocity is v itself (eq. 27).
   const T vrx = vx * inv_a;
