@@ -21,7 +21,7 @@ namespace internal {
 
 // (|vs|^m + b^m |ws|^m)^(2/m), from vs^2 = |vs|^2 and ws^2, so that it stays smooth for Jets.
 template <typename T>
-T MixedNormSquared(const T& vs2, const T& ws2, double b, double m) {
+EIGEN_ALWAYS_INLINE T MixedNormSquared(const T& vs2, const T& ws2, double b, double m) {
   using std::pow;
   if (m == 2.0) return vs2 + (b * b) * ws2;
   const T sum = pow(vs2, 0.5 * m) + pow(b, m) * pow(ws2, 0.5 * m);
@@ -58,7 +58,7 @@ inline double MomentSpinCoefficient(const ContactParameters& c) { return 3.0 / 1
 
 // Eq. 17 given its two denominators sqrt(Q_T + eps_t^2) and sqrt(Q_M + eps_t^2).
 template <typename T>
-FrictionResultant<T> ResultantFromDenominators(const ContactKinematics<T>& k, const T& denom_t,
+EIGEN_ALWAYS_INLINE FrictionResultant<T> ResultantFromDenominators(const ContactKinematics<T>& k, const T& denom_t,
                                                const T& denom_m, const ContactParameters& c) {
   const double kt = TangentialSpinCoefficient(c);
   const double km = MomentSpinCoefficient(c);
@@ -77,9 +77,10 @@ FrictionResultant<T> ResultantFromDenominators(const ContactKinematics<T>& k, co
 
 }  // namespace internal
 
+// Always inlined, as the rest of the derivative (see BallDynamics::Accelerations).
 template <typename T>
-FrictionResultant<T> ApproximateFriction(const ContactKinematics<T>& k,
-                                         const ContactParameters& c) {
+EIGEN_ALWAYS_INLINE FrictionResultant<T> ApproximateFriction(const ContactKinematics<T>& k,
+                                                             const ContactParameters& c) {
   using std::sqrt;
   const T vs2 = k.vsx * k.vsx + k.vsy * k.vsy;
   const T ws2 = k.ws * k.ws;

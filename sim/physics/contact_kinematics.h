@@ -19,11 +19,14 @@ struct ContactKinematics {
   T dc, ds;    // regularized rolling direction times d                       (eq. 14)
 };
 
-// vx, vy, wx, wy, wz: the five dynamic coordinates of the ball.
+// vx, vy, wx, wy, wz: the five dynamic coordinates of the ball. Always inlined, as the rest of
+// the derivative (see BallDynamics::Accelerations).
 template <typename T>
-ContactKinematics<T> ComputeContactKinematics(const T& vx, const T& vy, const T& wx, const T& wy,
-                                              const T& wz, const ContactParameters& c,
-                                              double radius) {
+EIGEN_ALWAYS_INLINE ContactKinematics<T> ComputeContactKinematics(const T& vx, const T& vy,
+                                                                  const T& wx, const T& wy,
+                                                                  const T& wz,
+                                                                  const ContactParameters& c,
+                                                                  double radius) {
   using std::sqrt;
   const double inv_a = 1.0 / c.patch_radius;
   const double radius_over_a = radius * inv_a;

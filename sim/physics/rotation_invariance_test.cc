@@ -181,9 +181,10 @@ TEST(RotationInvariance, TurnedShotFollowsTheTurnedTrajectory) {
   constexpr double kTEnd = 8.0;
   // While the ball moves: the integrator's error norm is the RMS over components with equal x
   // and y tolerances, so the turned shot takes the same steps, and the two agree to rounding:
-  // 1e-13 measured while sliding and rolling, 2e-10 in the last tenth of a second before a stop,
-  // where the regularized rolling direction (eps_r a) sharpens.
-  constexpr double kWhileMoving = 1e-9;
+  // 1e-13 measured while sliding and rolling, up to 1.1e-9 in the last tenth of a second before a
+  // stop, where the regularized rolling direction (eps_r a) sharpens and amplifies it (2e-10
+  // before wz's tolerance was loosened to the patch's slip, issue 16: longer steps there).
+  constexpr double kWhileMoving = 3e-9;
   for (const Model model : {Model::kApproximate, Model::kIntegral}) {
     SimulationOptions options;
     options.model = model;

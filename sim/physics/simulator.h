@@ -87,9 +87,11 @@ Arrival SimulateArrival(const ModelParameters& params, const BallState& initial,
                         double t_max, const SimulationOptions& options = {},
                         bool with_sensitivity = false);
 
-// Integrator settings for a 5-DOF simulation at the given tolerance (see SimulationOptions); the
-// velocity and spin tolerances are capped at 10 min(eps_t, eps_r) a, the width of the friction
-// law's linear zone, so that tiny regularizations do not make the slip chatter.
+// Integrator settings for a 5-DOF simulation at the given tolerance (see SimulationOptions): the
+// positions to `tolerance` [m], the velocities to the same number in m/s, capped at
+// 10 min(eps_t, eps_r) a, the width of the friction law's linear zone, so that tiny
+// regularizations do not make the slip chatter; wx, wy to that over r and wz to that over a (the
+// same slip of the contact patch).
 IntegratorOptions IntegratorOptionsFor(const ModelParameters& params, double tolerance);
 
 }  // namespace billiard::physics

@@ -112,8 +112,8 @@ class StageMatrix {
     inverse_ = lu_.Inverse();
   }
 
-  // M^-1 r.
-  BallState Solve(const BallState& r) const {
+  // M^-1 r, inlined into the stages, which wait on it.
+  EIGEN_ALWAYS_INLINE BallState Solve(const BallState& r) const {
     if constexpr (kTranslationInvariant) {
       BallState g;
       g.tail<5>() = inverse_ * r.tail<5>();
