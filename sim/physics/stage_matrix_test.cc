@@ -26,15 +26,24 @@ BallState Reference(const StateJacobian& jac, double c, const BallState& r) {
   return (c * StateJacobian::Identity() - jac).fullPivLu().solve(r);
 }
 
-TEST(FixedSizeLu, InvertsLikeFullPivoting) {
+TEST(PivotedInverse, InvertsLikeFullPivoting) {
   std::mt19937 rng(3);
   for (int trial = 0; trial < 100; ++trial) {
     const StateJacobian a = RandomMatrix(&rng);
-    FixedSizeLu<7> lu;
-    lu.Factor(a);
     const StateJacobian exact = a.fullPivLu().inverse();
-    EXPECT_LT((lu.Inverse() - exact).norm(), 1e-9 * exact.norm()) << trial;
+    EXPECT_LT((PivotedInverse<7>(a) - exact).norm(), 1e-9 * exact.norm()) << trial;
   }
+}
+
+// Without row exchanges the first pivot of this matrix is zero.
+TEST(PivotedInverse, ExchangesRowsForAZeroPivot) {
+  Eigen::Matrix3d a;
+  a << 0, 2, 1,  //
+      3, 1, 0,   //
+      1, 0, 4;
+  const Eigen::Matrix3d inverse = PivotedInverse<3>(a);
+  EXPECT_LT((inverse * a - Eigen::Matrix3d::Identity()).norm(), 1e-14);
+  EXPECT_LT((a * inverse - Eigen::Matrix3d::Identity()).norm(), 1e-14);
 }
 
 TEST(StageMatrix, GeneralAndTranslationInvariantSolvesAgree) {
