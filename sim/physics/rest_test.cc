@@ -132,7 +132,7 @@ TEST(Rest, BalancedPivotKeepsTheFullModelsSpinDecay) {
 // the ball rests does not move with where the steps happen to end: 200 seeded shots (0.3-3 m/s,
 // top or back spin up to 1.5 v/r, side spin up to 60 rad/s on two of three) rest within 1 um of
 // their 1e-9 rest point at every tolerance from 1e-6 down, with the pool ball and with the
-// paper's. Measured at 1e-6 / 1e-7 / 1e-8: pool at most 0.59 / 0.04 / 0.005 um, paper 0.43 /
+// paper's. Measured at 1e-6 / 1e-7 / 1e-8: pool at most 0.59 / 0.04 / 0.005 um, paper 0.33 /
 // 0.03 / 0.002 um. Switching at the first window of the criterion, the paper's shot 44 was 2.84 um
 // off at 1e-6 (its coarser trajectory caught a window one ring earlier, where the centre of
 // curvature was the ring's); checked at step ends only, a pool shot was 1.3 um off at 1e-6.
