@@ -20,7 +20,8 @@ constexpr char kProgram[] = "bench_peers";
 int Run(const std::string& params_name) {
   const billiard::physics::ModelParameters p = billiard::params::LoadParameters(params_name);
   const billiard::bench::PeerComparison comparison = billiard::bench::ComparePeers(
-      p, billiard::bench::ScenesOfGroup(billiard::bench::SceneSuite(p, 0, 0), "figure"), [](const std::string& line) { std::cerr << kProgram << ": " << line << '\n'; });
+      p, billiard::bench::ScenesOfGroup(billiard::bench::SceneSuite(p, 0, 0), "figure"),
+      [](const std::string& line) { std::cerr << kProgram << ": " << line << '\n'; });
   nlohmann::json out = billiard::bench::PeerComparisonJson(comparison);
   out["params"] = billiard::params::ParameterSetLabel(p);
   std::cout << out.dump() << std::endl;

@@ -58,8 +58,10 @@ inline double MomentSpinCoefficient(const ContactParameters& c) { return 3.0 / 1
 
 // Eq. 17 given its two denominators sqrt(Q_T + eps_t^2) and sqrt(Q_M + eps_t^2).
 template <typename T>
-EIGEN_ALWAYS_INLINE FrictionResultant<T> ResultantFromDenominators(const ContactKinematics<T>& k, const T& denom_t,
-                                               const T& denom_m, const ContactParameters& c) {
+EIGEN_ALWAYS_INLINE FrictionResultant<T> ResultantFromDenominators(const ContactKinematics<T>& k,
+                                                                   const T& denom_t,
+                                                                   const T& denom_m,
+                                                                   const ContactParameters& c) {
   const double kt = TangentialSpinCoefficient(c);
   const double km = MomentSpinCoefficient(c);
   // The rolling direction (dc, ds) is the latest input (a square root and a division of its

@@ -78,7 +78,7 @@ class BallDynamics {
   // kinematics and friction it calls): these templates are instantiated in every translation unit
   // that simulates, and the linker keeps one copy of each; where the kept copy of the friction had
   // not been inlined, every derivative paid a call and its result through memory, and a
-  // simulation took 30 % longer in one binary than in another (issue 16, bench_peers against
+  // simulation took a third longer in one binary than in another (issue 16, bench_peers against
   // `billiard simulate`).
   template <typename T>
   EIGEN_ALWAYS_INLINE Eigen::Matrix<T, 5, 1> Accelerations(const Eigen::Matrix<T, 5, 1>& u) const {
@@ -121,8 +121,8 @@ class BallDynamics {
   // Eqs. 21-22 from the contact kinematics and the friction resultant: linear in the resultant
   // and in the rolling direction (dc, ds) of the rolling resistance.
   template <typename T>
-  EIGEN_ALWAYS_INLINE Eigen::Matrix<T, 5, 1> AccelerationsFrom(const ContactKinematics<T>& k,
-                                           const FrictionResultant<T>& f) const {
+  EIGEN_ALWAYS_INLINE Eigen::Matrix<T, 5, 1> AccelerationsFrom(
+      const ContactKinematics<T>& k, const FrictionResultant<T>& f) const {
     const ContactParameters& c = p_.contact;
     const double g = p_.ball.gravity, r = p_.ball.radius, a = c.patch_radius, mu = c.mu;
     // The rolling resistance, eq. 15, is (mrx, mry) = 0.2 (ds, -dc). The constants are folded so
