@@ -109,9 +109,11 @@ IntegrationResult IntegrateAdaptive(Stepper& stepper, const BallState& x0, doubl
       ++st.steps;
       stepper.Accept();
       x = step.x_new;
-      if (last) return {x, t_end, false};
-      t += h;
+      t = last ? t_end : t + h;
+      // The last step too: an event inside the step that reaches t_end (a rolling ball's steps
+      // grow to seconds) ends the integration there as anywhere else.
       if (stop(x)) return {x, t, true};
+      if (last) return {x, t_end, false};
       // Gustafsson's predictive controller (as in Hairer and Wanner's RODAS): the ratio of the
       // last two errors predicts the next one, which cuts the rejections where the error changes
       // fast (entering and leaving the stiff phases).

@@ -51,6 +51,25 @@ TEST(Rodas4, StopPredicateEndsTheIntegrationAtTheFirstStepThatMeetsIt) {
   EXPECT_LT(r.t, 100.0);
 }
 
+// The predicate holds only at the end state, reached by the step clipped to t_end: it is asked
+// there too. (It was not: a planner's ball whose speed fell to the arrival speed inside a rolling
+// step of seconds that ended at its time limit was reported as never arriving, 4.25 m from where
+// it started instead of 3.63 m.)
+TEST(Rodas4, StopPredicateIsAskedAfterTheStepThatReachesTheEnd) {
+  const testing::LinearProblem p = StiffProblem();
+  const BallState x0 = BallState::Constant(1.0);
+  const IntegratorOptions options = testing::UniformTolerance(1e-6);
+  const IntegrationResult free_run =
+      IntegrateWith<Rodas4Stepper>(p.system, x0, 0.0, 5.0, options, nullptr);
+  const double end_norm = free_run.state.norm();
+  const auto at_end = [end_norm](const BallState& x) { return x.norm() <= end_norm; };
+  const IntegrationResult r =
+      IntegrateWith<Rodas4Stepper>(p.system, x0, 0.0, 5.0, options, nullptr, nullptr, at_end);
+  EXPECT_TRUE(r.stopped);
+  EXPECT_EQ(r.t, 5.0);
+  EXPECT_EQ(r.state, free_run.state);
+}
+
 TEST(Rodas4, BallThroughTheEndOfSlidingNeedsHundredsOfStepsNotHundredsOfThousands) {
   // The notes measure ~540,000 explicit Dormand-Prince steps on Fig. 6 over 8 s.
   const SimulationResult r =
