@@ -27,7 +27,7 @@ constexpr long kPeerMaxSteps = 1'000'000;
 // change the cost).
 constexpr int kArithmeticStates = 64;
 constexpr double kStageShift = 1.0 / (0.25 * 1e-3);  // [1/s]
-constexpr int kRodas4Solves = 6;       // one per stage, Hairer & Wanner 1996
+constexpr int kRodas4Solves = 6;                     // one per stage, Hairer & Wanner 1996
 
 double Distance(const physics::BallState& a, const physics::BallState& b) {
   return (a.head<2>() - b.head<2>()).norm();
@@ -56,10 +56,10 @@ class StepArithmetic {
       physics::BallState f;
       physics::StateJacobian jac;
       dynamics_.DerivativeAndJacobian(s, &f, &jac);
-      // The factorization and solves RODAS4 uses (sim/physics/stage_matrix.h); each solve feeds
+      // The inversion and solves RODAS4 uses (sim/physics/stage_matrix.h); each solve feeds
       // the next, as the stages do.
       physics::StageMatrix<physics::IsTranslationInvariant<Dynamics>::value> m;
-      m.Factor(jac, kStageShift);
+      m.Invert(jac, kStageShift);
       physics::BallState g = f;
       for (int k = 0; k < kRodas4Solves; ++k) g = m.Solve(g);
       sink_ = sink_ + g.sum();

@@ -15,7 +15,7 @@
 //
 // The floor: what an order-4 L-stable method cannot do without, per step times steps.
 //   per step: one right-hand side with its Jacobian (one DerivativeAndJacobian pass), the
-//     factorization of the stage matrix I/(gamma h) - J and the six solves of a RODAS4 step
+//     inversion of the stage matrix I/(gamma h) - J and the six solves of a RODAS4 step
 //     (Hairer & Wanner 1996), by the same code as RODAS4 (sim/physics/stage_matrix.h),
 //     timed in a tight loop over states along the figure's trajectory; RODAS4's five further
 //     right-hand sides per step are left out, as the issue defines it;

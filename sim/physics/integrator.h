@@ -113,7 +113,7 @@ IntegrationResult IntegrateAdaptive(Stepper& stepper, const BallState& x0, doubl
       // The last step too: an event inside the step that reaches t_end (a rolling ball's steps
       // grow to seconds) ends the integration there as anywhere else.
       if (stop(x)) return {x, t, true};
-      if (last) return {x, t_end, false};
+      if (last) return {x, t, false};
       // Gustafsson's predictive controller (as in Hairer and Wanner's RODAS): the ratio of the
       // last two errors predicts the next one, which cuts the rejections where the error changes
       // fast (entering and leaving the stiff phases).

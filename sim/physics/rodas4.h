@@ -8,7 +8,7 @@
 // An explicit method is limited by stability to steps of a few microseconds for the whole rolling
 // phase (about 540,000 steps for Fig. 6); an L-stable linearly implicit method damps the stiff
 // slip mode at any step size, so its step is set by accuracy alone and grows to tens of
-// milliseconds while the ball rolls. Rosenbrock methods need no Newton iteration, only one LU of
+// milliseconds while the ball rolls. Rosenbrock methods need no Newton iteration, only one inverse of
 // the 7x7 matrix I/(gamma h) - J per step (of its 5x5 block for the ball: stage_matrix.h), and J
 // is exact (hand-derived for the approximate model, automatic differentiation for the integral
 // one: ball_dynamics.h).
@@ -64,7 +64,7 @@ class Rodas4Stepper {
     }
     st->rhs_evals += 5;
     StageMatrix<IsTranslationInvariant<System>::value> m;
-    m.Factor(jac_, 1.0 / (gamma * h));
+    m.Invert(jac_, 1.0 / (gamma * h));
     const BallState& f0 = f0_;
     const double inv_h = 1.0 / h;
 

@@ -53,12 +53,12 @@ TEST(StageMatrix, GeneralAndTranslationInvariantSolvesAgree) {
     const BallState r = RandomMatrix(&rng).col(1);
     const double c = std::pow(10.0, trial % 8 - 2);
     StageMatrix<false> general;
-    general.Factor(jac, c);
+    general.Invert(jac, c);
     const BallState exact = Reference(jac, c, r);
     EXPECT_LT((general.Solve(r) - exact).norm(), 1e-9 * exact.norm()) << trial;
     jac.leftCols<2>().setZero();  // the dynamics ignore X and Y
     StageMatrix<true> structured;
-    structured.Factor(jac, c);
+    structured.Invert(jac, c);
     const BallState exact_structured = Reference(jac, c, r);
     EXPECT_LT((structured.Solve(r) - exact_structured).norm(), 1e-9 * exact_structured.norm())
         << trial;
