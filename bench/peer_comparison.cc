@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sim/physics/ball_dynamics.h"
+#include "sim/physics/rodas4.h"
 #include "sim/physics/simulator.h"
 #include "sim/physics/stage_matrix.h"
 #include "sim/physics/trajectory.h"
@@ -20,14 +21,13 @@ constexpr double kConvergedTolerance = 1e-10;
 // A peer gives up on a tolerance after this many attempted steps (the sweep's loosest tolerances
 // are allowed to fail).
 constexpr long kPeerMaxSteps = 1'000'000;
-// The floor's per-step arithmetic: states sampled along the figure's trajectory, so that it is
-// not timed on one state the branch predictor has learned (held in the timed object itself, not
-// on the heap: where the heap puts them moved the time by up to 2x from run to run); the shift
-// 1/(gamma h) of the stage matrix, for RODAS4's gamma = 0.25 and a 1 ms step (its value does not
-// change the cost).
+// The per-step arithmetic (the floor's and a whole RODAS4 step's): states sampled along the
+// figure's trajectory, so that it is not timed on one state the branch predictor has learned
+// (held in the timed object itself, not on the heap: where the heap puts them moved the time by
+// up to 2x from run to run); a 1 ms step, whose value does not change the cost.
 constexpr int kArithmeticStates = 64;
-constexpr double kStageShift = 1.0 / (0.25 * 1e-3);  // [1/s]
-constexpr int kRodas4Solves = 6;                     // one per stage, Hairer & Wanner 1996
+constexpr double kArithmeticStep = 1e-3;  // [s]
+constexpr int kRodas4Solves = 6;          // one per stage, Hairer & Wanner 1996
 
 double Distance(const physics::BallState& a, const physics::BallState& b) {
   return (a.head<2>() - b.head<2>()).norm();
@@ -40,7 +40,8 @@ physics::SimulationOptions OurOptions(double tolerance, bool rest_switch) {
   return o;
 }
 
-// The floor's per-step arithmetic over states along a trajectory: one call is one pass over them.
+// The per-step arithmetic over states along a trajectory: one call of either pass is one pass
+// over them.
 class StepArithmetic {
  public:
   StepArithmetic(const physics::ModelParameters& p, const physics::Trajectory& trajectory,
@@ -51,23 +52,37 @@ class StepArithmetic {
     }
   }
 
-  void operator()() {
+  // The floor's: one right-hand side with its Jacobian, the stage matrix inverted and six
+  // solves, each feeding the next as the stages do, by RODAS4's own code (stage_matrix.h).
+  void Floor() {
     for (const physics::BallState& s : states_) {
       physics::BallState f;
       physics::StateJacobian jac;
       dynamics_.DerivativeAndJacobian(s, &f, &jac);
-      // The inversion and solves RODAS4 uses (sim/physics/stage_matrix.h); each solve feeds
-      // the next, as the stages do.
       physics::StageMatrix<physics::IsTranslationInvariant<Dynamics>::value> m;
-      m.Invert(jac, kStageShift);
+      m.Invert(jac, 1.0 / (Stepper::kGamma * kArithmeticStep));
       physics::BallState g = f;
       for (int k = 0; k < kRodas4Solves; ++k) g = m.Solve(g);
       sink_ = sink_ + g.sum();
     }
   }
 
+  // A whole RODAS4 step attempt (sim/physics/rodas4.h): the floor's arithmetic, the five further
+  // right-hand sides and the stage sums; no error control, dense output or event search.
+  void Rodas4() {
+    Stepper stepper(dynamics_);
+    physics::StepAttempt attempt;
+    physics::IntegrationStats stats;
+    for (const physics::BallState& s : states_) {
+      stepper.Attempt(s, kArithmeticStep, &attempt, &stats);
+      stepper.Accept();
+      sink_ = sink_ + attempt.x_new.sum();
+    }
+  }
+
  private:
   using Dynamics = physics::BallDynamics<physics::ApproximateFrictionModel>;
+  using Stepper = physics::Rodas4Stepper<Dynamics>;
   const Dynamics dynamics_;
   std::array<physics::BallState, kArithmeticStates> states_;
   volatile double sink_ = 0.0;  // every result feeds it, so that nothing is optimised away
@@ -140,7 +155,7 @@ FigureComparison CompareOnFigure(const physics::ModelParameters& p, const Scene&
   physics::SimulationResult ours;
   std::vector<std::function<void()>> timed = {
       [&] { ours = physics::Simulate(p, scene.initial, scene.t_end, defaults); },
-      [&] { arithmetic(); }};
+      [&] { arithmetic.Floor(); }, [&] { arithmetic.Rodas4(); }};
   if (fig.odeint.found) timed.push_back([&] { fig.odeint.run = odeint_run(); });
   if (fig.cvode.found) timed.push_back([&] { fig.cvode.run = cvode_run(); });
   const std::vector<double> wall_us = MedianWallUsInterleaved(timed, kPeerTiming);
@@ -150,7 +165,8 @@ FigureComparison CompareOnFigure(const physics::ModelParameters& p, const Scene&
   fig.ours.error_m = Distance(ours.final_state, ours_converged.final_state);
   fig.floor.step_us = wall_us[1] / kArithmeticStates;
   fig.floor.wall_us = fig.floor.steps * fig.floor.step_us;
-  std::size_t next = 2;
+  fig.floor.rodas4_step_us = wall_us[2] / kArithmeticStates;
+  std::size_t next = 3;
   if (fig.odeint.found) fig.odeint.wall_us = wall_us[next++];
   if (fig.cvode.found) fig.cvode.wall_us = wall_us[next++];
   return fig;
@@ -187,6 +203,10 @@ FloorSteps FewestAcceptedSteps(const physics::ModelParameters& p, const Scene& s
 }
 
 double Ratio(double ours_us, double other_us) { return other_us > 0.0 ? ours_us / other_us : 0.0; }
+
+double OursOverFloorFromArithmetic(const FigureComparison& f) {
+  return Ratio(f.ours.stats.steps * f.floor.rodas4_step_us, f.floor.wall_us);
+}
 
 PeerComparison ComparePeers(const physics::ModelParameters& p, const std::vector<Scene>& figures,
                             const std::function<void(const std::string&)>& progress) {
@@ -230,10 +250,12 @@ nlohmann::json PeerComparisonJson(const PeerComparison& comparison) {
           {{"steps", f.floor.steps},
            {"tolerance", f.floor.tolerance},
            {"step_us", f.floor.step_us},
-           {"wall_us", f.floor.wall_us}}},
+           {"wall_us", f.floor.wall_us},
+           {"rodas4_step_us", f.floor.rodas4_step_us}}},
          {"ours_over_odeint", over_odeint},
          {"ours_over_cvode", Ratio(f.ours.wall_us, f.cvode.wall_us)},
          {"ours_over_floor", over_floor},
+         {"ours_over_floor_from_arithmetic", OursOverFloorFromArithmetic(f)},
          {"odeint_target_met", f.odeint.found && over_odeint <= kTargetOursOverOdeint},
          {"floor_target_met", over_floor <= kTargetOursOverFloor}});
   }

@@ -110,10 +110,12 @@ TEST(PeerComparison, ReportsBothPeersAndTheFloorOnAFigure) {
   }
   EXPECT_GT(f.floor.steps, 0);
   EXPECT_GT(f.floor.step_us, 0.0);
+  EXPECT_GT(f.floor.rodas4_step_us, 0.0);
   EXPECT_GT(f.ours.wall_us, 0.0);
   const nlohmann::json j = PeerComparisonJson(c);
   ASSERT_EQ(j.at("figures").size(), 1u);
-  for (const char* key : {"ours_over_odeint", "ours_over_cvode", "ours_over_floor"}) {
+  for (const char* key : {"ours_over_odeint", "ours_over_cvode", "ours_over_floor",
+                          "ours_over_floor_from_arithmetic"}) {
     EXPECT_GT(j["figures"][0].at(key).get<double>(), 0.0) << key;
   }
 }

@@ -32,11 +32,12 @@ class Rodas4Stepper {
  public:
   static constexpr const char* kName = "RODAS4";
   static constexpr int kErrorOrder = 4;  // the embedded solution is of order 3
+  // The stage matrix is I/(kGamma h) - J.
+  static constexpr double kGamma = 0.25;
 
   explicit Rodas4Stepper(const System& system) : system_(system) {}
 
   void Attempt(const BallState& x, double h, StepAttempt* out, IntegrationStats* st) {
-    constexpr double gamma = 0.25;
     // The stage times (0.386, 0.21, 0.63, 1) do not enter: the ball's equations are autonomous.
     constexpr double a21 = 1.544;
     constexpr double a31 = 0.9466785280815826, a32 = 0.2557011698983284;
@@ -64,7 +65,7 @@ class Rodas4Stepper {
     }
     st->rhs_evals += 5;
     StageMatrix<IsTranslationInvariant<System>::value> m;
-    m.Invert(jac_, 1.0 / (gamma * h));
+    m.Invert(jac_, 1.0 / (kGamma * h));
     const BallState& f0 = f0_;
     const double inv_h = 1.0 / h;
 
