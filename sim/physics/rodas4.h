@@ -8,9 +8,9 @@
 // An explicit method is limited by stability to steps of a few microseconds for the whole rolling
 // phase (about 540,000 steps for Fig. 6); an L-stable linearly implicit method damps the stiff
 // slip mode at any step size, so its step is set by accuracy alone and grows to tens of
-// milliseconds while the ball rolls. Rosenbrock methods need no Newton iteration, only one inverse of
-// the 7x7 matrix I/(gamma h) - J per step (of its 5x5 block for the ball: stage_matrix.h), and J
-// is exact (hand-derived for the approximate model, automatic differentiation for the integral
+// milliseconds while the ball rolls. Rosenbrock methods need no Newton iteration, only one inverse
+// of the 7x7 matrix I/(gamma h) - J per step (of its 5x5 block for the ball: stage_matrix.h), and
+// J is exact (hand-derived for the approximate model, automatic differentiation for the integral
 // one: ball_dynamics.h).
 #pragma once
 

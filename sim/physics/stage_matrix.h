@@ -38,9 +38,9 @@ struct IsTranslationInvariant<System, std::void_t<decltype(System::kTranslationI
 // The inverse of a fixed-size matrix by Gauss-Jordan elimination with partial pivoting, in place
 // (Golub and Van Loan 2013, section 3.2.11; its accuracy is that of the LU-based inverse,
 // Higham 2002, section 14.4), the loops unrolled (GCC leaves nested loops rolled by itself, which
-// had cost the LU this replaced 44 ns a 5x5 solve, not 8). One sweep of n eliminations, where an LU and the inverse from
-// it are three dependent sweeps: 94 ns instead of 105 for the 5x5 block along Fig. 10, measured
-// chained, and 4-6 % of a simulation. A singular matrix gives an infinite or NaN inverse, and the
+// had cost the LU this replaced 44 ns a 5x5 solve, not 8). One sweep of n eliminations, where an
+// LU and the inverse from it are three dependent sweeps: 94 ns instead of 105 for the 5x5 block
+// along Fig. 10, measured chained, and 4-6 % of a simulation. A singular matrix gives an infinite or NaN inverse, and the
 // step controller rejects the step.
 template <int N>
 Eigen::Matrix<double, N, N> PivotedInverse(Eigen::Matrix<double, N, N> a) {
