@@ -60,34 +60,82 @@ Eigen::Vector2d ClothSlip(const BallState& s, double radius) {
   return {s[kVx] - radius * s[kWy], s[kVy] + radius * s[kWx]};
 }
 
+MotionPhase PhaseOf(const BallState& s, double radius) {
+  if (ClothSlip(s, radius).norm() > kRollingSlip) return MotionPhase::kSliding;
+  if (s.segment<2>(kVx).norm() > kStillSpeed) return MotionPhase::kRolling;
+  return std::abs(s[kWz]) > kStillSpin ? MotionPhase::kSpinning : MotionPhase::kStationary;
+}
+
+void MotionSegment::StopSpinAt() {
+  const double spin = std::abs(start_[kWz]);
+  spin_stop_ = cloth_.spin_decel > 0.0
+                   ? spin / cloth_.spin_decel
+                   : (spin > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+}
+
 MotionSegment::MotionSegment(const ClothParameters& cloth, double start_time,
                              const BallState& state)
-    : cloth_(cloth), start_time_(start_time), start_(state) {
+    : cloth_(cloth), phase_(PhaseOf(state, cloth.radius)), start_time_(start_time), start_(state) {
+  StopSpinAt();
   const Eigen::Vector2d v = velocity();
   const Eigen::Vector2d u = ClothSlip(state, cloth.radius);
-  const double spin = std::abs(state[kWz]);
-  spin_stop_ = cloth.spin_decel > 0.0
-                   ? spin / cloth.spin_decel
-                   : (spin > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
   double duration = std::numeric_limits<double>::infinity();
-  if (u.norm() > kRollingSlip) {
-    phase_ = MotionPhase::kSliding;
-    slip_direction_ = u.normalized();
-    acceleration_ = -cloth.mu_slide * cloth.gravity * slip_direction_;
-    duration = 2.0 * u.norm() / (7.0 * cloth.mu_slide * cloth.gravity);  // Jaroukh 2019, eq. 8
-  } else if (v.norm() > kStillSpeed) {
-    phase_ = MotionPhase::kRolling;
-    const double decel = 5.0 / 7.0 * cloth.mu_roll * cloth.gravity;
-    acceleration_ = -decel * v.normalized();
-    if (decel > 0.0) duration = v.norm() / decel;
-  } else if (spin > kStillSpin) {
-    phase_ = MotionPhase::kSpinning;
-    duration = spin_stop_;
-  } else {
-    phase_ = MotionPhase::kStationary;
-    start_.segment<4>(kVx).setZero();
-    start_[kWz] = 0.0;
+  switch (phase_) {
+    case MotionPhase::kSliding:
+      slip_direction_ = u.normalized();
+      acceleration_ = -cloth.mu_slide * cloth.gravity * slip_direction_;
+      duration = 2.0 * u.norm() / (7.0 * cloth.mu_slide * cloth.gravity);  // Jaroukh 2019, eq. 8
+      break;
+    case MotionPhase::kRolling: {
+      const double decel = 5.0 / 7.0 * cloth.mu_roll * cloth.gravity;
+      acceleration_ = -decel * v.normalized();
+      if (decel > 0.0) duration = v.norm() / decel;
+      break;
+    }
+    case MotionPhase::kSpinning:
+      duration = spin_stop_;
+      break;
+    default:
+      start_.segment<4>(kVx).setZero();
+      start_[kWz] = 0.0;
+      break;
   }
+  end_time_ = start_time + duration;
+  max_acceleration_ = acceleration_.norm();
+}
+
+MotionSegment::MotionSegment(const ClothParameters& cloth, double start_time,
+                             const BallState& state, const Eigen::Vector2d& acceleration,
+                             double longest)
+    : cloth_(cloth),
+      phase_(PhaseOf(state, cloth.radius)),
+      start_time_(start_time),
+      start_(state),
+      acceleration_(acceleration),
+      held_(true) {
+  StopSpinAt();
+  double duration = longest;
+  if (phase_ == MotionPhase::kSliding) {
+    const Eigen::Vector2d u = ClothSlip(state, cloth.radius);
+    slip_direction_ = u.normalized();
+    // u' = a + r z x w' = a - 5/2 mu_s g u_hat: the slip is least where u . u' = 0.
+    const Eigen::Vector2d slip_rate =
+        acceleration - 2.5 * cloth.mu_slide * cloth.gravity * slip_direction_;
+    if (u.dot(slip_rate) < 0.0) duration = std::min(duration, -u.dot(slip_rate) / slip_rate.squaredNorm());
+  } else if (phase_ != MotionPhase::kRolling && acceleration.norm() > 0.0) {
+    phase_ = MotionPhase::kRolling;  // set moving from rest by the contact forces
+  }
+  const Eigen::Vector2d v = velocity();
+  const double along = v.dot(acceleration);
+  if (along < 0.0) {
+    // Rolling, the speed is least where v . a = 0 (past it the rolling resistance, taken along
+    // the first direction, would drive the ball); sliding, the velocity turns from its first
+    // direction where v . v0 = 0 (past it a cushion's friction would drive the ball).
+    duration = std::min(duration, phase_ == MotionPhase::kRolling
+                                      ? -along / acceleration.squaredNorm()
+                                      : -v.squaredNorm() / along);
+  }
+  if (phase_ == MotionPhase::kSpinning) duration = std::min(duration, spin_stop_);
   end_time_ = start_time + duration;
   max_acceleration_ = acceleration_.norm();
 }
@@ -118,7 +166,7 @@ BallState MotionSegment::At(double t) const {
   s.segment<2>(kVx) += acceleration_ * tau;
   s[kWz] -= Sign(start_[kWz]) * cloth_.spin_decel * std::min(tau, spin_stop_);
   if (tau >= spin_stop_) s[kWz] = 0.0;
-  const bool at_end = t >= end_time_;
+  const bool at_end = t >= end_time_ && !held_;  // a held motion ends where the forces change
   switch (phase_) {
     case MotionPhase::kSliding: {
       // dw_xy/dt = 5/2 mu_s g / r (z x u_hat); at the end the contact rolls, exactly.

@@ -45,12 +45,31 @@ struct ClothParameters {
   static ClothParameters From(const physics::ModelParameters& p);
 };
 
+// A slip above this is a slide; below it, the regularized 5-DOF contact's residue of one, or a
+// ball the closed form rolls.
+inline constexpr double kSlideSlip = 1e-3;  // [m/s]
+
+// The closed form's phase of a ball in state s: sliding while its contact point slips, rolling
+// while it moves, spinning in place while wz turns, else stationary (never kFiveDof).
+MotionPhase PhaseOf(const physics::BallState& s, double radius);
+
 // One phase of a ball's motion, from `start_time` to `end_time` (the next transition; infinite
 // for a ball at rest). Times are the table's; the polynomial's variable is tau = t - start_time.
 class MotionSegment {
  public:
   // The phase a ball in `state` is in, and its motion from `start_time` until the phase ends.
   MotionSegment(const ClothParameters& cloth, double start_time, const physics::BallState& state);
+
+  // A ball held in contact (`sim/table/held_contacts.h`): its centre moves with the constant
+  // `acceleration` that the cloth and the contact forces give it, its spin as in its phase
+  // (PhaseOf; a ball at rest that the forces move rolls), until the first of `longest` later,
+  // the least of its slip (sliding: the slip's direction is taken as fixed, so it ends there)
+  // and the turn of its velocity (the forces that oppose its direction, rolling resistance and a
+  // cushion's friction, would drive it past that: rolling, at its least speed; sliding, where it
+  // turns square to its first direction). No phase end is snapped to: the contact forces are
+  // solved again at the end.
+  MotionSegment(const ClothParameters& cloth, double start_time, const physics::BallState& state,
+                const Eigen::Vector2d& acceleration, double longest);
 
   // The 5-DOF model with `options` from `start_time` until the ball rests, or `horizon` later.
   // At its end the ball is at rest (v = 0, w_xy = 0; wz as the model left it) unless the horizon
@@ -60,6 +79,8 @@ class MotionSegment {
 
   // Whether the centre moves on a parabola (position(), velocity(), acceleration() hold).
   bool closed_form() const { return trajectory_ == nullptr; }
+  // Whether the motion is that of a ball held in contact.
+  bool held() const { return held_; }
 
   MotionPhase phase() const { return phase_; }
   double start_time() const { return start_time_; }
@@ -78,6 +99,8 @@ class MotionSegment {
   const Eigen::Vector2d& acceleration() const { return acceleration_; }
 
  private:
+  void StopSpinAt();  // sets spin_stop_ from the start state's wz
+
   ClothParameters cloth_;
   MotionPhase phase_;
   double start_time_;
@@ -87,6 +110,7 @@ class MotionSegment {
   Eigen::Vector2d acceleration_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d slip_direction_ = Eigen::Vector2d::Zero();  // sliding: u / |u|
   double max_acceleration_ = 0.0;
+  bool held_ = false;
   std::shared_ptr<const physics::Trajectory> trajectory_;  // the 5-DOF motion, from tau = 0
   physics::BallState end_ = physics::BallState::Zero();    // the 5-DOF motion's last state
 };

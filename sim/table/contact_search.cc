@@ -29,7 +29,9 @@ Eigen::Vector2d PositionAt(const Parabola& q, double tau) {
   return q.p + q.v * tau + 0.5 * q.a * tau * tau;
 }
 
-double SafeStep(double gap, double speed, double accel) {
+double SafeStep(double gap, double closing, double accel) {
+  if (!std::isfinite(gap)) return gap;
+  const double speed = std::max(closing, 0.0);
   return 2.0 * gap / (speed + std::sqrt(speed * speed + 2.0 * accel * gap));
 }
 
@@ -44,8 +46,8 @@ Clearance ElementClearance(const TableGeometry& table, double r, const BallState
       const Eigen::Vector2d along = line.b - line.a;
       const double s_along = (p - line.a).dot(along) / along.squaredNorm();
       if (s_along < 0.0 || s_along > 1.0) {  // past an end: no nearer than the end
-        const Eigen::Vector2d end = s_along < 0.0 ? line.a : line.b;
-        return {(p - end).norm() - r, 0.0, type, index};
+        const Eigen::Vector2d out = p - (s_along < 0.0 ? line.a : line.b);
+        return {out.norm() - r, -v.dot(out) / out.norm(), type, index};
       }
       // Behind the nose line (the ball went through it) the gap is negative, so a search that
       // lands past the contact sees it; farther behind than a diameter is over a pocket.
@@ -69,12 +71,19 @@ Clearance ElementClearance(const TableGeometry& table, double r, const BallState
   }
 }
 
-Clearance BoundaryClearance(const TableGeometry& table, double r, const BallState& s) {
+Clearance BoundaryClearance(const TableGeometry& table, double r, const BallState& s,
+                            double accel) {
   Clearance nearest, touching;
+  double least = kInfinity;
   const auto consider = [&](EventType type, std::size_t count) {
     for (std::size_t k = 0; k < count; ++k) {
       const Clearance c = ElementClearance(table, r, s, type, k);
-      if (c.gap < nearest.gap) nearest = c;
+      if (!std::isfinite(c.gap)) continue;
+      const double advance = Advance(c, accel);
+      if (advance < least) {
+        least = advance;
+        nearest = c;
+      }
       if (c.gap <= kContactTolerance && c.closing > kSlowImpact && touching.index < 0) {
         touching = c;
       }

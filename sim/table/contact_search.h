@@ -69,18 +69,21 @@ Eigen::Vector2d PositionAt(const Parabola& q, double tau);
 
 // The first tau in [0, window] where f reaches 0 while decreasing (`sign` = -1; +1: while
 // increasing) faster than kContactSpeed (a root where the bodies graze, or touch and part, is
-// none) and `accept` holds. At f(0) within `contact` of 0 (touching) the way it moves is
-// the slope at kContactHorizon (or the window's end, where a motion changes): touching bodies
-// that close within it faster than kContactSpeed (f' = `speed_scale` times the closing speed),
-// by their speed or their accelerations, are an event at once, so none passes through another.
+// none) and `accept` holds. At f(0) within `contact` of 0 (touching) or past it (overlapping)
+// the way it moves is the slope at kContactHorizon (or the window's end, where a motion
+// changes): touching bodies that close within it faster than kContactSpeed (f' = `speed_scale`
+// times the closing speed), by their speed or their accelerations, are an event at once, so none
+// passes through another. An f that is identically zero (a ball rolling along a cushion it
+// touches, or two balls held together) keeps its bodies touching: no event.
 template <typename Accept>
 double FirstCrossing(const Quartic& f, double window, double sign, double contact,
                      double speed_scale, const Accept& accept) {
-  if (std::abs(f[0]) <= contact) {
+  if (sign * f[0] >= -contact) {
     const double h = std::min(kContactHorizon, window);
     const double slope = f[1] + h * (2.0 * f[2] + h * (3.0 * f[3] + h * 4.0 * f[4]));
     if (sign * slope > speed_scale * kContactSpeed && accept(0.0)) return 0.0;
   }
+  if (std::all_of(f.begin(), f.end(), [](double c) { return c == 0.0; })) return kInfinity;
   std::array<double, 4> roots;
   const int n = RootsInInterval(f, 0.0, window, &roots);
   for (int k = 0; k < n; ++k) {
@@ -92,14 +95,17 @@ double FirstCrossing(const Quartic& f, double window, double sign, double contac
 }
 
 // Conservative advancement, for motions that are no polynomial (the 5-DOF model): a clearance
-// can close no faster than `speed` + `accel` t (the bodies' speeds now and the bound on their
-// accelerations), so no contact comes sooner than the root of speed t + accel t^2 / 2 = gap.
-double SafeStep(double gap, double speed, double accel);
+// whose bodies close at `closing` now can close no faster than closing + accel t (`accel` the
+// bound on their relative acceleration: the distance between convex bodies has a second
+// derivative of at least minus that), so no contact comes sooner than the root of
+// closing t + accel t^2 / 2 = gap. A clearance that opens (closing < 0) is taken as still.
+double SafeStep(double gap, double closing, double accel);
 
-// The most steps a search by advancement takes before it gives up (std::runtime_error): near a
-// contact each step closes a fixed part of the clearance, and a landing try ends most searches
-// within a few dozen.
-inline constexpr int kMaxAdvances = 100000;
+// How far a 5-DOF ball pressed against a body by its accelerations alone (side spin curving it
+// into a ball it rolls past) may overlap it before the push is met: a push closes at no speed,
+// so its contact could otherwise not be told from a touch that parts, and met at every
+// nanosecond it would be met millions of times.
+inline constexpr double kPushOverlap = 1e-7;  // [m]
 
 // Touching bodies that are not closing are passed by at least this long a step.
 inline constexpr double kSmallestAdvance = 1e-9;  // [s]
@@ -112,24 +118,38 @@ struct Clearance {
   int index = -1;
 };
 
-// How far a 5-DOF ball pressed against a body by its accelerations alone (side spin curving it
-// into a ball it rolls past) may overlap it before the push is met: a push closes at no speed,
-// so its contact could otherwise not be told from a touch that parts, and met at every
-// nanosecond it would be met millions of times.
-inline constexpr double kPushOverlap = 1e-7;  // [m]
+// The safe advance from clearance c: touching and not (yet) closing, the time the overlap allowed
+// takes to fill (at least half of it, so that a push sliding along at full overlap is passed
+// too); else the safe step to the contact.
+inline double Advance(const Clearance& c, double accel) {
+  if (c.gap <= kContactTolerance) {
+    const double room = std::max(c.gap + kPushOverlap, 0.5 * kPushOverlap);
+    return std::max(SafeStep(room, c.closing, accel), kSmallestAdvance);
+  }
+  return SafeStep(c.gap, c.closing, accel);
+}
+
+// The most safe steps one search by advancement takes: near a contact each step closes a fixed
+// part of the clearance, and a landing try ends most searches within a few dozen; a ball that
+// slides along a body it touches steps by the time kPushOverlap takes to fill, and its search
+// goes on from where it stopped (Advancement::resume) so that no one search grows without bound.
+inline constexpr int kMaxAdvances = 10000;
+
+struct Advancement {
+  double time = kInfinity;  // of the contact (kInfinity: none up to the end)
+  Clearance at;             // the contact met
+  bool resume = false;      // no contact up to `time`, where the search stopped: go on from there
+};
 
 // The first time in [t0, t1] at which the clearance falls to kContactTolerance while closing
-// faster than kSlowImpact, or to -kPushOverlap while closing at all (kInfinity if neither), by
-// safe steps. Where the nearest contact's closing speed promises it within reach, a try at
-// twice the time it would take: when that lands past it, bisected back onto it (on that
-// contact's own clearance, `element(t, c)`), and taken once safe steps over all contacts find
-// none sooner.
+// faster than kSlowImpact, or to -kPushOverlap while closing at all, by safe steps (`clearance`
+// returns the contact whose Advance is the least). Where that contact's closing speed promises
+// it within reach, a try at twice the time it would take: when that lands past it, bisected back
+// onto it (on that contact's own clearance, `element(t, c)`), and taken once safe steps over all
+// contacts find none sooner.
 template <typename ClearanceAt, typename ElementAt>
-std::pair<double, Clearance> FirstContactByAdvancement(const ClearanceAt& clearance,
-                                                       const ElementAt& element,
-                                                       const std::function<double(double)>& speed,
-                                                       double accel, double t0, double t1,
-                                                       bool land = true) {
+Advancement FirstContactByAdvancement(const ClearanceAt& clearance, const ElementAt& element,
+                                      double accel, double t0, double t1, bool land = true) {
   const auto contact = [](const Clearance& c) {
     return (c.gap <= kContactTolerance && c.closing > kSlowImpact) ||
            (c.gap <= -kPushOverlap && c.closing > kContactSpeed);
@@ -137,32 +157,26 @@ std::pair<double, Clearance> FirstContactByAdvancement(const ClearanceAt& cleara
   double t = t0;
   for (int step = 0; step < kMaxAdvances; ++step) {
     const Clearance c = clearance(t);
-    if (contact(c)) return {t, c};
-    if (c.gap <= kContactTolerance) {
-      // Touching, not (yet) closing: on by the time the overlap allowed takes to fill (at least
-      // half of it, so that a push sliding along at full overlap is passed too).
-      const double room = std::max(c.gap + kPushOverlap, 0.5 * kPushOverlap);
-      t += std::max(SafeStep(room, speed(t), accel), kSmallestAdvance);
-    } else {
-      const double reach = t + 2.0 * c.gap / c.closing;
-      if (land && c.closing > 0.0 && reach <= t1 && element(reach, c).gap <= kContactTolerance) {
-        double lo = t, hi = reach;
-        while (hi - lo > 1e-13 * std::max(1.0, hi)) {
-          const double mid = 0.5 * (lo + hi);
-          (element(mid, c).gap > kContactTolerance ? lo : hi) = mid;
-        }
-        const Clearance at = element(hi, c);
-        if (contact(at)) {
-          const auto sooner = FirstContactByAdvancement(clearance, element, speed, accel, t, lo,
-                                                        /*land=*/false);
-          return sooner.first <= lo ? sooner : std::pair<double, Clearance>{hi, at};
-        }
+    if (contact(c)) return {t, c, false};
+    const double reach = t + 2.0 * c.gap / c.closing;
+    if (land && c.gap > kContactTolerance && c.closing > 0.0 && reach <= t1 &&
+        element(reach, c).gap <= kContactTolerance) {
+      double lo = t, hi = reach;
+      while (hi - lo > 1e-13 * std::max(1.0, hi)) {
+        const double mid = 0.5 * (lo + hi);
+        (element(mid, c).gap > kContactTolerance ? lo : hi) = mid;
       }
-      t += SafeStep(c.gap, speed(t), accel);
+      const Clearance at = element(hi, c);
+      if (contact(at)) {
+        const Advancement sooner =
+            FirstContactByAdvancement(clearance, element, accel, t, lo, /*land=*/false);
+        return sooner.time <= lo ? sooner : Advancement{hi, at, false};
+      }
     }
-    if (t > t1) return {kInfinity, {}};
+    t += Advance(c, accel);
+    if (t > t1) return {};
   }
-  throw std::runtime_error("a contact search by advancement did not converge");
+  return {t, {}, true};
 }
 
 // The clearance of a ball of radius r in state s to one cushion line, jaw or capture line (an
@@ -170,8 +184,9 @@ std::pair<double, Clearance> FirstContactByAdvancement(const ClearanceAt& cleara
 Clearance ElementClearance(const TableGeometry& table, double r, const physics::BallState& s,
                            EventType type, std::size_t k);
 
-// The nearest cushion, jaw or capture line of a ball of radius r in state s (or the first one
-// it touches while closing).
-Clearance BoundaryClearance(const TableGeometry& table, double r, const physics::BallState& s);
+// The cushion, jaw or capture line of a ball of radius r in state s whose Advance (with `accel`)
+// is the least (or the first one it touches while closing).
+Clearance BoundaryClearance(const TableGeometry& table, double r, const physics::BallState& s,
+                            double accel);
 
 }  // namespace billiard::table

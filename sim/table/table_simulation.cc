@@ -8,6 +8,7 @@
 
 #include "sim/table/ball_collision.h"
 #include "sim/table/contact_search.h"
+#include "sim/table/held_contacts.h"
 
 namespace billiard::table {
 
@@ -19,24 +20,11 @@ using physics::kX;
 
 namespace {
 
-// Touching balls closing by their accelerations alone, both moving (one carrying the other
-// along: a ball driven by its spin, or two rolling balls whose decelerations differ along the
-// line of centres), are met with the velocities each would have this much later, at the
-// positions of now: each ball's own motion only loses energy, and the impact parts them for
-// about 2 e_b times this. Independent closed-form motions cannot hold two balls in contact, so
-// a sustained push becomes a run of such impacts, one every 1 ms or so, and the pushing balls
-// lose speed about a third faster than a held contact would make them (a ball rolling at
-// 3 cm/s stops some 2 mm short).
-constexpr double kPushTime = 5e-4;  // [s]
-
 // A 5-DOF motion runs until the ball rests or this long, then starts again; a sliding ball's
 // until twice the closed form's slide time.
 constexpr double kFiveDofHorizon = 60.0;  // [s]
 constexpr double kSlideHorizonFactor = 2.0;
 constexpr double kShortestHorizon = 0.05;  // [s]
-// A slip above this is a slide (below it, the regularized 5-DOF contact's residue of one, or a
-// ball the closed form rolls).
-constexpr double kSlideSlip = 1e-3;  // [m/s]
 
 // Two impacts of the same pair closer in time than this: the second is elastic (TC model).
 constexpr double kCollapseTime = 1e-5;  // [s]
@@ -52,23 +40,15 @@ struct CushionFrame {
   Eigen::Vector2d Out(const Eigen::Vector3d& c) const { return c.x() * x + c.y() * y; }
 };
 
-// A push: a ball touching a body (`n` the unit direction from the ball's centre to the contact)
-// that closes on it by its acceleration alone, driven by the spin that the cloth's friction turns
-// into motion. The body does not yield (a ball at rest holds by its own cloth friction, as much
-// as the pusher's, a cushion by itself): the pusher spins against it in place until that spin is
-// spent. Spent at once here: the part of the spin that drives the ball into the contact is
-// removed, and any closing speed (below kSlowImpact), so the ball's motion no longer closes and
-// its energy only falls.
-BallState Held(const BallState& s, const Eigen::Vector2d& n, double radius) {
-  BallState out = s;
-  const double closing = s.segment<2>(kVx).dot(n);
-  if (closing > 0.0) out.segment<2>(kVx) -= closing * n;
-  const Eigen::Vector2d across(-n.y(), n.x());  // z x n
-  if (ClothSlip(out, radius).dot(n) < 0.0) {
-    out.segment<2>(kWx) -= out.segment<2>(kWx).dot(across) * across;
-  }
-  return out;
-}
+// A held motion whose forces do not act along the direction its cloth friction depends on (the
+// slip's, sliding; the velocity's, rolling) turns that direction, which the motion takes as
+// fixed: it is solved again this often. A head-on push, the common one, keeps its directions and
+// is not cut.
+constexpr double kHoldStep = 0.01;  // [s]
+constexpr double kParallel = 1e-9;  // |sin| between two directions taken as one
+// A 5-DOF motion's acceleration is the difference of its velocities this far apart: its dense
+// output's error and rounding (1e-16 m/s) stay below 1e-9 m/s^2.
+constexpr double kDifferenceStep = 1e-6;  // [s]
 
 }  // namespace
 
@@ -137,7 +117,7 @@ TableSimulation::TableSimulation(const TableGeometry& table, const physics::Mode
     StartSegment(balls_.size() - 1, b.state);
   }
   boundary_.resize(balls_.size());
-  pair_.assign(balls_.size() * balls_.size(), kInfinity);
+  pair_.assign(balls_.size() * balls_.size(), Candidate{});
   last_impact_.assign(balls_.size() * balls_.size(), -kInfinity);
   for (std::size_t i = 0; i < balls_.size(); ++i) Recompute(i);
 }
@@ -240,9 +220,6 @@ TableSimulation::Candidate TableSimulation::BallBallByAdvancement(std::size_t i,
   const double end = std::min(a.end_time(), b.end_time());
   const double d = 2.0 * params_.ball.radius;
   const double accel = a.max_acceleration() + b.max_acceleration();
-  const auto speed = [&](double t) {
-    return a.At(t).segment<2>(kVx).norm() + b.At(t).segment<2>(kVx).norm();
-  };
   const auto clearance = [&](double t) {
     const BallState sa = a.At(t), sb = b.At(t);
     const Eigen::Vector2d between = sb.segment<2>(kX) - sa.segment<2>(kX);
@@ -252,22 +229,22 @@ TableSimulation::Candidate TableSimulation::BallBallByAdvancement(std::size_t i,
                      EventType::kBallBall, -1};
   };
   const auto element = [&](double t, const Clearance&) { return clearance(t); };
-  return {FirstContactByAdvancement(clearance, element, speed, accel, time_, end).first,
-          EventType::kBallBall};
+  const Advancement found = FirstContactByAdvancement(clearance, element, accel, time_, end);
+  return {found.time, EventType::kBallBall, -1, found.resume};
 }
 
 TableSimulation::Candidate TableSimulation::BoundaryByAdvancement(std::size_t i) const {
   const MotionSegment& m = Current(i);
-  const auto speed = [&](double t) { return m.At(t).segment<2>(kVx).norm(); };
+  const double accel = m.max_acceleration();
   const auto clearance = [&](double t) {
-    return BoundaryClearance(table_, params_.ball.radius, m.At(t));
+    return BoundaryClearance(table_, params_.ball.radius, m.At(t), accel);
   };
   const auto element = [&](double t, const Clearance& c) {
     return ElementClearance(table_, params_.ball.radius, m.At(t), c.type, c.index);
   };
-  const auto [time, at] = FirstContactByAdvancement(clearance, element, speed, m.max_acceleration(),
-                                                    time_, m.end_time());
-  return {time, at.type, at.index};
+  const Advancement found =
+      FirstContactByAdvancement(clearance, element, accel, time_, m.end_time());
+  return {found.time, found.at.type, found.at.index, found.resume};
 }
 
 void TableSimulation::Recompute(std::size_t i) {
@@ -275,7 +252,7 @@ void TableSimulation::Recompute(std::size_t i) {
   for (std::size_t j = 0; j < balls_.size(); ++j) {
     if (j == i) continue;
     const bool both = Active(i) && Active(j);
-    pair_[PairIndex(i, j)] = both ? NextBallBall(i, j).time : kInfinity;
+    pair_[PairIndex(i, j)] = both ? NextBallBall(i, j) : Candidate{};
   }
 }
 
@@ -316,33 +293,170 @@ BallState TableSimulation::CushionImpact(const BallState& s, const Eigen::Vector
   return out;
 }
 
+double TableSimulation::Gap(std::size_t i, std::size_t j) const {
+  return (Current(i).At(time_).segment<2>(kX) - Current(j).At(time_).segment<2>(kX)).norm() -
+         2.0 * params_.ball.radius;
+}
+
+std::vector<std::size_t> TableSimulation::HeldNeighbours(std::size_t i) const {
+  std::vector<std::size_t> out;
+  for (std::size_t j = 0; j < balls_.size(); ++j) {
+    if (j != i && Active(j) && Current(j).held() && Gap(i, j) <= kHoldGap) out.push_back(j);
+  }
+  return out;
+}
+
+std::vector<std::size_t> TableSimulation::ResolveHeld(const std::vector<std::size_t>& seeds) {
+  const double r = params_.ball.radius;
+  // The cluster: every ball touching a seed, or a ball of the cluster, with the contacts between
+  // them and with the cushions and jaws, in a fixed order.
+  std::vector<std::size_t> members;
+  std::vector<int> slot(balls_.size(), -1);
+  for (const std::size_t i : seeds) {
+    if (Active(i) && slot[i] < 0) {
+      slot[i] = static_cast<int>(members.size());
+      members.push_back(i);
+    }
+  }
+  std::vector<BallState> states;
+  std::vector<HeldContact> contacts;
+  std::vector<double> reach;  // per contact: the centres' distance that a part would grow
+  const auto closes_slowly = [&](const Eigen::Vector2d& v, const Eigen::Vector2d& n) {
+    return v.dot(n) <= kSlowImpact;
+  };
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    const std::size_t i = members[m];
+    const BallState s = Current(i).At(time_);
+    states.push_back(s);
+    const Eigen::Vector2d p = s.segment<2>(kX);
+    for (std::size_t j = 0; j < balls_.size(); ++j) {
+      if (j == i || !Active(j) || (slot[j] >= 0 && slot[j] < static_cast<int>(m))) continue;
+      const BallState t = Current(j).At(time_);
+      const Eigen::Vector2d between = t.segment<2>(kX) - p;
+      if (between.norm() - 2.0 * r > kHoldGap) continue;
+      if (slot[j] < 0) {
+        slot[j] = static_cast<int>(members.size());
+        members.push_back(j);
+      }
+      const Eigen::Vector2d n = between.normalized();
+      if (!closes_slowly(s.segment<2>(kVx) - t.segment<2>(kVx), n)) continue;  // an impact
+      contacts.push_back({static_cast<int>(m), slot[j], n, 0.0});
+      reach.push_back(2.0 * r);
+    }
+    for (const CushionLine& line : table_.lines) {
+      const Eigen::Vector2d along = line.b - line.a;
+      const double s_along = (p - line.a).dot(along) / along.squaredNorm();
+      if (s_along < 0.0 || s_along > 1.0 || (p - line.a).dot(line.normal) - r > kHoldGap ||
+          !closes_slowly(s.segment<2>(kVx), -line.normal)) {
+        continue;
+      }
+      contacts.push_back({static_cast<int>(m), -1, -line.normal, params_.collision.cushion_friction});
+      reach.push_back(kInfinity);  // along a straight cushion nothing parts
+    }
+    for (const CushionPoint& point : table_.points) {
+      const Eigen::Vector2d to = point.centre - p;
+      if (to.norm() - r - point.radius > kHoldGap || !closes_slowly(s.segment<2>(kVx), to.normalized())) {
+        continue;
+      }
+      contacts.push_back({static_cast<int>(m), -1, to.normalized(), params_.collision.cushion_friction});
+      reach.push_back(r + point.radius);
+    }
+  }
+  // A 5-DOF ball's own acceleration, from its motion: the closed form's would miss what presses
+  // it (a curve, the contact patch's friction).
+  std::vector<std::optional<Eigen::Vector2d>> own(members.size());
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    const MotionSegment& motion = Current(members[m]);
+    if (motion.closed_form()) continue;
+    const double t0 = std::min(time_, motion.end_time() - kDifferenceStep);
+    own[m] = (motion.At(t0 + kDifferenceStep).segment<2>(kVx) - motion.At(t0).segment<2>(kVx)) /
+             kDifferenceStep;
+  }
+  const HeldSolution held = SolveHeldContacts(cloth_, states, contacts, own);
+
+  // How long each ball's held motion holds: until a pressed contact parts by kHoldGap / 2 (its
+  // normal is taken as fixed), a turning direction is due for a new solve, or what the solve
+  // left closing would overlap by the contact tolerance.
+  std::vector<double> longest(members.size(), kInfinity);
+  if (held.residual > 0.0) {
+    std::fill(longest.begin(), longest.end(), std::sqrt(2.0 * kContactTolerance / held.residual));
+  }
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const HeldContact& c = contacts[k];
+    if (held.normal_forces[k] == 0.0 || !std::isfinite(reach[k])) continue;
+    const auto tangential = [&](Eigen::Vector2d x) { return x - x.dot(c.normal) * c.normal; };
+    Eigen::Vector2d w = -held.states[c.a].segment<2>(kVx), alpha = -held.accelerations[c.a];
+    if (c.b >= 0) {
+      w += held.states[c.b].segment<2>(kVx);
+      alpha += held.accelerations[c.b];
+    }
+    const double parts = SafeStep(std::sqrt(reach[k] * kHoldGap), tangential(w).norm(),
+                                  tangential(alpha).norm());
+    longest[c.a] = std::min(longest[c.a], parts);
+    if (c.b >= 0) longest[c.b] = std::min(longest[c.b], parts);
+  }
+  // The held motions, all ending with the first of them: the end of one changes the forces of all.
+  std::vector<std::optional<MotionSegment>> motion(members.size());
+  double end = time_ + kFiveDofHorizon;
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    if (held.forces[m].norm() == 0.0) continue;
+    const BallState& s = held.states[m];
+    const Eigen::Vector2d& a = held.accelerations[m];
+    const Eigen::Vector2d drives =
+        PhaseOf(s, r) == MotionPhase::kSliding ? ClothSlip(s, r) : Eigen::Vector2d(s.segment<2>(kVx));
+    const double cross = drives.x() * a.y() - drives.y() * a.x();
+    // A 5-DOF ball's own acceleration changes as its motion goes on.
+    const bool turns = std::abs(cross) > kParallel * drives.norm() * a.norm() || own[m];
+    motion[m].emplace(cloth_, time_, s, a, turns ? std::min(longest[m], kHoldStep) : longest[m]);
+    end = std::min(end, motion[m]->end_time());
+  }
+  std::vector<std::size_t> changed;
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    const std::size_t i = members[m];
+    const BallState& s = held.states[m];
+    if (motion[m]) {
+      balls_[i].segments.emplace_back(cloth_, time_, s, held.accelerations[m], end - time_);
+    } else if (s != states[m] || Current(i).held()) {
+      StartSegment(i, s);
+    } else {
+      continue;
+    }
+    changed.push_back(i);
+  }
+  return changed;
+}
+
 void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, int index) {
   TableEvent event = e;
   const BallState s = Current(i).At(time_);
+  std::vector<std::size_t> changed{i};
+  // The held balls whose forces counted on a ball that an impact or a pocket takes.
+  std::vector<std::size_t> released;
+  const auto release = [&](std::size_t k) {
+    for (const std::size_t n : HeldNeighbours(k)) released.push_back(n);
+  };
   switch (e.type) {
     case EventType::kBallPush:  // an outcome of the contact events, never a candidate
     case EventType::kTransition:
       event.from = Current(i).phase();
-      StartSegment(i, s);
+      if (Current(i).held()) {
+        event.type = EventType::kBallPush;
+        changed = ResolveHeld({i});
+      } else {
+        StartSegment(i, s);
+      }
       event.to = Current(i).phase();
       break;
     case EventType::kBallBall: {
-      BallState b = Current(j).At(time_);
+      const BallState b = Current(j).At(time_);
       const Eigen::Vector2d n = (b.segment<2>(kX) - s.segment<2>(kX)).normalized();
-      BallState a = s;
-      if ((a.segment<2>(kVx) - b.segment<2>(kVx)).dot(n) <= kSlowImpact) {
-        // Closing by the accelerations: against a ball at rest, a push; else met a moment on.
-        const bool at_rest = Current(i).phase() == MotionPhase::kStationary ||
-                             Current(j).phase() == MotionPhase::kStationary;
-        a.tail<5>() = Current(i).At(time_ + kPushTime).tail<5>();
-        b.tail<5>() = Current(j).At(time_ + kPushTime).tail<5>();
-        if (at_rest || !((a.segment<2>(kVx) - b.segment<2>(kVx)).dot(n) > kSlowImpact)) {
-          event.type = EventType::kBallPush;
-          StartSegment(i, Held(s, n, params_.ball.radius));
-          StartSegment(j, Held(Current(j).At(time_), -n, params_.ball.radius));
-          break;
-        }
+      if ((s.segment<2>(kVx) - b.segment<2>(kVx)).dot(n) <= kSlowImpact) {
+        event.type = EventType::kBallPush;
+        changed = ResolveHeld({i, j});
+        break;
       }
+      release(i);
+      release(j);
       // Impacts of one pair in quick succession are elastic (the "TC model" of Luding and
       // McNamara 1998): inelastic ones would shrink the gaps between them geometrically, an
       // infinity of impacts in a finite time (inelastic collapse) where a ball is driven into
@@ -351,10 +465,11 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
       double& last = last_impact_[PairIndex(i, j)];
       if (time_ - last < kCollapseTime) collision.ball_restitution = 1.0;
       last = time_;
-      const BallBallImpulse hit = ResolveBallBallImpact(a, b, params_.ball, collision);
+      const BallBallImpulse hit = ResolveBallBallImpact(s, b, params_.ball, collision);
       event.impulse = hit.normal;
       StartSegment(i, hit.a);
       StartSegment(j, hit.b);
+      changed.push_back(j);
       break;
     }
     case EventType::kBallCushion:
@@ -364,13 +479,15 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
                                     : (s.segment<2>(kX) - table_.points[index].centre).normalized();
       if (-s.segment<2>(kVx).dot(n) <= kSlowImpact) {
         event.type = EventType::kBallPush;
-        StartSegment(i, Held(s, -n, params_.ball.radius));
+        changed = ResolveHeld({i});
       } else {
+        release(i);
         StartSegment(i, CushionImpact(s, n, &event.impulse));
       }
       break;
     }
     case EventType::kBallPocket: {
+      release(i);
       BallState dropped = s;
       dropped.segment<5>(kVx).setZero();
       StartSegment(i, dropped);
@@ -380,8 +497,15 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
     }
   }
   events_.push_back(event);
-  Recompute(i);
-  if (e.type == EventType::kBallBall) Recompute(j);
+  for (const std::size_t k : changed) Recompute(k);
+  if (!released.empty()) {
+    TableEvent push;
+    push.time = time_;
+    push.type = EventType::kBallPush;
+    push.ball = balls_[released.front()].id;
+    events_.push_back(push);
+    for (const std::size_t k : ResolveHeld(released)) Recompute(k);
+  }
 }
 
 void TableSimulation::Run(double t_end) {
@@ -400,11 +524,13 @@ void TableSimulation::Run(double t_end) {
         bi = i;
       }
     }
+    bool resume = false;
     for (std::size_t i = 0; i < balls_.size(); ++i) {
       for (std::size_t j = i + 1; j < balls_.size(); ++j) {
-        if (pair_[PairIndex(i, j)] < best) {
-          best = pair_[PairIndex(i, j)];
+        if (pair_[PairIndex(i, j)].time < best) {
+          best = pair_[PairIndex(i, j)].time;
           next.type = EventType::kBallBall;
+          resume = pair_[PairIndex(i, j)].resume;
           bi = i;
           bj = j;
         }
@@ -414,11 +540,21 @@ void TableSimulation::Run(double t_end) {
       if (boundary_[i].time < best) {
         best = boundary_[i].time;
         next.type = boundary_[i].type;
+        resume = boundary_[i].resume;
         bi = i;
         index = boundary_[i].index;
       }
     }
     if (best > t_end || best == kInfinity) break;  // the end, or everything at rest
+    if (resume) {  // a search by advancement goes on from where it stopped
+      time_ = best;
+      if (next.type == EventType::kBallBall) {
+        pair_[PairIndex(bi, bj)] = NextBallBall(bi, bj);
+      } else {
+        boundary_[bi] = NextBoundary(bi);
+      }
+      continue;
+    }
     if (static_cast<std::int64_t>(events_.size()) >= options_.max_events) {
       throw std::runtime_error("the scene needs more than " + std::to_string(options_.max_events) +
                                " events");

