@@ -84,14 +84,30 @@ double FirstCrossing(const Quartic& f, double window, double sign, double contac
     if (sign * slope > speed_scale * kContactSpeed && accept(0.0)) return 0.0;
   }
   if (std::all_of(f.begin(), f.end(), [](double c) { return c == 0.0; })) return kInfinity;
+  double first = kInfinity;
   std::array<double, 4> roots;
   const int n = RootsInInterval(f, 0.0, window, &roots);
   for (int k = 0; k < n; ++k) {
     if (sign * Derivative(f, roots[k]) > speed_scale * kContactSpeed && accept(roots[k])) {
-      return roots[k];
+      first = roots[k];
+      break;
     }
   }
-  return kInfinity;
+  // Overlapping (a 5-DOF push's allowance) and parting: the event is where they turn to close
+  // again, before they part, or no root would ever show it.
+  if (sign * f[0] > contact) {
+    const Quartic slope{f[1], 2.0 * f[2], 3.0 * f[3], 4.0 * f[4], 0.0};
+    if (std::any_of(slope.begin(), slope.end(), [](double c) { return c != 0.0; })) {
+      const int m = RootsInInterval(slope, 0.0, std::min(window, first), &roots);
+      for (int k = 0; k < m; ++k) {
+        if (sign * Derivative(slope, roots[k]) > 0.0 && sign * Evaluate(f, roots[k]) > contact &&
+            accept(roots[k])) {
+          return roots[k];
+        }
+      }
+    }
+  }
+  return first;
 }
 
 // Conservative advancement, for motions that are no polynomial (the 5-DOF model): a clearance
@@ -103,8 +119,8 @@ double SafeStep(double gap, double closing, double accel);
 
 // How far a 5-DOF ball pressed against a body by its accelerations alone (side spin curving it
 // into a ball it rolls past) may overlap it before the push is met: a push closes at no speed,
-// so its contact could otherwise not be told from a touch that parts, and met at every
-// nanosecond it would be met millions of times.
+// so a search that stepped by the closing speed alone would step by nanoseconds while the
+// bodies touch; it steps by the time this overlap takes to fill.
 inline constexpr double kPushOverlap = 1e-7;  // [m]
 
 // Touching bodies that are not closing are passed by at least this long a step.

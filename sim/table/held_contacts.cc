@@ -75,8 +75,7 @@ void Kick(BallState* s, const Eigen::Vector2d& j, double mobility, double radius
 }  // namespace
 
 HeldSolution SolveHeldContacts(const ClothParameters& cloth, std::vector<BallState> states,
-                               const std::vector<HeldContact>& contacts,
-                               const std::vector<std::optional<Eigen::Vector2d>>& own_accelerations) {
+                               const std::vector<HeldContact>& contacts) {
   const std::size_t n = states.size();
   HeldSolution out;
   for (BallState& s : states) {
@@ -133,10 +132,6 @@ HeldSolution SolveHeldContacts(const ClothParameters& cloth, std::vector<BallSta
   std::vector<Response> response(n);
   for (std::size_t i = 0; i < n; ++i) {
     response[i] = ResponseOf(cloth, states[i]);
-    if (i < own_accelerations.size() && own_accelerations[i]) {
-      response[i].drift = *own_accelerations[i];
-      response[i].threshold = 0.0;
-    }
     mobility[i] = response[i].mobility;
   }
   std::vector<Eigen::Vector2d> push(contacts.size());  // the force on a per unit normal force

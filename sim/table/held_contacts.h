@@ -30,7 +30,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <optional>
 #include <vector>
 
 #include "sim/physics/ball_state.h"
@@ -58,12 +57,8 @@ struct HeldSolution {
 };
 
 // The contact forces of a cluster of balls in `states` touching along `contacts` (every one of
-// them closing no faster than kSlowImpact: a faster one is an impact, the caller's). A ball
-// whose motion is not the closed form's (the 5-DOF model's) has its own acceleration without
-// the forces in `own_accelerations` (std::nullopt: the closed form's), which is what presses it
-// into its contact (side spin curving it, the contact patch's friction).
+// them closing no faster than kSlowImpact: a faster one is an impact, the caller's).
 HeldSolution SolveHeldContacts(const ClothParameters& cloth, std::vector<physics::BallState> states,
-                               const std::vector<HeldContact>& contacts,
-                               const std::vector<std::optional<Eigen::Vector2d>>& own_accelerations = {});
+                               const std::vector<HeldContact>& contacts);
 
 }  // namespace billiard::table

@@ -46,9 +46,6 @@ struct CushionFrame {
 // is not cut.
 constexpr double kHoldStep = 0.01;  // [s]
 constexpr double kParallel = 1e-9;  // |sin| between two directions taken as one
-// A 5-DOF motion's acceleration is the difference of its velocities this far apart: its dense
-// output's error and rounding (1e-16 m/s) stay below 1e-9 m/s^2.
-constexpr double kDifferenceStep = 1e-6;  // [s]
 
 }  // namespace
 
@@ -318,6 +315,7 @@ std::vector<std::size_t> TableSimulation::ResolveHeld(const std::vector<std::siz
       members.push_back(i);
     }
   }
+  const std::size_t pressed = members.size();  // the seeds: the balls whose contact pressed
   std::vector<BallState> states;
   std::vector<HeldContact> contacts;
   std::vector<double> reach;  // per contact: the centres' distance that a part would grow
@@ -362,17 +360,7 @@ std::vector<std::size_t> TableSimulation::ResolveHeld(const std::vector<std::siz
       reach.push_back(r + point.radius);
     }
   }
-  // A 5-DOF ball's own acceleration, from its motion: the closed form's would miss what presses
-  // it (a curve, the contact patch's friction).
-  std::vector<std::optional<Eigen::Vector2d>> own(members.size());
-  for (std::size_t m = 0; m < members.size(); ++m) {
-    const MotionSegment& motion = Current(members[m]);
-    if (motion.closed_form()) continue;
-    const double t0 = std::min(time_, motion.end_time() - kDifferenceStep);
-    own[m] = (motion.At(t0 + kDifferenceStep).segment<2>(kVx) - motion.At(t0).segment<2>(kVx)) /
-             kDifferenceStep;
-  }
-  const HeldSolution held = SolveHeldContacts(cloth_, states, contacts, own);
+  const HeldSolution held = SolveHeldContacts(cloth_, states, contacts);
 
   // How long each ball's held motion holds: until a pressed contact parts by kHoldGap / 2 (its
   // normal is taken as fixed), a turning direction is due for a new solve, or what the solve
@@ -405,8 +393,7 @@ std::vector<std::size_t> TableSimulation::ResolveHeld(const std::vector<std::siz
     const Eigen::Vector2d drives =
         PhaseOf(s, r) == MotionPhase::kSliding ? ClothSlip(s, r) : Eigen::Vector2d(s.segment<2>(kVx));
     const double cross = drives.x() * a.y() - drives.y() * a.x();
-    // A 5-DOF ball's own acceleration changes as its motion goes on.
-    const bool turns = std::abs(cross) > kParallel * drives.norm() * a.norm() || own[m];
+    const bool turns = std::abs(cross) > kParallel * drives.norm() * a.norm();
     motion[m].emplace(cloth_, time_, s, a, turns ? std::min(longest[m], kHoldStep) : longest[m]);
     end = std::min(end, motion[m]->end_time());
   }
@@ -416,6 +403,11 @@ std::vector<std::size_t> TableSimulation::ResolveHeld(const std::vector<std::siz
     const BallState& s = held.states[m];
     if (motion[m]) {
       balls_[i].segments.emplace_back(cloth_, time_, s, held.accelerations[m], end - time_);
+    } else if (!Current(i).closed_form() && m < pressed) {
+      // A 5-DOF ball that pressed into its contact where the closed form's cloth holds it off
+      // (its own curve or slip): on by the closed form until its next event, or it would press
+      // again at once, and again.
+      balls_[i].segments.emplace_back(cloth_, time_, s);
     } else if (s != states[m] || Current(i).held()) {
       StartSegment(i, s);
     } else {
