@@ -2,8 +2,8 @@
 # usage: launch_scripts/setup.sh [-h | --help]
 #
 # Installs the Debian packages the project builds and runs with (apt-get, through sudo unless
-# root). Idempotent: when nothing is missing it prints nothing and touches nothing, so every
-# README command can start with it.
+# root). Idempotent: when nothing is missing it says so in one line on stderr and touches
+# nothing, so every README command can start with it.
 #
 #   -h, --help  this text
 set -euo pipefail
@@ -23,6 +23,8 @@ packages=(
   # header-only; SUNDIALS CVODE)
   libboost-dev libsundials-dev
   python3 iproute2 procps
+  # spy.sh's window on a machine without a display: xvfb-run (and the xauth it runs)
+  xvfb xauth
   # fuzz/: clang with libFuzzer and the sanitizer runtimes; llvm-14 for llvm-symbolizer
   clang libclang-rt-14-dev llvm-14
 )
@@ -59,7 +61,10 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} Debian packages the project needs are installed" >&2
+  exit 0
+fi
 
 echo "setup: installing ${missing[*]}" >&2
 sudo_cmd=()

@@ -32,10 +32,10 @@ struct Script {
 
 const std::vector<Script> kScripts = {
     {"launch_scripts/setup.sh", {}},
-    {"launch_scripts/build.sh", {}},
+    {"launch_scripts/build.sh", {"--target"}},
     {"launch_scripts/test.sh", {"--no-build"}},
     {"launch_scripts/run_loop.sh",
-     {"--shots", "--seed", "--noise", "--log", "--log-frames", "--lockstep", "--realtime", "--json",
+     {"--shots", "--seed", "--noise", "--params", "--log", "--log-frames", "--lockstep", "--realtime", "--json",
       "--no-build"}},
     {"launch_scripts/replay.sh", {"--params", "--camera", "--json"}},
     {"launch_scripts/fault_drill.sh", {"--shots", "--no-build"}},
@@ -126,6 +126,8 @@ TEST_F(Scripts, MissingOrBadValuesAndStrayArgumentsAreUsageErrors) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"launch_scripts/setup.sh", "extra"},
       {"launch_scripts/build.sh", "extra"},
+      {"launch_scripts/build.sh", "--target"},
+      {"launch_scripts/run_loop.sh", "--params"},
       {"launch_scripts/test.sh", "extra"},
       {"launch_scripts/run_loop.sh", "--shots"},
       {"launch_scripts/run_loop.sh", "--shots abc"},
