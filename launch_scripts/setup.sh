@@ -19,6 +19,8 @@ packages=(
   libjchart2d-java
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
+  # tools/plot/: billiard plot's pictures and billiard bench's chart
+  libcairo2-dev
   # bench/peer_solvers.h: the solvers `billiard bench` measures ours against (Boost.Odeint,
   # header-only; SUNDIALS CVODE)
   libboost-dev libsundials-dev
