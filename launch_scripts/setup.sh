@@ -21,6 +21,9 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   # tools/plot/: billiard plot's pictures and billiard bench's chart
   libcairo2-dev
+  # tools/python/: the billiard Python module (pybind11) and its pytest suite, on Debian's
+  # python3 with Debian's NumPy
+  pybind11-dev python3-dev python3-numpy python3-pytest
   # bench/peer_solvers.h: the solvers `billiard bench` measures ours against (Boost.Odeint,
   # header-only; SUNDIALS CVODE)
   libboost-dev libsundials-dev
