@@ -55,6 +55,7 @@ const std::map<std::string, std::set<std::string>>& Layers() {
         "sim/contact_fit", "sim/camera", "sim/render", "sim/table_sim_node", "lcmtypes",
         "lcmtypes/node", "planner", "planner/node", "estimator", "estimator/node", "bench",
         "tools/plot"}},
+      {"tools/viewer_node", {"lcmtypes", "lcmtypes/node", "sim/params", "sim/physics"}},
       {"tools/python", {"sim/physics", "sim/table", "sim/params", "planner", "estimator"}},
       {"tests", {}},  // the cross-module tests may include anything
   };
