@@ -82,7 +82,8 @@ physics::SimulationOptions AutoFiveDofMethod(double accuracy,
 }
 
 // The models a scene ran with, in words, for the readable summary.
-std::string ModelsInWords(const SceneSimulationArgs& args, const physics::ModelParameters& params) {
+std::string ModelsInWords(const SceneSimulationArgs& args, const physics::ModelParameters& params,
+                          bool struck) {
   std::ostringstream out;
   out << "models: motion ";
   if (args.model == "closed-form") {
@@ -98,8 +99,7 @@ std::string ModelsInWords(const SceneSimulationArgs& args, const physics::ModelP
   }
   out << "; cushion " << args.cushion_model
       << "; ball-ball restitution with Alciatore's throw friction (TP A.14)";
-  if (!args.cue) return out.str();
-  out << "; cue strike with squirt (Alciatore TP A.30, A.31)";
+  if (struck) out << "; cue strike with squirt (Alciatore TP A.30, A.31)";
   return out.str();
 }
 
@@ -228,7 +228,7 @@ void SimulateScene(const SceneSimulationArgs& args) {
               << " parameters: " << sim->ball_count() << " balls, " << sim->events().size()
               << " events to t = " << sim->time() << " s, " << pocketed << " pocketed"
               << (sim->AtRest() ? ", all at rest" : "") << ", " << wall_us << " us\n"
-              << ModelsInWords(args, params) << "\n";
+              << ModelsInWords(args, params, !scene.cues.empty()) << "\n";
     PrintSceneTable(*sim, balls);
   }
 }
