@@ -6,12 +6,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include "bench/format.h"
+#include "tools/plot/chart.h"
 
 namespace billiard::bench {
 
@@ -185,65 +184,32 @@ void WriteMarkdown(const BenchmarkResult& r, const std::string& path) {
   if (!md) throw std::runtime_error("writing '" + path + "' failed");
 }
 
-// Log-log plot: x = median wall time, y = p95 error against the integral model, all scenes.
+// Log-log chart (tools/plot/chart.h): x = median wall time, y = p95 error against the integral
+// model, all scenes; one line per method family, each point labelled with its tolerances.
 void WritePlot(const BenchmarkResult& r, const std::string& path) {
-  const int width = 900, height = 600, left = 90, right = 250, top = 40, bottom = 70;
-  cv::Mat image(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+  plot::Chart chart;
+  chart.title = "Speed against error, " + std::to_string(r.scenes.size()) + " scenes, " +
+                r.params + " parameters";
+  chart.x_label = "median wall time per shot [us]";
+  chart.y_label = "p95 endpoint error vs integral converged [m]";
   std::map<std::string, std::vector<const MethodSummary*>> families;
-  double x_min = 1e300, x_max = -1e300, y_min = 1e300, y_max = -1e300;
   for (const MethodSummary& s : r.summaries) {
     if (s.kind != "all" || s.runs == s.failures) continue;
     families[s.method.Family()].push_back(&s);
-    const double x = std::log10(std::max(s.median_us, 1e-3));
-    const double y = std::log10(std::max(s.p95_error_integral_m, 1e-12));
-    x_min = std::min(x_min, x), x_max = std::max(x_max, x);
-    y_min = std::min(y_min, y), y_max = std::max(y_max, y);
   }
-  x_min = std::floor(x_min), x_max = std::ceil(x_max + 1e-9);
-  y_min = std::floor(y_min), y_max = std::ceil(y_max + 1e-9);
-  const auto to_pixel = [&](double lx, double ly) {
-    return cv::Point(
-        left + static_cast<int>((lx - x_min) / (x_max - x_min) * (width - left - right)),
-        height - bottom -
-            static_cast<int>((ly - y_min) / (y_max - y_min) * (height - top - bottom)));
-  };
-  const cv::Scalar black(0, 0, 0), grey(210, 210, 210);
-  for (double lx = x_min; lx <= x_max; ++lx) {
-    cv::line(image, to_pixel(lx, y_min), to_pixel(lx, y_max), grey);
-    cv::putText(image, "1e" + std::to_string(static_cast<int>(lx)),
-                to_pixel(lx, y_min) + cv::Point(-15, 22), cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
-  }
-  for (double ly = y_min; ly <= y_max; ++ly) {
-    cv::line(image, to_pixel(x_min, ly), to_pixel(x_max, ly), grey);
-    cv::putText(image, "1e" + std::to_string(static_cast<int>(ly)),
-                to_pixel(x_min, ly) + cv::Point(-50, 5), cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
-  }
-  cv::rectangle(image, to_pixel(x_min, y_max), to_pixel(x_max, y_min), black);
-  cv::putText(image, "median wall time per shot [us]", cv::Point(left + 150, height - 25),
-              cv::FONT_HERSHEY_SIMPLEX, 0.55, black);
-  cv::putText(image, "p95 endpoint error vs integral converged [m]", cv::Point(10, 25),
-              cv::FONT_HERSHEY_SIMPLEX, 0.55, black);
-  const cv::Scalar colours[] = {
-      {200, 60, 20}, {30, 140, 30}, {20, 20, 200}, {160, 30, 160}, {0, 140, 200}};
-  int index = 0;
   for (auto& [family, points] : families) {
-    const cv::Scalar colour = colours[index % 5];
     std::sort(points.begin(), points.end(),
               [](auto* a, auto* b) { return a->median_us < b->median_us; });
-    cv::Point previous;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const cv::Point pt = to_pixel(std::log10(std::max(points[i]->median_us, 1e-3)),
-                                    std::log10(std::max(points[i]->p95_error_integral_m, 1e-12)));
-      cv::circle(image, pt, 5, colour, cv::FILLED, cv::LINE_AA);
-      if (i > 0) cv::line(image, previous, pt, colour, 2, cv::LINE_AA);
-      previous = pt;
+    plot::ChartSeries series{family, {}};
+    for (const MethodSummary* s : points) {
+      // The name past the family: "tol=1e-06", "tol=1e-05/quad=1e-03"; none for the closed form.
+      const std::string name = s->method.Name();
+      const std::string label = name.size() > family.size() ? name.substr(family.size() + 1) : "";
+      series.points.push_back({s->median_us, s->p95_error_integral_m, label});
     }
-    const cv::Point legend(width - right + 20, top + 20 + 25 * index);
-    cv::circle(image, legend, 5, colour, cv::FILLED, cv::LINE_AA);
-    cv::putText(image, family, legend + cv::Point(12, 5), cv::FONT_HERSHEY_SIMPLEX, 0.5, black);
-    ++index;
+    chart.series.push_back(series);
   }
-  if (!cv::imwrite(path, image)) throw std::runtime_error("cannot write '" + path + "'");
+  plot::DrawChart(chart, path);
 }
 
 }  // namespace

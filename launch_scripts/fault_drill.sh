@@ -40,7 +40,8 @@ failures_are_internal
 cd "$(dirname "$0")/.."
 $build && bash launch_scripts/build.sh
 source launch_scripts/lcm_network.sh
-enter_private_network "$0" --no-build --shots "$shots"
+# By its absolute path: "$0" may be relative to the directory left by the cd above.
+enter_private_network "$script_file" --no-build --shots "$shots"
 if [ -z "${in_namespace:-}" ] && ! ip route get 239.255.76.67 >/dev/null 2>&1; then
   echo '{"skipped": "no network namespace and no multicast route: no separate node processes"}'
   exit 0

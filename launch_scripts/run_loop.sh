@@ -1,23 +1,28 @@
 #!/usr/bin/env bash
 # usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off] [--scene break|FILE]
-#                                   [--log FILE] [--log-frames all|none] [--lockstep | --realtime]
+#                                   [--params NAME|FILE] [--log FILE] [--log-frames all|none]
+#                                   [--lockstep | --realtime]
 #                                   [--json] [--no-build] [-h | --help]
 #
 # The closed loop: estimator_node, planner_node and table_sim_node over LCM, for N shots to random
 # targets; prints the summary on stderr and, with --json, one JSON object on stdout.
 #
 #   --shots N              shots (default 20)
-#   --seed S               seed of the targets and the noise (default 1)
+#   --seed S               seed of the targets and of the noise, two streams of their own
+#                          (default 1): the noise leaves the targets as they were
 #   --noise on|off         the robot's execution noise (default off)
 #   --scene break|FILE     one whole-table shot instead: the eight-ball rack of --seed (break) or
 #                          a scene file at rest, the cue ball rolled into the ball nearest it;
 #                          prints how the estimator tracked every ball (error, swaps)
+#   --params NAME|FILE     the parameter set of all three nodes: pool (default), paper, snooker,
+#                          carom, or a JSON file (README.md, "Parameter sets")
 #   --log FILE             record every message with lcm-logger into FILE
 #   --log-frames all|none  with --log: record the CAMERA_IMAGE frames or not (default all)
 #   --lockstep             wait for the estimator's state of each frame: deterministic (default)
 #   --realtime             pace the frames by the wall clock
 #   --json                 the summary as one JSON object on stdout
-#   --no-build             run what build/ holds, without build.sh first
+#   --no-build             run what build/ holds, without build.sh first (which builds the three
+#                          nodes and billiard alone: the tests are test.sh's)
 #   -h, --help             this text
 #
 # --log FILE: a relative FILE is in the caller's directory; with --log-frames none the log leaves
@@ -32,7 +37,7 @@
 set -euo pipefail
 source "$(dirname "$0")/script_support.sh"
 
-shots=20 seed=1 noise=off scene="" log="" log_frames=all clock=--lockstep json=false build=true
+shots=20 seed=1 noise=off scene="" params=pool log="" log_frames=all clock=--lockstep json=false build=true
 while [ $# -gt 0 ]; do
   case "$1" in
     -h | --help) help_and_exit ;;
@@ -43,6 +48,11 @@ while [ $# -gt 0 ]; do
     --scene) need_value "$@"; scene=$2; [ "$scene" = break ] || scene=$(realpath -m -- "$2"); shift 2 ;;
     # Before the cd to the repository below: a relative path is the caller's.
     --log) need_value "$@"; log=$(realpath -m -- "$2"); shift 2 ;;
+    # A parameter file is the caller's path too; a name has no slash and no .json.
+    --params)
+      need_value "$@"
+      case "$2" in */* | *.json) params=$(realpath -m -- "$2") ;; *) params=$2 ;; esac
+      shift 2 ;;
     --log-frames) need_value "$@"; log_frames=$2; shift 2 ;;
     --lockstep) clock=--lockstep; shift ;;
     --realtime) clock=--realtime; shift ;;
@@ -71,11 +81,13 @@ if [ -n "$log" ]; then
 fi
 failures_are_internal
 cd "$(dirname "$0")/.."
-$build && bash launch_scripts/build.sh
+# What the loop runs, and nothing more: the tests, fuzzers and benchmarks are test.sh's.
+$build && bash launch_scripts/build.sh --target estimator_node --target planner_node \
+  --target table_sim_node --target billiard
 
 source launch_scripts/lcm_network.sh
 enter_private_network launch_scripts/run_loop.sh --no-build --shots "$shots" --seed "$seed" \
-  --noise "$noise" ${scene:+--scene "$scene"} ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json)
+  --noise "$noise" --params "$params" ${scene:+--scene "$scene"} ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json)
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
 in_process=false
@@ -107,9 +119,9 @@ if [ -n "$log" ]; then
   pids+=($logger)
 fi
 if ! $in_process; then
-  build/bin/estimator_node --params pool 2>/dev/null &
+  build/bin/estimator_node --params "$params" 2>/dev/null &
   pids+=($!)
-  build/bin/planner_node --params pool >/dev/null 2>&1 &
+  build/bin/planner_node --params "$params" >/dev/null 2>&1 &
   pids+=($!)
   sleep 0.5  # the nodes subscribe
 fi
@@ -119,7 +131,7 @@ sim_clock=""
 # In the background, so that a signal reaches the trap at once and the cleanup stops it too.
 session=(build/bin/table_sim_node)
 $in_process && session=(build/bin/billiard loop)
-"${session[@]}" --params pool --shots "$shots" --seed "$seed" --noise "$noise" \
+"${session[@]}" --params "$params" --shots "$shots" --seed "$seed" --noise "$noise" \
   ${scene:+--scene "$scene"} $sim_clock >"$summary_file" &
 pids+=($!)
 status=0

@@ -2,8 +2,8 @@
 # usage: launch_scripts/setup.sh [-h | --help]
 #
 # Installs the Debian packages the project builds and runs with (apt-get, through sudo unless
-# root). Idempotent: when nothing is missing it prints nothing and touches nothing, so every
-# README command can start with it.
+# root). Idempotent: when nothing is missing it says so in one line on stderr and touches
+# nothing, so every README command can start with it.
 #
 #   -h, --help  this text
 set -euo pipefail
@@ -19,10 +19,19 @@ packages=(
   libjchart2d-java
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
+  # tools/viewer_node/: its HTTP server; its test's browser and HTTP client
+  libcpp-httplib-dev chromium curl
+  # tools/plot/: billiard plot's pictures and billiard bench's chart
+  libcairo2-dev
+  # tools/python/: the billiard Python module (pybind11) and its pytest suite, on Debian's
+  # python3 with Debian's NumPy
+  pybind11-dev python3-dev python3-numpy python3-pytest
   # bench/peer_solvers.h: the solvers `billiard bench` measures ours against (Boost.Odeint,
   # header-only; SUNDIALS CVODE)
   libboost-dev libsundials-dev
   python3 iproute2 procps
+  # spy.sh's window on a machine without a display: xvfb-run (and the xauth it runs)
+  xvfb xauth
   # fuzz/: clang with libFuzzer and the sanitizer runtimes; llvm-14 for llvm-symbolizer
   clang libclang-rt-14-dev llvm-14
 )
@@ -59,7 +68,10 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} Debian packages the project needs are installed" >&2
+  exit 0
+fi
 
 echo "setup: installing ${missing[*]}" >&2
 sudo_cmd=()

@@ -131,6 +131,16 @@ TEST(BilliardSimulateScene, RefusesBadScenesWithTheReason) {
                            R"(3.0,0.6,0,0,0,0,0]}]})");
   EXPECT_EQ(off.status, 2);
   EXPECT_NE(off.out.find("ball 2"), std::string::npos) << off.out;
+  // Over the lower-left pocket's mouth, short of its capture line: a still ball there would
+  // never drop.
+  const auto mouth = refusal(R"({"table":"pool-9ft","params":"pool","balls":[{"id":3,"state":[)"
+                             R"(0.01,0.01,0,0,0,0,0]}]})");
+  EXPECT_EQ(mouth.status, 2);
+  EXPECT_NE(mouth.out.find("ball 3"), std::string::npos) << mouth.out;
+  const auto range = refusal(R"({"table":"pool-9ft","params":"pool","balls":[{"id":0,"state":[)"
+                             R"(1e400,0.6,0,0,0,0,0]}]})");
+  EXPECT_EQ(range.status, 2);
+  EXPECT_NE(range.out.find("1e400"), std::string::npos) << range.out;
   const auto key = refusal(R"({"table":"pool-9ft","params":"pool","balls":[],"bals":[]})");
   EXPECT_EQ(key.status, 2);
   EXPECT_NE(key.out.find("bals"), std::string::npos) << key.out;
@@ -139,7 +149,7 @@ TEST(BilliardSimulateScene, RefusesBadScenesWithTheReason) {
   EXPECT_EQ(model.status, 2);
   EXPECT_NE(model.out.find("auto, closed-form, approx"), std::string::npos) << model.out;
   // One line each.
-  for (const auto& r : {overlap, table, off, key, model}) {
+  for (const auto& r : {overlap, table, off, mouth, range, key, model}) {
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
   }
   const CommandResult both = Billiard("simulate --scene x.json --state 0,0,0,0,0,0,0 --t-end 1");

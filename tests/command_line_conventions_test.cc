@@ -32,13 +32,14 @@ struct Script {
 
 const std::vector<Script> kScripts = {
     {"launch_scripts/setup.sh", {}},
-    {"launch_scripts/build.sh", {}},
+    {"launch_scripts/build.sh", {"--target"}},
     {"launch_scripts/test.sh", {"--no-build"}},
     {"launch_scripts/run_loop.sh",
-     {"--shots", "--seed", "--noise", "--log", "--log-frames", "--lockstep", "--realtime", "--json",
+     {"--shots", "--seed", "--noise", "--params", "--log", "--log-frames", "--lockstep", "--realtime", "--json",
       "--no-build"}},
     {"launch_scripts/replay.sh", {"--params", "--camera", "--json"}},
     {"launch_scripts/fault_drill.sh", {"--shots", "--no-build"}},
+    {"launch_scripts/two_hosts.sh", {"--shots", "--seed", "--no-build"}},
     {"launch_scripts/reliability_report.sh", {"--fuzz-seconds", "--shots", "--no-build"}},
     {"launch_scripts/spy.sh", {"--lcm-url", "--build-dir", "--check"}},
     {"fuzz/run_fuzzers.sh",
@@ -126,6 +127,8 @@ TEST_F(Scripts, MissingOrBadValuesAndStrayArgumentsAreUsageErrors) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"launch_scripts/setup.sh", "extra"},
       {"launch_scripts/build.sh", "extra"},
+      {"launch_scripts/build.sh", "--target"},
+      {"launch_scripts/run_loop.sh", "--params"},
       {"launch_scripts/test.sh", "extra"},
       {"launch_scripts/run_loop.sh", "--shots"},
       {"launch_scripts/run_loop.sh", "--shots abc"},
@@ -135,6 +138,7 @@ TEST_F(Scripts, MissingOrBadValuesAndStrayArgumentsAreUsageErrors) {
       {"launch_scripts/run_loop.sh", "extra"},
       {"launch_scripts/replay.sh", ""},
       {"launch_scripts/fault_drill.sh", "--shots"},
+      {"launch_scripts/two_hosts.sh", "--shots 0"},
       {"launch_scripts/fault_drill.sh", "--shots abc"},
       {"launch_scripts/reliability_report.sh", "--fuzz-seconds"},
       {"launch_scripts/reliability_report.sh", "--fuzz-seconds abc"},
@@ -169,6 +173,7 @@ void ExpectOneLine(const std::string& command, int status) {
 const std::string kBilliard = BILLIARD_BIN;
 const std::string kPlannerNode = PLANNER_NODE_BIN;
 const std::string kEstimatorNode = ESTIMATOR_NODE_BIN;
+const std::string kViewerNode = VIEWER_NODE_BIN;
 const std::string kTableSimNode = TABLE_SIM_NODE_BIN;
 
 // The subcommands `billiard --help` lists, so that a new one is held to the convention too.
@@ -187,7 +192,8 @@ std::vector<std::string> BilliardSubcommands() {
 }
 
 TEST(Binaries, HelpExitsZeroAndAnUnknownOptionTwo) {
-  std::vector<std::string> commands = {kBilliard, kPlannerNode, kEstimatorNode, kTableSimNode};
+  std::vector<std::string> commands = {kBilliard, kPlannerNode, kEstimatorNode, kTableSimNode,
+                                       kViewerNode};
   const std::vector<std::string> subcommands = BilliardSubcommands();
   EXPECT_GE(subcommands.size(), 13u);
   for (const std::string& sub : subcommands) commands.push_back(kBilliard + " " + sub);
@@ -224,12 +230,14 @@ TEST(Binaries, UsageErrorsExitTwo) {
   ExpectOneLine(kPlannerNode + " --params /no/such.json", 2);
   ExpectOneLine(kEstimatorNode + " --camera /no/such.json", 2);
   ExpectOneLine(kTableSimNode + " --shots 0", 2);
+  ExpectOneLine(kViewerNode + " --port 0", 2);
 }
 
 TEST(Binaries, InternalFailuresExitOne) {
   // LCM that cannot be opened (LCM itself says so in a line of its own first).
   for (const std::string& command : std::vector<std::string>{kPlannerNode, kEstimatorNode,
-                                                             kTableSimNode, kBilliard + " burst"}) {
+                                                             kTableSimNode, kViewerNode,
+                                                             kBilliard + " burst"}) {
     ExpectStatus(command + " --lcm-url nosuch://", 1);
   }
   // Nodes that do not answer in time: there are none on a private in-memory LCM.
@@ -248,6 +256,7 @@ TEST(Binaries, SignalsStopNodesWithZeroAndCommandsWith130) {
   // A signal is how a node is stopped normally: not a failure.
   EXPECT_EQ(StatusAfterSignal(kPlannerNode + " --lcm-url memq://", "TERM"), 0);
   EXPECT_EQ(StatusAfterSignal(kEstimatorNode + " --lcm-url memq://", "INT"), 0);
+  EXPECT_EQ(StatusAfterSignal(kViewerNode + " --lcm-url memq:// --port 8797", "TERM"), 0);
   // A session or a command that a signal cuts short did not finish.
   EXPECT_EQ(StatusAfterSignal(kTableSimNode + " --lcm-url memq:// --reply-timeout 30", "TERM"),
             130);

@@ -3,6 +3,7 @@
 // (launch_scripts/fault_drill.sh), and a lossy link between the table and the nodes.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -19,8 +20,13 @@ void ExpectEveryShotLands(const nlohmann::json& session, const std::string& name
 }
 
 TEST(FaultDrill, KilledNodesRestartedMidRunAndABurstOfRequests) {
+  // Started from outside the repository by a relative path, as a user may: the script must
+  // find itself again after it changes directory.
+  const std::string elsewhere = ::testing::TempDir();
+  const std::string script =
+      std::filesystem::relative(FAULT_DRILL_SCRIPT, elsewhere).string();
   const billiard::testing::CommandResult r = billiard::testing::RunCommand(
-      std::string("bash ") + FAULT_DRILL_SCRIPT + " --no-build --shots 6");
+      "cd " + elsewhere + " && bash " + script + " --no-build --shots 6");
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json drill = nlohmann::json::parse(r.out, nullptr, false);
   ASSERT_TRUE(drill.is_object()) << r.out;

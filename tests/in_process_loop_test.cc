@@ -2,7 +2,9 @@
 // another against the same estimator and planner, each table simulator starting its clock at 0.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <lcm/lcm-cpp.hpp>
 #include <string>
 #include <vector>
@@ -14,6 +16,7 @@
 #include "sim/params/parameter_sets.h"
 #include "sim/table_sim_node/session.h"
 #include "sim/table_sim_node/table_sim_node.h"
+#include "tests/support/readme.h"
 
 namespace billiard {
 namespace {
@@ -65,6 +68,40 @@ TEST(InProcessLoop, ASessionRestartingTheClockSoonAfterTheLastIsServed) {
 
 // Started by hand with different sets, the nodes would plan and track one ball while the
 // simulator moves another: the session is refused before the first shot, naming who differs.
+// The targets and the noise come from streams of their own: the robot's noise moves where the
+// ball ends, never where it is sent.
+TEST(InProcessLoop, NoiseLeavesTheTargetsAsTheyWere) {
+  lcm::LCM lcm("memq://");
+  const physics::ModelParameters params = params::LoadParameters("pool");
+  const camera::CameraModel camera = table_sim_node::SessionCamera(params.table);
+  estimator_node::EstimatorNode estimator(lcm, camera, params, {}, {}, Quiet);
+  planner_node::PlannerNode planner(lcm, params, {}, Quiet);
+  std::vector<std::vector<table_sim_node::ShotResult>> runs;
+  for (const bool noise : {false, true}) {
+    table_sim_node::TableSimOptions options;
+    options.shots = 2;
+    options.seed = 5;
+    options.reply_timeout = 3.0;
+    options.start = {0.5 * params.table.length, 0.5 * params.table.width};
+    options.target_margin = 0.5;
+    options.min_distance = 0.15;
+    if (noise) options.noise = table_sim_node::RobotExecutionNoise();
+    table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
+    node.RunAlongside([&] {
+      estimator.Work();
+      return planner.Work();
+    });
+    runs.push_back(node.Run());
+    ASSERT_EQ(runs.back().size(), 2u);
+  }
+  for (std::size_t shot = 0; shot < 2; ++shot) {
+    EXPECT_EQ(runs[0][shot].target, runs[1][shot].target) << "shot " << shot;
+  }
+  // The noise did something: the first shot, from the same place to the same target, ends
+  // elsewhere.
+  EXPECT_GT((runs[0][0].final_point - runs[1][0].final_point).norm(), 1e-5);
+}
+
 TEST(InProcessLoop, ASessionIsRefusedWhileTheNodesRunOtherPhysics) {
   lcm::LCM lcm("memq://");
   const physics::ModelParameters pool = params::LoadParameters("pool");
@@ -125,6 +162,27 @@ TEST(InProcessLoop, ABreakIsPlannedSimulatedAndTrackedBallByBall) {
   }
   EXPECT_LT(std::sqrt(sum / frames), 3e-3);  // RMS over every ball and frame
   EXPECT_EQ(tracking.swaps, 0);
+
+  // This is `run_loop.sh --scene break` (seed 1, lockstep): deterministic, so the figures
+  // README.md quotes for it are this run's.
+  const nlohmann::json j = table_sim_node::SceneSummary(scene, "break");
+  const nlohmann::json& t = j["tracking"];
+  double worst_ball = 0.0;
+  for (const auto& b : t["balls"]) worst_ball = std::max(worst_ball, b["rms_error_mm"].get<double>());
+  const std::vector<std::string> quoted = testing::ReadmeFigures(
+      "the cue ball meets the apex ball ([0-9.]+) mm from the planned contact point [^;]*; "
+      "([0-9]+) events; the estimator follows the 16 balls with ([0-9.]+) mm RMS error "
+      "\\(([0-9.]+) mm for the worst ball, ([0-9]+) mm at worst in one frame[^)]*\\), "
+      "(no|[0-9]+) swaps, ([0-9]+) tracks re-acquired and ([0-9]+) of");
+  ASSERT_EQ(quoted.size(), 8u);
+  EXPECT_EQ(quoted[0], testing::Quoted(1e3 * scene.shot.miss_m, 3));
+  EXPECT_EQ(quoted[1], std::to_string(scene.events));
+  EXPECT_EQ(quoted[2], testing::Quoted(t["rms_error_mm"].get<double>(), 2));
+  EXPECT_EQ(quoted[3], testing::Quoted(worst_ball, 1));
+  EXPECT_EQ(quoted[4], testing::Quoted(t["max_error_mm"].get<double>(), 0));
+  EXPECT_EQ(quoted[5], "no");  // the swaps, checked above
+  EXPECT_EQ(quoted[6], std::to_string(tracking.reacquired));
+  EXPECT_EQ(quoted[7], std::to_string(t["lost_ball_frames"].get<int>()));
 }
 
 }  // namespace

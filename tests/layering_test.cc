@@ -45,14 +45,18 @@ const std::map<std::string, std::set<std::string>>& Layers() {
       {"estimator/node",
        {"estimator", "sim/camera", "sim/physics", "sim/params", "lcmtypes", "lcmtypes/node"}},
       {"fuzz", {"lcmtypes", "lcmtypes/testing"}},
+      {"tools/plot", {"sim/table", "sim/physics"}},
       {"bench",
-       {"sim/physics", "sim/batch", "sim/table", "sim/table/testing", "sim/params",
+       {"tools/plot", "sim/physics", "sim/batch", "sim/table", "sim/table/testing", "sim/params",
         "sim/model_choice", "sim/camera", "sim/render", "planner", "planner/testing", "estimator",
         "estimator/testing", "tests/support"}},
       {"tools/billiard",
        {"sim/physics", "sim/batch", "sim/table", "sim/params", "sim/model_choice",
         "sim/contact_fit", "sim/camera", "sim/render", "sim/table_sim_node", "lcmtypes",
-        "lcmtypes/node", "planner", "planner/node", "estimator", "estimator/node", "bench"}},
+        "lcmtypes/node", "planner", "planner/node", "estimator", "estimator/node", "bench",
+        "tools/plot"}},
+      {"tools/viewer_node", {"lcmtypes", "lcmtypes/node", "sim/params", "sim/physics"}},
+      {"tools/python", {"sim/physics", "sim/table", "sim/params", "planner", "estimator"}},
       {"tests", {}},  // the cross-module tests may include anything
   };
   return layers;

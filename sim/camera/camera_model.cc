@@ -100,7 +100,8 @@ CameraModel ParseCameraModel(const std::string& json_text, const std::string& or
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
+    // parse_error, and out_of_range for a number beyond double range (1e400).
     throw std::invalid_argument(origin + ": not valid JSON (" + e.what() + ")");
   }
   const auto numbers = [&](const char* key, std::size_t count) {

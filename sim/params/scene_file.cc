@@ -2,6 +2,7 @@
 
 #include "sim/params/strict_json.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -31,9 +32,26 @@ std::string RequiredText(const nlohmann::json& object, const char* key, const st
   return value.get<std::string>();
 }
 
+physics::CueStroke ParseCue(const nlohmann::json& j, const std::string& where) {
+  physics::CueStroke stroke;
+  internal::ReadSection(j, "cue", {{"speed", &stroke.speed}, {"heading", &stroke.heading}}, where,
+                        {"tip_side", "tip_height", "elevation"});
+  for (const internal::Field& f : {internal::Field{"tip_side", &stroke.tip_side},
+                                   internal::Field{"tip_height", &stroke.tip_height},
+                                   internal::Field{"elevation", &stroke.elevation}}) {
+    if (!j.contains(f.key)) continue;
+    if (!j.at(f.key).is_number()) {
+      throw std::invalid_argument(where + ": cue." + f.key + " must be a number, not " +
+                                  TypeName(j.at(f.key)));
+    }
+    *f.value = j.at(f.key).get<double>();
+  }
+  return stroke;
+}
+
 table::SceneBall ParseBall(const nlohmann::json& j, const std::string& where) {
   if (!j.is_object()) throw std::invalid_argument(where + " must be an object, not " + TypeName(j));
-  RequireKnownKeys(j, {"id", "state"}, where);
+  RequireKnownKeys(j, {"id", "state", "cue"}, where);
   const nlohmann::json& id = Required(j, "id", where);
   if (!id.is_number_integer()) {
     throw std::invalid_argument(where + ": id must be an integer, not " + TypeName(id));
@@ -67,7 +85,11 @@ SceneFile ParseScene(const std::string& json_text, const std::string& origin) {
     throw std::invalid_argument(origin + ": balls must be an array, not " + TypeName(balls));
   }
   for (std::size_t k = 0; k < balls.size(); ++k) {
-    scene.balls.push_back(ParseBall(balls[k], origin + ": balls[" + std::to_string(k) + "]"));
+    const std::string where = origin + ": balls[" + std::to_string(k) + "]";
+    scene.balls.push_back(ParseBall(balls[k], where));
+    if (balls[k].contains("cue")) {
+      scene.cues[scene.balls.back().id] = ParseCue(balls[k].at("cue"), where);
+    }
   }
   return scene;
 }
@@ -86,10 +108,40 @@ std::string SceneJson(const SceneFile& scene) {
   j["params"] = scene.params;
   j["balls"] = nlohmann::json::array();
   for (const table::SceneBall& b : scene.balls) {
-    j["balls"].push_back(
-        {{"id", b.id}, {"state", std::vector<double>(b.state.data(), b.state.data() + 7)}});
+    nlohmann::json ball = {{"id", b.id},
+                           {"state", std::vector<double>(b.state.data(), b.state.data() + 7)}};
+    const auto cue = scene.cues.find(b.id);
+    if (cue != scene.cues.end()) {
+      const physics::CueStroke& c = cue->second;
+      ball["cue"] = {{"speed", c.speed},
+                     {"heading", c.heading},
+                     {"tip_side", c.tip_side},
+                     {"tip_height", c.tip_height},
+                     {"elevation", c.elevation}};
+    }
+    j["balls"].push_back(ball);
   }
   return j.dump();
+}
+
+std::vector<table::SceneBall> LaunchedBalls(const SceneFile& scene,
+                                            const physics::ModelParameters& p) {
+  std::vector<table::SceneBall> balls = scene.balls;
+  for (const auto& [id, stroke] : scene.cues) {
+    const std::string name = "ball " + std::to_string(id);
+    const auto ball = std::find_if(balls.begin(), balls.end(),
+                                   [id = id](const table::SceneBall& b) { return b.id == id; });
+    if (ball == balls.end()) throw std::invalid_argument(name + " is struck but not on the table");
+    if (!ball->state.tail<5>().isZero()) {
+      throw std::invalid_argument(name + ": a struck ball starts at rest (velocity and spin 0)");
+    }
+    try {
+      ball->state = physics::StrikeBall(stroke, ball->state.head<2>(), p);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(name + ": " + e.what());
+    }
+  }
+  return balls;
 }
 
 }  // namespace billiard::params

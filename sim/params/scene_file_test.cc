@@ -19,7 +19,7 @@ std::string Refusal(const std::string& json) {
 }
 
 TEST(SceneFile, RoundTripsEveryNumberToTheBit) {
-  SceneFile scene{"pool-9ft", "pool", {}};
+  SceneFile scene{"pool-9ft", "pool", {}, {}};
   scene.balls.push_back({0, physics::MakeBallState(0.1 + 1e-17, 1.0 / 3.0, -2.5e-300, 7, 0, 0,
                                                    -123.456789012345678)});
   scene.balls.push_back({9, physics::MakeBallState(2.2, 0.6, 0, 0, 0, 0, 0)});
@@ -33,11 +33,33 @@ TEST(SceneFile, RoundTripsEveryNumberToTheBit) {
   }
 }
 
+TEST(SceneFile, ReadsAStrokeAndWritesItBack) {
+  const SceneFile scene = ParseScene(
+      R"({"table":"pool-9ft","params":"pool","balls":[{"id":0,"state":[1,0.5,0,0,0,0,0],)"
+      R"("cue":{"speed":2.5,"heading":0.25,"tip_height":-0.01}}]})",
+      "c.json");
+  ASSERT_EQ(scene.cues.count(0), 1u);
+  EXPECT_EQ(scene.cues.at(0).speed, 2.5);
+  EXPECT_EQ(scene.cues.at(0).heading, 0.25);
+  EXPECT_EQ(scene.cues.at(0).tip_height, -0.01);
+  EXPECT_EQ(scene.cues.at(0).tip_side, 0.0);  // the offsets default to 0
+  const SceneFile back = ParseScene(SceneJson(scene), "t");
+  EXPECT_EQ(back.cues.at(0).tip_height, -0.01);
+  EXPECT_NE(Refusal(R"({"table":"t","params":"pool","balls":[{"id":0,"state":[1,1,0,0,0,0,0],)"
+                    R"("cue":{"speed":1}}]})")
+                .find("missing number cue.heading"),
+            std::string::npos);
+}
+
 TEST(SceneFile, RefusesMalformedScenesNamingTheFault) {
   const std::string ball = R"({"id":0,"state":[1,0.5,0,0,0,0,0]})";
   EXPECT_EQ(Refusal(R"({"table":"pool-9ft","params":"pool","balls":[)" + ball + "]}"), "");
   EXPECT_NE(Refusal("[1, 2]").find("a scene is a JSON object"), std::string::npos);
   EXPECT_NE(Refusal("{").find("not valid JSON"), std::string::npos);
+  // Beyond double range: nlohmann says out_of_range, not parse_error; still bad input.
+  EXPECT_NE(Refusal(R"({"table":"t","params":"pool","balls":[{"id":0,"state":[1e400,1,0,0,0,0,0]}]})")
+                .find("not valid JSON"),
+            std::string::npos);
   EXPECT_NE(Refusal(R"({"params":"pool","balls":[]})").find("missing table"), std::string::npos);
   EXPECT_NE(Refusal(R"({"table":"pool-9ft","params":"pool","balls":[],"bals":1})")
                 .find("unknown key bals"),

@@ -58,7 +58,8 @@ nlohmann::json ParseObject(const std::string& json_text, const std::string& orig
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
+    // parse_error, and out_of_range for a number beyond double range (1e400): bad input both.
     throw std::invalid_argument(origin + ": not valid JSON (" + e.what() + ")");
   }
   if (!j.is_object()) throw std::invalid_argument(origin + ": " + what + " is a JSON object");

@@ -154,6 +154,14 @@ void ValidatePocket(const TableSpec::PocketSpec& p, const std::string& table, co
 }  // namespace
 
 bool TableGeometry::OnSurface(const Vector2d& p, double radius) const {
+  if (!InsideBoundary(p, radius)) return false;
+  for (const Pocket& pocket : pockets) {
+    if ((p - pocket.centre).dot(pocket.inward) > 0.0) return false;
+  }
+  return true;
+}
+
+bool TableGeometry::InsideBoundary(const Vector2d& p, double radius) const {
   if (!InsidePolygon(outline, p)) return false;
   for (const CushionLine& line : lines) {
     if (DistanceToSegment(p, line.a, line.b) < radius) return false;

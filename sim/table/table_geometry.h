@@ -90,8 +90,14 @@ struct TableGeometry {
   // lines (each rounded nose cut by its chord, which lies inside the nose's circle).
   std::vector<Eigen::Vector2d> outline;
 
-  // Whether a ball of radius `radius` with centre p lies on the playing surface, clear of every
-  // cushion line and point (touching allowed, no overlap), and not beyond a capture line.
+  // Whether a ball of radius `radius` with centre p lies within the closed boundary, clear of
+  // every cushion line and point (touching allowed, no overlap), and not beyond a capture line:
+  // where a moving ball may be, its centre over a pocket's mouth on its way to drop included.
+  bool InsideBoundary(const Eigen::Vector2d& p, double radius) const;
+  // Whether a ball may be placed there: inside the boundary with its centre on the playing
+  // surface, not beyond a pocket's mouth line (between the noses). A centre past the mouth
+  // hangs over the pocket: a still ball there would never reach the capture line, and a real
+  // one would drop.
   bool OnSurface(const Eigen::Vector2d& p, double radius) const;
 };
 

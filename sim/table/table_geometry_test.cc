@@ -103,13 +103,13 @@ TEST_P(ClosureTest, EveryRayMeetsACushionOrACaptureLine) {
     ASSERT_TRUE(std::isfinite(t)) << "ray " << ray << " from " << p.transpose() << " along "
                                   << v.transpose() << " meets nothing";
     for (int k = 0; k < 8; ++k) {
-      ASSERT_TRUE(table.OnSurface(p + (k / 8.0) * t * v, R))
+      ASSERT_TRUE(table.InsideBoundary(p + (k / 8.0) * t * v, R))
           << "ray " << ray << " leaves the surface before its first hit at t = " << t;
     }
     if (t > kStep) {
-      ASSERT_TRUE(table.OnSurface(p + (t - kStep) * v, R)) << "ray " << ray;
+      ASSERT_TRUE(table.InsideBoundary(p + (t - kStep) * v, R)) << "ray " << ray;
     }
-    ASSERT_FALSE(table.OnSurface(p + (t + kStep) * v, R))
+    ASSERT_FALSE(table.InsideBoundary(p + (t + kStep) * v, R))
         << "ray " << ray << " still on the surface past its hit at t = " << t;
     captured_rays += captured;
   }
@@ -274,7 +274,9 @@ TEST(TableGeometryTest, MirrorSymmetry) {
 }
 
 // OnSurface at places whose answer is plain: the carom table's interior is the rectangle inset
-// by R; a ball past a pocket's capture line is gone.
+// by R; a ball past a pocket's capture line is gone, and one past its mouth line (between the
+// noses) hangs over the pocket: inside the boundary a moving ball keeps to, but no place to put
+// a ball.
 TEST(TableGeometryTest, OnSurfaceAtPlainPlaces) {
   const TableGeometry carom = Built("carom-10ft");
   const double R = kCaromRadius;
@@ -287,9 +289,17 @@ TEST(TableGeometryTest, OnSurfaceAtPlainPlaces) {
   const TableGeometry pool = Built("pool-9ft");
   for (const Pocket& pocket : pool.pockets) {
     const Vector2d middle = 0.5 * (pocket.capture_a + pocket.capture_b);
-    EXPECT_TRUE(pool.OnSurface(middle - 1e-6 * pocket.inward, 0.01)) << pocket.name;
-    EXPECT_FALSE(pool.OnSurface(middle + 1e-6 * pocket.inward, 0.01)) << pocket.name;
+    EXPECT_TRUE(pool.InsideBoundary(middle - 1e-6 * pocket.inward, 0.01)) << pocket.name;
+    EXPECT_FALSE(pool.InsideBoundary(middle + 1e-6 * pocket.inward, 0.01)) << pocket.name;
+    EXPECT_FALSE(pool.OnSurface(middle - 1e-6 * pocket.inward, 0.01)) << pocket.name;
+    EXPECT_TRUE(pool.OnSurface(pocket.centre - 1e-6 * pocket.inward, 0.01)) << pocket.name;
+    EXPECT_FALSE(pool.OnSurface(pocket.centre + 1e-6 * pocket.inward, 0.01)) << pocket.name;
   }
+  // The corner pocket's mouth runs from nose to nose, mouth / sqrt(2) from the corner along each
+  // cushion (x + y = 0.0819 m at the lower left): a ball at (0.01, 0.01) is 4.4 cm past it,
+  // over the pocket, though inside the playing rectangle and short of the capture line.
+  EXPECT_TRUE(pool.InsideBoundary({0.01, 0.01}, kPoolRadius));
+  EXPECT_FALSE(pool.OnSurface({0.01, 0.01}, kPoolRadius));
 }
 
 TableSpec PoolSpec() { return params::LoadTableSpec("pool-9ft"); }

@@ -254,7 +254,7 @@ int ExpectBreaksKeepTheirInvariants(int breaks, const TableSimulationOptions& op
         const BallState s = sim.StateAt(i, t);
         e += physics::KineticEnergy(s, p.ball.mass, p.ball.radius);
         if (!Dropped(sim, i, t)) {
-          EXPECT_TRUE(table.OnSurface(s.head<2>(), r - overlap))
+          EXPECT_TRUE(table.InsideBoundary(s.head<2>(), r - overlap))
               << "seed " << seed << ", ball " << sim.id(i) << ", t = " << t;
         }
       }

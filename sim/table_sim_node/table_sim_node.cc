@@ -27,6 +27,14 @@ namespace {
 // The one ball of a session, as the truth names it.
 constexpr int kCueBall = 0;
 
+// The noise's generator: seeded from the seed and a stream number through seed_seq, so that it
+// is independent of the targets' generator (seeded with the seed itself, whose targets it keeps
+// as they were).
+std::mt19937 NoiseStream(std::uint32_t seed) {
+  std::seed_seq sequence{seed, std::uint32_t{1}};
+  return std::mt19937(sequence);
+}
+
 // The table of the "break" scene, and the longest a whole-table session simulates.
 constexpr char kBreakTable[] = "pool-9ft";
 constexpr double kLongestScene = 120.0;  // [s]
@@ -79,7 +87,8 @@ TableSimNode::TableSimNode(lcm::LCM& lcm, const physics::ModelParameters& params
         std::cerr << "table_sim_node: " << line << std::endl;
       })),
       health_("table_sim_node", log_),
-      rng_(options.seed),
+      target_rng_(options.seed),
+      noise_rng_(NoiseStream(options.seed)),
       fault_rng_(options.faults.seed),
       ball_(options.start) {
   subscriptions_.push_back(
@@ -340,10 +349,10 @@ void TableSimNode::Track(const std::vector<TruthBall>& balls, double t,
 physics::CueStroke TableSimNode::WithNoise(physics::CueStroke stroke) {
   std::normal_distribution<double> unit(0.0, 1.0);
   const ExecutionNoise& n = options_.noise;
-  stroke.speed *= 1.0 + n.speed * unit(rng_);
-  stroke.heading += n.heading * unit(rng_);
-  stroke.tip_side += n.tip_offset * unit(rng_);
-  stroke.tip_height += n.tip_offset * unit(rng_);
+  stroke.speed *= 1.0 + n.speed * unit(noise_rng_);
+  stroke.heading += n.heading * unit(noise_rng_);
+  stroke.tip_side += n.tip_offset * unit(noise_rng_);
+  stroke.tip_height += n.tip_offset * unit(noise_rng_);
   // A tip pushed past the ball's edge would miscue: keep it on the ball.
   const double offset = std::hypot(stroke.tip_side, stroke.tip_height);
   const double limit = 0.95 * params_.ball.radius;
@@ -369,7 +378,7 @@ std::vector<ShotResult> TableSimNode::Run() {
     const Eigen::Vector2d rest = ball_;
     ShotResult result;
     do {
-      result.target = {x(rng_), y(rng_)};
+      result.target = {x(target_rng_), y(target_rng_)};
     } while ((result.target - rest).norm() < options_.min_distance);
     shot_request_t ask{};
     ask.target[0] = result.target.x();

@@ -200,7 +200,11 @@ class TableSimNode {
   render::TableRenderer renderer_;
   Log log_;
   nodes::NodeHealth health_;
-  std::mt19937 rng_;
+  // The targets and the execution noise from streams of their own, both from --seed: turning
+  // the noise on leaves the targets as they were, and a run with noise differs from one without
+  // by the noise alone.
+  std::mt19937 target_rng_;
+  std::mt19937 noise_rng_;
   std::mt19937 fault_rng_;
   std::function<bool()> alongside_;
   std::vector<lcm::Subscription*> subscriptions_;

@@ -18,6 +18,7 @@
 #include "tools/billiard/loop_command.h"
 #include "tools/billiard/node_status_command.h"
 #include "tools/billiard/plan_command.h"
+#include "tools/billiard/plot_command.h"
 #include "tools/billiard/replay_command.h"
 #include "tools/billiard/scene_commands.h"
 #include "tools/billiard/simulate_command.h"
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddBenchDetectCommand(app);
   billiard::cli::AddRackCommand(app);
   billiard::cli::AddBenchScenesCommand(app);
+  billiard::cli::AddPlotCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -87,7 +87,13 @@ void Run(const PlanArgs& args, bool slide_given) {
   options.refine = !args.no_refine;
 
   const planner::ShotPlan plan = planner::PlanShot(request, params, options);
-  if (args.json) std::cout << PlanJson(plan, params).dump() << std::endl;
+  if (args.json) {
+    // The request's ends too, so that the plan alone can be drawn (`billiard plot --plan`).
+    nlohmann::json j = PlanJson(plan, params);
+    j["from"] = from;
+    j["to"] = to;
+    std::cout << j.dump() << std::endl;
+  }
   if (plan.status != planner::PlanStatus::kOk) {
     throw Refused(planner::PlanStatusName(plan.status) + ": " + plan.reason);
   }

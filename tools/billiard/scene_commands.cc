@@ -1,11 +1,14 @@
 #include "tools/billiard/scene_commands.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "bench/scene_benchmark.h"
 #include "sim/model_choice/model_choice.h"
@@ -69,6 +72,72 @@ nlohmann::json EventJson(const table::TableEvent& e) {
   return j;
 }
 
+// The 5-DOF model's method for what it moves under --model auto (sliding or spinning balls): the
+// cheapest that meets the accuracy on side-spin motion (docs/benchmarks/model_choice.json).
+physics::SimulationOptions AutoFiveDofMethod(double accuracy,
+                                             const physics::ModelParameters& params) {
+  return model_choice::ChooseModel(physics::MakeBallState(0, 0, 1, 0, 0, 0, 1), params,
+                                   accuracy > 0.0 ? accuracy : kSceneAccuracy)
+      .options;
+}
+
+// The models a scene ran with, in words, for the readable summary.
+std::string ModelsInWords(const SceneSimulationArgs& args, const physics::ModelParameters& params,
+                          bool struck) {
+  std::ostringstream out;
+  out << "models: motion ";
+  if (args.model == "closed-form") {
+    out << "closed form for every ball (Jaroukh 2019)";
+  } else if (args.model == "approx") {
+    out << "approximate 5-DOF model (Kudra et al. 2016) for every moving ball";
+  } else {
+    const physics::SimulationOptions method = AutoFiveDofMethod(args.accuracy, params);
+    out << "auto: closed form while a ball rolls, 5-DOF " << physics::ModelName(method.model)
+        << "/" << physics::IntegratorName(method.integrator) << " (tol " << method.tolerance
+        << " m) while it slides or spins (accuracy "
+        << (args.accuracy > 0.0 ? args.accuracy : kSceneAccuracy) << " m)";
+  }
+  out << "; cushion " << args.cushion_model
+      << "; ball-ball restitution with Alciatore's throw friction (TP A.14)";
+  if (struck) out << "; cue strike with squirt (Alciatore TP A.30, A.31)";
+  return out.str();
+}
+
+// `simulate --scene` without --json: where each ball started and ended, its cushions, which
+// pocket it dropped into and when; on stderr.
+void PrintSceneTable(const table::TableSimulation& sim,
+                     const std::vector<table::SceneBall>& start) {
+  std::ostringstream out;
+  out << std::fixed;
+  out << "ball    start X, Y [m]      end X, Y [m]  speed m/s  cushions  pocketed\n";
+  for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+    const physics::BallState s = sim.State(i);
+    int cushions = 0;
+    double dropped = -1.0;
+    for (const table::TableEvent& e : sim.events()) {
+      if (e.ball != sim.id(i)) continue;
+      cushions += e.type == table::EventType::kBallCushion || e.type == table::EventType::kBallJaw;
+      if (e.type == table::EventType::kBallPocket) dropped = e.time;
+    }
+    const physics::BallState& s0 =
+        std::find_if(start.begin(), start.end(), [&](const table::SceneBall& b) {
+          return b.id == sim.id(i);
+        })->state;
+    out << std::setw(4) << sim.id(i) << "  " << std::setprecision(3) << std::setw(8)
+        << s0[physics::kX] << ", " << std::setw(6) << s0[physics::kY] << "  " << std::setw(8)
+        << s[physics::kX] << ", " << std::setw(6) << s[physics::kY] << "  " << std::setw(9)
+        << std::hypot(s[physics::kVx], s[physics::kVy]) << "  " << std::setw(8) << cushions
+        << "  ";
+    if (sim.pocket(i)) {
+      out << *sim.pocket(i) << " at " << std::setprecision(2) << dropped << " s";
+    } else {
+      out << "-";
+    }
+    out << "\n";
+  }
+  std::cerr << out.str();
+}
+
 }  // namespace
 
 decltype(table::TableSimulationOptions::five_dof) SceneMotionModel(
@@ -83,12 +152,7 @@ decltype(table::TableSimulationOptions::five_dof) SceneMotionModel(
   if (accuracy < 0.0 || !std::isfinite(accuracy)) {
     throw UsageError("--accuracy must be a positive number of metres");
   }
-  // The 5-DOF model's method for what it moves (sliding or spinning balls): the cheapest that
-  // meets the accuracy on side-spin motion (docs/benchmarks/model_choice.json).
-  const physics::SimulationOptions method =
-      model_choice::ChooseModel(physics::MakeBallState(0, 0, 1, 0, 0, 0, 1), params,
-                                accuracy > 0.0 ? accuracy : kSceneAccuracy)
-          .options;
+  const physics::SimulationOptions method = AutoFiveDofMethod(accuracy, params);
   return [method, params](const physics::BallState& state) {
     return table::FiveDofWhereNeeded(state, params, method);
   };
@@ -107,8 +171,15 @@ void SimulateScene(const SceneSimulationArgs& args) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
+  if (args.cue) scene.cues[0] = *args.cue;
   const physics::ModelParameters params = LoadParametersOption(scene.params);
   const table::TableGeometry geometry = LoadTableOption(scene.table);
+  std::vector<table::SceneBall> balls;
+  try {
+    balls = params::LaunchedBalls(scene, params);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(args.scene_path + ": " + e.what());
+  }
   table::TableSimulationOptions options;
   options.cushion_model = CushionModelOption(args.cushion_model);
   options.five_dof = SceneMotionModel(args.model, args.accuracy, params);
@@ -116,7 +187,7 @@ void SimulateScene(const SceneSimulationArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<table::TableSimulation> sim;
   try {
-    sim = std::make_unique<table::TableSimulation>(geometry, params, scene.balls, options);
+    sim = std::make_unique<table::TableSimulation>(geometry, params, balls, options);
   } catch (const std::invalid_argument& e) {
     throw UsageError(args.scene_path + ": " + e.what());
   }
@@ -156,7 +227,9 @@ void SimulateScene(const SceneSimulationArgs& args) {
     std::cerr << geometry.name << ", " << params::ParameterSetLabel(params)
               << " parameters: " << sim->ball_count() << " balls, " << sim->events().size()
               << " events to t = " << sim->time() << " s, " << pocketed << " pocketed"
-              << (sim->AtRest() ? ", all at rest" : "") << ", " << wall_us << " us\n";
+              << (sim->AtRest() ? ", all at rest" : "") << ", " << wall_us << " us\n"
+              << ModelsInWords(args, params, !scene.cues.empty()) << "\n";
+    PrintSceneTable(*sim, balls);
   }
 }
 

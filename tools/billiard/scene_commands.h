@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
 #include "sim/table/table_simulation.h"
 
@@ -13,6 +14,7 @@ namespace billiard::cli {
 
 struct SceneSimulationArgs {
   std::string scene_path;
+  std::optional<physics::CueStroke> cue;  // --cue: the stroke of the cue ball (id 0)
   std::optional<double> t_end;  // none: until every ball rests or is pocketed
   std::string model;            // auto | closed-form | approx
   double accuracy = 0.0;        // auto: the endpoint error allowed a ball's motion (0: 5 mm)

@@ -11,6 +11,7 @@
 #include "bench/timing.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
 #include "sim/physics/simulator.h"
 #include "tools/billiard/command_line.h"
@@ -22,6 +23,8 @@ namespace {
 
 struct SimulateArgs {
   std::string state;
+  std::string cue;  // speed,heading,tip_side,tip_height,elevation: a stroke instead of a launch
+  std::string at = "0,0";  // where --cue strikes the ball (one ball)
   std::optional<double> t_end;
   std::string scene;
   std::string cushion_model = "mathavan-2010";
@@ -38,18 +41,29 @@ struct SimulateArgs {
   bool json = false;
 };
 
-void Run(const SimulateArgs& args) {
-  if (args.scene.empty() == args.state.empty()) {
-    throw UsageError("give one of --state (one ball) and --scene (a table)");
-  }
+std::optional<physics::CueStroke> CueOption(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  const auto n = ParseNumberList(text, 5, "--cue speed,heading,tip_side,tip_height,elevation");
+  return physics::CueStroke{n[0], n[1], n[2], n[3], n[4]};
+}
+
+void Run(const SimulateArgs& args, bool at_given) {
+  const std::optional<physics::CueStroke> cue = CueOption(args.cue);
   if (!args.scene.empty()) {
-    SimulateScene({args.scene, args.t_end, args.model.empty() ? "auto" : args.model, args.accuracy,
-                   args.cushion_model, args.trajectory_path, args.sample_dt, args.json});
+    if (!args.state.empty() || at_given) {
+      throw UsageError("--scene takes its balls from the file, not --state or --at");
+    }
+    SimulateScene({args.scene, cue, args.t_end, args.model.empty() ? "auto" : args.model,
+                   args.accuracy, args.cushion_model, args.trajectory_path, args.sample_dt,
+                   args.json});
     return;
   }
-  if (!args.t_end) throw UsageError("--state needs --t-end");
+  if (args.state.empty() == !cue) {
+    throw UsageError("give one of --state and --cue (one ball), or --scene (a table)");
+  }
+  if (at_given && !cue) throw UsageError("--at goes with --cue");
+  if (!args.t_end) throw UsageError("one ball needs --t-end");
   const double t_end = *args.t_end;
-  const auto numbers = ParseNumberList(args.state, 7, "--state X,Y,vx,vy,wx,wy,wz");
   RequireFinite(t_end, "--t-end");
   if (t_end < 0.0) throw UsageError("--t-end must be >= 0");
   if (!(args.tol > 0.0) || !std::isfinite(args.tol)) throw UsageError("--tol must be positive");
@@ -74,7 +88,18 @@ void Run(const SimulateArgs& args) {
     throw UsageError("--integrator: unknown integrator '" + args.integrator + "' (rodas4, dopri5)");
   const physics::ModelParameters params = LoadParametersOption(args.params);
 
-  const physics::BallState initial = Eigen::Map<const physics::BallState>(numbers.data());
+  physics::BallState initial;
+  if (cue) {
+    const auto at = ParseNumberList(args.at, 2, "--at X,Y");
+    try {
+      initial = physics::StrikeBall(*cue, Eigen::Vector2d(at[0], at[1]), params);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--cue: ") + e.what());
+    }
+  } else {
+    const auto numbers = ParseNumberList(args.state, 7, "--state X,Y,vx,vy,wx,wy,wz");
+    initial = Eigen::Map<const physics::BallState>(numbers.data());
+  }
   physics::SimulationOptions options;
   std::optional<model_choice::ModelChoice> choice;
   if (automatic) {
@@ -133,6 +158,7 @@ void Run(const SimulateArgs& args) {
                    {"accuracy_met", choice->accuracy_met}};
     }
     DescribeParameters(params, &j);
+    if (cue) j["launch"] = std::vector<double>(initial.data(), initial.data() + 7);
     j["t"] = t;
     if (arrived) j["arrived"] = *arrived;
     j["state"] = std::vector<double>(s.data(), s.data() + 7);
@@ -170,6 +196,13 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--state", args->state,
                   "Initial state X,Y,vx,vy,wx,wy,wz [m, m/s, rad/s] (write --state=-1,... "
                   "when it starts with a minus sign)");
+  cmd->add_option("--cue", args->cue,
+                  "A cue stroke instead of a launch: speed [m/s], heading [rad from +x], "
+                  "tip_side [m, right english > 0], tip_height [m, follow > 0, draw < 0], "
+                  "elevation [rad below horizontal], through the cue strike model with squirt; "
+                  "with --scene it strikes the cue ball (id 0), which must be at rest");
+  cmd->add_option("--at", args->at, "--cue, one ball: where the ball is struck X,Y [m]")
+      ->capture_default_str();
   cmd->add_option("--scene", args->scene,
                   "A table scene (JSON: table, params, balls; `billiard rack` writes one): every "
                   "ball, event by event");
@@ -203,7 +236,7 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_flag("--no-rest-switch", args->no_rest_switch,
                 "5-DOF models: integrate the regularized equations through the rest phase too");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
-  cmd->callback([args] { Run(*args); });
+  cmd->callback([args, cmd] { Run(*args, cmd->count("--at") > 0); });
 }
 
 }  // namespace billiard::cli

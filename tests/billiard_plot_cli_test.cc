@@ -1,0 +1,156 @@
+// `billiard plot` as a user runs it: the PNG and the SVG of a scene put each ball where the
+// scene (and `billiard simulate --scene`, for a ball that moves) puts it, in the picture's
+// documented frame (tools/plot/table_picture.h: 400 px a metre, a 60 px rail, y up); a plan's
+// ball ends on its target; bad input exits 2.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "tests/support/billiard_command.h"
+
+namespace billiard::testing {
+namespace {
+
+constexpr double kScale = 400.0, kRail = 60.0;  // the frame the header documents
+constexpr double kLength = 2.54, kWidth = 1.27;  // pool-9ft's playing surface
+
+cv::Point2d Pixel(double x, double y) {
+  return {kRail + kScale * x, kRail + kScale * (kWidth - y)};
+}
+
+struct Ball {
+  int id;
+  double x, y;
+  cv::Vec3b bgr;         // its colour in the PNG
+  std::string svg_fill;  // and in the SVG
+};
+
+std::string Write(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// Three still balls and the cue ball rolling up the table, clear of them.
+std::string Scene() {
+  nlohmann::json scene = {{"table", "pool-9ft"}, {"params", "pool"}};
+  scene["balls"] = {{{"id", 0}, {"state", {0.3, 0.9, 1.0, 0, 0, 0, 0}}},
+                    {{"id", 1}, {"state", {0.5, 0.4, 0, 0, 0, 0, 0}}},
+                    {{"id", 2}, {"state", {2.0, 0.3, 0, 0, 0, 0, 0}}},
+                    {{"id", 8}, {"state", {1.27, 0.635, 0, 0, 0, 0, 0}}}};
+  return Write("plot_scene.json", scene.dump());
+}
+
+std::vector<Ball> Expected(const std::string& scene) {
+  const std::string args = "simulate --scene " + scene + " --json";
+  const nlohmann::json run = OneObject(Billiard(args), args);
+  double x0 = 0, y0 = 0;
+  for (const auto& b : run["balls"]) {
+    if (b["id"] == 0) x0 = b["state"][0], y0 = b["state"][1];
+  }
+  EXPECT_GT(x0, 0.8);  // it moved
+  return {{0, x0, y0, {255, 255, 255}, "100%,100%,100%"},
+          {1, 0.5, 0.4, {0, 204, 255}, "100%,80%,0%"},
+          {2, 2.0, 0.3, {191, 64, 0}, "0%,25%,75%"},
+          {8, 1.27, 0.635, {13, 13, 13}, "5%,5%,5%"}};
+}
+
+bool Near(const cv::Vec3b& a, const cv::Vec3b& b) {
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(a[k] - b[k]) > 12) return false;
+  }
+  return true;
+}
+
+TEST(BilliardPlot, APngPutsEveryBallWhereTheSceneDoes) {
+  const std::string scene = Scene();
+  const std::string png = ::testing::TempDir() + "/plot_scene.png";
+  const CommandResult r = Billiard("plot --scene " + scene + " --out " + png, true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const cv::Mat image = cv::imread(png, cv::IMREAD_COLOR);
+  ASSERT_FALSE(image.empty());
+  EXPECT_EQ(image.cols, static_cast<int>(std::ceil(2 * kRail + kScale * kLength)));
+  EXPECT_EQ(image.rows, static_cast<int>(std::ceil(2 * kRail + kScale * kWidth)));
+  const double r_px = kScale * 0.028575;
+  for (const Ball& b : Expected(scene)) {
+    const cv::Point2d c = Pixel(b.x, b.y);
+    // Its colour at its centre and a little inside its edge, not a diameter away.
+    for (const cv::Point2d d : {cv::Point2d(0, 0), cv::Point2d(0.6 * r_px, 0),
+                                cv::Point2d(0, -0.6 * r_px)}) {
+      const cv::Point p(std::lround(c.x + d.x), std::lround(c.y + d.y));
+      EXPECT_TRUE(Near(image.at<cv::Vec3b>(p), b.bgr))
+          << "ball " << b.id << " at " << p << ": " << image.at<cv::Vec3b>(p);
+    }
+    const cv::Point away(std::lround(c.x), std::lround(c.y + 2.5 * r_px));
+    EXPECT_FALSE(Near(image.at<cv::Vec3b>(away), b.bgr)) << "ball " << b.id;
+  }
+}
+
+TEST(BilliardPlot, AnSvgPutsEveryBallWhereTheSceneDoes) {
+  const std::string scene = Scene();
+  const std::string svg = ::testing::TempDir() + "/plot_scene.svg";
+  const CommandResult r = Billiard("plot --scene " + scene + " --out " + svg, true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream in(svg);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_NE(text.find("<svg"), std::string::npos);
+  for (const Ball& b : Expected(scene)) {
+    // The filled ball: a path of its fill outlined in black; its centre the middle of the
+    // path's bounding box.
+    const std::regex path("<path style=\"[^\"]*fill:rgb\\(" +
+                          std::regex_replace(b.svg_fill, std::regex("%"), "%") +
+                          "\\)[^\"]*stroke:rgb\\(0%,0%,0%\\)[^\"]*\" d=\"([^\"]*)\"");
+    bool found = false;
+    for (std::sregex_iterator it(text.begin(), text.end(), path), end; it != end; ++it) {
+      std::istringstream d(std::regex_replace((*it)[1].str(), std::regex("[A-Za-z]"), " "));
+      double u, v, u_min = 1e9, u_max = -1e9, v_min = 1e9, v_max = -1e9;
+      while (d >> u >> v) {
+        u_min = std::min(u_min, u), u_max = std::max(u_max, u);
+        v_min = std::min(v_min, v), v_max = std::max(v_max, v);
+      }
+      const cv::Point2d c = Pixel(b.x, b.y);
+      found = found || (std::abs(0.5 * (u_min + u_max) - c.x) < 0.5 &&
+                        std::abs(0.5 * (v_min + v_max) - c.y) < 0.5);
+    }
+    EXPECT_TRUE(found) << "ball " << b.id << " not drawn at " << Pixel(b.x, b.y);
+  }
+}
+
+TEST(BilliardPlot, APlansBallEndsOnItsTarget) {
+  const std::string args = "plan --from 0.5,0.5 --to 1.5,0.8 --spin draw --side-spin 10 --json";
+  const CommandResult planned = Billiard(args);
+  ASSERT_EQ(planned.status, 0);
+  const std::string plan = Write("plot_plan.json", planned.out);
+  const std::string png = ::testing::TempDir() + "/plot_plan.png";
+  const CommandResult r = Billiard("plot --plan " + plan + " --out " + png, true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const cv::Mat image = cv::imread(png, cv::IMREAD_COLOR);
+  ASSERT_FALSE(image.empty());
+  const cv::Point2d t = Pixel(1.5, 0.8);
+  EXPECT_TRUE(Near(image.at<cv::Vec3b>(cv::Point(std::lround(t.x + 3), std::lround(t.y + 3))),
+                   {255, 255, 255}));
+}
+
+TEST(BilliardPlot, BadInputExitsTwoWithOneLine) {
+  const std::string scene = Scene();
+  const CommandResult jpg = Billiard("plot --scene " + scene + " --out x.jpg", true);
+  const CommandResult none = Billiard("plot --out x.png", true);
+  const CommandResult dir = Billiard("plot --scene " + scene + " --out /no/dir/x.png", true);
+  const std::string refused =
+      Write("plot_refused.json", Billiard("plan --from 0.5,0.5 --to 5,0.5 --json").out);
+  const CommandResult plan = Billiard("plot --plan " + refused + " --out x.png", true);
+  for (const CommandResult& r : {jpg, none, dir, plan}) {
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  }
+  EXPECT_NE(plan.out.find("refused"), std::string::npos) << plan.out;
+}
+
+}  // namespace
+}  // namespace billiard::testing

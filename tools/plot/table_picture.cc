@@ -1,0 +1,260 @@
+#include "tools/plot/table_picture.h"
+
+#include <cairo.h>
+
+#include <array>
+#include <cmath>
+
+#include "tools/plot/canvas.h"
+
+namespace billiard::plot {
+
+namespace {
+
+using Eigen::Vector2d;
+
+struct Rgb {
+  double r, g, b;
+};
+
+// Pool's colours by number (9-15 the stripes of 1-7's colours); 0 the white cue ball.
+Rgb BallColour(int id) {
+  static const std::array<Rgb, 9> kColours = {{{1.00, 1.00, 1.00},
+                                               {1.00, 0.80, 0.00},
+                                               {0.00, 0.25, 0.75},
+                                               {0.85, 0.05, 0.05},
+                                               {0.45, 0.10, 0.60},
+                                               {1.00, 0.45, 0.00},
+                                               {0.00, 0.50, 0.20},
+                                               {0.50, 0.05, 0.10},
+                                               {0.05, 0.05, 0.05}}};
+  if (id <= 0) return kColours[0];
+  return kColours[(id - 1) % 8 + 1];
+}
+
+void Source(cairo_t* cr, const Rgb& c, double alpha = 1.0) {
+  cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
+}
+
+// The colour of an event's mark, and its name for the legend.
+struct MarkStyle {
+  Rgb colour;
+  const char* name;
+};
+MarkStyle Mark(table::EventType type) {
+  switch (type) {
+    case table::EventType::kBallBall:
+      return {{0.90, 0.10, 0.10}, "ball-ball"};
+    case table::EventType::kBallCushion:
+    case table::EventType::kBallJaw:
+      return {{1.00, 0.85, 0.10}, "cushion, jaw"};
+    case table::EventType::kBallPocket:
+      return {{0.10, 0.10, 0.10}, "pocket"};
+    case table::EventType::kBallPush:
+      return {{1.00, 0.40, 0.80}, "push"};
+    case table::EventType::kTransition:
+      break;
+  }
+  return {{0.70, 0.95, 1.00}, "transition"};
+}
+
+void Arrow(cairo_t* cr, const Vector2d& from, const Vector2d& to, double head) {
+  cairo_move_to(cr, from.x(), from.y());
+  cairo_line_to(cr, to.x(), to.y());
+  cairo_stroke(cr);
+  const Vector2d d = (to - from).normalized();
+  const Vector2d n(-d.y(), d.x());
+  const Vector2d a = to - head * d + 0.5 * head * n, b = to - head * d - 0.5 * head * n;
+  cairo_move_to(cr, to.x(), to.y());
+  cairo_line_to(cr, a.x(), a.y());
+  cairo_line_to(cr, b.x(), b.y());
+  cairo_close_path(cr);
+  cairo_fill(cr);
+}
+
+void Polygon(cairo_t* cr, const std::vector<Vector2d>& points) {
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    k == 0 ? cairo_move_to(cr, points[k].x(), points[k].y())
+           : cairo_line_to(cr, points[k].x(), points[k].y());
+  }
+  cairo_close_path(cr);
+}
+
+// The launch and the spin of a ball that starts moving: the velocity as a black arrow from its
+// centre; the spin about the horizontal as the velocity a ball rolling with it would have,
+// (r wy, -r wx), a blue arrow (along the velocity: follow; against it: draw); the side spin wz
+// as a green arc round the ball, counterclockwise for wz > 0 (right english), its length
+// growing with |wz| up to three quarters of a turn at 100 rad/s.
+void DrawLaunch(cairo_t* cr, const TablePicture& pic, const PictureBall& ball) {
+  const physics::BallState& s = ball.start;
+  const Vector2d c = TablePixel(pic, s.head<2>());
+  const double r = pic.ball_radius * kPixelsPerMetre;
+  const Vector2d v(s[physics::kVx], s[physics::kVy]);
+  // Picture y points down: a table direction (dx, dy) is (dx, -dy) in pixels.
+  const auto pixels = [](const Vector2d& d) { return Vector2d(d.x(), -d.y()); };
+  cairo_set_line_width(cr, 2.0);
+  if (v.norm() > 0.0) {
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    Arrow(cr, c, c + pixels(v.normalized()) * (r + 25.0 * std::min(v.norm(), 8.0)), 8.0);
+  }
+  const Vector2d roll(pic.ball_radius * s[physics::kWy], -pic.ball_radius * s[physics::kWx]);
+  if (roll.norm() > 1e-9) {
+    cairo_set_source_rgb(cr, 0.1, 0.3, 1.0);
+    Arrow(cr, c, c + pixels(roll.normalized()) * (r + 40.0 * std::min(roll.norm(), 4.0)), 7.0);
+  }
+  const double wz = s[physics::kWz];
+  if (std::abs(wz) > 1e-9) {
+    const double sweep = 1.5 * M_PI * std::min(std::abs(wz) / 100.0, 1.0);
+    const double radius = r + 5.0;
+    cairo_set_source_rgb(cr, 0.0, 0.6, 0.2);
+    // Counterclockwise on the table is clockwise in the picture (its y points down).
+    const double start = -0.5 * M_PI;
+    const double end = wz > 0 ? start - sweep : start + sweep;
+    wz > 0 ? cairo_arc_negative(cr, c.x(), c.y(), radius, start, end)
+           : cairo_arc(cr, c.x(), c.y(), radius, start, end);
+    cairo_stroke(cr);
+    const Vector2d tip = c + radius * Vector2d(std::cos(end), std::sin(end));
+    const Vector2d along = wz > 0 ? Vector2d(std::sin(end), -std::cos(end))
+                                  : Vector2d(-std::sin(end), std::cos(end));
+    Arrow(cr, tip - 6.0 * along, tip, 7.0);
+  }
+}
+
+// The cue behind ball 0, along its heading and offset sideways by the tip's side offset.
+void DrawCue(cairo_t* cr, const TablePicture& pic, const physics::CueStroke& cue,
+             const Vector2d& ball) {
+  const Vector2d heading(std::cos(cue.heading), std::sin(cue.heading));
+  const Vector2d right(heading.y(), -heading.x());
+  const Vector2d tip = ball - (pic.ball_radius + 0.01) * heading + cue.tip_side * right;
+  const Vector2d butt = tip - 0.6 * heading;
+  const Vector2d a = TablePixel(pic, tip), b = TablePixel(pic, butt);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_set_source_rgb(cr, 0.55, 0.35, 0.15);
+  cairo_set_line_width(cr, 7.0);
+  cairo_move_to(cr, b.x(), b.y());
+  cairo_line_to(cr, a.x(), a.y());
+  cairo_stroke(cr);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+}
+
+}  // namespace
+
+Vector2d TablePixel(const TablePicture& picture, const Vector2d& p) {
+  return {kMarginPx + kPixelsPerMetre * p.x(),
+          kMarginPx + kPixelsPerMetre * (picture.table.width - p.y())};
+}
+
+void DrawTable(const TablePicture& pic, const std::string& path) {
+  const int width = static_cast<int>(std::ceil(2 * kMarginPx + kPixelsPerMetre * pic.table.length));
+  const int height = static_cast<int>(std::ceil(2 * kMarginPx + kPixelsPerMetre * pic.table.width));
+  Canvas canvas(path, width, height);
+  cairo_t* cr = canvas.cr();
+  const double r = pic.ball_radius * kPixelsPerMetre;
+
+  // The rails, then the cloth inside the boundary (cushion noses, jaws, capture lines).
+  cairo_set_source_rgb(cr, 0.40, 0.22, 0.10);
+  cairo_rectangle(cr, 0, 0, width, height);
+  cairo_fill(cr);
+  std::vector<Vector2d> outline;
+  for (const Vector2d& p : pic.table.outline) outline.push_back(TablePixel(pic, p));
+  cairo_set_source_rgb(cr, 0.05, 0.45, 0.25);
+  Polygon(cr, outline);
+  cairo_fill(cr);
+  cairo_set_source_rgb(cr, 0.02, 0.30, 0.15);
+  cairo_set_line_width(cr, 2.0);
+  for (const table::CushionLine& line : pic.table.lines) {
+    const Vector2d a = TablePixel(pic, line.a), b = TablePixel(pic, line.b);
+    cairo_move_to(cr, a.x(), a.y());
+    cairo_line_to(cr, b.x(), b.y());
+    cairo_stroke(cr);
+  }
+  for (const table::Pocket& pocket : pic.table.pockets) {
+    const Vector2d a = TablePixel(pic, pocket.capture_a), b = TablePixel(pic, pocket.capture_b);
+    const Vector2d mid = 0.5 * (a + b);
+    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+    cairo_arc(cr, mid.x(), mid.y(), 0.5 * (a - b).norm(), 0, 2 * M_PI);
+    cairo_fill(cr);
+  }
+
+  // Paths under everything else, each in its ball's colour (the cue ball's grey on the cloth).
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (const PictureBall& ball : pic.balls) {
+    if (ball.path.size() < 2) continue;
+    const Rgb c = ball.id == 0 ? Rgb{0.85, 0.85, 0.85} : BallColour(ball.id);
+    Source(cr, c, 0.9);
+    cairo_set_line_width(cr, 2.0);
+    for (std::size_t k = 0; k < ball.path.size(); ++k) {
+      const Vector2d p = TablePixel(pic, ball.path[k]);
+      k == 0 ? cairo_move_to(cr, p.x(), p.y()) : cairo_line_to(cr, p.x(), p.y());
+    }
+    cairo_stroke(cr);
+  }
+  if (pic.target) {
+    const Vector2d t = TablePixel(pic, *pic.target);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_set_line_width(cr, 2.0);
+    cairo_arc(cr, t.x(), t.y(), r, 0, 2 * M_PI);
+    cairo_stroke(cr);
+    cairo_move_to(cr, t.x() - 1.5 * r, t.y());
+    cairo_line_to(cr, t.x() + 1.5 * r, t.y());
+    cairo_move_to(cr, t.x(), t.y() - 1.5 * r);
+    cairo_line_to(cr, t.x(), t.y() + 1.5 * r);
+    cairo_stroke(cr);
+  }
+  // Where each ball started: an outline, when it moved.
+  for (const PictureBall& ball : pic.balls) {
+    if (ball.path.size() < 2 || (ball.path.back() - ball.path.front()).norm() == 0.0) continue;
+    const Vector2d p = TablePixel(pic, ball.path.front());
+    Source(cr, BallColour(ball.id));
+    cairo_set_line_width(cr, 1.5);
+    cairo_arc(cr, p.x(), p.y(), r, 0, 2 * M_PI);
+    cairo_stroke(cr);
+  }
+  for (const PictureEvent& e : pic.events) {
+    const Vector2d p = TablePixel(pic, e.at);
+    Source(cr, Mark(e.type).colour);
+    cairo_arc(cr, p.x(), p.y(), 3.0, 0, 2 * M_PI);
+    cairo_fill(cr);
+  }
+  // Where each ball ended, filled, with its number beside it.
+  for (const PictureBall& ball : pic.balls) {
+    if (ball.pocket || ball.path.empty()) continue;
+    const Vector2d p = TablePixel(pic, ball.path.back());
+    Source(cr, BallColour(ball.id));
+    cairo_arc(cr, p.x(), p.y(), r, 0, 2 * M_PI);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1.0);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    Text(cr, p.x() + r + 2, p.y() - r, std::to_string(ball.id), 11.0);
+  }
+  if (pic.cue && !pic.balls.empty()) DrawCue(cr, pic, *pic.cue, pic.balls.front().start.head<2>());
+  for (const PictureBall& ball : pic.balls) {
+    if (ball.start.tail<5>().norm() > 0.0) DrawLaunch(cr, pic, ball);
+  }
+
+  // The title on the top rail; the legend of the marks on the bottom one.
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  Text(cr, kMarginPx, 0.5 * kMarginPx, pic.title, 14.0);
+  double x = kMarginPx;
+  const double y = height - 0.5 * kMarginPx + 4.0;
+  for (const table::EventType type :
+       {table::EventType::kBallBall, table::EventType::kBallCushion,
+        table::EventType::kBallPocket, table::EventType::kTransition,
+        table::EventType::kBallPush}) {
+    Source(cr, Mark(type).colour);
+    cairo_arc(cr, x, y - 4.0, 4.0, 0, 2 * M_PI);
+    cairo_fill(cr);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    Text(cr, x + 8.0, y, Mark(type).name, 12.0);
+    x += 120.0;
+  }
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  Text(cr, width - kMarginPx, 0.5 * kMarginPx,
+       "black: launch; blue: roll of the spin (follow along, draw against); green: side spin", 12.0,
+       1.0);
+  canvas.Finish();
+}
+
+}  // namespace billiard::plot

@@ -1,0 +1,55 @@
+// A picture of the table: the cloth and its cushions and pockets, every ball's path, where it
+// started (an outline) and where it ended (filled, or gone into a pocket), the events marked,
+// the launch and spin of each ball that starts moving, and, for a plan, the cue and the target.
+//
+// The picture's frame, fixed so that a reader (and a test) can find a table point in it: 400 px
+// a metre, x to the right and y up, the playing surface's corner (0, 0) at (kMarginPx,
+// kMarginPx + 400 W) px from the top left, a rail kMarginPx wide all round; a width of
+// 2 kMarginPx + 400 L px, a height of 2 kMarginPx + 400 W px.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/physics/ball_state.h"
+#include "sim/physics/cue_strike.h"
+#include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
+
+namespace billiard::plot {
+
+inline constexpr double kPixelsPerMetre = 400.0;
+inline constexpr double kMarginPx = 60.0;
+
+struct PictureBall {
+  int id = 0;                         // 0 the cue ball (white); pool colours by number
+  std::vector<Eigen::Vector2d> path;  // the centre in time order: front where it starts
+  physics::BallState start = physics::BallState::Zero();  // its launch and spin are drawn
+  std::optional<std::string> pocket;  // dropped into it: no ball at the path's end
+};
+
+struct PictureEvent {
+  table::EventType type;
+  Eigen::Vector2d at;  // a ball-ball contact's point, else the ball's centre
+};
+
+struct TablePicture {
+  table::TableGeometry table;
+  double ball_radius = 0.0;
+  std::string title;
+  std::vector<PictureBall> balls;
+  std::vector<PictureEvent> events;
+  std::optional<physics::CueStroke> cue;  // the stroke at ball 0's start, drawn as the cue
+  std::optional<Eigen::Vector2d> target;  // a plan's target
+};
+
+// The pixel of a table point in the picture's frame (above).
+Eigen::Vector2d TablePixel(const TablePicture& picture, const Eigen::Vector2d& p);
+
+// Draws `picture` into `path` (.png or .svg). Throws std::invalid_argument for another
+// extension, std::runtime_error when the file cannot be written.
+void DrawTable(const TablePicture& picture, const std::string& path);
+
+}  // namespace billiard::plot
