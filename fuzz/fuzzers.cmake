@@ -9,12 +9,13 @@ ExternalProject_Add(fuzzers
   BINARY_DIR ${CMAKE_BINARY_DIR}/fuzz
   CMAKE_ARGS -DCMAKE_CXX_COMPILER=${CLANGXX}
              -DLCMTYPES_INCLUDE_DIR=${lcmtypes_include}
+             -DPARAMS_GENERATED_DIR=${CMAKE_BINARY_DIR}/sim/params
              -DCMAKE_RUNTIME_OUTPUT_DIRECTORY=${CMAKE_RUNTIME_OUTPUT_DIRECTORY}
   # The sources are outside ExternalProject's view: the fuzz project's own make decides what is
   # out of date, in a second or less when nothing is.
   BUILD_ALWAYS ON
   INSTALL_COMMAND ""
-  DEPENDS lcmtypes_gen)
+  DEPENDS lcmtypes_gen params)
 
 # 6 s per target from the generated seeds, in a fresh corpus each time; any crash, leak,
 # sanitizer report or broken property fails the test.
