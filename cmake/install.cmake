@@ -107,6 +107,14 @@ install(FILES ${table_specs} DESTINATION ${BILLIARD_DATA_DIR}/params/tables COMP
 install(FILES ${lcm_definitions} DESTINATION ${BILLIARD_DATA_DIR}/lcmtypes COMPONENT library)
 install(FILES ${LCMTYPES_JAVA_JAR} DESTINATION ${CMAKE_INSTALL_DATADIR}/java COMPONENT library)
 
+# The scripts that run installed binaries (script_support.sh's bin_dir): the closed loop and the
+# replay, with what they source.
+set(script_dir ${PROJECT_SOURCE_DIR}/launch_scripts)
+install(PROGRAMS ${script_dir}/run_loop.sh ${script_dir}/replay.sh
+        DESTINATION ${BILLIARD_DATA_DIR}/launch_scripts COMPONENT library)
+install(FILES ${script_dir}/script_support.sh ${script_dir}/lcm_network.sh
+        DESTINATION ${BILLIARD_DATA_DIR}/launch_scripts COMPONENT library)
+
 # The package: the config finds each asked-for component's dependencies, then its targets.
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/billiardConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/billiardConfig.cmake
@@ -118,7 +126,10 @@ install(FILES ${PROJECT_BINARY_DIR}/billiardConfig.cmake
               ${PROJECT_BINARY_DIR}/billiardConfigVersion.cmake
         DESTINATION ${BILLIARD_CMAKE_DIR} COMPONENT library)
 
-# pkg-config: the physics alone (Eigen), and everything.
+# pkg-config: the physics alone (Eigen), and everything. Their prefix is the one they are found
+# under (pkg-config's ${pcfiledir}), as the CMake package's is, so that any --prefix works.
+file(RELATIVE_PATH pc_to_prefix /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)
+set(BILLIARD_PC_PREFIX "\${pcfiledir}/${pc_to_prefix}")
 foreach(pc billiard-physics billiard)
   configure_file(${PROJECT_SOURCE_DIR}/cmake/${pc}.pc.in ${PROJECT_BINARY_DIR}/${pc}.pc @ONLY)
   install(FILES ${PROJECT_BINARY_DIR}/${pc}.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig

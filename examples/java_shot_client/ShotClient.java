@@ -95,7 +95,6 @@ public class ShotClient {
         answer.wait(500);
       }
     }
-    lcm.close();
     cue_command_t c = answer[0];
     if (c == null) {
       System.err.println("ShotClient: no CUE_COMMAND from a planner_node within " + timeoutS + " s");
