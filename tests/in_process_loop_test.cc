@@ -116,9 +116,9 @@ TEST(InProcessLoop, ASessionIsRefusedWhileANodeIsAnotherVersion) {
     FAIL() << "a session with an estimator of version 0.0.9 ran";
   } catch (const table_sim_node::PeerMismatch& e) {
     const std::string why = e.what();
-    EXPECT_NE(why.find(std::string("estimator_node is version 0.0.9 where the simulator is ") +
-                       kVersion),
-              std::string::npos)
+    EXPECT_NE(
+        why.find(std::string("estimator_node is version 0.0.9 where the simulator is ") + kVersion),
+        std::string::npos)
         << why;
     EXPECT_EQ(why.find("planner_node"), std::string::npos) << why;
     EXPECT_EQ(why.find(" runs '"), std::string::npos) << "the physics agrees: " << why;

@@ -17,7 +17,8 @@ import lcm.lcm.LCMSubscriber;
 public class ShotClient {
   private static double[] point(String option, String text) {
     String[] parts = text.split(",");
-    if (parts.length != 2) usage("bad " + option + " '" + text + "'");
+    if (parts.length != 2)
+      usage("bad " + option + " '" + text + "'");
     try {
       return new double[] {Double.parseDouble(parts[0]), Double.parseDouble(parts[1])};
     } catch (NumberFormatException e) {
@@ -36,17 +37,27 @@ public class ShotClient {
   }
 
   public static void main(String[] args) throws IOException, InterruptedException {
-    String url = null;  // LCM's default, LCM_DEFAULT_URL when set
+    String url = null; // LCM's default, LCM_DEFAULT_URL when set
     double[] from = {0.5, 0.5}, to = {1.5, 0.8};
     double timeoutS = 10.0;
     for (int i = 0; i < args.length; i += 2) {
-      if (i + 1 >= args.length) usage("unknown argument or missing value '" + args[i] + "'");
+      if (i + 1 >= args.length)
+        usage("unknown argument or missing value '" + args[i] + "'");
       switch (args[i]) {
-        case "--lcm-url": url = args[i + 1]; break;
-        case "--from": from = point(args[i], args[i + 1]); break;
-        case "--to": to = point(args[i], args[i + 1]); break;
-        case "--timeout": timeoutS = Double.parseDouble(args[i + 1]); break;
-        default: usage("unknown argument '" + args[i] + "'");
+        case "--lcm-url":
+          url = args[i + 1];
+          break;
+        case "--from":
+          from = point(args[i], args[i + 1]);
+          break;
+        case "--to":
+          to = point(args[i], args[i + 1]);
+          break;
+        case "--timeout":
+          timeoutS = Double.parseDouble(args[i + 1]);
+          break;
+        default:
+          usage("unknown argument '" + args[i] + "'");
       }
     }
     LCM lcm = url == null ? new LCM() : new LCM(url);
@@ -97,13 +108,14 @@ public class ShotClient {
     }
     cue_command_t c = answer[0];
     if (c == null) {
-      System.err.println("ShotClient: no CUE_COMMAND from a planner_node within " + timeoutS + " s");
+      System.err.println(
+          "ShotClient: no CUE_COMMAND from a planner_node within " + timeoutS + " s");
       System.exit(1);
     }
     System.out.println("{\"request_id\":" + c.request_id + ",\"status\":" + c.status
-        + ",\"reason\":" + json(c.reason) + ",\"cue\":{\"speed\":" + c.cue_speed
-        + ",\"heading\":" + c.heading + ",\"tip_side\":" + c.tip_side + ",\"tip_height\":"
-        + c.tip_height + ",\"elevation\":" + c.elevation + "},\"v0\":[" + c.v0[0] + "," + c.v0[1]
+        + ",\"reason\":" + json(c.reason) + ",\"cue\":{\"speed\":" + c.cue_speed + ",\"heading\":"
+        + c.heading + ",\"tip_side\":" + c.tip_side + ",\"tip_height\":" + c.tip_height
+        + ",\"elevation\":" + c.elevation + "},\"v0\":[" + c.v0[0] + "," + c.v0[1]
         + "],\"predicted_final\":[" + c.predicted_final[0] + "," + c.predicted_final[1]
         + "],\"refined_miss_m\":" + c.refined_miss_m + ",\"solve_us\":" + c.solve_us + "}");
     System.exit(c.status == cue_command_t.STATUS_OK ? 0 : 3);

@@ -112,8 +112,7 @@ int main(int argc, char** argv) {
 
   Answer answer{request.request_id, std::nullopt};
   lcm.subscribe(messages::kCueCommandChannel, &Answer::On, &answer);
-  const auto deadline =
-      std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (!answer.command && std::chrono::steady_clock::now() < deadline) {
     lcm.publish(messages::kTableStateChannel, &state);
     lcm.publish(messages::kShotRequestChannel, &request);
@@ -133,7 +132,7 @@ int main(int argc, char** argv) {
             << ",\"tip_height\":" << c.tip_height << ",\"elevation\":" << c.elevation
             << "},\"v0\":[" << c.v0[0] << "," << c.v0[1] << "],\"predicted_final\":["
             << c.predicted_final[0] << "," << c.predicted_final[1]
-            << "],\"refined_miss_m\":" << c.refined_miss_m << ",\"solve_us\":" << c.solve_us
-            << "}" << std::endl;
+            << "],\"refined_miss_m\":" << c.refined_miss_m << ",\"solve_us\":" << c.solve_us << "}"
+            << std::endl;
   return c.status == cue_command_t::STATUS_OK ? 0 : 3;
 }

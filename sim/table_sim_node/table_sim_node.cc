@@ -146,8 +146,9 @@ void TableSimNode::AwaitPeersOfTheSameBuildAndPhysics() {
     }
   }
   if (!disagreeing.empty()) {
-    throw PeerMismatch("the nodes run other physics or another version than the simulator: " +
-                       disagreeing + "; start every node from the same build with the same --params");
+    throw PeerMismatch(
+        "the nodes run other physics or another version than the simulator: " + disagreeing +
+        "; start every node from the same build with the same --params");
   }
 }
 
