@@ -2,12 +2,14 @@
 # and the .deb made of it (docs/installing.md says how a user consumes them):
 #
 #   bin/                              billiard, planner_node, estimator_node, table_sim_node
-#   lib/<multiarch>/libbilliard_*.a   the libraries, static as they are built
+#   lib/libbilliard_*.a               the libraries, static as they are built (lib/ is
+#                                     GNUInstallDirs' LIBDIR: lib/<multiarch>/ in a build
+#                                     configured with CMAKE_INSTALL_PREFIX=/usr)
 #   include/billiard/...              the public headers: each at its repository path under
 #                                     billiard/, its includes rewritten to match, so that a
 #                                     user's own sim/ or planner/ cannot shadow ours
-#   lib/<multiarch>/cmake/billiard/   the package: billiard::<target>, found by component
-#   lib/<multiarch>/pkgconfig/        billiard-physics.pc (Eigen alone), billiard.pc (all)
+#   lib/cmake/billiard/               the package: billiard::<target>, found by component
+#   lib/pkgconfig/                    billiard-physics.pc (Eigen alone), billiard.pc (all)
 #   share/billiard/params/            the parameter sets and tables/ (also compiled into the
 #                                     libraries: the installed files are for reading and as
 #                                     templates of --params FILE.json)
@@ -21,7 +23,7 @@ set(BILLIARD_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/billiard)
 
 # The components, bottom up: each an export set of targets with the folders of their headers and
 # the packages it needs besides the components before it (cmake/billiardConfig.cmake.in finds
-# them). Planner headers but edge_report.h, which is the reliability report's (not installed).
+# them).
 set(BILLIARD_COMPONENTS physics params planner estimator lcmtypes)
 set(billiard_physics_targets physics batch table)
 set(billiard_physics_headers sim/physics sim/batch sim/table)
@@ -67,7 +69,6 @@ foreach(component ${BILLIARD_COMPONENTS})
     list(APPEND headers ${folder_headers})
   endforeach()
   list(REMOVE_ITEM headers ${BILLIARD_PRIVATE_HEADERS})
-  set(billiard_${component}_header_files ${headers})
   set(BILLIARD_INSTALLED_HEADERS ${BILLIARD_INSTALLED_HEADERS} ${headers})
 endforeach()
 
