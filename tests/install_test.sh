@@ -14,7 +14,8 @@
 #   deb       cpack -G DEB in a temporary directory: the package holds the binaries, the headers,
 #             the CMake package and the data, and every Depends is a package setup.sh installs.
 #
-# Prints what fails on stderr and exits 1; 0 when all holds.
+# Prints what fails on stderr and exits 1; 0 when all holds; 77 (skipped) when the clients cannot
+# reach a node, where there is neither a network namespace nor a multicast route.
 set -euo pipefail
 source "$(dirname "$0")/../launch_scripts/script_support.sh"
 source "$(dirname "$0")/../launch_scripts/lcm_network.sh"
@@ -135,8 +136,11 @@ g++ -std=c++17 -O1 "$work/examples/simulate_break/simulate_break.cc" -o "$work/b
     $(pkg-config --cflags --libs billiard) || fail "billiard.pc does not link the break"
 [ "$("$work/break_pc" 3)" = "$break_json" ] || fail "the pkg-config break differs"
 
-# The installed tool: the installed parameter file runs as the built-in set of its name.
+# The installed tool: the build's version, and the installed parameter file runs as the built-in
+# set of its name.
 tool=$prefix/bin/billiard
+[ "$("$tool" --version)" = "$("$build/bin/billiard" --version)" ] ||
+  fail "the installed billiard is version '$("$tool" --version)'"
 state=(--state 0.5,0.5,1,0.2,0,0,0 --t-end 3)
 builtin=$("$tool" simulate "${state[@]}" --params pool --json) || fail "billiard simulate failed"
 from_file=$("$tool" simulate "${state[@]}" --params "$prefix/share/billiard/params/pool.json" \
@@ -147,7 +151,13 @@ a, b = (json.loads(s) for s in sys.argv[1:])
 assert a["state"] == b["state"], (a["state"], b["state"])
 EOF
 
-# The clients against the installed planner_node.
+# The clients against the installed planner_node, over multicast: where there is neither a
+# namespace nor a multicast route the rest is skipped (exit 77, ctest's SKIP_RETURN_CODE).
+if [ -z "${in_namespace:-}" ] && ! ip route get 239.255.76.67 >/dev/null 2>&1; then
+  echo "install_test: no network namespace and no multicast route: the clients and the loop" \
+       "are not run" >&2
+  exit 77
+fi
 "$prefix/bin/planner_node" --params pool 2>"$work/planner.err" &
 planner_pid=$!
 for client in "$work/build/shot_client/shot_client" \
