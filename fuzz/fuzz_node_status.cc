@@ -10,6 +10,7 @@ std::vector<Bytes> Seeds() {
   planner.uptime_us = 3000000;
   planner.params = "pool";
   planner.params_hash = "0123456789abcdef";
+  planner.version = "0.1.0";
   planner.received = 40;
   planner.dropped = 2;
   planner.published = 38;

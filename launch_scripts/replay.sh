@@ -24,4 +24,4 @@ case "${1-}" in
   -h | --help) help_and_exit ;;
   "") usage_error "which LOG? (see --help)" ;;
 esac
-exec "$(dirname "$0")/../build/bin/billiard" replay "$@"
+exec "$bin_dir/billiard" replay "$@"

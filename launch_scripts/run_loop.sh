@@ -25,6 +25,9 @@
 #                          nodes and billiard alone: the tests are test.sh's)
 #   -h, --help             this text
 #
+# An installed copy (PREFIX/share/billiard/launch_scripts/run_loop.sh) runs PREFIX/bin/'s nodes
+# and builds nothing.
+#
 # --log FILE: a relative FILE is in the caller's directory; with --log-frames none the log leaves
 # out the frames, which are nearly all of its bytes, and it cannot be replayed through the
 # estimator (replay.sh). A log that cannot be written stops the run before it starts (exit 2);
@@ -81,6 +84,7 @@ if [ -n "$log" ]; then
 fi
 failures_are_internal
 cd "$(dirname "$0")/.."
+$installed && build=false
 # What the loop runs, and nothing more: the tests, fuzzers and benchmarks are test.sh's.
 $build && bash launch_scripts/build.sh --target estimator_node --target planner_node \
   --target table_sim_node --target billiard
@@ -119,9 +123,9 @@ if [ -n "$log" ]; then
   pids+=($logger)
 fi
 if ! $in_process; then
-  build/bin/estimator_node --params "$params" 2>/dev/null &
+  "$bin_dir/estimator_node" --params "$params" 2>/dev/null &
   pids+=($!)
-  build/bin/planner_node --params "$params" >/dev/null 2>&1 &
+  "$bin_dir/planner_node" --params "$params" >/dev/null 2>&1 &
   pids+=($!)
   sleep 0.5  # the nodes subscribe
 fi
@@ -129,8 +133,8 @@ fi
 sim_clock=""
 [ "$clock" = --realtime ] && sim_clock=--realtime
 # In the background, so that a signal reaches the trap at once and the cleanup stops it too.
-session=(build/bin/table_sim_node)
-$in_process && session=(build/bin/billiard loop)
+session=("$bin_dir/table_sim_node")
+$in_process && session=("$bin_dir/billiard" loop)
 "${session[@]}" --params "$params" --shots "$shots" --seed "$seed" --noise "$noise" \
   ${scene:+--scene "$scene"} $sim_clock >"$summary_file" &
 pids+=($!)

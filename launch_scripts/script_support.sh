@@ -14,10 +14,22 @@
 #   failures_are_internal     from here on, a command of the script that fails ends it with 1,
 #                             whatever its own status (cmake's 2 and ctest's 8 would read as
 #                             something else); for scripts under set -e
+#   bin_dir                   where the executables are: build/bin/ of the checkout the script
+#                             sits in, or PREFIX/bin/ for a copy installed in
+#                             PREFIX/share/billiard/launch_scripts/ (docs/installing.md)
+#   installed                 true in such an installed copy, which has nothing to build
 
 # Read now: the script may cd before it prints its usage.
 script_file=$(realpath -- "$0")
 script_name=$(basename -- "$0" .sh)
+# A checkout has the top CMakeLists.txt above its scripts; an installed copy has not.
+if [ -f "$(dirname -- "$script_file")/../CMakeLists.txt" ]; then
+  installed=false
+  bin_dir=$(dirname -- "$(dirname -- "$script_file")")/build/bin
+else
+  installed=true
+  bin_dir=$(realpath -m -- "$(dirname -- "$script_file")/../../../bin")
+fi
 
 trap 'exit 130' INT TERM
 

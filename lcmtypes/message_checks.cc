@@ -111,6 +111,7 @@ std::string WalkLayout(WireWalk& w, const node_status_t*) {
   w.Skip(kInt64, "node_status_t uptime");
   w.String("params");
   w.String("params_hash");
+  w.String("version");
   w.Skip(3 * kInt64, "node_status_t counts");
   w.String("last_error");
   w.Skip(kInt64 + kInt32 + 3 * kDouble + kInt32, "node_status_t latency");

@@ -69,6 +69,7 @@ node_status_t Status() {
   m.node = "planner_node";
   m.params = "pool";
   m.params_hash = "0123456789abcdef";
+  m.version = "0.1.0";
   m.last_error = "";
   m.counter_names = {"busy", "stale_state"};
   m.counter_values = {3, 4};

@@ -166,6 +166,31 @@ TEST(ClosedLoop, ARecordedRunReplaysToTheSameCommandsAndDecodesInJava) {
   EXPECT_EQ(decoded["CAMERA_IMAGE"], decoded["TABLE_STATE"]) << decoded;
 }
 
+// What runs is what is installed: every node process of a run announces in NODE_STATUS the
+// version `billiard --version` prints (read back from the log by `billiard node-status`).
+TEST(ClosedLoop, EveryNodeAnnouncesTheVersionTheToolPrints) {
+  const TempDir dir;
+  const std::string log = dir / "light.lcm";
+  if (!RecordRun(log, 1, "--log-frames none")) {
+    GTEST_SKIP() << "no multicast here: the loop ran in one process and recorded nothing";
+  }
+  const CommandResult version = RunCommand(std::string(BILLIARD_BIN) + " --version");
+  ASSERT_EQ(version.status, 0) << version.out;
+  ASSERT_EQ(version.out.rfind("billiard ", 0), 0u) << version.out;
+  const std::string expected = version.out.substr(9, version.out.find('\n') - 9);
+  const CommandResult r = RunCommand(std::string(BILLIARD_BIN) + " node-status " + log);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json status = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(status.is_object()) << r.out;
+  std::vector<std::string> nodes;
+  for (const nlohmann::json& process : status["processes"]) {
+    nodes.push_back(process["node"]);
+    EXPECT_EQ(process["version"], expected) << process;
+  }
+  std::sort(nodes.begin(), nodes.end());
+  EXPECT_EQ(nodes, (std::vector<std::string>{"estimator_node", "planner_node", "table_sim_node"}));
+}
+
 TEST(ClosedLoop, ALogThatCannotBeWrittenFailsBeforeTheNodesStart) {
   // A directory that is not there is not made (lcm-logger would make it): a mistyped path is
   // said at once.

@@ -205,6 +205,15 @@ TEST(Binaries, HelpExitsZeroAndAnUnknownOptionTwo) {
   }
 }
 
+// --version, like --help, exits 0 and does no work: the name and the project's one version.
+TEST(Binaries, VersionPrintsTheNameAndTheProjectVersion) {
+  for (const std::string& command : {kBilliard, kPlannerNode, kEstimatorNode, kTableSimNode}) {
+    const SeparateOutput r = RunBinary(command + " --version");
+    EXPECT_EQ(r.status, 0) << command << ": " << r.err;
+    EXPECT_EQ(r.out, fs::path(command).filename().string() + " " + PROJECT_VERSION + "\n");
+  }
+}
+
 TEST(Binaries, RefusalsExitThree) {
   ExpectOneLine(kBilliard + " plan --from 0.5,0.5 --to 5,0.5 --json", 3);
   // A frame without the four corner markers: the calibration's answer is no, as for a misfit.

@@ -12,6 +12,8 @@
 #include "estimator/node/estimator_node.h"
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/names.h"
+#include "lcmtypes/node/node_health.h"
+#include "lcmtypes/version.h"
 #include "planner/node/planner_node.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/table_sim_node/session.h"
@@ -119,12 +121,44 @@ TEST(InProcessLoop, ASessionIsRefusedWhileTheNodesRunOtherPhysics) {
   try {
     node.Run();
     FAIL() << "a session with a planner on the paper set ran";
-  } catch (const table_sim_node::ParameterMismatch& e) {
+  } catch (const table_sim_node::PeerMismatch& e) {
     const std::string why = e.what();
-    EXPECT_NE(why.find("planner_node runs 'paper' (" + params::ParameterHash(paper) + ")"),
+    EXPECT_NE(why.find("planner_node runs 'paper' (" + params::ParameterHash(paper) +
+                       ") where the simulator runs 'pool' (" + params::ParameterHash(pool) + ")"),
               std::string::npos)
         << why;
     EXPECT_EQ(why.find("estimator_node"), std::string::npos) << why;
+  }
+}
+
+// An estimator of another build (here a status as such a node sends it, announcing the same
+// physics) may track otherwise: the session is refused before the first shot, naming it and
+// both versions, while the planner of this build passes.
+TEST(InProcessLoop, ASessionIsRefusedWhileANodeIsAnotherVersion) {
+  lcm::LCM lcm("memq://");
+  const physics::ModelParameters pool = params::LoadParameters("pool");
+  const camera::CameraModel camera = table_sim_node::SessionCamera(pool.table);
+  planner_node::PlannerNode planner(lcm, pool, {}, Quiet);
+  nodes::NodeHealth other_build("estimator_node", Quiet);
+  other_build.SetParameters(params::ParameterSetLabel(pool), params::ParameterHash(pool));
+  node_status_t status = other_build.TakeStatus();
+  status.version = "0.0.9";
+  table_sim_node::TableSimOptions options;
+  options.shots = 1;
+  table_sim_node::TableSimNode node(lcm, pool, camera, options, Quiet);
+  lcm.publish(messages::kNodeStatusChannel, &status);
+  node.RunAlongside([&] { return planner.Work(); });
+  try {
+    node.Run();
+    FAIL() << "a session with an estimator of version 0.0.9 ran";
+  } catch (const table_sim_node::PeerMismatch& e) {
+    const std::string why = e.what();
+    EXPECT_NE(
+        why.find(std::string("estimator_node is version 0.0.9 where the simulator is ") + kVersion),
+        std::string::npos)
+        << why;
+    EXPECT_EQ(why.find("planner_node"), std::string::npos) << why;
+    EXPECT_EQ(why.find(" runs '"), std::string::npos) << "the physics agrees: " << why;
   }
 }
 

@@ -1,6 +1,7 @@
 #include "lcmtypes/node/node_health.h"
 
 #include "lcmtypes/names.h"
+#include "lcmtypes/version.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,6 +74,7 @@ node_status_t NodeHealth::TakeStatus() {
   s.node = node_;
   s.params = params_;
   s.params_hash = params_hash_;
+  s.version = kVersion;
   s.uptime_us =
       std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start_).count();
   s.received = received_;

@@ -42,7 +42,8 @@ class NodeHealth {
   // The time from a message's arrival to the end of the work it caused.
   void Latency(Clock::duration latency);
   void SetQueueDepth(int depth) { queue_depth_ = depth; }
-  // The node's parameter set, announced in every status (node_status_t.params, params_hash).
+  // The node's parameter set, announced in every status (node_status_t.params, params_hash)
+  // beside the version it was built from (node_status_t.version, always kVersion).
   void SetParameters(std::string name, std::string hash) {
     params_ = std::move(name);
     params_hash_ = std::move(hash);

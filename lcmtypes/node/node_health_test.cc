@@ -11,6 +11,7 @@
 
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
+#include "lcmtypes/version.h"
 
 namespace billiard::nodes {
 namespace {
@@ -122,6 +123,7 @@ TEST(NodeHealth, AnnouncesItselfAtOnceThenPublishesOncePerPeriod) {
   for (const node_status_t& s : seen) {
     EXPECT_EQ(s.params, "pool");
     EXPECT_EQ(s.params_hash, "0123456789abcdef");
+    EXPECT_EQ(s.version, kVersion);
   }
 }
 

@@ -105,7 +105,7 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
       scene = node.RunScene();
       shots = {scene->shot};
     }
-  } catch (const ParameterMismatch& e) {
+  } catch (const PeerMismatch& e) {
     return fail(e.what(), 3);
   } catch (const std::invalid_argument& e) {  // a scene that does not load or fit
     return fail(e.what(), options.scene.empty() ? 1 : 2);

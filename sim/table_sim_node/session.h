@@ -50,7 +50,7 @@ using InProcessNodes = std::function<std::function<bool()>(
 // Runs the session of a parsed command line and prints its summary (SessionSummary) as one JSON
 // object on stdout. Returns the exit status: 0; 1 when LCM fails or a node does not answer in
 // time; 2 for options that make no session (the reason on stderr, prefixed by `name`); 3 when
-// the estimator or the planner runs other physics (the session refused); 130 when stopped by
+// the estimator or the planner runs other physics or another version (the session refused); 130 when stopped by
 // SIGINT or SIGTERM. With options.scene, the whole-table session (RunScene), its summary under
 // "scene"; a scene that does not load or fit is exit 2.
 int RunSessionCommand(const std::string& name, const SessionCommandLine& line,

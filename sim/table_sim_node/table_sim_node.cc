@@ -13,6 +13,7 @@
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
 #include "lcmtypes/node/node_loop.h"
+#include "lcmtypes/version.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/scene_file.h"
 #include "sim/params/table_specs.h"
@@ -134,20 +135,29 @@ void TableSimNode::OnNodeStatus(const lcm::ReceiveBuffer* rbuf, const std::strin
   }
 }
 
-void TableSimNode::AwaitPeersWithTheSamePhysics() {
+void TableSimNode::AwaitPeersOfTheSameBuildAndPhysics() {
   WaitFor([&] { return peers_.size() == kSessionPeers.size(); },
           "NODE_STATUS of the estimator_node and the planner_node", nullptr);
   const std::string hash = params::ParameterHash(params_);
+  const std::string label = params::ParameterSetLabel(params_);
   std::string disagreeing;
+  const auto add = [&](const std::string& what) {
+    disagreeing += (disagreeing.empty() ? "" : "; ") + what;
+  };
   for (const auto& [name, status] : peers_) {
-    if (status.params_hash == hash) continue;
-    disagreeing += (disagreeing.empty() ? "" : ", ") + name + " runs '" + status.params + "' (" +
-                   status.params_hash + ")";
+    if (status.params_hash != hash) {
+      add(name + " runs '" + status.params + "' (" + status.params_hash +
+          ") where the simulator runs '" + label + "' (" + hash + ")");
+    }
+    // Another build may plan or track otherwise with the same numbers.
+    if (status.version != kVersion) {
+      add(name + " is version " + status.version + " where the simulator is " + kVersion);
+    }
   }
   if (!disagreeing.empty()) {
-    throw ParameterMismatch("the nodes run other physics than the simulator's '" +
-                            params::ParameterSetLabel(params_) + "' (" + hash +
-                            "): " + disagreeing + "; start every node with the same --params");
+    throw PeerMismatch(
+        "the nodes run other physics or another version than the simulator: " + disagreeing +
+        "; start every node from the same build with the same --params");
   }
 }
 
@@ -364,7 +374,7 @@ physics::CueStroke TableSimNode::WithNoise(physics::CueStroke stroke) {
 }
 
 std::vector<ShotResult> TableSimNode::Run() {
-  AwaitPeersWithTheSamePhysics();
+  AwaitPeersOfTheSameBuildAndPhysics();
   const double frame_dt = 1.0 / options_.camera_rate;
   const physics::TableParameters& table = params_.table;
   std::uniform_real_distribution<double> x(options_.target_margin,
@@ -426,7 +436,7 @@ std::vector<ShotResult> TableSimNode::Run() {
 }
 
 SceneResult TableSimNode::RunScene() {
-  AwaitPeersWithTheSamePhysics();
+  AwaitPeersOfTheSameBuildAndPhysics();
   const auto [geometry, balls] = LoadSessionScene(options_, params_);
   const auto cue = std::find_if(balls.begin(), balls.end(),
                                 [](const table::SceneBall& b) { return b.id == kCueBall; });

@@ -124,9 +124,9 @@ struct SceneResult {
   TrackingReport tracking;
 };
 
-// The estimator or the planner runs with other physics than the simulator: a session would plan
-// and track one ball and simulate another.
-struct ParameterMismatch : std::runtime_error {
+// The estimator or the planner runs with other physics than the simulator, or is another version
+// of the project: a session would plan and track one ball and simulate another.
+struct PeerMismatch : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
@@ -144,8 +144,9 @@ class TableSimNode {
   TableSimNode& operator=(const TableSimNode&) = delete;
 
   // Runs the session once the estimator and the planner have announced themselves (NODE_STATUS)
-  // with the simulator's physics (the same params::ParameterHash). Throws ParameterMismatch when
-  // they run other physics, std::runtime_error when a node does not answer in time.
+  // with the simulator's physics (the same params::ParameterHash) and version (kVersion). Throws
+  // PeerMismatch when they run other physics or another version, std::runtime_error when a node
+  // does not answer in time.
   std::vector<ShotResult> Run();
 
   // Runs the whole-table session of options.scene (same preconditions and throws as Run; also
@@ -167,8 +168,9 @@ class TableSimNode {
   void OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   void OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   void OnNodeStatus(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
-  // Waits for the peers' NODE_STATUS and compares their physics with the simulator's.
-  void AwaitPeersWithTheSamePhysics();
+  // Waits for the peers' NODE_STATUS and compares their physics and version with the
+  // simulator's.
+  void AwaitPeersOfTheSameBuildAndPhysics();
   // A ball on the table and its true state at any sim time.
   struct TruthBall {
     int id;

@@ -6,6 +6,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"table_sim_node: stands in for the robot and the camera, drives a session of shots"};
   billiard::nodes::OneLineErrors(app, "table_sim_node");
+  billiard::nodes::VersionFlag(app, "table_sim_node");
   billiard::table_sim_node::SessionCommandLine line;
   billiard::table_sim_node::AddSessionOptions(app, &line);
   if (auto status = billiard::nodes::ParseCommandLine(app, argc, argv)) return *status;

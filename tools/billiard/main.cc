@@ -6,6 +6,7 @@
 #include <exception>
 #include <iostream>
 
+#include "lcmtypes/node/node_command_line.h"
 #include "tools/billiard/bench_command.h"
 #include "tools/billiard/bench_detect_command.h"
 #include "tools/billiard/bench_estimator_command.h"
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
     return "billiard: " + std::string(e.what()) + " (see --help)\n";
   });
+  billiard::nodes::VersionFlag(app, "billiard");
   billiard::cli::AddSimulateCommand(app);
   billiard::cli::AddFitContactCommand(app);
   billiard::cli::AddBenchCommand(app);

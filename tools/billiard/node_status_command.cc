@@ -73,6 +73,7 @@ void Run(const NodeStatusArgs& args) {
                                 {"uptime_s", 1e-6 * r.last.uptime_us},
                                 {"params", r.last.params},
                                 {"params_hash", r.last.params_hash},
+                                {"version", r.last.version},
                                 {"statuses", r.statuses},
                                 {"received", r.last.received},
                                 {"dropped", r.last.dropped},
