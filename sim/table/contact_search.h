@@ -93,15 +93,18 @@ double FirstCrossing(const Quartic& f, double window, double sign, double contac
       break;
     }
   }
-  // Overlapping (a 5-DOF push's allowance) and parting: the event is where they turn to close
-  // again, before they part, or no root would ever show it.
-  if (sign * f[0] > contact) {
+  // Touching or overlapping (a 5-DOF push's allowance) and parting: the event is where they turn
+  // to close again (faster than kContactSpeed within kContactHorizon, as at the start: held
+  // bodies, whose closing is rounding, do not turn) while still touching or overlapping: f may
+  // never reach 0 from above, and no root would ever show it.
+  if (sign * f[0] >= -contact) {
     const Quartic slope{f[1], 2.0 * f[2], 3.0 * f[3], 4.0 * f[4], 0.0};
     if (std::any_of(slope.begin(), slope.end(), [](double c) { return c != 0.0; })) {
       const int m = RootsInInterval(slope, 0.0, std::min(window, first), &roots);
       for (int k = 0; k < m; ++k) {
-        if (sign * Derivative(slope, roots[k]) > 0.0 && sign * Evaluate(f, roots[k]) > contact &&
-            accept(roots[k])) {
+        const double later = std::min(roots[k] + kContactHorizon, window);
+        if (sign * Derivative(f, later) > speed_scale * kContactSpeed &&
+            sign * Evaluate(f, roots[k]) >= -contact && accept(roots[k])) {
           return roots[k];
         }
       }
@@ -123,6 +126,10 @@ double SafeStep(double gap, double closing, double accel);
 // bodies touch; it steps by the time this overlap takes to fill.
 inline constexpr double kPushOverlap = 1e-7;  // [m]
 
+// Overlapping bodies closing faster than this are a contact at once (FirstContactByAdvancement).
+// Above kContactSpeed, so that the rounding of a held contact's closing is none.
+inline constexpr double kChatterClosing = 1e-7;  // [m/s]
+
 // Touching bodies that are not closing are passed by at least this long a step.
 inline constexpr double kSmallestAdvance = 1e-9;  // [s]
 
@@ -134,10 +141,15 @@ struct Clearance {
   int index = -1;
 };
 
-// The safe advance from clearance c: touching and not (yet) closing, the time the overlap allowed
-// takes to fill (at least half of it, so that a push sliding along at full overlap is passed
-// too); else the safe step to the contact.
+// The safe advance from clearance c: overlapping already, the time to close by the contact
+// tolerance, so that the search meets the bodies as they turn to close, slower than an impact
+// (not from an overlap deeper each time); touching and not (yet) closing, the time the overlap
+// allowed takes to fill (at least half of it, so that a push sliding along at full overlap is
+// passed too); else the safe step to the contact.
 inline double Advance(const Clearance& c, double accel) {
+  if (c.gap < -kContactTolerance) {
+    return std::max(SafeStep(kContactTolerance, c.closing, accel), kSmallestAdvance);
+  }
   if (c.gap <= kContactTolerance) {
     const double room = std::max(c.gap + kPushOverlap, 0.5 * kPushOverlap);
     return std::max(SafeStep(room, c.closing, accel), kSmallestAdvance);
@@ -166,9 +178,13 @@ struct Advancement {
 template <typename ClearanceAt, typename ElementAt>
 Advancement FirstContactByAdvancement(const ClearanceAt& clearance, const ElementAt& element,
                                       double accel, double t0, double t1, bool land = true) {
+  // Overlapping already and closing at all: at once, or a ball chattering against one it drives
+  // (each impact met where the last left the overlap, just above kSlowImpact) would ratchet the
+  // overlap on.
   const auto contact = [](const Clearance& c) {
     return (c.gap <= kContactTolerance && c.closing > kSlowImpact) ||
-           (c.gap <= -kPushOverlap && c.closing > kContactSpeed);
+           (c.gap <= -kPushOverlap && c.closing > kContactSpeed) ||
+           (c.gap < -kContactTolerance && c.closing > kChatterClosing);
   };
   double t = t0;
   for (int step = 0; step < kMaxAdvances; ++step) {

@@ -489,6 +489,13 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
     }
   }
   events_.push_back(event);
+  // The event's own balls are searched again even when nothing of theirs changed: their
+  // candidate is the event just met.
+  for (const std::size_t k : {i, j}) {
+    if (k < balls_.size() && std::find(changed.begin(), changed.end(), k) == changed.end()) {
+      changed.push_back(k);
+    }
+  }
   for (const std::size_t k : changed) Recompute(k);
   if (!released.empty()) {
     TableEvent push;
@@ -554,7 +561,11 @@ void TableSimulation::Run(double t_end) {
     time_ = best;
     next.time = best;
     next.ball = balls_[bi].id;
-    if (next.type == EventType::kBallBall) next.other = balls_[bj].id;
+    if (next.type == EventType::kBallBall) {
+      next.other = balls_[bj].id;
+    } else {
+      bj = balls_.size();  // no other ball
+    }
     if (next.type == EventType::kBallCushion || next.type == EventType::kBallJaw) {
       next.cushion = index;
     }

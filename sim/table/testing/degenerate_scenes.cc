@@ -141,12 +141,13 @@ SceneInvariants MeasureInvariants(const TableSimulation& sim, const TableGeometr
       const bool dropped = sim.pocket(i) && t >= sim.segments(i).back().start_time();
       if (dropped) continue;
       on_table.push_back(s.segment<2>(kX));
-      // How far the ball is off the surface: r less the largest radius that fits where it is.
-      if (!table.OnSurface(s.segment<2>(kX), r)) {
+      // How far the ball is out of where a moving ball may be (over a pocket's mouth on its way to
+      // drop included): r less the largest radius that fits where it is.
+      if (!table.InsideBoundary(s.segment<2>(kX), r)) {
         double lo = 0.0, hi = r;
         for (int k = 0; k < 60; ++k) {
           const double mid = 0.5 * (lo + hi);
-          (table.OnSurface(s.segment<2>(kX), mid) ? lo : hi) = mid;
+          (table.InsideBoundary(s.segment<2>(kX), mid) ? lo : hi) = mid;
         }
         out.off_surface = std::max(out.off_surface, r - lo);
       }

@@ -33,7 +33,7 @@ std::vector<SceneBall> SeededDegenerateScene(const TableGeometry& table, double 
                                              std::uint64_t seed);
 
 // What a run kept, sampled every `dt` and at its end: the deepest overlap of two balls on the
-// table, the farthest a ball not yet pocketed was off the playing surface, and the largest
+// table, the farthest a ball not yet pocketed was out of the table's boundary, and the largest
 // relative rise of the kinetic energy from one sample to the next.
 struct SceneInvariants {
   double overlap = 0.0;     // [m]
