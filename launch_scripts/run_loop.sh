@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off] [--scene break|FILE]
 #                                   [--params NAME|FILE] [--log FILE] [--log-frames all|none]
-#                                   [--lockstep | --realtime]
+#                                   [--lockstep | --realtime] [--view] [--view-port PORT]
 #                                   [--json] [--no-build] [-h | --help]
 #
 # The closed loop: estimator_node, planner_node and table_sim_node over LCM, for N shots to random
@@ -20,6 +20,10 @@
 #   --log-frames all|none  with --log: record the CAMERA_IMAGE frames or not (default all)
 #   --lockstep             wait for the estimator's state of each frame: deterministic (default)
 #   --realtime             pace the frames by the wall clock
+#   --view                 a live view of the table in a browser while the loop runs
+#                          (viewer_node): prints its address, http://127.0.0.1:PORT/, on stderr;
+#                          with --realtime the shots go at the camera's pace, to be watched
+#   --view-port PORT       the view's port on this host (default 8765; implies --view)
 #   --json                 the summary as one JSON object on stdout
 #   --no-build             run what build/ holds, without build.sh first (which builds the three
 #                          nodes and billiard alone: the tests are test.sh's)
@@ -41,6 +45,7 @@ set -euo pipefail
 source "$(dirname "$0")/script_support.sh"
 
 shots=20 seed=1 noise=off scene="" params=pool log="" log_frames=all clock=--lockstep json=false build=true
+view=false view_port=8765
 while [ $# -gt 0 ]; do
   case "$1" in
     -h | --help) help_and_exit ;;
@@ -59,6 +64,8 @@ while [ $# -gt 0 ]; do
     --log-frames) need_value "$@"; log_frames=$2; shift 2 ;;
     --lockstep) clock=--lockstep; shift ;;
     --realtime) clock=--realtime; shift ;;
+    --view) view=true; shift ;;
+    --view-port) need_number 1 "$@"; view=true; view_port=$2; shift 2 ;;
     --json) json=true; shift ;;
     --no-build) build=false; shift ;;
     # Added by enter_private_network when the script runs itself again in its namespace.
@@ -86,12 +93,26 @@ failures_are_internal
 cd "$(dirname "$0")/.."
 $installed && build=false
 # What the loop runs, and nothing more: the tests, fuzzers and benchmarks are test.sh's.
+$view && view_target=(--target viewer_node) || view_target=()
 $build && bash launch_scripts/build.sh --target estimator_node --target planner_node \
-  --target table_sim_node --target billiard
+  --target table_sim_node --target billiard "${view_target[@]}"
+
+# The view out of the private network namespace below: this host's port forwarded (socat) to a
+# Unix socket, which the namespace shares with the host, and there to the viewer's port. Started
+# here, before the namespace, and stopped by the run inside it.
+if $view && [ -z "${in_namespace:-}" ] && unshare -n true 2>/dev/null; then
+  command -v socat >/dev/null || { echo "run_loop: --view needs socat (setup.sh installs it)" >&2; exit 1; }
+  export VIEW_SOCKET
+  VIEW_SOCKET=$(mktemp -u "${TMPDIR:-/tmp}/billiard-view.XXXXXX.sock")
+  socat "TCP-LISTEN:$view_port,bind=127.0.0.1,reuseaddr,fork" "UNIX-CONNECT:$VIEW_SOCKET" \
+    2>/dev/null &
+  export VIEW_FORWARDER=$!
+  echo "run_loop: the live view is at http://127.0.0.1:$view_port/" >&2
+fi
 
 source launch_scripts/lcm_network.sh
 enter_private_network launch_scripts/run_loop.sh --no-build --shots "$shots" --seed "$seed" \
-  --noise "$noise" --params "$params" ${scene:+--scene "$scene"} ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json)
+  --noise "$noise" --params "$params" ${scene:+--scene "$scene"} ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
 in_process=false
@@ -99,7 +120,8 @@ if [ -z "${in_namespace:-}" ]; then
   if ! ip route get 239.255.76.67 >/dev/null 2>&1; then
     in_process=true
     echo "run_loop: no network namespace and no multicast route: the three nodes run in one" \
-         "process over memq://${log:+ (nothing to record: --log needs multicast)}" >&2
+         "process over memq://${log:+ (nothing to record: --log needs multicast)}" \
+         "$($view && echo "(and nothing to view: --view needs multicast)")" >&2
     log=""
   else
     echo "run_loop: no network namespace; UDP multicast with ttl=0" >&2
@@ -110,8 +132,9 @@ pids=()
 summary_file=$(mktemp) logger_err=$(mktemp)
 cleanup() {
   for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
+  [ -n "${VIEW_FORWARDER:-}" ] && kill -TERM "$VIEW_FORWARDER" 2>/dev/null
   wait 2>/dev/null || true
-  rm -f "$summary_file" "$logger_err"
+  rm -f "$summary_file" "$logger_err" "${VIEW_SOCKET:-}"
 }
 trap cleanup EXIT
 
@@ -127,6 +150,18 @@ if ! $in_process; then
   pids+=($!)
   "$bin_dir/planner_node" --params "$params" >/dev/null 2>&1 &
   pids+=($!)
+  if $view; then
+    if [ -n "${VIEW_SOCKET:-}" ]; then  # in the namespace: on a port of its own, through the socket
+      "$bin_dir/viewer_node" --params "$params" --port "$view_port" 2>/dev/null &
+      pids+=($!)
+      socat "UNIX-LISTEN:$VIEW_SOCKET,fork" "TCP:127.0.0.1:$view_port" 2>/dev/null &
+      pids+=($!)
+    else
+      "$bin_dir/viewer_node" --params "$params" --port "$view_port" 2>/dev/null &
+      pids+=($!)
+      echo "run_loop: the live view is at http://127.0.0.1:$view_port/" >&2
+    fi
+  fi
   sleep 0.5  # the nodes subscribe
 fi
 

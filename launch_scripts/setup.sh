@@ -19,8 +19,9 @@ packages=(
   libjchart2d-java
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
-  # tools/viewer_node/: its HTTP server; its test's browser and HTTP client
-  libcpp-httplib-dev chromium curl
+  # tools/viewer_node/: its HTTP server; its test's browser and HTTP client; run_loop.sh --view's
+  # forwarding of the view out of the loop's network namespace
+  libcpp-httplib-dev chromium curl socat
   # tools/plot/: billiard plot's pictures and billiard bench's chart
   libcairo2-dev
   # tools/python/: the billiard Python module (pybind11) and its pytest suite, on Debian's
