@@ -10,6 +10,49 @@
 
 namespace billiard::plot {
 
+namespace {
+
+constexpr double kLabelSize = 10.0;  // [px]
+
+// A label's box on the picture.
+struct Box {
+  double x0, y0, x1, y1;
+  bool Overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+// Draws `label` beside the point (x, y) where it overlaps no label placed before: right of the
+// point above it, below it, then ever farther above and below with a thin line back to the
+// point (neighbouring tolerances of one method often sit a few pixels apart).
+void PlaceLabel(cairo_t* cr, double x, double y, const std::string& label,
+                std::vector<Box>* placed) {
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, kLabelSize);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, label.c_str(), &extents);
+  const double line = kLabelSize + 3.0;
+  Box box{};
+  double baseline = y - 7.0;
+  for (int k = 0; k < 40; ++k) {
+    // Offsets in turn: -7 (above), +15 (below), then a line farther each way.
+    const double offset = k % 2 == 0 ? -7.0 - line * (k / 2) : 15.0 + line * (k / 2);
+    baseline = y + offset;
+    box = {x + 6.0, baseline - kLabelSize, x + 6.0 + extents.x_advance, baseline + 2.0};
+    if (std::none_of(placed->begin(), placed->end(), [&](const Box& b) { return b.Overlaps(box); })) {
+      break;
+    }
+  }
+  placed->push_back(box);
+  if (std::abs(baseline - y) > 16.0) {  // moved away: a leader line to its point
+    cairo_set_line_width(cr, 0.6);
+    cairo_move_to(cr, x + 3.0, y);
+    cairo_line_to(cr, x + 6.0, baseline - 0.3 * kLabelSize);
+    cairo_stroke(cr);
+  }
+  Text(cr, x + 6.0, baseline, label, kLabelSize);
+}
+
+}  // namespace
+
 void DrawChart(const Chart& chart, const std::string& path) {
   constexpr int kWidth = 1000, kHeight = 650;
   constexpr double kLeft = 80, kRight = 230, kTop = 50, kBottom = 70;
@@ -70,6 +113,7 @@ void DrawChart(const Chart& chart, const std::string& path) {
                                                                  {0.60, 0.15, 0.65},
                                                                  {0.00, 0.55, 0.75},
                                                                  {0.45, 0.45, 0.45}}};
+  std::vector<Box> placed;
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const ChartSeries& s = chart.series[k];
     const auto& c = kColours[k % kColours.size()];
@@ -85,9 +129,8 @@ void DrawChart(const Chart& chart, const std::string& path) {
       cairo_set_source_rgb(cr, c[0], c[1], c[2]);
       cairo_arc(cr, px(p.x), py(p.y), 4.5, 0, 2 * M_PI);
       cairo_fill(cr);
-      // Above and below in turn: neighbouring tolerances often sit a few pixels apart.
       cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-      Text(cr, px(p.x) + 6, py(p.y) + (i % 2 == 0 ? -7 : 15), p.label, 10);
+      PlaceLabel(cr, px(p.x), py(p.y), p.label, &placed);
     }
     const double legend_y = kTop + 15 + 24.0 * k;
     cairo_set_source_rgb(cr, c[0], c[1], c[2]);
