@@ -15,7 +15,7 @@
 #                          a scene file at rest, the cue ball rolled into the ball nearest it;
 #                          prints how the estimator tracked every ball (error, swaps)
 #   --params NAME|FILE     the parameter set of all three nodes: pool (default), paper, snooker,
-#                          carom, or a JSON file (README.md, "Parameter sets")
+#                          carom, or a JSON file (docs/simulation.md)
 #   --log FILE             record every message with lcm-logger into FILE
 #   --log-frames all|none  with --log: record the CAMERA_IMAGE frames or not (default all)
 #   --lockstep             wait for the estimator's state of each frame: deterministic (default)

@@ -1,6 +1,5 @@
 # Sourced first by every script of launch_scripts/ and by fuzz/run_fuzzers.sh, so that their
-# command lines and exit statuses are those of every other program here (README.md, "Exit
-# codes"): --help before any work, one line on stderr and exit 2 for a bad command line, 130 when
+# command lines and exit statuses are those of every other program here (docs/exit-codes.md): --help before any work, one line on stderr and exit 2 for a bad command line, 130 when
 # a signal stops the script.
 #
 #   help_and_exit             prints the script's usage, the comment block at its top (from its

@@ -4,7 +4,7 @@
 # The closed loop on two computers of a LAN, made on this one: two network namespaces joined by
 # a virtual Ethernet pair (10.77.0.1 and 10.77.0.2), the planner in the first, the estimator and
 # the table simulator in the second, talking UDP multicast with ttl=1 across the link (as on a
-# real LAN: README.md, "Several hosts"). Lockstep, noise off: the shots are those of run_loop.sh
+# real LAN: docs/closed-loop.md, "Several hosts"). Lockstep, noise off: the shots are those of run_loop.sh
 # with the same --shots and --seed. Prints the table simulator's JSON summary on stdout.
 #
 #   --shots N   shots (default 5)

@@ -16,7 +16,7 @@
 
 #include "lcmtypes/billiard/cue_command_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
-#include "tests/support/readme.h"
+#include "tests/support/quoted_figures.h"
 #include "tests/support/run_command.h"
 
 namespace {
@@ -96,15 +96,16 @@ void CopyWithOneMessageAltered(const std::string& from, const std::string& to,
 }
 
 // The README's main command as it starts (20 shots, seed 1): lockstep is deterministic, so the
-// figures README.md quotes for it are what this run gives.
-TEST(ClosedLoop, TwentyLockstepShotsWithoutNoiseLandWithinMillimetresAsTheReadmeSays) {
+// figures docs/closed-loop.md quotes for it are what this run gives.
+TEST(ClosedLoop, TwentyLockstepShotsWithoutNoiseLandWithinMillimetresAsTheManualSays) {
   const nlohmann::json s = RunLoop("--shots 20 --seed 1 --noise off");
   ASSERT_TRUE(s.is_object());
   ASSERT_EQ(s["shots"].size(), 20u);
   for (const auto& shot : s["shots"]) EXPECT_EQ(shot["status"], "ok") << shot;
   EXPECT_LT(s["median_miss_m"].get<double>(), 2e-3);
   EXPECT_LT(s["max_miss_m"].get<double>(), 5e-3);
-  const std::vector<std::string> quoted = billiard::testing::ReadmeFigures(
+  const std::vector<std::string> quoted = billiard::testing::QuotedFigures(
+      "docs/closed-loop.md",
       "Measured, 20 shots, seed 1, lockstep, noise off, pool parameters [^:]*: every shot "
       "planned, median miss ([0-9.]+) mm, worst ([0-9.]+) mm");
   ASSERT_EQ(quoted.size(), 2u);

@@ -1,4 +1,4 @@
-// README.md's "Exit codes" as a user meets them: every script, node binary and billiard
+// docs/exit-codes.md as a user meets them: every script, node binary and billiard
 // subcommand answers --help (exit 0, the usage on stdout) and a bad command line (exit 2, one
 // line on stderr) alike, and refusals, internal failures and signals exit as the table says.
 // The scripts run with fakes of the tools their real work starts (cmake, apt-get, ...) first on

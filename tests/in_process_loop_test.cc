@@ -18,7 +18,7 @@
 #include "sim/params/parameter_sets.h"
 #include "sim/table_sim_node/session.h"
 #include "sim/table_sim_node/table_sim_node.h"
-#include "tests/support/readme.h"
+#include "tests/support/quoted_figures.h"
 
 namespace billiard {
 namespace {
@@ -198,12 +198,13 @@ TEST(InProcessLoop, ABreakIsPlannedSimulatedAndTrackedBallByBall) {
   EXPECT_EQ(tracking.swaps, 0);
 
   // This is `run_loop.sh --scene break` (seed 1, lockstep): deterministic, so the figures
-  // README.md quotes for it are this run's.
+  // docs/closed-loop.md quotes for it are this run's.
   const nlohmann::json j = table_sim_node::SceneSummary(scene, "break");
   const nlohmann::json& t = j["tracking"];
   double worst_ball = 0.0;
   for (const auto& b : t["balls"]) worst_ball = std::max(worst_ball, b["rms_error_mm"].get<double>());
-  const std::vector<std::string> quoted = testing::ReadmeFigures(
+  const std::vector<std::string> quoted = testing::QuotedFigures(
+      "docs/closed-loop.md",
       "the cue ball meets the apex ball ([0-9.]+) mm from the planned contact point [^;]*; "
       "([0-9]+) events; the estimator follows the 16 balls with ([0-9.]+) mm RMS error "
       "\\(([0-9.]+) mm for the worst ball, ([0-9]+) mm at worst in one frame[^)]*\\), "

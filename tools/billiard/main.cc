@@ -26,7 +26,7 @@
 
 namespace {
 
-// A command cut short by SIGINT or SIGTERM exits 130 whichever it was (README.md, "Exit codes"),
+// A command cut short by SIGINT or SIGTERM exits 130 whichever it was (docs/exit-codes.md),
 // not as a process killed by the signal. `billiard loop` installs handlers of its own that end
 // its session cleanly, with the same status.
 void ExitStopped(int) { _exit(130); }

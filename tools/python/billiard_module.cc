@@ -249,7 +249,7 @@ py::dict Detect(const py::array_t<std::uint8_t, py::array::c_style | py::array::
 PYBIND11_MODULE(billiard, m) {
   using namespace billiard::python;
   using py::arg;
-  m.doc() = "Robot billiard physics, planning and vision (README.md, \"Python\")";
+  m.doc() = "Robot billiard physics, planning and vision (docs/python.md)";
   RefusedType() = py::reinterpret_borrow<py::object>(
       PyErr_NewException("billiard.Refused", PyExc_Exception, nullptr));
   m.attr("Refused") = RefusedType();
