@@ -402,7 +402,11 @@ std::vector<std::size_t> TableSimulation::ResolveHeld(const std::vector<std::siz
     const std::size_t i = members[m];
     const BallState& s = held.states[m];
     if (motion[m]) {
-      balls_[i].segments.emplace_back(cloth_, time_, s, held.accelerations[m], end - time_);
+      // The first to end is already the motion; the others end with it.
+      balls_[i].segments.push_back(
+          motion[m]->end_time() <= end
+              ? *motion[m]
+              : MotionSegment(cloth_, time_, s, held.accelerations[m], end - time_));
     } else if (!Current(i).closed_form() && m < pressed) {
       // A 5-DOF ball that pressed into its contact where the closed form's cloth holds it off
       // (its own curve or slip): on by the closed form until its next event, or it would press
