@@ -73,13 +73,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::vector<table::SceneBall> balls =
       table::testing::DegenerateScene(geometry, p.ball.radius, uniform);
   const bool five_dof = data[0] % 4 == 3;
-  table::TableSimulationOptions options;
+  table::TableSimulationOptions options =
+      table::testing::MotionOptions(five_dof ? "auto" : "closed-form", p);
   options.max_events = fuzz::kEventBudget;
-  if (five_dof) {
-    options.five_dof = [](const physics::BallState& s) {
-      return table::FiveDofWhereNeeded(s, p, physics::SimulationOptions{});
-    };
-  }
   try {
     table::TableSimulation sim(geometry, p, balls, options);
     sim.Run(five_dof ? fuzz::kFiveDofSeconds : INFINITY);

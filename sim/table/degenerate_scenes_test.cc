@@ -34,19 +34,12 @@ struct Motion {
 };
 
 std::vector<Motion> Motions(const physics::ModelParameters& p) {
-  TableSimulationOptions automatic, approx;
-  automatic.five_dof = [p](const BallState& s) {
-    return FiveDofWhereNeeded(s, p, physics::SimulationOptions{});
-  };
-  approx.five_dof = [](const BallState&) {
-    return std::optional<physics::SimulationOptions>(physics::SimulationOptions{});
-  };
   // The closed form's contacts are roots of polynomials and its held contacts exact: within the
   // contact tolerance. A 5-DOF ball pressed into a body overlaps it by up to kPushOverlap before
   // the push is met (the README's 0.15 um holds it).
-  return {{"closed-form", {}, 2.0 * kContactTolerance},
-          {"auto", automatic, 1.5 * kPushOverlap},
-          {"approx", approx, 1.5 * kPushOverlap}};
+  return {{"closed-form", testing::MotionOptions("closed-form", p), 2.0 * kContactTolerance},
+          {"auto", testing::MotionOptions("auto", p), 1.5 * kPushOverlap},
+          {"approx", testing::MotionOptions("approx", p), 1.5 * kPushOverlap}};
 }
 
 // Runs `balls` to rest (or `t_end`) and checks the invariants; returns the simulation's events.

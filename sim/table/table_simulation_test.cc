@@ -11,6 +11,7 @@
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 #include "sim/table/testing/breaks.h"
+#include "sim/table/testing/degenerate_scenes.h"
 
 namespace billiard::table {
 namespace {
@@ -277,13 +278,7 @@ TEST(TableSimulation, AThousandSeededBreaksKeepBallsApartOnTheTableAndLoseEnergy
 
 // Every ball moving by the approximate 5-DOF model between events, as `--model approx` runs
 // them.
-TableSimulationOptions FiveDof() {
-  TableSimulationOptions options;
-  options.five_dof = [](const BallState&) {
-    return std::optional<physics::SimulationOptions>(physics::SimulationOptions{});
-  };
-  return options;
-}
+TableSimulationOptions FiveDof() { return testing::MotionOptions("approx", Pool()); }
 
 TEST(TableSimulation, AFiveDofBallMovesAsTheOneBallSimulatorAndCurvesWhereTheClosedFormCannot) {
   // A stun shot with side spin down the middle of the table, alone: between events the table

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <stdexcept>
 
 namespace billiard::table::testing {
 
@@ -118,6 +119,22 @@ std::vector<SceneBall> DegenerateScene(const TableGeometry& table, double radius
   cue.state[physics::kWy] = roll * std::cos(heading);
   cue.state[physics::kWz] = draw.Between(-kMostSideSpin, kMostSideSpin);
   return balls;
+}
+
+TableSimulationOptions MotionOptions(const std::string& model, const physics::ModelParameters& p) {
+  TableSimulationOptions options;
+  if (model == "auto") {
+    options.five_dof = [p](const BallState& s) {
+      return FiveDofWhereNeeded(s, p, physics::SimulationOptions{});
+    };
+  } else if (model == "approx") {
+    options.five_dof = [](const BallState&) {
+      return std::optional<physics::SimulationOptions>(physics::SimulationOptions{});
+    };
+  } else if (model != "closed-form") {
+    throw std::invalid_argument("no motion model '" + model + "' (closed-form, auto, approx)");
+  }
+  return options;
 }
 
 std::vector<SceneBall> SeededDegenerateScene(const TableGeometry& table, double radius,

@@ -28,6 +28,11 @@ using Uniform = std::function<double()>;
 std::vector<SceneBall> DegenerateScene(const TableGeometry& table, double radius,
                                        const Uniform& uniform);
 
+// The motion between events as `billiard simulate --scene --model` names it, with the 5-DOF
+// model's default method: "closed-form" (every ball), "auto" (FiveDofWhereNeeded) or "approx"
+// (the 5-DOF model for every moving ball). Throws std::invalid_argument for another name.
+TableSimulationOptions MotionOptions(const std::string& model, const physics::ModelParameters& p);
+
 // The same from a seed.
 std::vector<SceneBall> SeededDegenerateScene(const TableGeometry& table, double radius,
                                              std::uint64_t seed);
