@@ -55,7 +55,9 @@ std::size_t ExpectSimulatesKeepingInvariants(const TableGeometry& table,
     ADD_FAILURE() << what << " (" << motion.name << "): " << e.what();
     return 0;
   }
-  if (!std::isfinite(t_end)) EXPECT_TRUE(sim.AtRest()) << what << " (" << motion.name << ")";
+  if (!std::isfinite(t_end)) {
+    EXPECT_TRUE(sim.AtRest()) << what << " (" << motion.name << ")";
+  }
   const testing::SceneInvariants kept = testing::MeasureInvariants(sim, table, p, dt);
   EXPECT_LE(kept.overlap, motion.overlap) << what << " (" << motion.name << ")";
   EXPECT_LE(kept.off_surface, motion.overlap) << what << " (" << motion.name << ")";
