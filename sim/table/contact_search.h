@@ -79,8 +79,7 @@ template <typename Accept>
 double FirstCrossing(const Quartic& f, double window, double sign, double contact,
                      double speed_scale, const Accept& accept) {
   if (sign * f[0] >= -contact) {
-    const double h = std::min(kContactHorizon, window);
-    const double slope = f[1] + h * (2.0 * f[2] + h * (3.0 * f[3] + h * 4.0 * f[4]));
+    const double slope = Derivative(f, std::min(kContactHorizon, window));
     if (sign * slope > speed_scale * kContactSpeed && accept(0.0)) return 0.0;
   }
   if (std::all_of(f.begin(), f.end(), [](double c) { return c == 0.0; })) return kInfinity;
