@@ -30,7 +30,7 @@ const std::map<std::string, std::set<std::string>>& Layers() {
       {"sim/table/testing", {"sim/table", "sim/physics", "sim/params"}},
       {"sim/params", {"sim/physics", "sim/table"}},
       {"sim/physics/testing", {"sim/physics", "sim/params"}},
-      {"sim/model_choice", {"sim/physics"}},
+      {"sim/model_choice", {"sim/physics", "sim/table"}},
       {"sim/contact_fit", {"sim/physics"}},
       {"sim/camera", {"sim/physics"}},
       {"sim/render", {"sim/camera", "sim/physics"}},

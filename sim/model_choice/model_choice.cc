@@ -53,4 +53,17 @@ ModelChoice ChooseModel(const physics::BallState& initial, const physics::ModelP
   return choice;
 }
 
+physics::SimulationOptions TableMotionMethod(const physics::ModelParameters& p,
+                                             double accuracy_m) {
+  return ChooseModel(physics::MakeBallState(0, 0, 1, 0, 0, 0, 1), p, accuracy_m).options;
+}
+
+decltype(table::TableSimulationOptions::five_dof) TableMotion(const physics::ModelParameters& p,
+                                                             double accuracy_m) {
+  const physics::SimulationOptions method = TableMotionMethod(p, accuracy_m);
+  return [method, p](const physics::BallState& state) {
+    return table::FiveDofWhereNeeded(state, p, method);
+  };
+}
+
 }  // namespace billiard::model_choice

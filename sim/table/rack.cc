@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <stdexcept>
 #include <utility>
+
+#include "sim/table/seeded_uniform.h"
 
 namespace billiard::table {
 
@@ -20,28 +21,6 @@ constexpr double kDRadius = 0.292;    // the D's radius [m]
 constexpr double kBlackSpot = 0.324;  // from the face of the top cushion [m]
 // UMB: the starting spots' offset across the table from the bottom spot [m].
 constexpr double kStartingSpotOffset = 0.182;
-
-// Uniform numbers in [0, 1) from std::mt19937_64: the top 53 bits of each draw, scaled.
-class SeededUniform {
- public:
-  explicit SeededUniform(std::uint64_t seed) : engine_(seed) {}
-  double Next() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
-  std::size_t Below(std::size_t n) { return static_cast<std::size_t>(Next() * n); }
-  // A point in the disc of radius `radius` (not uniform in area; the rack needs only the bound).
-  Vector2d InDisc(double radius) {
-    const double r = radius * Next();
-    const double angle = 2 * kPi * Next();
-    return r * Vector2d(std::cos(angle), std::sin(angle));
-  }
-  // Fisher-Yates, with this generator (std::shuffle's use of the engine is unspecified).
-  template <typename T>
-  void Shuffle(std::vector<T>* items) {
-    for (std::size_t i = items->size(); i > 1; --i) std::swap((*items)[i - 1], (*items)[Below(i)]);
-  }
-
- private:
-  std::mt19937_64 engine_;
-};
 
 SceneBall AtRest(int id, const Vector2d& p) {
   return {id, physics::MakeBallState(p.x(), p.y(), 0, 0, 0, 0, 0)};

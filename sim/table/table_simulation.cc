@@ -511,7 +511,9 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
   }
 }
 
-void TableSimulation::Run(double t_end) {
+void TableSimulation::Run(double t_end) { RunUntil(nullptr, t_end); }
+
+bool TableSimulation::RunUntil(const std::function<bool(const TableEvent&)>& stop, double t_end) {
   if (!(t_end >= time_)) throw std::invalid_argument("the end time is before the present");
   while (true) {
     // The earliest candidate; ties to the lower index and the kinds in declaration order.
@@ -573,9 +575,15 @@ void TableSimulation::Run(double t_end) {
     if (next.type == EventType::kBallCushion || next.type == EventType::kBallJaw) {
       next.cushion = index;
     }
+    const std::size_t before = events_.size();
     Apply(next, bi, bj, index);
+    if (stop && std::any_of(events_.begin() + static_cast<std::ptrdiff_t>(before), events_.end(),
+                            stop)) {
+      return true;
+    }
   }
   if (std::isfinite(t_end)) time_ = t_end;
+  return false;
 }
 
 }  // namespace billiard::table

@@ -77,6 +77,11 @@ class TableSimulation {
 
   // Runs the events up to time t_end (infinite: until every ball rests or is pocketed).
   void Run(double t_end = std::numeric_limits<double>::infinity());
+  // The same, stopping at the first event for which `stop` is true (time() is then that event's):
+  // what a planner asks when only the start of a shot matters (the first contact, a ball's drop).
+  // Returns whether it stopped there; Run or RunUntil goes on from there.
+  bool RunUntil(const std::function<bool(const TableEvent&)>& stop,
+                double t_end = std::numeric_limits<double>::infinity());
 
   double time() const { return time_; }
   bool AtRest() const;

@@ -20,6 +20,7 @@
 #include "tools/billiard/node_status_command.h"
 #include "tools/billiard/plan_command.h"
 #include "tools/billiard/plot_command.h"
+#include "tools/billiard/pot_commands.h"
 #include "tools/billiard/replay_command.h"
 #include "tools/billiard/scene_commands.h"
 #include "tools/billiard/simulate_command.h"
@@ -59,6 +60,8 @@ int main(int argc, char** argv) {
   billiard::cli::AddRackCommand(app);
   billiard::cli::AddBenchScenesCommand(app);
   billiard::cli::AddPlotCommand(app);
+  billiard::cli::AddPlanPotCommand(app);
+  billiard::cli::AddBenchPotCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

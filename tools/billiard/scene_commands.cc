@@ -24,18 +24,9 @@ namespace billiard::cli {
 
 namespace {
 
-// --model auto on a scene without --accuracy: 5 mm per motion between events, just above the
-// approximate 5-DOF model's own p95 error on side-spin motion (4.1 mm against the integral
-// model, docs/benchmarks/model_choice.json), so that the approximate model, not the integral
-// one (17 times slower), moves a spinning ball; the closed form moves the rolling ones.
-constexpr double kSceneAccuracy = 5e-3;  // [m]
-
-table::TableGeometry LoadTableOption(const std::string& name_or_path) {
-  try {
-    return table::BuildTable(params::LoadTableSpec(name_or_path));
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
+// The accuracy of --model auto: --accuracy, or the scene's default.
+double SceneAccuracy(double accuracy) {
+  return accuracy > 0.0 ? accuracy : model_choice::kSceneAccuracy;
 }
 
 table::CushionModel CushionModelOption(const std::string& name) {
@@ -44,41 +35,6 @@ table::CushionModel CushionModelOption(const std::string& name) {
     throw UsageError("--cushion-model: unknown model '" + name + "' (mathavan-2010, han-2005)");
   }
   return *model;
-}
-
-nlohmann::json EventJson(const table::TableEvent& e) {
-  nlohmann::json j = {{"t", e.time}, {"type", table::EventTypeName(e.type)}};
-  j["balls"] = e.other >= 0 ? std::vector<int>{e.ball, e.other} : std::vector<int>{e.ball};
-  switch (e.type) {
-    case table::EventType::kTransition:
-      j["from"] = table::PhaseName(e.from);
-      j["to"] = table::PhaseName(e.to);
-      break;
-    case table::EventType::kBallPocket:
-      j["pocket"] = e.pocket;
-      break;
-    case table::EventType::kBallCushion:
-    case table::EventType::kBallJaw:
-      j["cushion"] = e.cushion;
-      j["impulse"] = e.impulse;
-      break;
-    case table::EventType::kBallBall:
-      j["impulse"] = e.impulse;
-      break;
-    case table::EventType::kBallPush:
-      if (e.cushion >= 0) j["cushion"] = e.cushion;
-      break;
-  }
-  return j;
-}
-
-// The 5-DOF model's method for what it moves under --model auto (sliding or spinning balls): the
-// cheapest that meets the accuracy on side-spin motion (docs/benchmarks/model_choice.json).
-physics::SimulationOptions AutoFiveDofMethod(double accuracy,
-                                             const physics::ModelParameters& params) {
-  return model_choice::ChooseModel(physics::MakeBallState(0, 0, 1, 0, 0, 0, 1), params,
-                                   accuracy > 0.0 ? accuracy : kSceneAccuracy)
-      .options;
 }
 
 // The models a scene ran with, in words, for the readable summary.
@@ -91,11 +47,12 @@ std::string ModelsInWords(const SceneSimulationArgs& args, const physics::ModelP
   } else if (args.model == "approx") {
     out << "approximate 5-DOF model (Kudra et al. 2016) for every moving ball";
   } else {
-    const physics::SimulationOptions method = AutoFiveDofMethod(args.accuracy, params);
+    const physics::SimulationOptions method =
+        model_choice::TableMotionMethod(params, SceneAccuracy(args.accuracy));
     out << "auto: closed form while a ball rolls, 5-DOF " << physics::ModelName(method.model)
         << "/" << physics::IntegratorName(method.integrator) << " (tol " << method.tolerance
         << " m) while it slides or spins (accuracy "
-        << (args.accuracy > 0.0 ? args.accuracy : kSceneAccuracy) << " m)";
+        << SceneAccuracy(args.accuracy) << " m)";
   }
   out << "; cushion " << args.cushion_model
       << "; ball-ball restitution with Alciatore's throw friction (TP A.14)";
@@ -140,6 +97,40 @@ void PrintSceneTable(const table::TableSimulation& sim,
 
 }  // namespace
 
+table::TableGeometry LoadTableOption(const std::string& name_or_path) {
+  try {
+    return table::BuildTable(params::LoadTableSpec(name_or_path));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+}
+
+nlohmann::json EventJson(const table::TableEvent& e) {
+  nlohmann::json j = {{"t", e.time}, {"type", table::EventTypeName(e.type)}};
+  j["balls"] = e.other >= 0 ? std::vector<int>{e.ball, e.other} : std::vector<int>{e.ball};
+  switch (e.type) {
+    case table::EventType::kTransition:
+      j["from"] = table::PhaseName(e.from);
+      j["to"] = table::PhaseName(e.to);
+      break;
+    case table::EventType::kBallPocket:
+      j["pocket"] = e.pocket;
+      break;
+    case table::EventType::kBallCushion:
+    case table::EventType::kBallJaw:
+      j["cushion"] = e.cushion;
+      j["impulse"] = e.impulse;
+      break;
+    case table::EventType::kBallBall:
+      j["impulse"] = e.impulse;
+      break;
+    case table::EventType::kBallPush:
+      if (e.cushion >= 0) j["cushion"] = e.cushion;
+      break;
+  }
+  return j;
+}
+
 decltype(table::TableSimulationOptions::five_dof) SceneMotionModel(
     const std::string& model, double accuracy, const physics::ModelParameters& params) {
   using Choice = std::optional<physics::SimulationOptions>;
@@ -152,10 +143,7 @@ decltype(table::TableSimulationOptions::five_dof) SceneMotionModel(
   if (accuracy < 0.0 || !std::isfinite(accuracy)) {
     throw UsageError("--accuracy must be a positive number of metres");
   }
-  const physics::SimulationOptions method = AutoFiveDofMethod(accuracy, params);
-  return [method, params](const physics::BallState& state) {
-    return table::FiveDofWhereNeeded(state, params, method);
-  };
+  return model_choice::TableMotion(params, SceneAccuracy(accuracy));
 }
 
 void SimulateScene(const SceneSimulationArgs& args) {
@@ -204,7 +192,7 @@ void SimulateScene(const SceneSimulationArgs& args) {
   j["table"] = geometry.name;
   DescribeParameters(params, &j);
   j["model"] = args.model;
-  if (args.model == "auto") j["accuracy_m"] = args.accuracy > 0.0 ? args.accuracy : kSceneAccuracy;
+  if (args.model == "auto") j["accuracy_m"] = SceneAccuracy(args.accuracy);
   j["cushion_model"] = args.cushion_model;
   j["t"] = sim->time();
   j["balls"] = nlohmann::json::array();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -33,6 +34,13 @@ void SimulateScene(const SceneSimulationArgs& args);
 // metres); UsageError for another name.
 decltype(table::TableSimulationOptions::five_dof) SceneMotionModel(
     const std::string& model, double accuracy, const physics::ModelParameters& params);
+
+// The table of a scene's "table" (a name or a file); UsageError with the reason.
+table::TableGeometry LoadTableOption(const std::string& name_or_path);
+
+// An event as `simulate --scene --json` prints it: {"t", "type", "balls", and the kind's own
+// keys}.
+nlohmann::json EventJson(const table::TableEvent& e);
 
 void AddRackCommand(CLI::App& app);
 void AddBenchScenesCommand(CLI::App& app);

@@ -1,0 +1,301 @@
+#include "bench/pot_benchmark.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "bench/format.h"
+#include "bench/speed_error.h"
+#include "planner/pot/testing/pot_layouts.h"
+#include "sim/model_choice/model_choice.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
+#include "sim/physics/cue_strike.h"
+#include "sim/table/seeded_uniform.h"
+#include "sim/table/table_simulation.h"
+
+namespace billiard::bench {
+
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+// The margin is checked this far inside and outside its edges (fractions of it).
+constexpr double kInner = 0.9, kOuter = 1.1;
+// Position targets lie within this distance of the object ball [m].
+constexpr double kTargetReach = 0.5;
+// The cut-angle bins of the throw's table [deg].
+constexpr double kCutBins[] = {0, 15, 30, 45, 60, 80};
+
+struct Table {
+  std::string name, params;
+  table::TableGeometry geometry;
+  physics::ModelParameters p;
+};
+
+// What `billiard simulate --scene` makes of the scene with the cue ball launched at v0, w0: its
+// default models (model_choice::TableMotion, Mathavan's cushion), to rest.
+struct Check {
+  bool potted = false, legal = false;
+  int first_contact = -1;
+  std::optional<std::string> cue_pocket;
+  Eigen::Vector2d rest = Eigen::Vector2d::Zero();
+};
+
+Check Simulate(const Table& t, std::vector<table::SceneBall> balls, const physics::BallState& launch,
+               int k, const std::string& pocket) {
+  std::size_t cue = 0, object = 0;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    if (balls[i].id == 0) cue = i;
+    if (balls[i].id == k) object = i;
+  }
+  balls[cue].state = launch;
+  table::TableSimulationOptions o;
+  o.five_dof = model_choice::TableMotion(t.p);
+  table::TableSimulation sim(t.geometry, t.p, balls, o);
+  sim.Run();
+  Check c;
+  for (const table::TableEvent& e : sim.events()) {
+    if (e.type == table::EventType::kBallBall && (e.ball == 0 || e.other == 0)) {
+      c.first_contact = e.ball == 0 ? e.other : e.ball;
+      break;
+    }
+  }
+  c.potted = sim.pocket(object) && *sim.pocket(object) == pocket;
+  c.cue_pocket = sim.pocket(cue);
+  c.legal = c.potted && c.first_contact == k && !c.cue_pocket;
+  c.rest = sim.State(cue).head<2>();
+  return c;
+}
+
+physics::BallState LaunchOf(const Table& t, const std::vector<table::SceneBall>& balls,
+                            const physics::CueStroke& stroke) {
+  for (const table::SceneBall& b : balls) {
+    if (b.id == 0) return physics::StrikeBall(stroke, b.state.head<2>(), t.p);
+  }
+  return physics::BallState::Zero();
+}
+
+physics::BallState PlannedLaunch(const std::vector<table::SceneBall>& balls, const pot::PotPlan& plan) {
+  for (const table::SceneBall& b : balls) {
+    if (b.id == 0) {
+      return physics::MakeBallState(b.state.x(), b.state.y(), plan.v0.x(), plan.v0.y(),
+                                    plan.w0.x(), plan.w0.y(), plan.w0.z());
+    }
+  }
+  return physics::BallState::Zero();
+}
+
+bool PotsTurned(const Table& t, const PotRun& run, const std::vector<table::SceneBall>& balls,
+                double turn_deg) {
+  physics::CueStroke s = run.plan.stroke;
+  s.heading += turn_deg * kDegree;
+  return Simulate(t, balls, LaunchOf(t, balls, s), run.plan.ball, run.plan.pocket).legal;
+}
+
+std::string Percent(int n, int of) { return of > 0 ? Fixed(100.0 * n / of, 1) + " %" : "-"; }
+
+}  // namespace
+
+PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<Table> tables;
+  for (const auto& [name, params] : {std::pair<std::string, std::string>{"pool-9ft", "pool"},
+                                     {"snooker-12ft", "snooker"}}) {
+    tables.push_back({name, params, table::BuildTable(params::LoadTableSpec(name)), params::LoadParameters(params)});
+  }
+  PotBenchmarkResult result;
+  result.options = options;
+  pot::PotOptions measuring;
+  measuring.measure_throw = true;
+  int margins = 0;
+  for (int i = 0; i < options.layouts; ++i) {
+    const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(i);
+    const bool snooker = options.snooker_every > 0 && i % options.snooker_every == options.snooker_every - 1;
+    const Table& t = tables[snooker ? 1 : 0];
+    const pot::testing::PotLayout layout = pot::testing::SeededPotLayout(t.geometry, t.p.ball.radius, seed);
+    PotRun run;
+    run.seed = seed;
+    run.table = t.name;
+    run.balls = static_cast<int>(layout.balls.size());
+    run.straight_clear = pot::testing::StraightLineClear(t.geometry, t.p.ball.radius, layout.balls,
+                                                         layout.request.ball, layout.request.pocket, 80.0);
+    run.plan = pot::PlanPot(t.geometry, t.p, layout.balls, layout.request, measuring);
+    if (run.plan.status == pot::PotStatus::kOk) {
+      const Check c = Simulate(t, layout.balls, PlannedLaunch(layout.balls, run.plan), run.plan.ball, run.plan.pocket);
+      run.verified = c.legal;
+      if (!c.legal) {
+        run.verify_failure = !c.potted ? "ball does not drop" : c.cue_pocket ? "scratch" : "foul first contact";
+      }
+      if (run.plan.ghost_heading) {
+        physics::CueStroke ghost = run.plan.stroke;
+        ghost.heading = *run.plan.ghost_heading;
+        run.ghost_pots = Simulate(t, layout.balls, LaunchOf(t, layout.balls, ghost), run.plan.ball, run.plan.pocket).legal;
+      }
+      if (margins < options.margin_checks) {
+        ++margins;
+        run.inner_left = PotsTurned(t, run, layout.balls, kInner * run.plan.margin_left_deg);
+        run.inner_right = PotsTurned(t, run, layout.balls, -kInner * run.plan.margin_right_deg);
+        run.outer_left = !PotsTurned(t, run, layout.balls, kOuter * run.plan.margin_left_deg);
+        run.outer_right = !PotsTurned(t, run, layout.balls, -kOuter * run.plan.margin_right_deg);
+        if (getenv("POT_DEBUG") && !(*run.inner_left && *run.inner_right && *run.outer_left && *run.outer_right))
+          fprintf(stderr, "seed %lu %s kind %s margin %.4f %.4f cut %.1f : %d %d %d %d\n", (unsigned long)seed, t.name.c_str(), pot::ShotKindName(run.plan.kind), run.plan.margin_left_deg, run.plan.margin_right_deg, run.plan.cut_deg, *run.inner_left, *run.inner_right, *run.outer_left, *run.outer_right);
+      }
+    }
+    if (getenv("POT_DEBUG")) fprintf(stderr, "run %lu %s n=%d clear=%d %s %s %.0f us %d sims\n", (unsigned long)seed, t.name.c_str(), run.balls, run.straight_clear, pot::PotStatusName(run.plan.status), run.plan.status == pot::PotStatus::kOk ? pot::ShotKindName(run.plan.kind) : run.plan.reason.substr(0, 80).c_str(), run.plan.solve_us, run.plan.simulations);
+    result.runs.push_back(run);
+    if ((i + 1) % 50 == 0) options.progress("bench-pot: " + std::to_string(i + 1) + " / " + std::to_string(options.layouts) + " layouts");
+  }
+  // Position play: the first layouts on pool that plan, a seeded target near the object ball.
+  table::SeededUniform random(options.seed);
+  const Table& pool = tables[0];
+  for (std::size_t i = 0; i < result.runs.size() && static_cast<int>(result.positions.size()) < options.position_targets; ++i) {
+    const PotRun& run = result.runs[i];
+    if (run.table != pool.name || run.plan.status != pot::PotStatus::kOk) continue;
+    pot::testing::PotLayout layout = pot::testing::SeededPotLayout(pool.geometry, pool.p.ball.radius, run.seed);
+    Eigen::Vector2d k = Eigen::Vector2d::Zero();
+    for (const table::SceneBall& b : layout.balls) if (b.id == layout.request.ball) k = b.state.head<2>();
+    PositionRun pr;
+    pr.seed = run.seed;
+    do {
+      const double radius = kTargetReach * std::sqrt(random.Next());
+      const double angle = 2.0 * M_PI * random.Next();
+      pr.target = k + radius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    } while (!pool.geometry.OnSurface(pr.target, pool.p.ball.radius));
+    layout.request.cue_target = pot::CueTarget{pr.target, 0.0};
+    pr.plan = pot::PlanPot(pool.geometry, pool.p, layout.balls, layout.request);
+    if (pr.plan.status == pot::PotStatus::kOk) {
+      const Check c = Simulate(pool, layout.balls, PlannedLaunch(layout.balls, pr.plan), pr.plan.ball, pr.plan.pocket);
+      pr.legal = c.legal;
+      pr.rest_error_m = (c.rest - pr.target).norm();
+    }
+    if (getenv("POT_DEBUG")) fprintf(stderr, "position %lu target %.3f %.3f kind %s: %s %s %.0f us\n", (unsigned long)pr.seed, pr.target.x(), pr.target.y(), pot::ShotKindName(run.plan.kind), pot::PotStatusName(pr.plan.status), pr.plan.reason.c_str(), pr.plan.solve_us);
+    result.positions.push_back(pr);
+    if (result.positions.size() % 20 == 0) options.progress("bench-pot: " + std::to_string(result.positions.size()) + " / " + std::to_string(options.position_targets) + " cue-ball targets");
+  }
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+nlohmann::json PotSummaryJson(const PotBenchmarkResult& r) {
+  int ok = 0, verified = 0, clear = 0, clear_ok = 0, blocked_ok = 0;
+  std::map<std::string, int> blocked_by_kind, kinds;
+  std::vector<double> pool_us, all_us;
+  int inner = 0, outer = 0, checked = 0;
+  std::map<int, std::pair<int, int>> throw_bins;  // bin -> (plans, misses)
+  for (const PotRun& run : r.runs) {
+    const bool is_ok = run.plan.status == pot::PotStatus::kOk;
+    all_us.push_back(run.plan.solve_us);
+    if (run.table == "pool-9ft") pool_us.push_back(run.plan.solve_us);
+    if (run.straight_clear) ++clear;
+    if (!is_ok) continue;
+    ++ok;
+    ++kinds[pot::ShotKindName(run.plan.kind)];
+    verified += run.verified;
+    if (run.straight_clear) ++clear_ok;
+    else {
+      ++blocked_ok;
+      ++blocked_by_kind[pot::ShotKindName(run.plan.kind)];
+    }
+    if (run.inner_left) {
+      ++checked;
+      inner += *run.inner_left + *run.inner_right;
+      outer += *run.outer_left + *run.outer_right;
+    }
+    if (run.ghost_pots && run.plan.kind == pot::ShotKind::kDirect) {
+      int bin = 0;
+      while (bin + 2 < static_cast<int>(std::size(kCutBins)) && run.plan.cut_deg >= kCutBins[bin + 1]) ++bin;
+      ++throw_bins[bin].first;
+      throw_bins[bin].second += !*run.ghost_pots;
+    }
+  }
+  int feasible = 0, within_1cm = 0;
+  double worst = 0.0;
+  for (const PositionRun& p : r.positions) {
+    if (p.plan.status != pot::PotStatus::kOk) continue;
+    ++feasible;
+    within_1cm += p.legal && p.rest_error_m <= 0.01;
+    worst = std::max(worst, p.rest_error_m);
+  }
+  nlohmann::json j;
+  j["layouts"] = r.runs.size();
+  j["ok"] = ok;
+  j["truth"] = {{"ok", ok}, {"verified", verified}};
+  j["coverage"] = {{"straight_clear", clear}, {"planned", clear_ok},
+                   {"fraction", clear > 0 ? static_cast<double>(clear_ok) / clear : 0.0},
+                   {"blocked_made", blocked_ok}, {"blocked_made_by_kind", blocked_by_kind}};
+  j["kinds"] = kinds;
+  j["margin"] = {{"plans", checked}, {"inner_pot", inner}, {"outer_miss", outer}, {"of", 2 * checked}};
+  nlohmann::json bins = nlohmann::json::array();
+  for (const auto& [bin, counts] : throw_bins) {
+    bins.push_back({{"cut_deg", {kCutBins[bin], kCutBins[bin + 1]}}, {"plans", counts.first}, {"ghost_misses", counts.second}});
+  }
+  j["throw"] = bins;
+  j["position"] = {{"targets", r.positions.size()}, {"feasible", feasible},
+                   {"fraction", r.positions.empty() ? 0.0 : static_cast<double>(feasible) / r.positions.size()},
+                   {"within_1cm", within_1cm}, {"worst_m", worst}};
+  j["solve_us"] = {{"pool_median", Quantile(pool_us, 0.5)}, {"pool_p95", Quantile(pool_us, 0.95)},
+                   {"all_median", Quantile(all_us, 0.5)}, {"all_p95", Quantile(all_us, 0.95)}};
+  j["wall_s"] = r.wall_s;
+  return j;
+}
+
+void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  const nlohmann::json s = PotSummaryJson(r);
+  std::ofstream out = OpenForWriting(dir + "/pot_report.md");
+  out << "# Potting against the table simulation\n\n"
+      << "`billiard bench-pot --out docs/benchmarks` (seed " << r.options.seed << "): "
+      << r.runs.size() << " seeded layouts of 2-16 balls (planner/pot/testing/pot_layouts.h), every "
+      << r.options.snooker_every << "th on snooker-12ft, the rest on pool-9ft; a random object ball "
+      << "and pocket each, planned with `--kind any`. Every plan is checked on its own: its v0, w0 "
+      << "simulated from the scene with the default models of `billiard simulate --scene` "
+      << "(`--model auto`, Mathavan et al. 2010's cushion). " << Fixed(r.wall_s, 1) << " s in all.\n\n";
+  out << "## Truth\n\n" << s["truth"]["verified"].get<int>() << " of " << s["truth"]["ok"].get<int>()
+      << " ok plans pot ball K in pocket P with a legal first contact and no scratch.\n\n";
+  for (const PotRun& run : r.runs) {
+    if (run.plan.status == pot::PotStatus::kOk && !run.verified) {
+      out << "- seed " << run.seed << " (" << run.table << "): " << run.verify_failure << "\n";
+    }
+  }
+  out << "\n## Coverage\n\n"
+      << "Of the " << s["coverage"]["straight_clear"].get<int>() << " pots whose straight ghost-ball "
+      << "line is clear (no ball within a ball's width of either line, cut below 80 deg), "
+      << s["coverage"]["planned"].get<int>() << " planned ok ("
+      << Percent(s["coverage"]["planned"].get<int>(), s["coverage"]["straight_clear"].get<int>())
+      << "). Where it is not clear, " << s["coverage"]["blocked_made"].get<int>() << " pots were made by:";
+  for (const auto& [kind, n] : s["coverage"]["blocked_made_by_kind"].items()) out << " " << kind << " " << n.get<int>() << ";";
+  out << "\n\n| status | layouts |\n|---|---|\n";
+  std::map<std::string, int> statuses;
+  for (const PotRun& run : r.runs) ++statuses[pot::PotStatusName(run.plan.status)];
+  for (const auto& [status, n] : statuses) out << "| " << status << " | " << n << " |\n";
+  out << "\n## The margin is true\n\n"
+      << "On " << s["margin"]["plans"].get<int>() << " plans, the cue's heading turned to " << kInner
+      << " x the margin on each side pots " << s["margin"]["inner_pot"].get<int>() << " of "
+      << s["margin"]["of"].get<int>() << " times, and turned to " << kOuter << " x misses "
+      << s["margin"]["outer_miss"].get<int>() << " of " << s["margin"]["of"].get<int>() << ".\n\n";
+  out << "## Throw\n\nThe direct plans aimed through the ghost ball alone (the line of centres along "
+      << "the drop window's middle, the same speed and spin: throw not corrected), simulated without "
+      << "noise:\n\n| cut [deg] | plans | miss |\n|---|---|---|\n";
+  for (const nlohmann::json& b : s["throw"]) {
+    out << "| " << b["cut_deg"][0].get<double>() << "-" << b["cut_deg"][1].get<double>() << " | "
+        << b["plans"].get<int>() << " | " << b["ghost_misses"].get<int>() << " ("
+        << Percent(b["ghost_misses"].get<int>(), b["plans"].get<int>()) << ") |\n";
+  }
+  out << "\n## Position\n\n" << s["position"]["targets"].get<int>() << " random cue-ball targets "
+      << "within " << kTargetReach << " m of the object ball (pool layouts that plan): "
+      << s["position"]["feasible"].get<int>() << " feasible ("
+      << Percent(s["position"]["feasible"].get<int>(), s["position"]["targets"].get<int>())
+      << "); of those, " << s["position"]["within_1cm"].get<int>() << " stop within 1 cm of the "
+      << "target when simulated (worst " << Fixed(1e3 * s["position"]["worst_m"].get<double>(), 2) << " mm).\n\n";
+  out << "## Speed\n\nWall time per plan on one core: pool layouts median "
+      << Fixed(1e-3 * s["solve_us"]["pool_median"].get<double>(), 2) << " ms, p95 "
+      << Fixed(1e-3 * s["solve_us"]["pool_p95"].get<double>(), 2) << " ms; all layouts median "
+      << Fixed(1e-3 * s["solve_us"]["all_median"].get<double>(), 2) << " ms, p95 "
+      << Fixed(1e-3 * s["solve_us"]["all_p95"].get<double>(), 2) << " ms (refusals included: a "
+      << "blocked pot tries every kind).\n";
+}
+
+}  // namespace billiard::bench

@@ -1,0 +1,173 @@
+#include "tools/billiard/pot_commands.h"
+
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "bench/pot_benchmark.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/params/scene_file.h"
+#include "tools/billiard/command_line.h"
+#include "tools/billiard/scene_commands.h"
+
+namespace billiard::cli {
+
+namespace {
+
+struct PlanPotArgs {
+  std::string scene_path;
+  int ball = -1;
+  std::string pocket;
+  std::string kind = "any";
+  std::string cue_to;
+  double cue_radius = 0.0;
+  bool json = false;
+};
+
+nlohmann::json Point(const Eigen::Vector2d& p) { return {p.x(), p.y()}; }
+
+void PrintPlan(const pot::PotPlan& plan) {
+  std::cerr << "plan-pot: ball " << plan.ball << " in " << plan.pocket << ": "
+            << pot::PotStatusName(plan.status);
+  if (plan.status != pot::PotStatus::kOk) {
+    std::cerr << " (" << plan.reason << ")\n";
+    return;
+  }
+  std::cerr << ", " << plan.why << "\n  cue     " << plan.stroke.speed << " m/s, heading "
+            << plan.stroke.heading << " rad, tip side " << plan.stroke.tip_side
+            << " m, tip height " << plan.stroke.tip_height << " m, elevation "
+            << plan.stroke.elevation << " rad\n  margin  " << plan.margin_left_deg << " deg left, "
+            << plan.margin_right_deg << " deg right; cue speed " << plan.speed_lo << " to "
+            << plan.speed_hi << " m/s; cut " << plan.cut_deg << " deg\n  cue ball stops at "
+            << plan.cue_rest.x() << ", " << plan.cue_rest.y() << " m; " << plan.simulations
+            << " simulations, " << plan.solve_us << " us\n";
+}
+
+void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
+  params::SceneFile scene;
+  try {
+    scene = params::LoadScene(args.scene_path);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  const physics::ModelParameters params = LoadParametersOption(scene.params);
+  const table::TableGeometry geometry = LoadTableOption(scene.table);
+  pot::PotRequest request;
+  request.ball = args.ball;
+  request.pocket = args.pocket;
+  bool known = false;
+  request.kind = pot::ParseShotKind(args.kind, &known);
+  if (!known) throw UsageError("--kind: unknown kind '" + args.kind + "' (direct, bank, kick, curve, any)");
+  if (!args.cue_to.empty()) {
+    const auto to = ParseNumberList(args.cue_to, 2, "--cue-to X,Y");
+    request.cue_target = pot::CueTarget{{to[0], to[1]}, args.cue_radius};
+    RequireFinite(args.cue_radius, "--cue-radius");
+  } else if (radius_given) {
+    throw UsageError("--cue-radius goes with --cue-to");
+  }
+  std::vector<table::SceneBall> balls;
+  try {
+    balls = params::LaunchedBalls(scene, params);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(args.scene_path + ": " + e.what());
+  }
+  const pot::PotPlan plan = pot::PlanPot(geometry, params, balls, request);
+  if (args.json) {
+    nlohmann::json j = PotPlanJson(plan);
+    j["table"] = geometry.name;
+    DescribeParameters(params, &j);
+    std::cout << j.dump() << std::endl;
+  } else {
+    PrintPlan(plan);
+  }
+  if (plan.status != pot::PotStatus::kOk) {
+    throw Refused(std::string(pot::PotStatusName(plan.status)) + ": " + plan.reason);
+  }
+}
+
+}  // namespace
+
+nlohmann::json PotPlanJson(const pot::PotPlan& plan) {
+  nlohmann::json j;
+  j["status"] = pot::PotStatusName(plan.status);
+  j["reason"] = plan.reason;
+  j["ball"] = plan.ball;
+  j["pocket"] = plan.pocket;
+  j["solve_us"] = plan.solve_us;
+  j["simulations"] = plan.simulations;
+  if (plan.status != pot::PotStatus::kOk) return j;
+  j["kind"] = pot::ShotKindName(plan.kind);
+  j["why"] = plan.why;
+  if (plan.rail >= 0) j["rail"] = plan.rail;
+  j["v0"] = Point(plan.v0);
+  j["w0"] = {plan.w0.x(), plan.w0.y(), plan.w0.z()};
+  j["cue"] = {{"speed", plan.stroke.speed},
+              {"heading", plan.stroke.heading},
+              {"tip_side", plan.stroke.tip_side},
+              {"tip_height", plan.stroke.tip_height},
+              {"elevation", plan.stroke.elevation}};
+  j["cut_deg"] = plan.cut_deg;
+  j["margin_deg"] = {plan.margin_left_deg, plan.margin_right_deg};
+  j["speed_window"] = {plan.speed_lo, plan.speed_hi};
+  j["cue_rest"] = Point(plan.cue_rest);
+  j["paths"] = nlohmann::json::object();
+  for (const pot::BallPath& path : plan.paths) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const Eigen::Vector2d& p : path.points) points.push_back(Point(p));
+    j["paths"][std::to_string(path.id)] = points;
+  }
+  j["events"] = nlohmann::json::array();
+  for (const table::TableEvent& e : plan.events) j["events"].push_back(EventJson(e));
+  return j;
+}
+
+void AddPlanPotCommand(CLI::App& app) {
+  auto args = std::make_shared<PlanPotArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "plan-pot",
+      "Plan the stroke that pots a ball in a pocket, against the whole-table simulation (exit 3 "
+      "if refused)");
+  cmd->add_option("--scene", args->scene_path, "The scene JSON (as simulate --scene); id 0 the cue ball")
+      ->required();
+  cmd->add_option("--ball", args->ball, "The object ball's id")->required();
+  cmd->add_option("--pocket", args->pocket,
+                  "lower_left | lower_middle | lower_right | upper_left | upper_middle | upper_right")
+      ->required();
+  cmd->add_option("--kind", args->kind, "direct | bank | kick | curve | any")->capture_default_str();
+  cmd->add_option("--cue-to", args->cue_to, "Where the cue ball should stop, X,Y [m]");
+  CLI::Option* radius = cmd->add_option("--cue-radius", args->cue_radius,
+                                        "Within this distance of --cue-to [m] (default: the point)");
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
+  cmd->callback([args, radius] { RunPlanPot(*args, radius->count() > 0); });
+}
+
+void AddBenchPotCommand(CLI::App& app) {
+  struct Args {
+    bench::PotBenchmarkOptions options;
+    std::string out;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench-pot", "Seeded pots planned and checked against the table simulation: truth, coverage, "
+                   "margin, throw, position, speed (JSON summary on stdout)");
+  cmd->add_option("--layouts", args->options.layouts, "Seeded layouts")->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", args->options.seed, "The first layout's seed")->capture_default_str();
+  cmd->add_option("--margin-checks", args->options.margin_checks, "Plans whose margin is checked")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd->add_option("--position-targets", args->options.position_targets, "Cue-ball targets planned")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd->add_option("--out", args->out, "Write pot_report.md into this directory");
+  cmd->callback([args] {
+    if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
+    bench::PotBenchmarkOptions options = args->options;
+    options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
+    const bench::PotBenchmarkResult result = bench::RunPotBenchmark(options);
+    if (!args->out.empty()) {
+      bench::WritePotReport(result, args->out);
+      std::cerr << "bench-pot: wrote " << args->out << "/pot_report.md\n";
+    }
+    std::cout << bench::PotSummaryJson(result).dump() << std::endl;
+  });
+}
+
+}  // namespace billiard::cli

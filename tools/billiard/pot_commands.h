@@ -1,0 +1,19 @@
+// The potting subcommands: `billiard plan-pot` (the stroke that pots a ball, planned against the
+// whole-table simulation) and `billiard bench-pot` (its truth, coverage, margin, throw, position
+// and speed on seeded layouts).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "planner/pot/pot_planner.h"
+
+namespace billiard::cli {
+
+// A plan as `plan-pot --json` prints it.
+nlohmann::json PotPlanJson(const pot::PotPlan& plan);
+
+void AddPlanPotCommand(CLI::App& app);
+void AddBenchPotCommand(CLI::App& app);
+
+}  // namespace billiard::cli
