@@ -140,11 +140,8 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
         run.inner_right = PotsTurned(t, run, layout.balls, -kInner * run.plan.margin_right_deg);
         run.outer_left = !PotsTurned(t, run, layout.balls, kOuter * run.plan.margin_left_deg);
         run.outer_right = !PotsTurned(t, run, layout.balls, -kOuter * run.plan.margin_right_deg);
-        if (getenv("POT_DEBUG") && !(*run.inner_left && *run.inner_right && *run.outer_left && *run.outer_right))
-          fprintf(stderr, "seed %lu %s kind %s margin %.4f %.4f cut %.1f : %d %d %d %d\n", (unsigned long)seed, t.name.c_str(), pot::ShotKindName(run.plan.kind), run.plan.margin_left_deg, run.plan.margin_right_deg, run.plan.cut_deg, *run.inner_left, *run.inner_right, *run.outer_left, *run.outer_right);
       }
     }
-    if (getenv("POT_DEBUG")) fprintf(stderr, "run %lu %s n=%d clear=%d %s %s %.0f us %d sims\n", (unsigned long)seed, t.name.c_str(), run.balls, run.straight_clear, pot::PotStatusName(run.plan.status), run.plan.status == pot::PotStatus::kOk ? pot::ShotKindName(run.plan.kind) : run.plan.reason.substr(0, 80).c_str(), run.plan.solve_us, run.plan.simulations);
     result.runs.push_back(run);
     if ((i + 1) % 50 == 0) options.progress("bench-pot: " + std::to_string(i + 1) + " / " + std::to_string(options.layouts) + " layouts");
   }
@@ -171,7 +168,6 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
       pr.legal = c.legal;
       pr.rest_error_m = (c.rest - pr.target).norm();
     }
-    if (getenv("POT_DEBUG")) fprintf(stderr, "position %lu target %.3f %.3f kind %s: %s %s %.0f us\n", (unsigned long)pr.seed, pr.target.x(), pr.target.y(), pot::ShotKindName(run.plan.kind), pot::PotStatusName(pr.plan.status), pr.plan.reason.c_str(), pr.plan.solve_us);
     result.positions.push_back(pr);
     if (result.positions.size() % 20 == 0) options.progress("bench-pot: " + std::to_string(result.positions.size()) + " / " + std::to_string(options.position_targets) + " cue-ball targets");
   }
@@ -242,8 +238,43 @@ nlohmann::json PotSummaryJson(const PotBenchmarkResult& r) {
   return j;
 }
 
+namespace {
+
+std::string Flag(const std::optional<bool>& b) { return b ? (*b ? "1" : "0") : ""; }
+
+// Every layout and every cue-ball target, a row each.
+void WritePotResults(const PotBenchmarkResult& r, const std::string& dir) {
+  std::ofstream out = OpenForWriting(dir + "/pot_results.csv");
+  out << "seed,table,balls,straight_clear,status,kind,rail,cut_deg,margin_left_deg,margin_right_deg,"
+         "speed_lo,speed_hi,solve_us,simulations,verified,ghost_pots,inner_left,inner_right,"
+         "outer_left_misses,outer_right_misses,target_x,target_y,rest_error_m\n";
+  const auto row = [&](std::uint64_t seed, const std::string& table, int balls, bool clear, const pot::PotPlan& p) {
+    const bool ok = p.status == pot::PotStatus::kOk;
+    out << seed << "," << table << "," << balls << "," << clear << "," << pot::PotStatusName(p.status)
+        << "," << (ok ? pot::ShotKindName(p.kind) : "") << "," << (ok && p.rail >= 0 ? std::to_string(p.rail) : "")
+        << "," << (ok ? Fixed(p.cut_deg, 2) : "") << "," << (ok ? Fixed(p.margin_left_deg, 4) : "")
+        << "," << (ok ? Fixed(p.margin_right_deg, 4) : "") << "," << (ok ? Fixed(p.speed_lo, 3) : "")
+        << "," << (ok ? Fixed(p.speed_hi, 3) : "") << "," << Fixed(p.solve_us, 0) << "," << p.simulations;
+  };
+  for (const PotRun& run : r.runs) {
+    row(run.seed, run.table, run.balls, run.straight_clear, run.plan);
+    out << "," << (run.plan.status == pot::PotStatus::kOk ? (run.verified ? "1" : "0") : "") << ","
+        << Flag(run.ghost_pots) << "," << Flag(run.inner_left) << "," << Flag(run.inner_right) << ","
+        << Flag(run.outer_left) << "," << Flag(run.outer_right) << ",,,\n";
+  }
+  for (const PositionRun& p : r.positions) {
+    row(p.seed, "pool-9ft", 0, false, p.plan);
+    out << "," << (p.plan.status == pot::PotStatus::kOk ? (p.legal ? "1" : "0") : "") << ",,,,,,"
+        << Fixed(p.target.x(), 4) << "," << Fixed(p.target.y(), 4) << ","
+        << (p.rest_error_m >= 0.0 ? Sci(p.rest_error_m) : "") << "\n";
+  }
+}
+
+}  // namespace
+
 void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
   std::filesystem::create_directories(dir);
+  WritePotResults(r, dir);
   const nlohmann::json s = PotSummaryJson(r);
   std::ofstream out = OpenForWriting(dir + "/pot_report.md");
   out << "# Potting against the table simulation\n\n"

@@ -65,7 +65,8 @@ struct PotBenchmarkResult {
 
 PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options);
 
-// Writes pot_report.md into `dir` (created if missing).
+// Writes pot_report.md and pot_results.csv (a row per layout and per target) into `dir`
+// (created if missing).
 void WritePotReport(const PotBenchmarkResult& result, const std::string& dir);
 
 // One JSON object summarising the run, for stdout.

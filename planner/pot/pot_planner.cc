@@ -9,7 +9,6 @@
 #include <functional>
 #include <limits>
 #include <memory>
-#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <variant>
@@ -74,12 +73,16 @@ constexpr double kArrivalTolerance = 0.05;
 constexpr double kGridSpeeds[] = {1.15, 1.5, 2.0, 2.8, 4.0};
 constexpr double kGridTips[] = {-0.8, -0.4, 0.0, 0.4, 0.8};
 constexpr int kMaxPositionIterations = 10;
+// The Levenberg-Marquardt damping of position play's steps, relative to the normal matrix's trace.
+constexpr double kPositionDamping = 1e-6;
+// Newton's method starts from this many of the grid's nearest rest points, in turn.
+constexpr std::size_t kPositionStarts = 3;
 // Position play is tried on this many of a kind's pots, the widest first.
 constexpr std::size_t kPositionRoutes = 2;
 constexpr int kMaxTruthCorrections = 4;
 // Curves: the cue elevations [rad] and side offsets (fraction of the largest) tried.
-constexpr double kCurveElevations[] = {20.0 * kDegree, 35.0 * kDegree};
-constexpr double kCurveSides[] = {0.6, -0.6};
+constexpr double kCurveElevations[] = {25.0 * kDegree, 45.0 * kDegree, 60.0 * kDegree};
+constexpr double kCurveSides[] = {0.7, -0.7};
 
 double Wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
 Eigen::Vector2d Unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
@@ -159,13 +162,6 @@ struct Refusal {
   std::string reason;
 };
 
-struct DebugTimer {
-  static std::map<std::string, std::pair<int, double>>& Totals() { static std::map<std::string, std::pair<int, double>> t; return t; }
-  std::string name; std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  explicit DebugTimer(std::string n) : name(std::move(n)) {}
-  ~DebugTimer() { auto& t = Totals()[name]; t.first++; t.second += std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count(); }
-};
-
 class PotSearch {
  public:
   PotSearch(const table::TableGeometry& table, const physics::ModelParameters& params,
@@ -188,7 +184,6 @@ class PotSearch {
   // The pot along `route`: the plan, or why not.
   // With `place_cue` the speed and follow/draw are chosen for the cue-ball target.
   std::variant<PotPlan, Refusal> Plan(const Route& route, bool place_cue = false) {
-    route_rails_ = route.kind == ShotKind::kBank ? 1 : 0;
     // A curve bends away from its lines: its search has every ball.
     near_ = route.kind == ShotKind::kCurve ? std::vector<SceneBall>{} : NearRoute(route);
     const Eigen::Vector2d object = balls_[object_].state.head<2>();
@@ -202,7 +197,7 @@ class PotSearch {
     StrokeShape shape{kFirstCueSpeed, route.tip_side, 0.0, route.elevation};
     const double first_heading = FirstHeading(route, shape, ghost);
     std::optional<Aimed> aimed = AimAt(shape, first_heading, Angle(departure), false, 0.0);
-    if (!aimed) return Refusal{PotStatus::kBlocked, BlockedReason(route, shape, first_heading)};
+    if (!aimed) return Refusal{PotStatus::kBlocked, BlockedReason(shape, first_heading)};
     const double cut_angle = CutAngle(Unit(Angle(aimed->contact.cue_before.segment<2>(physics::kVx))),
                                       Unit(aimed->contact.departure));
     if (cut_angle > options_.max_cut_deg * kDegree) {
@@ -222,11 +217,12 @@ class PotSearch {
                                                 " along its route (a ball or a jaw is in the way)"};
       }
       aimed = AimAt(shape, aimed->heading, drop->Middle(), false, aimed->slope);
-      if (!aimed) return Refusal{PotStatus::kBlocked, BlockedReason(route, shape, first_heading)};
+      if (!aimed) return Refusal{PotStatus::kBlocked, BlockedReason(shape, first_heading)};
     }
-    std::optional<Refusal> paced = Pace(&shape, &*aimed, drop ? drop->Middle() : Angle(departure));
+    std::optional<Refusal> paced = Pace(route, ghost, &shape, &*aimed, drop ? drop->Middle() : Angle(departure));
     if (paced) return *paced;
-    drop = DropWindow(aimed->contact, drop ? drop->Middle() : Angle(departure), kDirectScan, 0.0,
+    drop = DropWindow(aimed->contact, drop ? drop->Middle() : Angle(departure),
+                      route.kind == ShotKind::kBank ? kRailScan : kDirectScan, 0.0,
                       kWindowResolution, drop);
     if (!drop) {
       return Refusal{PotStatus::kNoStroke, "ball " + std::to_string(object_id_) +
@@ -245,15 +241,13 @@ class PotSearch {
   // ask: the cue ball's later travel, its cushions above all, is most of a shot's cost): K's fate
   // and the cue ball's.
   Played Play(const CueStroke& stroke, bool truth, bool to_rest = true) {
-    DebugTimer timer(truth ? "play-truth" : to_rest ? "play-rest" : "play-early");
     Played played;
     played.sim = Launch(stroke, truth);
     const std::size_t object = IndexOf(*played.sim, object_id_), cue = IndexOf(*played.sim, 0);
     if (to_rest) {
       played.sim->Run();
     } else {
-      played.sim->RunUntil(KsFate());
-      if (getenv("POT_DEBUG2")) { fprintf(stderr, "play %zu balls %zu events:", played.sim->ball_count(), played.sim->events().size()); for (auto& e : played.sim->events()) fprintf(stderr, " %s:%d", table::EventTypeName(e.type), e.ball); fprintf(stderr, "\n"); }
+      played.sim->RunUntil(KsFate(*played.sim));
     }
     PotOutcome& o = played.outcome;
     for (const TableEvent& e : played.sim->events()) {
@@ -273,14 +267,19 @@ class PotSearch {
   }
 
  private:
-  // The event that decides K: its drop, or a rail beyond its route's (a bank has one), after
-  // which it cannot drop in P on its route; what follows would only cost cushion impacts.
-  std::function<bool(const TableEvent&)> KsFate() const {
+  // The event that decides K in `sim`: its drop, or a rail after which it heads away from P's
+  // mouth (it cannot drop in P on its route then; what follows would only cost cushion impacts).
+  // A rail that turns K toward P (a bank's, or one K runs along into the jaws) decides nothing.
+  std::function<bool(const TableEvent&)> KsFate(const TableSimulation& sim) const {
     const int k = object_id_, rails = RailCount(table_);
-    return [k, rails, allowed = route_rails_](const TableEvent& e) mutable {
+    const std::size_t index = IndexOf(sim, k);
+    const Eigen::Vector2d mouth = pocket_.centre;
+    return [&sim, k, rails, index, mouth](const TableEvent& e) {
       if (e.ball != k) return false;
       if (e.type == EventType::kBallPocket) return true;
-      return e.type == EventType::kBallCushion && e.cushion < rails && allowed-- == 0;
+      if (e.type != EventType::kBallCushion || e.cushion >= rails) return false;
+      const BallState after = sim.StateAt(index, e.time);
+      return after.segment<2>(physics::kVx).dot(mouth - after.head<2>()) <= 0.0;
     };
   }
 
@@ -338,7 +337,6 @@ class PotSearch {
 
   // The cue ball's first contact with a ball for `stroke`.
   Contact FirstContact(const CueStroke& stroke, bool truth) {
-    DebugTimer timer(truth ? "contact-truth" : "contact");
     Contact c;
     std::unique_ptr<TableSimulation> sim = Launch(stroke, truth);
     const auto cue_event = [](const TableEvent& e) {
@@ -519,14 +517,12 @@ class PotSearch {
   // Whether K, leaving the contact along `direction` with its post-impact speed and spin,
   // drops in P among the balls still on the table.
   bool Drops(const Contact& c, double direction, double scale, bool truth = false) {
-    DebugTimer timer("drops");
     std::vector<SceneBall> balls = c.others;
     BallState object = Rotated(c.object_after, Wrap(direction - c.departure));
     object.tail<5>() *= scale;
     balls.push_back({object_id_, object});
     std::unique_ptr<TableSimulation> sim = Simulation(balls, truth);
-    sim->RunUntil(KsFate());
-    if (getenv("POT_DEBUG2")) { fprintf(stderr, "drops %zu events:", sim->events().size()); for (auto& e : sim->events()) fprintf(stderr, " %s", table::EventTypeName(e.type)); fprintf(stderr, "\n"); }
+    sim->RunUntil(KsFate(*sim));
     const std::optional<std::string>& dropped = sim->pocket(balls.size() - 1);
     return dropped && *dropped == pocket_.name;
   }
@@ -593,7 +589,8 @@ class PotSearch {
   // The plain pot's pace: the cue speed at which K crosses the capture line at the arrival
   // speed (its square nearly linear in the cue speed's square: friction takes energy by the
   // metre), re-aimed at each speed.
-  std::optional<Refusal> Pace(StrokeShape* shape, Aimed* aimed, double direction) {
+  std::optional<Refusal> Pace(const Route& route, const Eigen::Vector2d& ghost, StrokeShape* shape,
+                              Aimed* aimed, double direction) {
     const double top = params_.cue.max_speed;
     double v_prev = 0.0, a2_prev = 0.0;
     bool have_prev = false;
@@ -628,7 +625,9 @@ class PotSearch {
       }
       if (next == shape->speed) break;
       shape->speed = next;
-      std::optional<Aimed> again = AimAt(*shape, aimed->heading, direction, false, aimed->slope);
+      // A curve's bend changes with the pace: its path is found again first.
+      const double from = route.kind == ShotKind::kCurve ? FirstHeading(route, *shape, ghost) : aimed->heading;
+      std::optional<Aimed> again = AimAt(*shape, from, direction, false, aimed->slope);
       if (!again) {
         return Refusal{PotStatus::kBlocked, "at " + std::to_string(next) +
                                                 " m/s the cue ball no longer reaches ball " +
@@ -676,59 +675,76 @@ class PotSearch {
       s.tip_height = x.y();
       return s;
     };
-    std::optional<Landing> best;
-    Eigen::Vector2d x = Eigen::Vector2d::Zero();
+    std::vector<std::pair<Eigen::Vector2d, Landing>> grid;
     for (double speed : kGridSpeeds) {
       for (double tip : kGridTips) {
         const Eigen::Vector2d xi = bounded({base * speed / kGridSpeeds[1], tip * tip_room});
         std::optional<Landing> l = LandWith(shaped(xi), *aimed, drop.Middle(), false);
-        if (l && (!best || (l->rest - target.point).norm() < (best->rest - target.point).norm())) {
-          best = l;
-          x = xi;
-        }
+        if (l) grid.emplace_back(xi, *l);
       }
     }
-    if (!best) return Refusal{PotStatus::kTargetUnreachable, "no stroke of the grid pots and leaves the cue ball on the table"};
-    const auto jacobian = [&](const Eigen::Vector2d& at, const Landing& l) -> std::optional<Eigen::Matrix2d> {
-      Eigen::Matrix2d j;
+    if (grid.empty()) return Refusal{PotStatus::kTargetUnreachable, "no stroke of the grid pots and leaves the cue ball on the table"};
+    const auto miss_of = [&](const Landing& l) { return (l.rest - target.point).norm(); };
+    std::sort(grid.begin(), grid.end(), [&](const auto& a, const auto& b) { return miss_of(a.second) < miss_of(b.second); });
+    // d rest / d (speed, tip height) by forward differences on the search.
+    const auto jacobian = [&](const Eigen::Vector2d& at, const Landing& l, Eigen::Matrix2d* j) {
       const Eigen::Vector2d steps(0.02 * at.x(), 0.05 * tip_room);
       for (int c = 0; c < 2; ++c) {
         Eigen::Vector2d probe = at;
         probe[c] += (at[c] + steps[c] > (c == 0 ? top : tip_room)) ? -steps[c] : steps[c];
         std::optional<Landing> p = LandWith(shaped(probe), l.aimed, drop.Middle(), false);
-        if (!p) return std::nullopt;
-        j.col(c) = (p->rest - l.rest) / (probe[c] - at[c]);
+        if (!p) return false;
+        j->col(c) = (p->rest - l.rest) / (probe[c] - at[c]);
       }
-      if (!(std::abs(j.determinant()) > 1e-12)) return std::nullopt;
-      return j;
+      return j->allFinite();
     };
-    Landing here = *best;
-    std::optional<Eigen::Matrix2d> j;
-    for (int i = 0; i < kMaxPositionIterations; ++i) {
-      const Eigen::Vector2d miss = target.point - here.rest;
-      if (miss.norm() < 0.25 * tolerance) break;
-      j = jacobian(x, here);
-      if (!j) break;
-      Eigen::Vector2d step = j->inverse() * miss;
-      bool better = false;
-      for (int halving = 0; halving < 5 && !better; ++halving, step *= 0.5) {
-        const Eigen::Vector2d xn = bounded(x + step);
-        std::optional<Landing> l = LandWith(shaped(xn), here.aimed, drop.Middle(), false);
-        if (l && (l->rest - target.point).norm() < miss.norm()) {
-          x = xn;
-          here = *l;
-          better = true;
+    // A Levenberg-Marquardt step in units of the grid's spans: where speed and tip move the rest
+    // point along one line (a cue ball already rolling at contact, whatever the tip), the step to
+    // the nearest point of that line.
+    const Eigen::Vector2d span(base, tip_room > 0.0 ? tip_room : 1.0);
+    const auto step_to = [&](const Eigen::Matrix2d& jacobian, const Eigen::Vector2d& miss) {
+      const Eigen::Matrix2d js = jacobian * span.asDiagonal();
+      const Eigen::Matrix2d normal = js.transpose() * js;
+      const Eigen::Matrix2d damped = normal + kPositionDamping * normal.trace() * Eigen::Matrix2d::Identity();
+      return Eigen::Vector2d(span.asDiagonal() * (damped.inverse() * (js.transpose() * miss)));
+    };
+    // Gauss-Newton (a step that does not come closer is halved) from the nearest grid points in
+    // turn: the rest point jumps where the cue ball's path meets a cushion or a ball.
+    Eigen::Vector2d x = grid.front().first;
+    Landing here = grid.front().second;
+    Eigen::Matrix2d j;
+    for (std::size_t start = 0; start < grid.size() && start < kPositionStarts; ++start) {
+      Eigen::Vector2d xs = grid[start].first;
+      Landing at = grid[start].second;
+      for (int i = 0; i < kMaxPositionIterations; ++i) {
+        const Eigen::Vector2d miss = target.point - at.rest;
+        if (miss.norm() < 0.25 * tolerance || !jacobian(xs, at, &j)) break;
+        Eigen::Vector2d step = step_to(j, miss);
+        bool better = false;
+        for (int halving = 0; halving < 5 && !better; ++halving, step *= 0.5) {
+          const Eigen::Vector2d xn = bounded(xs + step);
+          std::optional<Landing> l = LandWith(shaped(xn), at.aimed, drop.Middle(), false);
+          if (l && miss_of(*l) < miss.norm()) {
+            xs = xn;
+            at = *l;
+            better = true;
+          }
         }
+        if (!better) break;
       }
-      if (!better) break;
+      if (miss_of(at) < miss_of(here)) {
+        x = xs;
+        here = at;
+      }
+      if (miss_of(here) < 0.25 * tolerance) break;
     }
-    if (!j) j = jacobian(x, here);
-    // The truth's rest point, corrected with the search's Jacobian.
+    // The truth's rest point, corrected with the search's Jacobian there.
     std::optional<Landing> truth = LandWith(shaped(x), here.aimed, drop.Middle(), true);
-    for (int i = 0; truth && j && i < kMaxTruthCorrections; ++i) {
+    const bool have_jacobian = jacobian(x, here, &j);
+    for (int i = 0; truth && have_jacobian && i < kMaxTruthCorrections; ++i) {
       const Eigen::Vector2d miss = target.point - truth->rest;
       if (miss.norm() < 0.5 * tolerance) break;
-      const Eigen::Vector2d xn = bounded(x + j->inverse() * miss);
+      const Eigen::Vector2d xn = bounded(x + step_to(j, miss));
       std::optional<Landing> l = LandWith(shaped(xn), truth->aimed, drop.Middle(), true);
       if (!l || (l->rest - target.point).norm() >= miss.norm()) break;
       x = xn;
@@ -874,10 +890,9 @@ class PotSearch {
     return "ball " + std::to_string(object_id_) + " does not drop in " + pocket_.name;
   }
 
-  std::string BlockedReason(const Route& route, const StrokeShape& shape, double heading) {
+  std::string BlockedReason(const StrokeShape& shape, double heading) {
     const Contact c = FirstContact(shape.At(heading), false);
     std::ostringstream s;
-    s << ShotKindName(route.kind) << ": ";
     if (c.ball >= 0 && c.ball != object_id_) {
       s << "the cue ball meets ball " << c.ball << " before ball " << object_id_;
     } else {
@@ -898,7 +913,6 @@ class PotSearch {
   std::size_t cue_ = 0, object_ = 0;
   Eigen::Vector2d cue_position_ = Eigen::Vector2d::Zero();
   int simulations_ = 0;
-  int route_rails_ = 0;  // rails K's route takes before the pocket
   // The pace's last fit: d (arrival speed^2) / d (cue speed^2), and the arrival speed at the pace.
   double pace_slope_ = 0.0, arrival_ = 0.0;
   std::vector<SceneBall> near_;  // the search's scene of a direct route; empty: the whole
@@ -1151,7 +1165,6 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
     if (!direct_blocked.empty() && !request.kind) why << "; direct: " << direct_blocked;
   }
   best->why = why.str();
-  if (getenv("POT_DEBUG")) { for (auto& [k, v] : DebugTimer::Totals()) fprintf(stderr, "  %s: %d calls %.0f us\n", k.c_str(), v.first, v.second); DebugTimer::Totals().clear(); }
   return finish(*best, search.simulations());
 }
 

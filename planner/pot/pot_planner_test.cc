@@ -2,14 +2,290 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "planner/pot/testing/pot_layouts.h"
+#include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 
 namespace billiard::pot {
 namespace {
 
-TEST(PotPlanner, Placeholder) {}
+using table::SceneBall;
+
+constexpr double kDegree = M_PI / 180.0;
+
+class PotPlannerTest : public ::testing::Test {
+ protected:
+  PotPlannerTest()
+      : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))),
+        params_(params::LoadParameters("pool")) {}
+
+  SceneBall Ball(int id, double x, double y) const {
+    return {id, physics::MakeBallState(x, y, 0, 0, 0, 0, 0)};
+  }
+
+  // What `billiard simulate --scene` makes of the scene with the cue ball launched at the plan's
+  // v0, w0 (its default motion and cushion), independently of the planner's own check.
+  struct Outcome {
+    bool potted = false;
+    int first_contact = -1;
+    bool scratch = false;
+    Eigen::Vector2d cue_rest = Eigen::Vector2d::Zero();
+    double departure = 0.0, normal = 0.0;  // K's direction after the first contact, and the line
+                                           // of centres there [rad]
+  };
+  Outcome Simulate(std::vector<SceneBall> balls, const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
+                   int k, const std::string& pocket) const {
+    std::size_t cue = 0, object = 0;
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      if (balls[i].id == 0) cue = i;
+      if (balls[i].id == k) object = i;
+    }
+    balls[cue].state.segment<2>(physics::kVx) = v0;
+    balls[cue].state.segment<3>(physics::kWx) = w0;
+    table::TableSimulationOptions options;
+    options.five_dof = model_choice::TableMotion(params_);
+    table::TableSimulation sim(table_, params_, balls, options);
+    sim.Run();
+    Outcome o;
+    for (const table::TableEvent& e : sim.events()) {
+      if (e.type == table::EventType::kBallBall && (e.ball == 0 || e.other == 0)) {
+        o.first_contact = e.ball == 0 ? e.other : e.ball;
+        const Eigen::Vector2d after = sim.StateAt(object, e.time).segment<2>(physics::kVx);
+        const Eigen::Vector2d line = sim.StateAt(object, e.time).head<2>() - sim.StateAt(cue, e.time).head<2>();
+        o.departure = std::atan2(after.y(), after.x());
+        o.normal = std::atan2(line.y(), line.x());
+        break;
+      }
+    }
+    o.potted = sim.pocket(object) && *sim.pocket(object) == pocket;
+    o.scratch = sim.pocket(cue).has_value();
+    o.cue_rest = sim.State(cue).head<2>();
+    return o;
+  }
+
+  Outcome SimulatePlan(const std::vector<SceneBall>& balls, const PotPlan& plan) const {
+    return Simulate(balls, plan.v0, plan.w0, plan.ball, plan.pocket);
+  }
+
+  Outcome SimulateStroke(const std::vector<SceneBall>& balls, const physics::CueStroke& stroke,
+                         const PotPlan& plan) const {
+    const physics::BallState launch = physics::StrikeBall(stroke, balls.front().state.head<2>(), params_);
+    return Simulate(balls, launch.segment<2>(physics::kVx), launch.segment<3>(physics::kWx), plan.ball,
+                    plan.pocket);
+  }
+
+  void ExpectLegalPot(const std::vector<SceneBall>& balls, const PotPlan& plan) const {
+    ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
+    const Outcome o = SimulatePlan(balls, plan);
+    EXPECT_TRUE(o.potted) << "ball " << plan.ball << " does not drop in " << plan.pocket;
+    EXPECT_EQ(o.first_contact, plan.ball);
+    EXPECT_FALSE(o.scratch);
+    EXPECT_NEAR((o.cue_rest - plan.cue_rest).norm(), 0.0, 1e-9) << "the plan's rest is the truth's";
+  }
+
+  table::TableGeometry table_;
+  physics::ModelParameters params_;
+};
+
+const table::Pocket& PocketNamed(const table::TableGeometry& t, const std::string& name) {
+  for (const table::Pocket& p : t.pockets) {
+    if (p.name == name) return p;
+  }
+  throw std::invalid_argument(name);
+}
+
+TEST_F(PotPlannerTest, ADirectCutPotsWhenItsLaunchIsSimulated) {
+  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)};
+  for (const char* pocket : {"upper_right", "lower_right", "upper_middle_not"}) {
+    PotRequest request{1, pocket, ShotKind::kDirect, std::nullopt};
+    const PotPlan plan = PlanPot(table_, params_, balls, request);
+    if (std::string(pocket) == "upper_middle_not") {
+      EXPECT_EQ(plan.status, PotStatus::kNoSuchPocket);
+      continue;
+    }
+    SCOPED_TRACE(pocket);
+    ExpectLegalPot(balls, plan);
+    EXPECT_EQ(plan.kind, ShotKind::kDirect);
+    EXPECT_GT(plan.margin_left_deg, 0.0);
+    EXPECT_GT(plan.margin_right_deg, 0.0);
+    EXPECT_LE(plan.speed_lo, plan.stroke.speed);
+    EXPECT_GE(plan.speed_hi, plan.stroke.speed);
+  }
+}
+
+// A straight-in shot along the corner pocket's diagonal: the table, the jaws and the balls are
+// symmetric about that line, so the aim is along it and the margin the same either side.
+TEST_F(PotPlannerTest, AStraightInShotAlongTheDiagonalAimsAlongItWithAnEvenMargin) {
+  const Eigen::Vector2d corner = PocketNamed(table_, "lower_left").centre;
+  const Eigen::Vector2d along = Eigen::Vector2d(1.0, 1.0).normalized();
+  const Eigen::Vector2d k = corner + 0.6 * along, cue = corner + 1.2 * along;
+  const std::vector<SceneBall> balls = {Ball(0, cue.x(), cue.y()), Ball(3, k.x(), k.y())};
+  const PotPlan plan = PlanPot(table_, params_, balls, {3, "lower_left", ShotKind::kDirect, {}});
+  ExpectLegalPot(balls, plan);
+  EXPECT_NEAR(std::remainder(plan.stroke.heading - std::atan2(-along.y(), -along.x()), 2 * M_PI), 0.0, 1e-5);
+  EXPECT_NEAR(plan.cut_deg, 0.0, 1e-3);
+  EXPECT_NEAR(plan.margin_left_deg / plan.margin_right_deg, 1.0, 0.05);
+}
+
+// The table is symmetric about its long axis: the mirrored layout gets the mirrored plan.
+TEST_F(PotPlannerTest, TheMirroredLayoutGetsTheMirroredPlan) {
+  const double w = table_.width;
+  const std::vector<SceneBall> balls = {Ball(0, 0.7, 0.45), Ball(5, 1.6, 0.85), Ball(7, 2.0, 0.3)};
+  std::vector<SceneBall> mirrored = balls;
+  for (SceneBall& b : mirrored) b.state.y() = w - b.state.y();
+  const PotPlan plan = PlanPot(table_, params_, balls, {5, "upper_right", ShotKind::kDirect, {}});
+  const PotPlan image = PlanPot(table_, params_, mirrored, {5, "lower_right", ShotKind::kDirect, {}});
+  ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
+  ASSERT_EQ(image.status, PotStatus::kOk) << image.reason;
+  EXPECT_NEAR(std::remainder(plan.stroke.heading + image.stroke.heading, 2 * M_PI), 0.0, 1e-5);
+  EXPECT_NEAR(plan.stroke.speed, image.stroke.speed, 1e-3 * plan.stroke.speed);
+  EXPECT_NEAR(plan.margin_left_deg, image.margin_right_deg, 0.05 * plan.margin_left_deg);
+  EXPECT_NEAR(plan.margin_right_deg, image.margin_left_deg, 0.05 * plan.margin_right_deg);
+  EXPECT_NEAR(plan.cue_rest.x(), image.cue_rest.x(), 1e-3);
+  EXPECT_NEAR(plan.cue_rest.y(), w - image.cue_rest.y(), 1e-3);
+}
+
+// The margin is what the simulation says: turned to 0.9 of it either way the stroke still pots,
+// to 1.1 it misses.
+TEST_F(PotPlannerTest, TheMarginIsTrueOnTheSimulation) {
+  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)};
+  const PotPlan plan = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kDirect, {}});
+  ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
+  for (const auto& [fraction, pots] : {std::pair{0.9, true}, {1.1, false}}) {
+    for (double side : {1.0, -1.0}) {
+      physics::CueStroke s = plan.stroke;
+      s.heading += side * fraction * (side > 0 ? plan.margin_left_deg : plan.margin_right_deg) * kDegree;
+      const Outcome o = SimulateStroke(balls, s, plan);
+      EXPECT_EQ(o.potted && o.first_contact == 1 && !o.scratch, pots) << fraction << " x " << side;
+    }
+  }
+}
+
+// Cut-induced throw (Alciatore, TP A.14): the object ball leaves between the line of centres and
+// the cue ball's travel, a few degrees off the line for a slow cut. Aimed through the ghost ball
+// alone (the line of centres on the window's middle) it departs off the middle by the throw; the
+// plan's aim departs on it.
+TEST_F(PotPlannerTest, TheAimCorrectsTheThrowThatTheGhostBallAloneLeaves) {
+  const std::vector<SceneBall> balls = {Ball(0, 1.5, 0.2), Ball(4, 1.7, 0.75)};
+  PotOptions options;
+  options.measure_throw = true;
+  const PotPlan plan = PlanPot(table_, params_, balls, {4, "upper_right", ShotKind::kDirect, {}}, options);
+  ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
+  ASSERT_TRUE(plan.ghost_heading);
+  ASSERT_GT(plan.cut_deg, 20.0);
+  physics::CueStroke ghost = plan.stroke;
+  ghost.heading = *plan.ghost_heading;
+  const Outcome aimed = SimulateStroke(balls, plan.stroke, plan);
+  const Outcome naive = SimulateStroke(balls, ghost, plan);
+  const double throw_deg = std::remainder(naive.departure - naive.normal, 2 * M_PI) / kDegree;
+  const double cue_side = std::remainder(ghost.heading - naive.normal, 2 * M_PI);
+  EXPECT_GT(std::abs(throw_deg), 0.5);
+  EXPECT_LT(std::abs(throw_deg), 6.0);
+  EXPECT_GT(throw_deg * cue_side, 0.0) << "thrown toward the cue ball's travel";
+  // The plan departs where the ghost ball's line of centres points.
+  EXPECT_NEAR(std::remainder(aimed.departure - naive.normal, 2 * M_PI), 0.0, 2e-4);
+}
+
+TEST_F(PotPlannerTest, ABlockedLineIsRefusedNamingTheBlocker) {
+  // Ball 2 sits on the straight line from ball 1 to the lower right pocket.
+  const std::vector<SceneBall> balls = {Ball(0, 0.5, 0.4), Ball(1, 1.6, 0.7), Ball(2, 2.05, 0.38)};
+  const PotPlan direct = PlanPot(table_, params_, balls, {1, "lower_right", ShotKind::kDirect, {}});
+  EXPECT_EQ(direct.status, PotStatus::kBlocked);
+  EXPECT_NE(direct.reason.find("blocked by ball 2"), std::string::npos) << direct.reason;
+  // Any kind: a kick off the lower rail makes the middle pocket the straight line cannot.
+  const PotPlan any = PlanPot(table_, params_, balls, {1, "lower_middle", std::nullopt, {}});
+  ExpectLegalPot(balls, any);
+  EXPECT_EQ(any.kind, ShotKind::kKick);
+  EXPECT_NE(any.why.find("direct: the cut is"), std::string::npos) << any.why;
+}
+
+// Seeded layouts whose straight line is blocked (bench-pot's seeds 2047 and 2042): a bank and a
+// kick, asked for by kind.
+TEST_F(PotPlannerTest, BanksAndKicksPotWhenTheirLaunchIsSimulated) {
+  for (const auto& [seed, kind] : {std::pair{std::uint64_t{2047}, ShotKind::kBank}, {2042, ShotKind::kKick}}) {
+    const testing::PotLayout layout = testing::SeededPotLayout(table_, params_.ball.radius, seed);
+    PotRequest request = layout.request;
+    request.kind = kind;
+    const PotPlan plan = PlanPot(table_, params_, layout.balls, request);
+    SCOPED_TRACE(ShotKindName(kind));
+    ExpectLegalPot(layout.balls, plan);
+    EXPECT_EQ(plan.kind, kind);
+    EXPECT_GE(plan.rail, 0);
+    const auto rail_events = std::count_if(plan.events.begin(), plan.events.end(), [&](const table::TableEvent& e) {
+      return e.type == table::EventType::kBallCushion && e.ball == (kind == ShotKind::kBank ? plan.ball : 0) &&
+             e.cushion == plan.rail;
+    });
+    EXPECT_GE(rail_events, 1) << "the route's rail is met";
+  }
+}
+
+TEST_F(PotPlannerTest, ACurveBendsTheCueBallAroundABlocker) {
+  // Ball 6 stands halfway on the cue ball's line to the ghost ball, 3.5 cm off it.
+  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.7), Ball(3, 1.6, 0.7), Ball(6, 1.1, 0.735)};
+  const PotPlan direct = PlanPot(table_, params_, balls, {3, "upper_right", ShotKind::kDirect, {}});
+  EXPECT_EQ(direct.status, PotStatus::kBlocked) << direct.reason;
+  const PotPlan plan = PlanPot(table_, params_, balls, {3, "upper_right", ShotKind::kCurve, {}});
+  ExpectLegalPot(balls, plan);
+  EXPECT_GT(plan.stroke.elevation, 0.0);
+  EXPECT_NE(plan.stroke.tip_side, 0.0);
+}
+
+// A target the cue ball can reach by construction: where the pot played with more pace (an
+// arrival speed of 1 m/s at the pocket, not 0.6) leaves it.
+TEST_F(PotPlannerTest, PositionPlayStopsTheCueBallAtTheTarget) {
+  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)};
+  PotOptions firmer;
+  firmer.arrival_speed = 1.0;
+  const PotPlan firm = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kDirect, {}}, firmer);
+  ASSERT_EQ(firm.status, PotStatus::kOk) << firm.reason;
+  const Eigen::Vector2d target = firm.cue_rest;
+  const PotPlan plan = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kDirect, CueTarget{target, 0.0}});
+  ExpectLegalPot(balls, plan);
+  EXPECT_LT((plan.cue_rest - target).norm(), 0.01);
+  const PotPlan far = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kDirect, CueTarget{{0.1, 1.2}, 0.0}});
+  EXPECT_EQ(far.status, PotStatus::kTargetUnreachable) << far.reason;
+}
+
+TEST_F(PotPlannerTest, BadRequestsAreRefusedWithAReason) {
+  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9)};
+  const auto refused = [&](const PotRequest& r, PotStatus status) {
+    const PotPlan plan = PlanPot(table_, params_, balls, r);
+    EXPECT_EQ(plan.status, status) << PotStatusName(plan.status) << ": " << plan.reason;
+    EXPECT_FALSE(plan.reason.empty());
+    EXPECT_EQ(plan.reason.find('\n'), std::string::npos);
+  };
+  refused({9, "upper_right", std::nullopt, {}}, PotStatus::kNoSuchBall);
+  refused({0, "upper_right", std::nullopt, {}}, PotStatus::kNoSuchBall);
+  refused({1, "upper_centre", std::nullopt, {}}, PotStatus::kNoSuchPocket);
+  refused({1, "upper_right", std::nullopt, CueTarget{{NAN, 0.5}, 0.0}}, PotStatus::kInvalid);
+  refused({1, "upper_right", std::nullopt, CueTarget{{5.0, 0.5}, 0.0}}, PotStatus::kTargetUnreachable);
+  // Backwards: the pocket behind the object ball as the cue ball sees it.
+  refused({1, "lower_left", ShotKind::kDirect, {}}, PotStatus::kTooThin);
+  std::vector<SceneBall> nan_scene = balls;
+  nan_scene[1].state.x() = NAN;
+  const PotPlan plan = PlanPot(table_, params_, nan_scene, {1, "upper_right", std::nullopt, {}});
+  EXPECT_EQ(plan.status, PotStatus::kInvalid);
+  const std::vector<SceneBall> no_cue = {Ball(1, 1.8, 0.9)};
+  EXPECT_EQ(PlanPot(table_, params_, no_cue, {1, "upper_right", std::nullopt, {}}).status, PotStatus::kInvalid);
+}
+
+// Every ok plan of seeded layouts pots legally when its launch is simulated on its own.
+TEST_F(PotPlannerTest, SeededLayoutsPlanOnlyPotsThatDrop) {
+  int ok = 0;
+  for (std::uint64_t seed = 100; seed < 120; ++seed) {
+    const testing::PotLayout layout = testing::SeededPotLayout(table_, params_.ball.radius, seed, 2, 8);
+    const PotPlan plan = PlanPot(table_, params_, layout.balls, layout.request);
+    if (plan.status != PotStatus::kOk) continue;
+    ++ok;
+    SCOPED_TRACE(seed);
+    ExpectLegalPot(layout.balls, plan);
+  }
+  EXPECT_GE(ok, 8);
+}
 
 }  // namespace
 }  // namespace billiard::pot
