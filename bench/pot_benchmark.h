@@ -39,6 +39,9 @@ struct PotRun {
   int balls = 0;
   bool straight_clear = false;  // the straight ghost-ball line is clear and the cut below 80 deg
   pot::PotPlan plan;
+  // The plan's CPU time on its thread [us]: what it costs one core, whatever else the machine
+  // runs (plan.solve_us is the wall time).
+  double cpu_us = 0.0;
   // The independent check of an ok plan (simulate --scene's default models).
   bool verified = false;
   std::string verify_failure;

@@ -55,8 +55,8 @@ constexpr double kSpeedResolution = 0.05;
 constexpr double kSpeedBracket = 0.1;
 // Planning scenes that need more events are refused; a pot takes tens.
 constexpr std::int64_t kMaxPlanEvents = 20000;
-// The longest route a cue ball takes to its contact [m]: a kick across a 12-ft table and back.
-constexpr double kLongestRoute = 6.0;
+// The longest a cue ball's path is followed to find where it passes its ghost ball [s].
+constexpr double kLongestTime = 10.0;
 // A pot's search simulates the balls within this distance of its routes' lines, beyond contact
 // [m]: the drop window is a few degrees wide, 5 cm at a metre.
 constexpr double kNearRoute = 0.15;
@@ -230,11 +230,12 @@ class PotSearch {
     }
     aimed = AimAt(shape, aimed->heading, drop->Middle(), false, aimed->slope);
     if (!aimed) return Refusal{PotStatus::kBlocked, "the aim at the drop window's middle is blocked"};
+    std::optional<Aimed> placed_aim;  // position play's truth aim, whose rest met the target
     if (place_cue && target_) {
-      std::optional<Refusal> placed = Position(*target_, &shape, &*aimed, *drop);
+      std::optional<Refusal> placed = Position(*target_, &shape, &*aimed, *drop, &placed_aim);
       if (placed) return *placed;
     }
-    return Finish(route, shape, *aimed, *drop);
+    return Finish(route, shape, *aimed, *drop, placed_aim);
   }
 
   // Plays a stroke to rest, or with `to_rest` false until K drops (what the pace and the margin
@@ -395,30 +396,39 @@ class PotSearch {
   double PassingSide(const CueStroke& stroke, const Eigen::Vector2d& point, bool after_rail) {
     std::vector<SceneBall> alone = {{0, physics::StrikeBall(stroke, cue_position_, params_)}};
     std::unique_ptr<TableSimulation> sim = Simulation(alone, false);
-    // Far enough to pass the point: the route's length at the launch speed, twice over.
-    const double launch = alone.front().state.segment<2>(physics::kVx).norm();
-    const double horizon = 2.0 * kLongestRoute / std::max(launch, 0.1);
-    sim->Run(horizon);
-    double from = 0.0;
-    if (after_rail) {
-      const auto rail = std::find_if(sim->events().begin(), sim->events().end(), [](const TableEvent& e) {
-        return e.type == EventType::kBallCushion;
-      });
-      if (rail == sim->events().end()) return std::numeric_limits<double>::infinity();
-      from = rail->time;
-    }
-    double best = std::numeric_limits<double>::infinity(), side = 0.0;
-    constexpr double kSample = 2e-3;  // [s]
-    for (double t = from; t <= sim->time(); t += kSample) {
-      const BallState s = sim->StateAt(0, t);
-      const Eigen::Vector2d d = point - s.head<2>();
-      if (d.norm() < best) {
-        best = d.norm();
-        const Eigen::Vector2d v = s.segment<2>(physics::kVx);
-        side = (v.x() * d.y() - v.y() * d.x()) > 0.0 ? best : -best;
+    // Run a stretch at a time until the path has passed the point (it draws away again) or
+    // the ball rests: a kick's cue ball would go on from cushion to cushion.
+    constexpr double kStretch = 0.1, kSample = 2e-3;  // [s]
+    constexpr double kPassed = 0.2;                    // [m] beyond the closest approach
+    double best = std::numeric_limits<double>::infinity(), side = 0.0, t = 0.0;
+    bool railed = !after_rail;
+    std::size_t seen = 0;
+    while (!sim->AtRest() && t < kLongestTime) {
+      sim->Run(t + kStretch);
+      for (; seen < sim->events().size(); ++seen) {
+        if (sim->events()[seen].type == EventType::kBallCushion && !railed) {
+          railed = true;
+          t = sim->events()[seen].time;
+        }
       }
+      if (!railed) {
+        t = sim->time();
+        continue;
+      }
+      double d = best;
+      for (; t <= sim->time(); t += kSample) {
+        const BallState s = sim->StateAt(0, t);
+        const Eigen::Vector2d to = point - s.head<2>();
+        d = to.norm();
+        if (d < best) {
+          best = d;
+          const Eigen::Vector2d v = s.segment<2>(physics::kVx);
+          side = (v.x() * to.y() - v.y() * to.x()) > 0.0 ? best : -best;
+        }
+      }
+      if (d > best + kPassed) break;
     }
-    return side;
+    return railed ? side : std::numeric_limits<double>::infinity();
   }
 
   // The contact normal [rad] that sends K along `target` when the cue ball arrives as in `c`:
@@ -657,7 +667,7 @@ class PotSearch {
   // cue ball at the target, by Newton's method on the search's rest point from the nearest of a
   // coarse grid, then corrected on the truth with the search's Jacobian.
   std::optional<Refusal> Position(const CueTarget& target, StrokeShape* shape, Aimed* aimed,
-                                  const Drop& drop) {
+                                  const Drop& drop, std::optional<Aimed>* truth_aim) {
     const double max_tip = params_.cue.max_tip_offset * r_;
     const double side = shape->tip_side;
     const double tip_room = std::sqrt(std::max(0.0, max_tip * max_tip - side * side)) * 0.999;
@@ -762,6 +772,7 @@ class PotSearch {
     std::optional<Aimed> again = AimAt(*shape, here.aimed.heading, drop.Middle(), false, here.aimed.slope);
     if (!again) return Refusal{PotStatus::kTargetUnreachable, "the stroke for the target loses ball " + std::to_string(object_id_)};
     *aimed = *again;
+    *truth_aim = truth->aimed;
     return std::nullopt;
   }
 
@@ -793,18 +804,21 @@ class PotSearch {
   }
 
   // Margin, speed window and the check against the truth.
+  // `placed`: position play's truth aim, kept as it is (the rest point it was solved for moves
+  // with the smallest turn once the cue ball has met a cushion or two).
   std::variant<PotPlan, Refusal> Finish(const Route& route, const StrokeShape& shape,
-                                        const Aimed& aimed, const Drop& drop) {
+                                        const Aimed& aimed, const Drop& drop,
+                                        const std::optional<Aimed>& placed) {
     PotPlan plan;
     plan.kind = route.kind;
     plan.rail = route.rail;
     // The truth's own aim: the motion it runs (5-DOF while the cue ball slides) meets K a little
     // differently.
-    std::optional<Aimed> truth = AimAt(shape, aimed.heading, drop.Middle(), true, aimed.slope);
+    std::optional<Aimed> truth = placed ? placed : AimAt(shape, aimed.heading, drop.Middle(), true, aimed.slope);
     if (!truth) return Refusal{PotStatus::kNoStroke, "under the full model the cue ball misses ball " + std::to_string(object_id_)};
     // A bank's window moves with K's state at the rail, which the truth's slide changes: it is
     // found again on the truth, from the search's, and the margin measured there.
-    const bool on_truth = route.kind == ShotKind::kBank;
+    const bool on_truth = route.kind == ShotKind::kBank && !placed;
     Drop window = drop;
     if (on_truth) {
       std::optional<Drop> w = DropWindow(truth->contact, drop.Middle(), kDirectScan, 0.0, kWindowResolution, drop, true);
@@ -1003,6 +1017,15 @@ std::vector<Candidate> Routes(ShotKind kind, const table::TableGeometry& table,
       }
       break;
   }
+  // Shortest first: the ball travels least, its errors grow least.
+  const auto length = [&](const Candidate& c) {
+    const Eigen::Vector2d ghost_of = GhostBall(k, (c.route.object_aim - k).normalized(), r);
+    return (c.route.cue_aim - cue).norm() + (ghost_of - c.route.cue_aim).norm() +
+           (c.route.object_aim - k).norm() + (pocket.centre - c.route.object_aim).norm();
+  };
+  std::stable_sort(out.begin(), out.end(), [&](const Candidate& a, const Candidate& b) {
+    return length(a) < length(b);
+  });
   return out;
 }
 
@@ -1112,6 +1135,8 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
     if (kind == ShotKind::kCurve && !request.kind && (direct_blocked.empty() || best)) continue;
     std::vector<std::pair<PotPlan, Route>> planned;
     for (const Candidate& c : Routes(kind, table, params, search.balls(), request.ball, pocket)) {
+      // Of a bank, a kick or a curve, the shortest route that plans (each costs a search).
+      if (kind != ShotKind::kDirect && !planned.empty() && !request.cue_target) break;
       const std::variant<PotPlan, Refusal> result =
           c.blocked.empty() ? attempt(c.route, false) : Refusal{PotStatus::kBlocked, c.blocked};
       if (const auto* p = std::get_if<PotPlan>(&result)) {

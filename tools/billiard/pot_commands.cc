@@ -1,5 +1,6 @@
 #include "tools/billiard/pot_commands.h"
 
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -21,6 +22,7 @@ struct PlanPotArgs {
   std::string kind = "any";
   std::string cue_to;
   double cue_radius = 0.0;
+  std::string scene_out;
   bool json = false;
 };
 
@@ -72,6 +74,21 @@ void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
     throw UsageError(args.scene_path + ": " + e.what());
   }
   const pot::PotPlan plan = pot::PlanPot(geometry, params, balls, request);
+  if (!args.scene_out.empty() && plan.status == pot::PotStatus::kOk) {
+    // The scene with the cue ball launched as planned: `simulate --scene` and `plot --scene`
+    // play the plan from it.
+    params::SceneFile played = scene;
+    played.cues.clear();
+    played.balls = balls;
+    for (table::SceneBall& b : played.balls) {
+      if (b.id == 0) {
+        b.state.segment<2>(physics::kVx) = plan.v0;
+        b.state.segment<3>(physics::kWx) = plan.w0;
+      }
+    }
+    std::ofstream out(args.scene_out);
+    if (!(out << params::SceneJson(played) << "\n")) throw UsageError("--scene-out: cannot write '" + args.scene_out + "'");
+  }
   if (args.json) {
     nlohmann::json j = PotPlanJson(plan);
     j["table"] = geometry.name;
@@ -137,6 +154,8 @@ void AddPlanPotCommand(CLI::App& app) {
   cmd->add_option("--cue-to", args->cue_to, "Where the cue ball should stop, X,Y [m]");
   CLI::Option* radius = cmd->add_option("--cue-radius", args->cue_radius,
                                         "Within this distance of --cue-to [m] (default: the point)");
+  cmd->add_option("--scene-out", args->scene_out,
+                  "Write the scene with the cue ball launched as planned (for simulate --scene, plot --scene)");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args, radius] { RunPlanPot(*args, radius->count() > 0); });
 }
