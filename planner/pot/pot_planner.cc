@@ -43,16 +43,17 @@ constexpr double kContactScan = 4.0 * kDegree;
 constexpr double kDirectScan = 3.0 * kDegree;
 constexpr double kRailScan = 8.0 * kDegree;
 constexpr double kWindowStep = 0.2 * kDegree;
-constexpr double kWindowResolution = 3e-4;
+constexpr double kWindowResolution = 1e-3;
 constexpr double kCoarseWindowResolution = 1e-3;
 constexpr double kWidestWindow = 20.0 * kDegree;
-// The heading margin's edges are found to this fraction of the margin, first within
-// kHeadingBracket of the edge predicted; the speed window's more coarsely (it is what the robot's
-// speed may be off by, not what it aims with).
-constexpr double kHeadingResolution = 0.02;
+// The heading margin's edges are bracketed within kHeadingBracket of the edge predicted and the
+// bracket's inside taken (so that 0.9 of the margin pots and 1.1 misses: 1.1 x 0.96 > 1.04);
+// where the prediction is off, bisection to kHeadingResolution. The speed window more coarsely
+// (it is what the robot's speed may be off by, not what it aims with).
 constexpr double kHeadingBracket = 0.04;
-constexpr double kSpeedResolution = 0.05;
+constexpr double kHeadingResolution = 0.02;
 constexpr double kSpeedBracket = 0.1;
+constexpr double kSpeedResolution = 0.1;
 // Planning scenes that need more events are refused; a pot takes tens.
 constexpr std::int64_t kMaxPlanEvents = 20000;
 // The longest a cue ball's path is followed to find where it passes its ghost ball [s].
@@ -554,6 +555,10 @@ class PotSearch {
                                  bool truth = false) {
     const double scale = ReachScale(c, min_speed);
     const auto drops = [&](double direction) { return Drops(c, direction, scale, truth); };
+    // The half-width of the window a straight path would have: the capture line's half-length
+    // less a ball's radius, seen from where K leaves.
+    const double capture = 0.5 * (pocket_.capture_b - pocket_.capture_a).norm();
+    const double guess = std::max(kWindowStep, (capture - r_) / (pocket_.centre - c.object_at).norm());
     std::optional<double> inside;
     for (double d = 0.0; d <= scan && !inside; d += kWindowStep) {
       for (double sign : {1.0, -1.0}) {
@@ -575,11 +580,13 @@ class PotSearch {
         out = drops(b) ? in : b;
       }
       if (out == in) {
-        double step = kWindowStep;
+        // Out from the inside, first by the half-width the pocket's opening would give seen
+        // from K, then growing.
+        double step = 0.8 * guess;
         out = in + sign * step;
         while (drops(out)) {
           in = out;
-          step *= 1.5;
+          step = std::max(0.5 * guess, 0.5 * std::abs(out - *inside));
           out = in + sign * step;
           if (std::abs(out - *inside) > kWidestWindow) return in;
         }
@@ -777,24 +784,24 @@ class PotSearch {
   }
 
   // The largest change of x from x0 for which `pots` still holds, toward `guess` (a predicted
-  // edge) and at most to `limit`, found by bisection to `resolution` of itself: first on the
-  // guess's own bracket (`bracket` of it either side), else from x0 out.
+  // edge) and at most to `limit`: the inside of the guess's own bracket (`bracket` of it either
+  // side) where the edge lies in it, else found by bisection to `resolution` of itself.
   double Edge(const std::function<bool(double)>& pots, double x0, double guess, double limit,
               double bracket, double resolution) {
     const auto at = [&](double fraction) {
       const double x = x0 + fraction * (guess - x0);
       return std::abs(x - x0) > std::abs(limit - x0) ? limit : x;
     };
-    double in = x0, out = at(1.0 + bracket);
-    if (pots(at(1.0 - bracket))) {
-      in = at(1.0 - bracket);
+    double in = x0, out = at(1.0 - bracket);
+    if (pots(out)) {
+      in = out;
+      out = at(1.0 + bracket);
+      if (!pots(out)) return in;  // within the bracket: its inside
       while (pots(out)) {  // beyond the guess: further out until it misses (or the limit)
         in = out;
         if (out == limit) return limit;
         out = at((out - x0) / (guess - x0) * 2.0);
       }
-    } else {
-      out = at(1.0 - bracket);
     }
     while (std::abs(out - in) > resolution * std::abs(in - x0) && std::abs(out - in) > 1e-9) {
       const double mid = 0.5 * (in + out);
