@@ -129,7 +129,8 @@ struct Contact {
 struct Played {
   PotOutcome outcome;
   std::unique_ptr<TableSimulation> sim;
-  std::optional<double> arrival_speed;  // K's speed as it crossed P's capture line
+  // K's speed as it crossed a capture line or, stopped early, met the rail that turned it away.
+  std::optional<double> arrival_speed;
 };
 
 struct Drop {
@@ -256,10 +257,16 @@ class PotSearch {
       if (o.first_contact < 0 && e.type == EventType::kBallBall && (e.ball == 0 || e.other == 0)) {
         o.first_contact = e.ball == 0 ? e.other : e.ball;
       }
-      if (e.type == EventType::kBallPocket && e.ball == object_id_ && e.pocket == pocket_.name) {
-        played.arrival_speed =
-            StateBefore(*played.sim, object, e.time).segment<2>(physics::kVx).norm();
+      if (e.type == EventType::kBallPocket && e.ball == object_id_) {
+        played.arrival_speed = StateBefore(*played.sim, object, e.time).segment<2>(physics::kVx).norm();
       }
+    }
+    if (!to_rest && !played.arrival_speed && !played.sim->events().empty() &&
+        played.sim->events().back().ball == object_id_ &&
+        played.sim->events().back().type == EventType::kBallCushion) {
+      // Stopped where a rail turned K away: its speed there, as near the pocket as it got.
+      played.arrival_speed =
+          StateBefore(*played.sim, object, played.sim->events().back().time).segment<2>(physics::kVx).norm();
     }
     o.potted = played.sim->pocket(object) && *played.sim->pocket(object) == pocket_.name;
     o.cue_pocket = played.sim->pocket(cue);
@@ -605,7 +612,8 @@ class PotSearch {
 
   // The plain pot's pace: the cue speed at which K crosses the capture line at the arrival
   // speed (its square nearly linear in the cue speed's square: friction takes energy by the
-  // metre), re-aimed at each speed.
+  // metre), re-aimed at each speed (the throw changes with it, a kick's rebound and a curve's
+  // bend too).
   std::optional<Refusal> Pace(const Route& route, const Eigen::Vector2d& ghost, StrokeShape* shape,
                               Aimed* aimed, double direction) {
     const double top = params_.cue.max_speed;
@@ -621,7 +629,7 @@ class PotSearch {
         next = std::min(top, shape->speed * 1.6);
         if (shape->speed >= top) {
           return Refusal{PotStatus::kNoStroke, "ball " + std::to_string(object_id_) +
-                                                   " does not drop in " + pocket_.name +
+                                                   " does not reach " + pocket_.name +
                                                    " at the cue's top speed"};
         }
       } else if (!have_prev || !played.arrival_speed) {
@@ -642,17 +650,24 @@ class PotSearch {
       }
       if (next == shape->speed) break;
       shape->speed = next;
-      // A curve's bend changes with the pace: its path is found again first.
-      const double from = route.kind == ShotKind::kCurve ? FirstHeading(route, *shape, ghost) : aimed->heading;
-      std::optional<Aimed> again = AimAt(*shape, from, direction, false, aimed->slope);
-      if (!again) {
+      if (!Reaim(route, ghost, *shape, direction, aimed)) {
         return Refusal{PotStatus::kBlocked, "at " + std::to_string(next) +
                                                 " m/s the cue ball no longer reaches ball " +
                                                 std::to_string(object_id_) + " first"};
       }
-      *aimed = *again;
     }
     return std::nullopt;
+  }
+
+  // The aim for `shape` from the last one (a curve's path found again first, its bend changes
+  // with the shape).
+  bool Reaim(const Route& route, const Eigen::Vector2d& ghost, const StrokeShape& shape,
+             double direction, Aimed* aimed) {
+    const double from = route.kind == ShotKind::kCurve ? FirstHeading(route, shape, ghost) : aimed->heading;
+    std::optional<Aimed> again = AimAt(shape, from, direction, false, aimed->slope);
+    if (!again) return false;
+    *aimed = *again;
+    return true;
   }
 
   // Where the truth or the search leaves the cue ball for a shape: the pot aimed at `middle`.
