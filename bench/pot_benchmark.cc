@@ -115,8 +115,6 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
   }
   PotBenchmarkResult result;
   result.options = options;
-  pot::PotOptions measuring;
-  measuring.measure_throw = true;
   int margins = 0;
   for (int i = 0; i < options.layouts; ++i) {
     const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(i);
@@ -130,7 +128,7 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
     run.straight_clear = pot::testing::StraightLineClear(t.geometry, t.p.ball.radius, layout.balls,
                                                          layout.request.ball, layout.request.pocket, 80.0);
     const double cpu_start = ThreadCpuUs();
-    run.plan = pot::PlanPot(t.geometry, t.p, layout.balls, layout.request, measuring);
+    run.plan = pot::PlanPot(t.geometry, t.p, layout.balls, layout.request);
     run.cpu_us = ThreadCpuUs() - cpu_start;
     if (run.plan.status == pot::PotStatus::kOk) {
       const Check c = Simulate(t, layout.balls, PlannedLaunch(layout.balls, run.plan), run.plan.ball, run.plan.pocket);
@@ -138,9 +136,9 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
       if (!c.legal) {
         run.verify_failure = !c.potted ? "ball does not drop" : c.cue_pocket ? "scratch" : "foul first contact";
       }
-      if (run.plan.ghost_heading) {
+      if (const std::optional<double> heading = pot::GhostBallHeading(t.geometry, t.p, layout.balls, run.plan)) {
         physics::CueStroke ghost = run.plan.stroke;
-        ghost.heading = *run.plan.ghost_heading;
+        ghost.heading = *heading;
         run.ghost_pots = Simulate(t, layout.balls, LaunchOf(t, layout.balls, ghost), run.plan.ball, run.plan.pocket).legal;
       }
       if (margins < options.margin_checks) {

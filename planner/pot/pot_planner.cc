@@ -240,6 +240,14 @@ class PotSearch {
     return Finish(route, shape, *aimed, *drop, placed_aim);
   }
 
+  // The heading through the ghost ball alone for `plan` (GhostBallHeading).
+  std::optional<double> GhostHeading(const PotPlan& plan) {
+    const StrokeShape shape{plan.stroke.speed, plan.stroke.tip_side, plan.stroke.tip_height, plan.stroke.elevation};
+    const std::optional<Aimed> ghost = AimAt(shape, plan.stroke.heading, plan.departure, true, 0.0, false);
+    if (!ghost) return std::nullopt;
+    return ghost->heading;
+  }
+
   // Plays a stroke to rest, or with `to_rest` false until K drops (what the pace and the margin
   // ask: the cue ball's later travel, its cushions above all, is most of a shot's cost): K's fate
   // and the cue ball's.
@@ -892,10 +900,7 @@ class PotSearch {
     plan.cut_deg = CutAngle(Unit(Angle(truth->contact.cue_before.segment<2>(physics::kVx))),
                             Unit(truth->contact.departure)) / kDegree;
     plan.cue_rest = played.outcome.cue_rest;
-    if (options_.measure_throw) {
-      std::optional<Aimed> ghost = AimAt(shape, truth->heading, window.Middle(), true, truth->slope, false);
-      if (ghost) plan.ghost_heading = ghost->heading;
-    }
+    plan.departure = window.Middle();
     Describe(*played.sim, &plan);
     plan.status = PotStatus::kOk;
     return plan;
@@ -1215,13 +1220,29 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
   return finish(*best, search.simulations());
 }
 
+namespace {
+
+const table::Pocket& PocketOf(const table::TableGeometry& table, const std::string& name) {
+  const auto p = std::find_if(table.pockets.begin(), table.pockets.end(),
+                              [&](const table::Pocket& x) { return x.name == name; });
+  if (p == table.pockets.end()) throw std::invalid_argument("no pocket '" + name + "'");
+  return *p;
+}
+
+}  // namespace
+
+std::optional<double> GhostBallHeading(const table::TableGeometry& table,
+                                       const physics::ModelParameters& params,
+                                       const std::vector<SceneBall>& balls, const PotPlan& plan,
+                                       const PotOptions& options) {
+  PotSearch search(table, params, balls, plan.ball, PocketOf(table, plan.pocket), options);
+  return search.GhostHeading(plan);
+}
+
 PotOutcome PlayStroke(const table::TableGeometry& table, const physics::ModelParameters& params,
                       const std::vector<SceneBall>& balls, int ball, const std::string& pocket,
                       const CueStroke& stroke, const PotOptions& options) {
-  const auto p = std::find_if(table.pockets.begin(), table.pockets.end(),
-                              [&](const table::Pocket& x) { return x.name == pocket; });
-  if (p == table.pockets.end()) throw std::invalid_argument("no pocket '" + pocket + "'");
-  PotSearch search(table, params, balls, ball, *p, options);
+  PotSearch search(table, params, balls, ball, PocketOf(table, pocket), options);
   return search.Play(stroke, true).outcome;
 }
 

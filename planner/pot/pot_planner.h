@@ -94,9 +94,6 @@ struct PotOptions {
   double position_tolerance = 5e-3;
   // The predicted paths are sampled at this interval [s] (and at every event).
   double path_sample_dt = 0.02;
-  // Also find the heading that aims through the ghost ball alone (the line of centres along the
-  // window's middle, the throw not corrected), for the benchmark's measure of throw.
-  bool measure_throw = false;
 };
 
 struct BallPath {
@@ -128,8 +125,7 @@ struct PotPlan {
   std::vector<BallPath> paths;                          // of every ball that moves
   double solve_us = 0.0;
   int simulations = 0;  // table simulations run for the plan, closed form and truth
-  // With PotOptions::measure_throw: the cue heading through the ghost ball alone [rad].
-  std::optional<double> ghost_heading;
+  double departure = 0.0;  // the direction K leaves in: its drop window's middle [rad]
 };
 
 // Plans the pot of `request` on `table` from `balls` (id 0 the cue ball, at rest or moving: the
@@ -138,6 +134,14 @@ struct PotPlan {
 PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameters& params,
                 const std::vector<table::SceneBall>& balls, const PotRequest& request,
                 const PotOptions& options = {});
+
+// The heading [rad] that aims `plan`'s stroke (its speed, offsets, elevation) through the ghost ball
+// alone: the line of centres along plan.departure, the throw not corrected. What aiming without
+// the ball-ball model would do; std::nullopt where no heading near the plan's meets K.
+std::optional<double> GhostBallHeading(const table::TableGeometry& table,
+                                       const physics::ModelParameters& params,
+                                       const std::vector<table::SceneBall>& balls,
+                                       const PotPlan& plan, const PotOptions& options = {});
 
 // The same plan's stroke turned by `heading_offset` [rad] and played at `speed` [m/s] (the cue
 // speed; the plan's own when not given), simulated with the truth: whether K drops in P legally

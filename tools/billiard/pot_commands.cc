@@ -124,6 +124,7 @@ nlohmann::json PotPlanJson(const pot::PotPlan& plan) {
               {"tip_height", plan.stroke.tip_height},
               {"elevation", plan.stroke.elevation}};
   j["cut_deg"] = plan.cut_deg;
+  j["departure"] = plan.departure;
   j["margin_deg"] = {plan.margin_left_deg, plan.margin_right_deg};
   j["speed_window"] = {plan.speed_lo, plan.speed_hi};
   j["cue_rest"] = Point(plan.cue_rest);
