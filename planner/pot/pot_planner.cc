@@ -36,7 +36,7 @@ constexpr int kMaxAimIterations = 12;
 constexpr double kAimProbe = 1e-4;
 // Where the first guess misses K, headings this far apart are tried out to kContactScan [rad].
 constexpr double kContactStep = 0.1 * kDegree;
-constexpr double kContactScan = 4.0 * kDegree;
+constexpr double kContactScan = 1.5 * kDegree;
 // The drop window: searched this far either side of the route's line (a bank's rebound is off
 // the mirror line by a few degrees), in steps of kWindowStep, its edges found to
 // kWindowResolution [rad].
@@ -58,6 +58,10 @@ constexpr double kSpeedResolution = 0.1;
 constexpr std::int64_t kMaxPlanEvents = 20000;
 // The longest a cue ball's path is followed to find where it passes its ghost ball [s].
 constexpr double kLongestTime = 10.0;
+// Where no rail is on a route, the search meets the jaws with Han 2005's single impulse, 20 times
+// cheaper than Mathavan et al. 2010's integrated impact: the truth, which finds the margin, has
+// the set's own.
+constexpr table::CushionModel kSearchCushion = table::CushionModel::kHan2005;
 // A pot's search simulates the balls within this distance of its routes' lines, beyond contact
 // [m]: the drop window is a few degrees wide, 5 cm at a metre.
 constexpr double kNearRoute = 0.15;
@@ -186,6 +190,9 @@ class PotSearch {
   // The pot along `route`: the plan, or why not.
   // With `place_cue` the speed and follow/draw are chosen for the cue-ball target.
   std::variant<PotPlan, Refusal> Plan(const Route& route, bool place_cue = false) {
+    // A bank's and a kick's route is the rail's rebound: the search meets it as the truth does.
+    // So is position play's: where the cue ball stops turns on every rail it meets.
+    rails_matter_ = route.kind == ShotKind::kBank || route.kind == ShotKind::kKick || (place_cue && target_);
     // A curve bends away from its lines: its search has every ball.
     near_ = route.kind == ShotKind::kCurve ? std::vector<SceneBall>{} : NearRoute(route);
     const Eigen::Vector2d object = balls_[object_].state.head<2>();
@@ -253,7 +260,7 @@ class PotSearch {
   // and the cue ball's.
   Played Play(const CueStroke& stroke, bool truth, bool to_rest = true) {
     Played played;
-    played.sim = Launch(stroke, truth);
+    played.sim = Launch(stroke, truth, to_rest);
     const std::size_t object = IndexOf(*played.sim, object_id_), cue = IndexOf(*played.sim, 0);
     if (to_rest) {
       played.sim->Run();
@@ -326,10 +333,10 @@ class PotSearch {
     return near;
   }
 
-  // The scene with the cue ball struck: the whole scene in its own order for the truth (so that
-  // its ties break as `simulate --scene`'s do), the balls near the routes for the search.
-  std::unique_ptr<TableSimulation> Launch(const CueStroke& stroke, bool truth) {
-    std::vector<SceneBall> balls = truth || near_.empty() ? balls_ : near_;
+  // The scene with the cue ball struck: the balls near the routes, or the whole scene in its own
+  // order (so that its ties break as `simulate --scene`'s do) for a shot played to rest.
+  std::unique_ptr<TableSimulation> Launch(const CueStroke& stroke, bool truth, bool whole = false) {
+    std::vector<SceneBall> balls = whole || near_.empty() ? balls_ : near_;
     for (SceneBall& b : balls) {
       if (b.id == 0) b.state = physics::StrikeBall(stroke, cue_position_, params_);
     }
@@ -338,7 +345,7 @@ class PotSearch {
 
   std::unique_ptr<TableSimulation> Simulation(const std::vector<SceneBall>& balls, bool truth) {
     table::TableSimulationOptions o;
-    o.cushion_model = options_.cushion_model;
+    o.cushion_model = truth || rails_matter_ ? options_.cushion_model : kSearchCushion;
     if (truth) o.five_dof = truth_motion_;
     o.max_events = kMaxPlanEvents;
     ++simulations_;
@@ -820,11 +827,14 @@ class PotSearch {
       in = out;
       out = at(1.0 + bracket);
       if (!pots(out)) return in;  // within the bracket: its inside
-      while (pots(out)) {  // beyond the guess: further out until it misses (or the limit)
+      double fraction = 1.0 + 4.0 * bracket;
+      for (out = at(fraction); pots(out); out = at(fraction)) {  // further out until it misses
         in = out;
         if (out == limit) return limit;
-        out = at((out - x0) / (guess - x0) * 2.0);
+        fraction *= 2.0;
       }
+    } else if (pots(at(1.0 - 4.0 * bracket))) {  // short of the guess: a wider bracket first
+      in = at(1.0 - 4.0 * bracket);
     }
     while (std::abs(out - in) > resolution * std::abs(in - x0) && std::abs(out - in) > 1e-9) {
       const double mid = 0.5 * (in + out);
@@ -957,6 +967,7 @@ class PotSearch {
   // The pace's last fit: d (arrival speed^2) / d (cue speed^2), and the arrival speed at the pace.
   double pace_slope_ = 0.0, arrival_ = 0.0;
   std::vector<SceneBall> near_;  // the search's scene of a direct route; empty: the whole
+  bool rails_matter_ = false;    // the search's cushions are the truth's (else kSearchCushion)
 };
 
 
