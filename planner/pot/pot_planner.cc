@@ -51,6 +51,10 @@ constexpr double kWidestWindow = 20.0 * kDegree;
 // where the prediction is off, bisection to kHeadingResolution. The speed window more coarsely
 // (it is what the robot's speed may be off by, not what it aims with).
 constexpr double kHeadingBracket = 0.04;
+// A margin's bisection halves its bracket at most this often (an edge at the aim itself).
+constexpr int kEdgeHalvings = 12;
+// An edge's first guess is at least this fraction of the way to its limit.
+constexpr double kSmallestEdge = 1e-4;
 constexpr double kHeadingResolution = 0.02;
 constexpr double kSpeedBracket = 0.1;
 constexpr double kSpeedResolution = 0.1;
@@ -506,6 +510,7 @@ class PotSearch {
       if (probe.ball != object_id_) return std::nullopt;
       slope = Wrap(residual(probe) - f) / kAimProbe;
     }
+    if (!std::isfinite(f) || !std::isfinite(slope)) return std::nullopt;
     // The impact model's step first: the normal that throws K onto the target, reached by
     // moving the contact along the cue ball's approach (the normal turns with the heading as
     // the departure does, less the throw's change).
@@ -525,7 +530,7 @@ class PotSearch {
       }
     }
     for (int i = 0; i < kMaxAimIterations && std::abs(f) > kAimTolerance; ++i) {
-      if (!(std::abs(slope) > 1e-9)) return std::nullopt;
+      if (!(std::abs(slope) > 1e-9) || !std::isfinite(slope)) return std::nullopt;
       double step = -f / slope;
       Contact next;
       double g = 0.0;
@@ -543,7 +548,7 @@ class PotSearch {
       c = next;
       f = g;
     }
-    if (std::abs(f) > 100.0 * kAimTolerance) return std::nullopt;
+    if (!(std::abs(f) <= 100.0 * kAimTolerance) || !std::isfinite(heading)) return std::nullopt;
     return Aimed{heading, c, slope};
   }
 
@@ -818,6 +823,10 @@ class PotSearch {
   // side) where the edge lies in it, else found by bisection to `resolution` of itself.
   double Edge(const std::function<bool(double)>& pots, double x0, double guess, double limit,
               double bracket, double resolution) {
+    // A guess at x0 itself (a window of no width) brackets nothing: a small step toward the limit.
+    if (!(std::abs(guess - x0) >= kSmallestEdge * std::abs(limit - x0))) {
+      guess = x0 + kSmallestEdge * (limit - x0);
+    }
     const auto at = [&](double fraction) {
       const double x = x0 + fraction * (guess - x0);
       return std::abs(x - x0) > std::abs(limit - x0) ? limit : x;
@@ -831,12 +840,14 @@ class PotSearch {
       for (out = at(fraction); pots(out); out = at(fraction)) {  // further out until it misses
         in = out;
         if (out == limit) return limit;
-        fraction *= 2.0;
+        fraction *= 2.0;  // at() stops at the limit
       }
     } else if (pots(at(1.0 - 4.0 * bracket))) {  // short of the guess: a wider bracket first
       in = at(1.0 - 4.0 * bracket);
     }
-    while (std::abs(out - in) > resolution * std::abs(in - x0) && std::abs(out - in) > 1e-9) {
+    // To `resolution` of the edge, or to 2^-kEdgeHalvings of the bracket where the edge is at x0.
+    const double floor = std::ldexp(std::abs(out - in), -kEdgeHalvings);
+    while (std::abs(out - in) > std::max(resolution * std::abs(in - x0), floor)) {
       const double mid = 0.5 * (in + out);
       (pots(mid) ? in : out) = mid;
     }
@@ -878,7 +889,7 @@ class PotSearch {
       return Play(shape.At(heading), true, false).outcome.legal;
     };
     const Aimed& centre = *truth;
-    const double slope = std::abs(centre.slope) > 1e-9 ? centre.slope : 1.0;
+    const double slope = std::isfinite(centre.slope) && std::abs(centre.slope) > 1e-9 ? centre.slope : 1.0;
     const double up = (slope > 0.0 ? window.hi - window.Middle() : window.Middle() - window.lo) / std::abs(slope);
     const double down = (slope > 0.0 ? window.Middle() - window.lo : window.hi - window.Middle()) / std::abs(slope);
     const double left = Edge(pots_heading, centre.heading, centre.heading + up, centre.heading + 0.5 * M_PI,
