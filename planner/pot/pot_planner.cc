@@ -221,9 +221,13 @@ class PotSearch {
     // the window of a ball that gets there. Then the window at that pace, and the aim at its
     // middle.
     std::optional<Drop> drop;
-    if (!Drops(aimed->contact, Angle(departure), ReachScale(aimed->contact))) {
+    double line = Angle(departure);
+    // A bank's rebound is the cushion model's, not a mirror's: K's line is found on its own path
+    // off the rail, the secant method on the side of the pocket it passes.
+    if (route.kind == ShotKind::kBank) line = BankLine(aimed->contact, line);
+    if (!Drops(aimed->contact, line, ReachScale(aimed->contact))) {
       const double scan = route.kind == ShotKind::kBank ? kRailScan : kDirectScan;
-      drop = DropWindow(aimed->contact, Angle(departure), scan, kReachSpeed, kCoarseWindowResolution);
+      drop = DropWindow(aimed->contact, line, scan, kReachSpeed, kCoarseWindowResolution);
       if (!drop) {
         return Refusal{PotStatus::kBlocked, "ball " + std::to_string(object_id_) +
                                                 " does not drop in " + pocket_.name +
@@ -232,9 +236,9 @@ class PotSearch {
       aimed = AimAt(shape, aimed->heading, drop->Middle(), false, aimed->slope);
       if (!aimed) return Refusal{PotStatus::kBlocked, BlockedReason(shape, first_heading)};
     }
-    std::optional<Refusal> paced = Pace(route, ghost, &shape, &*aimed, drop ? drop->Middle() : Angle(departure));
+    std::optional<Refusal> paced = Pace(route, ghost, &shape, &*aimed, drop ? drop->Middle() : line);
     if (paced) return *paced;
-    drop = DropWindow(aimed->contact, drop ? drop->Middle() : Angle(departure),
+    drop = DropWindow(aimed->contact, drop ? drop->Middle() : line,
                       route.kind == ShotKind::kBank ? kRailScan : kDirectScan, 0.0,
                       kWindowResolution, drop);
     if (!drop) {
@@ -421,7 +425,12 @@ class PotSearch {
   // The signed distance [m] by which the cue ball's path alone on the table passes `point`
   // (left of its travel > 0), at its closest approach.
   double PassingSide(const CueStroke& stroke, const Eigen::Vector2d& point, bool after_rail) {
-    std::vector<SceneBall> alone = {{0, physics::StrikeBall(stroke, cue_position_, params_)}};
+    return PassingSide(physics::StrikeBall(stroke, cue_position_, params_), point, after_rail);
+  }
+
+  // The same for a ball that starts in `state`, alone on the table.
+  double PassingSide(const BallState& state, const Eigen::Vector2d& point, bool after_rail) {
+    std::vector<SceneBall> alone = {{0, state}};
     std::unique_ptr<TableSimulation> sim = Simulation(alone, false);
     // Run a stretch at a time until the path has passed the point (it draws away again) or
     // the ball rests: a kick's cue ball would go on from cushion to cushion.
@@ -456,6 +465,27 @@ class PotSearch {
       if (d > best + kPassed) break;
     }
     return railed ? side : std::numeric_limits<double>::infinity();
+  }
+
+  // The direction near `mirror` in which K, leaving the contact at the reach speed alone on the
+  // table, passes the pocket's mouth after its rail (or `mirror` where that is not found).
+  double BankLine(const Contact& c, double mirror) {
+    const double scale = ReachScale(c);
+    const auto side = [&](double direction) {
+      BallState k = Rotated(c.object_after, Wrap(direction - c.departure));
+      k.tail<5>() *= scale;
+      return PassingSide(k, pocket_.centre, true);
+    };
+    double h0 = mirror, f0 = side(h0), h1 = h0 + kAimProbe, f1 = side(h1);
+    for (int i = 0; i < kMaxAimIterations && std::isfinite(f0) && std::isfinite(f1) &&
+                    std::abs(f1) > 1e-4 && f1 != f0; ++i) {
+      const double h2 = h1 - f1 * (h1 - h0) / (f1 - f0);
+      h0 = h1;
+      f0 = f1;
+      h1 = h2;
+      f1 = side(h1);
+    }
+    return std::isfinite(f1) && std::abs(Wrap(h1 - mirror)) < kRailScan ? h1 : mirror;
   }
 
   // The contact normal [rad] that sends K along `target` when the cue ball arrives as in `c`:
