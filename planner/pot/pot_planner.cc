@@ -84,6 +84,8 @@ constexpr double kGridTips[] = {-0.8, -0.4, 0.0, 0.4, 0.8};
 constexpr int kMaxPositionIterations = 10;
 // The Levenberg-Marquardt damping of position play's steps, relative to the normal matrix's trace.
 constexpr double kPositionDamping = 1e-6;
+// Position play's side spins, as fractions of the largest tip offset: none first.
+constexpr double kPositionSides[] = {0.0, 0.5, -0.5};
 // Newton's method starts from this many of the grid's nearest rest points, in turn.
 constexpr std::size_t kPositionStarts = 3;
 // Position play is tried on this many of a kind's pots, the widest first.
@@ -740,6 +742,34 @@ class PotSearch {
   // coarse grid, then corrected on the truth with the search's Jacobian.
   std::optional<Refusal> Position(const CueTarget& target, StrokeShape* shape, Aimed* aimed,
                                   const Drop& drop, std::optional<Aimed>* truth_aim) {
+    // Without side spin first; then with it either way (it turns the cue ball off the rails and
+    // throws K, so it reaches rest points that speed and follow or draw alone do not).
+    std::optional<Refusal> first;
+    for (double side : kPositionSides) {
+      StrokeShape s = *shape;
+      s.tip_side = side * params_.cue.max_tip_offset * r_;
+      Aimed a = *aimed;
+      if (side != 0.0) {
+        std::optional<Aimed> again = AimAt(s, aimed->heading - physics::SquirtAngle(s.tip_side, params_),
+                                           drop.Middle(), false, aimed->slope);
+        if (!again) continue;
+        a = *again;
+      }
+      std::optional<Refusal> refused = PositionWithSide(target, &s, &a, drop, truth_aim);
+      if (!refused) {
+        *shape = s;
+        *aimed = a;
+        return std::nullopt;
+      }
+      if (!first) first = refused;
+    }
+    first->reason += " (with side spin too)";
+    return first;
+  }
+
+  // Position play at the shape's side spin: speed and tip height.
+  std::optional<Refusal> PositionWithSide(const CueTarget& target, StrokeShape* shape, Aimed* aimed,
+                                          const Drop& drop, std::optional<Aimed>* truth_aim) {
     const double max_tip = params_.cue.max_tip_offset * r_;
     const double side = shape->tip_side;
     const double tip_room = std::sqrt(std::max(0.0, max_tip * max_tip - side * side)) * 0.999;
