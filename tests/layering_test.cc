@@ -60,7 +60,7 @@ const std::map<std::string, std::set<std::string>>& Layers() {
         "lcmtypes/node", "planner", "planner/pot", "planner/node", "estimator", "estimator/node", "bench",
         "tools/plot"}},
       {"tools/viewer_node", {"lcmtypes", "lcmtypes/node", "sim/params", "sim/physics"}},
-      {"tools/python", {"sim/physics", "sim/table", "sim/params", "planner", "estimator"}},
+      {"tools/python", {"sim/physics", "sim/table", "sim/params", "planner", "planner/pot", "estimator"}},
       {"tests", {}},  // the cross-module tests may include anything
   };
   return layers;

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "estimator/ball_detector.h"
+#include "planner/pot/pot_planner.h"
 #include "planner/shot_planner.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
@@ -115,9 +116,8 @@ Array Strike(double speed, double heading, double tip_side, double tip_height, d
   }
 }
 
-py::dict SimulateScene(const Array& states, std::optional<std::vector<int>> ids,
-                       const std::string& table_name, const std::string& params_name,
-                       std::optional<double> t_end) {
+// The balls of an N x 7 array of states, ids 0..N-1 unless given.
+std::vector<table::SceneBall> SceneBalls(const Array& states, const std::optional<std::vector<int>>& ids) {
   if (states.ndim() != 2 || states.shape(1) != 7) {
     throw py::value_error("states must be an N x 7 array of [X, Y, vx, vy, wx, wy, wz]");
   }
@@ -131,6 +131,14 @@ py::dict SimulateScene(const Array& states, std::optional<std::vector<int>> ids,
     for (int j = 0; j < 7; ++j) b.state[j] = a(i, j);
     balls.push_back(b);
   }
+  return balls;
+}
+
+py::dict SimulateScene(const Array& states, std::optional<std::vector<int>> ids,
+                       const std::string& table_name, const std::string& params_name,
+                       std::optional<double> t_end) {
+  const std::vector<table::SceneBall> balls = SceneBalls(states, ids);
+  const std::size_t n = balls.size();
   const physics::ModelParameters p = Params(params_name);
   std::unique_ptr<table::TableSimulation> sim;
   try {
@@ -171,6 +179,16 @@ py::dict SimulateScene(const Array& states, std::optional<std::vector<int>> ids,
   return out;
 }
 
+py::dict CueJson(const physics::CueStroke& stroke) {
+  py::dict cue;
+  cue["speed"] = stroke.speed;
+  cue["heading"] = stroke.heading;
+  cue["tip_side"] = stroke.tip_side;
+  cue["tip_height"] = stroke.tip_height;
+  cue["elevation"] = stroke.elevation;
+  return cue;
+}
+
 py::dict Plan(const Array& from, const Array& to, double final_speed, const std::string& spin,
               double side_spin, const std::string& params_name) {
   const auto a = Numbers(from, 2, "from [X, Y]"), b = Numbers(to, 2, "to [X, Y]");
@@ -189,19 +207,62 @@ py::dict Plan(const Array& from, const Array& to, double final_speed, const std:
   if (plan.status != planner::PlanStatus::kOk) {
     Refuse(planner::PlanStatusName(plan.status) + ": " + plan.reason);
   }
-  py::dict cue;
-  cue["speed"] = plan.stroke.speed;
-  cue["heading"] = plan.stroke.heading;
-  cue["tip_side"] = plan.stroke.tip_side;
-  cue["tip_height"] = plan.stroke.tip_height;
-  cue["elevation"] = plan.stroke.elevation;
   py::dict out;
   out["v0"] = Array(2, plan.v0.data());
   out["w0"] = Array(3, plan.w0.data());
-  out["cue"] = cue;
+  out["cue"] = CueJson(plan.stroke);
   out["predicted_final"] = Array(2, plan.predicted_final.data());
   out["arrival_time"] = plan.arrival_time;
   out["refined_miss_m"] = plan.refined_miss_m;
+  return out;
+}
+
+py::dict PlanPot(const Array& states, std::optional<std::vector<int>> ids, int ball,
+                 const std::string& pocket, const std::string& kind,
+                 std::optional<Array> cue_to, double cue_radius, const std::string& table_name,
+                 const std::string& params_name) {
+  pot::PotRequest request;
+  request.ball = ball;
+  request.pocket = pocket;
+  bool known = false;
+  request.kind = pot::ParseShotKind(kind, &known);
+  if (!known) throw py::value_error("unknown kind '" + kind + "' (direct, bank, kick, curve, any)");
+  if (cue_to) {
+    const auto t = Numbers(*cue_to, 2, "cue_to [X, Y]");
+    request.cue_target = pot::CueTarget{{t[0], t[1]}, cue_radius};
+  }
+  table::TableGeometry geometry;
+  try {
+    geometry = table::BuildTable(params::LoadTableSpec(table_name));
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(e.what());
+  }
+  const pot::PotPlan plan = pot::PlanPot(geometry, Params(params_name), SceneBalls(states, ids), request);
+  if (plan.status != pot::PotStatus::kOk) {
+    Refuse(std::string(pot::PotStatusName(plan.status)) + ": " + plan.reason);
+  }
+  py::dict out;
+  out["kind"] = pot::ShotKindName(plan.kind);
+  out["why"] = plan.why;
+  out["v0"] = Array(2, plan.v0.data());
+  out["w0"] = Array(3, plan.w0.data());
+  out["cue"] = CueJson(plan.stroke);
+  out["cut_deg"] = plan.cut_deg;
+  out["margin_deg"] = std::vector<double>{plan.margin_left_deg, plan.margin_right_deg};
+  out["speed_window"] = std::vector<double>{plan.speed_lo, plan.speed_hi};
+  out["cue_rest"] = Array(2, plan.cue_rest.data());
+  py::dict paths;
+  for (const pot::BallPath& path : plan.paths) {
+    Array points({path.points.size(), std::size_t{2}});
+    auto m = points.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < path.points.size(); ++i) {
+      m(i, 0) = path.points[i].x();
+      m(i, 1) = path.points[i].y();
+    }
+    paths[py::int_(path.id)] = points;
+  }
+  out["paths"] = paths;
+  out["solve_us"] = plan.solve_us;
   return out;
 }
 
@@ -270,6 +331,12 @@ PYBIND11_MODULE(billiard, m) {
   m.def("plan", &Plan, arg("from_"), arg("to"), arg("final_speed") = 0.0,
         arg("spin") = "natural", arg("side_spin") = 0.0, arg("params") = "pool",
         "The launch and cue stroke that send a ball from `from_` to `to`; raises Refused");
+  m.def("plan_pot", &PlanPot, arg("states"), arg("ids") = py::none(), arg("ball") = 1,
+        arg("pocket") = "upper_right", arg("kind") = "any", arg("cue_to") = py::none(),
+        arg("cue_radius") = 0.0, arg("table") = "pool-9ft", arg("params") = "pool",
+        "The stroke that pots `ball` in `pocket` from a scene (N x 7 states, id 0 the cue ball), "
+        "planned against the whole-table simulation: 'kind', 'why', 'v0', 'w0', 'cue', "
+        "'margin_deg', 'speed_window', 'cue_rest', 'paths'; raises Refused");
   m.def("detect", &Detect, arg("image"), arg("ball_set") = "pool",
         "The balls of a BGR (H x W x 3) or grey frame: 'balls' (N x 4: u, v, radius_px, score) "
         "and 'classes'; raises Refused when the frame shows no table");

@@ -80,6 +80,24 @@ def test_a_plan_arrives_at_its_target_and_a_refusal_is_an_exception():
         billiard.plan(np.array([0.5, np.nan]), np.array([1.0, 0.5]))
 
 
+def test_a_pot_agrees_with_plan_pot_and_a_refusal_is_an_exception():
+    scene = json.loads((SOURCE / "docs" / "pictures" / "pot_scene.json").read_text())
+    states = np.array([b["state"] for b in scene["balls"]])
+    ids = [b["id"] for b in scene["balls"]]
+    plan = billiard.plan_pot(states, ids=ids, ball=1, pocket="upper_right")
+    path = SOURCE / "docs" / "pictures" / "pot_scene.json"
+    j = cli("plan-pot", "--scene", str(path), "--ball", "1", "--pocket", "upper_right")
+    assert plan["kind"] == j["kind"] and plan["why"] == j["why"]
+    assert plan["v0"].tolist() == j["v0"] and plan["w0"].tolist() == j["w0"]
+    assert plan["cue_rest"].tolist() == j["cue_rest"]
+    assert plan["margin_deg"] == j["margin_deg"]
+    assert plan["paths"][1].shape[1] == 2
+    with pytest.raises(billiard.Refused, match="no_such_pocket"):
+        billiard.plan_pot(states, ids=ids, ball=1, pocket="upper_centre")
+    with pytest.raises(ValueError):
+        billiard.plan_pot(states, ids=ids, ball=1, kind="sideways")
+
+
 def read_png_rgb(path):
     """An 8-bit RGB, non-interlaced PNG (the test frame's format) as an H x W x 3 array."""
     data = path.read_bytes()
