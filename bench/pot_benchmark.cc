@@ -306,7 +306,8 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
   }
   out << "\n## Coverage\n\n"
       << "Of the " << s["coverage"]["straight_clear"].get<int>() << " pots whose straight ghost-ball "
-      << "line is clear (no ball within a ball's width of either line, cut below 80 deg), "
+      << "line is clear (no ball within a ball's width of either line, the object ball's line clear of the "
+      << "pocket's jaws, cut below 80 deg), "
       << s["coverage"]["planned"].get<int>() << " planned ok ("
       << Percent(s["coverage"]["planned"].get<int>(), s["coverage"]["straight_clear"].get<int>())
       << "). Where it is not clear, " << s["coverage"]["blocked_made"].get<int>() << " pots were made by:";

@@ -929,17 +929,29 @@ class PotSearch {
     if (!truth) return Refusal{PotStatus::kNoStroke, "under the full model the cue ball misses ball " + std::to_string(object_id_)};
     // A bank's window moves with K's state at the rail, which the truth's slide changes: it is
     // found again on the truth, from the search's, and the margin measured there.
-    const bool on_truth = route.kind == ShotKind::kBank && !placed;
     Drop window = drop;
-    if (on_truth) {
+    // The window found again on the truth, and the aim at its middle.
+    const auto on_the_truth = [&]() -> std::optional<Refusal> {
       std::optional<Drop> w = DropWindow(truth->contact, drop.Middle(), kDirectScan, 0.0, kWindowResolution, drop, true);
-      if (!w) return Refusal{PotStatus::kNoStroke, "under the full model ball " + std::to_string(object_id_) + " does not drop off the rail"};
+      if (!w) return Refusal{PotStatus::kNoStroke, "under the full model ball " + std::to_string(object_id_) + " does not drop in " + pocket_.name};
       window = *w;
       truth = AimAt(shape, truth->heading, window.Middle(), true, truth->slope);
       if (!truth) return Refusal{PotStatus::kNoStroke, "under the full model the cue ball misses ball " + std::to_string(object_id_)};
+      return std::nullopt;
+    };
+    if (route.kind == ShotKind::kBank && !placed) {
+      if (std::optional<Refusal> r = on_the_truth()) return *r;
     }
     plan.stroke = shape.At(truth->heading);
     Played played = Play(plan.stroke, true);
+    // Where the search's jaws (kSearchCushion) let K rattle in and the truth's do not: the
+    // window on the truth.
+    if (!played.outcome.legal && route.kind != ShotKind::kBank && !placed &&
+        played.outcome.first_contact == object_id_) {
+      if (std::optional<Refusal> r = on_the_truth()) return *r;
+      plan.stroke = shape.At(truth->heading);
+      played = Play(plan.stroke, true);
+    }
     if (!played.outcome.legal) return Refusal{PotStatus::kNoStroke, Illegal(played.outcome)};
 
     // The margin on the truth: near a jaw whether K rattles in turns on its speed and spin there,

@@ -11,6 +11,8 @@ namespace billiard::pot::testing {
 namespace {
 
 constexpr int kMaxPlacementTries = 10000;
+// A pocket's rounded noses lie within this distance of its mouth's middle [m].
+constexpr double kNearMouth = 0.15;
 
 }  // namespace
 
@@ -49,6 +51,14 @@ bool StraightLineClear(const table::TableGeometry& table, double radius,
   const Eigen::Vector2d departure = (p->centre - k).normalized();
   const Eigen::Vector2d ghost = GhostBall(k, departure, radius);
   if (CutAngle((ghost - cue).normalized(), departure) > max_cut_deg * M_PI / 180.0) return false;
+  // The pocket's own jaws: a line to the mouth's middle that passes a rounded nose closer than
+  // a ball's radius is closed by it (a side pocket seen from along the rail).
+  for (const table::CushionPoint& nose : table.points) {
+    if ((nose.centre - p->centre).norm() > kNearMouth) continue;
+    const Eigen::Vector2d ab = p->centre - k;
+    const double s = std::clamp((nose.centre - k).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    if ((k + s * ab - nose.centre).norm() < radius + nose.radius) return false;
+  }
   return BallsAcross(balls, k, p->centre, 2.0 * radius, {0, object}).empty() &&
          BallsAcross(balls, cue, ghost, 2.0 * radius, {0, object}).empty();
 }

@@ -27,7 +27,8 @@ PotLayout SeededPotLayout(const table::TableGeometry& table, double radius, std:
                           int min_balls = 2, int max_balls = 16);
 
 // Whether the straight ghost-ball shot is clear: no ball within a ball's width of the cue ball's
-// line to the ghost ball or of K's line to the pocket's mouth, and a cut below `max_cut_deg`.
+// line to the ghost ball or of K's line to the pocket's mouth, that line clear of the pocket's
+// own jaws (its rounded noses), and a cut below `max_cut_deg`.
 bool StraightLineClear(const table::TableGeometry& table, double radius,
                        const std::vector<table::SceneBall>& balls, int object,
                        const std::string& pocket, double max_cut_deg);
