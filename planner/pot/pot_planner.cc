@@ -88,6 +88,8 @@ constexpr double kPositionDamping = 1e-6;
 constexpr double kPositionSides[] = {0.0, 0.5, -0.5};
 // Newton's method starts from this many of the grid's nearest rest points, in turn.
 constexpr std::size_t kPositionStarts = 3;
+// Of the banks and the kicks, the shortest this many routes with clear lines are searched.
+constexpr int kRoutesSearched = 3;
 // Position play is tried on this many of a kind's pots, the widest first.
 constexpr std::size_t kPositionRoutes = 2;
 constexpr int kMaxTruthCorrections = 4;
@@ -1255,9 +1257,16 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
     // is tried anyway.
     if (kind == ShotKind::kCurve && !request.kind && (direct_blocked.empty() || best)) continue;
     std::vector<std::pair<PotPlan, Route>> planned;
+    int searched = 0;
     for (const Candidate& c : Routes(kind, table, params, search.balls(), request.ball, pocket)) {
-      // Of a bank, a kick or a curve, the shortest route that plans (each costs a search).
+      // Of a bank, a kick or a curve, the shortest route that plans, of the kRoutesSearched
+      // shortest whose lines are clear (each costs a search).
       if (kind != ShotKind::kDirect && !planned.empty() && !request.cue_target) break;
+      if (kind != ShotKind::kCurve && c.blocked.empty() && ++searched > kRoutesSearched) {
+        refused(Refusal{PotStatus::kBlocked, "longer than the " + std::to_string(kRoutesSearched) +
+                                                 " shortest routes of its kind, not searched"}, c.route);
+        continue;
+      }
       const std::variant<PotPlan, Refusal> result =
           c.blocked.empty() ? attempt(c.route, false) : Refusal{PotStatus::kBlocked, c.blocked};
       if (const auto* p = std::get_if<PotPlan>(&result)) {
