@@ -1222,14 +1222,22 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
     p.solve_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
     return p;
   };
-  if (std::optional<Refusal> bad = CheckRequest(table, params, balls, request)) {
+  std::vector<SceneBall> settled = balls;
+  if (options.settle_overlap > 0.0) {
+    try {
+      settled = table::SettledScene(table, params.ball.radius, balls, options.settle_overlap);
+    } catch (const std::invalid_argument&) {
+      // CheckRequest says what is wrong with the scene as it was given.
+    }
+  }
+  if (std::optional<Refusal> bad = CheckRequest(table, params, settled, request)) {
     plan.status = bad->status;
     plan.reason = bad->reason;
     return finish(plan, 0);
   }
   const table::Pocket& pocket = *std::find_if(table.pockets.begin(), table.pockets.end(),
                                               [&](const table::Pocket& p) { return p.name == request.pocket; });
-  PotSearch search(table, params, balls, request.ball, pocket, options, request.cue_target);
+  PotSearch search(table, params, settled, request.ball, pocket, options, request.cue_target);
 
   std::vector<ShotKind> kinds = {ShotKind::kDirect, ShotKind::kBank, ShotKind::kKick, ShotKind::kCurve};
   if (request.kind) kinds = {*request.kind};

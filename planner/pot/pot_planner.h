@@ -92,8 +92,12 @@ struct PotOptions {
   double arrival_speed = 0.6;
   // A cue-ball target without a radius is met when the rest point is this close [m].
   double position_tolerance = 5e-3;
-  // The predicted paths are sampled at this interval [s] (and at every event).
+  // The predicted paths are sampled at this interval [s] (and at their ends).
   double path_sample_dt = 0.02;
+  // A scene from a camera: balls that overlap each other or a cushion by up to this [m] are
+  // settled first (table::SettledScene) and the plan made on the settled scene; 0, the default
+  // (plan-pot, like simulate --scene): the scene must be valid as it is.
+  double settle_overlap = 0.0;
 };
 
 struct BallPath {

@@ -103,6 +103,46 @@ void ValidateScene(const TableGeometry& table, double radius, const std::vector<
   }
 }
 
+std::vector<SceneBall> SettledScene(const TableGeometry& table, double radius,
+                                    std::vector<SceneBall> balls, double max_overlap) {
+  // Apart by a hair more than the overlap, so that the contact tolerance is not spent.
+  constexpr double kClearance = 1e-9;  // [m]
+  constexpr int kSweeps = 100;         // a row of touching balls settles in as many as it is long
+  const Eigen::Vector2d middle(0.5 * table.length, 0.5 * table.width);
+  const auto settle_on_surface = [&](SceneBall& b) {
+    Eigen::Vector2d p = b.state.segment<2>(kX);
+    const Eigen::Vector2d inward = (middle - p).normalized();
+    const double step = max_overlap / 16.0;
+    for (double moved = 0.0; !table.OnSurface(p, radius) && moved < max_overlap; moved += step) {
+      p += step * inward;
+    }
+    b.state.segment<2>(kX) = p;
+  };
+  for (SceneBall& b : balls) {
+    if (b.state.allFinite()) settle_on_surface(b);
+  }
+  for (int sweep = 0; sweep < kSweeps; ++sweep) {
+    bool moved = false;
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      for (std::size_t j = i + 1; j < balls.size(); ++j) {
+        Eigen::Vector2d d = balls[j].state.segment<2>(kX) - balls[i].state.segment<2>(kX);
+        const double overlap = 2.0 * radius - d.norm();
+        if (!(overlap > kContactTolerance) || overlap > max_overlap || !(d.norm() > 0.0)) continue;
+        const Eigen::Vector2d half = 0.5 * (overlap + kClearance) * d.normalized();
+        balls[i].state.segment<2>(kX) -= half;
+        balls[j].state.segment<2>(kX) += half;
+        moved = true;
+      }
+    }
+    for (SceneBall& b : balls) {
+      if (b.state.allFinite()) settle_on_surface(b);
+    }
+    if (!moved) break;
+  }
+  ValidateScene(table, radius, balls);
+  return balls;
+}
+
 TableSimulation::TableSimulation(const TableGeometry& table, const physics::ModelParameters& params,
                                  const std::vector<SceneBall>& balls,
                                  const TableSimulationOptions& options)

@@ -158,4 +158,13 @@ std::optional<physics::SimulationOptions> FiveDofWhereNeeded(
 // overlapping by more than a nanometre.
 void ValidateScene(const TableGeometry& table, double radius, const std::vector<SceneBall>& balls);
 
+// A scene as a camera sees it, made one ValidateScene accepts: balls that overlap each other by
+// at most `max_overlap` [m] (touching balls, measured a fraction of a millimetre apart) are
+// pushed apart along their line of centres, each by half, and a ball at most `max_overlap` into
+// a cushion or over a pocket's mouth is moved toward the middle of the table until it is on the
+// surface; velocities and spins are kept. Throws std::invalid_argument, as ValidateScene does,
+// for a scene that needs more than that.
+std::vector<SceneBall> SettledScene(const TableGeometry& table, double radius,
+                                    std::vector<SceneBall> balls, double max_overlap);
+
 }  // namespace billiard::table
