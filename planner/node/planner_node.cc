@@ -85,21 +85,21 @@ int8_t ToMessageKind(pot::ShotKind kind) {
   return shot_request_t::KIND_ANY;
 }
 
-// The ball of `ball_class` the estimator is surest of, at least kMinClassConfidence, among the
-// balls `eligible` admits; nullptr when there is none. Ties by id: the answer must not depend on
-// the map's order.
-template <class Eligible>
-const ball_state_t* SurestOfClass(const std::unordered_map<int32_t, ball_state_t>& balls,
-                                  int8_t ball_class, Eligible eligible) {
+// The ball `id` names among `balls`; with shot_request_t::BALL_BY_CLASS, the one of
+// `ball_class` the estimator is surest of, at least kMinClassConfidence. Ties by id: the answer
+// must not depend on the balls' order. nullptr when there is none.
+const ball_state_t* Named(const std::vector<const ball_state_t*>& balls, int32_t id,
+                          int8_t ball_class) {
   const ball_state_t* surest = nullptr;
-  for (const auto& [id, ball] : balls) {
-    if (ball.ball_class != ball_class || ball.class_confidence < kMinClassConfidence ||
-        !eligible(ball)) {
+  for (const ball_state_t* ball : balls) {
+    if (id != shot_request_t::BALL_BY_CLASS) {
+      if (ball->ball_id == id) return ball;
       continue;
     }
-    if (surest == nullptr || ball.class_confidence > surest->class_confidence ||
-        (ball.class_confidence == surest->class_confidence && ball.ball_id < surest->ball_id)) {
-      surest = &ball;
+    if (ball->ball_class != ball_class || ball->class_confidence < kMinClassConfidence) continue;
+    if (surest == nullptr || ball->class_confidence > surest->class_confidence ||
+        (ball->class_confidence == surest->class_confidence && ball->ball_id < surest->ball_id)) {
+      surest = ball;
     }
   }
   return surest;
@@ -329,9 +329,10 @@ cue_command_t PlannerNode::AnswerPot(const shot_request_t& q, const ball_state_t
     std::ostringstream reason;
     reason << "no ball "
            << (q.object_ball_id == shot_request_t::BALL_BY_CLASS
-                   ? "of class " + std::to_string(q.object_ball_class)
+                   ? "of class " + std::to_string(q.object_ball_class) + " with a confidence of " +
+                         std::to_string(kMinClassConfidence) + " or more"
                    : std::to_string(q.object_ball_id))
-           << " on the table (no state within " << options_.max_state_age << " s of the request)";
+           << " in the latest table state";
     return Refusal(c, cue_command_t::STATUS_NO_SUCH_BALL, reason.str());
   }
   c.object_ball_id = object->ball_id;
@@ -357,22 +358,21 @@ cue_command_t PlannerNode::AnswerPot(const shot_request_t& q, const ball_state_t
   std::unordered_map<int, int32_t> message_id;
   std::vector<table::SceneBall> balls;
   int32_t free_id = 1;
-  for (const auto& [id, b] : balls_) free_id = std::max(free_id, id + 1);
-  for (const auto& [id, b] : balls_) {
-    if (!Recent(b, q.utime)) continue;
+  for (const ball_state_t& b : latest_table_->balls) free_id = std::max(free_id, b.ball_id + 1);
+  for (const ball_state_t& b : latest_table_->balls) {
     const double speed = std::hypot(b.velocity[0], b.velocity[1]);
     if (speed > options_.max_ball_speed) {
       std::ostringstream reason;
-      reason << "ball " << id << " is moving (" << speed << " m/s, more than "
+      reason << "ball " << b.ball_id << " is moving (" << speed << " m/s, more than "
              << options_.max_ball_speed << " m/s)";
       return Refusal(c, cue_command_t::STATUS_INVALID, reason.str());
     }
-    const int scene_id = id == cue.ball_id ? 0 : id == 0 ? free_id : id;
-    message_id[scene_id] = id;
-    if (id == object->ball_id) request.ball = scene_id;
+    const int scene_id = b.ball_id == cue.ball_id ? 0 : b.ball_id == 0 ? free_id : b.ball_id;
+    message_id[scene_id] = b.ball_id;
+    if (b.ball_id == object->ball_id) request.ball = scene_id;
     balls.push_back({scene_id, physics::MakeBallState(b.position[0], b.position[1], 0, 0, 0, 0, 0)});
   }
-  // By id, so that the plan does not depend on the map's order.
+  // By id, so that the plan does not depend on the publisher's order.
   std::sort(balls.begin(), balls.end(),
             [](const table::SceneBall& a, const table::SceneBall& b) { return a.id < b.id; });
   pot::PotPlan plan;
@@ -387,16 +387,19 @@ cue_command_t PlannerNode::AnswerPot(const shot_request_t& q, const ball_state_t
 }
 
 const ball_state_t* PlannerNode::ObjectBallFor(const shot_request_t& q) const {
-  const auto recent = [&](const ball_state_t& b) { return Recent(b, q.utime); };
-  if (q.object_ball_id == shot_request_t::BALL_BY_CLASS) {
-    return SurestOfClass(balls_, q.object_ball_class, recent);
-  }
-  const auto ball = balls_.find(q.object_ball_id);
-  return ball == balls_.end() || !recent(ball->second) ? nullptr : &ball->second;
+  return Named(Candidates(q), q.object_ball_id, q.object_ball_class);
 }
 
-bool PlannerNode::Recent(const ball_state_t& b, std::int64_t utime) const {
-  return std::abs(1e-6 * static_cast<double>(utime - b.utime)) <= options_.max_state_age;
+std::vector<const ball_state_t*> PlannerNode::Candidates(const shot_request_t& q) const {
+  std::vector<const ball_state_t*> balls;
+  if (q.mode == shot_request_t::MODE_POT) {
+    if (latest_table_) {
+      for (const ball_state_t& b : latest_table_->balls) balls.push_back(&b);
+    }
+  } else {
+    for (const auto& [id, b] : balls_) balls.push_back(&b);
+  }
+  return balls;
 }
 
 std::optional<PlannerNode::Unfit> PlannerNode::UnfitToPlanFrom(const shot_request_t& q,
@@ -420,21 +423,13 @@ std::optional<PlannerNode::Unfit> PlannerNode::UnfitToPlanFrom(const shot_reques
 }
 
 const ball_state_t* PlannerNode::BallFor(const shot_request_t& q) const {
-  if (q.ball_id != shot_request_t::BALL_BY_CLASS) {
-    const auto ball = balls_.find(q.ball_id);
-    return ball == balls_.end() ? nullptr : &ball->second;
-  }
-  return SurestOfClass(balls_, q.ball_class, [](const ball_state_t&) { return true; });
+  return Named(Candidates(q), q.ball_id, q.ball_class);
 }
 
 std::int64_t PlannerNode::StateUtime(const shot_request_t& q) const {
-  if (q.mode == shot_request_t::MODE_POT) {
-    std::int64_t latest = -1;
-    for (const auto& [id, ball] : balls_) latest = std::max(latest, ball.utime);
-    return latest;
-  }
   const ball_state_t* ball = BallFor(q);
-  return ball == nullptr ? -1 : ball->utime;
+  if (ball == nullptr) return -1;
+  return q.mode == shot_request_t::MODE_POT ? latest_table_->utime : ball->utime;
 }
 
 void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
@@ -460,10 +455,12 @@ void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string
         log_(channel + ": a new clock at utime " + std::to_string(state.utime) +
              ": the balls known so far are forgotten");
         balls_.clear();
+        latest_table_.reset();
         answered_.clear();
         break;
     }
     for (const ball_state_t& ball : state.balls) balls_.insert_or_assign(ball.ball_id, ball);
+    latest_table_ = std::move(state);
     while (balls_.size() > kMaxRememberedBalls) {
       balls_.erase(std::min_element(balls_.begin(), balls_.end(), [](const auto& a, const auto& b) {
         return a.second.utime < b.second.utime;

@@ -7,9 +7,10 @@
 //   SHOT_REQUEST  shot_request_t   one cue_command_t per request, ok or refused
 //   CUE_COMMAND   cue_command_t    utime, request_id and ball_id of the request
 //
-// A pot is planned on the node's table (PlannerNodeOptions::table) among every ball whose latest
-// state is within max_state_age of the request (older ones are taken to be gone: pocketed, or
-// lost by the estimator), each at rest where it was seen. The struck ball is the cue ball (id 0
+// A pot is planned on the node's table (PlannerNodeOptions::table) among the balls of the latest
+// TABLE_STATE, every ball its publisher knows of (one it no longer names is gone: pocketed, or
+// lost by the estimator), each at rest where it was seen; the cue ball and the object ball are
+// looked for there. The struck ball is the cue ball (id 0
 // of pot::PlanPot's scene, whatever the estimator calls it); the answer names the balls, in
 // object_ball_id and the paths, by the table state's ids.
 //
@@ -29,8 +30,8 @@
 //   STATUS_NOT_CONVERGED  also when the planner throws (an integrator giving up): the request
 //                         gets an answer all the same
 //   STATUS_OFF_TABLE      also a pot's cue-ball target off the table's playing surface
-//   STATUS_NO_SUCH_BALL   a pot's object ball has no state (by id, or by class at
-//                         kMinClassConfidence) within max_state_age, or is the struck ball
+//   STATUS_NO_SUCH_BALL   a pot's object ball is not in the latest table state (by id, or by
+//                         class at kMinClassConfidence), or is the struck ball
 //   STATUS_INVALID        also a pot among balls that overlap or lie off the table, or with any
 //                         of them moving faster than max_ball_speed
 //   the others            PlanShot's status (shot_planner.h) or PlanPot's (no_such_pocket,
@@ -61,6 +62,7 @@
 #include "lcmtypes/billiard/ball_state_t.hpp"
 #include "lcmtypes/billiard/cue_command_t.hpp"
 #include "lcmtypes/billiard/shot_request_t.hpp"
+#include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/node/message_clock.h"
 #include "lcmtypes/node/node_health.h"
 #include "planner/pot/pot_planner.h"
@@ -143,11 +145,11 @@ class PlannerNode {
   // The pot of a checked MODE_POT request, struck at `cue` (whose state is fit to plan from),
   // into `c` (the reply with the cue ball's id and start).
   cue_command_t AnswerPot(const shot_request_t& q, const ball_state_t& cue, cue_command_t c) const;
-  // The pot's object ball, by id or by class among the balls recent enough to be in its scene;
-  // nullptr when there is none.
+  // The pot's object ball, by id or by class; nullptr when there is none.
   const ball_state_t* ObjectBallFor(const shot_request_t& q) const;
-  // Whether a ball's latest state is recent enough to plan a pot at `utime` among.
-  bool Recent(const ball_state_t& b, std::int64_t utime) const;
+  // The balls a request's balls are looked for among: a pot's, the latest table state's; a
+  // point request's, the latest state of every ball.
+  std::vector<const ball_state_t*> Candidates(const shot_request_t& q) const;
 
   // Raw handlers: the node decodes the payload itself so that a failure is logged its way.
   void OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
@@ -158,16 +160,17 @@ class PlannerNode {
   const PlannerNodeOptions options_;
   const table::TableGeometry table_;
   void Publish(const cue_command_t& command, nodes::NodeHealth::Clock::time_point arrived);
-  // The ball a request is for: by its id, or by class the one the estimator is surest of (at
+  // The ball a request strikes: by its id, or by class the one the estimator is surest of (at
   // least kMinClassConfidence); nullptr when the table state has none.
   const ball_state_t* BallFor(const shot_request_t& q) const;
-  // The utime of that ball's latest state (a pot's: of the latest state of any ball, which
-  // its answer depends on), -1 if none.
+  // The utime of that ball's latest state (a pot's: of the latest table state, which its answer
+  // depends on), -1 if none.
   std::int64_t StateUtime(const shot_request_t& q) const;
 
   const Log log_;
   nodes::NodeHealth health_;
   std::unordered_map<int32_t, ball_state_t> balls_;
+  std::optional<table_state_t> latest_table_;
   nodes::MessageClock state_clock_;
   std::deque<Waiting> waiting_;
   std::deque<Answered> answered_;
