@@ -14,6 +14,7 @@
 #include "lcmtypes/names.h"
 #include "lcmtypes/node/node_loop.h"
 #include "lcmtypes/version.h"
+#include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/scene_file.h"
 #include "sim/params/table_specs.h"
@@ -443,7 +444,8 @@ std::vector<ShotResult> TableSimNode::Run() {
 
 table::TableSimulation TableSimNode::PlayOut(const table::TableGeometry& geometry,
                                              const std::vector<table::SceneBall>& balls,
-                                             const cue_command_t& command) {
+                                             const cue_command_t& command,
+                                             const table::TableSimulationOptions& motion) {
   std::vector<table::SceneBall> struck = balls;
   if (command.status == cue_command_t::STATUS_OK) {
     const physics::CueStroke stroke =
@@ -453,7 +455,7 @@ table::TableSimulation TableSimNode::PlayOut(const table::TableGeometry& geometr
       if (b.id == kCueBall) b.state = physics::StrikeBall(stroke, b.state.head<2>(), params_);
     }
   }
-  table::TableSimulation sim(geometry, params_, struck);
+  table::TableSimulation sim(geometry, params_, struck, motion);
   sim.Run(kLongestScene);
   const double t_strike = time_;
   const double frame_dt = 1.0 / options_.camera_rate;
@@ -505,7 +507,12 @@ PotResult TableSimNode::PlayPot(int id, const PotShot& pot, const table::TableGe
     log_("pot " + std::to_string(id) + " of ball " + std::to_string(pot.ball) + " in " +
          pot.pocket + " refused: " + result.shot.status + ", " + result.shot.reason);
   }
-  const table::TableSimulation sim = PlayOut(geometry, balls, command);
+  // The motion `billiard simulate --scene` runs by default, which the planner checks its pots
+  // against: the closed form alone would leave a cue ball that slides off a cut centimetres from
+  // where the 5-DOF model does.
+  table::TableSimulationOptions motion;
+  motion.five_dof = model_choice::TableMotion(params_);
+  const table::TableSimulation sim = PlayOut(geometry, balls, command, motion);
   for (const table::TableEvent& e : sim.events()) {
     if (e.type == table::EventType::kBallBall && (e.ball == kCueBall || e.other == kCueBall)) {
       result.first_contact = e.ball == kCueBall ? e.other : e.ball;
@@ -599,7 +606,7 @@ SceneResult TableSimNode::RunScene() {
   if (command.status != cue_command_t::STATUS_OK) {
     log_("the break refused: " + result.shot.status + ", " + result.shot.reason);
   }
-  const table::TableSimulation sim = PlayOut(geometry, balls, command);
+  const table::TableSimulation sim = PlayOut(geometry, balls, command, {});
   // The miss: the cue ball's centre where it first meets a ball, against the contact point.
   result.shot.final_point = sim.State(0).head<2>();
   for (const table::TableEvent& e : sim.events()) {

@@ -217,11 +217,13 @@ class TableSimNode {
                         const std::optional<Eigen::Vector2d>& object = std::nullopt);
   // The estimator's track nearest `at` in its latest state, nullopt if it has none.
   std::optional<std::int32_t> NearestTrack(const Eigen::Vector2d& at) const;
-  // Strikes the cue ball of `balls` as `command` says (with the noise), simulates the table to
-  // rest and shows it to the camera frame by frame; returns the simulation.
+  // Strikes the cue ball of `balls` as `command` says (with the noise; not at all when it is a
+  // refusal), simulates the table to rest with `motion` and shows it to the camera frame by
+  // frame; returns the simulation.
   table::TableSimulation PlayOut(const table::TableGeometry& geometry,
                                  const std::vector<table::SceneBall>& balls,
-                                 const cue_command_t& command);
+                                 const cue_command_t& command,
+                                 const table::TableSimulationOptions& motion);
   // Asks for pot `pot` (request `id`) on `balls`, plays it out and scores it; `balls` become
   // those left on the table, at rest.
   PotResult PlayPot(int id, const PotShot& pot, const table::TableGeometry& geometry,
