@@ -248,8 +248,21 @@ std::string CheckPotCommand(const cue_command_t& m) {
     return command + " has an unknown mode " + std::to_string(m.mode);
   }
   if (!KnownPotKind(m.kind)) return command + " has an unknown kind " + std::to_string(m.kind);
+  // A decoded message has its counts by construction; one about to be sent must have them too,
+  // within what a receiver decodes (lcm-gen's encoder writes as many as the count says).
+  if (m.num_ball_paths != static_cast<std::int32_t>(m.ball_paths.size()) ||
+      m.ball_paths.size() > static_cast<std::size_t>(kMaxBallPaths)) {
+    return command + " has " + std::to_string(m.ball_paths.size()) + " ball paths, num_ball_paths " +
+           std::to_string(m.num_ball_paths) + " (at most " + std::to_string(kMaxBallPaths) + ")";
+  }
   std::set<std::int32_t> ids;
   for (const ball_path_t& path : m.ball_paths) {
+    if (path.num_points != static_cast<std::int32_t>(path.points.size()) ||
+        path.points.size() > static_cast<std::size_t>(kMaxPathPoints)) {
+      return command + " has a path of ball " + std::to_string(path.ball_id) + " of " +
+             std::to_string(path.points.size()) + " points, num_points " +
+             std::to_string(path.num_points) + " (at most " + std::to_string(kMaxPathPoints) + ")";
+    }
     if (path.ball_id < 0 || !ids.insert(path.ball_id).second) {
       return command + " has a path of ball " + std::to_string(path.ball_id) +
              " (negative, or twice)";

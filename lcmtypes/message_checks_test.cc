@@ -386,6 +386,21 @@ TEST(MessageChecks, PotCommandMeaning) {
             std::string::npos);
   EXPECT_NE(refused([](cue_command_t& m) { m.ball_paths[1].ball_id = -1; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.kind = 7; }).find("kind"), std::string::npos);
+  // Counts that are not the arrays' sizes, or beyond what a receiver decodes: not to be sent.
+  EXPECT_NE(refused([](cue_command_t& m) { m.num_ball_paths = 3; }).find("num_ball_paths"),
+            std::string::npos);
+  EXPECT_NE(refused([](cue_command_t& m) { m.ball_paths[0].num_points = 1; }).find("num_points"),
+            std::string::npos);
+  EXPECT_NE(refused([](cue_command_t& m) {
+              m.ball_paths[0].points.assign(kMaxPathPoints + 1, {0.1, 0.1});
+              m.ball_paths[0].num_points = kMaxPathPoints + 1;
+            }),
+            "");
+  EXPECT_NE(refused([](cue_command_t& m) {
+              for (int id = 8; id < 8 + kMaxBallPaths; ++id) m.ball_paths.push_back({id, 0, {}});
+              m.num_ball_paths = static_cast<int32_t>(m.ball_paths.size());
+            }),
+            "");
   EXPECT_NE(refused([](cue_command_t& m) { m.mode = 3; }).find("mode"), std::string::npos);
   // An ok pot says which kind it is, and its windows are windows.
   EXPECT_NE(refused([](cue_command_t& m) { m.kind = shot_request_t::KIND_ANY; }), "");
