@@ -166,6 +166,25 @@ TEST(ClosedLoop, PotsOnCommittedScenesDropThroughAllThreeNodesWithTheRobotsNoise
   EXPECT_LT(quiet[0]["cue_rest_error_m"].get<double>(), 0.03) << quiet[0];
 }
 
+// `billiard loop` (the three nodes in one process, what run_loop.sh falls back to without
+// multicast) plays the same pot to the same bits: its planner pots on the scene's table too.
+TEST(ClosedLoop, APotInOneProcessIsThePotOfThreeProcesses) {
+  const std::string scene = std::string(POT_SCENES_DIR) + "/pot_side_pocket.json";
+  const nlohmann::json processes = PlayPots("pot_side_pocket.json", "--pot 3:lower_middle");
+  const CommandResult r = RunCommand(std::string(BILLIARD_BIN) + " loop --scene " + scene +
+                                     " --pot 3:lower_middle 2>/dev/null");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json one = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(one.is_object()) << r.out;
+  const nlohmann::json& pot = one["scene"]["pots"][0];
+  ASSERT_EQ(processes.size(), 1u);
+  EXPECT_TRUE(pot["potted"].get<bool>()) << pot;
+  for (const char* field : {"status", "kind", "margin_deg", "speed_window", "planned_cue_rest",
+                            "cue_rest", "dropped"}) {
+    EXPECT_EQ(pot[field], processes[0][field]) << field;
+  }
+}
+
 // Bad pot requests are refused with the planner's reason, nothing moves, and the planner goes on
 // to plan the next pot of the session.
 TEST(ClosedLoop, BadPotRequestsAreRefusedAndThePlannerGoesOnToPotTheNext) {
