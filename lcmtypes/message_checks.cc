@@ -132,8 +132,8 @@ std::string WalkLayout(WireWalk& w, const node_status_t*) {
 }
 
 std::string WalkLayout(WireWalk& w, const shot_request_t*) {
-  w.Skip(kHash + 2 * kInt64 + kInt32 + kInt8 + 3 * kDouble + kInt8 + 2 * kDouble + kInt8 +
-             kInt32 + kInt8,
+  w.Skip(kHash + 2 * kInt64 + kInt32 + kInt8 + 3 * kDouble + kInt8 + 2 * kDouble + kInt8 + kInt32 +
+             kInt8,
          "shot_request_t header");
   w.String("pocket");
   return w.error();
@@ -241,8 +241,8 @@ std::string CheckPotRequest(const shot_request_t& m) {
 // A pot's prediction: finite, a window that is one, the kind a chosen one, one path a ball.
 std::string CheckPotCommand(const cue_command_t& m) {
   const std::string command = "command " + std::to_string(m.request_id);
-  const double pot[] = {m.margin_deg[0], m.margin_deg[1], m.speed_window[0], m.speed_window[1],
-                        m.cue_rest[0],   m.cue_rest[1]};
+  const double pot[] = {m.margin_deg[0],   m.margin_deg[1], m.speed_window[0],
+                        m.speed_window[1], m.cue_rest[0],   m.cue_rest[1]};
   if (!Finite(pot, 6)) return command + " has a non-finite margin, speed window or cue rest";
   if (m.mode != shot_request_t::MODE_TO_POINT && m.mode != shot_request_t::MODE_POT) {
     return command + " has an unknown mode " + std::to_string(m.mode);
@@ -252,8 +252,9 @@ std::string CheckPotCommand(const cue_command_t& m) {
   // within what a receiver decodes (lcm-gen's encoder writes as many as the count says).
   if (m.num_ball_paths != static_cast<std::int32_t>(m.ball_paths.size()) ||
       m.ball_paths.size() > static_cast<std::size_t>(kMaxBallPaths)) {
-    return command + " has " + std::to_string(m.ball_paths.size()) + " ball paths, num_ball_paths " +
-           std::to_string(m.num_ball_paths) + " (at most " + std::to_string(kMaxBallPaths) + ")";
+    return command + " has " + std::to_string(m.ball_paths.size()) +
+           " ball paths, num_ball_paths " + std::to_string(m.num_ball_paths) + " (at most " +
+           std::to_string(kMaxBallPaths) + ")";
   }
   std::set<std::int32_t> ids;
   for (const ball_path_t& path : m.ball_paths) {
@@ -349,8 +350,7 @@ std::string Check(const shot_request_t& m) {
 std::string Check(const cue_command_t& m) {
   if (std::string why = Utime(m.utime, "command"); !why.empty()) return why;
   if (m.request_id < 0) return "negative request_id " + std::to_string(m.request_id);
-  if (m.status < cue_command_t::STATUS_OK ||
-      m.status > cue_command_t::STATUS_TARGET_UNREACHABLE) {
+  if (m.status < cue_command_t::STATUS_OK || m.status > cue_command_t::STATUS_TARGET_UNREACHABLE) {
     return "unknown status " + std::to_string(m.status);
   }
   const double stroke[] = {m.cue_speed, m.heading, m.tip_side, m.tip_height, m.elevation};

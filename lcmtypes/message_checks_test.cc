@@ -187,8 +187,7 @@ TEST(MessageChecks, CountsThatLieAreRefusedBeforeAnythingIsAllocated) {
   for (std::uint32_t count : {0xffffffffu, 65u, 0x40000000u}) {
     command = Encode(PotCommand());
     PutInt32(command, ball_paths, count);
-    EXPECT_NE(Decode(command.data(), command.size(), out).find("num_ball_paths"),
-              std::string::npos)
+    EXPECT_NE(Decode(command.data(), command.size(), out).find("num_ball_paths"), std::string::npos)
         << count;
   }
   command = Encode(PotCommand());
@@ -252,9 +251,9 @@ TEST(MessageChecks, TableStateMeaning) {
   EXPECT_NE(refused([](table_state_t& m) { m.balls[0].covariance[16] = -1.0; }), "");
   EXPECT_NE(refused([](table_state_t& m) { m.balls[0].position[0] = 1e3; }), "");
   // Classes: unknown, pool's 1-15, the cue ball and the named colours; confidences in [0, 1].
-  for (const int8_t known : {ball_state_t::CLASS_UNKNOWN, int8_t{1}, int8_t{15},
-                             ball_state_t::CLASS_CUE, ball_state_t::CLASS_RED,
-                             ball_state_t::CLASS_BLACK}) {
+  for (const int8_t known :
+       {ball_state_t::CLASS_UNKNOWN, int8_t{1}, int8_t{15}, ball_state_t::CLASS_CUE,
+        ball_state_t::CLASS_RED, ball_state_t::CLASS_BLACK}) {
     EXPECT_EQ(refused([&](table_state_t& m) { m.balls[0].ball_class = known; }), "") << +known;
   }
   for (const int8_t unknown : {int8_t{-1}, int8_t{17}, int8_t{19}, int8_t{27}}) {

@@ -144,7 +144,8 @@ TEST(ClosedLoop, PotsOnCommittedScenesDropThroughAllThreeNodesWithTheRobotsNoise
     const char* scene;
     int ball;
     const char* pocket;
-  } scenes[] = {{"pot_cut_corner.json", 5, "lower_left"}, {"pot_side_pocket.json", 3, "lower_middle"}};
+  } scenes[] = {{"pot_cut_corner.json", 5, "lower_left"},
+                {"pot_side_pocket.json", 3, "lower_middle"}};
   for (const auto& k : scenes) {
     const std::string pot = std::to_string(k.ball) + ":" + k.pocket;
     const nlohmann::json pots = PlayPots(k.scene, "--pot " + pot, "--noise on --seed 1");
@@ -209,10 +210,10 @@ TEST(ClosedLoop, BadPotRequestsAreRefusedAndThePlannerGoesOnToPotTheNext) {
     EXPECT_EQ(r.status, 2) << args << ": " << r.out;
     EXPECT_NE(r.out.find("--pot needs --scene FILE"), std::string::npos) << r.out;
   }
-  const CommandResult bad = RunCommand(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build " +
-                                           "--scene " + POT_SCENES_DIR +
-                                           "/pot_cut_corner.json --pot five:lower_left",
-                                       true);
+  const CommandResult bad =
+      RunCommand(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build " + "--scene " +
+                     POT_SCENES_DIR + "/pot_cut_corner.json --pot five:lower_left",
+                 true);
   EXPECT_EQ(bad.status, 2) << bad.out;
   EXPECT_NE(bad.out.find("--pot 'five:lower_left' is not K:P"), std::string::npos) << bad.out;
 }

@@ -106,7 +106,8 @@ const ball_state_t* Named(const std::vector<const ball_state_t*>& balls, int32_t
 }
 
 table::TableGeometry TableOf(const PlannerNodeOptions& options) {
-  return options.table ? *options.table : table::BuildTable(params::LoadTableSpec(kDefaultPotTable));
+  return options.table ? *options.table
+                       : table::BuildTable(params::LoadTableSpec(kDefaultPotTable));
 }
 
 std::string Describe(const cue_command_t& c) {
@@ -370,7 +371,8 @@ cue_command_t PlannerNode::AnswerPot(const shot_request_t& q, const ball_state_t
     const int scene_id = b.ball_id == cue.ball_id ? 0 : b.ball_id == 0 ? free_id : b.ball_id;
     message_id[scene_id] = b.ball_id;
     if (b.ball_id == object->ball_id) request.ball = scene_id;
-    balls.push_back({scene_id, physics::MakeBallState(b.position[0], b.position[1], 0, 0, 0, 0, 0)});
+    balls.push_back(
+        {scene_id, physics::MakeBallState(b.position[0], b.position[1], 0, 0, 0, 0, 0)});
   }
   // By id, so that the plan does not depend on the publisher's order.
   std::sort(balls.begin(), balls.end(),

@@ -51,7 +51,8 @@ PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line,
   // The point planner's bounds are the parameter set's table: both must be the one table.
   if (std::abs(options.table->length - params.table.length) > 1e-9 ||
       std::abs(options.table->width - params.table.width) > 1e-9) {
-    throw std::invalid_argument("--table " + line.table + " is not the size of the parameter "
+    throw std::invalid_argument("--table " + line.table +
+                                " is not the size of the parameter "
                                 "set's table");
   }
   return options;

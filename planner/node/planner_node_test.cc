@@ -262,8 +262,8 @@ ball_state_t Classed(int32_t id, double x, double y, int8_t ball_class, float co
 
 TEST_F(PlannerNodeTest, ABallAskedForByClassIsTheOneTheEstimatorIsSurestOf) {
   PublishTable({Classed(1, 0.6, 0.5, ball_state_t::CLASS_CUE, 0.55f),
-                Classed(2, 1.6, 0.7, ball_state_t::CLASS_CUE, 0.9f),
-                Classed(3, 1.0, 0.3, 8, 0.95f), Classed(4, 0.4, 0.8, ball_state_t::CLASS_RED, 0.3f)});
+                Classed(2, 1.6, 0.7, ball_state_t::CLASS_CUE, 0.9f), Classed(3, 1.0, 0.3, 8, 0.95f),
+                Classed(4, 0.4, 0.8, ball_state_t::CLASS_RED, 0.3f)});
   shot_request_t q = Request(1, shot_request_t::BALL_BY_CLASS, 1.2, 0.6);
   q.ball_class = ball_state_t::CLASS_CUE;
   const cue_command_t cue = AskOk(q);
@@ -525,8 +525,7 @@ TEST_F(PlannerNodePotTest, APotWithACueBallTargetLeavesTheCueBallThere) {
   q.cue_radius = 0.0;
   const auto unreachable = Ask(q);
   ASSERT_TRUE(unreachable);
-  EXPECT_EQ(Status(*unreachable), cue_command_t::STATUS_TARGET_UNREACHABLE)
-      << unreachable->reason;
+  EXPECT_EQ(Status(*unreachable), cue_command_t::STATUS_TARGET_UNREACHABLE) << unreachable->reason;
   EXPECT_EQ(unreachable->cue_speed, 0.0);
 }
 
@@ -594,9 +593,9 @@ TEST_F(PlannerNodePotTest, BadPotRequestsAreRefusedWithAReasonAndTheNodeKeepsAns
 // of 90 degrees.
 TEST_F(PlannerNodePotTest, ThePotPlannersRefusalsGoOutWithTheirStatus) {
   // The cue ball square to the line from ball 5 to the pocket.
-  PublishTable({Classed(kCueTrack, 0.5 - 0.3 * 0.514, 0.3 + 0.3 * 0.857, ball_state_t::CLASS_CUE,
-                        0.9f),
-                Classed(kObject, 0.5, 0.3, 5, 0.9f)});
+  PublishTable(
+      {Classed(kCueTrack, 0.5 - 0.3 * 0.514, 0.3 + 0.3 * 0.857, ball_state_t::CLASS_CUE, 0.9f),
+       Classed(kObject, 0.5, 0.3, 5, 0.9f)});
   shot_request_t thin = Pot(1, kObject, "lower_left");
   thin.kind = shot_request_t::KIND_DIRECT;
   const auto too_thin = Ask(thin);

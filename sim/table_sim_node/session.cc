@@ -200,15 +200,13 @@ nlohmann::json SceneSummary(const SceneResult& scene, const std::string& name) {
   }
   for (const PotResult& pot : scene.pots) {
     const ShotResult& shot = pot.shot;
-    nlohmann::json p = {{"ball", pot.asked.ball},
-                        {"pocket", pot.asked.pocket},
-                        {"status", shot.status},
-                        {"potted", pot.potted},
-                        {"scratch", pot.scratch},
-                        {"plan_ms", shot.plan_ms},
+    nlohmann::json p = {{"ball", pot.asked.ball}, {"pocket", pot.asked.pocket},
+                        {"status", shot.status},  {"potted", pot.potted},
+                        {"scratch", pot.scratch}, {"plan_ms", shot.plan_ms},
                         {"retries", shot.retries}};
     p["dropped"] = pot.dropped.empty() ? nlohmann::json() : nlohmann::json(pot.dropped);
-    p["first_contact"] = pot.first_contact < 0 ? nlohmann::json() : nlohmann::json(pot.first_contact);
+    p["first_contact"] =
+        pot.first_contact < 0 ? nlohmann::json() : nlohmann::json(pot.first_contact);
     if (!shot.reason.empty()) p["reason"] = shot.reason;
     if (shot.status == "ok") {
       p["kind"] = pot.kind;

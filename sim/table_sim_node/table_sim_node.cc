@@ -574,7 +574,8 @@ SceneResult TableSimNode::RunScene() {
   SceneResult result;
   if (!options_.pots.empty()) {
     for (std::size_t k = 0; k < options_.pots.size(); ++k) {
-      result.pots.push_back(PlayPot(static_cast<int>(k), options_.pots[k], geometry, balls, result));
+      result.pots.push_back(
+          PlayPot(static_cast<int>(k), options_.pots[k], geometry, balls, result));
       if (std::none_of(balls.begin(), balls.end(),
                        [](const table::SceneBall& b) { return b.id == kCueBall; })) {
         log_("the cue ball is off the table: the pots after " + std::to_string(k) +

@@ -130,13 +130,13 @@ struct TrackingReport {
 // margin, the predicted cue-ball rest) against what the table did with it.
 struct PotResult {
   PotShot asked;
-  ShotResult shot;  // the target is the plan's cue-ball rest; the miss, the cue ball's rest there
+  ShotResult shot;   // the target is the plan's cue-ball rest; the miss, the cue ball's rest there
   std::string kind;  // the planner's choice ("" when refused)
   double margin_left_deg = 0.0, margin_right_deg = 0.0;
   double speed_lo = 0.0, speed_hi = 0.0;  // the plan's speed window [m/s]
-  std::string dropped;     // the pocket ball K dropped into, "" if none
-  bool potted = false;     // ball K dropped in the pocket asked for
-  bool scratch = false;    // the cue ball dropped
+  std::string dropped;                    // the pocket ball K dropped into, "" if none
+  bool potted = false;                    // ball K dropped in the pocket asked for
+  bool scratch = false;                   // the cue ball dropped
   int first_contact = -1;  // the ball the cue ball touched first (the truth's id), -1 if none
 };
 
@@ -148,7 +148,7 @@ struct SceneResult {
   std::vector<PotResult> pots;
   std::vector<table::SceneBall> final_balls;
   std::vector<std::string> pockets;  // per ball: the pocket it dropped into, or ""
-  int events = 0;  // of every shot
+  int events = 0;                    // of every shot
   TrackingReport tracking;
 };
 
