@@ -32,7 +32,29 @@ std::vector<Bytes> Seeds() {
   cue_command_t busy = refused;
   busy.status = cue_command_t::STATUS_BUSY;
   busy.reason = "queue full";
-  return {Encode(planned), Encode(refused), Encode(busy)};
+
+  // A pot: the cue ball's and the object ball's paths, the margin and the speed window.
+  cue_command_t pot = planned;
+  pot.mode = shot_request_t::MODE_POT;
+  pot.object_ball_id = 3;
+  pot.pocket = "lower_left";
+  pot.kind = shot_request_t::KIND_BANK;
+  pot.margin_deg[0] = 0.3;
+  pot.margin_deg[1] = 0.5;
+  pot.speed_window[0] = 1.1;
+  pot.speed_window[1] = 2.4;
+  pot.cue_rest[0] = 1.5;
+  pot.cue_rest[1] = 0.8;
+  pot.ball_paths = {{0, 3, planned.path}, {3, 2, {{1.0, 0.5}, {0.03, 0.03}}}};
+  pot.num_ball_paths = 2;
+
+  cue_command_t blocked = refused;
+  blocked.mode = shot_request_t::MODE_POT;
+  blocked.object_ball_id = 3;
+  blocked.pocket = "lower_left";
+  blocked.status = cue_command_t::STATUS_BLOCKED;
+  blocked.reason = "ball 5 blocks the direct line; no bank, kick or curve pots it";
+  return {Encode(planned), Encode(refused), Encode(busy), Encode(pot), Encode(blocked)};
 }
 
 }  // namespace billiard::fuzz

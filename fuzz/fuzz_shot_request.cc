@@ -19,6 +19,24 @@ std::vector<Bytes> Seeds() {
     m.side_spin = spin % 2 == 0 ? 0.0 : -20.0;
     seeds.push_back(Encode(m));
   }
+  // A pot for each kind, by id and by class, with a cue-ball target and without.
+  for (std::int8_t kind = shot_request_t::KIND_ANY; kind <= shot_request_t::KIND_CURVE; ++kind) {
+    shot_request_t m{};
+    m.utime = 6000;
+    m.request_id = 20 + kind;
+    m.ball_id = kind % 2 ? 0 : shot_request_t::BALL_BY_CLASS;
+    m.ball_class = ball_state_t::CLASS_CUE;
+    m.mode = shot_request_t::MODE_POT;
+    m.object_ball_id = kind % 2 ? 3 : shot_request_t::BALL_BY_CLASS;
+    m.object_ball_class = 9;
+    m.pocket = kind % 2 ? "lower_left" : "upper_middle";
+    m.kind = kind;
+    m.has_cue_target = kind % 2;
+    m.cue_target[0] = 1.0;
+    m.cue_target[1] = 0.5;
+    m.cue_radius = 0.1 * kind;
+    seeds.push_back(Encode(m));
+  }
   return seeds;
 }
 

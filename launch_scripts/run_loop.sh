@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off] [--scene break|FILE]
-#                                   [--params NAME|FILE] [--log FILE] [--log-frames all|none]
+#                                   [--pot K:P ...] [--params NAME|FILE] [--log FILE]
+#                                   [--log-frames all|none]
 #                                   [--lockstep | --realtime] [--view] [--view-port PORT]
 #                                   [--json] [--no-build] [-h | --help]
 #
@@ -14,6 +15,12 @@
 #   --scene break|FILE     one whole-table shot instead: the eight-ball rack of --seed (break) or
 #                          a scene file at rest, the cue ball rolled into the ball nearest it;
 #                          prints how the estimator tracked every ball (error, swaps)
+#   --pot K:P              with --scene FILE: pot ball K (the scene's id) in pocket P
+#                          (lower_left, lower_middle, lower_right, upper_left, upper_middle,
+#                          upper_right) instead: planned by planner_node from the estimator's
+#                          view, executed with the robot's noise; prints whether K dropped in P
+#                          and where the cue ball stopped against the plan. Again for more pots,
+#                          played in turn from where the last left the balls
 #   --params NAME|FILE     the parameter set of all three nodes: pool (default), paper, snooker,
 #                          carom, or a JSON file (docs/simulation.md)
 #   --log FILE             record every message with lcm-logger into FILE
@@ -45,6 +52,7 @@ set -euo pipefail
 source "$(dirname "$0")/script_support.sh"
 
 shots=20 seed=1 noise=off scene="" params=pool log="" log_frames=all clock=--lockstep json=false build=true
+pots=()
 view=false view_port=8765
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -54,6 +62,7 @@ while [ $# -gt 0 ]; do
     --noise) need_value "$@"; noise=$2; shift 2 ;;
     # A scene file, like --log, is the caller's path; "break" is a name.
     --scene) need_value "$@"; scene=$2; [ "$scene" = break ] || scene=$(realpath -m -- "$2"); shift 2 ;;
+    --pot) need_value "$@"; pots+=(--pot "$2"); shift 2 ;;
     # Before the cd to the repository below: a relative path is the caller's.
     --log) need_value "$@"; log=$(realpath -m -- "$2"); shift 2 ;;
     # A parameter file is the caller's path too; a name has no slash and no .json.
@@ -81,6 +90,9 @@ case "$log_frames" in
   all|none) ;;
   *) usage_error "--log-frames must be all or none, not '$log_frames'" ;;
 esac
+if [ ${#pots[@]} -gt 0 ] && { [ -z "$scene" ] || [ "$scene" = break ]; }; then
+  usage_error "--pot needs --scene FILE"
+fi
 # A log that cannot be written is said before anything is built or started: opened for appending
 # (an existing file keeps its bytes until the logger starts), and a new one removed again.
 if [ -n "$log" ]; then
@@ -112,7 +124,7 @@ fi
 
 source launch_scripts/lcm_network.sh
 enter_private_network launch_scripts/run_loop.sh --no-build --shots "$shots" --seed "$seed" \
-  --noise "$noise" --params "$params" ${scene:+--scene "$scene"} ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
+  --noise "$noise" --params "$params" ${scene:+--scene "$scene"} "${pots[@]}" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
 in_process=false
@@ -145,10 +157,17 @@ if [ -n "$log" ]; then
   logger=$!
   pids+=($logger)
 fi
+# The planner pots on the scene's table (a scene that does not load is the session's to refuse).
+planner_table=()
+if [ -n "$scene" ] && [ "$scene" != break ]; then
+  table=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1])).get("table", ""))' \
+            "$scene" 2>/dev/null) || table=""
+  [ -n "$table" ] && planner_table=(--table "$table")
+fi
 if ! $in_process; then
   "$bin_dir/estimator_node" --params "$params" 2>/dev/null &
   pids+=($!)
-  "$bin_dir/planner_node" --params "$params" >/dev/null 2>&1 &
+  "$bin_dir/planner_node" --params "$params" "${planner_table[@]}" >/dev/null 2>&1 &
   pids+=($!)
   if $view; then
     if [ -n "${VIEW_SOCKET:-}" ]; then  # in the namespace: on a port of its own, through the socket
@@ -171,7 +190,7 @@ sim_clock=""
 session=("$bin_dir/table_sim_node")
 $in_process && session=("$bin_dir/billiard" loop)
 "${session[@]}" --params "$params" --shots "$shots" --seed "$seed" --noise "$noise" \
-  ${scene:+--scene "$scene"} $sim_clock >"$summary_file" &
+  ${scene:+--scene "$scene"} "${pots[@]}" $sim_clock >"$summary_file" &
 pids+=($!)
 status=0
 wait $! || status=$?
@@ -197,13 +216,29 @@ $json && echo "$summary"
 python3 - "$summary" >&2 <<'PY'
 import json, sys
 s = json.loads(sys.argv[1])
-print(f"{'shot':>4} {'target':>16} {'final':>16} {'miss mm':>9} {'plan ms':>8}  status")
-for i, shot in enumerate(s["shots"]):
+pots = s.get("scene", {}).get("pots", [])
+if not pots:
+    print(f"{'shot':>4} {'target':>16} {'final':>16} {'miss mm':>9} {'plan ms':>8}  status")
+for i, shot in enumerate([] if pots else s["shots"]):
     t, f = shot["target"], shot["final"]
     print(f"{i:>4} ({t[0]:6.3f},{t[1]:6.3f}) ({f[0]:6.3f},{f[1]:6.3f}) {1e3*shot['miss_m']:9.2f} "
           f"{shot['plan_ms']:8.2f}  {shot['status']}")
-print(f"median miss {1e3*s['median_miss_m']:.2f} mm, max {1e3*s['max_miss_m']:.2f} mm, "
-      f"mean {1e3*s['mean_miss_m']:.2f} +- {1e3*s['stddev_miss_m']:.2f} mm, {s['wall_s']:.1f} s")
+for i, p in enumerate(pots):
+    line = f"pot {i}: ball {p['ball']} in {p['pocket']}: {p['status']}"
+    if p["status"] == "ok":
+        dropped = "potted" if p["potted"] else f"missed (dropped in {p['dropped']})" if p["dropped"] else "missed"
+        m, w, r = p["margin_deg"], p["speed_window"], p["planned_cue_rest"]
+        line += (f", {p['kind']}, margin {m[0]:.2f}/{m[1]:.2f} deg, speed {w[0]:.2f}-{w[1]:.2f} m/s: "
+                 f"{dropped}{', scratch' if p['scratch'] else ''}; the cue ball rests at "
+                 f"({p['cue_rest'][0]:.3f}, {p['cue_rest'][1]:.3f}), "
+                 f"{1e3*p['cue_rest_error_m']:.1f} mm from the plan's ({r[0]:.3f}, {r[1]:.3f}); "
+                 f"planned in {p['plan_ms']:.1f} ms")
+    else:
+        line += f" ({p['reason']})"
+    print(line)
+if not pots:
+    print(f"median miss {1e3*s['median_miss_m']:.2f} mm, max {1e3*s['max_miss_m']:.2f} mm, "
+          f"mean {1e3*s['mean_miss_m']:.2f} +- {1e3*s['stddev_miss_m']:.2f} mm, {s['wall_s']:.1f} s")
 if "scene" in s:
     scene, tracking = s["scene"], s["scene"]["tracking"]
     pocketed = [f"{b['id']} ({b['pocketed']})" for b in scene["balls"] if b["pocketed"]]

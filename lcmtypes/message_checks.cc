@@ -94,7 +94,17 @@ std::string WalkLayout(WireWalk& w, const table_state_t*) {
 std::string WalkLayout(WireWalk& w, const cue_command_t*) {
   w.Skip(kHash + 2 * kInt64 + kInt32 + (5 + 2 + 3 + 2) * kDouble, "cue_command_t header");
   const std::int32_t points = w.Count(2 * kDouble, kMaxPathPoints, "num_path_points");
-  w.Skip(points * 2 * kDouble + 5 * kDouble + kInt32 + kInt8, "cue_command_t plan");
+  w.Skip(points * 2 * kDouble + 5 * kDouble + kInt32 + kInt8 + kInt32, "cue_command_t plan");
+  w.String("pocket");
+  w.Skip(kInt8 + 6 * kDouble, "cue_command_t pot");
+  // A ball path is at least its id and its count.
+  const std::int32_t paths = w.Count(2 * kInt32, kMaxBallPaths, "num_ball_paths");
+  for (std::int32_t i = 0; i < paths; ++i) {
+    w.Skip(kInt32, "ball path");
+    w.Skip(w.Count(2 * kDouble, kMaxPathPoints, "ball path num_points") * 2 * kDouble,
+           "ball path points");
+  }
+  w.Skip(kInt8, "cue_command_t status");
   w.String("reason");
   return w.error();
 }
@@ -121,8 +131,13 @@ std::string WalkLayout(WireWalk& w, const node_status_t*) {
   return w.error();
 }
 
-// A type of fixed size: LCM's decoder checks every read against the length.
-std::string WalkLayout(WireWalk& w, const shot_request_t*) { return w.error(); }
+std::string WalkLayout(WireWalk& w, const shot_request_t*) {
+  w.Skip(kHash + 2 * kInt64 + kInt32 + kInt8 + 3 * kDouble + kInt8 + 2 * kDouble + kInt8 + kInt32 +
+             kInt8,
+         "shot_request_t header");
+  w.String("pocket");
+  return w.error();
+}
 
 template <class Message>
 std::string DecodeWhole(const void* data, std::size_t size, Message& out, const char* type) {
@@ -188,6 +203,84 @@ std::string CheckBall(const ball_state_t& b) {
   return {};
 }
 
+bool KnownPotKind(std::int8_t kind) {
+  return kind >= shot_request_t::KIND_ANY && kind <= shot_request_t::KIND_CURVE;
+}
+
+// The object ball is named as the struck ball is: an id, or a known class.
+std::string CheckPotRequest(const shot_request_t& m) {
+  if (m.object_ball_id == shot_request_t::BALL_BY_CLASS) {
+    if (m.object_ball_class == ball_state_t::CLASS_UNKNOWN ||
+        !KnownBallClass(m.object_ball_class)) {
+      return "an object ball by class needs a known object_ball_class, not " +
+             std::to_string(m.object_ball_class);
+    }
+  } else if (m.object_ball_id < 0) {
+    return "negative object_ball_id " + std::to_string(m.object_ball_id);
+  }
+  if (m.pocket.empty()) return "a pot request without a pocket";
+  if (!KnownPotKind(m.kind)) {
+    return "unknown kind " + std::to_string(m.kind) + " (0-4, see shot_request_t)";
+  }
+  if (m.has_cue_target != 0 && m.has_cue_target != 1) {
+    return "has_cue_target is " + std::to_string(m.has_cue_target) + ", not 0 or 1";
+  }
+  if (m.has_cue_target == 1) {
+    if (!Finite(m.cue_target, 2) || !std::isfinite(m.cue_radius)) {
+      return "request has a non-finite cue-ball target";
+    }
+    if (m.cue_radius < 0.0 || m.cue_radius > kMaxPosition) {
+      std::ostringstream why;
+      why << "cue_radius " << m.cue_radius << " m is outside 0.." << kMaxPosition;
+      return why.str();
+    }
+  }
+  return {};
+}
+
+// A pot's prediction: finite, a window that is one, the kind a chosen one, one path a ball.
+std::string CheckPotCommand(const cue_command_t& m) {
+  const std::string command = "command " + std::to_string(m.request_id);
+  const double pot[] = {m.margin_deg[0],   m.margin_deg[1], m.speed_window[0],
+                        m.speed_window[1], m.cue_rest[0],   m.cue_rest[1]};
+  if (!Finite(pot, 6)) return command + " has a non-finite margin, speed window or cue rest";
+  if (m.mode != shot_request_t::MODE_TO_POINT && m.mode != shot_request_t::MODE_POT) {
+    return command + " has an unknown mode " + std::to_string(m.mode);
+  }
+  if (!KnownPotKind(m.kind)) return command + " has an unknown kind " + std::to_string(m.kind);
+  // A decoded message has its counts by construction; one about to be sent must have them too,
+  // within what a receiver decodes (lcm-gen's encoder writes as many as the count says).
+  if (m.num_ball_paths != static_cast<std::int32_t>(m.ball_paths.size()) ||
+      m.ball_paths.size() > static_cast<std::size_t>(kMaxBallPaths)) {
+    return command + " has " + std::to_string(m.ball_paths.size()) +
+           " ball paths, num_ball_paths " + std::to_string(m.num_ball_paths) + " (at most " +
+           std::to_string(kMaxBallPaths) + ")";
+  }
+  std::set<std::int32_t> ids;
+  for (const ball_path_t& path : m.ball_paths) {
+    if (path.num_points != static_cast<std::int32_t>(path.points.size()) ||
+        path.points.size() > static_cast<std::size_t>(kMaxPathPoints)) {
+      return command + " has a path of ball " + std::to_string(path.ball_id) + " of " +
+             std::to_string(path.points.size()) + " points, num_points " +
+             std::to_string(path.num_points) + " (at most " + std::to_string(kMaxPathPoints) + ")";
+    }
+    if (path.ball_id < 0 || !ids.insert(path.ball_id).second) {
+      return command + " has a path of ball " + std::to_string(path.ball_id) +
+             " (negative, or twice)";
+    }
+    for (const std::vector<double>& p : path.points) {
+      if (!Finite(p.data(), 2)) return command + " has a non-finite ball path";
+    }
+  }
+  if (m.status == cue_command_t::STATUS_OK && m.mode == shot_request_t::MODE_POT &&
+      (m.kind == shot_request_t::KIND_ANY || m.margin_deg[0] < 0.0 || m.margin_deg[1] < 0.0 ||
+       !(m.speed_window[0] <= m.speed_window[1]))) {
+    return "an ok pot " + std::to_string(m.request_id) +
+           " without a kind, or with a negative margin or an empty speed window";
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string Decode(const void* data, std::size_t size, table_state_t& out) {
@@ -247,13 +340,17 @@ std::string Check(const shot_request_t& m) {
   if (std::abs(m.side_spin) > kMaxSpin) {
     return "side_spin is more than " + std::to_string(kMaxSpin) + " rad/s";
   }
+  if (m.mode == shot_request_t::MODE_POT) return CheckPotRequest(m);
+  if (m.mode != shot_request_t::MODE_TO_POINT) {
+    return "unknown mode " + std::to_string(m.mode) + " (0-1, see shot_request_t)";
+  }
   return {};
 }
 
 std::string Check(const cue_command_t& m) {
   if (std::string why = Utime(m.utime, "command"); !why.empty()) return why;
   if (m.request_id < 0) return "negative request_id " + std::to_string(m.request_id);
-  if (m.status < cue_command_t::STATUS_OK || m.status > cue_command_t::STATUS_BUSY) {
+  if (m.status < cue_command_t::STATUS_OK || m.status > cue_command_t::STATUS_TARGET_UNREACHABLE) {
     return "unknown status " + std::to_string(m.status);
   }
   const double stroke[] = {m.cue_speed, m.heading, m.tip_side, m.tip_height, m.elevation};
@@ -268,6 +365,7 @@ std::string Check(const cue_command_t& m) {
       return "command " + std::to_string(m.request_id) + " has a non-finite path";
     }
   }
+  if (std::string why = CheckPotCommand(m); !why.empty()) return why;
   if (m.status == cue_command_t::STATUS_OK) {
     if (!(m.cue_speed > 0.0)) return "an ok command with cue_speed " + std::to_string(m.cue_speed);
     if (!m.reason.empty()) return "an ok command with a reason";

@@ -27,7 +27,9 @@ namespace billiard::messages {
 
 // Limits of a sane message.
 inline constexpr int kMaxBalls = 64;             // balls in one table_state_t
-inline constexpr int kMaxPathPoints = 100000;    // points of a cue_command_t's path
+inline constexpr int kMaxPathPoints = 100000;    // points of a cue_command_t's path, and of
+                                                 // each of its ball paths
+inline constexpr int kMaxBallPaths = kMaxBalls;  // ball paths of a cue_command_t (one a ball)
 inline constexpr int kMaxReasonLength = 4096;    // bytes of a string field
 inline constexpr double kMaxPosition = 100.0;    // |X|, |Y| [m]
 inline constexpr double kMaxSpeed = 100.0;       // |v| [m/s]

@@ -51,6 +51,42 @@ cue_command_t Command() {
   return m;
 }
 
+// A pot request: ball 7 into the lower-left pocket, the cue ball left near a point.
+shot_request_t PotRequest() {
+  shot_request_t m{};
+  m.utime = 9;
+  m.request_id = 4;
+  m.mode = shot_request_t::MODE_POT;
+  m.object_ball_id = 7;
+  m.pocket = "lower_left";
+  m.kind = shot_request_t::KIND_BANK;
+  m.has_cue_target = 1;
+  m.cue_target[0] = 1.2;
+  m.cue_target[1] = 0.6;
+  m.cue_radius = 0.05;
+  return m;
+}
+
+// Its answer: the paths of the cue ball and of ball 7.
+cue_command_t PotCommand() {
+  cue_command_t m = Command();
+  m.mode = shot_request_t::MODE_POT;
+  m.object_ball_id = 7;
+  m.pocket = "lower_left";
+  m.kind = shot_request_t::KIND_DIRECT;
+  m.margin_deg[0] = 0.4;
+  m.margin_deg[1] = 0.3;
+  m.speed_window[0] = 0.9;
+  m.speed_window[1] = 2.5;
+  m.cue_rest[0] = 1.2;
+  m.cue_rest[1] = 0.6;
+  ball_path_t cue{0, 2, {{0.1, 0.2}, {0.3, 0.4}}};
+  ball_path_t seven{7, 3, {{0.5, 0.5}, {0.3, 0.3}, {0.05, 0.05}}};
+  m.ball_paths = {cue, seven};
+  m.num_ball_paths = 2;
+  return m;
+}
+
 image_t Image() {
   image_t m{};
   m.utime = 1;
@@ -96,6 +132,8 @@ TEST(MessageChecks, OnlyTheWholePayloadDecodes) {
   ExpectOnlyTheWholePayloadDecodes(Table());
   ExpectOnlyTheWholePayloadDecodes(shot_request_t{});
   ExpectOnlyTheWholePayloadDecodes(Command());
+  ExpectOnlyTheWholePayloadDecodes(PotRequest());
+  ExpectOnlyTheWholePayloadDecodes(PotCommand());
   ExpectOnlyTheWholePayloadDecodes(Image());
   ExpectOnlyTheWholePayloadDecodes(Status());
 }
@@ -140,6 +178,36 @@ TEST(MessageChecks, CountsThatLieAreRefusedBeforeAnythingIsAllocated) {
   PutInt32(command, reason_length, 1);
   command.back() = 'x';  // not terminated
   EXPECT_NE(Decode(command.data(), command.size(), out).find("not terminated"), std::string::npos);
+
+  // A pot's ball paths: their count, and each path's, after the pocket. Two paths of a cue
+  // command with an empty reason end 2 (points) x 16 + 8, 3 x 16 + 8, 1 (status) and 5 bytes
+  // (reason) before the end.
+  const std::size_t pot_tail = 2 * 16 + 8 + 3 * 16 + 8 + 1 + 5;
+  const std::size_t ball_paths = Encode(PotCommand()).size() - pot_tail - 4;
+  for (std::uint32_t count : {0xffffffffu, 65u, 0x40000000u}) {
+    command = Encode(PotCommand());
+    PutInt32(command, ball_paths, count);
+    EXPECT_NE(Decode(command.data(), command.size(), out).find("num_ball_paths"), std::string::npos)
+        << count;
+  }
+  command = Encode(PotCommand());
+  PutInt32(command, ball_paths, 3);  // a third path, read from the status and the reason
+  EXPECT_NE(Decode(command.data(), command.size(), out), "");
+  for (std::uint32_t count : {0xffffffffu, 0x40000000u, 100u}) {
+    command = Encode(PotCommand());
+    PutInt32(command, ball_paths + 8, count);  // the cue ball's path's num_points
+    EXPECT_NE(Decode(command.data(), command.size(), out).find("ball path"), std::string::npos)
+        << count;
+  }
+  // A request's pocket: the string that makes shot_request_t a type of variable size.
+  std::vector<std::uint8_t> request = Encode(PotRequest());
+  const std::size_t pocket_length = 8 + 8 + 8 + 4 + 1 + 3 * 8 + 1 + 2 * 8 + 1 + 4 + 1;
+  for (std::uint32_t length : {0u, 0xffffffffu, 1000u}) {
+    PutInt32(request, pocket_length, length);
+    shot_request_t decoded;
+    EXPECT_NE(Decode(request.data(), request.size(), decoded).find("pocket"), std::string::npos)
+        << length;
+  }
 }
 
 // Found by fuzz/fuzz_node_status and fuzz_cue_command: lcm-gen's decoder keeps the bytes after a
@@ -183,9 +251,9 @@ TEST(MessageChecks, TableStateMeaning) {
   EXPECT_NE(refused([](table_state_t& m) { m.balls[0].covariance[16] = -1.0; }), "");
   EXPECT_NE(refused([](table_state_t& m) { m.balls[0].position[0] = 1e3; }), "");
   // Classes: unknown, pool's 1-15, the cue ball and the named colours; confidences in [0, 1].
-  for (const int8_t known : {ball_state_t::CLASS_UNKNOWN, int8_t{1}, int8_t{15},
-                             ball_state_t::CLASS_CUE, ball_state_t::CLASS_RED,
-                             ball_state_t::CLASS_BLACK}) {
+  for (const int8_t known :
+       {ball_state_t::CLASS_UNKNOWN, int8_t{1}, int8_t{15}, ball_state_t::CLASS_CUE,
+        ball_state_t::CLASS_RED, ball_state_t::CLASS_BLACK}) {
     EXPECT_EQ(refused([&](table_state_t& m) { m.balls[0].ball_class = known; }), "") << +known;
   }
   for (const int8_t unknown : {int8_t{-1}, int8_t{17}, int8_t{19}, int8_t{27}}) {
@@ -236,6 +304,48 @@ TEST(MessageChecks, ShotRequestMeaning) {
   EXPECT_NE(refused([](shot_request_t& m) { m.side_spin = 1e9; }), "");
 }
 
+TEST(MessageChecks, PotRequestMeaning) {
+  const auto refused = [](auto edit) {
+    shot_request_t m = PotRequest();
+    edit(m);
+    return Check(m);
+  };
+  EXPECT_EQ(refused([](shot_request_t&) {}), "");
+  EXPECT_EQ(refused([](shot_request_t& m) { m.has_cue_target = 0; }), "");
+  EXPECT_EQ(refused([](shot_request_t& m) {
+              m.has_cue_target = 0;
+              m.cue_target[0] = kNaN;
+            }),
+            "")
+      << "the cue-ball target means nothing without has_cue_target";
+  EXPECT_NE(refused([](shot_request_t& m) { m.cue_target[1] = kNaN; }).find("non-finite"),
+            std::string::npos);
+  EXPECT_NE(refused([](shot_request_t& m) { m.cue_radius = kNaN; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.cue_radius = -0.1; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.has_cue_target = 2; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.mode = 2; }).find("mode"), std::string::npos);
+  EXPECT_NE(refused([](shot_request_t& m) { m.kind = 5; }).find("kind"), std::string::npos);
+  EXPECT_NE(refused([](shot_request_t& m) { m.kind = -1; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.pocket = ""; }).find("pocket"), std::string::npos);
+  EXPECT_NE(refused([](shot_request_t& m) { m.object_ball_id = -2; }), "");
+  EXPECT_NE(refused([](shot_request_t& m) { m.object_ball_id = shot_request_t::BALL_BY_CLASS; }),
+            "");
+  EXPECT_EQ(refused([](shot_request_t& m) {
+              m.object_ball_id = shot_request_t::BALL_BY_CLASS;
+              m.object_ball_class = 9;
+            }),
+            "");
+  // The point request's checks hold for a pot too.
+  EXPECT_NE(refused([](shot_request_t& m) { m.target[0] = kNaN; }), "");
+  // A point request ignores the pot's fields.
+  EXPECT_EQ(refused([](shot_request_t& m) {
+              m.mode = shot_request_t::MODE_TO_POINT;
+              m.pocket = "";
+              m.kind = 9;
+            }),
+            "");
+}
+
 TEST(MessageChecks, CueCommandMeaning) {
   EXPECT_EQ(Check(Command()), "");
   const auto refused = [](auto edit) {
@@ -243,7 +353,8 @@ TEST(MessageChecks, CueCommandMeaning) {
     edit(m);
     return Check(m);
   };
-  EXPECT_NE(refused([](cue_command_t& m) { m.status = 8; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.status = 14; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.status = -1; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.heading = kNaN; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.path[1][0] = kNaN; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.cue_speed = 0.0; }), "");
@@ -256,6 +367,56 @@ TEST(MessageChecks, CueCommandMeaning) {
               m.reason = "queue full";
             }),
             "");
+}
+
+TEST(MessageChecks, PotCommandMeaning) {
+  EXPECT_EQ(Check(PotCommand()), "");
+  const auto refused = [](auto edit) {
+    cue_command_t m = PotCommand();
+    edit(m);
+    return Check(m);
+  };
+  EXPECT_NE(refused([](cue_command_t& m) { m.margin_deg[1] = kNaN; }).find("non-finite"),
+            std::string::npos);
+  EXPECT_NE(refused([](cue_command_t& m) { m.speed_window[0] = kNaN; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.cue_rest[0] = -kNaN; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.ball_paths[1].points[2][1] = kNaN; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.ball_paths[1].ball_id = 0; }).find("twice"),
+            std::string::npos);
+  EXPECT_NE(refused([](cue_command_t& m) { m.ball_paths[1].ball_id = -1; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.kind = 7; }).find("kind"), std::string::npos);
+  // Counts that are not the arrays' sizes, or beyond what a receiver decodes: not to be sent.
+  EXPECT_NE(refused([](cue_command_t& m) { m.num_ball_paths = 3; }).find("num_ball_paths"),
+            std::string::npos);
+  EXPECT_NE(refused([](cue_command_t& m) { m.ball_paths[0].num_points = 1; }).find("num_points"),
+            std::string::npos);
+  EXPECT_NE(refused([](cue_command_t& m) {
+              m.ball_paths[0].points.assign(kMaxPathPoints + 1, {0.1, 0.1});
+              m.ball_paths[0].num_points = kMaxPathPoints + 1;
+            }),
+            "");
+  EXPECT_NE(refused([](cue_command_t& m) {
+              for (int id = 8; id < 8 + kMaxBallPaths; ++id) m.ball_paths.push_back({id, 0, {}});
+              m.num_ball_paths = static_cast<int32_t>(m.ball_paths.size());
+            }),
+            "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.mode = 3; }).find("mode"), std::string::npos);
+  // An ok pot says which kind it is, and its windows are windows.
+  EXPECT_NE(refused([](cue_command_t& m) { m.kind = shot_request_t::KIND_ANY; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.margin_deg[0] = -0.1; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.speed_window[1] = 0.5; }), "");
+  // A refused pot: its status and reason, no stroke.
+  for (const int8_t status : {cue_command_t::STATUS_NO_SUCH_BALL, cue_command_t::STATUS_BLOCKED,
+                              cue_command_t::STATUS_TARGET_UNREACHABLE}) {
+    EXPECT_EQ(refused([&](cue_command_t& m) {
+                m.status = status;
+                m.cue_speed = 0.0;
+                m.kind = shot_request_t::KIND_ANY;
+                m.reason = "why not";
+              }),
+              "")
+        << +status;
+  }
 }
 
 TEST(MessageChecks, ImageAndStatusMeaning) {

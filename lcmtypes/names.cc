@@ -1,6 +1,7 @@
 #include "lcmtypes/names.h"
 
 #include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/shot_request_t.hpp"
 
 namespace billiard::messages {
 
@@ -22,8 +23,36 @@ std::string CueCommandStatusName(std::int8_t status) {
       return "stale_state";
     case cue_command_t::STATUS_BUSY:
       return "busy";
+    case cue_command_t::STATUS_NO_SUCH_BALL:
+      return "no_such_ball";
+    case cue_command_t::STATUS_NO_SUCH_POCKET:
+      return "no_such_pocket";
+    case cue_command_t::STATUS_BLOCKED:
+      return "blocked";
+    case cue_command_t::STATUS_TOO_THIN:
+      return "too_thin";
+    case cue_command_t::STATUS_NO_STROKE:
+      return "no_stroke";
+    case cue_command_t::STATUS_TARGET_UNREACHABLE:
+      return "target_unreachable";
   }
   return "status " + std::to_string(status);
+}
+
+std::string PotKindName(std::int8_t kind) {
+  switch (kind) {
+    case shot_request_t::KIND_ANY:
+      return "any";
+    case shot_request_t::KIND_DIRECT:
+      return "direct";
+    case shot_request_t::KIND_BANK:
+      return "bank";
+    case shot_request_t::KIND_KICK:
+      return "kick";
+    case shot_request_t::KIND_CURVE:
+      return "curve";
+  }
+  return "kind " + std::to_string(kind);
 }
 
 }  // namespace billiard::messages

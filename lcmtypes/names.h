@@ -23,7 +23,13 @@ inline constexpr char kNodeStatusChannel[] = "NODE_STATUS";    // node_status_t,
 inline constexpr char kRealtimeClockSetting[] = "realtime_clock";
 
 // "ok", "invalid", "off_table", "unreachable", "not_converged", "no_ball_state", "stale_state",
-// "busy" (cue_command_t's STATUS_*); "status N" for a value the message does not define.
+// "busy", and the pot's "no_such_ball", "no_such_pocket", "blocked", "too_thin", "no_stroke",
+// "target_unreachable" (cue_command_t's STATUS_*, the pot's words as planner/pot names them);
+// "status N" for a value the message does not define.
 std::string CueCommandStatusName(std::int8_t status);
+
+// "any", "direct", "bank", "kick", "curve" (shot_request_t's KIND_*, as planner/pot names them);
+// "kind N" for a value the message does not define.
+std::string PotKindName(std::int8_t kind);
 
 }  // namespace billiard::messages

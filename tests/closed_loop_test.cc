@@ -126,6 +126,98 @@ TEST(ClosedLoop, LockstepRunsReplayTheSameShots) {
   EXPECT_GT(a["stddev_miss_m"].get<double>(), 0.0);
 }
 
+// The pots of a committed scene (tests/data/), played by run_loop.sh through the three nodes.
+nlohmann::json PlayPots(const std::string& scene, const std::string& pots,
+                        const std::string& more_args = "") {
+  const nlohmann::json s = RunLoop("--scene " + std::string(POT_SCENES_DIR) + "/" + scene + " " +
+                                   pots + " " + more_args);
+  EXPECT_TRUE(s.is_object()) << scene;
+  return s.is_object() ? s["scene"]["pots"] : nlohmann::json::array();
+}
+
+// Each pot as the planner planned it from the estimator's view of the rendered frames, executed
+// by the table simulator with the robot's noise: ball K drops in pocket P, the cue
+// ball touches it first and stays on the table, and rests near the plan's rest (the noise moves
+// it by centimetres: 1 % of the cue speed alone is 2 % of the cue ball's run).
+TEST(ClosedLoop, PotsOnCommittedScenesDropThroughAllThreeNodesWithTheRobotsNoise) {
+  const struct {
+    const char* scene;
+    int ball;
+    const char* pocket;
+  } scenes[] = {{"pot_cut_corner.json", 5, "lower_left"},
+                {"pot_side_pocket.json", 3, "lower_middle"}};
+  for (const auto& k : scenes) {
+    const std::string pot = std::to_string(k.ball) + ":" + k.pocket;
+    const nlohmann::json pots = PlayPots(k.scene, "--pot " + pot, "--noise on --seed 1");
+    ASSERT_EQ(pots.size(), 1u) << k.scene;
+    const nlohmann::json& p = pots[0];
+    EXPECT_EQ(p["status"], "ok") << k.scene << ": " << p;
+    EXPECT_TRUE(p["potted"].get<bool>()) << k.scene << ": " << p;
+    EXPECT_EQ(p["dropped"], k.pocket) << p;
+    EXPECT_FALSE(p["scratch"].get<bool>()) << p;
+    EXPECT_EQ(p["first_contact"], k.ball) << p;
+    EXPECT_GT(p["margin_deg"][0].get<double>(), 0.0) << p;
+    EXPECT_LT(p["cue_rest_error_m"].get<double>(), 0.25) << p;
+  }
+  // Without the noise the cue ball rests where the plan said, but for the estimator's error in
+  // the balls' positions (a millimetre or two, turned by the cut).
+  const nlohmann::json quiet = PlayPots("pot_cut_corner.json", "--pot 5:lower_left", "--noise off");
+  ASSERT_EQ(quiet.size(), 1u);
+  EXPECT_TRUE(quiet[0]["potted"].get<bool>()) << quiet[0];
+  EXPECT_LT(quiet[0]["cue_rest_error_m"].get<double>(), 0.03) << quiet[0];
+}
+
+// `billiard loop` (the three nodes in one process, what run_loop.sh falls back to without
+// multicast) plays the same pot to the same bits: its planner pots on the scene's table too.
+TEST(ClosedLoop, APotInOneProcessIsThePotOfThreeProcesses) {
+  const std::string scene = std::string(POT_SCENES_DIR) + "/pot_side_pocket.json";
+  const nlohmann::json processes = PlayPots("pot_side_pocket.json", "--pot 3:lower_middle");
+  const CommandResult r = RunCommand(std::string(BILLIARD_BIN) + " loop --scene " + scene +
+                                     " --pot 3:lower_middle 2>/dev/null");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json one = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(one.is_object()) << r.out;
+  const nlohmann::json& pot = one["scene"]["pots"][0];
+  ASSERT_EQ(processes.size(), 1u);
+  EXPECT_TRUE(pot["potted"].get<bool>()) << pot;
+  for (const char* field : {"status", "kind", "margin_deg", "speed_window", "planned_cue_rest",
+                            "cue_rest", "dropped"}) {
+    EXPECT_EQ(pot[field], processes[0][field]) << field;
+  }
+}
+
+// Bad pot requests are refused with the planner's reason, nothing moves, and the planner goes on
+// to plan the next pot of the session.
+TEST(ClosedLoop, BadPotRequestsAreRefusedAndThePlannerGoesOnToPotTheNext) {
+  const nlohmann::json pots =
+      PlayPots("pot_cut_corner.json", "--pot 42:lower_left --pot 5:nowhere --pot 5:lower_left");
+  ASSERT_EQ(pots.size(), 3u) << pots;
+  EXPECT_EQ(pots[0]["status"], "no_such_ball") << pots[0];
+  EXPECT_NE(pots[0]["reason"].get<std::string>().find("42"), std::string::npos) << pots[0];
+  EXPECT_EQ(pots[1]["status"], "no_such_pocket") << pots[1];
+  EXPECT_NE(pots[1]["reason"].get<std::string>().find("nowhere"), std::string::npos) << pots[1];
+  for (int i : {0, 1}) {
+    EXPECT_FALSE(pots[i]["potted"].get<bool>()) << pots[i];
+    EXPECT_EQ(pots[i]["first_contact"], nullptr) << "the cue moved: " << pots[i];
+  }
+  EXPECT_EQ(pots[2]["status"], "ok") << pots[2];
+  EXPECT_TRUE(pots[2]["potted"].get<bool>()) << pots[2];
+
+  // A pot without a scene, or not K:P, is a usage error.
+  for (const char* args : {"--pot 5:lower_left", "--scene break --pot 5:lower_left"}) {
+    const CommandResult r =
+        RunCommand(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build " + args, true);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.out;
+    EXPECT_NE(r.out.find("--pot needs --scene FILE"), std::string::npos) << r.out;
+  }
+  const CommandResult bad =
+      RunCommand(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build " + "--scene " +
+                     POT_SCENES_DIR + "/pot_cut_corner.json --pot five:lower_left",
+                 true);
+  EXPECT_EQ(bad.status, 2) << bad.out;
+  EXPECT_NE(bad.out.find("--pot 'five:lower_left' is not K:P"), std::string::npos) << bad.out;
+}
+
 TEST(ClosedLoop, CtrlCStopsEveryProcess) {
   // Ctrl-C reaches the whole process group of the script (setsid gives it one of its own).
   const std::string script =

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "lcmtypes/billiard/ball_path_t.hpp"
 #include "lcmtypes/billiard/ball_state_t.hpp"
 #include "lcmtypes/billiard/cue_command_t.hpp"
 #include "lcmtypes/billiard/image_t.hpp"
@@ -55,7 +56,7 @@ TEST(Spy, CheckFindsEveryProjectType) {
     ++types;
     EXPECT_TRUE(check["decoded"].contains("billiard." + entry.path().stem().string())) << check;
   }
-  EXPECT_EQ(types, 6);
+  EXPECT_EQ(types, 7);
   EXPECT_EQ(check["decoded"].size(), static_cast<size_t>(types)) << check;
 }
 
@@ -65,6 +66,7 @@ TEST(Spy, CheckFingerprintsAreTheOnesTheNodesSend) {
   const nlohmann::json check = Check(BUILD_DIR, 0);
   ASSERT_TRUE(check.is_object());
   const nlohmann::json& decoded = check["decoded"];
+  EXPECT_EQ(decoded["billiard.ball_path_t"], Fingerprint<billiard::ball_path_t>());
   EXPECT_EQ(decoded["billiard.ball_state_t"], Fingerprint<billiard::ball_state_t>());
   EXPECT_EQ(decoded["billiard.cue_command_t"], Fingerprint<billiard::cue_command_t>());
   EXPECT_EQ(decoded["billiard.image_t"], Fingerprint<billiard::image_t>());
@@ -86,7 +88,7 @@ TEST(Spy, CheckFailsWhenTheJarLacksTheTypes) {
   fs::remove_all(dir);
   ASSERT_TRUE(check.is_object());
   EXPECT_EQ(check["decoded"], nlohmann::json::object()) << check;
-  EXPECT_EQ(check["missing"].size(), 6u) << check;
+  EXPECT_EQ(check["missing"].size(), 7u) << check;
 }
 
 TEST(Spy, CheckWithoutABuildSaysSoInOneLine) {

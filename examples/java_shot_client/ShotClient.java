@@ -81,6 +81,10 @@ public class ShotClient {
     request.target = new double[] {to[0], to[1]};
     request.final_speed = 0.0;
     request.spin = shot_request_t.SPIN_NATURAL;
+    // One ball to a point (MODE_TO_POINT, the default); Java's strings start null, which an LCM
+    // encoder cannot write.
+    request.mode = shot_request_t.MODE_TO_POINT;
+    request.pocket = "";
 
     final cue_command_t[] answer = {null};
     lcm.subscribe("CUE_COMMAND", new LCMSubscriber() {

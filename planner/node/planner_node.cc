@@ -11,6 +11,8 @@
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
+#include "sim/physics/ball_state.h"
 
 namespace billiard::planner_node {
 
@@ -32,11 +34,95 @@ int8_t ToMessageStatus(planner::PlanStatus status) {
   return cue_command_t::STATUS_INVALID;
 }
 
+int8_t ToMessageStatus(pot::PotStatus status) {
+  switch (status) {
+    case pot::PotStatus::kOk:
+      return cue_command_t::STATUS_OK;
+    case pot::PotStatus::kInvalid:
+      return cue_command_t::STATUS_INVALID;
+    case pot::PotStatus::kNoSuchBall:
+      return cue_command_t::STATUS_NO_SUCH_BALL;
+    case pot::PotStatus::kNoSuchPocket:
+      return cue_command_t::STATUS_NO_SUCH_POCKET;
+    case pot::PotStatus::kBlocked:
+      return cue_command_t::STATUS_BLOCKED;
+    case pot::PotStatus::kTooThin:
+      return cue_command_t::STATUS_TOO_THIN;
+    case pot::PotStatus::kNoStroke:
+      return cue_command_t::STATUS_NO_STROKE;
+    case pot::PotStatus::kTargetUnreachable:
+      return cue_command_t::STATUS_TARGET_UNREACHABLE;
+  }
+  return cue_command_t::STATUS_INVALID;
+}
+
+// shot_request_t's KIND_ constants and the pot planner's kinds (KIND_ANY: none).
+std::optional<pot::ShotKind> ToShotKind(int8_t kind) {
+  switch (kind) {
+    case shot_request_t::KIND_DIRECT:
+      return pot::ShotKind::kDirect;
+    case shot_request_t::KIND_BANK:
+      return pot::ShotKind::kBank;
+    case shot_request_t::KIND_KICK:
+      return pot::ShotKind::kKick;
+    case shot_request_t::KIND_CURVE:
+      return pot::ShotKind::kCurve;
+  }
+  return std::nullopt;
+}
+
+int8_t ToMessageKind(pot::ShotKind kind) {
+  switch (kind) {
+    case pot::ShotKind::kDirect:
+      return shot_request_t::KIND_DIRECT;
+    case pot::ShotKind::kBank:
+      return shot_request_t::KIND_BANK;
+    case pot::ShotKind::kKick:
+      return shot_request_t::KIND_KICK;
+    case pot::ShotKind::kCurve:
+      return shot_request_t::KIND_CURVE;
+  }
+  return shot_request_t::KIND_ANY;
+}
+
+// The ball `id` names among `balls`; with shot_request_t::BALL_BY_CLASS, the one of
+// `ball_class` the estimator is surest of, at least kMinClassConfidence. Ties by id: the answer
+// must not depend on the balls' order. nullptr when there is none.
+const ball_state_t* Named(const std::vector<const ball_state_t*>& balls, int32_t id,
+                          int8_t ball_class) {
+  const ball_state_t* surest = nullptr;
+  for (const ball_state_t* ball : balls) {
+    if (id != shot_request_t::BALL_BY_CLASS) {
+      if (ball->ball_id == id) return ball;
+      continue;
+    }
+    if (ball->ball_class != ball_class || ball->class_confidence < kMinClassConfidence) continue;
+    if (surest == nullptr || ball->class_confidence > surest->class_confidence ||
+        (ball->class_confidence == surest->class_confidence && ball->ball_id < surest->ball_id)) {
+      surest = ball;
+    }
+  }
+  return surest;
+}
+
+table::TableGeometry TableOf(const PlannerNodeOptions& options) {
+  return options.table ? *options.table
+                       : table::BuildTable(params::LoadTableSpec(kDefaultPotTable));
+}
+
 std::string Describe(const cue_command_t& c) {
   std::ostringstream line;
-  line << "request " << c.request_id << " (ball " << c.ball_id
-       << "): " << messages::CueCommandStatusName(c.status);
-  if (c.status == cue_command_t::STATUS_OK) {
+  line << "request " << c.request_id << " (ball " << c.ball_id;
+  if (c.mode == shot_request_t::MODE_POT) {
+    line << ", pot ball " << c.object_ball_id << " in " << c.pocket;
+  }
+  line << "): " << messages::CueCommandStatusName(c.status);
+  if (c.status == cue_command_t::STATUS_OK && c.mode == shot_request_t::MODE_POT) {
+    line << ": " << messages::PotKindName(c.kind) << ", cue " << c.cue_speed << " m/s, heading "
+         << c.heading << " rad, margin " << c.margin_deg[0] << "/" << c.margin_deg[1]
+         << " deg, cue ball rests at (" << c.cue_rest[0] << ", " << c.cue_rest[1] << "), "
+         << c.solve_us << " us";
+  } else if (c.status == cue_command_t::STATUS_OK) {
     line << ": cue " << c.cue_speed << " m/s, heading " << c.heading << " rad, miss "
          << c.refined_miss_m << " m, " << c.iterations << " iterations, " << c.solve_us << " us";
   } else {
@@ -46,12 +132,19 @@ std::string Describe(const cue_command_t& c) {
 }
 
 // The answer to `q` before anything is planned: its ids and the request's utime, so that the
-// answer is a function of the messages alone.
+// answer is a function of the messages alone; a pot's ball, pocket and kind when the request
+// passes its checks (those of one that does not may be anything).
 cue_command_t ReplyTo(const shot_request_t& q) {
   cue_command_t c{};
   c.utime = q.utime;
   c.request_id = q.request_id;
   c.ball_id = q.ball_id;
+  if (q.mode == shot_request_t::MODE_POT && messages::Check(q).empty()) {
+    c.mode = q.mode;
+    c.object_ball_id = q.object_ball_id;
+    c.pocket = q.pocket;
+    c.kind = q.kind;
+  }
   return c;
 }
 
@@ -116,6 +209,44 @@ void WritePlan(const planner::ShotPlan& plan, cue_command_t* c) {
   }
 }
 
+// The pot into the command, the balls named by the table state's ids (`message_id` of each of
+// the scene's ids). The stroke, like a point plan's, only with an ok plan.
+void WritePot(const pot::PotPlan& plan, const std::unordered_map<int, int32_t>& message_id,
+              cue_command_t* c) {
+  c->status = ToMessageStatus(plan.status);
+  if (plan.status != pot::PotStatus::kOk) {
+    c->reason = plan.reason.empty() ? pot::PotStatusName(plan.status) : plan.reason;
+    c->solve_us = plan.solve_us;
+    return;
+  }
+  c->cue_speed = plan.stroke.speed;
+  c->heading = plan.stroke.heading;
+  c->tip_side = plan.stroke.tip_side;
+  c->tip_height = plan.stroke.tip_height;
+  c->elevation = plan.stroke.elevation;
+  std::copy(plan.v0.data(), plan.v0.data() + 2, c->v0);
+  std::copy(plan.w0.data(), plan.w0.data() + 3, c->w0);
+  c->kind = ToMessageKind(plan.kind);
+  c->margin_deg[0] = plan.margin_left_deg;
+  c->margin_deg[1] = plan.margin_right_deg;
+  c->speed_window[0] = plan.speed_lo;
+  c->speed_window[1] = plan.speed_hi;
+  c->cue_rest[0] = c->predicted_final[0] = plan.cue_rest.x();
+  c->cue_rest[1] = c->predicted_final[1] = plan.cue_rest.y();
+  c->solve_us = plan.solve_us;
+  c->iterations = plan.simulations;
+  for (const pot::BallPath& path : plan.paths) {
+    ball_path_t out{};
+    out.ball_id = message_id.at(path.id);
+    for (const Eigen::Vector2d& p : path.points) out.points.push_back({p.x(), p.y()});
+    out.num_points = static_cast<int32_t>(out.points.size());
+    if (path.id == 0) c->path = out.points;
+    c->ball_paths.push_back(std::move(out));
+  }
+  c->num_path_points = static_cast<int32_t>(c->path.size());
+  c->num_ball_paths = static_cast<int32_t>(c->ball_paths.size());
+}
+
 // What goes out must pass the receiver's checks, or the answer is lost: a refusal keeps its
 // status without the measurements, and an ok that fails them is no ok.
 cue_command_t Sendable(const cue_command_t& c) {
@@ -126,6 +257,9 @@ cue_command_t Sendable(const cue_command_t& c) {
   refused.utime = c.utime;
   refused.request_id = c.request_id;
   refused.ball_id = c.ball_id;
+  refused.mode = c.mode;
+  refused.object_ball_id = c.object_ball_id;
+  refused.pocket = c.pocket;
   std::copy(c.start, c.start + 2, refused.start);
   return Refusal(refused, was_ok ? cue_command_t::STATUS_NOT_CONVERGED : c.status,
                  was_ok ? "the plan is not a valid command: " + why : c.reason);
@@ -138,6 +272,7 @@ PlannerNode::PlannerNode(lcm::LCM& lcm, physics::ModelParameters params, Planner
     : lcm_(lcm),
       params_(std::move(params)),
       options_(std::move(options)),
+      table_(TableOf(options_)),
       log_(log ? std::move(log) : Log([](const std::string& line) {
         std::cerr << "planner_node: " << line << std::endl;
       })),
@@ -176,6 +311,7 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   c.ball_id = state.ball_id;
   std::copy(state.position, state.position + 2, c.start);
   if (auto unfit = UnfitToPlanFrom(q, state)) return Refusal(c, unfit->status, unfit->reason);
+  if (q.mode == shot_request_t::MODE_POT) return AnswerPot(q, state, std::move(c));
   planner::ShotPlan plan;
   try {
     plan = planner::PlanShot(ToShotRequest(q, state), params_, options_.planner);
@@ -185,6 +321,87 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   }
   WritePlan(plan, &c);
   return Sendable(c);
+}
+
+cue_command_t PlannerNode::AnswerPot(const shot_request_t& q, const ball_state_t& cue,
+                                     cue_command_t c) const {
+  const ball_state_t* object = ObjectBallFor(q);
+  if (object == nullptr) {
+    std::ostringstream reason;
+    reason << "no ball "
+           << (q.object_ball_id == shot_request_t::BALL_BY_CLASS
+                   ? "of class " + std::to_string(q.object_ball_class) + " with a confidence of " +
+                         std::to_string(kMinClassConfidence) + " or more"
+                   : std::to_string(q.object_ball_id))
+           << " in the latest table state";
+    return Refusal(c, cue_command_t::STATUS_NO_SUCH_BALL, reason.str());
+  }
+  c.object_ball_id = object->ball_id;
+  if (object->ball_id == cue.ball_id) {
+    return Refusal(c, cue_command_t::STATUS_NO_SUCH_BALL,
+                   "ball " + std::to_string(cue.ball_id) + " is the ball struck, not one to pot");
+  }
+  pot::PotRequest request;
+  request.pocket = q.pocket;
+  request.kind = ToShotKind(q.kind);
+  if (q.has_cue_target) {
+    const Eigen::Vector2d point(q.cue_target[0], q.cue_target[1]);
+    if (!table_.OnSurface(point, params_.ball.radius)) {
+      std::ostringstream reason;
+      reason << "the cue-ball target (" << point.x() << ", " << point.y() << ") is off the "
+             << table_.name << " table's playing surface";
+      return Refusal(c, cue_command_t::STATUS_OFF_TABLE, reason.str());
+    }
+    request.cue_target = pot::CueTarget{point, q.cue_radius};
+  }
+  // The scene: the cue ball id 0, the others by their ids (one that is 0 takes a free id), all
+  // at rest where they were seen.
+  std::unordered_map<int, int32_t> message_id;
+  std::vector<table::SceneBall> balls;
+  int32_t free_id = 1;
+  for (const ball_state_t& b : latest_table_->balls) free_id = std::max(free_id, b.ball_id + 1);
+  for (const ball_state_t& b : latest_table_->balls) {
+    const double speed = std::hypot(b.velocity[0], b.velocity[1]);
+    if (speed > options_.max_ball_speed) {
+      std::ostringstream reason;
+      reason << "ball " << b.ball_id << " is moving (" << speed << " m/s, more than "
+             << options_.max_ball_speed << " m/s)";
+      return Refusal(c, cue_command_t::STATUS_INVALID, reason.str());
+    }
+    const int scene_id = b.ball_id == cue.ball_id ? 0 : b.ball_id == 0 ? free_id : b.ball_id;
+    message_id[scene_id] = b.ball_id;
+    if (b.ball_id == object->ball_id) request.ball = scene_id;
+    balls.push_back(
+        {scene_id, physics::MakeBallState(b.position[0], b.position[1], 0, 0, 0, 0, 0)});
+  }
+  // By id, so that the plan does not depend on the publisher's order.
+  std::sort(balls.begin(), balls.end(),
+            [](const table::SceneBall& a, const table::SceneBall& b) { return a.id < b.id; });
+  pot::PotPlan plan;
+  try {
+    plan = pot::PlanPot(table_, params_, balls, request, options_.pot);
+  } catch (const std::exception& e) {
+    return Refusal(c, cue_command_t::STATUS_NOT_CONVERGED,
+                   std::string("pot planner failed: ") + e.what());
+  }
+  WritePot(plan, message_id, &c);
+  return Sendable(c);
+}
+
+const ball_state_t* PlannerNode::ObjectBallFor(const shot_request_t& q) const {
+  return Named(Candidates(q), q.object_ball_id, q.object_ball_class);
+}
+
+std::vector<const ball_state_t*> PlannerNode::Candidates(const shot_request_t& q) const {
+  std::vector<const ball_state_t*> balls;
+  if (q.mode == shot_request_t::MODE_POT) {
+    if (latest_table_) {
+      for (const ball_state_t& b : latest_table_->balls) balls.push_back(&b);
+    }
+  } else {
+    for (const auto& [id, b] : balls_) balls.push_back(&b);
+  }
+  return balls;
 }
 
 std::optional<PlannerNode::Unfit> PlannerNode::UnfitToPlanFrom(const shot_request_t& q,
@@ -208,25 +425,13 @@ std::optional<PlannerNode::Unfit> PlannerNode::UnfitToPlanFrom(const shot_reques
 }
 
 const ball_state_t* PlannerNode::BallFor(const shot_request_t& q) const {
-  if (q.ball_id != shot_request_t::BALL_BY_CLASS) {
-    const auto ball = balls_.find(q.ball_id);
-    return ball == balls_.end() ? nullptr : &ball->second;
-  }
-  const ball_state_t* surest = nullptr;
-  for (const auto& [id, ball] : balls_) {
-    if (ball.ball_class != q.ball_class || ball.class_confidence < kMinClassConfidence) continue;
-    // Ties by id: the answer must not depend on the map's order.
-    if (surest == nullptr || ball.class_confidence > surest->class_confidence ||
-        (ball.class_confidence == surest->class_confidence && ball.ball_id < surest->ball_id)) {
-      surest = &ball;
-    }
-  }
-  return surest;
+  return Named(Candidates(q), q.ball_id, q.ball_class);
 }
 
 std::int64_t PlannerNode::StateUtime(const shot_request_t& q) const {
   const ball_state_t* ball = BallFor(q);
-  return ball == nullptr ? -1 : ball->utime;
+  if (ball == nullptr) return -1;
+  return q.mode == shot_request_t::MODE_POT ? latest_table_->utime : ball->utime;
 }
 
 void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
@@ -252,10 +457,12 @@ void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string
         log_(channel + ": a new clock at utime " + std::to_string(state.utime) +
              ": the balls known so far are forgotten");
         balls_.clear();
+        latest_table_.reset();
         answered_.clear();
         break;
     }
     for (const ball_state_t& ball : state.balls) balls_.insert_or_assign(ball.ball_id, ball);
+    latest_table_ = std::move(state);
     while (balls_.size() > kMaxRememberedBalls) {
       balls_.erase(std::min_element(balls_.begin(), balls_.end(), [](const auto& a, const auto& b) {
         return a.second.utime < b.second.utime;
@@ -295,10 +502,7 @@ void PlannerNode::OnShotRequest(const lcm::ReceiveBuffer* rbuf, const std::strin
       }
     }
     if (waiting_.size() >= static_cast<std::size_t>(options_.queue_capacity)) {
-      cue_command_t busy{};
-      busy.utime = request.utime;
-      busy.request_id = request.request_id;
-      busy.ball_id = request.ball_id;
+      cue_command_t busy = ReplyTo(request);
       busy.status = cue_command_t::STATUS_BUSY;
       busy.reason =
           "the planner's queue is full (" + std::to_string(waiting_.size()) + " requests waiting)";

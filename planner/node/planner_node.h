@@ -1,10 +1,18 @@
-// The planner node: answers every SHOT_REQUEST with a CUE_COMMAND planned (shot_planner.h) from
-// the latest TABLE_STATE.
+// The planner node: answers every SHOT_REQUEST with a CUE_COMMAND planned from the latest
+// TABLE_STATE: one ball to a point (MODE_TO_POINT, shot_planner.h) or a pot (MODE_POT,
+// planner/pot/pot_planner.h).
 //
 //   TABLE_STATE   table_state_t    keeps the latest state received of each ball_id (a message
 //                                  naming some balls leaves the others as they were)
 //   SHOT_REQUEST  shot_request_t   one cue_command_t per request, ok or refused
 //   CUE_COMMAND   cue_command_t    utime, request_id and ball_id of the request
+//
+// A pot is planned on the node's table (PlannerNodeOptions::table) among the balls of the latest
+// TABLE_STATE, every ball its publisher knows of (one it no longer names is gone: pocketed, or
+// lost by the estimator), each at rest where it was seen; the cue ball and the object ball are
+// looked for there. The struck ball is the cue ball (id 0
+// of pot::PlanPot's scene, whatever the estimator calls it); the answer names the balls, in
+// object_ball_id and the paths, by the table state's ids.
 //
 // The answer depends only on the messages received, never on the clock: its utime is the
 // request's, so a logged run replays to the same commands (all but solve_us, the planning wall
@@ -21,7 +29,13 @@
 //   STATUS_BUSY           the queue of requests waiting to be planned was full
 //   STATUS_NOT_CONVERGED  also when the planner throws (an integrator giving up): the request
 //                         gets an answer all the same
-//   the others            PlanShot's status (shot_planner.h)
+//   STATUS_OFF_TABLE      also a pot's cue-ball target off the table's playing surface
+//   STATUS_NO_SUCH_BALL   a pot's object ball is not in the latest table state (by id, or by
+//                         class at kMinClassConfidence), or is the struck ball
+//   STATUS_INVALID        also a pot among balls that overlap or lie off the table, or with any
+//                         of them moving faster than max_ball_speed
+//   the others            PlanShot's status (shot_planner.h) or PlanPot's (no_such_pocket,
+//                         blocked, too_thin, no_stroke, target_unreachable; pot_planner.h)
 //
 // Requests wait in a bounded queue and are planned one at a time by Work(), so a burst of them
 // costs bounded memory and each gets an answer: planned, or refused busy at once. A request
@@ -48,10 +62,14 @@
 #include "lcmtypes/billiard/ball_state_t.hpp"
 #include "lcmtypes/billiard/cue_command_t.hpp"
 #include "lcmtypes/billiard/shot_request_t.hpp"
+#include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/node/message_clock.h"
 #include "lcmtypes/node/node_health.h"
+#include "planner/pot/pot_planner.h"
 #include "planner/shot_planner.h"
 #include "sim/physics/parameters.h"
+#include "sim/table/scene.h"
+#include "sim/table/table_geometry.h"
 
 namespace billiard::planner_node {
 
@@ -65,7 +83,13 @@ struct PlannerNodeOptions {
   double max_state_age = 1.0;
   // Requests waiting to be planned; more are answered STATUS_BUSY.
   int queue_capacity = 32;
+  // The table pots are planned on (its cushions and pockets); kDefaultPotTable when not given.
+  std::optional<table::TableGeometry> table;
+  pot::PotOptions pot;
 };
+
+// The table of a node started without one: the table of the default parameter set's size.
+inline constexpr char kDefaultPotTable[] = "pool-9ft";
 
 // At most this many balls are remembered; beyond it the longest unseen is forgotten.
 inline constexpr std::size_t kMaxRememberedBalls = 256;
@@ -118,6 +142,15 @@ class PlannerNode {
   };
   std::optional<Unfit> UnfitToPlanFrom(const shot_request_t& q, const ball_state_t& s) const;
 
+  // The pot of a checked MODE_POT request, struck at `cue` (whose state is fit to plan from),
+  // into `c` (the reply with the cue ball's id and start).
+  cue_command_t AnswerPot(const shot_request_t& q, const ball_state_t& cue, cue_command_t c) const;
+  // The pot's object ball, by id or by class; nullptr when there is none.
+  const ball_state_t* ObjectBallFor(const shot_request_t& q) const;
+  // The balls a request's balls are looked for among: a pot's, the latest table state's; a
+  // point request's, the latest state of every ball.
+  std::vector<const ball_state_t*> Candidates(const shot_request_t& q) const;
+
   // Raw handlers: the node decodes the payload itself so that a failure is logged its way.
   void OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
   void OnShotRequest(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
@@ -125,16 +158,19 @@ class PlannerNode {
   lcm::LCM& lcm_;
   const physics::ModelParameters params_;
   const PlannerNodeOptions options_;
+  const table::TableGeometry table_;
   void Publish(const cue_command_t& command, nodes::NodeHealth::Clock::time_point arrived);
-  // The ball a request is for: by its id, or by class the one the estimator is surest of (at
+  // The ball a request strikes: by its id, or by class the one the estimator is surest of (at
   // least kMinClassConfidence); nullptr when the table state has none.
   const ball_state_t* BallFor(const shot_request_t& q) const;
-  // The utime of that ball's latest state, -1 if none.
+  // The utime of that ball's latest state (a pot's: of the latest table state, which its answer
+  // depends on), -1 if none.
   std::int64_t StateUtime(const shot_request_t& q) const;
 
   const Log log_;
   nodes::NodeHealth health_;
   std::unordered_map<int32_t, ball_state_t> balls_;
+  std::optional<table_state_t> latest_table_;
   nodes::MessageClock state_clock_;
   std::deque<Waiting> waiting_;
   std::deque<Answered> answered_;

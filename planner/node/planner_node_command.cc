@@ -8,6 +8,7 @@
 #include "lcmtypes/names.h"
 #include "lcmtypes/node/node_loop.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
 
 namespace billiard::planner_node {
 
@@ -27,10 +28,15 @@ void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line) {
   app.add_option("--queue-capacity", options.queue_capacity,
                  "Requests waiting to be planned; more are answered busy")
       ->capture_default_str();
+  app.add_option("--table", line->table,
+                 "The table pots are planned on: a built-in table (pool-9ft, snooker-12ft, ...) or "
+                 "a table file")
+      ->capture_default_str();
   app.add_flag("--no-refine", line->no_refine, "Plan with the closed-form inverse alone");
 }
 
-PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line) {
+PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line,
+                               const physics::ModelParameters& params) {
   PlannerNodeOptions options = line.options;
   if (!(std::isfinite(options.max_ball_speed) && options.max_ball_speed >= 0.0)) {
     throw std::invalid_argument("--max-ball-speed must be a finite speed >= 0");
@@ -41,6 +47,14 @@ PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line) {
   if (options.queue_capacity < 1)
     throw std::invalid_argument("--queue-capacity must be at least 1");
   options.planner.refine = !line.no_refine;
+  options.table = table::BuildTable(params::LoadTableSpec(line.table));
+  // The point planner's bounds are the parameter set's table: both must be the one table.
+  if (std::abs(options.table->length - params.table.length) > 1e-9 ||
+      std::abs(options.table->width - params.table.width) > 1e-9) {
+    throw std::invalid_argument("--table " + line.table +
+                                " is not the size of the parameter "
+                                "set's table");
+  }
   return options;
 }
 
@@ -48,8 +62,8 @@ int RunPlannerNodeCommand(const PlannerNodeCommandLine& line) {
   PlannerNodeOptions options;
   physics::ModelParameters params;
   try {
-    options = NodeOptions(line);
     params = params::LoadParameters(line.params);
+    options = NodeOptions(line, params);
   } catch (const std::invalid_argument& e) {
     std::cerr << "planner_node: " << e.what() << std::endl;
     return 2;

@@ -13,6 +13,7 @@ namespace billiard::planner_node {
 struct PlannerNodeCommandLine {
   std::string lcm_url;  // empty: $LCM_DEFAULT_URL, else LCM's default
   std::string params = params::kDefaultParameterSet;
+  std::string table = kDefaultPotTable;  // a built-in table or a table file (table_specs.h)
   PlannerNodeOptions options;
   bool no_refine = false;
 };
@@ -20,9 +21,11 @@ struct PlannerNodeCommandLine {
 // Adds the node's options to `app`, filling `line` when it parses.
 void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line);
 
-// The node's options from a parsed command line; throws std::invalid_argument with a one-line
-// reason when they make no node (a negative or non-finite limit, an empty queue).
-PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line);
+// The node's options from a parsed command line, with `params`; throws std::invalid_argument
+// with a one-line reason when they make no node (a negative or non-finite limit, an empty queue,
+// a table that does not load or is not the size of the parameter set's).
+PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line,
+                               const physics::ModelParameters& params);
 
 // Runs the node: 2 for options or parameters that make no node (the reason on stderr), else the
 // status of nodes::RunNodeUntilStopped.

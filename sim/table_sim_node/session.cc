@@ -12,6 +12,29 @@
 
 namespace billiard::table_sim_node {
 
+namespace {
+
+// "K:P": a ball id and a pocket's name.
+PotShot ParsePot(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  PotShot pot;
+  std::size_t used = 0;
+  try {
+    if (colon != std::string::npos) pot.ball = std::stoi(text.substr(0, colon), &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (colon == std::string::npos || used == 0 || used != colon || pot.ball < 0 ||
+      colon + 1 == text.size()) {
+    throw std::invalid_argument("--pot '" + text +
+                                "' is not K:P (a ball id >= 0, a pocket's name)");
+  }
+  pot.pocket = text.substr(colon + 1);
+  return pot;
+}
+
+}  // namespace
+
 ExecutionNoise RobotExecutionNoise() { return {0.01, 0.1 * M_PI / 180.0, 0.5e-3}; }
 
 void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
@@ -44,6 +67,11 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
                  "A whole-table session instead of the shots: break (the eight-ball rack of "
                  "--seed on pool-9ft) or a scene file (every ball at rest); the cue ball is "
                  "struck once, rolling, at the ball nearest it");
+  app.add_option("--pot", line->pots,
+                 "--scene: pot ball K (the scene's id) in pocket P (lower_left, ..., upper_right) "
+                 "instead of the strike at the nearest ball, planned by the planner from the "
+                 "estimator's view; again for more pots in turn")
+      ->type_name("K:P");
   app.add_option("--break-speed", options.break_speed,
                  "--scene: the cue ball's speed where it meets the first ball [m/s]")
       ->capture_default_str();
@@ -62,6 +90,10 @@ TableSimOptions SessionOptions(const SessionCommandLine& line) {
   const FaultInjection& f = options.faults;
   if (f.drop_frames + f.reorder_frames + f.duplicate > 1.0) {
     throw std::invalid_argument("the fault probabilities add up to more than 1");
+  }
+  for (const std::string& pot : line.pots) options.pots.push_back(ParsePot(pot));
+  if (!options.pots.empty() && options.scene.empty()) {
+    throw std::invalid_argument("--pot needs a --scene to pot in");
   }
   options.lockstep = !line.realtime;
   if (line.noise == "on") options.noise = RobotExecutionNoise();
@@ -104,6 +136,8 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
     } else {
       scene = node.RunScene();
       shots = {scene->shot};
+      if (!scene->pots.empty()) shots.clear();
+      for (const PotResult& pot : scene->pots) shots.push_back(pot.shot);
     }
   } catch (const PeerMismatch& e) {
     return fail(e.what(), 3);
@@ -163,6 +197,26 @@ nlohmann::json SceneSummary(const SceneResult& scene, const std::string& name) {
     ball["pocketed"] =
         scene.pockets[k].empty() ? nlohmann::json() : nlohmann::json(scene.pockets[k]);
     j["balls"].push_back(ball);
+  }
+  for (const PotResult& pot : scene.pots) {
+    const ShotResult& shot = pot.shot;
+    nlohmann::json p = {{"ball", pot.asked.ball}, {"pocket", pot.asked.pocket},
+                        {"status", shot.status},  {"potted", pot.potted},
+                        {"scratch", pot.scratch}, {"plan_ms", shot.plan_ms},
+                        {"retries", shot.retries}};
+    p["dropped"] = pot.dropped.empty() ? nlohmann::json() : nlohmann::json(pot.dropped);
+    p["first_contact"] =
+        pot.first_contact < 0 ? nlohmann::json() : nlohmann::json(pot.first_contact);
+    if (!shot.reason.empty()) p["reason"] = shot.reason;
+    if (shot.status == "ok") {
+      p["kind"] = pot.kind;
+      p["margin_deg"] = {pot.margin_left_deg, pot.margin_right_deg};
+      p["speed_window"] = {pot.speed_lo, pot.speed_hi};
+      p["planned_cue_rest"] = {shot.target.x(), shot.target.y()};
+      p["cue_rest_error_m"] = shot.miss_m;
+    }
+    p["cue_rest"] = {shot.final_point.x(), shot.final_point.y()};
+    j["pots"].push_back(p);
   }
   const TrackingReport& t = scene.tracking;
   double sum = 0.0, worst = 0.0;

@@ -25,6 +25,7 @@ struct SessionCommandLine {
   std::string params = params::kDefaultParameterSet;
   std::string noise = "off";  // "on": the robot's execution noise of kExecutionNoise
   bool realtime = false;
+  std::vector<std::string> pots;  // --pot K:P, in order
   TableSimOptions options;
 };
 
@@ -36,7 +37,8 @@ ExecutionNoise RobotExecutionNoise();
 void AddSessionOptions(CLI::App& app, SessionCommandLine* line);
 
 // The options of a parsed command line; throws std::invalid_argument with a one-line reason when
-// they do not make a session (non-positive counts or rates, fault probabilities above 1).
+// they do not make a session (non-positive counts or rates, fault probabilities above 1, a --pot
+// that is not K:P with K a ball id, or one without --scene).
 TableSimOptions SessionOptions(const SessionCommandLine& line);
 
 // The simulated overhead camera of `table`.
@@ -62,8 +64,10 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
                               double wall_s);
 
 // What a whole-table session adds (the summary's "scene"): the events, where every ball ended
-// (and the pocket it dropped into), and how the estimator tracked each ball (RMS and largest
-// error, frames without a track, swaps of tracks between balls).
+// (and the pocket it dropped into), how the estimator tracked each ball (RMS and largest error,
+// frames without a track, swaps of tracks between balls), and with pots, "pots": each one's ball
+// and pocket, the planner's status, reason, kind, margin and speed window, whether it dropped
+// (and where), a scratch, the cue ball's first contact, and its rest against the plan's.
 nlohmann::json SceneSummary(const SceneResult& scene, const std::string& name);
 
 }  // namespace billiard::table_sim_node

@@ -14,6 +14,7 @@
 #include "lcmtypes/names.h"
 #include "lcmtypes/node/node_loop.h"
 #include "lcmtypes/version.h"
+#include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/scene_file.h"
 #include "sim/params/table_specs.h"
@@ -279,26 +280,32 @@ void TableSimNode::ShowAtRest(const std::vector<table::SceneBall>& balls) {
   }
 }
 
+std::optional<std::int32_t> TableSimNode::NearestTrack(const Eigen::Vector2d& at) const {
+  std::optional<std::int32_t> track;
+  double nearest = 1e300;
+  for (const ball_state_t& b : state_->balls) {
+    const double d = std::hypot(b.position[0] - at.x(), b.position[1] - at.y());
+    if (d < nearest) {
+      nearest = d;
+      track = b.ball_id;
+    }
+  }
+  return track;
+}
+
 cue_command_t TableSimNode::Request(int shot, const std::vector<table::SceneBall>& shown,
                                     const Eigen::Vector2d& ball, const shot_request_t& ask,
-                                    ShotResult& result) {
+                                    ShotResult& result,
+                                    const std::optional<Eigen::Vector2d>& object) {
   for (;;) {
     ShowAtRest(shown);
     WaitFor([&] { return state_ && state_->num_balls > 0; }, "TABLE_STATE with the ball", nullptr);
     shot_request_t request = ask;
     request.utime = Utime(time_);
     request.request_id = shot;
-    if (request.ball_id != shot_request_t::BALL_BY_CLASS) {
-      // The estimator names balls by its tracks: ask for the one it sees nearest the ball.
-      double nearest = 1e300;
-      for (const ball_state_t& b : state_->balls) {
-        const double d = std::hypot(b.position[0] - ball.x(), b.position[1] - ball.y());
-        if (d < nearest) {
-          nearest = d;
-          request.ball_id = b.ball_id;
-        }
-      }
-    }
+    // The estimator names balls by its tracks: ask for the one it sees nearest the ball.
+    if (request.ball_id != shot_request_t::BALL_BY_CLASS) request.ball_id = *NearestTrack(ball);
+    if (object) request.object_ball_id = NearestTrack(*object).value_or(request.object_ball_id);
     Publish(messages::kShotRequestChannel, request);
     if (std::uniform_real_distribution<double>(0.0, 1.0)(fault_rng_) < options_.faults.duplicate) {
       health_.Count("request_duplicated");
@@ -435,55 +442,20 @@ std::vector<ShotResult> TableSimNode::Run() {
   return results;
 }
 
-SceneResult TableSimNode::RunScene() {
-  AwaitPeersOfTheSameBuildAndPhysics();
-  const auto [geometry, balls] = LoadSessionScene(options_, params_);
-  const auto cue = std::find_if(balls.begin(), balls.end(),
-                                [](const table::SceneBall& b) { return b.id == kCueBall; });
-  if (cue == balls.end()) throw std::invalid_argument(options_.scene + ": no cue ball (id 0)");
-  const Eigen::Vector2d cue_at = cue->state.head<2>();
-  // The ball to hit: the nearest to the cue ball; the target, the cue ball's centre at contact.
-  const table::SceneBall* object = nullptr;
-  for (const table::SceneBall& b : balls) {
-    if (b.id == kCueBall) continue;
-    if (object == nullptr ||
-        (b.state.head<2>() - cue_at).norm() < (object->state.head<2>() - cue_at).norm()) {
-      object = &b;
-    }
-  }
-  if (object == nullptr) throw std::invalid_argument(options_.scene + ": no ball to strike at");
-  const Eigen::Vector2d to_object = object->state.head<2>() - cue_at;
-  SceneResult result;
-  result.shot.target = object->state.head<2>() - 2.0 * params_.ball.radius * to_object.normalized();
-
-  health_.Set(messages::kRealtimeClockSetting, options_.lockstep ? 0 : 1);
-  health_.Publish(lcm_);
-  tracking_ = TrackingReport{};
-  for (const table::SceneBall& b : balls) tracking_->balls.push_back({b.id});
-  shot_request_t ask{};
-  // The robot strikes the cue ball, which the estimator tells from the others by its colours.
-  ask.ball_id = shot_request_t::BALL_BY_CLASS;
-  ask.ball_class = ball_state_t::CLASS_CUE;
-  ask.target[0] = result.shot.target.x();
-  ask.target[1] = result.shot.target.y();
-  ask.final_speed = options_.break_speed;
-  ask.spin = shot_request_t::SPIN_NATURAL;
-  const cue_command_t command = Request(0, balls, cue_at, ask, result.shot);
-  result.shot.status = messages::CueCommandStatusName(command.status);
-  result.shot.reason = command.reason;
-  result.shot.plan_ms = 1e-3 * command.solve_us;
+table::TableSimulation TableSimNode::PlayOut(const table::TableGeometry& geometry,
+                                             const std::vector<table::SceneBall>& balls,
+                                             const cue_command_t& command,
+                                             const table::TableSimulationOptions& motion) {
   std::vector<table::SceneBall> struck = balls;
   if (command.status == cue_command_t::STATUS_OK) {
     const physics::CueStroke stroke =
         WithNoise({command.cue_speed, command.heading, command.tip_side, command.tip_height,
                    command.elevation});
     for (table::SceneBall& b : struck) {
-      if (b.id == kCueBall) b.state = physics::StrikeBall(stroke, cue_at, params_);
+      if (b.id == kCueBall) b.state = physics::StrikeBall(stroke, b.state.head<2>(), params_);
     }
-  } else {
-    log_("the break refused: " + result.shot.status + ", " + result.shot.reason);
   }
-  table::TableSimulation sim(geometry, params_, struck);
+  table::TableSimulation sim(geometry, params_, struck, motion);
   sim.Run(kLongestScene);
   const double t_strike = time_;
   const double frame_dt = 1.0 / options_.camera_rate;
@@ -499,6 +471,143 @@ SceneResult TableSimNode::RunScene() {
     }
     Frame(on_table, time_);
   }
+  return sim;
+}
+
+PotResult TableSimNode::PlayPot(int id, const PotShot& pot, const table::TableGeometry& geometry,
+                                std::vector<table::SceneBall>& balls, SceneResult& scene) {
+  PotResult result;
+  result.asked = pot;
+  const auto find = [&](int ball) {
+    return std::find_if(balls.begin(), balls.end(),
+                        [ball](const table::SceneBall& b) { return b.id == ball; });
+  };
+  const Eigen::Vector2d cue_at = find(kCueBall)->state.head<2>();
+  std::optional<Eigen::Vector2d> object;
+  if (find(pot.ball) != balls.end()) object = find(pot.ball)->state.head<2>();
+  shot_request_t ask{};
+  ask.ball_id = shot_request_t::BALL_BY_CLASS;
+  ask.ball_class = ball_state_t::CLASS_CUE;
+  ask.mode = shot_request_t::MODE_POT;
+  ask.object_ball_id = pot.ball;  // the track nearest it when the scene has the ball
+  ask.pocket = pot.pocket;
+  const cue_command_t command = Request(id, balls, cue_at, ask, result.shot, object);
+  result.shot.status = messages::CueCommandStatusName(command.status);
+  result.shot.reason = command.reason;
+  result.shot.plan_ms = 1e-3 * command.solve_us;
+  result.shot.target = {command.cue_rest[0], command.cue_rest[1]};
+  if (command.status == cue_command_t::STATUS_OK) {
+    result.kind = messages::PotKindName(command.kind);
+    result.margin_left_deg = command.margin_deg[0];
+    result.margin_right_deg = command.margin_deg[1];
+    result.speed_lo = command.speed_window[0];
+    result.speed_hi = command.speed_window[1];
+  } else {
+    result.shot.target = cue_at;
+    log_("pot " + std::to_string(id) + " of ball " + std::to_string(pot.ball) + " in " +
+         pot.pocket + " refused: " + result.shot.status + ", " + result.shot.reason);
+  }
+  // The motion `billiard simulate --scene` runs by default, which the planner checks its pots
+  // against: the closed form alone would leave a cue ball that slides off a cut centimetres from
+  // where the 5-DOF model does.
+  table::TableSimulationOptions motion;
+  motion.five_dof = model_choice::TableMotion(params_);
+  const table::TableSimulation sim = PlayOut(geometry, balls, command, motion);
+  for (const table::TableEvent& e : sim.events()) {
+    if (e.type == table::EventType::kBallBall && (e.ball == kCueBall || e.other == kCueBall)) {
+      result.first_contact = e.ball == kCueBall ? e.other : e.ball;
+      break;
+    }
+  }
+  balls.clear();
+  scene.final_balls.clear();
+  scene.pockets.clear();
+  for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+    const std::string pocket = sim.pocket(i).value_or("");
+    if (sim.id(i) == pot.ball) result.dropped = pocket;
+    if (sim.id(i) == kCueBall) {
+      result.scratch = !pocket.empty();
+      result.shot.final_point = sim.State(i).head<2>();
+    }
+    scene.final_balls.push_back({sim.id(i), sim.State(i)});
+    scene.pockets.push_back(pocket);
+    if (pocket.empty()) balls.push_back({sim.id(i), sim.State(i)});
+  }
+  result.potted = !result.dropped.empty() && result.dropped == pot.pocket;
+  result.shot.miss_m = (result.shot.final_point - result.shot.target).norm();
+  scene.events += static_cast<int>(sim.events().size());
+  std::ostringstream line;
+  line.precision(4);
+  line << "pot " << id << ": ball " << pot.ball << " in " << pot.pocket << ": "
+       << result.shot.status;
+  if (command.status == cue_command_t::STATUS_OK) {
+    line << ", " << result.kind << ", " << (result.potted ? "potted" : "missed")
+         << (result.scratch ? ", scratch" : "") << ", the cue ball rests "
+         << 1e3 * result.shot.miss_m << " mm from the plan's rest";
+  }
+  log_(line.str());
+  return result;
+}
+
+SceneResult TableSimNode::RunScene() {
+  AwaitPeersOfTheSameBuildAndPhysics();
+  auto [geometry, balls] = LoadSessionScene(options_, params_);
+  const auto cue = std::find_if(balls.begin(), balls.end(),
+                                [](const table::SceneBall& b) { return b.id == kCueBall; });
+  if (cue == balls.end()) throw std::invalid_argument(options_.scene + ": no cue ball (id 0)");
+  const Eigen::Vector2d cue_at = cue->state.head<2>();
+  // The ball to hit: the nearest to the cue ball; the target, the cue ball's centre at contact.
+  const table::SceneBall* object = nullptr;
+  for (const table::SceneBall& b : balls) {
+    if (b.id == kCueBall) continue;
+    if (object == nullptr ||
+        (b.state.head<2>() - cue_at).norm() < (object->state.head<2>() - cue_at).norm()) {
+      object = &b;
+    }
+  }
+  if (object == nullptr) throw std::invalid_argument(options_.scene + ": no ball to strike at");
+
+  health_.Set(messages::kRealtimeClockSetting, options_.lockstep ? 0 : 1);
+  health_.Publish(lcm_);
+  tracking_ = TrackingReport{};
+  for (const table::SceneBall& b : balls) tracking_->balls.push_back({b.id});
+  SceneResult result;
+  if (!options_.pots.empty()) {
+    for (std::size_t k = 0; k < options_.pots.size(); ++k) {
+      result.pots.push_back(
+          PlayPot(static_cast<int>(k), options_.pots[k], geometry, balls, result));
+      if (std::none_of(balls.begin(), balls.end(),
+                       [](const table::SceneBall& b) { return b.id == kCueBall; })) {
+        log_("the cue ball is off the table: the pots after " + std::to_string(k) +
+             " are not played");
+        break;
+      }
+    }
+    result.shot = result.pots.back().shot;
+    result.tracking = *tracking_;
+    tracking_.reset();
+    health_.PublishIfDue(lcm_);
+    return result;
+  }
+
+  const Eigen::Vector2d to_object = object->state.head<2>() - cue_at;
+  result.shot.target = object->state.head<2>() - 2.0 * params_.ball.radius * to_object.normalized();
+  shot_request_t ask{};
+  // The robot strikes the cue ball, which the estimator tells from the others by its colours.
+  ask.ball_id = shot_request_t::BALL_BY_CLASS;
+  ask.ball_class = ball_state_t::CLASS_CUE;
+  ask.target[0] = result.shot.target.x();
+  ask.target[1] = result.shot.target.y();
+  ask.final_speed = options_.break_speed;
+  ask.spin = shot_request_t::SPIN_NATURAL;
+  const cue_command_t command = Request(0, balls, cue_at, ask, result.shot);
+  result.shot.status = messages::CueCommandStatusName(command.status);
+  result.shot.reason = command.reason;
+  result.shot.plan_ms = 1e-3 * command.solve_us;
+  if (command.status != cue_command_t::STATUS_OK) {
+    log_("the break refused: " + result.shot.status + ", " + result.shot.reason);
+  }
+  const table::TableSimulation sim = PlayOut(geometry, balls, command, {});
   // The miss: the cue ball's centre where it first meets a ball, against the contact point.
   result.shot.final_point = sim.State(0).head<2>();
   for (const table::TableEvent& e : sim.events()) {

@@ -47,6 +47,7 @@
 #include "sim/render/table_renderer.h"
 #include "sim/table/scene.h"
 #include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
 
 namespace billiard::table_sim_node {
 
@@ -62,6 +63,12 @@ struct FaultInjection {
   double reorder_frames = 0.0;  // a frame is held back and sent after the next one
   double duplicate = 0.0;       // a frame or a request is sent twice
   std::uint32_t seed = 7;
+};
+
+// A pot to play in a whole-table session: ball `ball` (the truth's id) into pocket `pocket`.
+struct PotShot {
+  int ball = 0;
+  std::string pocket;
 };
 
 struct TableSimOptions {
@@ -85,6 +92,11 @@ struct TableSimOptions {
   // break_speed.
   std::string scene;
   double break_speed = 5.0;  // [m/s]
+  // With a scene, these pots in turn instead of the one strike: each asked of the planner
+  // (shot_request_t::MODE_POT, the object ball the estimator's track nearest ball K, or K itself
+  // when the scene has no ball K), executed with the noise and played out from where the last
+  // left the balls.
+  std::vector<PotShot> pots;
 };
 
 struct ShotResult {
@@ -114,13 +126,29 @@ struct TrackingReport {
   int reacquired = 0;               // a ball's track changed to a new one
 };
 
-// A whole-table session: the one shot (the cue ball at the ball nearest it), where every ball
-// ended, the events, and the tracking.
+// One pot of a whole-table session: the plan (the planner's status and reason, the kind, the
+// margin, the predicted cue-ball rest) against what the table did with it.
+struct PotResult {
+  PotShot asked;
+  ShotResult shot;   // the target is the plan's cue-ball rest; the miss, the cue ball's rest there
+  std::string kind;  // the planner's choice ("" when refused)
+  double margin_left_deg = 0.0, margin_right_deg = 0.0;
+  double speed_lo = 0.0, speed_hi = 0.0;  // the plan's speed window [m/s]
+  std::string dropped;                    // the pocket ball K dropped into, "" if none
+  bool potted = false;                    // ball K dropped in the pocket asked for
+  bool scratch = false;                   // the cue ball dropped
+  int first_contact = -1;  // the ball the cue ball touched first (the truth's id), -1 if none
+};
+
+// A whole-table session: the one shot (the cue ball at the ball nearest it), or the pots in turn,
+// where every ball ended, the events, and the tracking.
 struct SceneResult {
   ShotResult shot;  // the target is the contact point; the miss, the cue ball's centre there
+                    // (with pots: the last pot's shot)
+  std::vector<PotResult> pots;
   std::vector<table::SceneBall> final_balls;
   std::vector<std::string> pockets;  // per ball: the pocket it dropped into, or ""
-  int events = 0;
+  int events = 0;                    // of every shot
   TrackingReport tracking;
 };
 
@@ -182,9 +210,24 @@ class TableSimNode {
   // Shows the balls at rest at `at` for the settle time.
   void ShowAtRest(const std::vector<table::SceneBall>& balls);
   // Asks the planner to send the ball estimated nearest `ball` (again after refusals that time
-  // cures) and waits for the answer.
+  // cures) and waits for the answer; a pot's object ball, with `object`, the one estimated
+  // nearest there.
   cue_command_t Request(int shot, const std::vector<table::SceneBall>& shown,
-                        const Eigen::Vector2d& ball, const shot_request_t& ask, ShotResult& result);
+                        const Eigen::Vector2d& ball, const shot_request_t& ask, ShotResult& result,
+                        const std::optional<Eigen::Vector2d>& object = std::nullopt);
+  // The estimator's track nearest `at` in its latest state, nullopt if it has none.
+  std::optional<std::int32_t> NearestTrack(const Eigen::Vector2d& at) const;
+  // Strikes the cue ball of `balls` as `command` says (with the noise; not at all when it is a
+  // refusal), simulates the table to rest with `motion` and shows it to the camera frame by
+  // frame; returns the simulation.
+  table::TableSimulation PlayOut(const table::TableGeometry& geometry,
+                                 const std::vector<table::SceneBall>& balls,
+                                 const cue_command_t& command,
+                                 const table::TableSimulationOptions& motion);
+  // Asks for pot `pot` (request `id`) on `balls`, plays it out and scores it; `balls` become
+  // those left on the table, at rest.
+  PotResult PlayPot(int id, const PotShot& pot, const table::TableGeometry& geometry,
+                    std::vector<table::SceneBall>& balls, SceneResult& scene);
   // Scores the estimator's state of a frame against the truth of its balls at t.
   void Track(const std::vector<TruthBall>& balls, double t, const table_state_t& estimate);
   // Handles messages until `done` holds, calling `resend` every retry interval; throws after the

@@ -1,9 +1,13 @@
 #include "tools/billiard/loop_command.h"
 
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "estimator/node/estimator_node.h"
 #include "planner/node/planner_node.h"
+#include "sim/params/scene_file.h"
+#include "sim/params/table_specs.h"
 #include "sim/table_sim_node/session.h"
 #include "tools/billiard/command_line.h"
 
@@ -12,11 +16,21 @@ namespace billiard::cli {
 namespace {
 
 // The estimator and the planner on the session's LCM: handling a frame publishes the estimator's
-// state, handling a request the planner's command, inside the simulator's waits.
+// state, handling a request the planner's command, inside the simulator's waits. The planner
+// pots on the scene file's table (the default table for the break and the shots).
 std::function<bool()> EstimatorAndPlanner(lcm::LCM& lcm, const physics::ModelParameters& params,
-                                          const camera::CameraModel& camera) {
+                                          const camera::CameraModel& camera,
+                                          const std::string& scene) {
   auto estimator = std::make_shared<estimator_node::EstimatorNode>(lcm, camera, params);
-  auto planner = std::make_shared<planner_node::PlannerNode>(lcm, params);
+  planner_node::PlannerNodeOptions options;
+  if (!scene.empty() && scene != "break") {
+    try {
+      options.table = table::BuildTable(params::LoadTableSpec(params::LoadScene(scene).table));
+    } catch (const std::invalid_argument&) {
+      // The session refuses the scene itself, with its reason.
+    }
+  }
+  auto planner = std::make_shared<planner_node::PlannerNode>(lcm, params, options);
   return [estimator, planner] {
     estimator->Work();
     return planner->Work();
@@ -34,8 +48,11 @@ void AddLoopCommand(CLI::App& app) {
   table_sim_node::AddSessionOptions(*cmd, line.get());
   cmd->callback([line] {
     line->lcm_url = "memq://";
-    const int status =
-        table_sim_node::RunSessionCommand("billiard loop", *line, EstimatorAndPlanner);
+    const auto nodes = [line](lcm::LCM& lcm, const physics::ModelParameters& params,
+                              const camera::CameraModel& camera) {
+      return EstimatorAndPlanner(lcm, params, camera, line->options.scene);
+    };
+    const int status = table_sim_node::RunSessionCommand("billiard loop", *line, nodes);
     if (status != 0) throw ExitStatus(status);
   });
 }

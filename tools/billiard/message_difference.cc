@@ -42,6 +42,12 @@ class Fields {
     Compare(name + ".covariance", recorded.covariance, replayed.covariance);
   }
 
+  void Compare(const std::string& name, const ball_path_t& recorded, const ball_path_t& replayed) {
+    Compare(name + ".ball_id", recorded.ball_id, replayed.ball_id);
+    Compare(name + ".num_points", recorded.num_points, replayed.num_points);
+    Compare(name + ".points", recorded.points, replayed.points);
+  }
+
   const std::optional<FieldDifference>& first() const { return first_; }
 
  private:
@@ -88,6 +94,15 @@ std::optional<FieldDifference> FirstFieldDifference(const cue_command_t& recorde
   f.Compare("closed_form_miss_m", recorded.closed_form_miss_m, replayed.closed_form_miss_m);
   f.Compare("refined_miss_m", recorded.refined_miss_m, replayed.refined_miss_m);
   f.Compare("iterations", recorded.iterations, replayed.iterations);
+  f.Compare("mode", recorded.mode, replayed.mode);
+  f.Compare("object_ball_id", recorded.object_ball_id, replayed.object_ball_id);
+  f.Compare("pocket", recorded.pocket, replayed.pocket);
+  f.Compare("kind", recorded.kind, replayed.kind);
+  f.Compare("margin_deg", recorded.margin_deg, replayed.margin_deg);
+  f.Compare("speed_window", recorded.speed_window, replayed.speed_window);
+  f.Compare("cue_rest", recorded.cue_rest, replayed.cue_rest);
+  f.Compare("num_ball_paths", recorded.num_ball_paths, replayed.num_ball_paths);
+  f.Compare("ball_paths", recorded.ball_paths, replayed.ball_paths);
   f.Compare("status", recorded.status, replayed.status);
   f.Compare("reason", recorded.reason, replayed.reason);
   return f.first();

@@ -54,13 +54,21 @@ void ViewState::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& 
 void ViewState::OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string&) {
   cue_command_t m;
   if (!messages::DecodeChecked(rbuf->data, rbuf->data_size, m).empty()) return;
-  nlohmann::json path = nlohmann::json::array();
-  for (const auto& p : m.path) path.push_back({p[0], p[1]});
+  const auto points = [](const std::vector<std::vector<double>>& path) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& p : path) out.push_back({p[0], p[1]});
+    return out;
+  };
+  nlohmann::json ball_paths = nlohmann::json::array();
+  for (const ball_path_t& b : m.ball_paths) {
+    ball_paths.push_back({{"ball_id", b.ball_id}, {"points", points(b.points)}});
+  }
   std::lock_guard<std::mutex> lock(mutex_);
   state_["plan"] = {{"utime", m.utime},
                     {"ball_id", m.ball_id},
                     {"status", m.status},
-                    {"path", path},
+                    {"path", points(m.path)},
+                    {"ball_paths", ball_paths},
                     {"predicted_final", {m.predicted_final[0], m.predicted_final[1]}}};
 }
 

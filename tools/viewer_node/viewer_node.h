@@ -1,6 +1,6 @@
 // build/bin/viewer_node: a live view of the table in a web browser. It follows LCM (the
 // estimator's TABLE_STATE with each ball's uncertainty and class, the simulator's TABLE_TRUTH,
-// the latest CUE_COMMAND's predicted path, every node's NODE_STATUS) and serves, with
+// the latest CUE_COMMAND's predicted paths, every node's NODE_STATUS) and serves, with
 // cpp-httplib, a page that draws them (GET /) and the state it draws (GET /state.json). Every
 // other request gets an error status and nothing else; it listens on 127.0.0.1 unless told.
 //

@@ -1,6 +1,7 @@
 // The viewer's page: a canvas redrawn from /state.json ten times a second. The table in the
 // frame of viewer_node.h; the truth as grey rings, the estimate as filled balls with their id and
-// a 3-sigma ellipse, the plan's predicted path as a dashed line, each node's health beside it.
+// a 3-sigma ellipse, the plan's predicted path as a dashed line (a pot's other moving balls in
+// yellow), each node's health beside it.
 // What it drew last is also in <pre id="drawn"> as JSON (each ball's canvas pixel), so that a
 // browser test can read the page's own state.
 #include "tools/viewer_node/viewer_node.h"
@@ -27,11 +28,17 @@ function draw(s) {
   ctx.fillStyle = "#6b3a1a"; ctx.fillRect(0, 0, canvas.width, canvas.height);
   ctx.fillStyle = "#0b7340"; ctx.fillRect(m, m, k * s.table.length, k * W);
   const drawn = {truth: [], estimate: []};
-  if (s.plan && s.plan.path.length > 1) {
-    ctx.strokeStyle = "#ffffff"; ctx.setLineDash([6, 4]); ctx.beginPath();
-    s.plan.path.forEach((p, i) => { const [u, v] = px(p[0], p[1]);
+  const dashed = (path, colour) => {
+    if (path.length < 2) return;
+    ctx.strokeStyle = colour; ctx.setLineDash([6, 4]); ctx.beginPath();
+    path.forEach((p, i) => { const [u, v] = px(p[0], p[1]);
       i ? ctx.lineTo(u, v) : ctx.moveTo(u, v); });
     ctx.stroke(); ctx.setLineDash([]);
+  };
+  if (s.plan) {
+    dashed(s.plan.path, "#ffffff");
+    // A pot's other balls, the object ball's route to its pocket among them.
+    for (const b of s.plan.ball_paths || []) if (b.ball_id !== s.plan.ball_id) dashed(b.points, "#ffd23f");
   }
   if (s.truth) for (const b of s.truth.balls) {
     const [u, v] = px(b.x, b.y);
