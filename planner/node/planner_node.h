@@ -85,7 +85,16 @@ struct PlannerNodeOptions {
   int queue_capacity = 32;
   // The table pots are planned on (its cushions and pockets); kDefaultPotTable when not given.
   std::optional<table::TableGeometry> table;
-  pot::PotOptions pot;
+  pot::PotOptions pot = CameraPotOptions();
+
+  // Pots are planned on what the camera saw: touching balls measured a fraction of a millimetre
+  // into each other (or into a cushion) are settled apart first (pot::PotOptions::settle_overlap),
+  // by up to 2 mm, some four times the estimator's position error.
+  static pot::PotOptions CameraPotOptions() {
+    pot::PotOptions o;
+    o.settle_overlap = 2e-3;
+    return o;
+  }
 };
 
 // The table of a node started without one: the table of the default parameter set's size.

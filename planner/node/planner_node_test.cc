@@ -615,6 +615,31 @@ TEST_F(PlannerNodePotTest, ThePotPlannersRefusalsGoOutWithTheirStatus) {
   EXPECT_NE(in_the_way->reason.find("ball 7"), std::string::npos) << in_the_way->reason;
 }
 
+// The estimator's touching balls: ball 9, beside the object ball's line to the pocket, measured
+// 0.5 mm into it. Settled apart, the pot is planned; a ball 5 mm into another is an impossible
+// scene and refused.
+TEST_F(PlannerNodePotTest, TouchingBallsSeenOverlappingAreSettledApart) {
+  const double r = params_.ball.radius;
+  const Eigen::Vector2d k(0.6, 0.3);
+  Eigen::Vector2d mouth = Eigen::Vector2d::Zero();
+  for (const table::Pocket& p : table_.pockets) {
+    if (p.name == "lower_left") mouth = p.centre;
+  }
+  const Eigen::Vector2d along = (mouth - k).normalized();
+  const Eigen::Vector2d beside = k + (2 * r - 5e-4) * Eigen::Vector2d(-along.y(), along.x());
+  PublishTable({Classed(kCueTrack, 1.0, 0.45, ball_state_t::CLASS_CUE, 0.9f),
+                Classed(kObject, k.x(), k.y(), 5, 0.9f), Classed(kOther, beside.x(), beside.y(), 9, 0.9f)});
+  const cue_command_t c = AskOk(Pot(1, kObject, "lower_left"));
+  EXPECT_EQ(c.object_ball_id, kObject);
+  PublishTable({Classed(kCueTrack, 1.0, 0.45, ball_state_t::CLASS_CUE, 0.9f),
+                Classed(kObject, 0.6, 0.3, 5, 0.9f), Classed(kOther, 0.6, 0.3 + 2 * r - 5e-3, 9, 0.9f)},
+               1'000'020);  // a later state: the node keeps the latest
+  const auto answer = Ask(Pot(2, kObject, "lower_left"));
+  ASSERT_TRUE(answer);
+  EXPECT_EQ(Status(*answer), kInvalid);
+  EXPECT_NE(answer->reason.find("overlap"), std::string::npos) << answer->reason;
+}
+
 TEST_F(PlannerNodePotTest, APotAmongMovingBallsIsRefused) {
   PublishTable({Classed(kCueTrack, 1.0, 0.45, ball_state_t::CLASS_CUE, 0.9f),
                 Classed(kObject, 0.5, 0.3, 5, 0.9f), Ball(7, 2.0, 1.0, 0.4, 0.0)});

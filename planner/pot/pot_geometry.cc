@@ -5,6 +5,13 @@
 
 namespace billiard::pot {
 
+namespace {
+
+// Closer than the clearance by less than this [m] is touching, not in the way.
+constexpr double kGraze = 1e-6;
+
+}  // namespace
+
 Eigen::Vector2d GhostBall(const Eigen::Vector2d& object, const Eigen::Vector2d& direction,
                           double radius) {
   return object - 2.0 * radius * direction;
@@ -45,8 +52,12 @@ std::vector<int> BallsAcross(const std::vector<table::SceneBall>& balls, const E
   for (const table::SceneBall& ball : balls) {
     if (std::find(ignore.begin(), ignore.end(), ball.id) != ignore.end()) continue;
     const Eigen::Vector2d p = ball.state.head<2>();
-    const double s = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-    if ((a + s * ab - p).norm() < clearance) across.push_back(ball.id);
+    const double along = length2 > 0.0 ? (p - a).dot(ab) / length2 : 0.0;
+    // A ball beside or behind the start is left behind by a ball leaving along the line; one
+    // touching it there is grazed at most.
+    if (!(along > 0.0)) continue;
+    const double s = std::min(along, 1.0);
+    if ((a + s * ab - p).norm() < clearance - kGraze) across.push_back(ball.id);
   }
   return across;
 }

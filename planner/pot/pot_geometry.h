@@ -37,8 +37,9 @@ std::optional<Eigen::Vector2d> RailBounce(const table::TableGeometry& table, int
                                           const Eigen::Vector2d& from, const Eigen::Vector2d& to,
                                           double radius);
 
-// The ids of the balls (other than those in `ignore`) whose centres come closer than
-// `clearance` to the segment a -> b: what a ball moving along it would touch.
+// The ids of the balls (other than those in `ignore`) ahead of a whose centres come closer than
+// `clearance` to the segment a -> b: what a ball moving along it would touch (one beside or
+// behind a, touching it perhaps, is left behind).
 std::vector<int> BallsAcross(const std::vector<table::SceneBall>& balls, const Eigen::Vector2d& a,
                              const Eigen::Vector2d& b, double clearance,
                              const std::vector<int>& ignore);
