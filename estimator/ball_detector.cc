@@ -65,6 +65,19 @@ constexpr double kSettledScaleChange = 0.05;
 // (touching balls' outlines fitted a little large, or a ball's shadow beside it) only the better
 // is kept.
 constexpr double kOverlapRadii = 1.75;
+// A ball lies on the cloth: on a circle of kSurroundRadii radii around it (past its shadow's
+// darkest part, short of a touching neighbour's far side), at kSurroundSamples places, what is on
+// the playing surface and not cloth (in any light, local_cloth.h) is another ball kept. An unsure
+// outline (scoring less than kSureScore) with more than kMaxForeignSurround of that circle's
+// places on the surface on something else lies on a hand, an arm, a sleeve, a cue's butt or a
+// pocket's liner. A sure one stands: a ball of a rack whose neighbours were not all found is
+// surrounded by balls, not cloth. With less than kMinSurroundSeen of the circle on the surface (a
+// ball in a corner of a surface found too small) nothing is judged.
+constexpr double kSurroundRadii = 1.5;
+constexpr int kSurroundSamples = 64;
+constexpr double kMaxForeignSurround = 0.6;
+constexpr double kSureScore = 0.8;
+constexpr double kMinSurroundSeen = 0.25;
 // A frame whose cloth changes colour by more than kNoisyEdges L*a*b* units per pixel (a camera's
 // heavy sensor noise; the clean real and rendered frames are 0.2-2.5) is smoothed by a Gaussian
 // of kNoiseSmoothingPx before its balls are looked for, as Canny (1986) smooths before finding
@@ -84,6 +97,45 @@ bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double rad
     return (p - centre).norm() < kPocketRadii * radius;
   });
   return !near_pocket || table.Contains(centre, -kOffSurfaceRadii * radius);
+}
+
+// The share of the places on the playing surface of the circle around `ball` (kSurroundRadii) on
+// neither cloth nor a sure ball of `balls`.
+double ForeignSurround(const cv::Mat& bgr, const TableRegion& table, const ClothModel& cloth,
+                       const BallDetection& ball, const std::vector<BallDetection>& balls) {
+  int foreign = 0, seen = 0;
+  for (int k = 0; k < kSurroundSamples; ++k) {
+    const double angle = 2 * M_PI * k / kSurroundSamples;
+    const Eigen::Vector2d p = ball.pixel + kSurroundRadii * ball.radius_px *
+                                              Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    const int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+    if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows || !table.Contains(p)) continue;
+    ++seen;
+    const bool on_ball = std::any_of(balls.begin(), balls.end(), [&](const BallDetection& b) {
+      return &b != &ball && (b.pixel - p).norm() < b.radius_px * 1.15;
+    });
+    if (on_ball) continue;
+    const cv::Vec3b c = bgr.at<cv::Vec3b>(y, x);
+    const LocalCloth local = MakeLocalCloth(cloth.ColourAt(p), cloth.noise);
+    float along, across;
+    Decompose(cv::Vec3f(c[0], c[1], c[2]), local, &along, &across);
+    foreign += Contrast(along, across, local) >= 1.0f;
+  }
+
+  return seen >= kMinSurroundSeen * kSurroundSamples ? static_cast<double>(foreign) / seen : 0.0;
+}
+
+// The balls that are sure, or lie on the cloth (ForeignSurround).
+std::vector<BallDetection> OnCloth(const cv::Mat& bgr, const TableRegion& table,
+                                   const ClothModel& cloth, const std::vector<BallDetection>& balls) {
+  std::vector<BallDetection> kept;
+  for (const BallDetection& ball : balls) {
+    if (ball.score >= kSureScore ||
+        ForeignSurround(bgr, table, cloth, ball, balls) <= kMaxForeignSurround) {
+      kept.push_back(ball);
+    }
+  }
+  return kept;
 }
 
 double MinEdge(double edge_noise) { return std::max(kMinEdge, kEdgeNoises * edge_noise); }
@@ -358,7 +410,7 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
     });
     if (!overlaps) balls.push_back(ball);
   }
-  return balls;
+  return OnCloth(bgr, *table_, cloth_, balls);
 }
 
 cv::Mat BallDetector::Smoothed(const cv::Mat& bgr) const {
