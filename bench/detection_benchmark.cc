@@ -167,7 +167,7 @@ estimator::BallSet BallSetFor(const LabelledFrame& frame) {
   const bool by_colour = std::any_of(frame.classes.begin(), frame.classes.end(), [](const auto& c) {
     return c == "red" || c == "yellow";
   });
-  return by_colour ? estimator::BallSet::kSnooker : estimator::BallSet::kPool;
+  return by_colour ? estimator::BallSet::kBlackball : estimator::BallSet::kPool;
 }
 
 bool ClassMatches(const std::string& label, estimator::BallClass detected) {

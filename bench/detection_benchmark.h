@@ -60,8 +60,8 @@ void LoadTableCorners(const std::string& path, std::vector<LabelledFrame>* frame
 inline constexpr double kTableSideTolerancePx = 2.0;
 
 // The detector's ball set for a frame's `kind` and labelled classes: carom and snooker by kind;
-// pool by kind, unless its balls are labelled by colour (English pool's reds and yellows, which
-// the snooker set names).
+// pool by kind, unless its balls are labelled by colour (English pool's reds and yellows: the
+// blackball set).
 estimator::BallSet BallSetFor(const LabelledFrame& frame);
 
 // Whether a detection's class is a labelled class: the same name, a number of that group for

@@ -75,10 +75,8 @@ struct DetectArgs {
 
 estimator::BallSet BallSetOption(const std::string& name, const physics::ModelParameters& params) {
   if (name.empty()) return estimator::BallSetOf(params.name);
-  if (name == "pool") return estimator::BallSet::kPool;
-  if (name == "snooker") return estimator::BallSet::kSnooker;
-  if (name == "carom") return estimator::BallSet::kCarom;
-  throw UsageError("--ball-set: '" + name + "' is none of pool, snooker, carom");
+  if (const auto set = estimator::BallSetNamed(name)) return *set;
+  throw UsageError("--ball-set: '" + name + "' is none of " + estimator::kBallSetNames);
 }
 
 nlohmann::json Points(const std::array<Eigen::Vector2d, 4>& corners) {
@@ -254,7 +252,8 @@ void AddDetectCommand(CLI::App& app) {
   cmd->add_option("--params", args->params, "paper | pool | JSON file: the ball radius")
       ->capture_default_str();
   cmd->add_option("--ball-set", args->ball_set,
-                  "pool | snooker | carom: the balls' classes (default: --params' set)");
+                  "pool | snooker | carom | blackball (English pool's reds and yellows): the balls' "
+                  "classes (default: --params' set)");
   cmd->add_option("--overlay", args->overlay,
                   "Also write the frame with the table and the detections drawn on it (PNG or "
                   "JPEG)");
