@@ -514,8 +514,28 @@ TableSearch FindTable(const cv::Mat& bgr) {
     return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
   }
   const Eigen::Matrix3d cloth_from_table = ImageFromTable(table.cloth_corners, long_first);
-  for (int i = 0; i < 4; ++i)
-    lines[i] = NoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+  // The side nearest the camera (the largest inverse depth at its middle), whose cushion is seen
+  // from behind in an oblique view.
+  const Eigen::Vector3d cloth_depth = cloth_from_table.inverse().row(2).transpose();
+  int nearest = 0;
+  double nearest_inverse_depth = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector2d middle = 0.5 * (table.cloth_corners[i] + table.cloth_corners[(i + 1) % 4]);
+    const double w = std::abs(cloth_depth.dot(middle.homogeneous()));
+    if (w > nearest_inverse_depth) {
+      nearest_inverse_depth = w;
+      nearest = i;
+    }
+  }
+  const bool oblique = DepthRatio(table.cloth_corners) > kOverheadDepthRatio;
+  for (int i = 0; i < 4; ++i) {
+    std::optional<Eigen::Vector3d> nose =
+        NoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+    if (!nose && oblique && i == nearest) {
+      nose = FaintNoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+    }
+    lines[i] = nose.value_or(SideLine(cloth_from_table, long_first, i));
+  }
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet"};
   }

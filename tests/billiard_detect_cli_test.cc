@@ -217,8 +217,9 @@ TEST_F(BilliardDetect, SaysWhichBallEachIsAndWhereTheTableIs) {
 // (clutter, arms, projected lines) brought precision to 91 % overhead and 94.8 % oblique, and
 // identity (on the frames with classes) to 63 %. Issue 27's first steps (balls on sleeves and
 // hands dropped, identity given all at once with the rack's count of each class) raised them to
-// 95.0 % overhead precision and 82 % identity; 17 of the 26 tables are found within 2 px per side
-// of the corner labels (estimator/testing/real_table_corners.json).
+// 95.0 % overhead precision and 82 % identity, and the near cushion's nose found from its faint
+// line brought the tables found within 2 px per side of the corner labels
+// (estimator/testing/real_table_corners.json) from 15 to 18 of 26.
 TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   BILLIARD_TEST_DATA_OR_SKIP(labels, "real-tables/dev/labels.json");
   const std::string set = labels.substr(0, labels.rfind('/'));
@@ -236,7 +237,7 @@ TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   EXPECT_LT(views["all"]["median_centre_error_px"].get<double>(), 1.5) << views;
   EXPECT_EQ(views["all"]["frames"], 26);
   EXPECT_EQ(views["all"]["tables_labelled"], 26);
-  EXPECT_GE(views["all"]["tables_within_2px"].get<int>(), 17) << views;
+  EXPECT_GE(views["all"]["tables_within_2px"].get<int>(), 18) << views;
   EXPECT_GE(views["all"]["classed"].get<int>(), 90) << views;
   EXPECT_GE(views["all"]["identity"].get<double>(), 0.80) << views;
   // Every miss and every false detection has its cause.
