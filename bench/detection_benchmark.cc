@@ -69,19 +69,25 @@ double Median(std::vector<double> values) {
 
 std::string Stem(const std::string& file) { return std::filesystem::path(file).stem().string(); }
 
+// The JSON object in a file; throws std::invalid_argument naming the file when it is not one.
+nlohmann::json ReadJsonObject(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument("cannot read '" + path + "'");
+  nlohmann::json object;
+  try {
+    in >> object;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument("'" + path + "' is not JSON: " + e.what());
+  }
+  if (!object.is_object()) throw std::invalid_argument("'" + path + "' is not a JSON object");
+  return object;
+}
+
 }  // namespace
 
 std::vector<LabelledFrame> LoadLabelledSet(const std::string& directory) {
   const std::string path = directory + "/labels.json";
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("cannot read '" + path + "'");
-  nlohmann::json labels;
-  try {
-    in >> labels;
-  } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument("'" + path + "' is not JSON: " + e.what());
-  }
-  if (!labels.is_object()) throw std::invalid_argument("'" + path + "' is not a JSON object");
+  const nlohmann::json labels = ReadJsonObject(path);
   std::vector<LabelledFrame> frames;
   for (const auto& [file, entry] : labels.items()) {
     if (!file.empty() && file[0] == '_') continue;  // notes
@@ -133,15 +139,7 @@ std::vector<LabelledFrame> LoadLabelledSet(const std::string& directory) {
 }
 
 void LoadTableCorners(const std::string& path, std::vector<LabelledFrame>* frames) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("cannot read '" + path + "'");
-  nlohmann::json labels;
-  try {
-    in >> labels;
-  } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument("'" + path + "' is not JSON: " + e.what());
-  }
-  if (!labels.is_object()) throw std::invalid_argument("'" + path + "' is not a JSON object");
+  const nlohmann::json labels = ReadJsonObject(path);
   for (LabelledFrame& frame : *frames) {
     if (!labels.contains(frame.file)) continue;
     const std::string where = path + ": '" + frame.file + "'";

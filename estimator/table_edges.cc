@@ -314,19 +314,25 @@ std::optional<Eigen::Vector3d> FaintNoseLine(const cv::Mat& bgr,
     }
   }
   if (best < std::max(kMinFaintEdge, kFaintEdges * noise)) return std::nullopt;
-  // The line through the sampled points at the best offsets at both ends of the side.
-  const auto point = [&](double t, double i) {
-    const auto table = TableCorners(long_first);
-    const Eigen::Vector2d a = table[side], b = table[(side + 1) % 4];
-    const Eigen::Vector2d centre(0.5 * kTableAspect, 0.5);
-    Eigen::Vector2d inward(-(b - a).y(), (b - a).x());
-    inward.normalize();
-    if (inward.dot(centre - a) < 0) inward = -inward;
-    const double step = max_cushion_width / n;
-    return (cloth_from_table * (a + t * (b - a) + (i + 0.5) * step * inward).homogeneous()).eval();
-  };
-  Eigen::Vector3d line = point(0, best_i0).cross(point(1, best_i1));
-  return line / line.head<2>().norm();
+  // The line through the places' points at the best line's offsets (each between its samples,
+  // where the rate of change between them is).
+  std::vector<cv::Point2f> points;
+  for (std::size_t k = 0; k < along.size(); ++k) {
+    const double i = best_i0 + (best_i1 - best_i0) * along[k];
+    const int lower = static_cast<int>(std::floor(i));
+    if (lower < 0 || lower + 2 > n) continue;
+    const double f = i - lower;
+    const auto middle = [&](int j) {
+      const std::size_t base = k * (n + 1);
+      return 0.5 * (profiles.points[base + j] + profiles.points[base + j + 1]);
+    };
+    const Eigen::Vector2d p = (1 - f) * middle(lower) + f * middle(lower + 1);
+    points.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
+  }
+  if (points.size() < 2) return std::nullopt;
+  cv::Vec4f fitted;
+  cv::fitLine(points, fitted, cv::DIST_L2, 0, 0.01, 0.01);
+  return Eigen::Vector3d(-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]);
 }
 
 }  // namespace billiard::estimator
