@@ -138,6 +138,28 @@ std::vector<BallDetection> OnCloth(const cv::Mat& bgr, const TableRegion& table,
   return kept;
 }
 
+// The outline's band for OutlineAgreement: kOutlineBandPx either side of the cloth's outline at
+// the table search's resolution (the frame's longer side at most kOutlineSearchSize pixels).
+constexpr int kOutlineBandPx = 3;
+constexpr double kOutlineSearchSize = 400.0;
+
+int OutlineFactor(const cv::Size& size) {
+  return static_cast<int>(std::ceil(std::max(size.width, size.height) / kOutlineSearchSize));
+}
+
+// The gradient magnitude of a frame's grey levels at the table search's resolution.
+cv::Mat OutlineGradient(const cv::Mat& bgr) {
+  const int factor = OutlineFactor(bgr.size());
+  cv::Mat small, grey, gx, gy, magnitude;
+  cv::resize(bgr, small, {}, 1.0 / factor, 1.0 / factor, cv::INTER_AREA);
+  cv::cvtColor(small, grey, cv::COLOR_BGR2GRAY);
+  grey.convertTo(grey, CV_32F);
+  cv::Sobel(grey, gx, CV_32F, 1, 0);
+  cv::Sobel(grey, gy, CV_32F, 0, 1);
+  cv::magnitude(gx, gy, magnitude);
+  return magnitude;
+}
+
 double MinEdge(double edge_noise) { return std::max(kMinEdge, kEdgeNoises * edge_noise); }
 
 cv::Mat AsBgr(const cv::Mat& image) {
@@ -338,8 +360,38 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
     scale_ = ScaleFromOutlines(*table_, BlobOutlines(searched, *table_, cloth_));
     if (!scale_) scale_ = ScaleFromTable(*table_, options_.ball_to_table_width);
   }
+  outline_gradient_ = OutlineGradient(bgr);
+  outline_band_ = cv::Mat::zeros(outline_gradient_.size(), CV_8U);
+  std::vector<cv::Point> outline;
+  const double factor = OutlineFactor(bgr.size());
+  for (const auto& c : table_->cloth_corners) {
+    outline.emplace_back(static_cast<int>(std::lround((c.x() + 0.5) / factor - 0.5)),
+                         static_cast<int>(std::lround((c.y() + 0.5) / factor - 0.5)));
+  }
+  cv::polylines(outline_band_, outline, true, 255, 2 * kOutlineBandPx + 1);
   failure_.clear();
   return true;
+}
+
+double BallDetector::OutlineAgreement(const cv::Mat& image) const {
+  if (outline_gradient_.empty() || image.size() != frame_size_) return 1.0;
+  const cv::Mat now = OutlineGradient(AsBgr(image));
+  const cv::Scalar mean_then = cv::mean(outline_gradient_, outline_band_);
+  const cv::Scalar mean_now = cv::mean(now, outline_band_);
+  double both = 0, then_squares = 0, now_squares = 0;
+  for (int y = 0; y < now.rows; ++y) {
+    const auto* band = outline_band_.ptr<uint8_t>(y);
+    const auto* a = outline_gradient_.ptr<float>(y);
+    const auto* b = now.ptr<float>(y);
+    for (int x = 0; x < now.cols; ++x) {
+      if (!band[x]) continue;
+      const double da = a[x] - mean_then[0], db = b[x] - mean_now[0];
+      both += da * db;
+      then_squares += da * da;
+      now_squares += db * db;
+    }
+  }
+  return then_squares > 0 && now_squares > 0 ? both / std::sqrt(then_squares * now_squares) : 0.0;
 }
 
 std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
