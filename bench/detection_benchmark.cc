@@ -13,7 +13,6 @@
 
 #include "bench/format.h"
 #include "estimator/detection_overlay.h"
-#include "estimator/table_edges.h"
 
 namespace billiard::bench {
 
