@@ -10,6 +10,14 @@ BallSet BallSetOf(const std::string& parameter_set_name) {
   return BallSet::kPool;
 }
 
+std::optional<BallSet> BallSetNamed(const std::string& name) {
+  if (name == "pool") return BallSet::kPool;
+  if (name == "snooker") return BallSet::kSnooker;
+  if (name == "carom") return BallSet::kCarom;
+  if (name == "blackball") return BallSet::kBlackball;
+  return std::nullopt;
+}
+
 BallClass PoolBall(int number) {
   if (number < 1 || number > 15) throw std::invalid_argument("pool balls are numbered 1..15");
   return static_cast<BallClass>(number);

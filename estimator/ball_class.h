@@ -2,15 +2,22 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace billiard::estimator {
 
-// The ball sets (which classes a frame may hold).
-enum class BallSet { kPool, kSnooker, kCarom };
+// The ball sets (which classes a frame may hold): pool (the cue ball and 1-15), snooker (the cue
+// ball, 15 reds and six colours), carom (the white, the yellow and the red) and English pool,
+// "blackball" (the cue ball, seven reds, seven yellows and the black).
+enum class BallSet { kPool, kSnooker, kCarom, kBlackball };
 
 // The set a parameter set's balls belong to: "snooker" and "carom" by name, pool otherwise.
 BallSet BallSetOf(const std::string& parameter_set_name);
+
+// The set of a name ("pool", "snooker", "carom", "blackball"), or none.
+std::optional<BallSet> BallSetNamed(const std::string& name);
+inline constexpr const char* kBallSetNames = "pool, snooker, carom, blackball";
 
 // A ball's class, with the values table_state_t carries (ball_state_t's CLASS_ constants): kUnknown
 // (zero, so that a message filled with zeros claims nothing), pool's numbers 1-15 (1-7 solids, 8

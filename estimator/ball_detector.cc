@@ -65,6 +65,19 @@ constexpr double kSettledScaleChange = 0.05;
 // (touching balls' outlines fitted a little large, or a ball's shadow beside it) only the better
 // is kept.
 constexpr double kOverlapRadii = 1.75;
+// A ball lies on the cloth: on a circle of kSurroundRadii radii around it (past its shadow's
+// darkest part, short of a touching neighbour's far side), at kSurroundSamples places, what is on
+// the playing surface and not cloth (in any light, local_cloth.h) is another ball kept. An unsure
+// outline (scoring less than kSureScore) with more than kMaxForeignSurround of that circle's
+// places on the surface on something else lies on a hand, an arm, a sleeve, a cue's butt or a
+// pocket's liner. A sure one stands: a ball of a rack whose neighbours were not all found is
+// surrounded by balls, not cloth. With less than kMinSurroundSeen of the circle on the surface (a
+// ball in a corner of a surface found too small) nothing is judged.
+constexpr double kSurroundRadii = 1.5;
+constexpr int kSurroundSamples = 64;
+constexpr double kMaxForeignSurround = 0.6;
+constexpr double kSureScore = 0.8;
+constexpr double kMinSurroundSeen = 0.25;
 // A frame whose cloth changes colour by more than kNoisyEdges L*a*b* units per pixel (a camera's
 // heavy sensor noise; the clean real and rendered frames are 0.2-2.5) is smoothed by a Gaussian
 // of kNoiseSmoothingPx before its balls are looked for, as Canny (1986) smooths before finding
@@ -84,6 +97,67 @@ bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double rad
     return (p - centre).norm() < kPocketRadii * radius;
   });
   return !near_pocket || table.Contains(centre, -kOffSurfaceRadii * radius);
+}
+
+// The share of the places on the playing surface of the circle around `ball` (kSurroundRadii) on
+// neither cloth nor a sure ball of `balls`.
+double ForeignSurround(const cv::Mat& bgr, const TableRegion& table, const ClothModel& cloth,
+                       const BallDetection& ball, const std::vector<BallDetection>& balls) {
+  int foreign = 0, seen = 0;
+  for (int k = 0; k < kSurroundSamples; ++k) {
+    const double angle = 2 * M_PI * k / kSurroundSamples;
+    const Eigen::Vector2d p = ball.pixel + kSurroundRadii * ball.radius_px *
+                                              Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    const int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+    if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows || !table.Contains(p)) continue;
+    ++seen;
+    const bool on_ball = std::any_of(balls.begin(), balls.end(), [&](const BallDetection& b) {
+      return &b != &ball && (b.pixel - p).norm() < b.radius_px * 1.15;
+    });
+    if (on_ball) continue;
+    const cv::Vec3b c = bgr.at<cv::Vec3b>(y, x);
+    const LocalCloth local = MakeLocalCloth(cloth.ColourAt(p), cloth.noise);
+    float along, across;
+    Decompose(cv::Vec3f(c[0], c[1], c[2]), local, &along, &across);
+    foreign += Contrast(along, across, local) >= 1.0f;
+  }
+
+  return seen >= kMinSurroundSeen * kSurroundSamples ? static_cast<double>(foreign) / seen : 0.0;
+}
+
+// The balls that are sure, or lie on the cloth (ForeignSurround).
+std::vector<BallDetection> OnCloth(const cv::Mat& bgr, const TableRegion& table,
+                                   const ClothModel& cloth, const std::vector<BallDetection>& balls) {
+  std::vector<BallDetection> kept;
+  for (const BallDetection& ball : balls) {
+    if (ball.score >= kSureScore ||
+        ForeignSurround(bgr, table, cloth, ball, balls) <= kMaxForeignSurround) {
+      kept.push_back(ball);
+    }
+  }
+  return kept;
+}
+
+// The outline's band for OutlineAgreement: kOutlineBandPx either side of the cloth's outline at
+// the table search's resolution (the frame's longer side at most kOutlineSearchSize pixels).
+constexpr int kOutlineBandPx = 3;
+constexpr double kOutlineSearchSize = 400.0;
+
+int OutlineFactor(const cv::Size& size) {
+  return static_cast<int>(std::ceil(std::max(size.width, size.height) / kOutlineSearchSize));
+}
+
+// The gradient magnitude of a frame's grey levels at the table search's resolution.
+cv::Mat OutlineGradient(const cv::Mat& bgr) {
+  const int factor = OutlineFactor(bgr.size());
+  cv::Mat small, grey, gx, gy, magnitude;
+  cv::resize(bgr, small, {}, 1.0 / factor, 1.0 / factor, cv::INTER_AREA);
+  cv::cvtColor(small, grey, cv::COLOR_BGR2GRAY);
+  grey.convertTo(grey, CV_32F);
+  cv::Sobel(grey, gx, CV_32F, 1, 0);
+  cv::Sobel(grey, gy, CV_32F, 0, 1);
+  cv::magnitude(gx, gy, magnitude);
+  return magnitude;
 }
 
 double MinEdge(double edge_noise) { return std::max(kMinEdge, kEdgeNoises * edge_noise); }
@@ -286,8 +360,38 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
     scale_ = ScaleFromOutlines(*table_, BlobOutlines(searched, *table_, cloth_));
     if (!scale_) scale_ = ScaleFromTable(*table_, options_.ball_to_table_width);
   }
+  outline_gradient_ = OutlineGradient(bgr);
+  outline_band_ = cv::Mat::zeros(outline_gradient_.size(), CV_8U);
+  std::vector<cv::Point> outline;
+  const double factor = OutlineFactor(bgr.size());
+  for (const auto& c : table_->cloth_corners) {
+    outline.emplace_back(static_cast<int>(std::lround((c.x() + 0.5) / factor - 0.5)),
+                         static_cast<int>(std::lround((c.y() + 0.5) / factor - 0.5)));
+  }
+  cv::polylines(outline_band_, outline, true, 255, 2 * kOutlineBandPx + 1);
   failure_.clear();
   return true;
+}
+
+double BallDetector::OutlineAgreement(const cv::Mat& image) const {
+  if (outline_gradient_.empty() || image.size() != frame_size_) return 1.0;
+  const cv::Mat now = OutlineGradient(AsBgr(image));
+  const cv::Scalar mean_then = cv::mean(outline_gradient_, outline_band_);
+  const cv::Scalar mean_now = cv::mean(now, outline_band_);
+  double both = 0, then_squares = 0, now_squares = 0;
+  for (int y = 0; y < now.rows; ++y) {
+    const auto* band = outline_band_.ptr<uint8_t>(y);
+    const auto* a = outline_gradient_.ptr<float>(y);
+    const auto* b = now.ptr<float>(y);
+    for (int x = 0; x < now.cols; ++x) {
+      if (!band[x]) continue;
+      const double da = a[x] - mean_then[0], db = b[x] - mean_now[0];
+      both += da * db;
+      then_squares += da * da;
+      now_squares += db * db;
+    }
+  }
+  return then_squares > 0 && now_squares > 0 ? both / std::sqrt(then_squares * now_squares) : 0.0;
 }
 
 std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
@@ -358,7 +462,7 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
     });
     if (!overlaps) balls.push_back(ball);
   }
-  return balls;
+  return OnCloth(bgr, *table_, cloth_, balls);
 }
 
 cv::Mat BallDetector::Smoothed(const cv::Mat& bgr) const {

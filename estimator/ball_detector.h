@@ -103,6 +103,13 @@ class BallDetector {
   std::optional<BallDetection> RefineAt(const cv::Mat& image, const Eigen::Vector2d& predicted,
                                         double radius_px) const;
 
+  // How much of the table's outline a frame shows where the frame the table was learnt from
+  // showed it: the normalized correlation of the two frames' colour gradients along the cloth's
+  // outline (the rails and pockets, which do not move when the balls do), at the table search's
+  // resolution; 1 for the same view, about 0 when the camera has moved by more than the outline's
+  // width. 1 before a table is learnt, or for a frame of another size.
+  double OutlineAgreement(const cv::Mat& image) const;
+
   const std::optional<TableRegion>& table() const { return table_; }
   const std::optional<BallScale>& scale() const { return scale_; }
   const ClothModel& cloth() const { return cloth_; }
@@ -129,6 +136,9 @@ class BallDetector {
   double smoothing_px_ = 0;
   cv::Size frame_size_;
   std::string failure_;
+  // The learnt frame's gradient magnitude at the table search's resolution, and the band along
+  // the cloth's outline it is compared over (OutlineAgreement).
+  cv::Mat outline_gradient_, outline_band_;
 };
 
 }  // namespace billiard::estimator

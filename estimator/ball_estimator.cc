@@ -58,6 +58,10 @@ bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats
   std::vector<ClassEvidence> classes;
   if (full) {
     measured.clear();
+    if (detector_.table() && detector_.OutlineAgreement(frame) < kMovedAgreement) {
+      ++views_moved_;
+      detector_.LearnTable(frame);
+    }
     for (const BallDetection& d : detector_.Detect(frame)) {
       measured.push_back(ToTable(d.pixel));
       classes.push_back({d.ball_class, d.class_confidence});

@@ -5,6 +5,12 @@
 // tracked each frame only refines the balls near their predicted pixels, and a full Detect runs
 // every `full_detect_every` frames (to pick up a ball put on the table) or when a refinement
 // misses.
+//
+// A fixed camera's table is learnt once, on its first frame, and kept. Each full detection first
+// checks that the view has not moved (BallDetector::OutlineAgreement below kMovedAgreement: the
+// rails and pockets are no longer where they were); if it has, the table is learnt again from
+// that frame and the move counted (views_moved()): the camera model, calibrated for the old view,
+// is then stale, which the node says in NODE_STATUS.
 #pragma once
 
 #include <Eigen/Core>
@@ -17,6 +23,11 @@
 #include "sim/physics/parameters.h"
 
 namespace billiard::estimator {
+
+// The outline agreement under which the view has moved (about 0.9 and more for a still camera
+// with balls and players moving; a few pixels of a move at the search resolution drop it below
+// 0.3).
+inline constexpr double kMovedAgreement = 0.5;
 
 struct EstimatorOptions {
   DetectorOptions detector;
@@ -43,6 +54,8 @@ class BallEstimator {
   std::vector<TrackedBall> Balls() const;
 
   const camera::CameraModel& camera() const { return camera_; }
+  // How many times the view has moved since the first frame (see the top of the file).
+  int views_moved() const { return views_moved_; }
 
  private:
   Eigen::Vector2d ToTable(const Eigen::Vector2d& pixel) const;
@@ -54,6 +67,7 @@ class BallEstimator {
   BallTracker tracker_;
   long frames_ = 0;
   double last_time_ = -1e300;
+  int views_moved_ = 0;
 };
 
 }  // namespace billiard::estimator

@@ -6,6 +6,8 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "estimator/assignment.h"
+
 namespace billiard::estimator {
 
 namespace {
@@ -32,6 +34,21 @@ constexpr double kBlackShare = 0.5;
 constexpr double kStripeWhite = 0.3, kStripeMargin = 0.15;
 // Colour distance (ColourDistance): hue fully, chroma and L* weighted down.
 constexpr double kChromaWeight = 0.3, kLightnessWeight = 0.3;
+// The classes are given all at once, the rack's count of each respected (the Hungarian method,
+// assignment.h): a share on the wrong side of its threshold costs one per kShareMargin, a colour
+// one per kColourUnit of ColourDistance (about the distance between neighbouring hues of the
+// sets, red and orange); a ball without coloured pixels costs kNoColourCost for a coloured class.
+// A ball none fits better than kUnknownCost stays unknown, and so do the balls beyond the rack's
+// count. The confidence is 1 - (cost + kCostFloor) / (next best cost + kCostFloor).
+constexpr double kShareMargin = 0.15;
+constexpr double kColourUnit = 30.0;
+constexpr double kNoColourCost = 3.0;
+constexpr double kUnknownCost = 4.0;
+constexpr double kForbiddenCost = 1e6;
+constexpr double kCostFloor = 0.1;
+// The racks' counts beyond one: snooker's reds, carom's reds (four-ball games have two), English
+// pool's reds and yellows.
+constexpr int kSnookerReds = 15, kCaromReds = 2, kBlackballGroup = 7;
 
 struct Colour {
   BallClass ball_class;
@@ -39,8 +56,9 @@ struct Colour {
 };
 
 // Approximate colours of the balls (their sRGB under white light, read from manufacturers'
-// product pictures: Aramith pool and snooker sets, carom balls); the classifier compares hues
-// more than lightness, so a few per cent either way changes little.
+// product pictures: Aramith pool and snooker sets, carom balls, whose red and yellow English
+// pool's are too); the classifier compares hues more than lightness, so a few per cent either way
+// changes little.
 const std::vector<Colour>& ColoursOf(BallSet set) {
   static const std::vector<Colour> kPool = {
       {PoolBall(1), {250, 195, 10}},  {PoolBall(2), {20, 50, 160}},
@@ -57,6 +75,7 @@ const std::vector<Colour>& ColoursOf(BallSet set) {
     case BallSet::kSnooker:
       return kSnooker;
     case BallSet::kCarom:
+    case BallSet::kBlackball:
       return kCarom;
     case BallSet::kPool:
       break;
@@ -174,12 +193,18 @@ cv::Vec3f WhiteBalance(const std::vector<std::vector<cv::Vec3f>>& discs) {
   return gain;
 }
 
-double Ramp(double x, double from, double width) {
-  return std::clamp((x - from) / width, 0.0, 1.0);
-}
+// What a ball's disc shows: its shares of white, black and coloured pixels, and the coloured
+// ones' median colour.
+struct DiscLook {
+  double white = 0, black = 0, colour = 0;
+  cv::Vec3f median{0, 0, 0};  // L*a*b*, of the coloured pixels
+  bool seen = false;          // any pixel at all
+};
 
-BallIdentity Classify(const std::vector<cv::Vec3f>& lab, BallSet set) {
-  if (lab.empty()) return {};
+DiscLook Look(const std::vector<cv::Vec3f>& lab) {
+  DiscLook look;
+  if (lab.empty()) return look;
+  look.seen = true;
   int white = 0, black = 0;
   std::vector<float> a, b, l;
   for (const auto& p : lab) {
@@ -195,39 +220,79 @@ BallIdentity Classify(const std::vector<cv::Vec3f>& lab, BallSet set) {
     }
   }
   const double n = static_cast<double>(lab.size());
-  const double white_share = white / n, black_share = black / n, colour_share = a.size() / n;
-  if (white_share >= kCueWhite && colour_share <= kCueColour) {
-    return {BallClass::kCue, Ramp(white_share, kCueWhite - 0.1, 0.3) *
-                                 (1.0 - Ramp(colour_share, 0.0, 2 * kCueColour))};
+  look.white = white / n;
+  look.black = black / n;
+  look.colour = a.size() / n;
+  if (!a.empty()) {
+    look.median = {static_cast<float>(Median(l)), static_cast<float>(Median(a)),
+                   static_cast<float>(Median(b))};
   }
-  if (black_share >= kBlackShare && set != BallSet::kCarom) {
-    return {set == BallSet::kPool ? PoolBall(8) : BallClass::kBlack,
-            Ramp(black_share, kBlackShare - 0.1, 0.3)};
+  return look;
+}
+
+// How many balls of each class a set holds.
+std::vector<std::pair<BallClass, int>> ClassesOf(BallSet set) {
+  std::vector<std::pair<BallClass, int>> classes = {{BallClass::kCue, 1}};
+  switch (set) {
+    case BallSet::kPool:
+      for (int number = 1; number <= 15; ++number) classes.push_back({PoolBall(number), 1});
+      break;
+    case BallSet::kSnooker:
+      classes.push_back({BallClass::kBlack, 1});
+      for (const Colour& c : ColoursOf(set)) {
+        classes.push_back({c.ball_class, c.ball_class == BallClass::kRed ? kSnookerReds : 1});
+      }
+      break;
+    case BallSet::kCarom:
+      for (const Colour& c : ColoursOf(set)) {
+        classes.push_back({c.ball_class, c.ball_class == BallClass::kRed ? kCaromReds : 1});
+      }
+      break;
+    case BallSet::kBlackball:
+      classes.push_back({BallClass::kBlack, 1});
+      for (const Colour& c : ColoursOf(set)) classes.push_back({c.ball_class, kBlackballGroup});
+      break;
   }
-  if (a.empty()) return {};
-  const double ma = Median(a), mb = Median(b), ml = Median(l);
-  const auto& colours = ColoursOf(set);
-  double nearest = HUGE_VAL, second = HUGE_VAL;
-  BallClass best = BallClass::kUnknown;
-  for (const Colour& c : colours) {
-    const double d = ColourDistance({static_cast<float>(ml), static_cast<float>(ma),
-                                     static_cast<float>(mb)},
-                                    LabOfSrgb(c.srgb));
-    if (d < nearest) {
-      second = nearest;
-      nearest = d;
-      best = c.ball_class;
-    } else if (d < second) {
-      second = d;
+  return classes;
+}
+
+// How far a share is on the wrong side of a threshold, in units of `margin`: 0 on the right side.
+double Beyond(double share, double threshold, double margin) {
+  return std::max(0.0, share - threshold) / margin;
+}
+
+// The cost of calling a ball of this look `ball_class` of `set`: how far each of its shares is on
+// the wrong side of the class's threshold (kCueWhite, kCueColour, kBlackShare, kStripeWhite), in
+// kShareMargin, plus its colour's distance from the class's colour (ColourDistance) in
+// kColourUnit.
+double Cost(const DiscLook& look, BallClass ball_class, BallSet set) {
+  if (ball_class == BallClass::kCue) {
+    return Beyond(kCueWhite, look.white, kShareMargin) +
+           Beyond(look.colour, kCueColour, kShareMargin);
+  }
+  const bool black_ball = ball_class == BallClass::kBlack ||
+                          (set == BallSet::kPool && ball_class == PoolBall(8));
+  if (black_ball) return Beyond(kBlackShare, look.black, kShareMargin);
+  // A coloured ball: some colour, not mostly black, its hue that of its class.
+  double cost = Beyond(kCueColour, look.colour, kShareMargin) +
+                Beyond(look.black, kBlackShare, kShareMargin);
+  int number = static_cast<int>(ball_class);
+  if (set == BallSet::kPool) {
+    const bool stripe = number > 8;
+    cost += stripe ? Beyond(kStripeWhite, look.white, kShareMargin)
+                   : Beyond(look.white, kStripeWhite, kShareMargin);
+    if (stripe) number -= 8;
+  } else {
+    cost += Beyond(look.white, kCueWhite, kShareMargin);
+  }
+  const BallClass colour_class = set == BallSet::kPool ? PoolBall(number) : ball_class;
+  if (look.colour == 0) return cost + kNoColourCost;
+  for (const Colour& c : ColoursOf(set)) {
+    if (c.ball_class == colour_class) {
+      return cost + ColourDistance(look.median, LabOfSrgb(c.srgb)) / kColourUnit;
     }
   }
-  double confidence = colours.size() > 1 ? 1.0 - nearest / std::max(second, 1e-9) : 1.0;
-  if (set == BallSet::kPool) {
-    const bool stripe = white_share >= kStripeWhite;
-    confidence *= Ramp(std::abs(white_share - kStripeWhite), 0.0, kStripeMargin);
-    if (stripe) best = PoolBall(static_cast<int>(best) + 8);
-  }
-  return {best, std::clamp(confidence, 0.0, 1.0)};
+  return cost + kNoColourCost;
 }
 
 }  // namespace
@@ -237,8 +302,46 @@ std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<Ba
   std::vector<std::vector<cv::Vec3f>> discs;
   for (const BallDetection& ball : balls) discs.push_back(DiscPixels(bgr, ball));
   const cv::Vec3f gain = WhiteBalance(discs);
-  std::vector<BallIdentity> identities;
-  for (const auto& disc : discs) identities.push_back(Classify(ToLab(disc, gain), set));
+  std::vector<DiscLook> looks;
+  for (const auto& disc : discs) looks.push_back(Look(ToLab(disc, gain)));
+  // The rack holds so many of each class: one slot per ball of it, and for every ball a slot
+  // "unknown" at kUnknownCost, which takes the balls beyond the rack's count (a false detection,
+  // a ball of another set) and those no class fits.
+  const auto classes = ClassesOf(set);
+  std::vector<BallClass> slots;
+  for (const auto& [ball_class, count] : classes) slots.insert(slots.end(), count, ball_class);
+  const int n = static_cast<int>(balls.size());
+  const int known = static_cast<int>(slots.size());
+  Eigen::MatrixXd cost(n, known + n);
+  Eigen::MatrixXd class_cost(n, classes.size());
+  for (int i = 0; i < n; ++i) {
+    for (std::size_t c = 0; c < classes.size(); ++c) {
+      class_cost(i, c) = looks[i].seen ? Cost(looks[i], classes[c].first, set) : kForbiddenCost;
+    }
+    int slot = 0;
+    for (std::size_t c = 0; c < classes.size(); ++c) {
+      for (int k = 0; k < classes[c].second; ++k) cost(i, slot++) = class_cost(i, c);
+    }
+    for (int j = 0; j < n; ++j) cost(i, known + j) = looks[i].seen ? kUnknownCost : 0.0;
+  }
+  const std::vector<int> assigned = AssignMinimumCost(cost, kForbiddenCost);
+  std::vector<BallIdentity> identities(balls.size());
+  for (int i = 0; i < n; ++i) {
+    if (assigned[i] < 0 || assigned[i] >= known) continue;
+    const BallClass ball_class = slots[assigned[i]];
+    // Confidence: the margin of the class given over the ball's next best class, as a ratio.
+    double given = 0, other = HUGE_VAL;
+    for (std::size_t c = 0; c < classes.size(); ++c) {
+      if (classes[c].first == ball_class) {
+        given = class_cost(i, c);
+      } else {
+        other = std::min(other, class_cost(i, c));
+      }
+    }
+    other = std::min(other, kUnknownCost);
+    identities[i] = {ball_class,
+                     std::clamp(1.0 - (given + kCostFloor) / (other + kCostFloor), 0.0, 1.0)};
+  }
   return identities;
 }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <opencv2/imgproc.hpp>
 
 #include "estimator/ball_class.h"
@@ -27,16 +28,18 @@ struct Rendered {
   std::vector<BallDetection> balls;  // in the order of the row (0, 1, ..., 8)
 };
 
-Rendered RenderRow(const cv::Vec3f& tint) {
+// The pool balls `ids` in a row, rendered overhead under a light of `tint`, detected.
+Rendered RenderRow(const cv::Vec3f& tint, const std::vector<int>& ids = {0, 1, 2, 3, 4, 5, 6, 7, 8}) {
   const camera::CameraModel camera = camera::CameraModel::Overhead(Pool().table, 1280, 720);
   render::RenderOptions options;
   options.exposure_s = 0;
   const render::TableRenderer renderer(camera, Pool(), options);
   std::vector<render::RenderBall> shown;
   std::vector<Eigen::Vector2d> where;
-  for (int id = 0; id <= 8; ++id) {
-    where.push_back({0.3 + 0.24 * id, 0.5 + 0.1 * (id % 2)});
-    shown.push_back(render::RenderBall::AtRest(id, render::PoolBallColour(id), where.back()));
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    where.push_back({0.3 + 0.24 * i, 0.5 + 0.1 * (i % 2)});
+    shown.push_back(render::RenderBall::AtRest(static_cast<int>(i),
+                                               render::PoolBallColour(ids[i]), where.back()));
   }
   Rendered r;
   r.frame = renderer.Render(shown, 0.0);
@@ -69,6 +72,36 @@ TEST(BallIdentity, TheCueBallTheBlackAndEverySolidUnderAnyLight) {
     }
     EXPECT_GT(identities[0].confidence, 0.5) << "tint " << tint;
   }
+}
+
+// A rack holds one ball of each class: the classes are given all at once. Two white balls are not
+// both the cue ball, two yellow solids (the renderer draws the 9 as the 1) are not both the 1, and
+// nothing is named twice.
+TEST(BallIdentity, ARackHasOneOfEachNumber) {
+  const Rendered r = RenderRow({1, 1, 1}, {0, 1, 9, 0, 8, 3});
+  const auto identities = IdentifyBalls(r.frame, r.balls, BallSet::kPool);
+  ASSERT_EQ(identities.size(), 6u);
+  std::map<BallClass, int> named;
+  for (const BallIdentity& id : identities) {
+    if (id.ball_class != BallClass::kUnknown) ++named[id.ball_class];
+  }
+  for (const auto& [ball_class, count] : named) {
+    EXPECT_EQ(count, 1) << BallClassName(ball_class) << " named " << count << " times";
+  }
+  EXPECT_EQ(named[BallClass::kCue], 1);
+  EXPECT_TRUE(identities[1].ball_class == PoolBall(1) || identities[2].ball_class == PoolBall(1));
+  EXPECT_EQ(identities[4].ball_class, PoolBall(8));
+  EXPECT_EQ(identities[5].ball_class, PoolBall(3));
+  // Of the two white balls, the one not called the cue ball is named with no confidence to speak
+  // of, or not at all.
+  const int other_white = identities[0].ball_class == BallClass::kCue ? 3 : 0;
+  EXPECT_LT(identities[other_white].confidence, 0.5);
+  // Snooker has fifteen reds: three red balls are all red.
+  const Rendered reds = RenderRow({1, 1, 1}, {0, 3, 3, 3});
+  const auto snooker = IdentifyBalls(reds.frame, reds.balls, BallSet::kSnooker);
+  ASSERT_EQ(snooker.size(), 4u);
+  EXPECT_EQ(snooker[0].ball_class, BallClass::kCue);
+  for (int i = 1; i < 4; ++i) EXPECT_EQ(snooker[i].ball_class, BallClass::kRed) << i;
 }
 
 TEST(BallIdentity, SnookersColoursAndUnknownBeyondTheFrame) {

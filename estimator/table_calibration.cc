@@ -179,6 +179,40 @@ std::optional<CalibrationResult> CalibrateTable(const cv::Mat& image, const Mark
   return result;
 }
 
+std::optional<MarkerLayout> MarkersOnTableSeen(const cv::Mat& image,
+                                               const std::array<Eigen::Vector2d, 4>& pixels,
+                                               const physics::TableParameters& table,
+                                               double height) {
+  const TableSearch search = FindTable(image);
+  if (!search.table) return std::nullopt;
+  // The corners in image order: top-left, top-right, bottom-right, bottom-left (by the sums and
+  // differences of their coordinates).
+  std::array<Eigen::Vector2d, 4> corners = search.table->corners;
+  const auto by = [&](auto key) {
+    return *std::min_element(corners.begin(), corners.end(),
+                             [&](const auto& a, const auto& b) { return key(a) < key(b); });
+  };
+  const std::array<Eigen::Vector2d, 4> ordered = {
+      by([](const Eigen::Vector2d& p) { return p.x() + p.y(); }),
+      by([](const Eigen::Vector2d& p) { return p.y() - p.x(); }),
+      by([](const Eigen::Vector2d& p) { return -p.x() - p.y(); }),
+      by([](const Eigen::Vector2d& p) { return p.x() - p.y(); })};
+  const std::array<cv::Point2f, 4> image_points = {
+      cv::Point2f(ordered[0].x(), ordered[0].y()), cv::Point2f(ordered[1].x(), ordered[1].y()),
+      cv::Point2f(ordered[2].x(), ordered[2].y()), cv::Point2f(ordered[3].x(), ordered[3].y())};
+  const float l = static_cast<float>(table.length), w = static_cast<float>(table.width);
+  const std::array<cv::Point2f, 4> table_points = {cv::Point2f(0, w), cv::Point2f(l, w),
+                                                   cv::Point2f(l, 0), cv::Point2f(0, 0)};
+  const cv::Mat h = cv::getPerspectiveTransform(image_points.data(), table_points.data());
+  MarkerLayout layout;
+  for (int i = 0; i < 4; ++i) {
+    const cv::Mat p = h * (cv::Mat_<double>(3, 1) << pixels[i].x(), pixels[i].y(), 1.0);
+    layout.centres[i] = {p.at<double>(0) / p.at<double>(2), p.at<double>(1) / p.at<double>(2),
+                         height};
+  }
+  return layout;
+}
+
 double CalibrationDisagreementPx(const TableRegion& found, const camera::CameraModel& camera,
                                  const physics::TableParameters& table) {
   double largest = 0;

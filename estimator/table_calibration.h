@@ -69,6 +69,17 @@ struct CalibrationResult {
 std::optional<CalibrationResult> CalibrateTable(const cv::Mat& image, const MarkerLayout& layout,
                                                 const camera::CameraModel& intrinsics = {});
 
+// Where the markers at `pixels` (image order) lie on the table the frame shows, without markers
+// (table_finder.h): through the homography of the playing surface found, its corners in image
+// order taken for the table's (0, W), (L, W), (L, 0), (0, 0) (the long side across the image, as
+// CameraModel::Overhead), at `height` [m]. The cloth's plane stands for the markers' (a few
+// centimetres below them): about right for a camera over the table, which is what tells a user
+// the layout of a rig's markers when the one given does not fit. None when no table is found.
+std::optional<MarkerLayout> MarkersOnTableSeen(const cv::Mat& image,
+                                               const std::array<Eigen::Vector2d, 4>& pixels,
+                                               const physics::TableParameters& table,
+                                               double height);
+
 // How far [px] the playing surface found in a frame without markers (table_finder.h) is from where
 // a calibrated camera puts the table's corners on the cloth: the largest distance of a projected
 // corner from the nearest corner found. The two are found independently (markers, cloth), so they

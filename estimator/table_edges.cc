@@ -29,6 +29,16 @@ constexpr int kEdgeRansacTries = 200;
 // line too, fainter, and more broken.
 constexpr int kOutlineClearancePx = 3;
 constexpr double kNoseOfBest = 0.95;
+// FaintNoseLine: the median rate of change along a line must be kFaintEdges times the band's
+// median on both halves of the side, and kMinFaintEdge L*a*b* units per pixel (half of kMinEdge,
+// which a single place's edge must pass), and more than along the lines
+// kFaintRidge steps either side (a ridge, not the blur of the outline's edge); lines within
+// kFaintClearancePx more of the outline are not looked at, nor lines turned more than
+// kFaintMaxTilt of the band across the side.
+constexpr double kFaintEdges = 2.0, kMinFaintEdge = 1.0;
+constexpr int kFaintRidge = 2;
+constexpr int kFaintClearancePx = 3;
+constexpr double kFaintMaxTilt = 0.25;
 
 // Bilinear BGR colours of a frame at `points` [px] in float L*a*b*; points outside the frame get
 // NaN. Not LabImage's 8-bit L*a*b*: its steps move the cushions' edges enough to cost balls near
@@ -69,9 +79,23 @@ Eigen::Vector3d SideLine(const Eigen::Matrix3d& image_from_table, bool long_firs
       .cross(image_from_table * table[(side + 1) % 4].homogeneous());
 }
 
-std::vector<EdgeLine> EdgeLinesAlong(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table,
-                                     bool long_first, int side, double from, double to,
-                                     double clearance_px) {
+namespace {
+
+// The colour's rate of change going inward across a side, at places along it: `rate` holds
+// `offsets` values a place, a step inward each (about a pixel where the side is nearest), from
+// `from` table widths inward; `points` the image points of the samples (offsets + 1 a place).
+struct SideProfiles {
+  std::vector<double> along;  // place k at this fraction of the side
+  std::vector<Eigen::Vector2d> points;
+  std::vector<double> rate;
+  int offsets = 0;
+  Eigen::Vector3d side_line;  // the side's own line, (a, b) unit
+  double towards_centre = 1;  // the sign of side_line towards the table's centre
+};
+
+SideProfiles Profiles(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table,
+                      bool long_first, int side, double from, double to) {
+  SideProfiles profiles;
   const auto table = TableCorners(long_first);
   const Eigen::Vector2d a = table[side], b = table[(side + 1) % 4];
   const Eigen::Vector2d centre(0.5 * kTableAspect, 0.5);
@@ -113,9 +137,33 @@ std::vector<EdgeLine> EdgeLinesAlong(const cv::Mat& bgr, const Eigen::Matrix3d& 
       rate[k * offsets + i] = std::isfinite(r) ? r : 0.0;
     }
   }
-  std::vector<double> sorted = rate;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double min_edge = std::max(kMinEdge, kEdgeNoises * sorted[sorted.size() / 2]);
+  profiles.along = along;
+  profiles.points = points;
+  profiles.rate = rate;
+  profiles.offsets = offsets;
+  profiles.side_line = side_line;
+  profiles.towards_centre = towards_centre;
+  return profiles;
+}
+
+double MedianOf(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+}  // namespace
+
+std::vector<EdgeLine> EdgeLinesAlong(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_table,
+                                     bool long_first, int side, double from, double to,
+                                     double clearance_px) {
+  const SideProfiles profiles = Profiles(bgr, image_from_table, long_first, side, from, to);
+  const auto& along = profiles.along;
+  const auto& points = profiles.points;
+  const auto& rate = profiles.rate;
+  const int offsets = profiles.offsets;
+  const auto& side_line = profiles.side_line;
+  const double towards_centre = profiles.towards_centre;
+  const double min_edge = std::max(kMinEdge, kEdgeNoises * MedianOf(rate));
   // The edges along each place, to a fraction of a sample (the parabola through the maximum and
   // its neighbours): (image point, place).
   std::vector<std::pair<Eigen::Vector2d, int>> edges;
@@ -208,11 +256,11 @@ std::optional<EdgeLine> ClothSide(const cv::Mat& bgr, const Eigen::Matrix3d& ima
   return lines.front();
 }
 
-Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& cloth_from_table,
-                         bool long_first, int side, double max_cushion_width) {
+std::optional<Eigen::Vector3d> NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& cloth_from_table,
+                                        bool long_first, int side, double max_cushion_width) {
   const auto lines = EdgeLinesAlong(bgr, cloth_from_table, long_first, side, 0.0, max_cushion_width,
                                     kOutlineClearancePx);
-  if (lines.empty()) return SideLine(cloth_from_table, long_first, side);
+  if (lines.empty()) return std::nullopt;
   const EdgeLine* nose = &lines.front();
   for (const EdgeLine& l : lines) {
     if (l.places >= kNoseOfBest * lines.front().places && l.inward_px > nose->inward_px) {
@@ -220,6 +268,71 @@ Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& cloth_from_t
     }
   }
   return nose->line;
+}
+
+std::optional<Eigen::Vector3d> FaintNoseLine(const cv::Mat& bgr,
+                                             const Eigen::Matrix3d& cloth_from_table,
+                                             bool long_first, int side,
+                                             double max_cushion_width) {
+  const SideProfiles profiles =
+      Profiles(bgr, cloth_from_table, long_first, side, 0.0, max_cushion_width);
+  const int n = profiles.offsets;
+  if (n < 4) return std::nullopt;
+  const double noise = MedianOf(profiles.rate);
+  const auto& along = profiles.along;
+  // The median rate along the line from offset i0 at the side's start to i1 at its end, per half
+  // (places alternate between the halves), linearly between the samples: most places of a
+  // cushion's line have its edge, where a few balls beside it are strong edges at few places.
+  const auto median_rate = [&](double i0, double i1, int half) {
+    std::vector<double> rates;
+    for (std::size_t k = half; k < along.size(); k += 2) {
+      const double i = i0 + (i1 - i0) * along[k];
+      const int lower = static_cast<int>(std::floor(i));
+      if (lower < 0 || lower + 1 >= n) continue;
+      const double f = i - lower;
+      rates.push_back((1 - f) * profiles.rate[k * n + lower] + f * profiles.rate[k * n + lower + 1]);
+    }
+    return rates.empty() ? 0.0 : MedianOf(rates);
+  };
+  const auto score_of = [&](double i0, double i1) {
+    return std::min(median_rate(i0, i1, 0), median_rate(i0, i1, 1));
+  };
+  const int clearance = kOutlineClearancePx + kFaintClearancePx;
+  const int max_tilt = static_cast<int>(kFaintMaxTilt * n);
+  double best = 0, best_i0 = 0, best_i1 = 0;
+  for (int i0 = clearance; i0 + 1 < n; ++i0) {
+    for (int i1 = std::max(clearance, i0 - max_tilt); i1 + 1 < n && i1 <= i0 + max_tilt; ++i1) {
+      const double score = score_of(i0, i1);
+      // A ridge across the band, not the tail of a stronger edge's blur.
+      const bool ridge = score > score_of(i0 - kFaintRidge, i1 - kFaintRidge) &&
+                         score > score_of(i0 + kFaintRidge, i1 + kFaintRidge);
+      if (ridge && score > best) {
+        best = score;
+        best_i0 = i0;
+        best_i1 = i1;
+      }
+    }
+  }
+  if (best < std::max(kMinFaintEdge, kFaintEdges * noise)) return std::nullopt;
+  // The line through the places' points at the best line's offsets (each between its samples,
+  // where the rate of change between them is).
+  std::vector<cv::Point2f> points;
+  for (std::size_t k = 0; k < along.size(); ++k) {
+    const double i = best_i0 + (best_i1 - best_i0) * along[k];
+    const int lower = static_cast<int>(std::floor(i));
+    if (lower < 0 || lower + 2 > n) continue;
+    const double f = i - lower;
+    const auto middle = [&](int j) {
+      const std::size_t base = k * (n + 1);
+      return 0.5 * (profiles.points[base + j] + profiles.points[base + j + 1]);
+    };
+    const Eigen::Vector2d p = (1 - f) * middle(lower) + f * middle(lower + 1);
+    points.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
+  }
+  if (points.size() < 2) return std::nullopt;
+  cv::Vec4f fitted;
+  cv::fitLine(points, fitted, cv::DIST_L2, 0, 0.01, 0.01);
+  return Eigen::Vector3d(-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]);
 }
 
 }  // namespace billiard::estimator

@@ -53,9 +53,19 @@ std::optional<EdgeLine> ClothSide(const cv::Mat& bgr, const Eigen::Matrix3d& ima
 
 // The nose of the cushion along side `side` of `cloth_from_table` (the cloth's outline), up to
 // `max_cushion_width` table widths inward: the best supported straight edge, or the innermost
-// nearly as well supported; the outline itself when there is none (a cushion seen from behind
-// hides its face).
-Eigen::Vector3d NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& cloth_from_table,
-                         bool long_first, int side, double max_cushion_width);
+// nearly as well supported; none when there is none (a cushion seen from behind hides its face).
+std::optional<Eigen::Vector3d> NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& cloth_from_table,
+                                        bool long_first, int side, double max_cushion_width);
+
+// The nose of a cushion seen from behind (the one nearest the camera in an oblique view): its top
+// is of the cloth, so the cloth's outline is the cushion's back, and the nose is a faint line
+// where the top meets the bed (a highlight along it, or a change of shade), too faint for each
+// place's edge to pass NoseLine's threshold. So the colour's rate of change is gathered along every
+// straight line across the band (a Hough transform over the two ends' offsets): the line whose
+// median rate over the places of each half of the side is the highest, if it is kFaintEdges times
+// the band's median. None when no line stands out.
+std::optional<Eigen::Vector3d> FaintNoseLine(const cv::Mat& bgr,
+                                             const Eigen::Matrix3d& cloth_from_table,
+                                             bool long_first, int side, double max_cushion_width);
 
 }  // namespace billiard::estimator

@@ -55,6 +55,13 @@ constexpr double kOutlineSearchPx = 3.0;
 // assignment of the long sides (an overhead view makes them 0 / 0: no camera, no answer).
 constexpr double kMinFocal = 0.3, kMaxFocal = 3.0;
 constexpr double kFocalAgreement = 1.3;
+// Seen from overhead, the playing surface found is the table's (kTableAspect long over wide)
+// within a factor of kOverheadAspectTolerance (the dev frames' are 1.93 to 2.05); else it is
+// something else: a sheet of paper, a chart, a screen. And the cloth is not white: a cloth's L*
+// is below kMaxClothLightness, or its chroma above kMinClothChroma (a grey cloth under bright
+// light reads L* 76).
+constexpr double kOverheadAspectTolerance = 1.25;
+constexpr double kMaxClothLightness = 85.0, kMinClothChroma = 10.0;
 
 struct Line {
   Eigen::Vector3d coefficients;  // a x + b y + c = 0, (a, b) unit
@@ -124,6 +131,14 @@ cv::Vec3f ClothColour(const cv::Mat& small) {
     }
   }
   return cv::Vec3f(sum / std::max(1.0, count));
+}
+
+// The CIE L*a*b* of a BGR colour (0..255 a channel).
+cv::Vec3f LabOfBgr(const cv::Vec3f& bgr) {
+  const cv::Mat pixel(1, 1, CV_32FC3, cv::Scalar(bgr[0] / 255.0, bgr[1] / 255.0, bgr[2] / 255.0));
+  cv::Mat lab;
+  cv::cvtColor(pixel, lab, cv::COLOR_BGR2Lab);
+  return lab.at<cv::Vec3f>(0, 0);
 }
 
 // Pixels of about the cloth's chromaticity and brightness, off strong edges.
@@ -338,6 +353,19 @@ bool LongSideFirst(const std::array<Eigen::Vector2d, 4>& corners, const cv::Size
   return camera[0] != camera[1] ? camera[0] : first >= second;
 }
 
+// The long side over the short side of the rectangle whose image, seen from overhead, is the
+// quadrilateral `corners` (in order around it): the ratio of the lines through the midpoints of
+// opposite sides, which the small perspective of an overhead view leaves nearly as on the table.
+// (An oblique view's ratio needs the camera's focal length, which the vanishing points give only
+// where both pairs of sides converge and the principal point is known (Zhang and He 2007): a
+// broadcast frame is cropped, a view straight along the table has one vanishing point; so an
+// oblique view is not judged by its ratio.)
+double OverheadAspect(const std::array<Eigen::Vector2d, 4>& corners) {
+  const double along = (0.5 * (corners[1] + corners[2]) - 0.5 * (corners[0] + corners[3])).norm();
+  const double across = (0.5 * (corners[2] + corners[3]) - 0.5 * (corners[0] + corners[1])).norm();
+  return std::max(along, across) / std::min(along, across);
+}
+
 }  // namespace
 
 const char* TableViewName(TableView view) {
@@ -425,6 +453,10 @@ TableSearch FindTable(const cv::Mat& bgr) {
   TableRegion table;
   table.mask_scale = scale;
   table.cloth_colour = ClothColour(small);
+  const cv::Vec3f cloth_lab = LabOfBgr(table.cloth_colour);
+  if (cloth_lab[0] > kMaxClothLightness && std::hypot(cloth_lab[1], cloth_lab[2]) < kMinClothChroma) {
+    return {std::nullopt, "no table: what fills the frame's middle is white, not a cloth"};
+  }
   table.cloth = LargestCentralRegion(ClothLike(small, table.cloth_colour));
   if (cv::countNonZero(table.cloth) < kMinClothFraction * small.total()) {
     return {std::nullopt, "no table: no evenly coloured cloth covers " +
@@ -482,8 +514,28 @@ TableSearch FindTable(const cv::Mat& bgr) {
     return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
   }
   const Eigen::Matrix3d cloth_from_table = ImageFromTable(table.cloth_corners, long_first);
-  for (int i = 0; i < 4; ++i)
-    lines[i] = NoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+  // The side nearest the camera (the largest inverse depth at its middle), whose cushion is seen
+  // from behind in an oblique view.
+  const Eigen::Vector3d cloth_depth = cloth_from_table.inverse().row(2).transpose();
+  int nearest = 0;
+  double nearest_inverse_depth = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector2d middle = 0.5 * (table.cloth_corners[i] + table.cloth_corners[(i + 1) % 4]);
+    const double w = std::abs(cloth_depth.dot(middle.homogeneous()));
+    if (w > nearest_inverse_depth) {
+      nearest_inverse_depth = w;
+      nearest = i;
+    }
+  }
+  const bool oblique = DepthRatio(table.cloth_corners) > kOverheadDepthRatio;
+  for (int i = 0; i < 4; ++i) {
+    std::optional<Eigen::Vector3d> nose =
+        NoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+    if (!nose && oblique && i == nearest) {
+      nose = FaintNoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+    }
+    lines[i] = nose.value_or(SideLine(cloth_from_table, long_first, i));
+  }
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet"};
   }
@@ -496,6 +548,14 @@ TableSearch FindTable(const cv::Mat& bgr) {
   }
   table.view =
       table.depth_ratio <= kOverheadDepthRatio ? TableView::kOverhead : TableView::kOblique;
+  const double aspect = OverheadAspect(table.corners);
+  if (table.view == TableView::kOverhead &&
+      std::abs(std::log(aspect / kTableAspect)) > std::log(kOverheadAspectTolerance)) {
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.2f", aspect);
+    return {std::nullopt, std::string("no table: the surface found is ") + ratio +
+                              " times as long as it is wide, not a table's 2"};
+  }
   return {table, ""};
 }
 

@@ -161,5 +161,34 @@ TEST(TableFinder, AFrameWithoutATableIsRefusedWithTheReason) {
   EXPECT_FALSE(FindTable(cv::Mat(10, 10, CV_8UC1, cv::Scalar(0))).table);
 }
 
+// What fills the middle of the frame evenly is not always a cloth: a white chart on a desk (a
+// sheet of paper, 1.41 : 1, with a grid and text on it), and a green square seen from overhead,
+// which is no table's shape.
+TEST(TableFinder, AChartOrASquareIsNoTable) {
+  cv::Mat desk(720, 1280, CV_8UC3, cv::Scalar(70, 90, 110));
+  const cv::Rect sheet(290, 110, 700, 495);  // A4's 1.41 : 1
+  cv::rectangle(desk, sheet, cv::Scalar(245, 247, 248), cv::FILLED);
+  for (int x = sheet.x + 50; x < sheet.br().x; x += 100) {
+    cv::line(desk, {x, sheet.y + 40}, {x, sheet.br().y - 40}, cv::Scalar(30, 30, 30), 2);
+  }
+  cv::putText(desk, "Calibration chart 7 x 5", {sheet.x + 60, sheet.y + 30},
+              cv::FONT_HERSHEY_SIMPLEX, 0.8, cv::Scalar(20, 20, 20), 2);
+  const TableSearch chart = FindTable(desk);
+  EXPECT_FALSE(chart.table);
+  EXPECT_NE(chart.reason.find("no table"), std::string::npos) << chart.reason;
+  EXPECT_NE(chart.reason.find("white"), std::string::npos) << chart.reason;
+  cv::Mat floor(720, 1280, CV_8UC3, cv::Scalar(40, 60, 90));
+  cv::rectangle(floor, {340, 60, 600, 600}, cv::Scalar(40, 120, 30), cv::FILLED);
+  const TableSearch square = FindTable(floor);
+  EXPECT_FALSE(square.table);
+  EXPECT_NE(square.reason.find("not a table's 2"), std::string::npos) << square.reason;
+  // The same cloth twice as long as it is wide is a table.
+  cv::Mat table(720, 1280, CV_8UC3, cv::Scalar(40, 60, 90));
+  cv::rectangle(table, {140, 160, 1000, 500}, cv::Scalar(40, 120, 30), cv::FILLED);
+  const TableSearch found = FindTable(table);
+  ASSERT_TRUE(found.table) << found.reason;
+  EXPECT_EQ(found.table->view, TableView::kOverhead);
+}
+
 }  // namespace
 }  // namespace billiard::estimator

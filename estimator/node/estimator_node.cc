@@ -98,6 +98,12 @@ void EstimatorNode::OnImage(const lcm::ReceiveBuffer* rbuf, const std::string&) 
                   std::to_string(c.height));
     }
     ++frames_;
+    if (estimator_.views_moved() != views_moved_) {
+      views_moved_ = estimator_.views_moved();
+      health_.Set("view_moved", views_moved_);
+      log_("estimator_node: the camera's view has moved (the table learnt again); its "
+           "calibration is of the old view");
+    }
     std::vector<estimator::TrackedBall> balls = estimator_.Balls();
     if (balls.size() > static_cast<std::size_t>(messages::kMaxBalls)) {
       // More than a table holds (clutter taken for balls): the best-known ones go out, since a

@@ -7,7 +7,9 @@
 //                                than the last one (late or reordered) is logged and dropped; the
 //                                same frame again is counted and ignored
 //   TABLE_STATE   table_state_t  the confirmed balls, utime of the frame, ball_id of the track
-//   NODE_STATUS   node_status_t  once a second (node_health.h), from Work()
+//   NODE_STATUS   node_status_t  once a second (node_health.h), from Work(); its counter
+//                                view_moved says how often the camera's view has moved
+//                                (ball_estimator.h), logged once a move
 //
 // Frames that show a new clock (message_clock.h: a camera or simulator that restarted) drop the
 // tracks of the old clock, and tracking starts again.
@@ -70,6 +72,7 @@ class EstimatorNode {
   nodes::NodeHealth health_;
   lcm::Subscription* subscription_ = nullptr;
   long frames_ = 0;
+  int views_moved_ = 0;
   nodes::MessageClock clock_;
 };
 

@@ -180,5 +180,31 @@ TEST_F(EstimatorNodeTest, MoreBallsThanAMessageHoldsPublishesTheBestKnown) {
   EXPECT_EQ(node_.health().dropped(), 0);
 }
 
+// A fixed camera's table is learnt once: frames of a still view never count a move, however the
+// balls lie; when the camera is knocked (moved 4 cm along the table), NODE_STATUS says so and the
+// node goes on.
+TEST_F(EstimatorNodeTest, AMovedViewIsSaidInTheStatus) {
+  std::int64_t utime = 1'000'000;
+  for (int i = 0; i < 40; ++i) {
+    balls_[1] = render::RenderBall::AtRest(3, render::PoolBallColour(3), {1.3 + 0.01 * i, 0.9});
+    Send(Frame(utime += 8'333, messages::ImageEncoding::kRgb));
+  }
+  EXPECT_EQ(node_.health().counter("view_moved"), 0);
+  camera::CameraModel knocked = camera_;
+  knocked.translation += knocked.rotation * Eigen::Vector3d(0.04, 0, 0);
+  const render::TableRenderer moved(knocked, Pool());
+  for (int i = 0; i < 40; ++i) {
+    Send(messages::EncodeImage(moved.Render(balls_, 1e-6 * (utime += 8'333)), utime,
+                               messages::ImageEncoding::kRgb));
+  }
+  EXPECT_EQ(node_.health().counter("view_moved"), 1);
+  EXPECT_EQ(node_.frames(), 80);
+  bool said = false;
+  for (const std::string& line : log_) {
+    said = said || line.find("view has moved") != std::string::npos;
+  }
+  EXPECT_TRUE(said);
+}
+
 }  // namespace
 }  // namespace billiard::estimator_node

@@ -16,7 +16,7 @@ namespace billiard::cli {
 namespace {
 
 struct BenchDetectArgs {
-  std::string set, out, params = params::kDefaultParameterSet;
+  std::string set, out, corners, params = params::kDefaultParameterSet;
   bool synthetic = false, no_overlays = false;
   std::uint32_t seed = 2026;
 };
@@ -38,6 +38,13 @@ void Run(const BenchDetectArgs& args) {
       frames = bench::LoadLabelledSet(args.set);
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--set: ") + e.what());
+    }
+    if (!args.corners.empty()) {
+      try {
+        bench::LoadTableCorners(args.corners, &frames);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--corners: ") + e.what());
+      }
     }
   }
   bench::DetectionBenchmarkOptions options;
@@ -65,6 +72,9 @@ void AddBenchDetectCommand(CLI::App& app) {
   cmd->add_flag("--synthetic", args->synthetic,
                 "Render the synthetic suite (overhead and oblique cameras, racks, five cloths) "
                 "into OUT/synthetic and run on it instead");
+  cmd->add_option("--corners", args->corners,
+                  "The playing surface's corners of the set's frames (JSON, as "
+                  "estimator/testing/real_table_corners.json): whether each table was found");
   cmd->add_option("--params", args->params, "The balls and table of --synthetic")
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Seed of --synthetic")->capture_default_str();

@@ -75,10 +75,8 @@ struct DetectArgs {
 
 estimator::BallSet BallSetOption(const std::string& name, const physics::ModelParameters& params) {
   if (name.empty()) return estimator::BallSetOf(params.name);
-  if (name == "pool") return estimator::BallSet::kPool;
-  if (name == "snooker") return estimator::BallSet::kSnooker;
-  if (name == "carom") return estimator::BallSet::kCarom;
-  throw UsageError("--ball-set: '" + name + "' is none of pool, snooker, carom");
+  if (const auto set = estimator::BallSetNamed(name)) return *set;
+  throw UsageError("--ball-set: '" + name + "' is none of " + estimator::kBallSetNames);
 }
 
 nlohmann::json Points(const std::array<Eigen::Vector2d, 4>& corners) {
@@ -187,11 +185,27 @@ struct CalibrateArgs {
 
 // A pose that does not reproject the markers where they were found is not the camera's: their
 // table coordinates (the layout) are not where the photo shows them.
-void RequireAFit(const estimator::CalibrationResult& result, double max_reprojection_px) {
+// The refusal says where the markers were found, and where they lie on the table the frame
+// shows (estimator::MarkersOnTableSeen): a layout to try.
+void RequireAFit(const estimator::CalibrationResult& result, double max_reprojection_px,
+                 const cv::Mat& image, const physics::TableParameters& table, double height) {
   if (result.rms_reprojection_px <= max_reprojection_px) return;
+  std::ostringstream found, seen;
+  found << std::fixed << std::setprecision(0);
+  for (const auto& m : result.markers) found << " (" << m.x() << ", " << m.y() << ")";
+  const auto layout = estimator::MarkersOnTableSeen(image, result.markers, table, height);
+  if (layout) {
+    seen << std::fixed << std::setprecision(3) << "; on the table this frame shows they lie at "
+         << "about --markers=";
+    for (int i = 0; i < 4; ++i) {
+      seen << (i ? "," : "") << layout->centres[i].x() << "," << layout->centres[i].y();
+    }
+  }
   throw Refused("calibration does not fit: the markers reproject " +
                 Pixels(result.rms_reprojection_px) + " (RMS) from where they were found, above " +
                 "--max-reprojection-px " + Pixels(max_reprojection_px) +
+                "; markers found at (u, v) [px] (top-left, top-right, bottom-right, bottom-left):" +
+                found.str() + seen.str() +
                 "; check --markers or --marker-margin and --params (no camera file written)");
 }
 
@@ -223,7 +237,7 @@ void RunCalibrate(const CalibrateArgs& args) {
     throw Refused("did not find all four corner markers in " + args.image +
                   " (no camera file written)");
   }
-  RequireAFit(*result, args.max_reprojection_px);
+  RequireAFit(*result, args.max_reprojection_px, image, params.table, args.height);
   std::ofstream out(args.out);
   out << camera::CameraModelJson(result->camera) << "\n";
   if (!out) throw UsageError("--out: cannot write '" + args.out + "'");
@@ -254,7 +268,8 @@ void AddDetectCommand(CLI::App& app) {
   cmd->add_option("--params", args->params, "paper | pool | JSON file: the ball radius")
       ->capture_default_str();
   cmd->add_option("--ball-set", args->ball_set,
-                  "pool | snooker | carom: the balls' classes (default: --params' set)");
+                  "pool | snooker | carom | blackball (English pool's reds and yellows): the balls' "
+                  "classes (default: --params' set)");
   cmd->add_option("--overlay", args->overlay,
                   "Also write the frame with the table and the detections drawn on it (PNG or "
                   "JPEG)");

@@ -275,15 +275,11 @@ py::dict Detect(const py::array_t<std::uint8_t, py::array::c_style | py::array::
                       image.ndim() == 2 ? CV_8UC1 : CV_8UC3,
                       const_cast<std::uint8_t*>(image.data()));
   estimator::DetectorOptions options;
-  if (ball_set == "pool") {
-    options.ball_set = estimator::BallSet::kPool;
-  } else if (ball_set == "snooker") {
-    options.ball_set = estimator::BallSet::kSnooker;
-  } else if (ball_set == "carom") {
-    options.ball_set = estimator::BallSet::kCarom;
-  } else {
-    throw py::value_error("unknown ball set '" + ball_set + "' (pool, snooker, carom)");
+  const auto set = estimator::BallSetNamed(ball_set);
+  if (!set) {
+    throw py::value_error("unknown ball set '" + ball_set + "' (" + estimator::kBallSetNames + ")");
   }
+  options.ball_set = *set;
   estimator::BallDetector detector(options);
   const auto balls = detector.Detect(frame);
   if (!detector.failure().empty()) Refuse(detector.failure());
