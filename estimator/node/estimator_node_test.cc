@@ -194,7 +194,8 @@ TEST_F(EstimatorNodeTest, AMovedViewIsSaidInTheStatus) {
   knocked.translation += knocked.rotation * Eigen::Vector3d(0.04, 0, 0);
   const render::TableRenderer moved(knocked, Pool());
   for (int i = 0; i < 40; ++i) {
-    Send(messages::EncodeImage(moved.Render(balls_, 1e-6 * (utime += 8'333)), utime,
+    utime += 8'333;
+    Send(messages::EncodeImage(moved.Render(balls_, 1e-6 * utime), utime,
                                messages::ImageEncoding::kRgb));
   }
   EXPECT_EQ(node_.health().counter("view_moved"), 1);
