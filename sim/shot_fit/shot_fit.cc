@@ -11,8 +11,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "sim/table/table_simulation.h"
-
 namespace billiard::shot_fit {
 
 namespace {
@@ -29,10 +27,12 @@ constexpr std::int64_t kMaxEvents = 20000;
 // The horizons of the continuation [s]; the last stage is always the whole shot.
 constexpr double kHorizons[] = {2.0, 4.0, 8.0};
 // The first stage's grid around the launch the samples show, and how many of its best points
-// go on to the refinement.
-constexpr double kSpeedFactors[] = {0.9, 1.0, 1.12};
-constexpr double kTipGrid[] = {-0.4, 0.0, 0.4};
-constexpr int kStarts = 4;
+// go on to the refinement. Wide in heading and speed: where the cue ball meets a ball within the
+// first frames, the samples show it after that collision.
+constexpr double kSpeedFactors[] = {0.8, 1.0, 1.25, 1.6};
+constexpr double kHeadingOffsets[] = {0.0, -0.04, 0.04, -0.12, 0.12, -0.3, 0.3};  // [rad]
+constexpr double kTipGrid[] = {-0.4, -0.2, 0.0, 0.2, 0.4};
+constexpr int kStarts = 6;
 // How many samples after the first one give the launch velocity (50 Hz: 0.06 s).
 constexpr int kLaunchSamples = 3;
 
@@ -102,6 +102,21 @@ std::vector<Eigen::Vector2d> StartPositions(const table::TableGeometry& table, d
   return p;
 }
 
+// The run's impacts in order (kind, balls, cushion), hashed (FNV-1a): two runs with the same
+// sequence lie on one smooth piece of the cost. Between pieces it jumps: a ball that catches up
+// with another before it stops, or stops just short, is a different shot.
+std::uint64_t ImpactSequence(const table::TableSimulation& sim) {
+  constexpr std::uint64_t kFnvOffsetBasis = 14695981039346656037ull;
+  constexpr std::uint64_t kFnvPrime = 1099511628211ull;
+  std::uint64_t hash = kFnvOffsetBasis;
+  for (const table::TableEvent& e : sim.events()) {
+    if (e.type == table::EventType::kTransition) continue;
+    for (int v : {static_cast<int>(e.type), e.ball, e.other, e.cushion})
+      hash = (hash ^ static_cast<std::uint64_t>(v + 1)) * kFnvPrime;
+  }
+  return hash;
+}
+
 // One shot with one parameter set: the start scene, and what a strike makes of it.
 class ShotModel {
  public:
@@ -126,9 +141,12 @@ class ShotModel {
 
   // Simulated minus tracked, ball by ball, sample by sample, up to `horizon`; false where the
   // strike is none a cue gives or the simulation refuses the scene.
-  bool Residuals(const Strike& strike, double horizon, double* out) const {
+  // `impacts`, when given, receives the run's ImpactSequence.
+  bool Residuals(const Strike& strike, double horizon, double* out,
+                 std::uint64_t* impacts = nullptr) const {
     try {
       const table::TableSimulation sim = Run(strike, std::min(horizon, shot_.Duration()));
+      if (impacts != nullptr) *impacts = ImpactSequence(sim);
       int k = 0;
       for (std::size_t i = 0; i < shot_.balls.size(); ++i) {
         const TrackedBall& b = shot_.balls[i];
@@ -146,9 +164,10 @@ class ShotModel {
     }
   }
 
-  std::vector<double> Residuals(const Strike& strike, double horizon) const {
+  std::vector<double> Residuals(const Strike& strike, double horizon,
+                                std::uint64_t* impacts = nullptr) const {
     std::vector<double> r(ResidualCount(horizon));
-    if (!Residuals(strike, horizon, r.data())) return {};
+    if (!Residuals(strike, horizon, r.data(), impacts)) return {};
     return r;
   }
 
@@ -173,6 +192,7 @@ class ShotModel {
     }
     table::TableSimulationOptions options;
     options.max_events = kMaxEvents;
+    options.cushion_model = kCushionModel;
     table::TableSimulation sim(table_, params_, balls, options);
     sim.Run(std::max(0.0, until - strike.time));
     return sim;
@@ -243,6 +263,29 @@ ceres::Solver::Options SolverOptions(int max_iterations) {
   return o;
 }
 
+// The bounds of a strike vector (ToVector's order) for a shot whose impact lies in [lo, hi].
+struct StrikeBounds {
+  std::vector<double> lo, hi;
+};
+StrikeBounds BoundsOf(bool elevation, double impact_lo, double impact_hi) {
+  StrikeBounds b{{0.01, -std::numeric_limits<double>::infinity(), -kTipLimit, -kTipLimit, impact_lo},
+                 {kMaxCueSpeed, std::numeric_limits<double>::infinity(), kTipLimit, kTipLimit,
+                  impact_hi}};
+  if (elevation) {
+    b.lo.push_back(0.0);
+    b.hi.push_back(kMaxElevation);
+  }
+  return b;
+}
+
+// The impact lies between the cue ball's first sample (still) and its second (moving); a
+// frame's worth of slack before, for a clock that started late.
+std::pair<double, double> ImpactRange(const TrackedShot& shot) {
+  const TrackedBall& cue = shot.balls.at(shot.cue);
+  if (cue.t.size() < 2) return {0.0, 0.0};
+  return {cue.t[0] - (cue.t[1] - cue.t[0]), cue.t[1]};
+}
+
 // Refines x over `horizon`; returns the cost there (infinite where the start cannot be simulated).
 double RefineStrike(const ShotModel& model, double horizon, const FitOptions& options,
                     double impact_lo, double impact_hi, std::vector<double>* x) {
@@ -259,18 +302,10 @@ double RefineStrike(const ShotModel& model, double horizon, const FitOptions& op
   cost->SetNumResiduals(residuals);
   ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, x->data());
-  double* b = x->data();
-  problem.SetParameterLowerBound(b, 0, 0.01);
-  problem.SetParameterUpperBound(b, 0, kMaxCueSpeed);
-  for (int k : {2, 3}) {
-    problem.SetParameterLowerBound(b, k, -kTipLimit);
-    problem.SetParameterUpperBound(b, k, kTipLimit);
-  }
-  problem.SetParameterLowerBound(b, 4, impact_lo);
-  problem.SetParameterUpperBound(b, 4, impact_hi);
-  if (options.fit_elevation) {
-    problem.SetParameterLowerBound(b, 5, 0.0);
-    problem.SetParameterUpperBound(b, 5, kMaxElevation);
+  const StrikeBounds bounds = BoundsOf(options.fit_elevation, impact_lo, impact_hi);
+  for (std::size_t k = 0; k < x->size(); ++k) {
+    if (std::isfinite(bounds.lo[k])) problem.SetParameterLowerBound(x->data(), k, bounds.lo[k]);
+    if (std::isfinite(bounds.hi[k])) problem.SetParameterUpperBound(x->data(), k, bounds.hi[k]);
   }
   ceres::Solver::Summary summary;
   ceres::Solve(SolverOptions(options.max_iterations), &problem, &summary);
@@ -284,13 +319,14 @@ double Median(std::vector<double> v) {
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// The fit over the samples up to `horizon` (the errors reported over the whole shot).
 ShotFit FitOne(const table::TableGeometry& table, const ModelParameters& params,
                const TrackedShot& shot, const FitOptions& options,
-               const std::optional<Strike>& previous) {
+               const std::optional<Strike>& previous,
+               double horizon = std::numeric_limits<double>::infinity()) {
   const ShotModel model(table, params, shot);
   const double r = params.ball.radius;
   const TrackedBall& cue = shot.balls.at(shot.cue);
-  const double full = std::numeric_limits<double>::infinity();
   ShotFit fit;
   fit.id = shot.id;
   if (cue.t.size() < 3) {  // a cue ball that never moves: the strike is none
@@ -298,20 +334,21 @@ ShotFit FitOne(const table::TableGeometry& table, const ModelParameters& params,
     fit.rmse_cue = fit.errors.rmse[shot.cue];
     return fit;
   }
-  // The impact lies between the first sample (the ball still) and the second (moving); a
-  // frame's worth of slack before, for a clock that started late.
-  const double impact_lo = cue.t[0] - (cue.t[1] - cue.t[0]), impact_hi = cue.t[1];
-  const double first_horizon = std::min(kHorizons[0], shot.Duration());
+  const auto [impact_lo, impact_hi] = ImpactRange(shot);
+  const double first_horizon = std::min({kHorizons[0], horizon, shot.Duration()});
 
   std::vector<std::pair<double, std::vector<double>>> scored;
   for (double side : kTipGrid) {
     for (double height : kTipGrid) {
       for (double factor : kSpeedFactors) {
-        Strike s = LaunchGuess(params, cue, side);
-        s.stroke.speed *= factor;
-        s.stroke.tip_height = height * r;
-        const std::vector<double> x = ToVector(s, options.fit_elevation, r);
-        scored.emplace_back(model.Cost(s, first_horizon), x);
+        for (double turn : kHeadingOffsets) {
+          Strike s = LaunchGuess(params, cue, side);
+          s.stroke.speed *= factor;
+          s.stroke.heading += turn;
+          s.stroke.tip_height = height * r;
+          const std::vector<double> x = ToVector(s, options.fit_elevation, r);
+          scored.emplace_back(model.Cost(s, first_horizon), x);
+        }
       }
     }
   }
@@ -319,16 +356,16 @@ ShotFit FitOne(const table::TableGeometry& table, const ModelParameters& params,
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   scored.resize(std::min<std::size_t>(kStarts, scored.size()));
 
-  double best_cost = full;
+  double best_cost = std::numeric_limits<double>::infinity();
   std::vector<double> best;
   auto consider = [&](std::vector<double> x, bool continuation) {
     if (continuation) {
       for (double h : kHorizons) {
-        if (h >= shot.Duration()) break;
+        if (h >= std::min(horizon, shot.Duration())) break;
         RefineStrike(model, h, options, impact_lo, impact_hi, &x);
       }
     }
-    const double c = RefineStrike(model, full, options, impact_lo, impact_hi, &x);
+    const double c = RefineStrike(model, horizon, options, impact_lo, impact_hi, &x);
     if (c < best_cost) {
       best_cost = c;
       best = x;
@@ -347,177 +384,237 @@ ShotFit FitOne(const table::TableGeometry& table, const ModelParameters& params,
   return fit;
 }
 
-// The residuals of the shots `included` with their strikes fixed, for the constants `values`;
-// each shot one job on the pool. Empty where a shot cannot be simulated.
-struct ConstantsProblem {
-  const table::TableGeometry& table;
-  const ModelParameters& base;
-  const std::vector<TrackedShot>& shots;
-  const std::vector<std::size_t>& included;
-  const std::vector<Strike>& strikes;  // per shot of `shots`
-  const std::vector<Constant>& constants;
-  batch::ThreadPool& pool;
+// The joint problem of the strikes of several shots and the shared constants, linearized at one
+// point: for each shot its Gauss-Newton blocks, from central differences of its residuals.
+struct ShotBlocks {
+  Eigen::MatrixXd ss, sc, cc;  // J_s^T J_s, J_s^T J_c, J_c^T J_c
+  Eigen::VectorXd gs, gc;      // J_s^T r, J_c^T r
+  double squares = 0.0;
+  int residuals = 0;
+};
 
-  // Residuals of every included shot for each constants vector of `points`, one job per
-  // (point, shot).
-  std::vector<std::vector<double>> Evaluate(const std::vector<std::vector<double>>& points) const {
-    const std::size_t n = included.size();
-    std::vector<ModelParameters> sets;
-    for (const std::vector<double>& v : points) sets.push_back(WithConstants(base, constants, v));
-    auto results = pool.Map(points.size() * n, [&](std::size_t job) {
-      const std::size_t point = job / n, s = included[job % n];
-      const ShotModel model(table, sets[point], shots[s]);
-      return model.Residuals(strikes[s], std::numeric_limits<double>::infinity());
-    });
-    std::vector<std::vector<double>> out(points.size());
-    for (std::size_t point = 0; point < points.size(); ++point) {
-      for (std::size_t k = 0; k < n; ++k) {
-        const auto& r = results[point * n + k];
-        if (!r.ok() || r.value->empty()) {
-          out[point].clear();
-          break;
-        }
-        out[point].insert(out[point].end(), r.value->begin(), r.value->end());
+struct JointProblem {
+  const table::TableGeometry& table;
+  const ModelParameters& base;  // the constants not fitted
+  const std::vector<TrackedShot>& shots;
+  std::vector<std::size_t> included;
+  const std::vector<Constant>& constants;
+  bool elevation;
+  batch::ThreadPool& pool;
+  double horizon = std::numeric_limits<double>::infinity();  // the samples up to it count
+
+  struct Evaluation {
+    std::vector<double> r;  // empty where the shot does not simulate
+    std::uint64_t impacts = 0;
+    double Squares() const {
+      if (r.empty()) return std::numeric_limits<double>::infinity();
+      double sum = 0.0;
+      for (double v : r) sum += v * v;
+      return sum;
+    }
+  };
+
+  Evaluation Evaluate(std::size_t s, const std::vector<double>& strike,
+                      const std::vector<double>& values) const {
+    const ModelParameters p = WithConstants(base, constants, values);
+    Evaluation e;
+    e.r = ShotModel(table, p, shots[s])
+              .Residuals(FromVector(strike.data(), elevation, p.ball.radius), horizon,
+                         &e.impacts);
+    return e;
+  }
+
+  // Central differences within the piece of the cost the point lies on: a step that changes
+  // the impacts gives way to the one-sided difference of the other, and where both do, the
+  // shot says nothing of that parameter here (its column is zero).
+  ShotBlocks Linearize(std::size_t s, const std::vector<double>& strike,
+                       const std::vector<double>& values) const {
+    const Evaluation e0 = Evaluate(s, strike, values);
+    if (e0.r.empty()) throw std::runtime_error("shot " + shots[s].id + " does not simulate");
+    const int m = static_cast<int>(e0.r.size());
+    const std::size_t n = strike.size(), k = values.size();
+    const double strike_steps[] = {1e-4 * strike[0], 1e-5, 1e-4, 1e-4, 1e-5, 1e-4};
+    Eigen::MatrixXd j = Eigen::MatrixXd::Zero(m, n + k);
+    for (std::size_t c = 0; c < n + k; ++c) {
+      std::vector<double> xp = strike, xm = strike, vp = values, vm = values;
+      double h;
+      if (c < n) {
+        h = strike_steps[c];
+        xp[c] += h;
+        xm[c] -= h;
+      } else {
+        h = 1e-4 * std::max(std::abs(values[c - n]), 1e-3);
+        vp[c - n] += h;
+        vm[c - n] -= h;
       }
+      const Evaluation ep = Evaluate(s, xp, vp), em = Evaluate(s, xm, vm);
+      const bool plus = !ep.r.empty() && ep.impacts == e0.impacts;
+      const bool minus = !em.r.empty() && em.impacts == e0.impacts;
+      for (int i = 0; i < m; ++i) {
+        if (plus && minus) {
+          j(i, c) = (ep.r[i] - em.r[i]) / (2.0 * h);
+        } else if (plus) {
+          j(i, c) = (ep.r[i] - e0.r[i]) / h;
+        } else if (minus) {
+          j(i, c) = (e0.r[i] - em.r[i]) / h;
+        }
+      }
+    }
+    const Eigen::Map<const Eigen::VectorXd> r(e0.r.data(), m);
+    const auto js = j.leftCols(n), jc = j.rightCols(k);
+    ShotBlocks b;
+    b.ss = js.transpose() * js;
+    b.sc = js.transpose() * jc;
+    b.cc = jc.transpose() * jc;
+    b.gs = js.transpose() * r;
+    b.gc = jc.transpose() * r;
+    b.squares = r.squaredNorm();
+    b.residuals = m;
+    return b;
+  }
+
+  std::vector<ShotBlocks> LinearizeAll(const std::vector<std::vector<double>>& strikes,
+                                       const std::vector<double>& values) const {
+    auto results = pool.Map(included.size(), [&](std::size_t job) {
+      return Linearize(included[job], strikes[job], values);
+    });
+    std::vector<ShotBlocks> out;
+    for (auto& result : results) {
+      if (!result.ok()) throw std::runtime_error(result.error);
+      out.push_back(std::move(*result.value));
     }
     return out;
   }
 
-  int ResidualCount() const {
-    int m = 0;
-    for (std::size_t s : included) m += 2 * static_cast<int>(shots[s].SampleCount());
-    return m;
+  // Each included shot's sum of squares and impacts.
+  std::vector<std::pair<double, std::uint64_t>> EvaluateAll(
+      const std::vector<std::vector<double>>& strikes, const std::vector<double>& values) const {
+    auto results = pool.Map(included.size(), [&](std::size_t job) {
+      const Evaluation e = Evaluate(included[job], strikes[job], values);
+      return std::make_pair(e.Squares(), e.impacts);
+    });
+    std::vector<std::pair<double, std::uint64_t>> out;
+    for (const auto& result : results)
+      out.push_back(result.ok() ? *result.value
+                                : std::make_pair(std::numeric_limits<double>::infinity(),
+                                                 std::uint64_t{0}));
+    return out;
   }
 };
 
-// The constants' cost over the included shots: one Ceres residual block, its Jacobian by
-// central differences whose evaluations share the pool (deterministic, unlike a parallel sum).
-class ConstantsCost : public ceres::CostFunction {
- public:
-  explicit ConstantsCost(const ConstantsProblem& problem) : problem_(problem) {
-    set_num_residuals(problem.ResidualCount());
-    mutable_parameter_block_sizes()->push_back(static_cast<int>(problem.constants.size()));
-  }
-
-  bool Evaluate(double const* const* parameters, double* residuals,
-                double** jacobians) const override {
-    const std::size_t k = problem_.constants.size();
-    const std::vector<double> x(parameters[0], parameters[0] + k);
-    std::vector<std::vector<double>> points = {x};
-    std::vector<double> steps(k);
-    const bool jacobian = jacobians != nullptr && jacobians[0] != nullptr;
-    if (jacobian) {
-      for (std::size_t c = 0; c < k; ++c) {
-        steps[c] = kRelativeStep * std::max(std::abs(x[c]), 1e-3);
-        for (double sign : {1.0, -1.0}) {
-          std::vector<double> y = x;
-          y[c] += sign * steps[c];
-          points.push_back(y);
-        }
-      }
-    }
-    const std::vector<std::vector<double>> r = problem_.Evaluate(points);
-    for (const auto& v : r)
-      if (v.empty()) return false;
-    const int m = num_residuals();
-    std::copy(r[0].begin(), r[0].end(), residuals);
-    if (jacobian) {
-      for (int i = 0; i < m; ++i)
-        for (std::size_t c = 0; c < k; ++c)
-          jacobians[0][i * k + c] = (r[1 + 2 * c][i] - r[2 + 2 * c][i]) / (2.0 * steps[c]);
-    }
-    return true;
-  }
-
- private:
-  static constexpr double kRelativeStep = 1e-4;
-  const ConstantsProblem& problem_;
+// The reduced system of the constants, the strikes eliminated: with each shot's strike block
+// damped as A_s = J_s^T J_s + lambda diag(J_s^T J_s),
+//   S = sum_s J_c^T J_c + lambda diag(sum_s J_c^T J_c) - sum_s J_c^T J_s A_s^-1 J_s^T J_c,
+//   g = sum_s J_c^T r - J_c^T J_s A_s^-1 J_s^T r.
+struct Reduced {
+  Eigen::MatrixXd s;
+  Eigen::VectorXd g;
+  std::vector<Eigen::MatrixXd> a_inv;  // per shot
 };
-
-std::vector<double> SolveConstants(const ConstantsProblem& problem, std::vector<double> x,
-                                   int max_iterations) {
-  ceres::Problem ceres_problem;
-  ceres_problem.AddResidualBlock(new ConstantsCost(problem), nullptr, x.data());
-  for (std::size_t c = 0; c < x.size(); ++c) {
-    const Range range = ConstantRange(problem.constants[c]);
-    ceres_problem.SetParameterLowerBound(x.data(), static_cast<int>(c), range.lo);
-    ceres_problem.SetParameterUpperBound(x.data(), static_cast<int>(c), range.hi);
+Reduced Reduce(const std::vector<ShotBlocks>& blocks, std::size_t k, double lambda) {
+  Reduced out;
+  out.s = Eigen::MatrixXd::Zero(k, k);
+  out.g = Eigen::VectorXd::Zero(k);
+  Eigen::MatrixXd cc = Eigen::MatrixXd::Zero(k, k);
+  for (const ShotBlocks& b : blocks) {
+    // A tiny floor keeps a strike parameter no sample sees (a tip offset with no cushion to
+    // show its spin) from making A singular.
+    Eigen::MatrixXd a = b.ss;
+    a.diagonal() += lambda * b.ss.diagonal() +
+                    Eigen::VectorXd::Constant(a.rows(), 1e-12 * (1.0 + b.ss.diagonal().maxCoeff()));
+    const Eigen::MatrixXd a_inv = a.ldlt().solve(Eigen::MatrixXd::Identity(a.rows(), a.cols()));
+    cc += b.cc;
+    out.s -= b.sc.transpose() * a_inv * b.sc;
+    out.g += b.gc - b.sc.transpose() * a_inv * b.gs;
+    out.a_inv.push_back(a_inv);
   }
-  ceres::Solver::Summary summary;
-  ceres::Solve(SolverOptions(max_iterations), &ceres_problem, &summary);
-  return x;
+  out.s += cc;
+  out.s.diagonal() += lambda * cc.diagonal();
+  return out;
 }
 
-// The marginal covariance of the constants, the strikes eliminated (see the header), at the
-// fitted strikes and constants. Per shot one job: central differences of its residuals in its
-// strike's parameters and in the constants.
-Eigen::MatrixXd ConstantsCovariance(const ConstantsProblem& problem, const std::vector<double>& x,
-                                    bool elevation) {
-  const std::size_t k = x.size();
-  const ModelParameters p = WithConstants(problem.base, problem.constants, x);
-  const double r = p.ball.radius;
-  struct Blocks {
-    Eigen::MatrixXd info;  // the shot's Schur complement
-    double squares = 0.0;
-    int residuals = 0, strike_parameters = 0;
-  };
-  auto blocks = problem.pool.Map(problem.included.size(), [&](std::size_t job) {
-    const std::size_t s = problem.included[job];
-    const ShotModel model(problem.table, p, problem.shots[s]);
-    const double full = std::numeric_limits<double>::infinity();
-    const std::vector<double> r0 = model.Residuals(problem.strikes[s], full);
-    if (r0.empty()) throw std::runtime_error("shot does not simulate");
-    const int m = static_cast<int>(r0.size());
-    const std::vector<double> xs = ToVector(problem.strikes[s], elevation, r);
-    const double strike_steps[] = {1e-4 * xs[0], 1e-5, 1e-4, 1e-4, 1e-5, 1e-4};
-    Eigen::MatrixXd js(m, xs.size()), jc(m, k);
-    for (std::size_t j = 0; j < xs.size(); ++j) {
-      std::vector<double> plus = xs, minus = xs;
-      plus[j] += strike_steps[j];
-      minus[j] -= strike_steps[j];
-      const auto rp = model.Residuals(FromVector(plus.data(), elevation, r), full);
-      const auto rm = model.Residuals(FromVector(minus.data(), elevation, r), full);
-      if (rp.empty() || rm.empty()) throw std::runtime_error("strike step does not simulate");
-      for (int i = 0; i < m; ++i) js(i, j) = (rp[i] - rm[i]) / (2.0 * strike_steps[j]);
+// Levenberg-Marquardt over the strikes of the included shots and the constants together, by the
+// reduced system (each iteration one linearization of every shot on the pool, summed in shot
+// order: the same steps on any thread count), within the bounds (a step is clamped to them).
+void SolveJoint(const JointProblem& problem, const FitOptions& options,
+                std::vector<std::vector<double>>* strikes, std::vector<double>* values) {
+  const std::size_t k = values->size();
+  std::vector<StrikeBounds> bounds;
+  for (std::size_t s : problem.included) {
+    const auto [lo, hi] = ImpactRange(problem.shots[s]);
+    bounds.push_back(BoundsOf(problem.elevation, lo, hi));
+  }
+  std::vector<std::pair<double, std::uint64_t>> current = problem.EvaluateAll(*strikes, *values);
+  double lambda = 1e-3;
+  constexpr double kMaxLambda = 1e8;
+  constexpr double kRelativeDecrease = 1e-7;
+  for (int iteration = 0; iteration < options.max_iterations && lambda < kMaxLambda; ++iteration) {
+    const std::vector<ShotBlocks> blocks = problem.LinearizeAll(*strikes, *values);
+    bool accepted = false;
+    while (!accepted && lambda < kMaxLambda) {
+      const Reduced reduced = Reduce(blocks, k, lambda);
+      const Eigen::VectorXd dc = -reduced.s.ldlt().solve(reduced.g);
+      std::vector<double> new_values = *values;
+      for (std::size_t c = 0; c < k; ++c) {
+        const Range range = ConstantRange(problem.constants[c]);
+        new_values[c] = std::clamp(new_values[c] + dc[c], range.lo, range.hi);
+      }
+      std::vector<std::vector<double>> new_strikes = *strikes;
+      for (std::size_t j = 0; j < blocks.size(); ++j) {
+        const Eigen::VectorXd ds = -reduced.a_inv[j] * (blocks[j].gs + blocks[j].sc * dc);
+        for (std::size_t c = 0; c < new_strikes[j].size(); ++c)
+          new_strikes[j][c] = std::clamp(new_strikes[j][c] + ds[c], bounds[j].lo[c], bounds[j].hi[c]);
+      }
+      const std::vector<std::pair<double, std::uint64_t>> trial =
+          problem.EvaluateAll(new_strikes, new_values);
+      // The step is judged on the shots whose impacts it kept, the piece the linearization
+      // saw: one shot jumping to another piece would otherwise veto every step, however small.
+      // A step that takes any shot where it does not simulate is refused.
+      double before = 0.0, after = 0.0;
+      for (std::size_t j = 0; j < trial.size(); ++j) {
+        if (!std::isfinite(trial[j].first)) {
+          after = std::numeric_limits<double>::infinity();
+          break;
+        }
+        if (trial[j].second != current[j].second) continue;
+        before += current[j].first;
+        after += trial[j].first;
+      }
+      if (after < before) {
+        accepted = true;
+        const bool converged = before - after < kRelativeDecrease * before;
+        current = trial;
+        *strikes = std::move(new_strikes);
+        *values = std::move(new_values);
+        lambda = std::max(lambda / 3.0, 1e-9);
+        if (converged) return;
+      } else {
+        lambda *= 4.0;
+      }
     }
-    for (std::size_t c = 0; c < k; ++c) {
-      const double h = 1e-4 * std::max(std::abs(x[c]), 1e-3);
-      std::vector<double> plus = x, minus = x;
-      plus[c] += h;
-      minus[c] -= h;
-      const ModelParameters pp = WithConstants(problem.base, problem.constants, plus);
-      const ModelParameters pm = WithConstants(problem.base, problem.constants, minus);
-      const auto rp = ShotModel(problem.table, pp, problem.shots[s]).Residuals(problem.strikes[s], full);
-      const auto rm = ShotModel(problem.table, pm, problem.shots[s]).Residuals(problem.strikes[s], full);
-      if (rp.empty() || rm.empty()) throw std::runtime_error("constant step does not simulate");
-      for (int i = 0; i < m; ++i) jc(i, c) = (rp[i] - rm[i]) / (2.0 * h);
-    }
-    const Eigen::MatrixXd ss = js.transpose() * js;
-    const Eigen::MatrixXd sc = js.transpose() * jc;
-    Blocks b;
-    b.info = jc.transpose() * jc - sc.transpose() * ss.completeOrthogonalDecomposition().solve(sc);
-    for (double v : r0) b.squares += v * v;
-    b.residuals = m;
-    b.strike_parameters = static_cast<int>(xs.size());
-    return b;
-  });
-  Eigen::MatrixXd info = Eigen::MatrixXd::Zero(k, k);
+  }
+}
+
+// The marginal covariance of the constants at the solution (see the header): sigma^2 S^-1 with
+// the undamped reduced matrix S; infinite where S is singular (a constant no shot excites).
+Eigen::MatrixXd ConstantsCovariance(const JointProblem& problem,
+                                    const std::vector<std::vector<double>>& strikes,
+                                    const std::vector<double>& values) {
+  const std::size_t k = values.size();
+  const std::vector<ShotBlocks> blocks = problem.LinearizeAll(strikes, values);
+  const Reduced reduced = Reduce(blocks, k, 0.0);
   double squares = 0.0;
   int dof = -static_cast<int>(k);
-  for (const auto& b : blocks) {
-    if (!b.ok()) continue;
-    info += b.value->info;
-    squares += b.value->squares;
-    dof += b.value->residuals - b.value->strike_parameters;
+  for (std::size_t j = 0; j < blocks.size(); ++j) {
+    squares += blocks[j].squares;
+    dof += blocks[j].residuals - static_cast<int>(strikes[j].size());
   }
   const double sigma2 = squares / std::max(dof, 1);
-  // A constant no shot excites has a zero row: its variance is infinite, not the pseudo-
-  // inverse's zero.
   Eigen::MatrixXd cov = Eigen::MatrixXd::Constant(k, k, std::numeric_limits<double>::infinity());
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(info);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(reduced.s);
   const double largest = eig.eigenvalues().cwiseAbs().maxCoeff();
   if (largest > 0.0 && eig.eigenvalues().minCoeff() > 1e-12 * largest)
-    cov = sigma2 * info.inverse();
+    cov = sigma2 * reduced.s.inverse();
   return cov;
 }
 
@@ -589,6 +686,12 @@ ShotErrors Errors(const table::TableGeometry& table, const ModelParameters& para
   return ErrorsOf(ShotModel(table, params, shot), strike);
 }
 
+table::TableSimulation SimulateShot(const table::TableGeometry& table,
+                                    const ModelParameters& params, const TrackedShot& shot,
+                                    const Strike& strike) {
+  return ShotModel(table, params, shot).Run(strike, shot.Duration());
+}
+
 ShotFit FitStrike(const table::TableGeometry& table, const ModelParameters& params,
                   const TrackedShot& shot, const FitOptions& options,
                   const std::optional<Strike>& previous) {
@@ -608,14 +711,15 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
 
   // Fits the strikes of the shots `which` with out.params, from their previous strikes when
   // `refine`.
-  auto fit_strikes = [&](const std::vector<std::size_t>& which, bool refine, const char* stage) {
+  auto fit_strikes = [&](const std::vector<std::size_t>& which, bool refine,
+                         const std::string& stage, double horizon) {
     auto results = pool.Map(
         which.size(),
         [&](std::size_t job) {
           const std::size_t i = which[job];
           std::optional<Strike> previous;
           if (refine && out.shots[i].ok()) previous = out.shots[i].strike;
-          return FitOne(table, out.params, shots[i], options, previous);
+          return FitOne(table, out.params, shots[i], options, previous, horizon);
         },
         progress ? batch::Progress([&](std::size_t done, std::size_t total) {
           progress(stage, done, total);
@@ -641,7 +745,8 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
   }
   std::vector<Constant> constants = options.constants;
   const bool with_constants = !constants.empty();
-  fit_strikes(with_constants ? fitted : all, false, "strikes");
+  const double full = std::numeric_limits<double>::infinity();
+  if (!with_constants) fit_strikes(all, false, "strikes", full);
 
   for (Constant c : options.constants) {
     ConstantFit f;
@@ -650,39 +755,71 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
     out.constants.push_back(f);
   }
   if (with_constants) {
-    std::vector<Strike> strikes(shots.size());
-    std::vector<std::size_t> included;
-    auto choose_shots = [&] {
-      std::vector<double> rmse;
-      for (std::size_t i : fitted)
-        if (out.shots[i].ok()) rmse.push_back(out.shots[i].errors.rmse_all);
-      const double limit = options.outlier_factor * Median(rmse);
-      included.clear();
-      for (std::size_t i : fitted) {
-        strikes[i] = out.shots[i].strike;
-        if (out.shots[i].ok() && out.shots[i].errors.rmse_all <= limit) included.push_back(i);
-      }
+    JointProblem problem{table, params, shots, {}, constants, options.fit_elevation, pool};
+    const double r = params.ball.radius;
+    // The shots the constants are fitted on: those not held out whose strike fit is no outlier.
+    auto strikes_of = [&] {
+      std::vector<std::vector<double>> x;
+      for (std::size_t i : problem.included)
+        x.push_back(ToVector(out.shots[i].strike, options.fit_elevation, r));
+      return x;
     };
     auto values_of = [&] {
       std::vector<double> v;
       for (Constant c : constants) v.push_back(ConstantValue(out.params, c));
       return v;
     };
-    const ConstantsProblem problem{table, params, shots, included, strikes, constants, pool};
-    auto round = [&](int r) {
-      choose_shots();
-      if (progress) progress("constants, round " + std::to_string(r + 1), 0, 1);
-      const std::vector<double> v = SolveConstants(problem, values_of(), options.max_iterations);
-      out.params = WithConstants(out.params, constants, v);
-      fit_strikes(fitted, true, ("strikes, round " + std::to_string(r + 1)).c_str());
+    // The shots the constants are fitted on: those not held out whose fit over the horizon is
+    // no outlier.
+    auto choose_shots = [&] {
+      problem.included.clear();
+      for (std::size_t i : fitted)
+        if (out.shots[i].ok()) problem.included.push_back(i);
+      const auto evaluations = problem.EvaluateAll(strikes_of(), values_of());
+      std::vector<double> rmse;
+      for (std::size_t j = 0; j < evaluations.size(); ++j) {
+        const ShotModel model(table, out.params, shots[problem.included[j]]);
+        rmse.push_back(std::sqrt(evaluations[j].first /
+                                 std::max(1, model.ResidualCount(problem.horizon) / 2)));
+      }
+      const double limit = options.outlier_factor * Median(rmse);
+      std::vector<std::size_t> kept;
+      for (std::size_t j = 0; j < rmse.size(); ++j)
+        if (rmse[j] <= limit) kept.push_back(problem.included[j]);
+      problem.included = kept;
     };
-    for (int r = 0; r < options.rounds && !constants.empty(); ++r) round(r);
+    // One stage: every strike over the horizon (from the last when `refine`), then the strikes
+    // and the constants together.
+    auto stage = [&](double horizon, bool refine, const std::string& name) {
+      problem.horizon = horizon;
+      fit_strikes(fitted, refine, "strikes, " + name, horizon);
+      choose_shots();
+      if (progress) progress("joint fit, " + name, 0, 1);
+      std::vector<std::vector<double>> x = strikes_of();
+      std::vector<double> v = values_of();
+      SolveJoint(problem, options, &x, &v);
+      out.params = WithConstants(out.params, constants, v);
+      for (std::size_t j = 0; j < problem.included.size(); ++j)
+        out.shots[problem.included[j]].strike = FromVector(x[j].data(), options.fit_elevation, r);
+    };
+    // A continuation over the horizon, as for one shot: the constants the first seconds show
+    // (the slide, the roll, the first cushions) before the later collisions, whose timing they
+    // set, can mislead them.
+    bool refine = false;
+    for (double h : kHorizons) {
+      stage(h, refine, "first " + std::to_string(static_cast<int>(h)) + " s");
+      refine = true;
+    }
+    for (int r_index = 0; r_index < options.rounds; ++r_index)
+      stage(full, true, "whole shots, round " + std::to_string(r_index + 1));
+    auto final_strikes = [&] { fit_strikes(fitted, true, "strikes, whole shots", full); };
+    final_strikes();
 
     // Identifiability: constants the shots do not pin down go back to their priors, and the
     // others are fitted once more without them.
-    for (int pass = 0; pass < 2 && !constants.empty(); ++pass) {
+    while (!constants.empty()) {
       choose_shots();
-      const Eigen::MatrixXd cov = ConstantsCovariance(problem, values_of(), options.fit_elevation);
+      const Eigen::MatrixXd cov = ConstantsCovariance(problem, strikes_of(), values_of());
       std::vector<Constant> kept;
       for (std::size_t c = 0; c < constants.size(); ++c) {
         auto it = std::find_if(out.constants.begin(), out.constants.end(),
@@ -694,19 +831,21 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
           kept.push_back(constants[c]);
         } else {
           it->value = it->prior;
+          out.params = WithConstants(out.params, {it->constant}, {it->prior});
         }
       }
       if (kept.size() == constants.size()) break;
-      for (const ConstantFit& f : out.constants)
-        if (!f.identifiable) out.params = WithConstants(out.params, {f.constant}, {f.prior});
       constants = kept;
-      if (!constants.empty()) round(options.rounds);
+      if (!constants.empty()) {
+        stage(full, true, "whole shots, without the unidentifiable");
+        final_strikes();
+      }
     }
-    out.constant_shots = static_cast<int>(included.size());
+    out.constant_shots = static_cast<int>(problem.included.size());
     std::vector<std::size_t> rest;
     for (std::size_t i : all)
       if (is_held_out(i)) rest.push_back(i);
-    fit_strikes(rest, false, "held-out strikes");
+    fit_strikes(rest, false, "held-out strikes", full);
   }
 
   std::vector<double> cue, cue_held;

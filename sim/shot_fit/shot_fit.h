@@ -40,9 +40,17 @@
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
 #include "sim/shot_fit/tracked_shot.h"
+#include "sim/table/cushion_impact.h"
 #include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
 
 namespace billiard::shot_fit {
+
+// The cushion model of every simulation here: Han 2005's closed form (the three-cushion paper),
+// smooth in the strike and the constants. Mathavan 2010's explicit steps chatter where a contact
+// grips: its rebound moves by about 1e-5 of itself between neighbouring inputs, and the slide
+// after it ends microseconds apart, noise that defeats the differences a fit takes.
+inline constexpr table::CushionModel kCushionModel = table::CushionModel::kHan2005;
 
 struct Strike {
   physics::CueStroke stroke;
@@ -82,10 +90,16 @@ struct ShotErrors {
 ShotErrors Errors(const table::TableGeometry& table, const physics::ModelParameters& params,
                   const TrackedShot& shot, const Strike& strike);
 
+// The simulation Errors compares: ball i of the scene is shot.balls[i], its clock starting at
+// the impact (table time t is shot time t + strike.time), run to the shot's end.
+table::TableSimulation SimulateShot(const table::TableGeometry& table,
+                                    const physics::ModelParameters& params,
+                                    const TrackedShot& shot, const Strike& strike);
+
 struct FitOptions {
   bool fit_elevation = false;     // else the cue is level
   std::vector<Constant> constants;  // fitted jointly over the shots (FitShots)
-  int rounds = 3;                 // of the alternation, with constants to fit
+  int rounds = 1;                 // of the joint fit over whole shots, after the continuation
   double max_relative_sd = 0.2;   // beyond it a constant is not identifiable
   // Shots whose strike fit leaves an RMSE (all balls) above this multiple of the median are
   // left out of the constants' fit: a shot the model cannot follow (a kiss the tracking lost,

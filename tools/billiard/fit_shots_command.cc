@@ -4,17 +4,21 @@
 
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "sim/batch/thread_pool.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 #include "sim/shot_fit/shot_fit.h"
 #include "tools/billiard/command_line.h"
+#include "tools/plot/table_picture.h"
 
 namespace billiard::cli {
 
@@ -27,8 +31,8 @@ std::string DefaultParameters(const std::string& table) {
 }
 
 struct FitShotsArgs {
-  std::string shots, table = "carom-10ft", params, fit_physics, out_params;
-  int hold_out_every = 0, threads = batch::DefaultThreadCount(), rounds = 3;
+  std::string shots, table = "carom-10ft", params, fit_physics, out_params, plot_dir;
+  int plot_worst = 3, hold_out_every = 0, threads = batch::DefaultThreadCount(), rounds = 1;
   bool fit_elevation = false, json = false;
 };
 
@@ -59,11 +63,61 @@ shot_fit::FitProgress TerminalProgress() {
   };
 }
 
+// Carom's colours from pool's numbers: the cue ball white (0), the others yellow (1) and red (3).
+int PictureId(std::size_t ball, std::size_t cue) {
+  if (ball == cue) return 0;
+  return (ball < cue ? ball : ball - 1) == 0 ? 1 : 3;
+}
+
+// The shot tracked (dots) against its fitted strike simulated (lines), into `path`.
+void DrawShot(const table::TableGeometry& table, const physics::ModelParameters& p,
+              const shot_fit::TrackedShot& shot, const shot_fit::ShotFit& fit,
+              const std::string& path) {
+  const table::TableSimulation sim = shot_fit::SimulateShot(table, p, shot, fit.strike);
+  plot::TablePicture picture;
+  picture.table = table;
+  picture.ball_radius = p.ball.radius;
+  plot::AddSimulation(sim, plot::kPathSampleDt, &picture);
+  for (std::size_t i = 0; i < shot.balls.size(); ++i) {
+    picture.balls[i].id = PictureId(i, shot.cue);
+    picture.tracked.push_back({PictureId(i, shot.cue), shot.balls[i].position});
+  }
+  // The cue is drawn at the first ball.
+  std::rotate(picture.balls.begin(), picture.balls.begin() + shot.cue,
+              picture.balls.begin() + shot.cue + 1);
+  picture.cue = fit.strike.stroke;
+  std::ostringstream title;
+  title << "shot " << shot.id << (fit.held_out ? " (held out)" : "") << ": tracked (dots) and "
+        << p.name << " simulated (lines); cue-ball RMSE " << std::setprecision(3)
+        << 100.0 * fit.rmse_cue << " cm, all balls " << 100.0 * fit.errors.rmse_all << " cm";
+  picture.title = title.str();
+  plot::DrawTable(picture, path);
+}
+
+// The `count` shots of largest cue-ball RMSE, drawn into `dir` as shot_<id>.png.
+void DrawWorst(const table::TableGeometry& table, const shot_fit::ShotsFit& fit,
+               const std::vector<shot_fit::TrackedShot>& shots, int count, const std::string& dir) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < fit.shots.size(); ++i)
+    if (fit.shots[i].ok()) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return fit.shots[a].rmse_cue > fit.shots[b].rmse_cue;
+  });
+  order.resize(std::min<std::size_t>(order.size(), static_cast<std::size_t>(count)));
+  for (std::size_t i : order) {
+    const std::string path = dir + "/shot_" + shots[i].id + ".png";
+    DrawShot(table, fit.params, shots[i], fit.shots[i], path);
+    std::cerr << "fit-shots: drew " << path << "\n";
+  }
+}
+
 void Run(const FitShotsArgs& args) {
   if (args.hold_out_every < 0 || args.hold_out_every == 1)
     throw UsageError("--hold-out-every must be 0 (none) or >= 2");
   if (args.threads < 1) throw UsageError("--threads must be >= 1");
   if (args.rounds < 1) throw UsageError("--rounds must be >= 1");
+  if (args.plot_worst < 0) throw UsageError("--plot-worst must be >= 0");
+  if (!args.plot_dir.empty()) RequireWritableDirectory(args.plot_dir, "--plot-dir");
   shot_fit::FitOptions options;
   options.fit_elevation = args.fit_elevation;
   options.rounds = args.rounds;
@@ -130,6 +184,7 @@ void Run(const FitShotsArgs& args) {
     if (!file) throw UsageError("--out-params: cannot write " + args.out_params);
     file << params::ParametersJson(fit.params, report.dump());
   }
+  if (!args.plot_dir.empty()) DrawWorst(table, fit, tracked.shots, args.plot_worst, args.plot_dir);
   if (args.json) std::cout << out.dump() << std::endl;
   std::cerr << "fit-shots: " << fit.shots.size() << " shots (" << failed << " failed) in "
             << seconds << " s; median cue-ball RMSE " << fit.median_cue_rmse << " m";
@@ -166,11 +221,15 @@ void AddFitShotsCommand(CLI::App& app) {
   cmd->add_option("--hold-out-every", args->hold_out_every,
                   "Hold every K-th shot out of the constants' fit and report it apart")
       ->capture_default_str();
-  cmd->add_option("--rounds", args->rounds, "Rounds of strikes then constants")
+  cmd->add_option("--rounds", args->rounds, "Rounds of the joint fit over whole shots after the continuation")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads")->capture_default_str();
   cmd->add_option("--out-params", args->out_params,
                   "Write the fitted parameter set, with the fit's report, to this file");
+  cmd->add_option("--plot-dir", args->plot_dir,
+                  "Draw the worst shots, tracked against simulated, into this directory");
+  cmd->add_option("--plot-worst", args->plot_worst, "How many shots --plot-dir draws")
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { Run(*args); });
 }
