@@ -22,6 +22,9 @@ using physics::ModelParameters;
 constexpr double kTipLimit = 0.6;
 constexpr double kMaxElevation = 0.6;  // [rad], a masse is no three-cushion shot
 constexpr double kMaxCueSpeed = 12.0;  // [m/s], beyond any player's break
+// How far the fit may move a ball from where it was first seen [m]: the recordings round to a
+// millimetre, and a ball's centre is found to about as much again.
+constexpr double kStartSlack = 0.004;
 // A scene that needs more events is no shot the fit should follow (a numerical pathology).
 constexpr std::int64_t kMaxEvents = 20000;
 // The horizons of the continuation [s]; the last stage is always the whole shot.
@@ -56,35 +59,69 @@ Range ConstantRange(Constant c) {
 }
 
 // The strike as the optimiser sees it: speed, heading, tip side and height as fractions of r,
-// the impact time and, when fitted, the elevation.
-std::vector<double> ToVector(const Strike& s, bool elevation, double r) {
-  std::vector<double> x = {s.stroke.speed, s.stroke.heading, s.stroke.tip_side / r,
-                           s.stroke.tip_height / r, s.time};
-  if (elevation) x.push_back(s.stroke.elevation);
+// the impact time, the elevation when fitted, and the start offset of each ball but the cue
+// ball when fitted (the cue ball's along its line is the impact's time, and across it the
+// heading, to what the camera resolves).
+struct Layout {
+  bool elevation = false;
+  double radius = 0.0;
+  std::size_t balls = 0, cue = 0;
+  bool offsets = false;
+
+  Layout(const FitOptions& options, double r, const TrackedShot& shot)
+      : elevation(options.fit_elevation),
+        radius(r),
+        balls(shot.balls.size()),
+        cue(shot.cue),
+        offsets(options.fit_start) {}
+  std::size_t first_offset() const { return elevation ? 6 : 5; }
+  std::size_t size() const { return first_offset() + (offsets ? 2 * (balls - 1) : 0); }
+};
+
+std::vector<double> ToVector(const Strike& s, const Layout& layout) {
+  std::vector<double> x = {s.stroke.speed, s.stroke.heading, s.stroke.tip_side / layout.radius,
+                           s.stroke.tip_height / layout.radius, s.time};
+  if (layout.elevation) x.push_back(s.stroke.elevation);
+  for (std::size_t i = 0; layout.offsets && i < layout.balls; ++i) {
+    if (i == layout.cue) continue;
+    const Eigen::Vector2d d =
+        i < s.start_offsets.size() ? s.start_offsets[i] : Eigen::Vector2d::Zero();
+    x.push_back(d.x());
+    x.push_back(d.y());
+  }
   return x;
 }
 
-Strike FromVector(const double* x, bool elevation, double r) {
+Strike FromVector(const double* x, const Layout& layout) {
   Strike s;
   s.stroke.speed = x[0];
   s.stroke.heading = x[1];
-  s.stroke.tip_side = x[2] * r;
-  s.stroke.tip_height = x[3] * r;
+  s.stroke.tip_side = x[2] * layout.radius;
+  s.stroke.tip_height = x[3] * layout.radius;
   s.time = x[4];
-  s.stroke.elevation = elevation ? x[5] : 0.0;
+  s.stroke.elevation = layout.elevation ? x[5] : 0.0;
+  if (!layout.offsets) return s;
+  const double* offset = x + layout.first_offset();
+  for (std::size_t i = 0; i < layout.balls; ++i) {
+    if (i == layout.cue) {
+      s.start_offsets.emplace_back(0.0, 0.0);
+    } else {
+      s.start_offsets.emplace_back(offset[0], offset[1]);
+      offset += 2;
+    }
+  }
   return s;
 }
 
-std::vector<Eigen::Vector2d> StartPositions(const table::TableGeometry& table, double r,
-                                            const TrackedShot& shot) {
-  std::vector<Eigen::Vector2d> p;
-  for (const TrackedBall& b : shot.balls) {
-    const Eigen::Vector2d first = b.position.front();
-    p.emplace_back(std::clamp(first.x(), r, table.length - r),
-                   std::clamp(first.y(), r, table.width - r));
+// The balls moved onto the playing surface and off each other where the tracking (or a fitted
+// offset) put them a millimetre wrong (touching balls, millimetre rounding): apart along their
+// line, by half the overlap each, plus a micrometre.
+std::vector<Eigen::Vector2d> Placed(const table::TableGeometry& table, double r,
+                                    std::vector<Eigen::Vector2d> p) {
+  for (Eigen::Vector2d& q : p) {
+    q = Eigen::Vector2d(std::clamp(q.x(), r, table.length - r),
+                        std::clamp(q.y(), r, table.width - r));
   }
-  // Balls the tracking put into each other (touching balls, millimetre rounding): apart along
-  // their line, by half the overlap each, plus a micrometre.
   constexpr double kClearance = 1e-6;
   for (int pass = 0; pass < 3; ++pass) {
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -99,6 +136,12 @@ std::vector<Eigen::Vector2d> StartPositions(const table::TableGeometry& table, d
       }
     }
   }
+  return p;
+}
+
+std::vector<Eigen::Vector2d> FirstSeen(const TrackedShot& shot) {
+  std::vector<Eigen::Vector2d> p;
+  for (const TrackedBall& b : shot.balls) p.push_back(b.position.front());
   return p;
 }
 
@@ -125,11 +168,10 @@ class ShotModel {
       : table_(table),
         params_(params),
         shot_(shot),
-        start_(StartPositions(table, params.ball.radius, shot)) {}
+        start_(FirstSeen(shot)) {}
 
   const TrackedShot& shot() const { return shot_; }
   const ModelParameters& params() const { return params_; }
-  const std::vector<Eigen::Vector2d>& start() const { return start_; }
 
   // 2 per sample of each ball up to `horizon`.
   int ResidualCount(double horizon) const {
@@ -181,13 +223,17 @@ class ShotModel {
   }
 
   table::TableSimulation Run(const Strike& strike, double until) const {
+    std::vector<Eigen::Vector2d> where = start_;
+    for (std::size_t i = 0; i < std::min(where.size(), strike.start_offsets.size()); ++i)
+      where[i] += strike.start_offsets[i];
+    where = Placed(table_, params_.ball.radius, where);
     std::vector<table::SceneBall> balls;
-    for (std::size_t i = 0; i < start_.size(); ++i) {
+    for (std::size_t i = 0; i < where.size(); ++i) {
       table::SceneBall b;
       b.id = static_cast<int>(i);
-      b.state.segment<2>(physics::kX) = start_[i];
+      b.state.segment<2>(physics::kX) = where[i];
       if (i == shot_.cue && strike.stroke.speed > 0.0)
-        b.state = physics::StrikeBall(strike.stroke, start_[i], params_);
+        b.state = physics::StrikeBall(strike.stroke, where[i], params_);
       balls.push_back(b);
     }
     table::TableSimulationOptions options;
@@ -202,7 +248,7 @@ class ShotModel {
   const table::TableGeometry& table_;
   const ModelParameters& params_;
   const TrackedShot& shot_;
-  std::vector<Eigen::Vector2d> start_;
+  std::vector<Eigen::Vector2d> start_;  // where each ball was first seen
 };
 
 ShotErrors ErrorsOf(const ShotModel& model, const Strike& strike) {
@@ -245,10 +291,9 @@ Strike LaunchGuess(const ModelParameters& p, const TrackedBall& cue, double side
 struct StrikeResidual {
   const ShotModel* model;
   double horizon;
-  bool elevation;
+  Layout layout;
   bool operator()(double const* const* x, double* residuals) const {
-    return model->Residuals(FromVector(x[0], elevation, model->params().ball.radius), horizon,
-                            residuals);
+    return model->Residuals(FromVector(x[0], layout), horizon, residuals);
   }
 };
 
@@ -263,17 +308,30 @@ ceres::Solver::Options SolverOptions(int max_iterations) {
   return o;
 }
 
+// The steps of the central differences in a strike vector x (ToVector's order): small against
+// what a camera resolves, large against the rounding of the simulation.
+std::vector<double> DifferenceSteps(const Layout& layout, const std::vector<double>& x) {
+  std::vector<double> h = {1e-4 * x[0], 1e-5, 1e-4, 1e-4, 1e-5};  // [m/s], rad, -, -, s
+  if (layout.elevation) h.push_back(1e-4);                        // [rad]
+  h.resize(layout.size(), 1e-5);                                  // start offsets [m]
+  return h;
+}
+
 // The bounds of a strike vector (ToVector's order) for a shot whose impact lies in [lo, hi].
 struct StrikeBounds {
   std::vector<double> lo, hi;
 };
-StrikeBounds BoundsOf(bool elevation, double impact_lo, double impact_hi) {
+StrikeBounds BoundsOf(const Layout& layout, double impact_lo, double impact_hi) {
   StrikeBounds b{{0.01, -std::numeric_limits<double>::infinity(), -kTipLimit, -kTipLimit, impact_lo},
                  {kMaxCueSpeed, std::numeric_limits<double>::infinity(), kTipLimit, kTipLimit,
                   impact_hi}};
-  if (elevation) {
+  if (layout.elevation) {
     b.lo.push_back(0.0);
     b.hi.push_back(kMaxElevation);
+  }
+  for (std::size_t i = b.lo.size(); i < layout.size(); ++i) {
+    b.lo.push_back(-kStartSlack);
+    b.hi.push_back(kStartSlack);
   }
   return b;
 }
@@ -290,26 +348,26 @@ std::pair<double, double> ImpactRange(const TrackedShot& shot) {
 double RefineStrike(const ShotModel& model, double horizon, const FitOptions& options,
                     double impact_lo, double impact_hi, std::vector<double>* x) {
   const int residuals = model.ResidualCount(horizon);
-  const double r = model.params().ball.radius;
+  const Layout layout(options, model.params().ball.radius, model.shot());
   if (residuals == 0) return 0.0;
-  if (!std::isfinite(model.Cost(FromVector(x->data(), options.fit_elevation, r), horizon)))
+  if (!std::isfinite(model.Cost(FromVector(x->data(), layout), horizon)))
     return std::numeric_limits<double>::infinity();
   ceres::NumericDiffOptions diff;
   diff.relative_step_size = 1e-5;
   auto* cost = new ceres::DynamicNumericDiffCostFunction<StrikeResidual, ceres::CENTRAL>(
-      new StrikeResidual{&model, horizon, options.fit_elevation}, ceres::TAKE_OWNERSHIP, diff);
+      new StrikeResidual{&model, horizon, layout}, ceres::TAKE_OWNERSHIP, diff);
   cost->AddParameterBlock(static_cast<int>(x->size()));
   cost->SetNumResiduals(residuals);
   ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, x->data());
-  const StrikeBounds bounds = BoundsOf(options.fit_elevation, impact_lo, impact_hi);
+  const StrikeBounds bounds = BoundsOf(layout, impact_lo, impact_hi);
   for (std::size_t k = 0; k < x->size(); ++k) {
     if (std::isfinite(bounds.lo[k])) problem.SetParameterLowerBound(x->data(), k, bounds.lo[k]);
     if (std::isfinite(bounds.hi[k])) problem.SetParameterUpperBound(x->data(), k, bounds.hi[k]);
   }
   ceres::Solver::Summary summary;
   ceres::Solve(SolverOptions(options.max_iterations), &problem, &summary);
-  return model.Cost(FromVector(x->data(), options.fit_elevation, r), horizon);
+  return model.Cost(FromVector(x->data(), layout), horizon);
 }
 
 double Median(std::vector<double> v) {
@@ -326,6 +384,7 @@ ShotFit FitOne(const table::TableGeometry& table, const ModelParameters& params,
                double horizon = std::numeric_limits<double>::infinity()) {
   const ShotModel model(table, params, shot);
   const double r = params.ball.radius;
+  const Layout layout(options, r, shot);
   const TrackedBall& cue = shot.balls.at(shot.cue);
   ShotFit fit;
   fit.id = shot.id;
@@ -346,7 +405,7 @@ ShotFit FitOne(const table::TableGeometry& table, const ModelParameters& params,
           s.stroke.speed *= factor;
           s.stroke.heading += turn;
           s.stroke.tip_height = height * r;
-          const std::vector<double> x = ToVector(s, options.fit_elevation, r);
+          const std::vector<double> x = ToVector(s, layout);
           scored.emplace_back(model.Cost(s, first_horizon), x);
         }
       }
@@ -373,12 +432,12 @@ ShotFit FitOne(const table::TableGeometry& table, const ModelParameters& params,
   };
   for (const auto& start : scored) consider(start.second, true);
   if (previous) {
-    std::vector<double> x = ToVector(*previous, options.fit_elevation, r);
+    std::vector<double> x = ToVector(*previous, layout);
     x[4] = std::clamp(x[4], impact_lo, impact_hi);
     consider(x, false);
   }
   if (best.empty()) throw std::invalid_argument("shot " + shot.id + ": no strike simulates");
-  fit.strike = FromVector(best.data(), options.fit_elevation, r);
+  fit.strike = FromVector(best.data(), layout);
   fit.errors = ErrorsOf(model, fit.strike);
   fit.rmse_cue = fit.errors.rmse[shot.cue];
   return fit;
@@ -399,7 +458,7 @@ struct JointProblem {
   const std::vector<TrackedShot>& shots;
   std::vector<std::size_t> included;
   const std::vector<Constant>& constants;
-  bool elevation;
+  const FitOptions& options;
   batch::ThreadPool& pool;
   double horizon = std::numeric_limits<double>::infinity();  // the samples up to it count
 
@@ -419,8 +478,8 @@ struct JointProblem {
     const ModelParameters p = WithConstants(base, constants, values);
     Evaluation e;
     e.r = ShotModel(table, p, shots[s])
-              .Residuals(FromVector(strike.data(), elevation, p.ball.radius), horizon,
-                         &e.impacts);
+              .Residuals(FromVector(strike.data(), Layout(options, p.ball.radius, shots[s])),
+                         horizon, &e.impacts);
     return e;
   }
 
@@ -433,7 +492,8 @@ struct JointProblem {
     if (e0.r.empty()) throw std::runtime_error("shot " + shots[s].id + " does not simulate");
     const int m = static_cast<int>(e0.r.size());
     const std::size_t n = strike.size(), k = values.size();
-    const double strike_steps[] = {1e-4 * strike[0], 1e-5, 1e-4, 1e-4, 1e-5, 1e-4};
+    const std::vector<double> strike_steps =
+        DifferenceSteps(Layout(options, base.ball.radius, shots[s]), strike);
     Eigen::MatrixXd j = Eigen::MatrixXd::Zero(m, n + k);
     for (std::size_t c = 0; c < n + k; ++c) {
       std::vector<double> xp = strike, xm = strike, vp = values, vm = values;
@@ -536,20 +596,44 @@ Reduced Reduce(const std::vector<ShotBlocks>& blocks, std::size_t k, double lamb
 // Levenberg-Marquardt over the strikes of the included shots and the constants together, by the
 // reduced system (each iteration one linearization of every shot on the pool, summed in shot
 // order: the same steps on any thread count), within the bounds (a step is clamped to them).
+// Robust: shot j of n_j samples and mean squared error e_j costs n_j c^2 log(1 + e_j / c^2)
+// (Cauchy's loss of the shot's RMSE, c the median RMSE when the solve starts), so that the
+// constants follow the typical shot rather than the few the model cannot follow; iteratively
+// reweighted, each shot's blocks weighted by 1 / (1 + e_j / c^2) at each linearization.
 void SolveJoint(const JointProblem& problem, const FitOptions& options,
                 std::vector<std::vector<double>>* strikes, std::vector<double>* values) {
   const std::size_t k = values->size();
   std::vector<StrikeBounds> bounds;
   for (std::size_t s : problem.included) {
     const auto [lo, hi] = ImpactRange(problem.shots[s]);
-    bounds.push_back(BoundsOf(problem.elevation, lo, hi));
+    bounds.push_back(BoundsOf(Layout(problem.options, problem.base.ball.radius, problem.shots[s]), lo, hi));
   }
   std::vector<std::pair<double, std::uint64_t>> current = problem.EvaluateAll(*strikes, *values);
+  std::vector<double> samples, mse;
+  for (std::size_t j = 0; j < current.size(); ++j) {
+    samples.push_back(std::max(1, ShotModel(problem.table, problem.base,
+                                            problem.shots[problem.included[j]])
+                                          .ResidualCount(problem.horizon) / 2));
+    mse.push_back(current[j].first / samples[j]);
+  }
+  const double c2 = std::max(Median(mse), 1e-12);
+  auto robust = [&](const std::vector<std::pair<double, std::uint64_t>>& e) {
+    double sum = 0.0;
+    for (std::size_t j = 0; j < e.size(); ++j)
+      sum += samples[j] * c2 * std::log1p(e[j].first / samples[j] / c2);
+    return sum;
+  };
   double lambda = 1e-3;
   constexpr double kMaxLambda = 1e8;
   constexpr double kRelativeDecrease = 1e-7;
   for (int iteration = 0; iteration < options.max_iterations && lambda < kMaxLambda; ++iteration) {
-    const std::vector<ShotBlocks> blocks = problem.LinearizeAll(*strikes, *values);
+    std::vector<ShotBlocks> blocks = problem.LinearizeAll(*strikes, *values);
+    for (std::size_t j = 0; j < blocks.size(); ++j) {
+      const double w = 1.0 / (1.0 + current[j].first / samples[j] / c2);
+      for (Eigen::MatrixXd* m : {&blocks[j].ss, &blocks[j].sc, &blocks[j].cc}) *m *= w;
+      blocks[j].gs *= w;
+      blocks[j].gc *= w;
+    }
     bool accepted = false;
     while (!accepted && lambda < kMaxLambda) {
       const Reduced reduced = Reduce(blocks, k, lambda);
@@ -567,19 +651,10 @@ void SolveJoint(const JointProblem& problem, const FitOptions& options,
       }
       const std::vector<std::pair<double, std::uint64_t>> trial =
           problem.EvaluateAll(new_strikes, new_values);
-      // The step is judged on the shots whose impacts it kept, the piece the linearization
-      // saw: one shot jumping to another piece would otherwise veto every step, however small.
-      // A step that takes any shot where it does not simulate is refused.
-      double before = 0.0, after = 0.0;
-      for (std::size_t j = 0; j < trial.size(); ++j) {
-        if (!std::isfinite(trial[j].first)) {
-          after = std::numeric_limits<double>::infinity();
-          break;
-        }
-        if (trial[j].second != current[j].second) continue;
-        before += current[j].first;
-        after += trial[j].first;
-      }
+      // A step is judged on every shot: one that jumps to another piece of the cost (a
+      // collision made or missed) counts with the rest, else the fit could walk a shot into a
+      // worse shot step by step. (Where a shot does not simulate, the sum is infinite.)
+      const double before = robust(current), after = robust(trial);
       if (after < before) {
         accepted = true;
         const bool converged = before - after < kRelativeDecrease * before;
@@ -755,13 +830,13 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
     out.constants.push_back(f);
   }
   if (with_constants) {
-    JointProblem problem{table, params, shots, {}, constants, options.fit_elevation, pool};
+    JointProblem problem{table, params, shots, {}, constants, options, pool};
     const double r = params.ball.radius;
     // The shots the constants are fitted on: those not held out whose strike fit is no outlier.
     auto strikes_of = [&] {
       std::vector<std::vector<double>> x;
       for (std::size_t i : problem.included)
-        x.push_back(ToVector(out.shots[i].strike, options.fit_elevation, r));
+        x.push_back(ToVector(out.shots[i].strike, Layout(options, r, shots[i])));
       return x;
     };
     auto values_of = [&] {
@@ -800,7 +875,8 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
       SolveJoint(problem, options, &x, &v);
       out.params = WithConstants(out.params, constants, v);
       for (std::size_t j = 0; j < problem.included.size(); ++j)
-        out.shots[problem.included[j]].strike = FromVector(x[j].data(), options.fit_elevation, r);
+        out.shots[problem.included[j]].strike =
+            FromVector(x[j].data(), Layout(options, r, shots[problem.included[j]]));
     };
     // A continuation over the horizon, as for one shot: the constants the first seconds show
     // (the slide, the roll, the first cushions) before the later collisions, whose timing they

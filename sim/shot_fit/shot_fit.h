@@ -52,9 +52,13 @@ namespace billiard::shot_fit {
 // after it ends microseconds apart, noise that defeats the differences a fit takes.
 inline constexpr table::CushionModel kCushionModel = table::CushionModel::kHan2005;
 
+// A shot's strike, and where its balls really stood: the tracking sees them a millimetre or two
+// off, and a cut's angle turns by a degree a millimetre.
 struct Strike {
   physics::CueStroke stroke;
   double time = 0.0;  // of the impact, on the shot's clock [s]
+  // Per ball of the shot, its start relative to where it was first seen [m]; empty: as seen.
+  std::vector<Eigen::Vector2d> start_offsets;
 };
 
 // The shared constants a fit may identify:
@@ -98,6 +102,7 @@ table::TableSimulation SimulateShot(const table::TableGeometry& table,
 
 struct FitOptions {
   bool fit_elevation = false;     // else the cue is level
+  bool fit_start = true;          // each object ball's start within a few mm of its first sample
   std::vector<Constant> constants;  // fitted jointly over the shots (FitShots)
   int rounds = 1;                 // of the joint fit over whole shots, after the continuation
   double max_relative_sd = 0.2;   // beyond it a constant is not identifiable

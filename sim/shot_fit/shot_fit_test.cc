@@ -81,6 +81,7 @@ TEST(ShotFit, RecoversHiddenConstantsFromTwentyShots) {
   FitOptions options;
   options.constants = constants;
   options.rounds = 1;
+  options.max_iterations = 100;
   batch::ThreadPool pool(2);
   const ShotsFit fit = FitShots(table, prior, shots, options, pool);
   const double tolerance[] = {0.03, 0.05, 0.03};
