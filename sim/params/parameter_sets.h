@@ -16,7 +16,7 @@ namespace billiard::params {
 // users have. (`billiard bench` alone defaults to "paper": its scenes are the paper's figures.)
 inline constexpr char kDefaultParameterSet[] = "pool";
 
-// The names of the built-in parameter sets ("paper", "pool").
+// The names of the built-in parameter sets ("carom", "carom-fitted", "paper", "pool", "snooker").
 std::vector<std::string> BuiltinParameterSetNames();
 
 // A built-in set by name, or a JSON file by path (then `file` holds the path). Throws

@@ -21,6 +21,8 @@ using physics::ModelParameters;
 // set's max_tip_offset is 0.5) with room for the side and height together to stay below r.
 constexpr double kTipLimit = 0.6;
 constexpr double kMaxElevation = 0.6;  // [rad], a masse is no three-cushion shot
+// Where a fitted elevation starts [rad]: off the bound, where its differences are two-sided.
+constexpr double kStartElevation = 0.05;
 constexpr double kMaxCueSpeed = 12.0;  // [m/s], beyond any player's break
 // How far the fit may move a ball from where it was first seen [m]: the recordings round to a
 // millimetre, and a ball's centre is found to about as much again.
@@ -59,31 +61,27 @@ Range ConstantRange(Constant c) {
 }
 
 // The strike as the optimiser sees it: speed, heading, tip side and height as fractions of r,
-// the impact time, the elevation when fitted, and the start offset of each ball but the cue
-// ball when fitted (the cue ball's along its line is the impact's time, and across it the
-// heading, to what the camera resolves).
+// the impact time, the elevation when fitted, and the start offsets of the balls whose starts
+// are fitted (FitOptions::fit_start, fit_cue_start).
 struct Layout {
   bool elevation = false;
   double radius = 0.0;
-  std::size_t balls = 0, cue = 0;
-  bool offsets = false;
+  std::vector<std::size_t> offset_balls;
 
   Layout(const FitOptions& options, double r, const TrackedShot& shot)
-      : elevation(options.fit_elevation),
-        radius(r),
-        balls(shot.balls.size()),
-        cue(shot.cue),
-        offsets(options.fit_start) {}
+      : elevation(options.fit_elevation), radius(r) {
+    for (std::size_t i = 0; i < shot.balls.size(); ++i)
+      if (i == shot.cue ? options.fit_cue_start : options.fit_start) offset_balls.push_back(i);
+  }
   std::size_t first_offset() const { return elevation ? 6 : 5; }
-  std::size_t size() const { return first_offset() + (offsets ? 2 * (balls - 1) : 0); }
+  std::size_t size() const { return first_offset() + 2 * offset_balls.size(); }
 };
 
 std::vector<double> ToVector(const Strike& s, const Layout& layout) {
   std::vector<double> x = {s.stroke.speed, s.stroke.heading, s.stroke.tip_side / layout.radius,
                            s.stroke.tip_height / layout.radius, s.time};
   if (layout.elevation) x.push_back(s.stroke.elevation);
-  for (std::size_t i = 0; layout.offsets && i < layout.balls; ++i) {
-    if (i == layout.cue) continue;
+  for (std::size_t i : layout.offset_balls) {
     const Eigen::Vector2d d =
         i < s.start_offsets.size() ? s.start_offsets[i] : Eigen::Vector2d::Zero();
     x.push_back(d.x());
@@ -99,16 +97,14 @@ Strike FromVector(const double* x, const Layout& layout) {
   s.stroke.tip_side = x[2] * layout.radius;
   s.stroke.tip_height = x[3] * layout.radius;
   s.time = x[4];
-  s.stroke.elevation = layout.elevation ? x[5] : 0.0;
-  if (!layout.offsets) return s;
+  // The differences step below a level cue's 0 (the bound); the stroke there is the level one.
+  s.stroke.elevation = layout.elevation ? std::max(x[5], 0.0) : 0.0;
+  if (layout.offset_balls.empty()) return s;
+  s.start_offsets.assign(layout.offset_balls.back() + 1, Eigen::Vector2d::Zero());
   const double* offset = x + layout.first_offset();
-  for (std::size_t i = 0; i < layout.balls; ++i) {
-    if (i == layout.cue) {
-      s.start_offsets.emplace_back(0.0, 0.0);
-    } else {
-      s.start_offsets.emplace_back(offset[0], offset[1]);
-      offset += 2;
-    }
+  for (std::size_t i : layout.offset_balls) {
+    s.start_offsets[i] = Eigen::Vector2d(offset[0], offset[1]);
+    offset += 2;
   }
   return s;
 }
@@ -405,6 +401,7 @@ ShotFit FitOne(const table::TableGeometry& table, const ModelParameters& params,
           s.stroke.speed *= factor;
           s.stroke.heading += turn;
           s.stroke.tip_height = height * r;
+          if (options.fit_elevation) s.stroke.elevation = kStartElevation;
           const std::vector<double> x = ToVector(s, layout);
           scored.emplace_back(model.Cost(s, first_horizon), x);
         }
@@ -494,6 +491,7 @@ struct JointProblem {
     const std::size_t n = strike.size(), k = values.size();
     const std::vector<double> strike_steps =
         DifferenceSteps(Layout(options, base.ball.radius, shots[s]), strike);
+
     Eigen::MatrixXd j = Eigen::MatrixXd::Zero(m, n + k);
     for (std::size_t c = 0; c < n + k; ++c) {
       std::vector<double> xp = strike, xm = strike, vp = values, vm = values;
@@ -685,11 +683,20 @@ Eigen::MatrixXd ConstantsCovariance(const JointProblem& problem,
     dof += blocks[j].residuals - static_cast<int>(strikes[j].size());
   }
   const double sigma2 = squares / std::max(dof, 1);
+  // A constant no shot excites has a zero row: its variance is infinite, and the others' are
+  // those of the rest of the matrix.
   Eigen::MatrixXd cov = Eigen::MatrixXd::Constant(k, k, std::numeric_limits<double>::infinity());
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(reduced.s);
-  const double largest = eig.eigenvalues().cwiseAbs().maxCoeff();
-  if (largest > 0.0 && eig.eigenvalues().minCoeff() > 1e-12 * largest)
-    cov = sigma2 * reduced.s.inverse();
+  const double largest = reduced.s.diagonal().cwiseAbs().maxCoeff();
+  std::vector<int> excited;
+  for (std::size_t c = 0; c < k; ++c)
+    if (reduced.s(c, c) > 1e-12 * largest) excited.push_back(static_cast<int>(c));
+  if (excited.empty()) return cov;
+  const Eigen::MatrixXd s = reduced.s(excited, excited);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(s);
+  if (eig.eigenvalues().minCoeff() <= 1e-12 * eig.eigenvalues().cwiseAbs().maxCoeff()) return cov;
+  const Eigen::MatrixXd inverse = sigma2 * s.inverse();
+  for (std::size_t a = 0; a < excited.size(); ++a)
+    for (std::size_t b = 0; b < excited.size(); ++b) cov(excited[a], excited[b]) = inverse(a, b);
   return cov;
 }
 
@@ -786,6 +793,11 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
 
   // Fits the strikes of the shots `which` with out.params, from their previous strikes when
   // `refine`.
+  // While the constants are fitted the cue ball stays where it was first seen (its offset
+  // along its line is nearly the impact's time, and the joint steps would trade one against
+  // the other); the strikes reported are fitted with the options as given.
+  FitOptions phase_options = options;
+  if (!options.constants.empty()) phase_options.fit_cue_start = false;
   auto fit_strikes = [&](const std::vector<std::size_t>& which, bool refine,
                          const std::string& stage, double horizon) {
     auto results = pool.Map(
@@ -794,7 +806,7 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
           const std::size_t i = which[job];
           std::optional<Strike> previous;
           if (refine && out.shots[i].ok()) previous = out.shots[i].strike;
-          return FitOne(table, out.params, shots[i], options, previous, horizon);
+          return FitOne(table, out.params, shots[i], phase_options, previous, horizon);
         },
         progress ? batch::Progress([&](std::size_t done, std::size_t total) {
           progress(stage, done, total);
@@ -830,13 +842,13 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
     out.constants.push_back(f);
   }
   if (with_constants) {
-    JointProblem problem{table, params, shots, {}, constants, options, pool};
+    JointProblem problem{table, params, shots, {}, constants, phase_options, pool};
     const double r = params.ball.radius;
     // The shots the constants are fitted on: those not held out whose strike fit is no outlier.
     auto strikes_of = [&] {
       std::vector<std::vector<double>> x;
       for (std::size_t i : problem.included)
-        x.push_back(ToVector(out.shots[i].strike, Layout(options, r, shots[i])));
+        x.push_back(ToVector(out.shots[i].strike, Layout(phase_options, r, shots[i])));
       return x;
     };
     auto values_of = [&] {
@@ -876,7 +888,7 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
       out.params = WithConstants(out.params, constants, v);
       for (std::size_t j = 0; j < problem.included.size(); ++j)
         out.shots[problem.included[j]].strike =
-            FromVector(x[j].data(), Layout(options, r, shots[problem.included[j]]));
+            FromVector(x[j].data(), Layout(phase_options, r, shots[problem.included[j]]));
     };
     // A continuation over the horizon, as for one shot: the constants the first seconds show
     // (the slide, the roll, the first cushions) before the later collisions, whose timing they
@@ -921,6 +933,8 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
     std::vector<std::size_t> rest;
     for (std::size_t i : all)
       if (is_held_out(i)) rest.push_back(i);
+    phase_options = options;
+    fit_strikes(fitted, true, "strikes, the final constants", full);
     fit_strikes(rest, false, "held-out strikes", full);
   }
 
@@ -971,6 +985,36 @@ TrackedShot SimulateTrackedShot(const table::TableGeometry& table, const ModelPa
     }
   }
   return shot;
+}
+
+std::vector<TrackedShot> SyntheticShots(const table::TableGeometry& table,
+                                        const ModelParameters& params, int count,
+                                        std::uint64_t seed) {
+  constexpr double kDuration = 8.0, kPeriod = 0.02, kNoise = 0.001, kThinning = 0.002;
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double r = params.ball.radius;
+  std::vector<TrackedShot> shots;
+  while (static_cast<int>(shots.size()) < count) {
+    std::vector<Eigen::Vector2d> starts;
+    while (starts.size() < 3) {
+      const Eigen::Vector2d q(2 * r + unit(random) * (table.length - 4 * r),
+                              2 * r + unit(random) * (table.width - 4 * r));
+      bool clear = true;
+      for (const Eigen::Vector2d& o : starts) clear = clear && (q - o).norm() > 3 * r;
+      if (clear) starts.push_back(q);
+    }
+    Strike s;
+    s.stroke.speed = 2.0 + 2.0 * unit(random);
+    s.stroke.heading = 2 * M_PI * unit(random);
+    s.stroke.tip_side = (unit(random) - 0.5) * 0.8 * r;
+    s.stroke.tip_height = (unit(random) - 0.5) * 0.8 * r;
+    s.time = kPeriod * unit(random);
+    shots.push_back(SimulateTrackedShot(table, params, starts, 0, s, kDuration, kPeriod, kNoise,
+                                        kThinning, seed + shots.size()));
+    shots.back().id = std::to_string(shots.size());
+  }
+  return shots;
 }
 
 }  // namespace billiard::shot_fit

@@ -103,6 +103,9 @@ table::TableSimulation SimulateShot(const table::TableGeometry& table,
 struct FitOptions {
   bool fit_elevation = false;     // else the cue is level
   bool fit_start = true;          // each object ball's start within a few mm of its first sample
+  // The cue ball's too, in the strikes reported; while constants are fitted it stays where it
+  // was first seen (along its line its offset is nearly the impact's time).
+  bool fit_cue_start = true;
   std::vector<Constant> constants;  // fitted jointly over the shots (FitShots)
   int rounds = 1;                 // of the joint fit over whole shots, after the continuation
   double max_relative_sd = 0.2;   // beyond it a constant is not identifiable
@@ -167,5 +170,13 @@ TrackedShot SimulateTrackedShot(const table::TableGeometry& table,
                                 const std::vector<Eigen::Vector2d>& starts, std::size_t cue,
                                 const Strike& strike, double duration, double period, double noise,
                                 double thinning, std::uint64_t seed);
+
+// `count` shots of random strikes (cue speed 2-4 m/s, any heading, tip offsets within 0.4 r,
+// the impact within the first frame) from three balls placed at random (seeded by `seed`),
+// simulated with `params` for 8 s and tracked by SimulateTrackedShot as the real recordings
+// are: 50 Hz, 1 mm of noise, thinned where a ball moved less than 2 mm. Ball 0 is struck.
+std::vector<TrackedShot> SyntheticShots(const table::TableGeometry& table,
+                                        const physics::ModelParameters& params, int count,
+                                        std::uint64_t seed);
 
 }  // namespace billiard::shot_fit

@@ -11,6 +11,7 @@
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 
 #include "sim/batch/thread_pool.h"
@@ -36,10 +37,22 @@ struct FitShotsArgs {
   bool fit_elevation = false, json = false;
 };
 
+// The table of a --table option; UsageError if it does not load.
+table::TableGeometry TableOption(const std::string& name_or_path) {
+  try {
+    return table::BuildTable(params::LoadTableSpec(name_or_path));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--table: ") + e.what());
+  }
+}
+
 nlohmann::json StrikeJson(const shot_fit::Strike& s) {
-  return {{"speed_m_s", s.stroke.speed},     {"heading_rad", s.stroke.heading},
-          {"tip_side_m", s.stroke.tip_side}, {"tip_height_m", s.stroke.tip_height},
-          {"elevation_rad", s.stroke.elevation}, {"time_s", s.time}};
+  nlohmann::json offsets = nlohmann::json::array();
+  for (const Eigen::Vector2d& d : s.start_offsets) offsets.push_back({d.x(), d.y()});
+  return {{"speed_m_s", s.stroke.speed},         {"heading_rad", s.stroke.heading},
+          {"tip_side_m", s.stroke.tip_side},     {"tip_height_m", s.stroke.tip_height},
+          {"elevation_rad", s.stroke.elevation}, {"time_s", s.time},
+          {"start_offsets_m", offsets}};
 }
 
 nlohmann::json ConstantsJson(const shot_fit::ShotsFit& fit) {
@@ -126,10 +139,15 @@ void Run(const FitShotsArgs& args) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--fit-physics: ") + e.what());
   }
-  const table::TableGeometry table = table::BuildTable(params::LoadTableSpec(args.table));
+  const table::TableGeometry table = TableOption(args.table);
   const physics::ModelParameters p =
       LoadParametersOption(args.params.empty() ? DefaultParameters(args.table) : args.params);
-  const shot_fit::TrackedShots tracked = shot_fit::ReadTrackedShots(args.shots);
+  shot_fit::TrackedShots tracked;
+  try {
+    tracked = shot_fit::ReadTrackedShots(args.shots);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
   if (tracked.shots.empty()) throw UsageError(args.shots + ": holds no shots");
   std::vector<bool> held_out(tracked.shots.size(), false);
   if (args.hold_out_every > 0) {
@@ -180,9 +198,20 @@ void Run(const FitShotsArgs& args) {
       report["hold_out_every"] = args.hold_out_every;
       report["held_out_median_cue_rmse_m"] = fit.held_out_median_cue_rmse;
     }
+    std::vector<double> held_out_rmse;
+    for (const shot_fit::ShotFit& s : fit.shots)
+      if (s.ok() && s.held_out) held_out_rmse.push_back(s.rmse_cue);
+    std::sort(held_out_rmse.begin(), held_out_rmse.end());
+    if (!held_out_rmse.empty()) report["held_out_sorted_cue_rmse_m"] = held_out_rmse;
+    physics::ModelParameters out_set = fit.params;
+    out_set.name = p.name + "-fitted";
+    out_set.source = "The constants of \"fit\" fitted by billiard fit-shots to " +
+                     std::to_string(fit.constant_shots) + " tracked shots of " + args.shots +
+                     "; the other numbers those of " + params::ParameterSetLabel(p) + ": " +
+                     p.source;
     std::ofstream file(args.out_params);
     if (!file) throw UsageError("--out-params: cannot write " + args.out_params);
-    file << params::ParametersJson(fit.params, report.dump());
+    file << params::ParametersJson(out_set, report.dump());
   }
   if (!args.plot_dir.empty()) DrawWorst(table, fit, tracked.shots, args.plot_worst, args.plot_dir);
   if (args.json) std::cout << out.dump() << std::endl;
@@ -201,7 +230,85 @@ void Run(const FitShotsArgs& args) {
   }
 }
 
+struct BenchShotFitArgs {
+  int shots = 60, threads = batch::DefaultThreadCount();
+  std::uint64_t seed = 28;
+  double spread = 0.2;
+  std::string fit_physics = "mu,rolling,cushion", params = "carom", table = "carom-10ft";
+  bool json = false;
+};
+
+// Synthetic truth: the constants hidden within +-spread of the set's, shots simulated and
+// tracked with them (shot_fit::SyntheticShots), fitted from the set's values.
+void RunBench(const BenchShotFitArgs& args) {
+  if (args.shots < 1) throw UsageError("--shots must be >= 1");
+  if (!(args.spread >= 0.0 && args.spread < 1.0)) throw UsageError("--spread must lie in [0, 1)");
+  if (args.threads < 1) throw UsageError("--threads must be >= 1");
+  shot_fit::FitOptions options;
+  try {
+    options.constants = shot_fit::ParseConstants(args.fit_physics);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--fit-physics: ") + e.what());
+  }
+  const table::TableGeometry table = TableOption(args.table);
+  const physics::ModelParameters prior = LoadParametersOption(args.params);
+  std::mt19937_64 random(args.seed);
+  std::uniform_real_distribution<double> factor(1.0 - args.spread, 1.0 + args.spread);
+  std::vector<double> hidden;
+  for (shot_fit::Constant c : options.constants)
+    hidden.push_back(shot_fit::ConstantValue(prior, c) * factor(random));
+  const physics::ModelParameters truth = shot_fit::WithConstants(prior, options.constants, hidden);
+  const std::vector<shot_fit::TrackedShot> shots =
+      shot_fit::SyntheticShots(table, truth, args.shots, args.seed);
+  const auto started = std::chrono::steady_clock::now();
+  batch::ThreadPool pool(args.threads);
+  const shot_fit::ShotsFit fit =
+      shot_fit::FitShots(table, prior, shots, options, pool, {}, TerminalProgress());
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  nlohmann::json constants = nlohmann::json::object();
+  for (std::size_t c = 0; c < fit.constants.size(); ++c) {
+    const shot_fit::ConstantFit& f = fit.constants[c];
+    const double error = f.value / hidden[c] - 1.0;
+    constants[shot_fit::ConstantName(f.constant)] = {
+        {"hidden", hidden[c]}, {"prior", f.prior},  {"fitted", f.value},
+        {"sd", f.sd},          {"relative_error", error}, {"identifiable", f.identifiable}};
+    std::cerr << "bench-shot-fit: " << shot_fit::ConstantName(f.constant) << " hidden "
+              << hidden[c] << ", fitted " << f.value << " +- " << f.sd << " ("
+              << 100.0 * error << " %)\n";
+  }
+  std::cerr << "bench-shot-fit: " << args.shots << " shots in " << seconds
+            << " s; median cue-ball RMSE " << fit.median_cue_rmse << " m\n";
+  if (args.json) {
+    std::cout << nlohmann::json{{"shots", args.shots},     {"seed", args.seed},
+                                {"spread", args.spread},   {"constants", constants},
+                                {"median_cue_rmse_m", fit.median_cue_rmse},
+                                {"seconds", seconds},      {"threads", args.threads}}
+                     .dump()
+              << std::endl;
+  }
+}
+
 }  // namespace
+
+void AddBenchShotFitCommand(CLI::App& app) {
+  auto args = std::make_shared<BenchShotFitArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench-shot-fit", "Recover hidden physics constants from simulated, tracked shots");
+  cmd->add_option("--shots", args->shots, "Synthetic shots")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the constants and the shots")
+      ->capture_default_str();
+  cmd->add_option("--spread", args->spread, "Hidden constants within +- this of the set's")
+      ->capture_default_str();
+  cmd->add_option("--fit-physics", args->fit_physics, "Constants to recover")
+      ->capture_default_str();
+  cmd->add_option("--params", args->params, "The set the constants are hidden around")
+      ->capture_default_str();
+  cmd->add_option("--table", args->table, "Table")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Threads")->capture_default_str();
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
+  cmd->callback([args] { RunBench(*args); });
+}
 
 void AddFitShotsCommand(CLI::App& app) {
   auto args = std::make_shared<FitShotsArgs>();

@@ -8,4 +8,8 @@ namespace billiard::cli {
 // shots through the whole-table simulation (docs/identification.md).
 void AddFitShotsCommand(CLI::App& app);
 
+// `billiard bench-shot-fit`: the constants hidden, shots simulated and tracked with them, and
+// recovered by the same fit (docs/identification.md).
+void AddBenchShotFitCommand(CLI::App& app);
+
 }  // namespace billiard::cli

@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddSimulateCommand(app);
   billiard::cli::AddFitContactCommand(app);
   billiard::cli::AddFitShotsCommand(app);
+  billiard::cli::AddBenchShotFitCommand(app);
   billiard::cli::AddBenchCommand(app);
   billiard::cli::AddPlanCommand(app);
   billiard::cli::AddBenchPlannerCommand(app);
