@@ -100,9 +100,9 @@ void DrawShot(const table::TableGeometry& table, const physics::ModelParameters&
               picture.balls.begin() + shot.cue + 1);
   picture.cue = fit.strike.stroke;
   std::ostringstream title;
-  title << "shot " << shot.id << (fit.held_out ? " (held out)" : "") << ": tracked (dots) and "
-        << p.name << " simulated (lines); cue-ball RMSE " << std::setprecision(3)
-        << 100.0 * fit.rmse_cue << " cm, all balls " << 100.0 * fit.errors.rmse_all << " cm";
+  title << "shot " << shot.id << (fit.held_out ? " (held out)" : "") << ": tracked (dots), "
+        << p.name << " (lines); RMSE cue " << std::setprecision(3) << 100.0 * fit.rmse_cue
+        << " cm, all " << 100.0 * fit.errors.rmse_all << " cm";
   picture.title = title.str();
   plot::DrawTable(picture, path);
 }
@@ -183,8 +183,10 @@ void Run(const FitShotsArgs& args) {
                         {"seconds", seconds},
                         {"threads", args.threads}};
   if (args.hold_out_every > 0) out["held_out_median_cue_rmse_m"] = fit.held_out_median_cue_rmse;
+  // "params": the set the strikes were fitted with (the given one with the fitted constants);
+  // "prior": the given one, its name and file.
   out["params"] = nlohmann::json::parse(params::ParametersJson(fit.params));
-  DescribeParameters(p, &out);
+  out["prior"] = params::ParameterSetLabel(p);
   if (!args.out_params.empty()) {
     nlohmann::json report = {{"command", "billiard fit-shots"},
                              {"shots_file", args.shots},
