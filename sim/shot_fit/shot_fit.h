@@ -2,28 +2,30 @@
 // simulation (sim/table/table_simulation.h) best reproduces the tracked balls; over many shots,
 // the shared constants of the cloth, the cushions and the balls, with their uncertainties.
 //
-// One shot. The balls start at rest where they were first seen; the cue ball is struck at
-// `Strike::time` (between its first two samples: a 50 Hz camera sees the ball still, then
-// moving) by the stroke of sim/physics/cue_strike.h, and the table runs in closed form. The
-// residuals are the simulated centre minus the tracked one at every tracked time of every ball,
-// for the whole tracked time; a ball's RMSE is over its samples. The cost is piecewise smooth:
-// a small change of the strike makes or misses a collision. So the fit (FitStrike) starts from
-// the launch the first samples show (its direction, its speed, the moment of the impact), scores
-// a grid of tip offsets and speeds around it over the first seconds, and refines the best few
-// with Ceres' Levenberg-Marquardt (central differences) over a horizon that grows to the whole
-// shot (a continuation: the early path fixes the launch before the later cushions and
-// collisions, whose timing the launch sets, can mislead it).
+// One shot. The balls start at rest where they were first seen (their starts fitted within a
+// few millimetres); the cue ball is struck at `Strike::time` (between its first two samples: a
+// 50 Hz camera sees the ball still, then moving) by the stroke of sim/physics/cue_strike.h, and
+// the table runs in closed form. The residuals are the simulated centre minus the tracked one
+// at every tracked time of every ball, for the whole tracked time; a ball's RMSE is over its
+// samples. The cost is piecewise smooth: a small change of the strike makes or misses a
+// collision. So the fit (FitStrike) starts from the launch the first samples show (its
+// direction, its speed, the moment of the impact), scores a grid of tip offsets, speeds and
+// headings around it over the first seconds, and refines the best few with Ceres'
+// Levenberg-Marquardt (central differences) over a horizon that grows to the whole shot (a
+// continuation: the early path fixes the launch before the later cushions and collisions, whose
+// timing the launch sets, can mislead it).
 //
 // Many shots (FitShots). The strikes, one problem per shot, are fitted in parallel on a
-// batch::ThreadPool (each job its own shot: the results do not depend on the thread count);
-// with constants to fit, the fit alternates (block coordinate descent): the strikes with the
-// constants fixed, then the constants with every strike fixed (one Ceres problem over the shots
-// whose strike fit is not an outlier, its Jacobian by central differences on the pool), a few
-// rounds. The uncertainty of the constants is their marginal covariance, the strikes
-// eliminated (the Schur complement of the joint Gauss-Newton matrix, sigma^2 from the
-// residuals): sigma^2 (sum_s J_c^T J_c - J_c^T J_s (J_s^T J_s)^-1 J_s^T J_c)^-1. A constant whose
-// relative standard uncertainty exceeds FitOptions::max_relative_sd (the shots do not excite
-// it) is reported as not identifiable, kept at its prior value, and the others fitted again.
+// batch::ThreadPool (each job its own shot: the results do not depend on the thread count).
+// With constants to fit, the strikes and the constants are solved jointly by a
+// Levenberg-Marquardt over the reduced system (each shot's Gauss-Newton blocks from central
+// differences on the pool, the strikes eliminated by the Schur complement, the sums in shot
+// order), robust (Cauchy's loss of each shot's RMSE) and over the same growing horizon. The
+// uncertainty of the constants is their marginal covariance, the strikes eliminated:
+// sigma^2 (sum_s J_c^T J_c - J_c^T J_s (J_s^T J_s)^-1 J_s^T J_c)^-1, sigma^2 from the
+// residuals. A constant whose relative standard uncertainty exceeds FitOptions::max_relative_sd
+// (the shots do not excite it) is reported as not identifiable, kept at its prior value, and
+// the others fitted again. The design and its measurements: sim/shot_fit/README.md.
 //
 // Module: billiard::shot_fit. Includes the physics, the table and the batch (sim/physics,
 // sim/table, sim/batch); its implementation uses Ceres' solver.
@@ -107,13 +109,13 @@ struct FitOptions {
   // was first seen (along its line its offset is nearly the impact's time).
   bool fit_cue_start = true;
   std::vector<Constant> constants;  // fitted jointly over the shots (FitShots)
-  int rounds = 1;                 // of the joint fit over whole shots, after the continuation
+  int rounds = 1;                 // joint fits over whole shots, after the continuation
   double max_relative_sd = 0.2;   // beyond it a constant is not identifiable
-  // Shots whose strike fit leaves an RMSE (all balls) above this multiple of the median are
+  // Shots whose fit leaves an RMSE (all balls, over the horizon) above this multiple of the median are
   // left out of the constants' fit: a shot the model cannot follow (a kiss the tracking lost,
   // a double hit) would pull every constant.
   double outlier_factor = 3.0;
-  int max_iterations = 40;        // of each Ceres solve
+  int max_iterations = 40;        // of each Ceres solve and of each joint solve
 };
 
 struct ShotFit {
