@@ -56,7 +56,7 @@ ModelParameters ParseParameters(const std::string& json_text, const std::string&
         {"cushion_friction", &p.collision.cushion_friction}}},
       {"table", {{"length", &p.table.length}, {"width", &p.table.width}}}};
   for (const auto& [key, value] : j.items()) {
-    const bool known = key == "name" || key == "source" ||
+    const bool known = key == "name" || key == "source" || (key == "fit" && value.is_object()) ||
                        std::any_of(sections.begin(), sections.end(),
                                    [&key = key](const auto& s) { return s.first == key; });
     if (!known) throw std::invalid_argument(origin + ": unknown key " + key);
@@ -79,6 +79,32 @@ ModelParameters LoadParameters(const std::string& name_or_path) {
   ModelParameters p = ParseParameters(text, name_or_path);
   if (from_file) p.file = name_or_path;
   return p;
+}
+
+std::string ParametersJson(const ModelParameters& p, const std::string& fit_json) {
+  const ContactParameters& c = p.contact;
+  const physics::CollisionParameters& k = p.collision;
+  nlohmann::ordered_json j;
+  j["name"] = p.name;
+  j["source"] = p.source;
+  j["ball"] = {{"radius", p.ball.radius}, {"mass", p.ball.mass}, {"gravity", p.ball.gravity}};
+  j["contact"] = {{"patch_radius", c.patch_radius}, {"mu", c.mu},   {"d", c.d},
+                  {"eps_t", c.eps_t},               {"eps_r", c.eps_r}, {"b_t", c.b_t},
+                  {"m_t", c.m_t},                   {"b_m", c.b_m}, {"m_m", c.m_m}};
+  j["cue"] = {{"mass", p.cue.mass},
+              {"tip_restitution", p.cue.tip_restitution},
+              {"max_tip_offset", p.cue.max_tip_offset},
+              {"max_speed", p.cue.max_speed},
+              {"end_mass", p.cue.end_mass}};
+  j["collision"] = {{"ball_restitution", k.ball_restitution},
+                    {"ball_friction_a", k.ball_friction_a},
+                    {"ball_friction_b", k.ball_friction_b},
+                    {"ball_friction_c", k.ball_friction_c},
+                    {"cushion_restitution", k.cushion_restitution},
+                    {"cushion_friction", k.cushion_friction}};
+  j["table"] = {{"length", p.table.length}, {"width", p.table.width}};
+  if (!fit_json.empty()) j["fit"] = nlohmann::ordered_json::parse(fit_json);
+  return j.dump(2) + "\n";
 }
 
 std::string ParameterSetLabel(const ModelParameters& p) {

@@ -16,7 +16,7 @@ namespace billiard::params {
 // users have. (`billiard bench` alone defaults to "paper": its scenes are the paper's figures.)
 inline constexpr char kDefaultParameterSet[] = "pool";
 
-// The names of the built-in parameter sets ("paper", "pool").
+// The names of the built-in parameter sets ("carom", "carom-fitted", "paper", "pool", "snooker").
 std::vector<std::string> BuiltinParameterSetNames();
 
 // A built-in set by name, or a JSON file by path (then `file` holds the path). Throws
@@ -28,7 +28,13 @@ physics::ModelParameters LoadParameters(const std::string& name_or_path);
 // "contact", "cue", "collision" and "table" with every number of physics::ModelParameters, and
 // optional strings "name" (default: `origin`) and "source". An unknown key, a missing number or
 // a value of the wrong type is refused, naming the key ("t.json: unknown key contact.muu").
+// An optional object "fit" (the report of the fit that identified the set: how, on what data,
+// with what uncertainties) is documentation; the physics does not read it.
 physics::ModelParameters ParseParameters(const std::string& json_text, const std::string& origin);
+
+// The set as JSON text that ParseParameters reads back to the same numbers (every one at full
+// precision), with `fit_json`, when not empty, a JSON object, as its "fit".
+std::string ParametersJson(const physics::ModelParameters& p, const std::string& fit_json = "");
 
 // The set's name, and the file it came from when not built in: "pool", "mine (my/set.json)".
 std::string ParameterSetLabel(const physics::ModelParameters& p);

@@ -39,6 +39,37 @@ TEST(Parameters, BuiltinNamesAreListed) {
   EXPECT_NE(std::find(names.begin(), names.end(), "pool"), names.end());
 }
 
+// ParametersJson writes what ParseParameters reads back to the same numbers, bit for bit, with a
+// "fit" report that the physics does not read.
+TEST(Parameters, WriteWhatTheyReadWithAFitReport) {
+  for (const std::string& name : BuiltinParameterSetNames()) {
+    const physics::ModelParameters p = LoadParameters(name);
+    const physics::ModelParameters back =
+        ParseParameters(ParametersJson(p, R"({"how": "by hand"})"), "x");
+    EXPECT_EQ(ParameterHash(back), ParameterHash(p)) << name;
+    EXPECT_EQ(back.name, p.name);
+    EXPECT_EQ(back.source, p.source);
+  }
+  EXPECT_THROW(ParseParameters(R"({"fit": 3})", "x"), std::invalid_argument);
+}
+
+// The carom set identified from tracked shots (docs/identification.md) is the carom set with its
+// cloth, cushion and ball constants changed, and nothing else.
+TEST(Parameters, TheFittedCaromSetChangesOnlyItsFittedConstants) {
+  const physics::ModelParameters carom = LoadParameters("carom");
+  physics::ModelParameters fitted = LoadParameters("carom-fitted");
+  EXPECT_EQ(fitted.name, "carom-fitted");
+  EXPECT_NE(fitted.source.find("tailuge/billiards"), std::string::npos);
+  EXPECT_NE(ParameterHash(fitted), ParameterHash(carom));
+  fitted.contact.mu = carom.contact.mu;
+  fitted.contact.d = carom.contact.d;
+  fitted.contact.patch_radius = carom.contact.patch_radius;
+  fitted.collision.cushion_restitution = carom.collision.cushion_restitution;
+  fitted.collision.cushion_friction = carom.collision.cushion_friction;
+  fitted.collision.ball_restitution = carom.collision.ball_restitution;
+  EXPECT_EQ(ParameterHash(fitted), ParameterHash(carom));
+}
+
 TEST(Parameters, LoadsAFile) {
   const std::string path = ::testing::TempDir() + "/custom_params.json";
   std::ofstream(path) << R"({"name":"mine","ball":{"radius":0.03,"mass":0.2,"gravity":9.8},

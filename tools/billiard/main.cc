@@ -16,6 +16,7 @@
 #include "tools/billiard/detect_command.h"
 #include "tools/billiard/edge_report_command.h"
 #include "tools/billiard/fit_contact_command.h"
+#include "tools/billiard/fit_shots_command.h"
 #include "tools/billiard/loop_command.h"
 #include "tools/billiard/node_status_command.h"
 #include "tools/billiard/plan_command.h"
@@ -45,6 +46,8 @@ int main(int argc, char** argv) {
   billiard::nodes::VersionFlag(app, "billiard");
   billiard::cli::AddSimulateCommand(app);
   billiard::cli::AddFitContactCommand(app);
+  billiard::cli::AddFitShotsCommand(app);
+  billiard::cli::AddBenchShotFitCommand(app);
   billiard::cli::AddBenchCommand(app);
   billiard::cli::AddPlanCommand(app);
   billiard::cli::AddBenchPlannerCommand(app);

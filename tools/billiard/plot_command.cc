@@ -28,24 +28,8 @@ struct PlotArgs {
   std::string scene;
   std::string plan;
   std::string out;
-  double sample_dt = 5e-3;
+  double sample_dt = plot::kPathSampleDt;
 };
-
-// Fine enough that a path's polyline bends smoothly at 400 px a metre: 5 ms is 3.5 cm at 7 m/s,
-// and every event's position is a vertex too.
-std::vector<Eigen::Vector2d> SampledPath(double t_end, double dt, const std::vector<double>& at,
-                                         const std::function<Eigen::Vector2d(double)>& position) {
-  std::vector<double> times;
-  for (double t = 0.0; t < t_end; t += dt) times.push_back(t);
-  times.insert(times.end(), at.begin(), at.end());
-  times.push_back(t_end);
-  std::sort(times.begin(), times.end());
-  std::vector<Eigen::Vector2d> path;
-  for (double t : times) {
-    if (t <= t_end) path.push_back(position(t));
-  }
-  return path;
-}
 
 plot::TablePicture ScenePicture(const std::string& path, double dt) {
   params::SceneFile scene;
@@ -73,31 +57,7 @@ plot::TablePicture ScenePicture(const std::string& path, double dt) {
   }
   sim->Run();
   picture.ball_radius = params.ball.radius;
-  std::map<int, std::size_t> index;
-  for (std::size_t i = 0; i < sim->ball_count(); ++i) index[sim->id(i)] = i;
-  std::map<int, std::vector<double>> event_times;
-  std::map<int, double> dropped;
-  for (const table::TableEvent& e : sim->events()) {
-    const Eigen::Vector2d a = sim->StateAt(index[e.ball], e.time).head<2>();
-    Eigen::Vector2d at = a;
-    if (e.type == table::EventType::kBallBall) {
-      at = 0.5 * (a + sim->StateAt(index[e.other], e.time).head<2>());
-      event_times[e.other].push_back(e.time);
-    }
-    if (e.type == table::EventType::kBallPocket) dropped[e.ball] = e.time;
-    event_times[e.ball].push_back(e.time);
-    picture.events.push_back({e.type, at});
-  }
-  for (std::size_t i = 0; i < sim->ball_count(); ++i) {
-    plot::PictureBall ball;
-    ball.id = sim->id(i);
-    ball.start = sim->StateAt(i, 0.0);
-    ball.pocket = sim->pocket(i);
-    const double end = dropped.count(ball.id) ? dropped[ball.id] : sim->time();
-    ball.path = SampledPath(end, dt, event_times[ball.id],
-                            [&](double t) -> Eigen::Vector2d { return sim->StateAt(i, t).head<2>(); });
-    picture.balls.push_back(ball);
-  }
+  plot::AddSimulation(*sim, dt, &picture);
   const auto cue = scene.cues.find(0);
   if (cue != scene.cues.end()) picture.cue = cue->second;
   std::ostringstream title;
@@ -155,7 +115,7 @@ plot::TablePicture PlanPicture(const std::string& path, double dt) {
   plot::PictureBall ball;
   ball.start = initial;
   ball.path =
-      SampledPath(arrival, dt, {}, [&](double t) -> Eigen::Vector2d {
+      plot::SampledPath(arrival, dt, {}, [&](double t) -> Eigen::Vector2d {
     return run.trajectory->At(t).head<2>();
   });
   picture.balls.push_back(ball);

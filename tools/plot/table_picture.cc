@@ -2,8 +2,10 @@
 
 #include <cairo.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 
 #include "tools/plot/canvas.h"
 
@@ -144,6 +146,48 @@ Vector2d TablePixel(const TablePicture& picture, const Vector2d& p) {
           kMarginPx + kPixelsPerMetre * (picture.table.width - p.y())};
 }
 
+std::vector<Vector2d> SampledPath(double t_end, double dt, const std::vector<double>& at,
+                                  const std::function<Vector2d(double)>& position) {
+  std::vector<double> times;
+  for (double t = 0.0; t < t_end; t += dt) times.push_back(t);
+  times.insert(times.end(), at.begin(), at.end());
+  times.push_back(t_end);
+  std::sort(times.begin(), times.end());
+  std::vector<Vector2d> path;
+  for (double t : times) {
+    if (t <= t_end) path.push_back(position(t));
+  }
+  return path;
+}
+
+void AddSimulation(const table::TableSimulation& sim, double dt, TablePicture* picture) {
+  std::map<int, std::size_t> index;
+  for (std::size_t i = 0; i < sim.ball_count(); ++i) index[sim.id(i)] = i;
+  std::map<int, std::vector<double>> event_times;
+  std::map<int, double> dropped;
+  for (const table::TableEvent& e : sim.events()) {
+    const Vector2d a = sim.StateAt(index[e.ball], e.time).head<2>();
+    Vector2d at = a;
+    if (e.type == table::EventType::kBallBall) {
+      at = 0.5 * (a + sim.StateAt(index[e.other], e.time).head<2>());
+      event_times[e.other].push_back(e.time);
+    }
+    if (e.type == table::EventType::kBallPocket) dropped[e.ball] = e.time;
+    event_times[e.ball].push_back(e.time);
+    picture->events.push_back({e.type, at});
+  }
+  for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+    PictureBall ball;
+    ball.id = sim.id(i);
+    ball.start = sim.StateAt(i, 0.0);
+    ball.pocket = sim.pocket(i);
+    const double end = dropped.count(ball.id) ? dropped[ball.id] : sim.time();
+    ball.path = SampledPath(end, dt, event_times[ball.id],
+                            [&](double t) -> Vector2d { return sim.StateAt(i, t).head<2>(); });
+    picture->balls.push_back(ball);
+  }
+}
+
 void DrawTable(const TablePicture& pic, const std::string& path) {
   const int width = static_cast<int>(std::ceil(2 * kMarginPx + kPixelsPerMetre * pic.table.length));
   const int height = static_cast<int>(std::ceil(2 * kMarginPx + kPixelsPerMetre * pic.table.width));
@@ -188,6 +232,18 @@ void DrawTable(const TablePicture& pic, const std::string& path) {
       k == 0 ? cairo_move_to(cr, p.x(), p.y()) : cairo_line_to(cr, p.x(), p.y());
     }
     cairo_stroke(cr);
+  }
+  constexpr double kDotPx = 2.2;
+  for (const TrackedDots& dots : pic.tracked) {
+    for (const Vector2d& sample : dots.samples) {
+      const Vector2d p = TablePixel(pic, sample);
+      cairo_arc(cr, p.x(), p.y(), kDotPx, 0, 2 * M_PI);
+      Source(cr, BallColour(dots.id));
+      cairo_fill_preserve(cr);
+      cairo_set_source_rgb(cr, 0, 0, 0);
+      cairo_set_line_width(cr, 0.6);
+      cairo_stroke(cr);
+    }
   }
   if (pic.target) {
     const Vector2d t = TablePixel(pic, *pic.target);

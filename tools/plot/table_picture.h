@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,13 @@ struct PictureBall {
   std::optional<std::string> pocket;  // dropped into it: no ball at the path's end
 };
 
+// Where a camera saw a ball: dots in its colour over the paths (a tracked shot against its
+// simulation).
+struct TrackedDots {
+  int id = 0;
+  std::vector<Eigen::Vector2d> samples;
+};
+
 struct PictureEvent {
   table::EventType type;
   Eigen::Vector2d at;  // a ball-ball contact's point, else the ball's centre
@@ -41,12 +49,25 @@ struct TablePicture {
   std::string title;
   std::vector<PictureBall> balls;
   std::vector<PictureEvent> events;
+  std::vector<TrackedDots> tracked;
   std::optional<physics::CueStroke> cue;  // the stroke at ball 0's start, drawn as the cue
   std::optional<Eigen::Vector2d> target;  // a plan's target
 };
 
 // The pixel of a table point in the picture's frame (above).
 Eigen::Vector2d TablePixel(const TablePicture& picture, const Eigen::Vector2d& p);
+
+// Fine enough that a path's polyline bends smoothly at 400 px a metre: 5 ms is 3.5 cm at 7 m/s.
+inline constexpr double kPathSampleDt = 5e-3;
+
+// position(t) at t = 0, dt, ... below t_end, at each time of `at` up to t_end (every event's
+// position a vertex) and at t_end.
+std::vector<Eigen::Vector2d> SampledPath(double t_end, double dt, const std::vector<double>& at,
+                                         const std::function<Eigen::Vector2d(double)>& position);
+
+// Adds what `sim` ran to `picture`: each ball (its id, its launch, its path sampled every `dt`
+// up to the end or its drop) and each event's mark.
+void AddSimulation(const table::TableSimulation& sim, double dt, TablePicture* picture);
 
 // Draws `picture` into `path` (.png or .svg). Throws std::invalid_argument for another
 // extension, std::runtime_error when the file cannot be written.
