@@ -43,6 +43,14 @@ void RequireFinite(double value, const std::string& what) {
   if (!std::isfinite(value)) throw UsageError(what + ": numbers must be finite (no NaN or inf)");
 }
 
+nlohmann::json CueStrokeJson(const physics::CueStroke& stroke) {
+  return {{"speed", stroke.speed},
+          {"heading", stroke.heading},
+          {"tip_side", stroke.tip_side},
+          {"tip_height", stroke.tip_height},
+          {"elevation", stroke.elevation}};
+}
+
 void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j) {
   (*j)["params"] = p.name;
   if (!p.file.empty()) (*j)["params_file"] = p.file;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sim/physics/ball_state.h"
+#include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
 
 namespace billiard::cli {
@@ -39,6 +40,10 @@ void RequireFinite(double value, const std::string& what);
 
 // "params": the set's name, and "params_file": the file it came from (when not built in).
 void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j);
+
+// A cue stroke as `plan` and `plan-pot` print it: {"speed", "heading", "tip_side", "tip_height",
+// "elevation"}, the object a scene's "cue" reads.
+nlohmann::json CueStrokeJson(const physics::CueStroke& stroke);
 
 // Makes the directory `dir` of an option (as the report writers would) and checks that files can
 // be made in it; UsageError naming `option` if not. Called before a run of minutes, so that a

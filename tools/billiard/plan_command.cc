@@ -28,11 +28,7 @@ nlohmann::json PlanJson(const planner::ShotPlan& plan, const physics::ModelParam
   nlohmann::json j;
   j["v0"] = {plan.v0.x(), plan.v0.y()};
   j["w0"] = {plan.w0.x(), plan.w0.y(), plan.w0.z()};
-  j["cue"] = {{"speed", plan.stroke.speed},
-              {"heading", plan.stroke.heading},
-              {"tip_side", plan.stroke.tip_side},
-              {"tip_height", plan.stroke.tip_height},
-              {"elevation", plan.stroke.elevation}};
+  j["cue"] = CueStrokeJson(plan.stroke);
   j["predicted_final"] = {plan.predicted_final.x(), plan.predicted_final.y()};
   j["closed_form_miss_m"] = plan.closed_form_miss_m;
   j["refined_miss_m"] = plan.refined_miss_m;

@@ -118,11 +118,7 @@ nlohmann::json PotPlanJson(const pot::PotPlan& plan) {
   if (plan.rail >= 0) j["rail"] = plan.rail;
   j["v0"] = Point(plan.v0);
   j["w0"] = {plan.w0.x(), plan.w0.y(), plan.w0.z()};
-  j["cue"] = {{"speed", plan.stroke.speed},
-              {"heading", plan.stroke.heading},
-              {"tip_side", plan.stroke.tip_side},
-              {"tip_height", plan.stroke.tip_height},
-              {"elevation", plan.stroke.elevation}};
+  j["cue"] = CueStrokeJson(plan.stroke);
   j["cut_deg"] = plan.cut_deg;
   j["departure"] = plan.departure;
   j["margin_deg"] = {plan.margin_left_deg, plan.margin_right_deg};
