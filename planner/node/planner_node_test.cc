@@ -621,10 +621,7 @@ TEST_F(PlannerNodePotTest, ThePotPlannersRefusalsGoOutWithTheirStatus) {
 TEST_F(PlannerNodePotTest, TouchingBallsSeenOverlappingAreSettledApart) {
   const double r = params_.ball.radius;
   const Eigen::Vector2d k(0.6, 0.3);
-  Eigen::Vector2d mouth = Eigen::Vector2d::Zero();
-  for (const table::Pocket& p : table_.pockets) {
-    if (p.name == "lower_left") mouth = p.centre;
-  }
+  const Eigen::Vector2d mouth = table_.PocketNamed("lower_left")->centre;
   const Eigen::Vector2d along = (mouth - k).normalized();
   const Eigen::Vector2d beside = k + (2 * r - 5e-4) * Eigen::Vector2d(-along.y(), along.x());
   PublishTable({Classed(kCueTrack, 1.0, 0.45, ball_state_t::CLASS_CUE, 0.9f),

@@ -1171,9 +1171,7 @@ std::optional<Refusal> CheckRequest(const table::TableGeometry& table,
   if (!has(request.ball)) {
     return Refusal{PotStatus::kNoSuchBall, "there is no ball " + std::to_string(request.ball) + " on the table"};
   }
-  const bool pocket_known = std::any_of(table.pockets.begin(), table.pockets.end(),
-                                        [&](const table::Pocket& p) { return p.name == request.pocket; });
-  if (!pocket_known) {
+  if (!table.PocketNamed(request.pocket)) {
     std::string names;
     for (const table::Pocket& p : table.pockets) names += (names.empty() ? "" : ", ") + p.name;
     return Refusal{PotStatus::kNoSuchPocket, "no pocket '" + request.pocket + "' on " + table.name +
@@ -1235,8 +1233,7 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
     plan.reason = bad->reason;
     return finish(plan, 0);
   }
-  const table::Pocket& pocket = *std::find_if(table.pockets.begin(), table.pockets.end(),
-                                              [&](const table::Pocket& p) { return p.name == request.pocket; });
+  const table::Pocket& pocket = *table.PocketNamed(request.pocket);
   PotSearch search(table, params, settled, request.ball, pocket, options, request.cue_target);
 
   std::vector<ShotKind> kinds = {ShotKind::kDirect, ShotKind::kBank, ShotKind::kKick, ShotKind::kCurve};
@@ -1334,9 +1331,8 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
 namespace {
 
 const table::Pocket& PocketOf(const table::TableGeometry& table, const std::string& name) {
-  const auto p = std::find_if(table.pockets.begin(), table.pockets.end(),
-                              [&](const table::Pocket& x) { return x.name == name; });
-  if (p == table.pockets.end()) throw std::invalid_argument("no pocket '" + name + "'");
+  const table::Pocket* p = table.PocketNamed(name);
+  if (!p) throw std::invalid_argument("no pocket '" + name + "'");
   return *p;
 }
 

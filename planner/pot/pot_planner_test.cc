@@ -91,13 +91,6 @@ class PotPlannerTest : public ::testing::Test {
   physics::ModelParameters params_;
 };
 
-const table::Pocket& PocketNamed(const table::TableGeometry& t, const std::string& name) {
-  for (const table::Pocket& p : t.pockets) {
-    if (p.name == name) return p;
-  }
-  throw std::invalid_argument(name);
-}
-
 TEST_F(PotPlannerTest, ADirectCutPotsWhenItsLaunchIsSimulated) {
   const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)};
   for (const char* pocket : {"upper_right", "lower_right", "upper_middle_not"}) {
@@ -120,7 +113,7 @@ TEST_F(PotPlannerTest, ADirectCutPotsWhenItsLaunchIsSimulated) {
 // A straight-in shot along the corner pocket's diagonal: the table, the jaws and the balls are
 // symmetric about that line, so the aim is along it and the margin the same either side.
 TEST_F(PotPlannerTest, AStraightInShotAlongTheDiagonalAimsAlongItWithAnEvenMargin) {
-  const Eigen::Vector2d corner = PocketNamed(table_, "lower_left").centre;
+  const Eigen::Vector2d corner = table_.PocketNamed("lower_left")->centre;
   const Eigen::Vector2d along = Eigen::Vector2d(1.0, 1.0).normalized();
   const Eigen::Vector2d k = corner + 0.6 * along, cue = corner + 1.2 * along;
   const std::vector<SceneBall> balls = {Ball(0, cue.x(), cue.y()), Ball(3, k.x(), k.y())};

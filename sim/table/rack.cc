@@ -13,8 +13,6 @@ namespace {
 
 using Eigen::Vector2d;
 
-constexpr double kPi = 3.14159265358979323846;
-
 // WPBSA Official Rules of Snooker, section 1 (The Standard Table).
 constexpr double kBaulkLine = 0.737;  // from the face of the bottom cushion [m]
 constexpr double kDRadius = 0.292;    // the D's radius [m]

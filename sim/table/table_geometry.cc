@@ -153,6 +153,13 @@ void ValidatePocket(const TableSpec::PocketSpec& p, const std::string& table, co
 
 }  // namespace
 
+const Pocket* TableGeometry::PocketNamed(const std::string& name) const {
+  for (const Pocket& pocket : pockets) {
+    if (pocket.name == name) return &pocket;
+  }
+  return nullptr;
+}
+
 bool TableGeometry::OnSurface(const Vector2d& p, double radius) const {
   if (!InsideBoundary(p, radius)) return false;
   for (const Pocket& pocket : pockets) {

@@ -99,6 +99,8 @@ struct TableGeometry {
   // hangs over the pocket: a still ball there would never reach the capture line, and a real
   // one would drop.
   bool OnSurface(const Eigen::Vector2d& p, double radius) const;
+  // The pocket called `name`, or nullptr.
+  const Pocket* PocketNamed(const std::string& name) const;
 };
 
 // The geometry of `spec`: 6 rail cushions for pool and snooker (the long ones split by the side

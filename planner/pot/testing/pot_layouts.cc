@@ -46,8 +46,7 @@ bool StraightLineClear(const table::TableGeometry& table, double radius,
     if (b.id == 0) cue = b.state.head<2>();
     if (b.id == object) k = b.state.head<2>();
   }
-  const auto p = std::find_if(table.pockets.begin(), table.pockets.end(),
-                              [&](const table::Pocket& x) { return x.name == pocket; });
+  const table::Pocket* p = table.PocketNamed(pocket);
   const Eigen::Vector2d departure = (p->centre - k).normalized();
   const Eigen::Vector2d ghost = GhostBall(k, departure, radius);
   if (CutAngle((ghost - cue).normalized(), departure) > max_cut_deg * M_PI / 180.0) return false;
