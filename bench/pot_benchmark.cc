@@ -126,7 +126,8 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
     run.table = t.name;
     run.balls = static_cast<int>(layout.balls.size());
     run.straight_clear = pot::testing::StraightLineClear(t.geometry, t.p.ball.radius, layout.balls,
-                                                         layout.request.ball, layout.request.pocket, 80.0);
+                                                         layout.request.ball, layout.request.pocket,
+                                                         pot::testing::kClearCutDeg);
     const double cpu_start = ThreadCpuUs();
     run.plan = pot::PlanPot(t.geometry, t.p, layout.balls, layout.request);
     run.cpu_us = ThreadCpuUs() - cpu_start;

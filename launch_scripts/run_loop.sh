@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off] [--scene break|FILE]
+# usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off]
+#                                   [--scene break|seeded|FILE]
 #                                   [--pot K:P ...] [--params NAME|FILE] [--log FILE]
 #                                   [--log-frames all|none]
 #                                   [--lockstep | --realtime] [--view] [--view-port PORT]
@@ -12,10 +13,14 @@
 #   --seed S               seed of the targets and of the noise, two streams of their own
 #                          (default 1): the noise leaves the targets as they were
 #   --noise on|off         the robot's execution noise (default off)
-#   --scene break|FILE     one whole-table shot instead: the eight-ball rack of --seed (break) or
+#   --scene break|seeded|FILE
+#                          one whole-table shot instead: the eight-ball rack of --seed (break) or
 #                          a scene file at rest, the cue ball rolled into the ball nearest it;
-#                          prints how the estimator tracked every ball (error, swaps)
-#   --pot K:P              with --scene FILE: pot ball K (the scene's id) in pocket P
+#                          prints how the estimator tracked every ball (error, swaps). seeded:
+#                          the pot of bench-pot's first layout from --seed x 1000 whose line
+#                          is clear with a cut below 60 deg (billiard pot-layout --clear
+#                          --max-cut 60), played as --pot plays it
+#   --pot K:P              with --scene FILE or seeded: pot ball K (the scene's id) in pocket P
 #                          (lower_left, lower_middle, lower_right, upper_left, upper_middle,
 #                          upper_right) instead: planned by planner_node from the estimator's
 #                          view, executed with the robot's noise; prints whether K dropped in P
@@ -61,7 +66,10 @@ while [ $# -gt 0 ]; do
     --seed) need_number 0 "$@"; seed=$2; shift 2 ;;
     --noise) need_value "$@"; noise=$2; shift 2 ;;
     # A scene file, like --log, is the caller's path; "break" is a name.
-    --scene) need_value "$@"; scene=$2; [ "$scene" = break ] || scene=$(realpath -m -- "$2"); shift 2 ;;
+    --scene)
+      need_value "$@"; scene=$2
+      case "$scene" in break | seeded) ;; *) scene=$(realpath -m -- "$2") ;; esac
+      shift 2 ;;
     --pot) need_value "$@"; pots+=(--pot "$2"); shift 2 ;;
     # Before the cd to the repository below: a relative path is the caller's.
     --log) need_value "$@"; log=$(realpath -m -- "$2"); shift 2 ;;
@@ -91,7 +99,7 @@ case "$log_frames" in
   *) usage_error "--log-frames must be all or none, not '$log_frames'" ;;
 esac
 if [ ${#pots[@]} -gt 0 ] && { [ -z "$scene" ] || [ "$scene" = break ]; }; then
-  usage_error "--pot needs --scene FILE"
+  usage_error "--pot needs --scene FILE or --scene seeded"
 fi
 # A log that cannot be written is said before anything is built or started: opened for appending
 # (an existing file keeps its bytes until the logger starts), and a new one removed again.
@@ -146,9 +154,21 @@ cleanup() {
   for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
   [ -n "${VIEW_FORWARDER:-}" ] && kill -TERM "$VIEW_FORWARDER" 2>/dev/null
   wait 2>/dev/null || true
-  rm -f "$summary_file" "$logger_err" "${VIEW_SOCKET:-}"
+  rm -f "$summary_file" "$logger_err" "${VIEW_SOCKET:-}" "${layout_file:-}"
 }
 trap cleanup EXIT
+
+# A seeded layout becomes a scene file, and its pot the one played unless --pot names others.
+if [ "$scene" = seeded ]; then
+  layout_file=$(mktemp --suffix=.json)
+  # Cuts below 60 deg: the pots a player calls makeable, whose margins the robot's noise leaves.
+  layout=$("$bin_dir/billiard" pot-layout --seed "$seed" --clear --max-cut 60 --params "$params" \
+             --out "$layout_file" --json) || exit 1
+  scene=$layout_file
+  if [ ${#pots[@]} -eq 0 ]; then
+    pots=(--pot "$(python3 -c 'import json, sys; j = json.loads(sys.argv[1]); print(j["ball"], j["pocket"], sep=":")' "$layout")")
+  fi
+fi
 
 if [ -n "$log" ]; then
   without_frames=()

@@ -167,6 +167,20 @@ TEST(ClosedLoop, PotsOnCommittedScenesDropThroughAllThreeNodesWithTheRobotsNoise
   EXPECT_LT(quiet[0]["cue_rest_error_m"].get<double>(), 0.03) << quiet[0];
 }
 
+// Seeded layouts (billiard pot-layout --clear --max-cut 60, one per seed, not picked by hand):
+// each pot as planned from the estimator's view drops, without the noise, through the three nodes.
+TEST(ClosedLoop, PotsOnSeededLayoutsDropThroughAllThreeNodes) {
+  for (int seed = 1; seed <= 3; ++seed) {
+    const nlohmann::json s = RunLoop("--scene seeded --noise off --seed " + std::to_string(seed));
+    ASSERT_TRUE(s.is_object()) << seed;
+    const nlohmann::json& pots = s["scene"]["pots"];
+    ASSERT_EQ(pots.size(), 1u) << seed;
+    EXPECT_EQ(pots[0]["status"], "ok") << seed << ": " << pots[0];
+    EXPECT_TRUE(pots[0]["potted"].get<bool>()) << seed << ": " << pots[0];
+    EXPECT_FALSE(pots[0]["scratch"].get<bool>()) << pots[0];
+  }
+}
+
 // `billiard loop` (the three nodes in one process, what run_loop.sh falls back to without
 // multicast) plays the same pot to the same bits: its planner pots on the scene's table too.
 TEST(ClosedLoop, APotInOneProcessIsThePotOfThreeProcesses) {

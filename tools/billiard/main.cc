@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddPlotCommand(app);
   billiard::cli::AddPlanPotCommand(app);
   billiard::cli::AddBenchPotCommand(app);
+  billiard::cli::AddPotLayoutCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

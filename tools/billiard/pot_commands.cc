@@ -2,10 +2,12 @@
 
 #include <fstream>
 #include <iostream>
+#include <cstdint>
 #include <memory>
 #include <string>
 
 #include "bench/pot_benchmark.h"
+#include "planner/pot/testing/pot_layouts.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/scene_file.h"
 #include "tools/billiard/command_line.h"
@@ -155,6 +157,76 @@ void AddPlanPotCommand(CLI::App& app) {
                   "Write the scene with the cue ball launched as planned (for simulate --scene, plot --scene)");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args, radius] { RunPlanPot(*args, radius->count() > 0); });
+}
+
+void AddPotLayoutCommand(CLI::App& app) {
+  struct Args {
+    std::uint64_t seed = 1;
+    std::string table = "pool-9ft";
+    std::string params = "pool";
+    bool clear = false;
+    double max_cut_deg = pot::testing::kClearCutDeg;
+    std::string out;
+    bool json = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "pot-layout", "A seeded layout of balls at rest and a pot to ask of it: bench-pot's layouts, "
+                    "as a scene file for simulate --scene, plan-pot and run_loop.sh");
+  cmd->add_option("--seed", args->seed, "The layout's seed")->capture_default_str();
+  cmd->add_option("--table", args->table, "A table specification, built in or a file")->capture_default_str();
+  cmd->add_option("--params", args->params, "The scene's parameter set (its ball radius places the balls)")
+      ->capture_default_str();
+  cmd->add_flag("--clear", args->clear,
+                "The first layout from seed --seed x 1000 on whose pot the straight ghost-ball line is clear "
+                "(bench-pot's coverage test: no ball across either line, the pocket's jaws not "
+                "across K's, a cut below --max-cut)");
+  cmd->add_option("--max-cut", args->max_cut_deg, "With --clear: the largest cut [deg]")
+      ->capture_default_str()->check(CLI::Range(0.0, 90.0));
+  cmd->add_option("--out", args->out, "Write the scene here (default: only in the JSON)");
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
+  cmd->callback([args] {
+    const table::TableGeometry geometry = LoadTableOption(args->table);
+    const physics::ModelParameters params = LoadParametersOption(args->params);
+    const double radius = params.ball.radius;
+    pot::testing::PotLayout layout;
+    bool clear = false;
+    // A clear line turns up in about one layout in five (docs/benchmarks/pot_report.md).
+    constexpr std::uint64_t kClearTries = 1000;
+    // Each seed searches layouts of its own (seed x kClearTries onwards), so that seeds in a row
+    // give different layouts.
+    const std::uint64_t first = args->clear ? args->seed * kClearTries : args->seed;
+    for (std::uint64_t i = 0; i < (args->clear ? kClearTries : 1) && !clear; ++i) {
+      layout = pot::testing::SeededPotLayout(geometry, radius, first + i);
+      clear = pot::testing::StraightLineClear(geometry, radius, layout.balls, layout.request.ball,
+                                              layout.request.pocket, args->max_cut_deg);
+    }
+    if (args->clear && !clear) {
+      throw Refused("no layout in " + std::to_string(kClearTries) + " from seed " +
+                    std::to_string(args->seed) + " has a clear straight line on " + geometry.name);
+    }
+    params::SceneFile scene;
+    scene.table = args->table;
+    scene.params = args->params;
+    scene.balls = layout.balls;
+    if (!args->out.empty()) {
+      std::ofstream out(args->out);
+      if (!(out << params::SceneJson(scene) << "\n")) throw UsageError("--out: cannot write '" + args->out + "'");
+    }
+    std::cerr << "pot-layout: seed " << layout.seed << ", " << layout.balls.size() << " balls on "
+              << geometry.name << "; pot ball " << layout.request.ball << " in "
+              << layout.request.pocket << (clear ? " (the straight line is clear)" : "") << "\n";
+    if (args->json) {
+      nlohmann::json j;
+      j["seed"] = layout.seed;
+      j["ball"] = layout.request.ball;
+      j["pocket"] = layout.request.pocket;
+      j["straight_line_clear"] = clear;
+      j["scene"] = nlohmann::json::parse(params::SceneJson(scene));
+      if (!args->out.empty()) j["out"] = args->out;
+      std::cout << j.dump() << std::endl;
+    }
+  });
 }
 
 void AddBenchPotCommand(CLI::App& app) {

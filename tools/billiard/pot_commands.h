@@ -1,6 +1,6 @@
 // The potting subcommands: `billiard plan-pot` (the stroke that pots a ball, planned against the
-// whole-table simulation) and `billiard bench-pot` (its truth, coverage, margin, throw, position
-// and speed on seeded layouts).
+// whole-table simulation), `billiard bench-pot` (its truth, coverage, margin, throw, position
+// and speed on seeded layouts) and `billiard pot-layout` (those layouts as scene files).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -15,5 +15,7 @@ nlohmann::json PotPlanJson(const pot::PotPlan& plan);
 
 void AddPlanPotCommand(CLI::App& app);
 void AddBenchPotCommand(CLI::App& app);
+// `billiard pot-layout`: bench-pot's seeded layouts as scene files (run_loop.sh --scene seeded).
+void AddPotLayoutCommand(CLI::App& app);
 
 }  // namespace billiard::cli

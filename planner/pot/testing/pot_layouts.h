@@ -29,6 +29,10 @@ PotLayout SeededPotLayout(const table::TableGeometry& table, double radius, std:
 // Whether the straight ghost-ball shot is clear: no ball within a ball's width of the cue ball's
 // line to the ghost ball or of K's line to the pocket's mouth, that line clear of the pocket's
 // own jaws (its rounded noses), and a cut below `max_cut_deg`.
+// The cut beyond which bench-pot's coverage does not count a line as clear: past it the object
+// ball takes a sliver of the cue ball's speed, and a pot is a matter of throw and luck.
+inline constexpr double kClearCutDeg = 80.0;
+
 bool StraightLineClear(const table::TableGeometry& table, double radius,
                        const std::vector<table::SceneBall>& balls, int object,
                        const std::string& pocket, double max_cut_deg);
