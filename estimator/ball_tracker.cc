@@ -124,13 +124,22 @@ void BallTracker::Correct(TrackedBall& t, const Eigen::Vector2d& measured) const
     return innovation.dot(s.ldlt().solve(innovation));
   };
   if (chi2() > options_.maneuver_chi2) {
-    // A phase change (strike, end of sliding, stop): open the velocity as far as the jump needs
-    // and the acceleration to the sliding friction.
+    // A phase change (strike, collision, cushion, end of sliding, stop): a velocity jump as large
+    // as the innovation needs, taken at the last sighting, moves the ball by that jump times the
+    // time since, so the position and velocity open together (position with its jump's full
+    // correlation): the measurement moves the position all the way and the velocity to what
+    // carried the ball there. Opening the velocity alone left a long-still ball's tight position
+    // to move by a fraction of the jump (a racked ball 25 mm behind itself after the break).
+    // The acceleration opens to the sliding friction.
     const double dt = std::max(t.time - t.last_seen, 1e-3);
+    const double jump = innovation.squaredNorm() / (dt * dt);  // velocity variance [m^2/s^2]
     const double mu_g = params_.contact.mu * params_.ball.gravity;
-    t.covariance.block<2, 2>(2, 2) +=
-        (innovation.squaredNorm() / (dt * dt)) * Eigen::Matrix2d::Identity();
-    t.covariance.block<2, 2>(4, 4) += mu_g * mu_g * Eigen::Matrix2d::Identity();
+    const Eigen::Matrix2d i2 = Eigen::Matrix2d::Identity();
+    t.covariance.block<2, 2>(0, 0) += jump * dt * dt * i2;
+    t.covariance.block<2, 2>(0, 2) += jump * dt * i2;
+    t.covariance.block<2, 2>(2, 0) += jump * dt * i2;
+    t.covariance.block<2, 2>(2, 2) += jump * i2;
+    t.covariance.block<2, 2>(4, 4) += mu_g * mu_g * i2;
   }
   const Eigen::Matrix2d s = t.covariance.topLeftCorner<2, 2>() + r2 * Eigen::Matrix2d::Identity();
   const Eigen::Matrix<double, 6, 2> gain =
