@@ -123,22 +123,27 @@ void BallTracker::Correct(TrackedBall& t, const Eigen::Vector2d& measured) const
     const Eigen::Matrix2d s = t.covariance.topLeftCorner<2, 2>() + r2 * Eigen::Matrix2d::Identity();
     return innovation.dot(s.ldlt().solve(innovation));
   };
-  if (chi2() > options_.maneuver_chi2) {
-    // A phase change (strike, collision, cushion, end of sliding, stop): a velocity jump as large
-    // as the innovation needs, taken at the last sighting, moves the ball by that jump times the
-    // time since, so the position and velocity open together (position with its jump's full
-    // correlation): the measurement moves the position all the way and the velocity to what
-    // carried the ball there. Opening the velocity alone left a long-still ball's tight position
-    // to move by a fraction of the jump (a racked ball 25 mm behind itself after the break).
-    // The acceleration opens to the sliding friction.
+  const double surprise = chi2();
+  if (surprise > options_.maneuver_chi2) {
+    // A phase change: the acceleration opens to the sliding friction, and the velocity as far as
+    // the innovation needs. A gradual one (the end of sliding, a stop) is then learnt over the
+    // next frames. A jump (a strike, a collision, a cushion: beyond jump_chi2) has moved the ball
+    // by the velocity's change times the time since it was last seen, so the position opens with
+    // the velocity, fully correlated: the ball is where it is seen, moving as fast as it had to
+    // go there. Opening the velocity alone left a long-still ball's tight position to follow by
+    // a fraction of the jump (a racked ball 25 mm behind itself after the break at 30 Hz); the
+    // jump's model for every maneuver would take a false alarm's noise over a 120 Hz frame for a
+    // change of 0.2 m/s.
     const double dt = std::max(t.time - t.last_seen, 1e-3);
-    const double jump = innovation.squaredNorm() / (dt * dt);  // velocity variance [m^2/s^2]
     const double mu_g = params_.contact.mu * params_.ball.gravity;
+    const double change = innovation.squaredNorm() / (dt * dt);  // velocity variance [m^2/s^2]
     const Eigen::Matrix2d i2 = Eigen::Matrix2d::Identity();
-    t.covariance.block<2, 2>(0, 0) += jump * dt * dt * i2;
-    t.covariance.block<2, 2>(0, 2) += jump * dt * i2;
-    t.covariance.block<2, 2>(2, 0) += jump * dt * i2;
-    t.covariance.block<2, 2>(2, 2) += jump * i2;
+    if (surprise > options_.jump_chi2) {
+      t.covariance.block<2, 2>(0, 0) += change * dt * dt * i2;
+      t.covariance.block<2, 2>(0, 2) += change * dt * i2;
+      t.covariance.block<2, 2>(2, 0) += change * dt * i2;
+    }
+    t.covariance.block<2, 2>(2, 2) += change * i2;
     t.covariance.block<2, 2>(4, 4) += mu_g * mu_g * i2;
   }
   const Eigen::Matrix2d s = t.covariance.topLeftCorner<2, 2>() + r2 * Eigen::Matrix2d::Identity();
@@ -209,7 +214,9 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
     t.covariance = Matrix6::Zero();
     t.covariance.diagonal() << r2, r2, 1.0, 1.0, mu_g * mu_g, mu_g * mu_g;
     t.hits = 1;
-    t.confirmed = options_.hits_to_confirm <= 1;
+    // A sure ball is published from its first frame: the hits guard against what flickers
+    // (a highlight, a cue tip), not against a ball the detector has no doubt about.
+    t.confirmed = options_.hits_to_confirm <= 1 || class_of(j).score >= options_.sure_score;
     AddClassEvidence(class_of(j), &t);
     tracks_.push_back(t);
   }

@@ -32,19 +32,23 @@ namespace billiard::estimator {
 inline constexpr double kUnobservedSpinVariance = 1e6;  // [(rad/s)^2]
 inline constexpr double kClassMismatchRadii = 1.0;
 
-// What a detection says of which ball it is (ball_identity.h).
+// What a detection says of which ball it is (ball_identity.h), and how sure the detector is that
+// it is a ball at all (BallDetection::score; 0 when not given).
 struct ClassEvidence {
   BallClass ball_class = BallClass::kUnknown;
   double confidence = 0;
+  double score = 0;
 };
 
 struct TrackerOptions {
   double measurement_sigma = 0.5e-3;  // detector's position noise on the table [m]
   double max_speed = 8.0;             // fastest ball, for the association gate [m/s]
   double min_gate = 0.01;             // association gate for a ball at rest [m]
-  int hits_to_confirm = 3;            // detections before a track is published
+  int hits_to_confirm = 3;            // detections before a track is published, unless
+  double sure_score = 0.8;            // its first detection scores this (published at once)
   double max_coast = 0.3;             // a track unseen for longer is dropped [s]
   double maneuver_chi2 = 13.8;        // innovation test (2 dof, 0.1 %) that opens the acceleration
+  double jump_chi2 = 100.0;           // and beyond it (10 sigma) a jump: the position opens too
   // Jerk noise density [m^2/s^5]: a rolling ball's acceleration, 5/7 mu_r g against v, only
   // turns with v, and a ball at rest has none; the phase changes are left to the maneuver test.
   double jerk_density = 0.005;
