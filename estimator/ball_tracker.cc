@@ -111,9 +111,38 @@ void BallTracker::Advance(TrackedBall& t, double time) const {
     s.head<2>() = t.state.head<2>() + v0 * stop + 0.5 * a * stop * stop;
     s.tail<4>().setZero();
   }
-  t.state = s;
   t.covariance = f * t.covariance * f.transpose() + q;
+  BounceOffTheCushions(t.state, &s, &t.covariance);
+  t.state = s;
   t.time = time;
+}
+
+void BallTracker::BounceOffTheCushions(const Eigen::Matrix<double, 6, 1>& before,
+                                       Eigen::Matrix<double, 6, 1>* after,
+                                       Eigen::Matrix<double, 6, 6>* covariance) const {
+  const double r = params_.ball.radius, e = params_.collision.cushion_restitution;
+  const double size[2] = {params_.table.length, params_.table.width};
+  for (int k = 0; k < 2; ++k) {
+    const double lo = r, hi = size[k] - r;
+    Vector6& x = *after;
+    double limit;
+    if (x[k] < lo && before[k] >= lo && x[k + 2] < 0) {
+      limit = lo;
+    } else if (x[k] > hi && before[k] <= hi && x[k + 2] > 0) {
+      limit = hi;
+    } else {
+      continue;
+    }
+    // Mirrored at the nose, the part of the path past it shortened by the restitution; the
+    // acceleration (friction against the motion) turns with the velocity.
+    x[k] = limit + e * (limit - x[k]);
+    x[k + 2] *= -e;
+    x[k + 4] *= -1.0;
+    Vector6 j = Vector6::Ones();
+    j[k] = j[k + 2] = -e;
+    j[k + 4] = -1.0;
+    *covariance = j.asDiagonal() * *covariance * j.asDiagonal();
+  }
 }
 
 void BallTracker::Correct(TrackedBall& t, const Eigen::Vector2d& measured) const {

@@ -8,7 +8,10 @@
 //  - the jerk noise is that of rolling, and a maneuver test (the innovation's chi-square) opens
 //    the acceleration to mu g when the phase changes (the cue strike, the end of sliding, a stop);
 //  - a ball never reverses by friction: a prediction that would turn the velocity back stops the
-//    ball instead, which is how a rolling ball ends.
+//    ball instead, which is how a rolling ball ends;
+//  - a prediction that would take the ball past a cushion's nose comes back off the cushion
+//    (mirrored, the cushion's normal restitution), so that a ball refined near its prediction is
+//    looked for where it bounced to, not in the rail.
 // Association: the minimum-cost assignment (assignment.h) of detections to predicted positions,
 // gated by how far the fastest ball moves in a frame, so that a ball struck next to others keeps
 // its identity and balls passing close do not swap. A detection whose class (ball_identity.h)
@@ -91,6 +94,11 @@ class BallTracker {
 
  private:
   void Advance(TrackedBall& track, double time) const;
+  // A prediction from `before` that crossed a cushion's nose (the ball's centre a radius from
+  // the playing surface's edge) comes back off it with the cushion's restitution.
+  void BounceOffTheCushions(const Eigen::Matrix<double, 6, 1>& before,
+                            Eigen::Matrix<double, 6, 1>* after,
+                            Eigen::Matrix<double, 6, 6>* covariance) const;
   void Correct(TrackedBall& track, const Eigen::Vector2d& measured) const;
 
   physics::ModelParameters params_;
