@@ -14,6 +14,18 @@ DetectorOptions ForTheBalls(DetectorOptions options, const camera::CameraModel& 
   return options;
 }
 
+// A ball's centre lies at least its radius inside the cushions' noses; a refinement further out
+// than kCushionSlack radii (the detector's noise is a fiftieth of a radius) has outlined the
+// cushion's edge beside a ball that bounced off it, where the prediction still went on into the
+// rail: the frame gets a full detection instead.
+constexpr double kCushionSlack = 0.1;
+
+bool InsideTheCushions(const Eigen::Vector2d& x, const physics::ModelParameters& params) {
+  const double margin = (1.0 - kCushionSlack) * params.ball.radius;
+  return x.x() >= margin && x.x() <= params.table.length - margin && x.y() >= margin &&
+         x.y() <= params.table.width - margin;
+}
+
 }  // namespace
 
 BallEstimator::BallEstimator(const camera::CameraModel& camera,
@@ -43,13 +55,13 @@ bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats
     for (const Eigen::Vector2d& predicted : tracker_.Predict(time)) {
       const auto found = detector_.RefineAt(
           frame, camera_.Project({predicted.x(), predicted.y(), params_.ball.radius}), radius_px);
-      if (!found) {
+      const Eigen::Vector2d x = found ? ToTable(found->pixel) : Eigen::Vector2d::Zero();
+      if (!found || !InsideTheCushions(x, params_)) {
         full = true;
         break;
       }
       // Two tracks on one ball (a tentative one beside a confirmed one) refine to the same
       // pixel: one measurement, or the copy would seed yet another track.
-      const Eigen::Vector2d x = ToTable(found->pixel);
       bool seen = false;
       for (const Eigen::Vector2d& y : measured) seen = seen || (x - y).norm() < params_.ball.radius;
       if (!seen) measured.push_back(x);
@@ -64,7 +76,7 @@ bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats
     }
     for (const BallDetection& d : detector_.Detect(frame)) {
       measured.push_back(ToTable(d.pixel));
-      classes.push_back({d.ball_class, d.class_confidence});
+      classes.push_back({d.ball_class, d.class_confidence, d.score});
     }
   }
   tracker_.Update(time, measured, classes);

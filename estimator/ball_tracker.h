@@ -8,7 +8,10 @@
 //  - the jerk noise is that of rolling, and a maneuver test (the innovation's chi-square) opens
 //    the acceleration to mu g when the phase changes (the cue strike, the end of sliding, a stop);
 //  - a ball never reverses by friction: a prediction that would turn the velocity back stops the
-//    ball instead, which is how a rolling ball ends.
+//    ball instead, which is how a rolling ball ends;
+//  - a prediction that would take the ball past a cushion's nose comes back off the cushion
+//    (mirrored, the cushion's normal restitution), so that a ball refined near its prediction is
+//    looked for where it bounced to, not in the rail.
 // Association: the minimum-cost assignment (assignment.h) of detections to predicted positions,
 // gated by how far the fastest ball moves in a frame, so that a ball struck next to others keeps
 // its identity and balls passing close do not swap. A detection whose class (ball_identity.h)
@@ -32,19 +35,23 @@ namespace billiard::estimator {
 inline constexpr double kUnobservedSpinVariance = 1e6;  // [(rad/s)^2]
 inline constexpr double kClassMismatchRadii = 1.0;
 
-// What a detection says of which ball it is (ball_identity.h).
+// What a detection says of which ball it is (ball_identity.h), and how sure the detector is that
+// it is a ball at all (BallDetection::score; 0 when not given).
 struct ClassEvidence {
   BallClass ball_class = BallClass::kUnknown;
   double confidence = 0;
+  double score = 0;
 };
 
 struct TrackerOptions {
   double measurement_sigma = 0.5e-3;  // detector's position noise on the table [m]
   double max_speed = 8.0;             // fastest ball, for the association gate [m/s]
   double min_gate = 0.01;             // association gate for a ball at rest [m]
-  int hits_to_confirm = 3;            // detections before a track is published
+  int hits_to_confirm = 3;            // detections before a track is published, unless
+  double sure_score = 0.8;            // its first detection scores this (published at once)
   double max_coast = 0.3;             // a track unseen for longer is dropped [s]
   double maneuver_chi2 = 13.8;        // innovation test (2 dof, 0.1 %) that opens the acceleration
+  double jump_chi2 = 100.0;           // and beyond it (10 sigma) a jump: the position opens too
   // Jerk noise density [m^2/s^5]: a rolling ball's acceleration, 5/7 mu_r g against v, only
   // turns with v, and a ball at rest has none; the phase changes are left to the maneuver test.
   double jerk_density = 0.005;
@@ -87,6 +94,11 @@ class BallTracker {
 
  private:
   void Advance(TrackedBall& track, double time) const;
+  // A prediction from `before` that crossed a cushion's nose (the ball's centre a radius from
+  // the playing surface's edge) comes back off it with the cushion's restitution.
+  void BounceOffTheCushions(const Eigen::Matrix<double, 6, 1>& before,
+                            Eigen::Matrix<double, 6, 1>* after,
+                            Eigen::Matrix<double, 6, 6>* covariance) const;
   void Correct(TrackedBall& track, const Eigen::Vector2d& measured) const;
 
   physics::ModelParameters params_;

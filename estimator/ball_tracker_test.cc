@@ -242,6 +242,65 @@ TEST(BallTracker, ATrackIsConfirmedAtExactlyTheConfiguredDetection) {
   }
 }
 
+// A detection the detector is sure of (score at least sure_score) is a ball from its first frame;
+// a doubtful one waits for its hits.
+TEST(BallTracker, ASureDetectionIsPublishedFromItsFirstFrame) {
+  const TrackerOptions options;
+  BallTracker tracker(Pool(), options);
+  const ClassEvidence sure{BallClass::kUnknown, 0.0, options.sure_score};
+  const ClassEvidence doubtful{BallClass::kUnknown, 0.0, 0.99 * options.sure_score};
+  ASSERT_TRUE(tracker.Update(0.0, {{1.0, 0.5}, {2.0, 0.8}}, {sure, doubtful}));
+  ASSERT_EQ(tracker.tracks().size(), 2u);
+  EXPECT_TRUE(tracker.tracks()[0].confirmed);
+  EXPECT_FALSE(tracker.tracks()[1].confirmed);
+}
+
+// A ball still for a second, then struck at 2 m/s between two frames at 30 Hz (it moves 67 mm
+// a frame): the track is where the ball is seen from the first frame it moves, and keeps up.
+// Opening only the velocity at the jump left the still ball's tight position to move by a
+// fraction of it (33 mm behind in the first frame).
+TEST(BallTracker, AStillBallStruckIsWhereItIsSeenFromItsFirstMovingFrame) {
+  constexpr double kRate = 30.0, kStrike = 1.0, kSpeed = 2.0, kSigma = 0.4e-3;
+  const Eigen::Vector2d start(0.6, 0.6), heading = Eigen::Vector2d(1.0, 0.3).normalized();
+  const auto truth = [&](double t) {
+    return Eigen::Vector2d(start + heading * kSpeed * std::max(0.0, t - kStrike));
+  };
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, kSigma);
+  TrackerOptions options;
+  options.measurement_sigma = kSigma;
+  BallTracker tracker(Pool(), options);
+  for (int f = 0; f / kRate < kStrike + 0.5; ++f) {
+    const double t = f / kRate;
+    ASSERT_TRUE(tracker.Update(t, {truth(t) + Eigen::Vector2d(noise(rng), noise(rng))}));
+    ASSERT_EQ(tracker.tracks().size(), 1u) << "t = " << t;
+    EXPECT_LT((tracker.tracks()[0].position() - truth(t)).norm(), 2e-3) << "t = " << t;
+  }
+}
+
+// A ball rolling at 1 m/s into the far end's cushion, seen at 30 Hz: the frame after the bounce
+// is predicted off the cushion (mirrored, the cushion's restitution), near where the ball is, not
+// past the nose in the rail (where the refinement near the prediction would outline the cushion).
+TEST(BallTracker, ABallIsPredictedOffTheCushionItBouncesFrom) {
+  const physics::ModelParameters& p = Pool();
+  const double r = p.ball.radius, e = p.collision.cushion_restitution;
+  const double nose = p.table.length - r, speed = 1.0, kRate = 30.0;
+  const double bounce = 0.5;  // [s], the time the ball reaches the nose
+  const auto truth = [&](double t) {
+    const double x = t < bounce ? nose - speed * (bounce - t) : nose - e * speed * (t - bounce);
+    return Eigen::Vector2d(x, 0.6);
+  };
+  BallTracker tracker(p);
+  int f = 0;
+  for (; (f + 1) / kRate < bounce; ++f) ASSERT_TRUE(tracker.Update(f / kRate, {truth(f / kRate)}));
+  const double next = (f + 1) / kRate;
+  const std::vector<Eigen::Vector2d> predicted = tracker.Predict(next);
+  ASSERT_EQ(predicted.size(), 1u);
+  EXPECT_LE(predicted[0].x(), nose);
+  EXPECT_LT((predicted[0] - truth(next)).norm(), 3e-3)
+      << "predicted " << predicted[0].transpose() << ", the ball at " << truth(next).transpose();
+}
+
 // Two balls of different colours side by side, then detected where the nearer pairing by
 // position alone would give each track the other's detection (a jolt, a blur): the classes keep
 // each track on its ball. Each track's class is the one its detections were mostly given, surer

@@ -196,6 +196,11 @@ TEST(InProcessLoop, ABreakIsPlannedSimulatedAndTrackedBallByBall) {
   }
   EXPECT_LT(std::sqrt(sum / frames), 3e-3);  // RMS over every ball and frame
   EXPECT_EQ(tracking.swaps, 0);
+  // Issue 27's acceptance: every ball tracked in every frame, the worst frame within 5 mm.
+  for (const table_sim_node::BallTracking& b : tracking.balls) {
+    EXPECT_EQ(b.lost, 0) << "ball " << b.id;
+    EXPECT_LE(b.max_error, 5e-3) << "ball " << b.id;
+  }
 
   // This is `run_loop.sh --scene break` (seed 1, lockstep): deterministic, so the figures
   // docs/closed-loop.md quotes for it are this run's.
