@@ -23,9 +23,15 @@ void ShotRecorder::State(std::int64_t utime, const std::vector<TrackSample>& tra
   for (const TrackSample& s : tracks) {
     const auto k = std::find(open_->tracks.begin(), open_->tracks.end(), s.track);
     if (k == open_->tracks.end()) continue;
-    TrackedBall& ball = open_->shot.balls[static_cast<std::size_t>(k - open_->tracks.begin())];
+    const auto i = static_cast<std::size_t>(k - open_->tracks.begin());
+    TrackedBall& ball = open_->shot.balls[i];
+    if ((s.position - ball.position.back()).norm() < thinning_) {
+      open_->unkept[i] = {t, s.position};
+      continue;
+    }
     ball.t.push_back(t);
     ball.position.push_back(s.position);
+    open_->unkept[i].reset();
   }
 }
 
@@ -47,6 +53,7 @@ void ShotRecorder::Strike(std::int64_t utime, std::int32_t track) {
     open.tracks.push_back(s.track);
     open.shot.balls.push_back({"track " + std::to_string(s.track), {0.0}, {s.position}});
   }
+  open.unkept.resize(open.tracks.size());
   open_ = std::move(open);
 }
 
@@ -54,6 +61,11 @@ void ShotRecorder::Finish() {
   if (!open_) return;
   Open open = std::move(*open_);
   open_.reset();
+  for (std::size_t i = 0; i < open.unkept.size(); ++i) {
+    if (!open.unkept[i]) continue;
+    open.shot.balls[i].t.push_back(open.unkept[i]->first);
+    open.shot.balls[i].position.push_back(open.unkept[i]->second);
+  }
   if (open.shot.balls[open.shot.cue].t.size() < 2) {
     ++skipped_;
     return;

@@ -35,9 +35,12 @@ struct TrackSample {
 
 class ShotRecorder {
  public:
-  // A shot ends this long after its strike at the latest [s]: a loop left standing would
-  // otherwise make one shot of hours at rest.
-  explicit ShotRecorder(double longest_shot = 60.0) : longest_shot_(longest_shot) {}
+  // A shot ends `longest_shot` after its strike at the latest [s]: a loop left standing would
+  // otherwise make one shot of hours at rest. With `thinning` > 0, a ball's sample is kept only
+  // where it moved at least that far [m] from the last kept one (the last always kept), as the
+  // real recordings are thinned: a ball at rest then costs the fits two samples, not hundreds.
+  explicit ShotRecorder(double longest_shot = 60.0, double thinning = 0.0)
+      : longest_shot_(longest_shot), thinning_(thinning) {}
 
   // The estimator's state at `utime` [us]: every track it knows of. A state older than the
   // latest is ignored (a late message).
@@ -59,9 +62,12 @@ class ShotRecorder {
     std::int64_t start_utime = 0;  // of the shot's first sample
     std::vector<std::int32_t> tracks;  // of shot.balls, in order
     TrackedShot shot;
+    // Per ball, its latest sample when thinning left it out: the shot's last is always kept.
+    std::vector<std::optional<std::pair<double, Eigen::Vector2d>>> unkept;
   };
 
   double longest_shot_;
+  double thinning_;
   std::optional<std::pair<std::int64_t, std::vector<TrackSample>>> latest_;
   std::optional<Open> open_;
   std::optional<std::int64_t> last_strike_;
