@@ -73,6 +73,18 @@ nlohmann::json ConstantsJson(const shot_fit::ShotsFit& fit) {
   return out;
 }
 
+// The fit's options of --fit-physics and --rounds; UsageError on an unknown constant.
+shot_fit::FitOptions JointFitOptions(const std::string& fit_physics, int rounds) {
+  shot_fit::FitOptions options;
+  options.rounds = rounds;
+  try {
+    options.constants = shot_fit::ParseConstants(fit_physics);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--fit-physics: ") + e.what());
+  }
+  return options;
+}
+
 // Shots the fit could not follow.
 int FailedShots(const shot_fit::ShotsFit& fit) {
   return static_cast<int>(std::count_if(fit.shots.begin(), fit.shots.end(),
@@ -200,14 +212,8 @@ void Run(const FitShotsArgs& args) {
   if (args.rounds < 1) throw UsageError("--rounds must be >= 1");
   if (args.plot_worst < 0) throw UsageError("--plot-worst must be >= 0");
   if (!args.plot_dir.empty()) RequireWritableDirectory(args.plot_dir, "--plot-dir");
-  shot_fit::FitOptions options;
+  shot_fit::FitOptions options = JointFitOptions(args.fit_physics, args.rounds);
   options.fit_elevation = args.fit_elevation;
-  options.rounds = args.rounds;
-  try {
-    options.constants = shot_fit::ParseConstants(args.fit_physics);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--fit-physics: ") + e.what());
-  }
   const table::TableGeometry table = TableOption(args.table);
   const physics::ModelParameters p =
       LoadParametersOption(args.params.empty() ? DefaultParameters(args.table) : args.params);
@@ -384,13 +390,7 @@ LoggedShots ReadLoggedShots(const std::string& path) {
 void RunIdentify(const IdentifyArgs& args) {
   if (args.threads < 1) throw UsageError("--threads must be >= 1");
   if (args.rounds < 1) throw UsageError("--rounds must be >= 1");
-  shot_fit::FitOptions options;
-  options.rounds = args.rounds;
-  try {
-    options.constants = shot_fit::ParseConstants(args.fit_physics);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--fit-physics: ") + e.what());
-  }
+  const shot_fit::FitOptions options = JointFitOptions(args.fit_physics, args.rounds);
   const table::TableGeometry table = TableOption(args.table);
   const physics::ModelParameters p = LoadParametersOption(args.params);
   if (std::abs(table.length - p.table.length) > 1e-9 ||
