@@ -2,6 +2,7 @@
 # usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off] [--scene break|FILE]
 #                                   [--pot K:P ...] [--params NAME|FILE] [--log FILE]
 #                                   [--plant-params NAME|FILE] [--identify-every N]
+#                                   [--identify LIST]
 #                                   [--log-frames all|none]
 #                                   [--lockstep | --realtime] [--view] [--view-port PORT]
 #                                   [--json] [--no-build] [-h | --help]
@@ -31,6 +32,8 @@
 #                          the sliding friction and the rolling resistance to its own tracked
 #                          shots and plans with them (default 5 with --plant-params, else 0:
 #                          never); the summary shows each fit after the shots
+#   --identify LIST        the constants the planner identifies (default mu,rolling; see
+#                          planner_node --identify)
 #   --log FILE             record every message with lcm-logger into FILE
 #   --log-frames all|none  with --log: record the CAMERA_IMAGE frames or not (default all)
 #   --lockstep             wait for the estimator's state of each frame: deterministic (default)
@@ -59,7 +62,7 @@
 set -euo pipefail
 source "$(dirname "$0")/script_support.sh"
 
-shots=20 seed=1 noise=off scene="" params=pool plant="" identify_every="" log="" log_frames=all clock=--lockstep json=false build=true
+shots=20 seed=1 noise=off scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true
 pots=()
 view=false view_port=8765
 while [ $# -gt 0 ]; do
@@ -83,6 +86,7 @@ while [ $# -gt 0 ]; do
       case "$2" in */* | *.json) plant=$(realpath -m -- "$2") ;; *) plant=$2 ;; esac
       shift 2 ;;
     --identify-every) need_number 0 "$@"; identify_every=$2; shift 2 ;;
+    --identify) need_value "$@"; identify=$2; shift 2 ;;
     --log-frames) need_value "$@"; log_frames=$2; shift 2 ;;
     --lockstep) clock=--lockstep; shift ;;
     --realtime) clock=--realtime; shift ;;
@@ -138,7 +142,7 @@ fi
 
 source launch_scripts/lcm_network.sh
 enter_private_network launch_scripts/run_loop.sh --no-build --shots "$shots" --seed "$seed" \
-  --noise "$noise" --params "$params" ${plant:+--plant-params "$plant"} --identify-every "$identify_every" ${scene:+--scene "$scene"} "${pots[@]}" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
+  --noise "$noise" --params "$params" ${plant:+--plant-params "$plant"} --identify-every "$identify_every" --identify "$identify" ${scene:+--scene "$scene"} "${pots[@]}" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
 in_process=false
@@ -182,7 +186,7 @@ if ! $in_process; then
   "$bin_dir/estimator_node" --params "$params" 2>/dev/null &
   pids+=($!)
   "$bin_dir/planner_node" --params "$params" "${planner_table[@]}" \
-    --identify-every "$identify_every" >/dev/null 2>"$planner_err" &
+    --identify-every "$identify_every" --identify "$identify" >/dev/null 2>"$planner_err" &
   pids+=($!)
   if $view; then
     if [ -n "${VIEW_SOCKET:-}" ]; then  # in the namespace: on a port of its own, through the socket
