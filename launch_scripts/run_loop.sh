@@ -2,6 +2,8 @@
 # usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off]
 #                                   [--scene break|seeded|FILE]
 #                                   [--pot K:P ...] [--params NAME|FILE] [--log FILE]
+#                                   [--plant-params NAME|FILE] [--identify-every N]
+#                                   [--identify LIST]
 #                                   [--log-frames all|none]
 #                                   [--lockstep | --realtime] [--view] [--view-port PORT]
 #                                   [--json] [--no-build] [-h | --help]
@@ -28,6 +30,15 @@
 #                          played in turn from where the last left the balls
 #   --params NAME|FILE     the parameter set of all three nodes: pool (default), paper, snooker,
 #                          carom, or a JSON file (docs/simulation.md)
+#   --plant-params NAME|FILE  the table simulator plays a table of these parameters (the same
+#                          table and balls as --params) while the estimator and the planner keep
+#                          --params: a table the controller does not know
+#   --identify-every N     the planner identifies the table online: every N of its shots it fits
+#                          the sliding friction and the rolling resistance to its own tracked
+#                          shots and plans with them (default 5 with --plant-params, else 0:
+#                          never); the summary shows each fit after the shots
+#   --identify LIST        the constants the planner identifies (default mu,rolling; see
+#                          planner_node --identify)
 #   --log FILE             record every message with lcm-logger into FILE
 #   --log-frames all|none  with --log: record the CAMERA_IMAGE frames or not (default all)
 #   --lockstep             wait for the estimator's state of each frame: deterministic (default)
@@ -56,7 +67,7 @@
 set -euo pipefail
 source "$(dirname "$0")/script_support.sh"
 
-shots=20 seed=1 noise=off scene="" params=pool log="" log_frames=all clock=--lockstep json=false build=true
+shots=20 seed=1 noise=off scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true
 pots=()
 view=false view_port=8765
 while [ $# -gt 0 ]; do
@@ -78,6 +89,12 @@ while [ $# -gt 0 ]; do
       need_value "$@"
       case "$2" in */* | *.json) params=$(realpath -m -- "$2") ;; *) params=$2 ;; esac
       shift 2 ;;
+    --plant-params)
+      need_value "$@"
+      case "$2" in */* | *.json) plant=$(realpath -m -- "$2") ;; *) plant=$2 ;; esac
+      shift 2 ;;
+    --identify-every) need_number 0 "$@"; identify_every=$2; shift 2 ;;
+    --identify) need_value "$@"; identify=$2; shift 2 ;;
     --log-frames) need_value "$@"; log_frames=$2; shift 2 ;;
     --lockstep) clock=--lockstep; shift ;;
     --realtime) clock=--realtime; shift ;;
@@ -98,6 +115,7 @@ case "$log_frames" in
   all|none) ;;
   *) usage_error "--log-frames must be all or none, not '$log_frames'" ;;
 esac
+[ -n "$identify_every" ] || { [ -n "$plant" ] && identify_every=5 || identify_every=0; }
 if [ ${#pots[@]} -gt 0 ] && { [ -z "$scene" ] || [ "$scene" = break ]; }; then
   usage_error "--pot needs --scene FILE or --scene seeded"
 fi
@@ -132,7 +150,7 @@ fi
 
 source launch_scripts/lcm_network.sh
 enter_private_network launch_scripts/run_loop.sh --no-build --shots "$shots" --seed "$seed" \
-  --noise "$noise" --params "$params" ${scene:+--scene "$scene"} "${pots[@]}" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
+  --noise "$noise" --params "$params" ${plant:+--plant-params "$plant"} --identify-every "$identify_every" --identify "$identify" ${scene:+--scene "$scene"} "${pots[@]}" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
 in_process=false
@@ -149,12 +167,12 @@ if [ -z "${in_namespace:-}" ]; then
 fi
 
 pids=()
-summary_file=$(mktemp) logger_err=$(mktemp)
+summary_file=$(mktemp) logger_err=$(mktemp) planner_err=$(mktemp)
 cleanup() {
   for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
   [ -n "${VIEW_FORWARDER:-}" ] && kill -TERM "$VIEW_FORWARDER" 2>/dev/null
   wait 2>/dev/null || true
-  rm -f "$summary_file" "$logger_err" "${VIEW_SOCKET:-}" "${layout_file:-}"
+  rm -f "$summary_file" "$logger_err" "$planner_err" "${VIEW_SOCKET:-}" "${layout_file:-}"
 }
 trap cleanup EXIT
 
@@ -187,7 +205,8 @@ fi
 if ! $in_process; then
   "$bin_dir/estimator_node" --params "$params" 2>/dev/null &
   pids+=($!)
-  "$bin_dir/planner_node" --params "$params" "${planner_table[@]}" >/dev/null 2>&1 &
+  "$bin_dir/planner_node" --params "$params" "${planner_table[@]}" \
+    --identify-every "$identify_every" --identify "$identify" >/dev/null 2>"$planner_err" &
   pids+=($!)
   if $view; then
     if [ -n "${VIEW_SOCKET:-}" ]; then  # in the namespace: on a port of its own, through the socket
@@ -206,10 +225,14 @@ fi
 
 sim_clock=""
 [ "$clock" = --realtime ] && sim_clock=--realtime
+# A fit between shots takes seconds; the simulator waits for its answer that long.
+identifying=()
+[ "$identify_every" -gt 0 ] && identifying=(--reply-timeout 120)
+$in_process && identifying+=(--identify-every "$identify_every")
 # In the background, so that a signal reaches the trap at once and the cleanup stops it too.
 session=("$bin_dir/table_sim_node")
 $in_process && session=("$bin_dir/billiard" loop)
-"${session[@]}" --params "$params" --shots "$shots" --seed "$seed" --noise "$noise" \
+"${session[@]}" --params "$params" ${plant:+--plant-params "$plant"} "${identifying[@]}" --shots "$shots" --seed "$seed" --noise "$noise" \
   ${scene:+--scene "$scene"} "${pots[@]}" $sim_clock >"$summary_file" &
 pids+=($!)
 status=0
@@ -259,6 +282,8 @@ for i, p in enumerate(pots):
 if not pots:
     print(f"median miss {1e3*s['median_miss_m']:.2f} mm, max {1e3*s['max_miss_m']:.2f} mm, "
           f"mean {1e3*s['mean_miss_m']:.2f} +- {1e3*s['stddev_miss_m']:.2f} mm, {s['wall_s']:.1f} s")
+if "plant" in s:
+    print(f"the table played {s['plant']}; the nodes ran their own parameters")
 if "scene" in s:
     scene, tracking = s["scene"], s["scene"]["tracking"]
     pocketed = [f"{b['id']} ({b['pocketed']})" for b in scene["balls"] if b["pocketed"]]
@@ -271,6 +296,8 @@ if "scene" in s:
           f"{tracking['swaps']} swaps, {tracking['reacquired']} tracks re-acquired, "
           f"{tracking['lost_ball_frames']} ball-frames without a track")
 PY
+# The planner's online identifications, each after the shots it was fitted to.
+grep -h "identif" "$planner_err" >&2 || true
 if [ -n "$log_failure" ]; then
   echo "run_loop: the log '$log' is not a record of the run: $log_failure" >&2
   exit 1

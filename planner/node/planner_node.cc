@@ -462,6 +462,12 @@ void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string
         break;
     }
     for (const ball_state_t& ball : state.balls) balls_.insert_or_assign(ball.ball_id, ball);
+    if (options_.identify_every > 0) {
+      std::vector<shot_fit::TrackSample> tracks;
+      for (const ball_state_t& b : state.balls)
+        tracks.push_back({b.ball_id, {b.position[0], b.position[1]}});
+      shots_.State(state.utime, tracks);
+    }
     latest_table_ = std::move(state);
     while (balls_.size() > kMaxRememberedBalls) {
       balls_.erase(std::min_element(balls_.begin(), balls_.end(), [](const auto& a, const auto& b) {
@@ -531,14 +537,56 @@ void PlannerNode::Publish(const cue_command_t& command,
   health_.Latency(nodes::NodeHealth::Clock::now() - arrived);
 }
 
+void PlannerNode::IdentifyIfDue() {
+  if (options_.identify_every <= 0) return;
+  shots_.Finish();
+  const std::vector<shot_fit::TrackedShot>& all = shots_.shots();
+  if (all.size() < identified_shots_ + static_cast<std::size_t>(options_.identify_every)) return;
+  identified_shots_ = all.size();
+  const std::vector<shot_fit::TrackedShot> latest(
+      all.end() - static_cast<std::ptrdiff_t>(std::min(all.size(), kIdentifyWindow)), all.end());
+  try {
+    if (!fit_pool_) fit_pool_ = std::make_unique<batch::ThreadPool>();
+    shot_fit::FitOptions fit_options;
+    fit_options.constants = options_.identify;
+    const shot_fit::ShotsFit fit =
+        shot_fit::FitShots(table_, params_, latest, fit_options, *fit_pool_);
+    std::ostringstream line;
+    line << "identified from " << fit.constant_shots << " of its latest " << latest.size()
+         << " shots (median cue-ball RMSE " << 1e3 * fit.median_cue_rmse << " mm):";
+    for (const shot_fit::ConstantFit& c : fit.constants) {
+      line << " " << shot_fit::ConstantName(c.constant) << " " << c.prior;
+      if (c.identifiable) {
+        line << " -> " << c.value << " +- " << c.sd;
+      } else {
+        line << " kept (not identifiable)";
+      }
+    }
+    const std::string base = params_.name.substr(0, params_.name.rfind("-identified"));
+    params_ = fit.params;
+    params_.name = base + "-identified";
+    health_.SetParameters(params::ParameterSetLabel(params_), params::ParameterHash(params_));
+    health_.Count("identified");
+    log_(line.str());
+  } catch (const std::exception& e) {
+    health_.Count("identification_failed");
+    log_(std::string("identification failed, planning on with the constants so far: ") +
+         e.what());
+  }
+}
+
 bool PlannerNode::Work() {
   try {
     if (!waiting_.empty()) {
       Waiting w = std::move(waiting_.front());
       waiting_.pop_front();
       health_.SetQueueDepth(static_cast<int>(waiting_.size()));
+      IdentifyIfDue();
       const cue_command_t command = Answer(w.request);
       Publish(command, w.arrived);
+      if (options_.identify_every > 0 && command.status == cue_command_t::STATUS_OK) {
+        shots_.Strike(command.utime, command.ball_id);
+      }
       log_(Describe(command));
       answered_.push_back({std::move(w.bytes), StateUtime(w.request), command});
       if (answered_.size() > kRememberedAnswers) answered_.pop_front();

@@ -46,6 +46,13 @@
 // (a late or reordered message), unless the publisher has started a new clock (message_clock.h):
 // then what the node knew of the old one is forgotten.
 //
+// Online identification (PlannerNodeOptions::identify_every): the node cuts its own shots as
+// `billiard identify` cuts a log (sim/shot_fit/shot_recorder.h): each ok answer a strike of its
+// ball, the table states the shot's samples, the shot closed when the next request is planned
+// (the balls at rest by then). The fit runs there, before that plan, so the answers still depend
+// on the messages alone; each one is logged, counted ("identified") and announced on
+// NODE_STATUS, whose parameter set is then "<set>-identified" with its own hash.
+//
 // A node never dies on a message: a payload that does not decode is logged and dropped, and every
 // handler catches what it throws. Counts and latencies go out on NODE_STATUS (node_health.h).
 #pragma once
@@ -54,6 +61,7 @@
 #include <deque>
 #include <functional>
 #include <lcm/lcm-cpp.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -67,7 +75,10 @@
 #include "lcmtypes/node/node_health.h"
 #include "planner/pot/pot_planner.h"
 #include "planner/shot_planner.h"
+#include "sim/batch/thread_pool.h"
 #include "sim/physics/parameters.h"
+#include "sim/shot_fit/shot_fit.h"
+#include "sim/shot_fit/shot_recorder.h"
 #include "sim/table/scene.h"
 #include "sim/table/table_geometry.h"
 
@@ -86,6 +97,13 @@ struct PlannerNodeOptions {
   // The table pots are planned on (its cushions and pockets); kDefaultPotTable when not given.
   std::optional<table::TableGeometry> table;
   pot::PotOptions pot = CameraPotOptions();
+  // Online identification of the table (0: off): after every `identify_every` shots the node
+  // commanded and saw tracked, the constants `identify` are fitted jointly to its latest
+  // kIdentifyWindow shots (sim/shot_fit/shot_fit.h, from the constants it plans with) and its
+  // plans use them from then on; what the shots do not excite is kept.
+  int identify_every = 0;
+  std::vector<shot_fit::Constant> identify = {shot_fit::Constant::kMu,
+                                              shot_fit::Constant::kRolling};
 
   // Pots are planned on what the camera saw: touching balls measured a fraction of a millimetre
   // into each other (or into a cushion) are settled apart first (pot::PotOptions::settle_overlap),
@@ -102,6 +120,8 @@ inline constexpr char kDefaultPotTable[] = "pool-9ft";
 
 // At most this many balls are remembered; beyond it the longest unseen is forgotten.
 inline constexpr std::size_t kMaxRememberedBalls = 256;
+// The shots an online identification is fitted to: the latest so many.
+inline constexpr std::size_t kIdentifyWindow = 40;
 // Answers remembered for requests sent again.
 inline constexpr std::size_t kRememberedAnswers = 64;
 // A ball asked for by class (shot_request_t::BALL_BY_CLASS) must be of that class with at least
@@ -149,6 +169,10 @@ class PlannerNode {
     int8_t status;
     std::string reason;
   };
+  // Closes the shot in progress and, when identify_every more have closed since the last fit,
+  // fits the constants to the latest shots and plans with them.
+  void IdentifyIfDue();
+
   std::optional<Unfit> UnfitToPlanFrom(const shot_request_t& q, const ball_state_t& s) const;
 
   // The pot of a checked MODE_POT request, struck at `cue` (whose state is fit to plan from),
@@ -165,7 +189,7 @@ class PlannerNode {
   void OnShotRequest(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
 
   lcm::LCM& lcm_;
-  const physics::ModelParameters params_;
+  physics::ModelParameters params_;  // changed only by IdentifyIfDue
   const PlannerNodeOptions options_;
   const table::TableGeometry table_;
   void Publish(const cue_command_t& command, nodes::NodeHealth::Clock::time_point arrived);
@@ -184,6 +208,11 @@ class PlannerNode {
   std::deque<Waiting> waiting_;
   std::deque<Answered> answered_;
   bool refusing_busy_ = false;
+  shot_fit::ShotRecorder shots_{kLongestShot, kShotThinning};
+  std::size_t identified_shots_ = 0;  // closed shots at the latest fit
+  std::unique_ptr<batch::ThreadPool> fit_pool_;
+  static constexpr double kLongestShot = 60.0;     // [s]
+  static constexpr double kShotThinning = 0.002;   // [m], as the real recordings
   lcm::Subscription* table_state_subscription_ = nullptr;
   lcm::Subscription* shot_request_subscription_ = nullptr;
 };

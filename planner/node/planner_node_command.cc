@@ -33,6 +33,14 @@ void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line) {
                  "a table file")
       ->capture_default_str();
   app.add_flag("--no-refine", line->no_refine, "Plan with the closed-form inverse alone");
+  app.add_option("--identify-every", options.identify_every,
+                 "Identify the table online: every N shots, fit --identify to the node's own "
+                 "tracked shots and plan with them (0: never)")
+      ->capture_default_str();
+  app.add_option("--identify", line->identify,
+                 "The constants the online fit identifies: mu,rolling,spin,cushion,"
+                 "cushion_friction,ball_ball")
+      ->capture_default_str();
 }
 
 PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line,
@@ -47,6 +55,12 @@ PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line,
   if (options.queue_capacity < 1)
     throw std::invalid_argument("--queue-capacity must be at least 1");
   options.planner.refine = !line.no_refine;
+  if (options.identify_every < 0) throw std::invalid_argument("--identify-every must be >= 0");
+  try {
+    options.identify = shot_fit::ParseConstants(line.identify);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--identify: ") + e.what());
+  }
   options.table = table::BuildTable(params::LoadTableSpec(line.table));
   // The point planner's bounds are the parameter set's table: both must be the one table.
   if (std::abs(options.table->length - params.table.length) > 1e-9 ||

@@ -16,6 +16,7 @@ struct PlannerNodeCommandLine {
   std::string table = kDefaultPotTable;  // a built-in table or a table file (table_specs.h)
   PlannerNodeOptions options;
   bool no_refine = false;
+  std::string identify = "mu,rolling";  // --identify: the constants an online fit identifies
 };
 
 // Adds the node's options to `app`, filling `line` when it parses.
@@ -23,7 +24,8 @@ void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line);
 
 // The node's options from a parsed command line, with `params`; throws std::invalid_argument
 // with a one-line reason when they make no node (a negative or non-finite limit, an empty queue,
-// a table that does not load or is not the size of the parameter set's).
+// a table that does not load or is not the size of the parameter set's, a negative
+// --identify-every, an unknown constant in --identify).
 PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line,
                                const physics::ModelParameters& params);
 

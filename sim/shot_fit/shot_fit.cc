@@ -987,31 +987,41 @@ TrackedShot SimulateTrackedShot(const table::TableGeometry& table, const ModelPa
   return shot;
 }
 
-std::vector<TrackedShot> SyntheticShots(const table::TableGeometry& table,
-                                        const ModelParameters& params, int count,
-                                        std::uint64_t seed) {
-  constexpr double kDuration = 8.0, kPeriod = 0.02, kNoise = 0.001, kThinning = 0.002;
+std::vector<SyntheticScene> SyntheticScenes(const table::TableGeometry& table, double ball_radius,
+                                            int count, std::uint64_t seed) {
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double r = params.ball.radius;
-  std::vector<TrackedShot> shots;
-  while (static_cast<int>(shots.size()) < count) {
-    std::vector<Eigen::Vector2d> starts;
-    while (starts.size() < 3) {
+  const double r = ball_radius;
+  std::vector<SyntheticScene> scenes;
+  while (static_cast<int>(scenes.size()) < count) {
+    SyntheticScene scene;
+    while (scene.starts.size() < 3) {
       const Eigen::Vector2d q(2 * r + unit(random) * (table.length - 4 * r),
                               2 * r + unit(random) * (table.width - 4 * r));
       bool clear = true;
-      for (const Eigen::Vector2d& o : starts) clear = clear && (q - o).norm() > 3 * r;
-      if (clear) starts.push_back(q);
+      for (const Eigen::Vector2d& o : scene.starts) clear = clear && (q - o).norm() > 3 * r;
+      if (clear) scene.starts.push_back(q);
     }
-    Strike s;
+    Strike& s = scene.strike;
     s.stroke.speed = 2.0 + 2.0 * unit(random);
     s.stroke.heading = 2 * M_PI * unit(random);
     s.stroke.tip_side = (unit(random) - 0.5) * 0.8 * r;
     s.stroke.tip_height = (unit(random) - 0.5) * 0.8 * r;
-    s.time = kPeriod * unit(random);
-    shots.push_back(SimulateTrackedShot(table, params, starts, 0, s, kDuration, kPeriod, kNoise,
-                                        kThinning, seed + shots.size()));
+    s.time = kSyntheticPeriod * unit(random);
+    scenes.push_back(std::move(scene));
+  }
+  return scenes;
+}
+
+std::vector<TrackedShot> SyntheticShots(const table::TableGeometry& table,
+                                        const ModelParameters& params, int count,
+                                        std::uint64_t seed) {
+  constexpr double kDuration = 8.0, kNoise = 0.001, kThinning = 0.002;
+  std::vector<TrackedShot> shots;
+  for (const SyntheticScene& scene : SyntheticScenes(table, params.ball.radius, count, seed)) {
+    shots.push_back(SimulateTrackedShot(table, params, scene.starts, 0, scene.strike, kDuration,
+                                        kSyntheticPeriod, kNoise, kThinning,
+                                        seed + shots.size()));
     shots.back().id = std::to_string(shots.size());
   }
   return shots;

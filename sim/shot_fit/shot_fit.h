@@ -173,10 +173,24 @@ TrackedShot SimulateTrackedShot(const table::TableGeometry& table,
                                 const Strike& strike, double duration, double period, double noise,
                                 double thinning, std::uint64_t seed);
 
-// `count` shots of random strikes (cue speed 2-4 m/s, any heading, tip offsets within 0.4 r,
-// the impact within the first frame) from three balls placed at random (seeded by `seed`),
-// simulated with `params` for 8 s and tracked by SimulateTrackedShot as the real recordings
-// are: 50 Hz, 1 mm of noise, thinned where a ball moved less than 2 mm. Ball 0 is struck.
+// The frame period of the synthetic shots: the real recordings' 50 Hz [s].
+inline constexpr double kSyntheticPeriod = 0.02;
+
+// A synthetic shot before it is tracked: where its balls start, and how ball 0 is struck.
+struct SyntheticScene {
+  std::vector<Eigen::Vector2d> starts;
+  Strike strike;
+};
+
+// `count` random strikes (cue speed 2-4 m/s, any heading, tip offsets within 0.4 r, the impact
+// within the first frame period) of one of three balls placed at random, clear of each other
+// and of the cushions (seeded by `seed`).
+std::vector<SyntheticScene> SyntheticScenes(const table::TableGeometry& table, double ball_radius,
+                                            int count, std::uint64_t seed);
+
+// The `count` SyntheticScenes simulated with `params` for 8 s and tracked by
+// SimulateTrackedShot as the real recordings are: 50 Hz, 1 mm of noise, thinned where a ball
+// moved less than 2 mm. Ball 0 is struck.
 std::vector<TrackedShot> SyntheticShots(const table::TableGeometry& table,
                                         const physics::ModelParameters& params, int count,
                                         std::uint64_t seed);

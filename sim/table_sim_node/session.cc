@@ -33,6 +33,20 @@ PotShot ParsePot(const std::string& text) {
   return pot;
 }
 
+// The table's own set of --plant-params: the same table and balls as the nodes', which the camera
+// and the estimator are made for; only the physics may differ.
+physics::ModelParameters PlantParameters(const std::string& name_or_path,
+                                         const physics::ModelParameters& nodes) {
+  physics::ModelParameters plant = params::LoadParameters(name_or_path);
+  if (std::abs(plant.table.length - nodes.table.length) > 1e-9 ||
+      std::abs(plant.table.width - nodes.table.width) > 1e-9 ||
+      std::abs(plant.ball.radius - nodes.ball.radius) > 1e-9) {
+    throw std::invalid_argument("--plant-params " + name_or_path +
+                                ": not the table and balls of --params " + params::ParameterSetLabel(nodes));
+  }
+  return plant;
+}
+
 }  // namespace
 
 ExecutionNoise RobotExecutionNoise() { return {0.01, 0.1 * M_PI / 180.0, 0.5e-3}; }
@@ -44,6 +58,10 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
                  "LCM URL (default: $LCM_DEFAULT_URL, else LCM's default)");
   app.add_option("--params", line->params, "paper | pool | path to a JSON parameter file")
       ->capture_default_str();
+  app.add_option("--plant-params", line->plant_params,
+                 "The table's own physics when it differs from the nodes' --params (a name or a "
+                 "JSON file of the same table and balls): the nodes are checked against --params, "
+                 "the balls roll with this set");
   app.add_option("--shots", options.shots, "Shots to random targets")->capture_default_str();
   app.add_option("--seed", options.seed, "Seed of the targets and the noise")
       ->capture_default_str();
@@ -115,6 +133,7 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
   try {
     options = SessionOptions(line);
     params = params::LoadParameters(line.params);
+    if (!line.plant_params.empty()) options.plant = PlantParameters(line.plant_params, params);
   } catch (const std::invalid_argument& e) {
     return fail(e.what(), 2);
   }
@@ -150,6 +169,7 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json summary = SessionSummary(shots, node.health().TakeStatus(), wall_s);
   if (scene) summary["scene"] = SceneSummary(*scene, options.scene);
+  if (options.plant) summary["plant"] = params::ParameterSetLabel(*options.plant);
   std::cout << summary.dump() << std::endl;
   return 0;
 }

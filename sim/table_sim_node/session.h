@@ -23,6 +23,7 @@ inline constexpr int kCameraWidth = 1280, kCameraHeight = 720;
 struct SessionCommandLine {
   std::string lcm_url;  // empty: $LCM_DEFAULT_URL, else LCM's default
   std::string params = params::kDefaultParameterSet;
+  std::string plant_params;  // --plant-params: the table's own physics; empty: `params`
   std::string noise = "off";  // "on": the robot's execution noise of kExecutionNoise
   bool realtime = false;
   std::vector<std::string> pots;  // --pot K:P, in order

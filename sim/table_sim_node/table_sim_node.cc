@@ -83,8 +83,9 @@ TableSimNode::TableSimNode(lcm::LCM& lcm, const physics::ModelParameters& params
                            const camera::CameraModel& camera, TableSimOptions options, Log log)
     : lcm_(lcm),
       params_(params),
+      plant_(options.plant.value_or(params)),
       options_(options),
-      renderer_(camera, params),
+      renderer_(camera, plant_),
       log_(log ? std::move(log) : Log([](const std::string& line) {
         std::cerr << "table_sim_node: " << line << std::endl;
       })),
@@ -418,8 +419,8 @@ std::vector<ShotResult> TableSimNode::Run() {
     const physics::CueStroke stroke =
         WithNoise({command.cue_speed, command.heading, command.tip_side, command.tip_height,
                    command.elevation});
-    const physics::BallState launch = physics::StrikeBall(stroke, rest, params_);
-    const physics::Arrival arrival = physics::SimulateArrival(params_, launch, 0.0, 120.0);
+    const physics::BallState launch = physics::StrikeBall(stroke, rest, plant_);
+    const physics::Arrival arrival = physics::SimulateArrival(plant_, launch, 0.0, 120.0);
     const double t_strike = time_;
     const auto trajectory = arrival.trajectory;
     const Eigen::Vector2d final_point = arrival.state.head<2>();
@@ -452,10 +453,10 @@ table::TableSimulation TableSimNode::PlayOut(const table::TableGeometry& geometr
         WithNoise({command.cue_speed, command.heading, command.tip_side, command.tip_height,
                    command.elevation});
     for (table::SceneBall& b : struck) {
-      if (b.id == kCueBall) b.state = physics::StrikeBall(stroke, b.state.head<2>(), params_);
+      if (b.id == kCueBall) b.state = physics::StrikeBall(stroke, b.state.head<2>(), plant_);
     }
   }
-  table::TableSimulation sim(geometry, params_, struck, motion);
+  table::TableSimulation sim(geometry, plant_, struck, motion);
   sim.Run(kLongestScene);
   const double t_strike = time_;
   const double frame_dt = 1.0 / options_.camera_rate;
@@ -511,7 +512,7 @@ PotResult TableSimNode::PlayPot(int id, const PotShot& pot, const table::TableGe
   // against: the closed form alone would leave a cue ball that slides off a cut centimetres from
   // where the 5-DOF model does.
   table::TableSimulationOptions motion;
-  motion.five_dof = model_choice::TableMotion(params_);
+  motion.five_dof = model_choice::TableMotion(plant_);
   const table::TableSimulation sim = PlayOut(geometry, balls, command, motion);
   for (const table::TableEvent& e : sim.events()) {
     if (e.type == table::EventType::kBallBall && (e.ball == kCueBall || e.other == kCueBall)) {

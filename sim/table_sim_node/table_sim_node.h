@@ -97,6 +97,10 @@ struct TableSimOptions {
   // when the scene has no ball K), executed with the noise and played out from where the last
   // left the balls.
   std::vector<PotShot> pots;
+  // The table's own physics when it differs from the nodes' (--plant-params): the session checks
+  // the nodes against the parameter set it is given and plays the balls with this one (of the
+  // same table and balls), so that a controller can be seen learning a table it does not know.
+  std::optional<physics::ModelParameters> plant;
 };
 
 struct ShotResult {
@@ -240,7 +244,8 @@ class TableSimNode {
   physics::CueStroke WithNoise(physics::CueStroke stroke);
 
   lcm::LCM& lcm_;
-  physics::ModelParameters params_;
+  physics::ModelParameters params_;  // the nodes'
+  physics::ModelParameters plant_;   // the table's: options.plant, else params_
   TableSimOptions options_;
   render::TableRenderer renderer_;
   Log log_;

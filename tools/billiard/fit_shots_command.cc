@@ -2,22 +2,28 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <lcm/lcm-cpp.hpp>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
 
+#include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/table_state_t.hpp"
+#include "lcmtypes/message_checks.h"
+#include "lcmtypes/names.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 #include "sim/shot_fit/shot_fit.h"
+#include "sim/shot_fit/shot_recorder.h"
 #include "tools/billiard/command_line.h"
 #include "tools/plot/table_picture.h"
 
@@ -67,11 +73,86 @@ nlohmann::json ConstantsJson(const shot_fit::ShotsFit& fit) {
   return out;
 }
 
+// The fit's options of --fit-physics and --rounds; UsageError on an unknown constant.
+shot_fit::FitOptions JointFitOptions(const std::string& fit_physics, int rounds) {
+  shot_fit::FitOptions options;
+  options.rounds = rounds;
+  try {
+    options.constants = shot_fit::ParseConstants(fit_physics);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--fit-physics: ") + e.what());
+  }
+  return options;
+}
+
+// Shots the fit could not follow.
+int FailedShots(const shot_fit::ShotsFit& fit) {
+  return static_cast<int>(std::count_if(fit.shots.begin(), fit.shots.end(),
+                                        [](const shot_fit::ShotFit& s) { return !s.ok(); }));
+}
+
+// What fit-shots and identify print: each shot's RMSE and strike (or why it has none), the
+// median, the constants, "params": the set the strikes were fitted with (the prior with the
+// fitted constants), and "prior": the given set's name and file.
+nlohmann::json FitJson(const shot_fit::ShotsFit& fit, const physics::ModelParameters& prior) {
+  nlohmann::json shots = nlohmann::json::array();
+  for (const shot_fit::ShotFit& s : fit.shots) {
+    nlohmann::json j = {{"id", s.id}, {"held_out", s.held_out}};
+    if (!s.ok()) {
+      j["error"] = s.error;
+    } else {
+      j["rmse_m"] = {{"cue", s.rmse_cue}, {"all", s.errors.rmse_all}};
+      j["strike"] = StrikeJson(s.strike);
+    }
+    shots.push_back(j);
+  }
+  return {{"shots", shots},
+          {"median_cue_rmse_m", fit.median_cue_rmse},
+          {"constants", ConstantsJson(fit)},
+          {"constant_shots", fit.constant_shots},
+          {"params", nlohmann::json::parse(params::ParametersJson(fit.params))},
+          {"prior", params::ParameterSetLabel(prior)}};
+}
+
+// The prior with the fitted constants, named "<prior>-fitted", into `path` with the fit's
+// report (`report`, the command and the constants) as its "fit".
+void WriteFittedSet(const std::string& path, const std::string& option,
+                    const shot_fit::ShotsFit& fit, const physics::ModelParameters& prior,
+                    const std::string& command, nlohmann::json report,
+                    const std::string& fitted_to) {
+  report["command"] = "billiard " + command;
+  report["prior"] = params::ParameterSetLabel(prior);
+  report["constants"] = ConstantsJson(fit);
+  report["constant_shots"] = fit.constant_shots;
+  report["median_cue_rmse_m"] = fit.median_cue_rmse;
+  physics::ModelParameters out_set = fit.params;
+  out_set.name = prior.name + "-fitted";
+  out_set.source = "The constants of \"fit\" fitted by billiard " + command + " to " +
+                   std::to_string(fit.constant_shots) + " " + fitted_to +
+                   "; the other numbers those of " + params::ParameterSetLabel(prior) + ": " +
+                   prior.source;
+  std::ofstream file(path);
+  if (!file) throw UsageError(option + ": cannot write " + path);
+  file << params::ParametersJson(out_set, report.dump());
+}
+
+// The constants on stderr, each fitted with its uncertainty or kept at the prior.
+void PrintConstants(const shot_fit::ShotsFit& fit) {
+  for (const shot_fit::ConstantFit& c : fit.constants) {
+    std::cerr << "  " << shot_fit::ConstantName(c.constant) << " = " << c.value;
+    if (c.identifiable) {
+      std::cerr << " +- " << c.sd << " (prior " << c.prior << ")\n";
+    } else {
+      std::cerr << ": not identifiable from these shots, kept at the prior\n";
+    }
+  }
+}
+
 // A progress line on stderr, rewritten in place, when stderr is a terminal.
-shot_fit::FitProgress TerminalProgress() {
+shot_fit::FitProgress TerminalProgress(const std::string& command = "fit-shots") {
   if (!isatty(STDERR_FILENO)) return nullptr;
-  return [](const std::string& stage, std::size_t done, std::size_t total) {
-    std::cerr << "\rfit-shots: " << stage << " " << done << "/" << total << "   " << std::flush;
+  return [command](const std::string& stage, std::size_t done, std::size_t total) {
+    std::cerr << "\r" << command << ": " << stage << " " << done << "/" << total << "   " << std::flush;
     if (done == total) std::cerr << "\n";
   };
 }
@@ -131,14 +212,8 @@ void Run(const FitShotsArgs& args) {
   if (args.rounds < 1) throw UsageError("--rounds must be >= 1");
   if (args.plot_worst < 0) throw UsageError("--plot-worst must be >= 0");
   if (!args.plot_dir.empty()) RequireWritableDirectory(args.plot_dir, "--plot-dir");
-  shot_fit::FitOptions options;
+  shot_fit::FitOptions options = JointFitOptions(args.fit_physics, args.rounds);
   options.fit_elevation = args.fit_elevation;
-  options.rounds = args.rounds;
-  try {
-    options.constants = shot_fit::ParseConstants(args.fit_physics);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--fit-physics: ") + e.what());
-  }
   const table::TableGeometry table = TableOption(args.table);
   const physics::ModelParameters p =
       LoadParametersOption(args.params.empty() ? DefaultParameters(args.table) : args.params);
@@ -162,40 +237,15 @@ void Run(const FitShotsArgs& args) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
-  nlohmann::json shots = nlohmann::json::array();
-  int failed = 0;
-  for (const shot_fit::ShotFit& s : fit.shots) {
-    nlohmann::json j = {{"id", s.id}, {"held_out", s.held_out}};
-    if (!s.ok()) {
-      j["error"] = s.error;
-      ++failed;
-    } else {
-      j["rmse_m"] = {{"cue", s.rmse_cue}, {"all", s.errors.rmse_all}};
-      j["strike"] = StrikeJson(s.strike);
-    }
-    shots.push_back(j);
-  }
-  nlohmann::json out = {{"shots", shots},
-                        {"median_cue_rmse_m", fit.median_cue_rmse},
-                        {"table", args.table},
-                        {"constants", ConstantsJson(fit)},
-                        {"constant_shots", fit.constant_shots},
-                        {"seconds", seconds},
-                        {"threads", args.threads}};
+  nlohmann::json out = FitJson(fit, p);
+  out["table"] = args.table;
+  out["seconds"] = seconds;
+  out["threads"] = args.threads;
   if (args.hold_out_every > 0) out["held_out_median_cue_rmse_m"] = fit.held_out_median_cue_rmse;
-  // "params": the set the strikes were fitted with (the given one with the fitted constants);
-  // "prior": the given one, its name and file.
-  out["params"] = nlohmann::json::parse(params::ParametersJson(fit.params));
-  out["prior"] = params::ParameterSetLabel(p);
   if (!args.out_params.empty()) {
-    nlohmann::json report = {{"command", "billiard fit-shots"},
-                             {"shots_file", args.shots},
+    nlohmann::json report = {{"shots_file", args.shots},
                              {"shots_source", tracked.source},
-                             {"prior", params::ParameterSetLabel(p)},
-                             {"table", args.table},
-                             {"constants", ConstantsJson(fit)},
-                             {"constant_shots", fit.constant_shots},
-                             {"median_cue_rmse_m", fit.median_cue_rmse}};
+                             {"table", args.table}};
     if (args.hold_out_every > 0) {
       report["hold_out_every"] = args.hold_out_every;
       report["held_out_median_cue_rmse_m"] = fit.held_out_median_cue_rmse;
@@ -205,31 +255,18 @@ void Run(const FitShotsArgs& args) {
       if (s.ok() && s.held_out) held_out_rmse.push_back(s.rmse_cue);
     std::sort(held_out_rmse.begin(), held_out_rmse.end());
     if (!held_out_rmse.empty()) report["held_out_sorted_cue_rmse_m"] = held_out_rmse;
-    physics::ModelParameters out_set = fit.params;
-    out_set.name = p.name + "-fitted";
-    out_set.source = "The constants of \"fit\" fitted by billiard fit-shots to " +
-                     std::to_string(fit.constant_shots) + " tracked shots of " + args.shots +
-                     "; the other numbers those of " + params::ParameterSetLabel(p) + ": " +
-                     p.source;
-    std::ofstream file(args.out_params);
-    if (!file) throw UsageError("--out-params: cannot write " + args.out_params);
-    file << params::ParametersJson(out_set, report.dump());
+    WriteFittedSet(args.out_params, "--out-params", fit, p, "fit-shots", report,
+                   "tracked shots of " + args.shots);
   }
   if (!args.plot_dir.empty()) DrawWorst(table, fit, tracked.shots, args.plot_worst, args.plot_dir);
   if (args.json) std::cout << out.dump() << std::endl;
-  std::cerr << "fit-shots: " << fit.shots.size() << " shots (" << failed << " failed) in "
-            << seconds << " s; median cue-ball RMSE " << fit.median_cue_rmse << " m";
+  std::cerr << "fit-shots: " << fit.shots.size() << " shots (" << FailedShots(fit)
+            << " failed) in " << seconds << " s; median cue-ball RMSE " << fit.median_cue_rmse
+            << " m";
   if (args.hold_out_every > 0)
     std::cerr << ", held out " << fit.held_out_median_cue_rmse << " m";
   std::cerr << "\n";
-  for (const shot_fit::ConstantFit& c : fit.constants) {
-    std::cerr << "  " << shot_fit::ConstantName(c.constant) << " = " << c.value;
-    if (c.identifiable) {
-      std::cerr << " +- " << c.sd << " (prior " << c.prior << ")\n";
-    } else {
-      std::cerr << ": not identifiable from these shots, kept at the prior\n";
-    }
-  }
+  PrintConstants(fit);
 }
 
 struct BenchShotFitArgs {
@@ -291,7 +328,131 @@ void RunBench(const BenchShotFitArgs& args) {
   }
 }
 
+
+struct IdentifyArgs {
+  std::string log, out, params = params::kDefaultParameterSet, table = "pool-9ft",
+                        fit_physics = "mu,rolling,cushion";
+  int threads = batch::DefaultThreadCount(), rounds = 1;
+  bool json = false;
+};
+
+// The shots of a recorded loop, cut by shot_fit::ShotRecorder: each commanded strike
+// (CUE_COMMAND, status ok) the start of one, the estimator's TABLE_STATE tracks its samples.
+// The truth the table simulator publishes (TABLE_TRUTH) is not looked at.
+struct LoggedShots {
+  std::vector<shot_fit::TrackedShot> shots;
+  long events = 0, states = 0, strikes = 0, refused = 0, undecodable = 0;
+  int skipped = 0;  // strikes that started no shot (ShotRecorder::skipped)
+};
+
+LoggedShots ReadLoggedShots(const std::string& path) {
+  lcm::LogFile log(path, "r");
+  if (!log.good()) throw UsageError("cannot read LCM log '" + path + "'");
+  shot_fit::ShotRecorder recorder;
+  LoggedShots out;
+  for (const lcm::LogEvent* e; (e = log.readNextEvent()); ++out.events) {
+    const auto size = static_cast<std::size_t>(e->datalen);
+    if (e->channel == messages::kTableStateChannel) {
+      table_state_t state;
+      if (!messages::DecodeChecked(e->data, size, state).empty()) {
+        ++out.undecodable;
+        continue;
+      }
+      ++out.states;
+      std::vector<shot_fit::TrackSample> tracks;
+      for (const ball_state_t& b : state.balls)
+        tracks.push_back({b.ball_id, {b.position[0], b.position[1]}});
+      recorder.State(state.utime, tracks);
+    } else if (e->channel == messages::kCueCommandChannel) {
+      cue_command_t command;
+      if (!messages::DecodeChecked(e->data, size, command).empty()) {
+        ++out.undecodable;
+      } else if (command.status != cue_command_t::STATUS_OK) {
+        ++out.refused;
+      } else {
+        ++out.strikes;
+        recorder.Strike(command.utime, command.ball_id);
+      }
+    }
+  }
+  recorder.Finish();
+  if (out.events == 0) throw UsageError("'" + path + "' is empty or not an LCM log");
+  out.shots = recorder.shots();
+  out.skipped = recorder.skipped();
+  if (out.shots.empty()) {
+    throw UsageError("'" + path + "' holds no commanded strike followed by the estimator's " +
+                     "tracks (" + std::to_string(out.strikes) + " strikes, " +
+                     std::to_string(out.states) + " table states): nothing to identify from");
+  }
+  return out;
+}
+
+void RunIdentify(const IdentifyArgs& args) {
+  if (args.threads < 1) throw UsageError("--threads must be >= 1");
+  if (args.rounds < 1) throw UsageError("--rounds must be >= 1");
+  const shot_fit::FitOptions options = JointFitOptions(args.fit_physics, args.rounds);
+  const table::TableGeometry table = TableOption(args.table);
+  const physics::ModelParameters p = LoadParametersOption(args.params);
+  if (std::abs(table.length - p.table.length) > 1e-9 ||
+      std::abs(table.width - p.table.width) > 1e-9) {
+    throw UsageError("--table " + args.table + " is not the size of the parameter set's table");
+  }
+  const LoggedShots logged = ReadLoggedShots(args.log);
+  std::cerr << "identify: " << logged.shots.size() << " shots from " << logged.strikes
+            << " commanded strikes and " << logged.states << " table states of " << args.log
+            << "\n";
+  const auto started = std::chrono::steady_clock::now();
+  batch::ThreadPool pool(args.threads);
+  const shot_fit::ShotsFit fit =
+      shot_fit::FitShots(table, p, logged.shots, options, pool, {}, TerminalProgress("identify"));
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const nlohmann::json log = {{"file", args.log},          {"events", logged.events},
+                              {"table_states", logged.states}, {"strikes", logged.strikes},
+                              {"refused", logged.refused}, {"undecodable", logged.undecodable},
+                              {"skipped", logged.skipped}};
+  if (!args.out.empty()) {
+    WriteFittedSet(args.out, "--out", fit, p, "identify", {{"log", log}, {"table", args.table}},
+                   "shots of the loop recorded in " + args.log);
+  }
+  nlohmann::json out = FitJson(fit, p);
+  out["log"] = log;
+  out["table"] = args.table;
+  out["seconds"] = seconds;
+  out["threads"] = args.threads;
+  if (args.json) std::cout << out.dump() << std::endl;
+  std::cerr << "identify: " << fit.shots.size() << " shots (" << FailedShots(fit) << " failed) in "
+            << seconds << " s; median cue-ball RMSE " << fit.median_cue_rmse << " m\n";
+  PrintConstants(fit);
+}
+
 }  // namespace
+
+void AddIdentifyCommand(CLI::App& app) {
+  auto args = std::make_shared<IdentifyArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "identify",
+      "Fit the physics constants (and each shot's strike) to a recorded run of the loop: its "
+      "commanded strikes and the estimator's tracks (docs/identification.md)");
+  cmd->add_option("LOG", args->log, "LCM log (run_loop.sh --log FILE; the frames not needed)")
+      ->required();
+  cmd->add_option("--out", args->out,
+                  "Write the identified parameter set, with the fit's report, to this file");
+  cmd->add_option("--params", args->params, "The loop's parameter set, the fit's prior")
+      ->capture_default_str();
+  cmd->add_option("--table", args->table, "The loop's table: a built-in name or a JSON file")
+      ->capture_default_str();
+  cmd->add_option("--fit-physics", args->fit_physics,
+                  "Constants fitted jointly over the shots: mu,rolling,spin,cushion,"
+                  "cushion_friction,ball_ball")
+      ->capture_default_str();
+  cmd->add_option("--rounds", args->rounds,
+                  "Rounds of the joint fit over whole shots after the continuation")
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Threads")->capture_default_str();
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
+  cmd->callback([args] { RunIdentify(*args); });
+}
 
 void AddBenchShotFitCommand(CLI::App& app) {
   auto args = std::make_shared<BenchShotFitArgs>();

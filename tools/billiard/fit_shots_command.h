@@ -8,6 +8,10 @@ namespace billiard::cli {
 // shots through the whole-table simulation (docs/identification.md).
 void AddFitShotsCommand(CLI::App& app);
 
+// `billiard identify`: the same joint fit from a recorded run of the loop, its commanded strikes
+// and the estimator's tracks (docs/identification.md).
+void AddIdentifyCommand(CLI::App& app);
+
 // `billiard bench-shot-fit`: the constants hidden, shots simulated and tracked with them, and
 // recovered by the same fit (docs/identification.md).
 void AddBenchShotFitCommand(CLI::App& app);

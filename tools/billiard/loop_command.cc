@@ -17,12 +17,14 @@ namespace {
 
 // The estimator and the planner on the session's LCM: handling a frame publishes the estimator's
 // state, handling a request the planner's command, inside the simulator's waits. The planner
-// pots on the scene file's table (the default table for the break and the shots).
+// pots on the scene file's table (the default table for the break and the shots) and identifies
+// the table every `identify_every` shots (0: never).
 std::function<bool()> EstimatorAndPlanner(lcm::LCM& lcm, const physics::ModelParameters& params,
                                           const camera::CameraModel& camera,
-                                          const std::string& scene) {
+                                          const std::string& scene, int identify_every) {
   auto estimator = std::make_shared<estimator_node::EstimatorNode>(lcm, camera, params);
   planner_node::PlannerNodeOptions options;
+  options.identify_every = identify_every;
   if (!scene.empty() && scene != "break") {
     try {
       options.table = table::BuildTable(params::LoadTableSpec(params::LoadScene(scene).table));
@@ -46,11 +48,17 @@ void AddLoopCommand(CLI::App& app) {
       "memq://); the summary as JSON on stdout, as table_sim_node prints it");
   auto line = std::make_shared<table_sim_node::SessionCommandLine>();
   table_sim_node::AddSessionOptions(*cmd, line.get());
-  cmd->callback([line] {
+  auto identify_every = std::make_shared<int>(0);
+  cmd->add_option("--identify-every", *identify_every,
+                  "The planner identifies the sliding friction and the rolling resistance every "
+                  "N shots from its own tracked shots (0: never)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->callback([line, identify_every] {
     line->lcm_url = "memq://";
-    const auto nodes = [line](lcm::LCM& lcm, const physics::ModelParameters& params,
+    const auto nodes = [line, identify_every](lcm::LCM& lcm, const physics::ModelParameters& params,
                               const camera::CameraModel& camera) {
-      return EstimatorAndPlanner(lcm, params, camera, line->options.scene);
+      return EstimatorAndPlanner(lcm, params, camera, line->options.scene, *identify_every);
     };
     const int status = table_sim_node::RunSessionCommand("billiard loop", *line, nodes);
     if (status != 0) throw ExitStatus(status);

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddSimulateCommand(app);
   billiard::cli::AddFitContactCommand(app);
   billiard::cli::AddFitShotsCommand(app);
+  billiard::cli::AddIdentifyCommand(app);
   billiard::cli::AddBenchShotFitCommand(app);
   billiard::cli::AddBenchCommand(app);
   billiard::cli::AddPlanCommand(app);
