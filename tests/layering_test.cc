@@ -61,7 +61,7 @@ const std::map<std::string, std::set<std::string>>& Layers() {
        {"sim/physics", "sim/batch", "sim/table", "sim/params", "sim/model_choice",
         "sim/contact_fit", "sim/shot_fit", "sim/camera", "sim/render", "sim/table_sim_node",
         "lcmtypes", "lcmtypes/node", "planner", "planner/pot", "planner/node", "estimator",
-        "estimator/node", "bench", "tools/plot"}},
+        "estimator/node", "bench", "planner/pot/testing", "tools/plot"}},
       {"tools/viewer_node", {"lcmtypes", "lcmtypes/node", "sim/params", "sim/physics"}},
       {"tools/python", {"sim/physics", "sim/table", "sim/params", "planner", "planner/pot", "estimator"}},
       {"tests", {}},  // the cross-module tests may include anything
