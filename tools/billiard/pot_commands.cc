@@ -47,6 +47,12 @@ void PrintPlan(const pot::PotPlan& plan) {
             << " simulations, " << plan.solve_us << " us\n";
 }
 
+// `scene` as a scene file at `path`, or a usage error naming `option`.
+void WriteScene(const params::SceneFile& scene, const std::string& path, const std::string& option) {
+  std::ofstream out(path);
+  if (!(out << params::SceneJson(scene) << "\n")) throw UsageError(option + ": cannot write '" + path + "'");
+}
+
 void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
   params::SceneFile scene;
   try {
@@ -88,8 +94,7 @@ void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
         b.state.segment<3>(physics::kWx) = plan.w0;
       }
     }
-    std::ofstream out(args.scene_out);
-    if (!(out << params::SceneJson(played) << "\n")) throw UsageError("--scene-out: cannot write '" + args.scene_out + "'");
+    WriteScene(played, args.scene_out, "--scene-out");
   }
   if (args.json) {
     nlohmann::json j = PotPlanJson(plan);
@@ -191,7 +196,8 @@ void AddPotLayoutCommand(CLI::App& app) {
     const double radius = params.ball.radius;
     pot::testing::PotLayout layout;
     bool clear = false;
-    // A clear line turns up in about one layout in five (docs/benchmarks/pot_report.md).
+    // A clear line with a cut below 80 deg turns up in about one layout in five
+    // (docs/benchmarks/pot_report.md), below 60 deg in about one in fifteen.
     constexpr std::uint64_t kClearTries = 1000;
     // Each seed searches layouts of its own (seed x kClearTries onwards), so that seeds in a row
     // give different layouts.
@@ -203,15 +209,14 @@ void AddPotLayoutCommand(CLI::App& app) {
     }
     if (args->clear && !clear) {
       throw Refused("no layout in " + std::to_string(kClearTries) + " from seed " +
-                    std::to_string(args->seed) + " has a clear straight line on " + geometry.name);
+                    std::to_string(first) + " has a clear straight line on " + geometry.name);
     }
     params::SceneFile scene;
     scene.table = args->table;
     scene.params = args->params;
     scene.balls = layout.balls;
     if (!args->out.empty()) {
-      std::ofstream out(args->out);
-      if (!(out << params::SceneJson(scene) << "\n")) throw UsageError("--out: cannot write '" + args->out + "'");
+      WriteScene(scene, args->out, "--out");
     }
     std::cerr << "pot-layout: seed " << layout.seed << ", " << layout.balls.size() << " balls on "
               << geometry.name << "; pot ball " << layout.request.ball << " in "
