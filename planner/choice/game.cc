@@ -185,6 +185,7 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
     }
     ball_in_hand = rec.foul;
     new_visit = rec.foul || rec.potted.empty();
+    if (new_visit && options.single_visit) break;
     if (new_visit) ++visit;
   }
   sum.run_out = sum.cleared && sum.visits == 1;

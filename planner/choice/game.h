@@ -42,6 +42,7 @@ struct GameOptions {
   bool break_shot = false;
   double break_speed = 5.0;  // [m/s]
   int placements = 3;        // ball in hand: places chosen among
+  bool single_visit = false;  // stop when the first visit ends (a run-out drill)
 };
 
 struct ShotRecord {

@@ -209,6 +209,79 @@ std::vector<Placement> CandidatePlacements(const table::TableGeometry& table, do
   return best;
 }
 
+// Screens candidates `which`: screen_samples closed-form executions each, their legal pot rate
+// and, with the lookahead, the mean next-shot value of those that pot; score p (1 + v). Returns
+// the simulations run.
+int Screen(const table::TableGeometry& table, const physics::ModelParameters& params,
+           const std::vector<table::SceneBall>& balls, const std::vector<std::size_t>& which,
+           const ChoiceOptions& options, batch::ThreadPool& pool, std::vector<Candidate>* candidates) {
+  const std::vector<Execution> screened = ExecuteAll(table, params, balls, *candidates, which,
+                                                     options.screen_samples, options, {},
+                                                     options.lookahead, pool);
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    Candidate& c = (*candidates)[which[k]];
+    int successes = 0;
+    double value_sum = 0.0;
+    for (int s = 0; s < options.screen_samples; ++s) {
+      const Execution& e = screened[k * options.screen_samples + s];
+      successes += e.potted;
+      value_sum += e.next_value;
+    }
+    c.screen_probability = Binomial(successes, options.screen_samples).probability;
+    const double value = successes > 0 ? value_sum / successes : 0.0;
+    c.score = options.lookahead ? c.screen_probability * (1 + value) : c.screen_probability;
+  }
+  return static_cast<int>(screened.size());
+}
+
+// The screening's order: the score, ties (often several pots screened at 1) to the wider
+// heading window.
+bool ScreenedBetter(const Candidate& a, const Candidate& b) {
+  if (a.score != b.score) return a.score > b.score;
+  return std::min(a.plan.margin_left_deg, a.plan.margin_right_deg) >
+         std::min(b.plan.margin_left_deg, b.plan.margin_right_deg);
+}
+
+// The best `position_plans` screened candidates planned again with a cue-ball target: the place
+// the next shot looks easiest from (CandidatePlacements on the table without the object ball).
+std::vector<Candidate> PositionCandidates(const table::TableGeometry& table,
+                                          const physics::ModelParameters& params,
+                                          const std::vector<table::SceneBall>& balls,
+                                          std::vector<Candidate> screened,
+                                          const ChoiceOptions& options, batch::ThreadPool& pool) {
+  std::stable_sort(screened.begin(), screened.end(), ScreenedBetter);
+  std::vector<pot::PotRequest> requests;
+  for (const Candidate& c : screened) {
+    if (static_cast<int>(requests.size()) >= options.position_plans) break;
+    if (c.screen_probability <= 0) break;
+    std::vector<table::SceneBall> after;
+    for (const table::SceneBall& b : balls) {
+      if (b.id != c.plan.ball) after.push_back(b);
+    }
+    const std::vector<Placement> places =
+        CandidatePlacements(table, params.ball.radius, after, options);
+    if (places.empty()) continue;
+    pot::PotRequest r;
+    r.ball = c.plan.ball;
+    r.pocket = c.plan.pocket;
+    r.kind = c.plan.kind;
+    r.cue_target = pot::CueTarget{places.front().place, options.position_radius};
+    requests.push_back(r);
+  }
+  auto plans = pool.Map(requests.size(), [&](std::size_t i) {
+    return pot::PlanPot(table, params, balls, requests[i], options.pot);
+  });
+  std::vector<Candidate> played;
+  for (std::size_t i = 0; i < plans.size(); ++i) {
+    if (!plans[i].ok() || plans[i].value->status != pot::PotStatus::kOk) continue;
+    Candidate c;
+    c.plan = std::move(*plans[i].value);
+    c.position_target = requests[i].cue_target->point;
+    played.push_back(std::move(c));
+  }
+  return played;
+}
+
 }  // namespace
 
 const char* RulesName(Rules rules) { return rules == Rules::kNineBall ? "nine-ball" : "any"; }
@@ -416,27 +489,23 @@ ChoiceResult ChooseShot(const table::TableGeometry& table, const physics::ModelP
   std::vector<Candidate>& candidates = result.candidates;
 
   // Screening: every candidate on the closed form.
-  std::vector<std::size_t> all(candidates.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  const std::vector<Execution> screened = ExecuteAll(
-      table, params, balls, candidates, all, options.screen_samples, options, {}, false, pool);
-  result.simulations += static_cast<int>(screened.size());
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    int successes = 0;
-    for (int s = 0; s < options.screen_samples; ++s) {
-      successes += screened[i * options.screen_samples + s].potted;
+  std::vector<std::size_t> plain(candidates.size());
+  for (std::size_t i = 0; i < plain.size(); ++i) plain[i] = i;
+  result.simulations += Screen(table, params, balls, plain, options, pool, &candidates);
+  // Position play for the best few: the same pot leaving the cue ball where the next shot looks
+  // easiest.
+  if (options.lookahead && options.position_plans > 0) {
+    std::vector<Candidate> played =
+        PositionCandidates(table, params, balls, candidates, options, pool);
+    std::vector<std::size_t> added;
+    for (Candidate& c : played) {
+      result.simulations += c.plan.simulations;
+      added.push_back(candidates.size());
+      candidates.push_back(std::move(c));
     }
-    candidates[i].screen_probability = Binomial(successes, options.screen_samples).probability;
-    candidates[i].score = candidates[i].screen_probability;
+    result.simulations += Screen(table, params, balls, added, options, pool, &candidates);
   }
-  // Ties (often several pots screened at 1) go to the wider heading window.
-  auto window = [](const Candidate& c) {
-    return std::min(c.plan.margin_left_deg, c.plan.margin_right_deg);
-  };
-  std::stable_sort(candidates.begin(), candidates.end(), [&](const Candidate& a, const Candidate& b) {
-    if (a.screen_probability != b.screen_probability) return a.screen_probability > b.screen_probability;
-    return window(a) > window(b);
-  });
+  std::stable_sort(candidates.begin(), candidates.end(), ScreenedBetter);
 
   // The finalists on the full model, with the lookahead.
   std::vector<std::size_t> finalists;

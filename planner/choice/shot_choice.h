@@ -6,7 +6,9 @@
 //  1. candidates: every legal object ball (all of them, or under nine-ball rules the
 //     lowest-numbered) x every pocket x every kind (direct, bank, kick, curve) that plans;
 //  2. screening: each candidate's probability from a few noisy executions with the closed-form
-//     motion (Jaroukh 2019, exact for the level-cue paths most pots are, and cheap);
+//     motion (Jaroukh 2019, exact for the level-cue paths most pots are, and cheap), and the
+//     best few planned again with position play (the cue ball sent to where the next shot looks
+//     easiest) and screened too;
 //  3. the finalists (the few best screened) with many noisy executions on the full model the
 //     table runs (model_choice::TableMotion): the probability of a legal pot (the object ball
 //     in the called pocket, the cue ball's first contact that ball, no scratch) and its
@@ -159,6 +161,10 @@ struct ChoiceOptions {
   bool lookahead = true;  // score p (1 + v); false: p alone
   // Below this probability the choice says that no shot is likely.
   double likely = 0.5;
+  // With the lookahead, the best screened candidates planned again with position play: the cue
+  // ball sent within position_radius of the place the next shot looks easiest from.
+  int position_plans = 3;
+  double position_radius = 0.15;  // [m]
   std::vector<pot::ShotKind> kinds = {pot::ShotKind::kDirect, pot::ShotKind::kBank,
                                       pot::ShotKind::kKick, pot::ShotKind::kCurve};
   pot::PotOptions pot;
@@ -166,11 +172,12 @@ struct ChoiceOptions {
 
 struct Candidate {
   pot::PotPlan plan;
+  std::optional<Eigen::Vector2d> position_target;  // position play: where the cue ball is sent
   double screen_probability = 0.0;
   bool finalist = false;
   PotProbability full;           // finalists only
   double next_shot_value = 0.0;  // mean over the potting executions; finalists only
-  double score = 0.0;            // the finalists' p (1 + v) (or p); others: the screened p
+  double score = 0.0;  // p (1 + v), or p without the lookahead: the full model's for finalists
 };
 
 enum class ChoiceStatus {

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "bench/game_benchmark.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
@@ -85,6 +86,7 @@ nlohmann::json CandidateJson(const choice::Candidate& c) {
   j.erase("events");
   j["screen_probability"] = c.screen_probability;
   j["finalist"] = c.finalist;
+  j["position_target"] = c.position_target ? Point(*c.position_target) : nlohmann::json(nullptr);
   if (c.finalist) {
     j["success_probability"] = c.full.probability;
     j["probability_stderr"] = c.full.stderr_;
@@ -129,6 +131,8 @@ nlohmann::json ChoiceJson(const choice::ChoiceResult& r) {
     c["samples"] = chosen->full.samples;
     c["next_shot_value"] = chosen->next_shot_value;
     c["score"] = chosen->score;
+    c["position_target"] =
+        chosen->position_target ? Point(*chosen->position_target) : nlohmann::json(nullptr);
     j["choice"] = c;
   } else {
     j["choice"] = nullptr;
@@ -284,6 +288,41 @@ void AddPlayCommand(CLI::App& app) {
       j["seed"] = args->seed;
       std::cout << j.dump() << std::endl;
     }
+  });
+}
+
+void AddBenchGameCommand(CLI::App& app) {
+  struct Args {
+    bench::GameBenchmarkOptions options;
+    std::string out;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench-game",
+      "The shot choice on seeded nine-ball layouts: calibration (a reliability diagram), ours "
+      "against the baselines under both noises, decision time (JSON summary on stdout)");
+  bench::GameBenchmarkOptions& o = args->options;
+  cmd->add_option("--layouts", o.layouts, "Drills from ball in hand per noise and policy")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd->add_option("--calibration-layouts", o.calibration_layouts, "Choices whose finalists are replayed")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd->add_option("--executions", o.executions, "Replays of each finalist")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--samples", o.samples, "The choice's full-model executions per finalist")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", o.seed, "The first layout's seed")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Threads")->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--out", args->out, "Write game_report.md, game_reliability.png and game_results.json here");
+  cmd->callback([args] {
+    if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
+    bench::GameBenchmarkOptions options = args->options;
+    options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
+    const bench::GameBenchmarkResult result = bench::RunGameBenchmark(options);
+    if (!args->out.empty()) {
+      bench::WriteGameReport(result, args->out);
+      std::cerr << "bench-game: wrote " << args->out << "/game_report.md\n";
+    }
+    std::cout << bench::GameSummaryJson(result).dump() << std::endl;
   });
 }
 

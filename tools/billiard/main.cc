@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddBenchPotCommand(app);
   billiard::cli::AddChooseShotCommand(app);
   billiard::cli::AddPlayCommand(app);
+  billiard::cli::AddBenchGameCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
