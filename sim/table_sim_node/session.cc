@@ -49,7 +49,7 @@ physics::ModelParameters PlantParameters(const std::string& name_or_path,
 
 }  // namespace
 
-ExecutionNoise RobotExecutionNoise() { return {0.01, 0.1 * M_PI / 180.0, 0.5e-3}; }
+ExecutionNoise RobotExecutionNoise() { return params::LoadNoise(params::kDefaultNoise); }
 
 void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
   TableSimOptions& options = line->options;
@@ -66,7 +66,7 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
   app.add_option("--seed", options.seed, "Seed of the targets and the noise")
       ->capture_default_str();
   app.add_option("--noise", line->noise,
-                 "Execution noise of the robot: on (speed 1 %, heading 0.1 deg, tip 0.5 mm) or off")
+                 "Execution noise of the robot: on (sim/params/noise/robot.json) or off")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   app.add_option("--camera-rate", options.camera_rate, "Frames per second")->capture_default_str();

@@ -24,14 +24,14 @@ struct SessionCommandLine {
   std::string lcm_url;  // empty: $LCM_DEFAULT_URL, else LCM's default
   std::string params = params::kDefaultParameterSet;
   std::string plant_params;  // --plant-params: the table's own physics; empty: `params`
-  std::string noise = "off";  // "on": the robot's execution noise of kExecutionNoise
+  std::string noise = "off";  // "on": the robot's execution noise, RobotExecutionNoise()
   bool realtime = false;
   std::vector<std::string> pots;  // --pot K:P, in order
   TableSimOptions options;
 };
 
-// The robot's execution noise with --noise on: 1 % of the cue speed, 0.1 degree of heading and
-// 0.5 mm of each tip offset (standard deviations).
+// The robot's execution noise with --noise on: the built-in model params::kDefaultNoise
+// (sim/params/noise/robot.json), the one the shot choice plans for.
 ExecutionNoise RobotExecutionNoise();
 
 // Adds the session's options to `app`, filling `line` when it parses.

@@ -366,19 +366,8 @@ void TableSimNode::Track(const std::vector<TruthBall>& balls, double t,
 
 physics::CueStroke TableSimNode::WithNoise(physics::CueStroke stroke) {
   std::normal_distribution<double> unit(0.0, 1.0);
-  const ExecutionNoise& n = options_.noise;
-  stroke.speed *= 1.0 + n.speed * unit(noise_rng_);
-  stroke.heading += n.heading * unit(noise_rng_);
-  stroke.tip_side += n.tip_offset * unit(noise_rng_);
-  stroke.tip_height += n.tip_offset * unit(noise_rng_);
-  // A tip pushed past the ball's edge would miscue: keep it on the ball.
-  const double offset = std::hypot(stroke.tip_side, stroke.tip_height);
-  const double limit = 0.95 * params_.ball.radius;
-  if (offset > limit) {
-    stroke.tip_side *= limit / offset;
-    stroke.tip_height *= limit / offset;
-  }
-  return stroke;
+  return params::Perturbed(stroke, options_.noise, params_.ball.radius,
+                           [&] { return unit(noise_rng_); });
 }
 
 std::vector<ShotResult> TableSimNode::Run() {

@@ -41,6 +41,7 @@
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/node/node_health.h"
 #include "sim/camera/camera_model.h"
+#include "sim/params/execution_noise.h"
 #include "sim/physics/ball_state.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
@@ -51,11 +52,8 @@
 
 namespace billiard::table_sim_node {
 
-struct ExecutionNoise {
-  double speed = 0.0;       // relative standard deviation of the cue speed
-  double heading = 0.0;     // standard deviation of the heading [rad]
-  double tip_offset = 0.0;  // standard deviation of each tip offset [m]
-};
+// The robot's execution noise (sim/params/execution_noise.h): none unless asked for.
+using ExecutionNoise = params::ExecutionNoise;
 
 // What a lossy link between the table and the nodes does, each a probability per message.
 struct FaultInjection {

@@ -12,6 +12,7 @@
 #include "tools/billiard/bench_estimator_command.h"
 #include "tools/billiard/bench_planner_command.h"
 #include "tools/billiard/burst_command.h"
+#include "tools/billiard/choice_commands.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/detect_command.h"
 #include "tools/billiard/edge_report_command.h"
@@ -67,6 +68,9 @@ int main(int argc, char** argv) {
   billiard::cli::AddPlanPotCommand(app);
   billiard::cli::AddBenchPotCommand(app);
   billiard::cli::AddPotLayoutCommand(app);
+  billiard::cli::AddChooseShotCommand(app);
+  billiard::cli::AddPlayCommand(app);
+  billiard::cli::AddBenchGameCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,329 @@
+#include "tools/billiard/choice_commands.h"
+
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "bench/game_benchmark.h"
+#include "sim/batch/thread_pool.h"
+#include "sim/params/execution_noise.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/params/scene_file.h"
+#include "sim/table/rack.h"
+#include "tools/billiard/command_line.h"
+#include "tools/billiard/pot_commands.h"
+#include "tools/billiard/scene_commands.h"
+
+namespace billiard::cli {
+
+namespace {
+
+nlohmann::json Point(const Eigen::Vector2d& p) { return {p.x(), p.y()}; }
+
+// The options every choice command shares.
+struct ChoiceArgs {
+  std::string rules = "any";
+  std::string noise = params::kDefaultNoise;
+  int samples = 64;
+  std::uint64_t seed = 1;
+  int threads = batch::DefaultThreadCount();
+  bool json = false;
+};
+
+void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
+  cmd->add_option("--rules", args->rules, "any | nine-ball")->capture_default_str();
+  cmd->add_option("--noise", args->noise,
+                  "The execution noise: robot | computational-pool | a JSON file (sim/params/noise/)")
+      ->capture_default_str();
+  cmd->add_option("--samples", args->samples, "Full-model executions of each finalist")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", args->seed, "Seed of the sampled noise")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Threads (the results do not depend on them)")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
+}
+
+choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
+  choice::ChoiceOptions options;
+  const auto rules = choice::ParseRules(args.rules);
+  if (!rules) throw UsageError("--rules: unknown rules '" + args.rules + "' (any, nine-ball)");
+  options.rules = *rules;
+  try {
+    options.noise = params::LoadNoise(args.noise);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--noise: ") + e.what());
+  }
+  options.samples = args.samples;
+  options.seed = args.seed;
+  return options;
+}
+
+struct LoadedScene {
+  physics::ModelParameters params;
+  table::TableGeometry table;
+  std::vector<table::SceneBall> balls;
+};
+
+LoadedScene LoadSceneOption(const std::string& path) {
+  params::SceneFile scene;
+  try {
+    scene = params::LoadScene(path);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  LoadedScene s{LoadParametersOption(scene.params), LoadTableOption(scene.table), {}};
+  try {
+    s.balls = params::LaunchedBalls(scene, s.params);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(path + ": " + e.what());
+  }
+  return s;
+}
+
+nlohmann::json CandidateJson(const choice::Candidate& c) {
+  nlohmann::json j = PotPlanJson(c.plan);
+  j.erase("paths");
+  j.erase("events");
+  j["screen_probability"] = c.screen_probability;
+  j["finalist"] = c.finalist;
+  j["position_target"] = c.position_target ? Point(*c.position_target) : nlohmann::json(nullptr);
+  if (c.finalist) {
+    j["success_probability"] = c.full.probability;
+    j["probability_stderr"] = c.full.stderr_;
+    j["samples"] = c.full.samples;
+    j["next_shot_value"] = c.next_shot_value;
+  }
+  j["score"] = c.score;
+  return j;
+}
+
+void PrintChoice(const choice::ChoiceResult& r) {
+  std::cerr << "choose-shot: " << choice::ChoiceStatusName(r.status);
+  if (!r.reason.empty()) std::cerr << " (" << r.reason << ")";
+  std::cerr << "\n";
+  if (r.cue_placement) {
+    std::cerr << "  cue ball in hand at " << r.cue_placement->x() << ", " << r.cue_placement->y()
+              << " m\n";
+  }
+  for (const choice::Candidate& c : r.candidates) {
+    if (!c.finalist) continue;
+    std::cerr << "  ball " << c.plan.ball << " in " << c.plan.pocket << " ("
+              << pot::ShotKindName(c.plan.kind) << "): p " << c.full.probability << " +- "
+              << c.full.stderr_ << ", next shot " << c.next_shot_value << ", score " << c.score
+              << "\n";
+  }
+  std::cerr << "  " << r.candidates.size() << " candidates, " << r.simulations << " simulations, "
+            << r.decision_us / 1000 << " ms\n";
+}
+
+}  // namespace
+
+nlohmann::json ChoiceJson(const choice::ChoiceResult& r) {
+  nlohmann::json j;
+  j["status"] = choice::ChoiceStatusName(r.status);
+  j["reason"] = r.reason;
+  j["likely"] = r.likely;
+  const choice::Candidate* chosen = r.chosen();
+  if (chosen) {
+    nlohmann::json c = PotPlanJson(chosen->plan);
+    c["success_probability"] = chosen->full.probability;
+    c["probability_stderr"] = chosen->full.stderr_;
+    c["samples"] = chosen->full.samples;
+    c["next_shot_value"] = chosen->next_shot_value;
+    c["score"] = chosen->score;
+    c["position_target"] =
+        chosen->position_target ? Point(*chosen->position_target) : nlohmann::json(nullptr);
+    j["choice"] = c;
+  } else {
+    j["choice"] = nullptr;
+  }
+  j["candidates"] = nlohmann::json::array();
+  for (const choice::Candidate& c : r.candidates) j["candidates"].push_back(CandidateJson(c));
+  j["cue_placement"] = r.cue_placement ? Point(*r.cue_placement) : nlohmann::json(nullptr);
+  if (r.fallback) j["fallback"] = CueStrokeJson(*r.fallback);
+  j["simulations"] = r.simulations;
+  j["decision_us"] = r.decision_us;
+  return j;
+}
+
+nlohmann::json GameJson(const choice::GameRecord& game) {
+  nlohmann::json shots = nlohmann::json::array();
+  for (const choice::ShotRecord& s : game.shots) {
+    nlohmann::json j;
+    j["shot"] = s.number;
+    j["visit"] = s.visit;
+    j["break"] = s.break_shot;
+    j["ball_in_hand"] = s.ball_in_hand;
+    j["cue_placement"] = s.cue_placement ? Point(*s.cue_placement) : nlohmann::json(nullptr);
+    j["status"] = s.status;
+    j["ball"] = s.ball;
+    j["pocket"] = s.pocket;
+    j["kind"] = s.kind;
+    j["predicted"] = s.predicted;
+    j["likely"] = s.likely;
+    j["first_contact"] = s.first_contact;
+    j["potted"] = s.potted;
+    j["called_potted"] = s.called_potted;
+    j["foul"] = s.foul;
+    j["foul_reason"] = s.foul_reason;
+    j["decision_us"] = s.decision_us;
+    shots.push_back(j);
+  }
+  const choice::GameSummary& m = game.summary;
+  nlohmann::json summary = {{"shots", m.shots},
+                            {"attempts", m.attempts},
+                            {"pots", m.pots},
+                            {"pots_per_attempt", m.pots_per_attempt()},
+                            {"fouls", m.fouls},
+                            {"visits", m.visits},
+                            {"balls_potted", m.balls_potted},
+                            {"balls_per_visit", m.visits ? double(m.balls_potted) / m.visits : 0.0},
+                            {"cleared", m.cleared},
+                            {"run_out", m.run_out},
+                            {"median_decision_us", m.median_decision_us}};
+  nlohmann::json left = nlohmann::json::array();
+  for (const table::SceneBall& b : game.final_balls) left.push_back(b.id);
+  return {{"shots", shots}, {"summary", summary}, {"balls_left", left}};
+}
+
+void AddChooseShotCommand(CLI::App& app) {
+  struct Args : ChoiceArgs {
+    std::string scene_path;
+    bool ball_in_hand = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "choose-shot",
+      "Choose the pot most likely to drop under the robot's execution noise, with a one-shot "
+      "lookahead (exit 3 if there is none to play)");
+  cmd->add_option("--scene", args->scene_path, "The scene JSON (as simulate --scene), every ball at rest")
+      ->required();
+  cmd->add_flag("--ball-in-hand", args->ball_in_hand,
+                "Place the cue ball first (where the choice scores best); the scene's cue ball, if any, is lifted");
+  AddChoiceOptions(cmd, args.get());
+  cmd->callback([args] {
+    const LoadedScene s = LoadSceneOption(args->scene_path);
+    const choice::ChoiceOptions options = ChoiceOptionsOf(*args);
+    batch::ThreadPool pool(args->threads);
+    const choice::ChoiceResult r =
+        args->ball_in_hand ? choice::ChooseWithBallInHand(s.table, s.params, s.balls, options, pool)
+                           : choice::ChooseShot(s.table, s.params, s.balls, options, pool);
+    if (args->json) {
+      nlohmann::json j = ChoiceJson(r);
+      j["rules"] = choice::RulesName(options.rules);
+      j["noise"] = options.noise.name;
+      j["table"] = s.table.name;
+      DescribeParameters(s.params, &j);
+      std::cout << j.dump() << std::endl;
+    } else {
+      PrintChoice(r);
+    }
+    if (r.status != choice::ChoiceStatus::kOk) {
+      throw Refused(std::string(choice::ChoiceStatusName(r.status)) + ": " + r.reason);
+    }
+  });
+}
+
+void AddPlayCommand(CLI::App& app) {
+  struct Args : ChoiceArgs {
+    std::string scene_path;
+    std::string rack;
+    std::string policy = "ours";
+    int shot_limit = 40;
+    bool ball_in_hand = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "play",
+      "Play a whole rack in simulation: shot by shot choice, execution with the noise, the "
+      "rules' judgement, and a summary (pots per attempt, run-out, fouls)");
+  CLI::Option* scene = cmd->add_option("--scene", args->scene_path, "The scene JSON, every ball at rest");
+  CLI::Option* rack = cmd->add_option("--rack", args->rack, "nine-ball: the seeded rack, broken first");
+  scene->excludes(rack);
+  cmd->add_option("--policy", args->policy, "ours | no-lookahead | easiest-looking")->capture_default_str();
+  cmd->add_option("--shot-limit", args->shot_limit, "Shots at most")->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_flag("--ball-in-hand", args->ball_in_hand, "Start with the cue ball in hand (a drill)");
+  AddChoiceOptions(cmd, args.get());
+  cmd->callback([args, scene, rack] {
+    if (!scene->count() && !rack->count()) throw UsageError("play: give --scene S.json or --rack nine-ball");
+    LoadedScene s;
+    choice::GameOptions options;
+    options.choice = ChoiceOptionsOf(*args);
+    if (rack->count()) {
+      if (args->rack != "nine-ball") throw UsageError("--rack: only nine-ball is played");
+      s.params = LoadParametersOption(params::kDefaultParameterSet);
+      s.table = LoadTableOption("pool-9ft");
+      s.balls = table::Rack(table::RackKind::kNineBall, s.table, s.params.ball.radius, args->seed);
+      options.break_shot = !args->ball_in_hand;
+      if (args->rules == "any") options.choice.rules = choice::Rules::kNineBall;
+    } else {
+      s = LoadSceneOption(args->scene_path);
+    }
+    if (args->policy == "ours") options.policy = choice::Policy::kOurs;
+    else if (args->policy == "no-lookahead") options.policy = choice::Policy::kNoLookahead;
+    else if (args->policy == "easiest-looking") options.policy = choice::Policy::kEasiestLooking;
+    else throw UsageError("--policy: unknown policy '" + args->policy + "'");
+    options.execution = options.choice.noise;
+    options.seed = args->seed;
+    options.shot_limit = args->shot_limit;
+    options.ball_in_hand = args->ball_in_hand;
+    batch::ThreadPool pool(args->threads);
+    const choice::GameRecord game = choice::PlayGame(s.table, s.params, s.balls, options, pool);
+    for (const choice::ShotRecord& r : game.shots) {
+      std::cerr << "shot " << r.number << " (visit " << r.visit << "): ";
+      if (r.break_shot) std::cerr << "break";
+      else if (r.ball >= 0) std::cerr << "ball " << r.ball << " in " << r.pocket << " (" << r.kind << ", p " << r.predicted << ")";
+      else std::cerr << r.status;
+      std::cerr << " -> potted " << r.potted.size() << (r.foul ? ", foul: " + r.foul_reason : "") << "\n";
+    }
+    const choice::GameSummary& m = game.summary;
+    std::cerr << "play: " << (m.cleared ? "cleared" : "not cleared") << " in " << m.shots << " shots, "
+              << m.visits << " visits, " << m.pots << " of " << m.attempts << " attempts potted, "
+              << m.fouls << " fouls" << (m.run_out ? ", a run-out" : "") << "\n";
+    if (args->json) {
+      nlohmann::json j = GameJson(game);
+      j["rules"] = choice::RulesName(options.choice.rules);
+      j["noise"] = options.choice.noise.name;
+      j["policy"] = choice::PolicyName(options.policy);
+      j["seed"] = args->seed;
+      std::cout << j.dump() << std::endl;
+    }
+  });
+}
+
+void AddBenchGameCommand(CLI::App& app) {
+  struct Args {
+    bench::GameBenchmarkOptions options;
+    std::string out;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench-game",
+      "The shot choice on seeded nine-ball layouts: calibration (a reliability diagram), ours "
+      "against the baselines under both noises, decision time (JSON summary on stdout)");
+  bench::GameBenchmarkOptions& o = args->options;
+  cmd->add_option("--layouts", o.layouts, "Drills from ball in hand per noise and policy")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd->add_option("--calibration-layouts", o.calibration_layouts, "Choices whose finalists are replayed")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd->add_option("--executions", o.executions, "Replays of each finalist")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--samples", o.samples, "The choice's full-model executions per finalist")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", o.seed, "The first layout's seed")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Threads")->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--out", args->out, "Write game_report.md, game_reliability.png and game_results.json here");
+  cmd->callback([args] {
+    if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
+    bench::GameBenchmarkOptions options = args->options;
+    options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
+    const bench::GameBenchmarkResult result = bench::RunGameBenchmark(options);
+    if (!args->out.empty()) {
+      bench::WriteGameReport(result, args->out);
+      std::cerr << "bench-game: wrote " << args->out << "/game_report.md\n";
+    }
+    std::cout << bench::GameSummaryJson(result).dump() << std::endl;
+  });
+}
+
+}  // namespace billiard::cli

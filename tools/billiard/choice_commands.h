@@ -1,0 +1,23 @@
+// The shot-choice subcommands: `billiard choose-shot` (which pot to play under the robot's
+// execution noise), `billiard play` (a rack played shot by shot in simulation) and `billiard
+// bench-game` (calibration, baselines and decision time on seeded nine-ball layouts).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "planner/choice/game.h"
+#include "planner/choice/shot_choice.h"
+
+namespace billiard::cli {
+
+// A choice as `choose-shot --json` prints it.
+nlohmann::json ChoiceJson(const choice::ChoiceResult& result);
+// A game as `play --json` prints it: the shots and the summary.
+nlohmann::json GameJson(const choice::GameRecord& game);
+
+void AddChooseShotCommand(CLI::App& app);
+void AddPlayCommand(CLI::App& app);
+void AddBenchGameCommand(CLI::App& app);
+
+}  // namespace billiard::cli
