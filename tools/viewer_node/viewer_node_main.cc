@@ -1,6 +1,8 @@
 // build/bin/viewer_node [--lcm-url URL] [--params SET] [--host ADDRESS] [--port N]
 #include <CLI/CLI.hpp>
 #include <httplib.h>
+#include <atomic>
+#include <chrono>
 
 #include <iostream>
 #include <memory>
@@ -35,6 +37,7 @@ int main(int argc, char** argv) {
   }
   httplib::Server server;
   std::unique_ptr<std::thread> serving;
+  std::atomic<bool> listening_ended{false};
   std::unique_ptr<billiard::viewer::ViewState> view;
   const int status = billiard::nodes::RunNodeUntilStopped(
       "viewer_node", lcm_url, [&](lcm::LCM& lcm) -> std::function<bool()> {
@@ -61,7 +64,15 @@ int main(int argc, char** argv) {
           throw std::runtime_error("cannot listen on " + host + ":" + std::to_string(port));
         }
         std::cerr << "viewer_node: http://" << host << ":" << port << "/" << std::endl;
-        serving = std::make_unique<std::thread>([&] { server.listen_after_bind(); });
+        serving = std::make_unique<std::thread>([&] {
+          server.listen_after_bind();
+          listening_ended = true;
+        });
+        // httplib's stop() does nothing until the listening loop has started, and a stop that
+        // came first would leave the loop (and the join below) running for ever.
+        while (!server.is_running() && !listening_ended) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
         return nullptr;
       });
   server.stop();
