@@ -29,8 +29,11 @@ using table::TableEvent;
 using table::TableSimulation;
 
 constexpr double kDegree = M_PI / 180.0;
-// The aim is refined until K leaves along the window's middle to this [rad]: 1 um at a metre.
-constexpr double kAimTolerance = 1e-6;
+// The aim is refined until K leaves along the window's middle to this [rad]: 10 um at a metre, a
+// thousandth of a pocket's window seen from a metre (its edges are known to 1e-3 rad). An aim left
+// further off than kAimAccepted is none.
+constexpr double kAimTolerance = 1e-5;
+constexpr double kAimAccepted = 1e-4;
 constexpr int kMaxAimIterations = 12;
 // The first difference of the aim's residual is taken over this heading step [rad].
 constexpr double kAimProbe = 1e-4;
@@ -46,16 +49,20 @@ constexpr double kWindowStep = 0.2 * kDegree;
 constexpr double kWindowResolution = 1e-3;
 constexpr double kCoarseWindowResolution = 1e-3;
 constexpr double kWidestWindow = 20.0 * kDegree;
-// The heading margin's edges are bracketed within kHeadingBracket of the edge predicted and the
-// bracket's inside taken (so that 0.9 of the margin pots and 1.1 misses: 1.1 x 0.96 > 1.04);
-// where the prediction is off, bisection to kHeadingResolution. The speed window more coarsely
-// (it is what the robot's speed may be off by, not what it aims with).
-constexpr double kHeadingBracket = 0.04;
+// The heading margin is what the truth says to kMarginTolerance: 1 - kMarginTolerance of it pots
+// and 1 + kMarginTolerance misses. Each edge is bracketed between a heading that pots and one
+// that misses, kHeadingBracket either side of the edge predicted, and where the prediction is off
+// by bisection until the outside is within kHeadingResolution of the inside (beyond the inside by
+// less than (1 + 0.1) / (1 - 0.1) = 1.22: a margin lies between them, 0.9 of it inside, 1.1 of
+// it outside). The speed window more coarsely (it is what the robot's speed may be off by, not
+// what it aims with).
+constexpr double kMarginTolerance = 0.1;
+constexpr double kHeadingBracket = 0.09;
 // A margin's bisection halves its bracket at most this often (an edge at the aim itself).
 constexpr int kEdgeHalvings = 12;
 // An edge's first guess is at least this fraction of the way to its limit.
 constexpr double kSmallestEdge = 1e-4;
-constexpr double kHeadingResolution = 0.02;
+constexpr double kHeadingResolution = 0.2;
 constexpr double kSpeedBracket = 0.1;
 constexpr double kSpeedResolution = 0.1;
 // Planning scenes that need more events are refused; a pot takes tens.
@@ -66,6 +73,11 @@ constexpr double kLongestTime = 10.0;
 // cheaper than Mathavan et al. 2010's integrated impact: the truth, which finds the margin, has
 // the set's own.
 constexpr table::CushionModel kSearchCushion = table::CushionModel::kHan2005;
+// Where the search meets rails with Mathavan et al. 2010's impact (a bank's, a kick's, position
+// play's), it integrates each with this many steps per approach momentum, not the truth's
+// table::kMathavanSteps: 5 times cheaper, the rebound angle within 0.07 degrees of the converged
+// one (cushion_impact_test), which the truth's aim and window, found from the search's, take up.
+constexpr double kSearchMathavanSteps = 50.0;
 // A pot's search simulates the balls within this distance of its routes' lines, beyond contact
 // [m]: the drop window is a few degrees wide, 5 cm at a metre.
 constexpr double kNearRoute = 0.15;
@@ -358,6 +370,7 @@ class PotSearch {
   std::unique_ptr<TableSimulation> Simulation(const std::vector<SceneBall>& balls, bool truth) {
     table::TableSimulationOptions o;
     o.cushion_model = truth || rails_matter_ ? options_.cushion_model : kSearchCushion;
+    if (!truth) o.mathavan_steps = kSearchMathavanSteps;
     if (truth) o.five_dof = truth_motion_;
     o.max_events = kMaxPlanEvents;
     ++simulations_;
@@ -582,7 +595,7 @@ class PotSearch {
       c = next;
       f = g;
     }
-    if (!(std::abs(f) <= 100.0 * kAimTolerance) || !std::isfinite(heading)) return std::nullopt;
+    if (!(std::abs(f) <= kAimAccepted) || !std::isfinite(heading)) return std::nullopt;
     return Aimed{heading, c, slope};
   }
 
@@ -880,11 +893,15 @@ class PotSearch {
     return std::nullopt;
   }
 
-  // The largest change of x from x0 for which `pots` still holds, toward `guess` (a predicted
-  // edge) and at most to `limit`: the inside of the guess's own bracket (`bracket` of it either
-  // side) where the edge lies in it, else found by bisection to `resolution` of itself.
-  double Edge(const std::function<bool(double)>& pots, double x0, double guess, double limit,
-              double bracket, double resolution) {
+  // The last x from x0 toward `guess` (a predicted edge), at most `limit`, for which `pots` holds
+  // and the first beyond it that misses (both `limit` where it still pots there): the guess's own
+  // bracket (`bracket` of it either side) where the edge lies in it, else found by bisection
+  // until the two are within `resolution` of the inside's distance from x0.
+  struct Bracket {
+    double in, out;
+  };
+  Bracket Edge(const std::function<bool(double)>& pots, double x0, double guess, double limit,
+               double bracket, double resolution) {
     // A guess at x0 itself (a window of no width) brackets nothing: a small step toward the limit.
     if (!(std::abs(guess - x0) >= kSmallestEdge * std::abs(limit - x0))) {
       guess = x0 + kSmallestEdge * (limit - x0);
@@ -897,11 +914,11 @@ class PotSearch {
     if (pots(out)) {
       in = out;
       out = at(1.0 + bracket);
-      if (!pots(out)) return in;  // within the bracket: its inside
+      if (!pots(out)) return {in, out};  // within the bracket
       double fraction = 1.0 + 4.0 * bracket;
       for (out = at(fraction); pots(out); out = at(fraction)) {  // further out until it misses
         in = out;
-        if (out == limit) return limit;
+        if (out == limit) return {limit, limit};
         fraction *= 2.0;  // at() stops at the limit
       }
     } else if (pots(at(1.0 - 4.0 * bracket))) {  // short of the guess: a wider bracket first
@@ -913,7 +930,18 @@ class PotSearch {
       const double mid = 0.5 * (in + out);
       (pots(mid) ? in : out) = mid;
     }
-    return in;
+    return {in, out};
+  }
+
+  // The heading margin [rad] from a bracket of its edge about `centre`: the one of which
+  // 1 - kMarginTolerance is the inside, a heading played (near a jaw the window may have holes:
+  // what is between the aim and the inside is not all known to pot), its 1 + kMarginTolerance
+  // beyond the outside; or the inside where the bracket is wider than that (an edge at the aim
+  // itself).
+  static double Margin(const Bracket& b, double centre) {
+    const double in = std::abs(b.in - centre), out = std::abs(b.out - centre);
+    const double margin = in / (1.0 - kMarginTolerance);
+    return (1.0 + kMarginTolerance) * margin >= out ? margin : in;
   }
 
   // Margin, speed window and the check against the truth.
@@ -959,19 +987,20 @@ class PotSearch {
     // The margin on the truth: near a jaw whether K rattles in turns on its speed and spin there,
     // which the truth's slide sets. The window's edges mapped to headings through d departure /
     // d heading give each edge's first bracket.
+    // Played to rest: the cue ball may scratch after K drops, as near an edge it may.
     const auto pots_heading = [&](double heading) {
-      return Play(shape.At(heading), true, false).outcome.legal;
+      return Play(shape.At(heading), true).outcome.legal;
     };
     const Aimed& centre = *truth;
     const double slope = std::isfinite(centre.slope) && std::abs(centre.slope) > 1e-9 ? centre.slope : 1.0;
     const double up = (slope > 0.0 ? window.hi - window.Middle() : window.Middle() - window.lo) / std::abs(slope);
     const double down = (slope > 0.0 ? window.Middle() - window.lo : window.hi - window.Middle()) / std::abs(slope);
-    const double left = Edge(pots_heading, centre.heading, centre.heading + up, centre.heading + 0.5 * M_PI,
-                             kHeadingBracket, kHeadingResolution);
-    const double right = Edge(pots_heading, centre.heading, centre.heading - down, centre.heading - 0.5 * M_PI,
+    const Bracket left = Edge(pots_heading, centre.heading, centre.heading + up, centre.heading + 0.5 * M_PI,
                               kHeadingBracket, kHeadingResolution);
-    plan.margin_left_deg = (left - centre.heading) / kDegree;
-    plan.margin_right_deg = (centre.heading - right) / kDegree;
+    const Bracket right = Edge(pots_heading, centre.heading, centre.heading - down, centre.heading - 0.5 * M_PI,
+                               kHeadingBracket, kHeadingResolution);
+    plan.margin_left_deg = Margin(left, centre.heading) / kDegree;
+    plan.margin_right_deg = Margin(right, centre.heading) / kDegree;
     const auto pots_speed = [&](double speed) {
       StrokeShape s = shape;
       s.speed = speed;
@@ -983,11 +1012,11 @@ class PotSearch {
         ? std::sqrt(std::max(0.0, shape.speed * shape.speed - arrival_ * arrival_ / pace_slope_))
         : 0.8 * shape.speed;
     plan.speed_lo = Edge(pots_speed, shape.speed, std::max(kSlowestCue, slowest), kSlowestCue,
-                         kSpeedBracket, kSpeedResolution);
+                         kSpeedBracket, kSpeedResolution).in;
     plan.speed_hi = pots_speed(params_.cue.max_speed)
         ? params_.cue.max_speed
         : Edge(pots_speed, shape.speed, std::min(params_.cue.max_speed, 1.25 * shape.speed),
-               params_.cue.max_speed, kSpeedBracket, kSpeedResolution);
+               params_.cue.max_speed, kSpeedBracket, kSpeedResolution).in;
 
     const std::size_t cue = IndexOf(*played.sim, 0);
     plan.v0 = played.sim->StateAt(cue, 0.0).segment<2>(physics::kVx);

@@ -9,12 +9,11 @@
 namespace billiard::table {
 namespace {
 
-// Steps per M v.y of normal impulse (compression takes about this many). The steps are explicit
-// and first order, and chatter where a contact grips. Measured against 100000 steps over random
-// incidences and spins up to 3 v / R (pool set): with 250 the velocity is within 2e-4 of the
-// approach speed, R w within 1.2e-3 of it and the rebound angle within 0.01 degrees; 500 are no
-// better (the chatter), 1000 halve those.
-constexpr double kImpulseStepsPerApproachMomentum = 250.0;
+// kMathavanSteps, steps per M v.y of normal impulse: the steps are explicit and first order, and
+// chatter where a contact grips. Measured against 100000 steps over random incidences and spins
+// up to 3 v / R (pool set): with 250 the velocity is within 2e-4 of the approach speed, R w within
+// 1.2e-3 of it and the rebound angle within 0.01 degrees; 500 are no better (the chatter), 1000
+// halve those.
 
 constexpr double kMomentOfInertiaFactor = 2.0 / 5.0;  // I = 2/5 M R^2, a solid sphere
 
@@ -97,9 +96,9 @@ class MathavanImpact {
         mu_s_(cushion.cloth_friction),
         restitution_(cushion.restitution) {}
 
-  ImpactVelocities Resolve(const ImpactVelocities& before) const {
+  ImpactVelocities Resolve(const ImpactVelocities& before, double steps) const {
     ImpactVelocities state{Eigen::Vector3d(before.v.x(), before.v.y(), 0.0), before.w};
-    const double step = mass_ * before.v.y() / kImpulseStepsPerApproachMomentum;
+    const double step = mass_ * before.v.y() / steps;
     const double absorbed = Compress(step, state);
     Restore(restitution_ * restitution_ * absorbed, step, state);
     return state;
@@ -207,10 +206,13 @@ ImpactVelocities ResolveHan(const ImpactVelocities& before, const physics::BallP
 
 ImpactVelocities ResolveCushionImpact(CushionModel model, const ImpactVelocities& before,
                                       const physics::BallParameters& ball,
-                                      const CushionParameters& cushion) {
+                                      const CushionParameters& cushion,
+                                      double mathavan_steps) {
   Validate(model, before, ball, cushion);
   if (model == CushionModel::kHan2005) return ResolveHan(before, ball, cushion);
-  return MathavanImpact(ball, cushion).Resolve(before);
+  Require(std::isfinite(mathavan_steps) && mathavan_steps >= 1.0,
+          [] { return "Mathavan's steps per approach momentum must be >= 1"; });
+  return MathavanImpact(ball, cushion).Resolve(before, mathavan_steps);
 }
 
 const char* CushionModelName(CushionModel model) {

@@ -104,8 +104,14 @@ struct ImpactVelocities {
 // is outside the range given above, or (kMathavan2010) the friction is so high that the impulse at
 // the cushion could push the ball further in rather than stop it:
 // cos(theta) <= mu_w sin(theta) + mu_s (sin(theta) + mu_w cos(theta)).
+// kMathavan2010 takes `mathavan_steps` explicit steps per M v.y of normal impulse (compression
+// takes about this many); the default's accuracy is given in cushion_impact.cc. A search whose
+// answer the default then checks may take fewer: the error is first order in the step. Throws
+// std::invalid_argument where it is below 1 or not finite.
+constexpr double kMathavanSteps = 250.0;
 ImpactVelocities ResolveCushionImpact(CushionModel model, const ImpactVelocities& before,
                                       const physics::BallParameters& ball,
-                                      const CushionParameters& cushion);
+                                      const CushionParameters& cushion,
+                                      double mathavan_steps = kMathavanSteps);
 
 }  // namespace billiard::table

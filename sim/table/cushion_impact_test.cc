@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -303,15 +304,40 @@ TEST(CushionImpactTest, HanSlidesOrGripsAtTheNose) {
 
 void ExpectRefused(CushionModel model, const ImpactVelocities& before,
                    const physics::BallParameters& ball, const CushionParameters& cushion,
-                   const std::string& reason_part) {
+                   const std::string& reason_part, double steps = kMathavanSteps) {
   try {
-    ResolveCushionImpact(model, before, ball, cushion);
+    ResolveCushionImpact(model, before, ball, cushion, steps);
     ADD_FAILURE() << "accepted; expected a refusal mentioning '" << reason_part << "'";
   } catch (const std::invalid_argument& error) {
     const std::string message = error.what();
     EXPECT_NE(message.find(reason_part), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
   }
+}
+
+// Fewer steps (a search's, which the default then checks) converge on the same rebound: over
+// random incidences and spins up to 3 v / R, 50 and 250 steps per approach momentum against 5000.
+TEST(CushionImpactTest, MathavanFewerStepsConverge) {
+  std::mt19937 random(2010);
+  std::uniform_real_distribution<double> incidence(5.0 * kDegree, 90.0 * kDegree), spin(-3.0, 3.0);
+  double worst_coarse = 0.0, worst_default = 0.0;  // rebound angle error [rad]
+  double worst_speed = 0.0;                        // rebound speed error, 50 steps [m/s]
+  for (int i = 0; i < 200; ++i) {
+    const double r = kPoolBall.radius;
+    const ImpactVelocities before = Arriving(1.0, incidence(random), spin(random) / r, spin(random) / r);
+    const auto at = [&](double steps) {
+      return ResolveCushionImpact(CushionModel::kMathavan2010, before, kPoolBall, kPoolCushion, steps);
+    };
+    const ImpactVelocities fine = at(5000.0), coarse = at(50.0), standard = at(kMathavanSteps);
+    worst_coarse = std::max(worst_coarse, std::abs(ReboundAngle(coarse) - ReboundAngle(fine)));
+    worst_default = std::max(worst_default, std::abs(ReboundAngle(standard) - ReboundAngle(fine)));
+    worst_speed = std::max(worst_speed, std::abs(ReboundSpeed(coarse) - ReboundSpeed(fine)));
+  }
+  std::printf("rebound angle error: 50 steps %.4f deg, %g steps %.4f deg; speed, 50 steps %.2e\n",
+              worst_coarse / kDegree, kMathavanSteps, worst_default / kDegree, worst_speed);
+  EXPECT_LT(worst_default, worst_coarse);
+  EXPECT_LT(worst_coarse, 0.1 * kDegree);
+  EXPECT_LT(worst_speed, 2e-3);
 }
 
 TEST(CushionImpactTest, RefusesBadInput) {
@@ -353,6 +379,9 @@ TEST(CushionImpactTest, RefusesBadInput) {
   sticky.friction = 1.0;
   sticky.cloth_friction = 1.0;
   ExpectRefused(CushionModel::kMathavan2010, good, kPoolBall, sticky, "friction too high");
+  for (double steps : {0.5, std::nan("")}) {
+    ExpectRefused(CushionModel::kMathavan2010, good, kPoolBall, kPoolCushion, "steps", steps);
+  }
 }
 
 }  // namespace

@@ -321,7 +321,8 @@ BallState TableSimulation::CushionImpact(const BallState& s, const Eigen::Vector
   const CushionParameters cushion{table_.cushion_height, params_.collision.cushion_restitution,
                                   params_.collision.cushion_friction, params_.contact.mu};
   const ImpactVelocities after =
-      ResolveCushionImpact(options_.cushion_model, before, params_.ball, cushion);
+      ResolveCushionImpact(options_.cushion_model, before, params_.ball, cushion,
+                           options_.mathavan_steps);
   *impulse = params_.ball.mass * (before.v.y() - after.v.y());
   BallState out = s;
   out.segment<2>(kVx) = frame.Out(after.v);

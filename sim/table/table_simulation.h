@@ -60,6 +60,9 @@ struct TableEvent {
 
 struct TableSimulationOptions {
   CushionModel cushion_model = CushionModel::kMathavan2010;
+  // kMathavan2010's steps per approach momentum (ResolveCushionImpact): fewer for a search that
+  // the default checks.
+  double mathavan_steps = kMathavanSteps;
   // How a ball moves between events, asked whenever a moving ball starts a new motion, from its
   // state: the 5-DOF model with the options returned, or the closed form (std::nullopt; always,
   // when this is empty).
