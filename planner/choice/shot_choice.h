@@ -225,7 +225,8 @@ ChoiceResult ChooseShot(const table::TableGeometry& table, const physics::ModelP
 // Ball in hand: the cue ball (if any in `balls`) lifted and placed where the choice scores best.
 // Places are tried behind each legal target on the lines from each pocket (straight and cut 15
 // and 30 degrees, 0.15 to 0.5 m back), screened by EasyPotEstimate, and the best of each
-// target and pocket, up to `placements` of them, chosen among by ChooseShot.
+// target and pocket, up to `placements` of them, chosen among by ChooseShot's steps 1-4; only
+// the placement chosen is confirmed (step 5), so its reported probability is no best of several.
 ChoiceResult ChooseWithBallInHand(const table::TableGeometry& table,
                                   const physics::ModelParameters& params,
                                   const std::vector<table::SceneBall>& balls,
