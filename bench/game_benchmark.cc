@@ -1,6 +1,8 @@
 #include "bench/game_benchmark.h"
 
 #include <algorithm>
+#include <chrono>
+#include <stdexcept>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -52,6 +54,11 @@ std::vector<table::SceneBall> WithSeededCueBall(const table::TableGeometry& tabl
   }
 }
 
+// The decile a prediction falls in.
+int DecileOf(double predicted) {
+  return std::min(kDeciles - 1, static_cast<int>(predicted * kDeciles));
+}
+
 std::vector<plot::ReliabilityBin> Deciles(const std::vector<CalibrationPoint>& points) {
   std::vector<plot::ReliabilityBin> bins(kDeciles);
   std::vector<double> predicted_sum(kDeciles, 0.0);
@@ -61,7 +68,7 @@ std::vector<plot::ReliabilityBin> Deciles(const std::vector<CalibrationPoint>& p
     bins[i].hi = (i + 1) / double(kDeciles);
   }
   for (const CalibrationPoint& p : points) {
-    const int i = std::min(kDeciles - 1, static_cast<int>(p.predicted * kDeciles));
+    const int i = DecileOf(p.predicted);
     bins[i].count += p.executions;
     predicted_sum[i] += p.predicted * p.executions;
     potted[i] += p.potted;
@@ -80,9 +87,24 @@ choice::ChoiceOptions BaseChoice(const GameBenchmarkOptions& options,
   c.rules = choice::Rules::kNineBall;
   c.noise = noise;
   c.samples = options.samples;
+  c.confirm_samples = options.confirm_samples;
   return c;
 }
 
+bool SameChoice(const choice::ChoiceResult& a, const choice::ChoiceResult& b) {
+  if (a.candidates.size() != b.candidates.size()) return false;
+  for (std::size_t k = 0; k < a.candidates.size(); ++k) {
+    const choice::Candidate &x = a.candidates[k], &y = b.candidates[k];
+    if (x.plan.ball != y.plan.ball || x.plan.pocket != y.plan.pocket || x.score != y.score ||
+        x.confirmed.successes != y.confirmed.successes) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The chosen shot of each seeded choice played `executions` times more with fresh noise (the
+// table's own, on the table's own model), against the probability the choice reported.
 void Calibrate(const table::TableGeometry& table, const physics::ModelParameters& params,
                const GameBenchmarkOptions& options, batch::ThreadPool& pool,
                GameBenchmarkResult* result) {
@@ -99,26 +121,20 @@ void Calibrate(const table::TableGeometry& table, const physics::ModelParameters
     result->choice_us.push_back(r.decision_us);
     if (i == 0) {
       batch::ThreadPool one(1);
-      const choice::ChoiceResult again = choice::ChooseShot(table, params, balls, c, one);
-      result->thread_count_independent = again.candidates.size() == r.candidates.size();
-      for (std::size_t k = 0; k < r.candidates.size() && result->thread_count_independent; ++k) {
-        result->thread_count_independent =
-            again.candidates[k].plan.ball == r.candidates[k].plan.ball &&
-            again.candidates[k].plan.pocket == r.candidates[k].plan.pocket &&
-            again.candidates[k].score == r.candidates[k].score;
-      }
+      result->thread_count_independent =
+          SameChoice(r, choice::ChooseShot(table, params, balls, c, one));
     }
-    for (const choice::Candidate& cand : r.candidates) {
-      if (!cand.finalist) continue;
+    const choice::Candidate* chosen = r.chosen();
+    if (chosen && chosen->finalist) {
       CalibrationPoint point;
-      point.predicted = cand.full.probability;
+      point.predicted = chosen->reported().probability;
+      point.selection = chosen->full.probability;
       auto replays = pool.Map(options.executions, [&](std::size_t e) {
-        choice::NormalStream normal(
-            choice::SampleSeed(seed + kReplayStream, e + 1000 * static_cast<std::uint64_t>(i)));
+        choice::NormalStream normal(choice::SampleSeed(seed + kReplayStream, e));
         const physics::CueStroke played = params::Perturbed(
-            cand.plan.stroke, noise, params.ball.radius, [&] { return normal.Next(); });
+            chosen->plan.stroke, noise, params.ball.radius, [&] { return normal.Next(); });
         return choice::LegalPot(choice::PlayToRest(table, params, balls, played, motion),
-                                cand.plan.ball, cand.plan.pocket);
+                                chosen->plan.ball, chosen->plan.pocket);
       });
       for (const auto& replay : replays) {
         ++point.executions;
@@ -126,48 +142,99 @@ void Calibrate(const table::TableGeometry& table, const physics::ModelParameters
       }
       result->calibration.push_back(point);
     }
-    options.progress("bench-game: calibration " + std::to_string(i + 1) + "/" +
-                     std::to_string(options.calibration_layouts));
+    if ((i + 1) % 10 == 0 || i + 1 == options.calibration_layouts) {
+      options.progress("bench-game: calibration " + std::to_string(i + 1) + "/" +
+                       std::to_string(options.calibration_layouts) + ", median choice " +
+                       Fixed(Median(result->choice_us) / 1000, 0) + " ms");
+    }
+  }
+}
+
+// The six drills of a layout: each noise x each policy, in that order.
+struct Drill {
+  const char* noise;
+  choice::Policy policy;
+};
+
+std::vector<Drill> Drills() {
+  std::vector<Drill> drills;
+  for (const char* noise : {params::kDefaultNoise, kTournamentNoise}) {
+    for (choice::Policy policy : {choice::Policy::kOurs, choice::Policy::kNoLookahead,
+                                  choice::Policy::kEasiestLooking}) {
+      drills.push_back({noise, policy});
+    }
+  }
+  return drills;
+}
+
+void Tally(const choice::GameRecord& game, PolicyResult* pr) {
+  ++pr->games;
+  pr->attempts += game.summary.attempts;
+  pr->pots += game.summary.pots;
+  pr->fouls += game.summary.fouls;
+  pr->run_outs += game.summary.run_out;
+  pr->balls += game.summary.balls_potted;
+  for (const choice::ShotRecord& s : game.shots) {
+    pr->decision_us.push_back(s.decision_us);
+    if (s.ball >= 0 && s.likely) {
+      ++pr->likely_attempts;
+      pr->likely_pots += s.called_potted;
+    }
   }
 }
 
 void PlayDrills(const table::TableGeometry& table, const physics::ModelParameters& params,
                 const GameBenchmarkOptions& options, batch::ThreadPool& pool,
+                const std::function<void(const GameBenchmarkResult&)>& checkpoint,
                 GameBenchmarkResult* result) {
-  for (const std::string noise_name : {params::kDefaultNoise, kTournamentNoise}) {
-    const params::ExecutionNoise noise = params::LoadNoise(noise_name);
-    for (choice::Policy policy : {choice::Policy::kOurs, choice::Policy::kNoLookahead,
-                                  choice::Policy::kEasiestLooking}) {
-      PolicyResult pr;
-      pr.noise = noise_name;
-      pr.policy = choice::PolicyName(policy);
-      for (int i = 0; i < options.layouts; ++i) {
-        const std::uint64_t seed = options.seed + 100000 + static_cast<std::uint64_t>(i);
-        choice::GameOptions g;
-        g.choice = BaseChoice(options, noise);
-        g.choice.seed = seed;
-        g.policy = policy;
-        g.execution = noise;
-        g.seed = seed;
-        g.ball_in_hand = true;
-        g.single_visit = true;
-        g.shot_limit = options.shot_limit;
-        const choice::GameRecord game = choice::PlayGame(
-            table, params, choice::SeededNineBallLayout(table, params.ball.radius, seed), g, pool);
-        ++pr.games;
-        pr.attempts += game.summary.attempts;
-        pr.pots += game.summary.pots;
-        pr.fouls += game.summary.fouls;
-        pr.run_outs += game.summary.run_out;
-        pr.balls += game.summary.balls_potted;
-        for (const choice::ShotRecord& s : game.shots) pr.decision_us.push_back(s.decision_us);
-      }
-      options.progress("bench-game: " + pr.noise + " noise, " + pr.policy + ": " +
-                       std::to_string(pr.run_outs) + " run-outs of " + std::to_string(pr.games) +
-                       ", " + std::to_string(pr.pots) + " pots of " + std::to_string(pr.attempts) +
-                       " attempts");
-      result->policies.push_back(pr);
+  const std::vector<Drill> drills = Drills();
+  std::vector<params::ExecutionNoise> noises;
+  for (const Drill& d : drills) {
+    noises.push_back(params::LoadNoise(d.noise));
+    PolicyResult pr;
+    pr.noise = d.noise;
+    pr.policy = choice::PolicyName(d.policy);
+    result->policies.push_back(pr);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  for (int first = 0; first < options.layouts; first += options.chunk) {
+    const int count = std::min(options.chunk, options.layouts - first);
+    // One thread per drill, the drills side by side: a drill's choices are mostly short
+    // batches that two threads share poorly.
+    auto games = pool.Map(count * drills.size(), [&](std::size_t job) {
+      const std::uint64_t seed =
+          options.seed + 100000 + static_cast<std::uint64_t>(first + job / drills.size());
+      const std::size_t d = job % drills.size();
+      choice::GameOptions g;
+      g.choice = BaseChoice(options, noises[d]);
+      g.choice.seed = seed;
+      g.policy = drills[d].policy;
+      g.execution = noises[d];
+      g.seed = seed;
+      g.ball_in_hand = true;
+      g.single_visit = true;
+      g.shot_limit = options.shot_limit;
+      batch::ThreadPool one(1);
+      return choice::PlayGame(table, params,
+                              choice::SeededNineBallLayout(table, params.ball.radius, seed), g,
+                              one);
+    });
+    for (std::size_t job = 0; job < games.size(); ++job) {
+      if (!games[job].ok()) throw std::runtime_error("bench-game: a drill failed: " + games[job].error);
+      Tally(*games[job].value, &result->policies[job % drills.size()]);
     }
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const int done = first + count;
+    std::ostringstream line;
+    line << "bench-game: drills " << done << "/" << options.layouts << " layouts, "
+         << Fixed(elapsed / 60, 1) << " min, about "
+         << Fixed(elapsed / done * (options.layouts - done) / 60, 1) << " min to go;";
+    for (const PolicyResult& pr : result->policies) {
+      line << " " << pr.noise << "/" << pr.policy << " " << pr.pots << "/" << pr.attempts;
+    }
+    options.progress(line.str());
+    if (checkpoint) checkpoint(*result);
   }
 }
 
@@ -175,33 +242,55 @@ double Rate(int a, int b) { return b > 0 ? static_cast<double>(a) / b : 0.0; }
 
 }  // namespace
 
-GameBenchmarkResult RunGameBenchmark(const GameBenchmarkOptions& options) {
+GameBenchmarkResult RunGameBenchmark(
+    const GameBenchmarkOptions& options,
+    const std::function<void(const GameBenchmarkResult&)>& checkpoint) {
   GameBenchmarkResult result;
   result.options = options;
   const physics::ModelParameters params = params::LoadParameters(params::kDefaultParameterSet);
   const table::TableGeometry table = table::BuildTable(params::LoadTableSpec(kTable));
   batch::ThreadPool pool(options.threads);
   Calibrate(table, params, options, pool, &result);
-  PlayDrills(table, params, options, pool, &result);
+  if (checkpoint) checkpoint(result);
+  PlayDrills(table, params, options, pool, checkpoint, &result);
   return result;
 }
 
 nlohmann::json GameSummaryJson(const GameBenchmarkResult& r) {
   nlohmann::json j;
-  int executions = 0;
-  for (const CalibrationPoint& p : r.calibration) executions += p.executions;
+  int executions = 0, potted = 0;
+  double predicted_sum = 0.0, selection_sum = 0.0;
+  std::vector<int> choices(kDeciles, 0);
+  for (const CalibrationPoint& p : r.calibration) {
+    executions += p.executions;
+    potted += p.potted;
+    predicted_sum += p.predicted * p.executions;
+    selection_sum += p.selection * p.executions;
+    ++choices[DecileOf(p.predicted)];
+  }
   nlohmann::json deciles = nlohmann::json::array();
   bool calibrated = true;
-  for (const plot::ReliabilityBin& b : Deciles(r.calibration)) {
+  const std::vector<plot::ReliabilityBin> bins = Deciles(r.calibration);
+  for (int i = 0; i < kDeciles; ++i) {
+    const plot::ReliabilityBin& b = bins[i];
     const bool judged = b.count >= kJudgedCount;
     const bool within = std::abs(b.measured - b.predicted) <= kCalibrationTolerance;
     if (judged && !within) calibrated = false;
-    deciles.push_back({{"lo", b.lo}, {"hi", b.hi}, {"count", b.count},
-                       {"predicted", b.predicted}, {"measured", b.measured}, {"judged", judged},
+    const double stderr_ =
+        b.count > 0 ? std::sqrt(b.measured * (1 - b.measured) / b.count) : 0.0;
+    deciles.push_back({{"lo", b.lo}, {"hi", b.hi}, {"count", b.count}, {"choices", choices[i]},
+                       {"predicted", b.predicted}, {"measured", b.measured},
+                       {"measured_stderr", stderr_}, {"judged", judged},
                        {"within_5_points", within}});
   }
-  j["calibration"] = {{"executions", executions}, {"choices", r.options.calibration_layouts},
-                      {"deciles", deciles}, {"calibrated", calibrated}};
+  j["calibration"] = {{"executions", executions},
+                      {"choices", static_cast<int>(r.calibration.size())},
+                      {"confirm_samples", r.options.confirm_samples},
+                      {"mean_predicted", executions ? predicted_sum / executions : 0.0},
+                      {"mean_selection_estimate", executions ? selection_sum / executions : 0.0},
+                      {"measured", Rate(potted, executions)},
+                      {"deciles", deciles},
+                      {"calibrated", calibrated}};
   j["decision"] = {{"median_us", Median(r.choice_us)},
                    {"p90_us", Percentile(r.choice_us, 0.9)},
                    {"threads", r.options.threads},
@@ -214,6 +303,9 @@ nlohmann::json GameSummaryJson(const GameBenchmarkResult& r) {
                         {"attempts", p.attempts},
                         {"pots", p.pots},
                         {"pots_per_attempt", Rate(p.pots, p.attempts)},
+                        {"likely_attempts", p.likely_attempts},
+                        {"likely_pots", p.likely_pots},
+                        {"pots_per_likely_attempt", Rate(p.likely_pots, p.likely_attempts)},
                         {"run_outs", p.run_outs},
                         {"run_out_rate", Rate(p.run_outs, p.games)},
                         {"fouls", p.fouls},
@@ -221,7 +313,8 @@ nlohmann::json GameSummaryJson(const GameBenchmarkResult& r) {
                         {"median_decision_us", Median(p.decision_us)}});
   }
   j["drills"] = policies;
-  j["layouts"] = r.options.layouts;
+  j["layouts"] = r.policies.empty() ? 0 : r.policies.front().games;
+  j["layouts_requested"] = r.options.layouts;
   j["seed"] = r.options.seed;
   return j;
 }
@@ -235,48 +328,75 @@ void WriteGameReport(const GameBenchmarkResult& r, const std::string& dir) {
                             " noisy executions (robot noise)",
                         kJudgedCount, dir + "/game_reliability.png");
   std::ofstream out = OpenForWriting(dir + "/game_report.md");
+  const int layouts = s["layouts"].get<int>();
+  const auto& cal = s["calibration"];
   out << "# Shot choice: calibration, baselines, decision time\n\n"
-      << "From `billiard bench-game --out docs/benchmarks --layouts " << r.options.layouts
+      << "From `nice billiard bench-game --out docs/benchmarks --layouts " << r.options.layouts
       << " --calibration-layouts " << r.options.calibration_layouts << " --executions "
-      << r.options.executions << " --seed " << r.options.seed << " --threads "
-      << r.options.threads << "` (seeded nine-ball layouts on pool-9ft, bench/game_benchmark.h). "
-      << "The numbers are this run's, on a 2-core machine shared with other work.\n\n"
-      << "## Calibration\n\n"
-      << "The finalists of " << r.options.calibration_layouts
-      << " seeded choices (a seeded cue ball, nine-ball rules, the robot's noise, "
-      << r.options.samples << " full-model executions each), each replayed " << r.options.executions
-      << " times with fresh noise: " << s["calibration"]["executions"].get<int>()
-      << " executions. A decile holding " << kJudgedCount
-      << " or more is judged against 5 points.\n\n"
+      << r.options.executions << " --confirm-samples " << r.options.confirm_samples
+      << " --seed " << r.options.seed << " --threads " << r.options.threads
+      << "` (seeded nine-ball layouts on pool-9ft, bench/game_benchmark.h). The numbers are this "
+      << "run's, on a 2-core machine shared with other work.";
+  if (layouts < r.options.layouts) {
+    out << " **The run was stopped after " << layouts << " of the " << r.options.layouts
+        << " layouts asked for** (each chunk of " << r.options.chunk
+        << " layouts is written as it ends, every policy on the same layouts).";
+  }
+  out << "\n\n## Calibration\n\n"
+      << cal["choices"].get<int>() << " seeded choices (a seeded cue ball, nine-ball rules, the "
+      << "robot's noise, " << r.options.samples << " full-model executions of each of the finalists, "
+      << "then " << r.options.confirm_samples << " fresh ones of the chosen shot on a seed stream "
+      << "of their own: its reported probability), the chosen shot of each replayed "
+      << r.options.executions << " times with fresh noise on the table's own model: "
+      << cal["executions"].get<int>() << " executions. Over all of them the mean reported "
+      << "probability is " << Fixed(cal["mean_predicted"].get<double>(), 3) << ", the measured rate "
+      << Fixed(cal["measured"].get<double>(), 3) << "; the finalists' own estimate that chose the "
+      << "shot would have said " << Fixed(cal["mean_selection_estimate"].get<double>(), 3)
+      << " (the winner's curse the confirmation removes). A decile holding " << kJudgedCount
+      << " or more executions is judged against 5 points; the measured rate's binomial standard "
+      << "error is given (replays of one choice share its true probability, so the error across "
+      << "choices is larger where a decile holds few choices).\n\n"
       << "![reliability diagram](game_reliability.png)\n\n"
-      << "| predicted | executions | mean predicted | measured | judged | within 5 points |\n"
-      << "|---|---|---|---|---|---|\n";
-  for (const auto& d : s["calibration"]["deciles"]) {
+      << "| predicted | choices | executions | mean predicted | measured | judged | within 5 points |\n"
+      << "|---|---|---|---|---|---|---|\n";
+  for (const auto& d : cal["deciles"]) {
     out << "| " << Fixed(d["lo"].get<double>(), 1) << "-" << Fixed(d["hi"].get<double>(), 1)
-        << " | " << d["count"].get<int>() << " | " << Fixed(d["predicted"].get<double>(), 3)
-        << " | " << Fixed(d["measured"].get<double>(), 3) << " | "
+        << " | " << d["choices"].get<int>() << " | " << d["count"].get<int>() << " | "
+        << Fixed(d["predicted"].get<double>(), 3) << " | "
+        << Fixed(d["measured"].get<double>(), 3) << " +- "
+        << Fixed(d["measured_stderr"].get<double>(), 3) << " | "
         << (d["judged"].get<bool>() ? "yes" : "no") << " | "
         << (d["within_5_points"].get<bool>() ? "yes" : "**no**") << " |\n";
   }
   out << "\nCalibrated (every judged decile within 5 points): "
-      << (s["calibration"]["calibrated"].get<bool>() ? "yes" : "**no**") << ".\n\n"
+      << (cal["calibrated"].get<bool>() ? "yes" : "**no**") << ".\n\n"
       << "## Drills from ball in hand\n\n"
-      << r.options.layouts << " seeded nine-ball layouts, each one visit from ball in hand "
+      << layouts << " seeded nine-ball layouts, each one visit from ball in hand "
       << "(until a shot pots nothing or fouls, at most " << r.options.shot_limit
-      << " shots), the choice assuming the noise the table executes with.\n\n"
-      << "| noise | policy | pots / attempts | run-outs | fouls | balls per visit | median decision |\n"
-      << "|---|---|---|---|---|---|---|\n";
+      << " shots), the choice assuming the noise the table executes with; every policy plays "
+      << "the same layouts and the same execution noise.\n\n"
+      << "**Attempt**: every shot that called a ball and pocket is an attempt, whatever its "
+      << "probability (the choice plays no safeties: a shot called unlikely is still played as "
+      << "a pot, and counts). A pot is the called ball in the called pocket, legally (first "
+      << "contact the lowest ball, no scratch). The last column counts only the attempts the "
+      << "choice called likely (reported probability >= 0.5; the easiest-looking baseline's by "
+      << "its closed-form estimate), for information: it is not the headline figure.\n\n"
+      << "| noise | policy | pots / attempts | run-outs | fouls | balls per visit | median decision | pots / likely attempts |\n"
+      << "|---|---|---|---|---|---|---|---|\n";
   for (const auto& p : s["drills"]) {
     out << "| " << p["noise"].get<std::string>() << " | " << p["policy"].get<std::string>()
         << " | " << p["pots"].get<int>() << " / " << p["attempts"].get<int>() << " = "
         << Fixed(p["pots_per_attempt"].get<double>(), 3) << " | " << p["run_outs"].get<int>()
         << " / " << p["games"].get<int>() << " | " << p["fouls"].get<int>() << " | "
         << Fixed(p["balls_per_visit"].get<double>(), 2) << " | "
-        << Fixed(p["median_decision_us"].get<double>() / 1000, 0) << " ms |\n";
+        << Fixed(p["median_decision_us"].get<double>() / 1000, 0) << " ms | "
+        << p["likely_pots"].get<int>() << " / " << p["likely_attempts"].get<int>() << " = "
+        << Fixed(p["pots_per_likely_attempt"].get<double>(), 3) << " |\n";
   }
-  out << "\n## Decision time\n\n"
-      << "`ChooseShot` on the calibration layouts (nine-ball rules, no ball in hand) on "
-      << r.options.threads << " threads: median "
+  out << "\nThe drills' decision times are on one thread each, two drills at once.\n\n"
+      << "## Decision time\n\n"
+      << "`ChooseShot` on the calibration layouts (nine-ball rules, no ball in hand, the "
+      << "confirmation included) on " << r.options.threads << " threads: median "
       << Fixed(s["decision"]["median_us"].get<double>() / 1000, 0) << " ms, p90 "
       << Fixed(s["decision"]["p90_us"].get<double>() / 1000, 0)
       << " ms. One thread and " << r.options.threads << " give the same choice: "

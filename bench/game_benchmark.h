@@ -1,14 +1,17 @@
 // The shot choice's benchmark (planner/choice/), on seeded nine-ball layouts
 // (choice::SeededNineBallLayout) on the pool-9ft table:
-//  - calibration: the finalists of seeded choices (a seeded cue ball, nine-ball rules, the robot's
-//    noise), each played `executions` more times with fresh noise on the full model: the
-//    measured pot rate against the predicted probability, per decile (a reliability diagram);
+//  - calibration: seeded choices (a seeded cue ball, nine-ball rules, the robot's noise, the
+//    table's own model), the chosen shot's reported probability (its confirmation, fresh samples
+//    independent of the choice) against `executions` more plays of it with fresh noise on the
+//    same model: the measured pot rate per decile of the prediction (a reliability diagram);
 //  - games: each layout a drill from ball in hand, one visit (until a shot pots nothing or
 //    fouls), under the robot's noise and under the computational-pool noise, played by ours, by
 //    ours without the lookahead and by the easiest-looking ghost-ball shot: pots per attempt,
-//    run-outs, fouls;
-//  - decision time: the choices' wall time (ChooseShot, no ball in hand), and whether one
-//    thread and two give the same choice.
+//    run-outs, fouls. The layouts run in chunks, each layout's six drills side by side on the
+//    pool's threads (one thread each), so that a run stopped early has played every policy on
+//    the same layouts (`checkpoint` is told after each chunk);
+//  - decision time: the calibration choices' wall time (ChooseShot, no ball in hand, on all the
+//    threads), and whether one thread and `threads` give the same choice.
 #pragma once
 
 #include <cstdint>
@@ -23,23 +26,27 @@ namespace billiard::bench {
 
 struct GameBenchmarkOptions {
   int layouts = 500;              // drills per noise and policy
-  int calibration_layouts = 100;  // choices whose finalists are replayed
-  int executions = 4;             // replays of each finalist
+  int calibration_layouts = 400;  // choices whose chosen shot is replayed
+  int executions = 8;             // replays of each chosen shot
+  int confirm_samples = 256;      // the choice's fresh executions of the chosen shot
   std::uint64_t seed = 2026;
   int samples = 64;  // the choice's full-model executions per finalist
   int threads = 2;
   int shot_limit = 12;  // of a drill's one visit (nine balls and some fouls to spare)
+  int chunk = 10;  // layouts between checkpoints
   std::function<void(const std::string&)> progress = [](const std::string&) {};
 };
 
 struct CalibrationPoint {
-  double predicted = 0.0;
+  double predicted = 0.0;  // the chosen shot's reported probability
+  double selection = 0.0;  // the finalists' estimate that chose it (biased up)
   int executions = 0, potted = 0;
 };
 
 struct PolicyResult {
   std::string noise, policy;
   int games = 0, attempts = 0, pots = 0, fouls = 0, run_outs = 0, balls = 0;
+  int likely_attempts = 0, likely_pots = 0;  // the attempts the choice called likely
   std::vector<double> decision_us;  // of every decision
 };
 
@@ -51,7 +58,10 @@ struct GameBenchmarkResult {
   std::vector<PolicyResult> policies;
 };
 
-GameBenchmarkResult RunGameBenchmark(const GameBenchmarkOptions& options);
+// `checkpoint` is told the result so far after the calibration and after each chunk of layouts.
+GameBenchmarkResult RunGameBenchmark(
+    const GameBenchmarkOptions& options,
+    const std::function<void(const GameBenchmarkResult&)>& checkpoint = nullptr);
 
 // Writes game_report.md, game_reliability.png and game_results.json into `dir`.
 void WriteGameReport(const GameBenchmarkResult& result, const std::string& dir);

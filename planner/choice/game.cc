@@ -128,7 +128,7 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
         rec.ball = c->plan.ball;
         rec.pocket = c->plan.pocket;
         rec.kind = pot::ShotKindName(c->plan.kind);
-        rec.predicted = c->finalist ? c->full.probability : -1.0;
+        rec.predicted = c->finalist ? c->reported().probability : -1.0;
         rec.likely = choice.likely;
         stroke = c->plan.stroke;
       } else if (choice.fallback) {

@@ -463,14 +463,17 @@ const char* ChoiceStatusName(ChoiceStatus status) {
   return "invalid";
 }
 
-ChoiceResult ChooseShot(const table::TableGeometry& table, const physics::ModelParameters& params,
-                        const std::vector<table::SceneBall>& balls, const ChoiceOptions& options,
-                        batch::ThreadPool& pool) {
-  const auto start = std::chrono::steady_clock::now();
-  if (auto refusal = Unplayable(table, params, balls, options.rules)) {
-    refusal->decision_us = MicrosecondsSince(start);
-    return *refusal;
-  }
+namespace {
+
+// The confirmation's seed stream, apart from the choice's own samples.
+constexpr std::uint64_t kConfirmStream = 0x636f6e6669726d21ull;
+
+// Steps 1-4 of the choice (shot_choice.h): the chosen's probability is still the finalists'.
+ChoiceResult ChooseUnconfirmed(const table::TableGeometry& table,
+                               const physics::ModelParameters& params,
+                               const std::vector<table::SceneBall>& balls,
+                               const ChoiceOptions& options, batch::ThreadPool& pool) {
+  if (auto refusal = Unplayable(table, params, balls, options.rules)) return *refusal;
   ChoiceResult result;
   for (pot::PotPlan& plan : PlanCandidates(table, params, balls, options, pool)) {
     result.simulations += plan.simulations;
@@ -483,7 +486,6 @@ ChoiceResult ChooseShot(const table::TableGeometry& table, const physics::ModelP
     result.reason = "no pot of a legal ball plans (every route blocked, too thin or out of reach)";
     const int target = LegalTargets(options.rules, balls).front();
     result.fallback = FallbackStroke(*FindBall(balls, 0), *FindBall(balls, target));
-    result.decision_us = MicrosecondsSince(start);
     return result;
   }
   std::vector<Candidate>& candidates = result.candidates;
@@ -537,12 +539,43 @@ ChoiceResult ChooseShot(const table::TableGeometry& table, const physics::ModelP
     return a.finalist && a.score > b.score;
   });
   result.status = ChoiceStatus::kOk;
-  result.likely = candidates.front().full.probability >= options.likely;
-  if (!result.likely) {
-    result.reason = "no shot is likely: the best pots with probability " +
-                    std::to_string(candidates.front().full.probability) +
-                    "; playing the best expected one";
+  return result;
+}
+
+// Step 5: the chosen shot played confirm_samples more times on `balls` with fresh noise, its
+// probability the one reported and judged likely or not.
+void Confirm(const table::TableGeometry& table, const physics::ModelParameters& params,
+             const std::vector<table::SceneBall>& balls, const ChoiceOptions& options,
+             batch::ThreadPool& pool, ChoiceResult* result) {
+  if (result->status != ChoiceStatus::kOk) return;
+  Candidate& chosen = result->candidates.front();
+  if (options.confirm_samples > 0) {
+    ChoiceOptions fresh = options;
+    fresh.seed = options.seed + kConfirmStream;
+    const std::vector<Execution> executions =
+        ExecuteAll(table, params, balls, result->candidates, {0}, options.confirm_samples, fresh,
+                   model_choice::TableMotion(params), false, pool);
+    int successes = 0;
+    for (const Execution& e : executions) successes += e.potted;
+    chosen.confirmed = Binomial(successes, options.confirm_samples);
+    result->simulations += options.confirm_samples;
   }
+  result->likely = chosen.reported().probability >= options.likely;
+  if (!result->likely) {
+    result->reason = "no shot is likely: the best pots with probability " +
+                     std::to_string(chosen.reported().probability) +
+                     "; playing the best expected one";
+  }
+}
+
+}  // namespace
+
+ChoiceResult ChooseShot(const table::TableGeometry& table, const physics::ModelParameters& params,
+                        const std::vector<table::SceneBall>& balls, const ChoiceOptions& options,
+                        batch::ThreadPool& pool) {
+  const auto start = std::chrono::steady_clock::now();
+  ChoiceResult result = ChooseUnconfirmed(table, params, balls, options, pool);
+  Confirm(table, params, balls, options, pool, &result);
   result.decision_us = MicrosecondsSince(start);
   return result;
 }
@@ -567,7 +600,7 @@ ChoiceResult ChooseWithBallInHand(const table::TableGeometry& table,
   std::optional<ChoiceResult> best;
   int simulations = 0;
   for (const Placement& p : places) {
-    ChoiceResult r = ChooseShot(table, params, WithCueBallAt(balls, p.place), options, pool);
+    ChoiceResult r = ChooseUnconfirmed(table, params, WithCueBallAt(balls, p.place), options, pool);
     simulations += r.simulations;
     r.cue_placement = p.place;
     auto score = [](const ChoiceResult& c) {
@@ -576,6 +609,8 @@ ChoiceResult ChooseWithBallInHand(const table::TableGeometry& table,
     if (!best || score(r) > score(*best)) best = std::move(r);
   }
   best->simulations = simulations;
+  // Only the placement played is confirmed: its probability, not the best of three, is reported.
+  Confirm(table, params, WithCueBallAt(balls, *best->cue_placement), options, pool, &*best);
   best->decision_us = MicrosecondsSince(start);
   return *best;
 }

@@ -15,8 +15,12 @@
 //     standard error, and, over the executions that pot, the value of the best next shot on the
 //     table each leaves (EasyPotEstimate, a closed-form estimate: no planning inside a sample);
 //  4. the score: the expected number of balls over this shot and the next, p (1 + v), or p alone
-//     without the lookahead. The best scored is the choice; when its probability is below
-//     ChoiceOptions::likely the choice says that no shot is likely and still plays it.
+//     without the lookahead. The best scored is the choice;
+//  5. the chosen shot's probability estimated again from fresh executions (a seed stream of its
+//     own, ChoiceOptions::confirm_samples of them): the finalists' estimates chose it, so the
+//     best of them is biased up (the maximum of noisy estimates: a winner's curse), and the
+//     reported probability must not come from the samples that selected. When that probability
+//     is below ChoiceOptions::likely the choice says that no shot is likely and still plays it.
 // This is the scheme of the computational-pool programs that won their tournaments (Smith
 // 2007's PickPocket: Monte Carlo over the noise with a lookahead; Archibald, Altman and Shoham
 // 2009's CueCard), here over the robot's own noise and a table model that includes throw,
@@ -157,6 +161,10 @@ struct ChoiceOptions {
   int samples = 64;         // full-model executions of each finalist
   int screen_samples = 16;  // closed-form executions of each candidate
   int finalists = 4;        // candidates that reach the full model
+  // Fresh full-model executions of the chosen shot alone, on their own seed stream: the
+  // probability reported (a binomial standard error of at most 0.5 / sqrt(n), 0.03 at 256).
+  // 0: report the finalists' own (biased) estimate.
+  int confirm_samples = 256;
   std::uint64_t seed = 1;
   bool lookahead = true;  // score p (1 + v); false: p alone
   // Below this probability the choice says that no shot is likely.
@@ -175,9 +183,15 @@ struct Candidate {
   std::optional<Eigen::Vector2d> position_target;  // position play: where the cue ball is sent
   double screen_probability = 0.0;
   bool finalist = false;
-  PotProbability full;           // finalists only
+  PotProbability full;           // finalists only: the estimate that chose among them
+  // The chosen alone (ChoiceOptions::confirm_samples > 0): the estimate from fresh executions,
+  // independent of the choice, and the one reported.
+  PotProbability confirmed;
   double next_shot_value = 0.0;  // mean over the potting executions; finalists only
   double score = 0.0;  // p (1 + v), or p without the lookahead: the full model's for finalists
+
+  // The probability to report: the confirmed one when there is one, else the finalists'.
+  const PotProbability& reported() const { return confirmed.samples > 0 ? confirmed : full; }
 };
 
 enum class ChoiceStatus {
@@ -192,7 +206,7 @@ struct ChoiceResult {
   ChoiceStatus status = ChoiceStatus::kInvalid;
   std::string reason;            // why not, when not ok; when ok and !likely, that no shot is
   std::vector<Candidate> candidates;  // every one that planned, the best scored first
-  bool likely = false;           // the choice's probability >= ChoiceOptions::likely
+  bool likely = false;           // the choice's reported probability >= ChoiceOptions::likely
   std::optional<Eigen::Vector2d> cue_placement;  // ball in hand: where the cue ball goes
   // With kNoPlan: a stroke that at least hits the first legal target full in the face
   // (ghost-ball aim at the ball's centre, 2 m/s), so that a loop has something to play.
@@ -211,7 +225,8 @@ ChoiceResult ChooseShot(const table::TableGeometry& table, const physics::ModelP
 // Ball in hand: the cue ball (if any in `balls`) lifted and placed where the choice scores best.
 // Places are tried behind each legal target on the lines from each pocket (straight and cut 15
 // and 30 degrees, 0.15 to 0.5 m back), screened by EasyPotEstimate, and the best of each
-// target and pocket, up to `placements` of them, chosen among by ChooseShot.
+// target and pocket, up to `placements` of them, chosen among by ChooseShot's steps 1-4; only
+// the placement chosen is confirmed (step 5), so its reported probability is no best of several.
 ChoiceResult ChooseWithBallInHand(const table::TableGeometry& table,
                                   const physics::ModelParameters& params,
                                   const std::vector<table::SceneBall>& balls,

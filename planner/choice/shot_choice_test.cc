@@ -91,6 +91,41 @@ TEST_F(ShotChoiceTest, StandardErrorMatchesTheSpreadOfEstimates) {
   EXPECT_NEAR(stderr_sum / runs / predicted, 1.0, 0.2);
 }
 
+// The reported probability comes from executions of its own, not from those that chose the
+// shot: over seeded choices it agrees with an independent estimate of each chosen stroke.
+TEST_F(ShotChoiceTest, ReportedProbabilityIsTheConfirmationsAndUnbiased) {
+  const auto balls = StraightPot(0.6, 0.6);
+  ChoiceOptions options;
+  options.noise = HeadingNoise(0.6);
+  options.samples = 16;
+  options.screen_samples = 8;
+  options.finalists = 2;
+  options.confirm_samples = 96;
+  options.kinds = {pot::ShotKind::kDirect, pot::ShotKind::kBank};
+  batch::ThreadPool pool(2);
+  const int choices = 6, truth_samples = 192;
+  double reported_sum = 0, truth_sum = 0, variance_sum = 0;
+  for (int seed = 1; seed <= choices; ++seed) {
+    options.seed = seed;
+    const ChoiceResult r = ChooseShot(table_, params_, balls, options, pool);
+    ASSERT_EQ(r.status, ChoiceStatus::kOk) << r.reason;
+    const Candidate& c = *r.chosen();
+    EXPECT_EQ(c.confirmed.samples, options.confirm_samples);
+    EXPECT_EQ(&c.reported(), &c.confirmed);
+    const PotProbability truth = EstimatePotProbability(table_, params_, balls, c.plan, options.noise,
+                                                        truth_samples, 1000 + seed, pool);
+    reported_sum += c.confirmed.probability;
+    truth_sum += truth.probability;
+    variance_sum += c.confirmed.stderr_ * c.confirmed.stderr_ + truth.stderr_ * truth.stderr_;
+  }
+  ASSERT_GT(truth_sum / choices, 0.15);  // a shot that neither always drops nor always misses
+  ASSERT_LT(truth_sum / choices, 0.85);
+  EXPECT_LT(std::abs(reported_sum - truth_sum) / choices, 3 * std::sqrt(variance_sum) / choices);
+  options.confirm_samples = 0;  // off: the finalists' own estimate is reported
+  const ChoiceResult unconfirmed = ChooseShot(table_, params_, balls, options, pool);
+  EXPECT_EQ(&unconfirmed.chosen()->reported(), &unconfirmed.chosen()->full);
+}
+
 TEST_F(ShotChoiceTest, ScratchAndWrongContactAreNotPots) {
   // The cue ball alone, sent into the upper right pocket: a scratch, no contact.
   auto balls = StraightPot(0.4, 0.4);
@@ -159,6 +194,7 @@ TEST_F(ShotChoiceTest, SameChoiceOnOneThreadOrTwo) {
     EXPECT_EQ(a.candidates[i].plan.ball, b.candidates[i].plan.ball);
     EXPECT_EQ(a.candidates[i].plan.pocket, b.candidates[i].plan.pocket);
     EXPECT_EQ(a.candidates[i].full.successes, b.candidates[i].full.successes);
+    EXPECT_EQ(a.candidates[i].confirmed.successes, b.candidates[i].confirmed.successes);
     EXPECT_EQ(a.candidates[i].next_shot_value, b.candidates[i].next_shot_value);
     EXPECT_EQ(a.candidates[i].score, b.candidates[i].score);
   }
@@ -181,7 +217,7 @@ TEST_F(ShotChoiceTest, BallInHandPlacesTheCueBallForALikelyPot) {
     EXPECT_GT((b.state.segment<2>(physics::kX) - *r.cue_placement).norm(), 2 * params_.ball.radius);
   }
   EXPECT_EQ(r.chosen()->plan.ball, 1);
-  EXPECT_GT(r.chosen()->full.probability, 0.9);
+  EXPECT_GT(r.chosen()->reported().probability, 0.9);
   EXPECT_TRUE(r.likely);
 }
 

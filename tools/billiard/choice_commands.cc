@@ -25,6 +25,7 @@ struct ChoiceArgs {
   std::string rules = "any";
   std::string noise = params::kDefaultNoise;
   int samples = 64;
+  int confirm_samples = 256;
   std::uint64_t seed = 1;
   int threads = batch::DefaultThreadCount();
   bool json = false;
@@ -37,6 +38,9 @@ void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
       ->capture_default_str();
   cmd->add_option("--samples", args->samples, "Full-model executions of each finalist")
       ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--confirm-samples", args->confirm_samples,
+                  "Fresh full-model executions of the chosen shot: its reported probability")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", args->seed, "Seed of the sampled noise")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads (the results do not depend on them)")
       ->capture_default_str()->check(CLI::PositiveNumber);
@@ -54,6 +58,7 @@ choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
     throw UsageError(std::string("--noise: ") + e.what());
   }
   options.samples = args.samples;
+  options.confirm_samples = args.confirm_samples;
   options.seed = args.seed;
   return options;
 }
@@ -88,9 +93,10 @@ nlohmann::json CandidateJson(const choice::Candidate& c) {
   j["finalist"] = c.finalist;
   j["position_target"] = c.position_target ? Point(*c.position_target) : nlohmann::json(nullptr);
   if (c.finalist) {
-    j["success_probability"] = c.full.probability;
-    j["probability_stderr"] = c.full.stderr_;
-    j["samples"] = c.full.samples;
+    j["success_probability"] = c.reported().probability;
+    j["probability_stderr"] = c.reported().stderr_;
+    j["samples"] = c.reported().samples;
+    j["selection_probability"] = c.full.probability;
     j["next_shot_value"] = c.next_shot_value;
   }
   j["score"] = c.score;
@@ -108,8 +114,8 @@ void PrintChoice(const choice::ChoiceResult& r) {
   for (const choice::Candidate& c : r.candidates) {
     if (!c.finalist) continue;
     std::cerr << "  ball " << c.plan.ball << " in " << c.plan.pocket << " ("
-              << pot::ShotKindName(c.plan.kind) << "): p " << c.full.probability << " +- "
-              << c.full.stderr_ << ", next shot " << c.next_shot_value << ", score " << c.score
+              << pot::ShotKindName(c.plan.kind) << "): p " << c.reported().probability << " +- "
+              << c.reported().stderr_ << ", next shot " << c.next_shot_value << ", score " << c.score
               << "\n";
   }
   std::cerr << "  " << r.candidates.size() << " candidates, " << r.simulations << " simulations, "
@@ -126,9 +132,10 @@ nlohmann::json ChoiceJson(const choice::ChoiceResult& r) {
   const choice::Candidate* chosen = r.chosen();
   if (chosen) {
     nlohmann::json c = PotPlanJson(chosen->plan);
-    c["success_probability"] = chosen->full.probability;
-    c["probability_stderr"] = chosen->full.stderr_;
-    c["samples"] = chosen->full.samples;
+    c["success_probability"] = chosen->reported().probability;
+    c["probability_stderr"] = chosen->reported().stderr_;
+    c["samples"] = chosen->reported().samples;
+    c["selection_probability"] = chosen->full.probability;
     c["next_shot_value"] = chosen->next_shot_value;
     c["score"] = chosen->score;
     c["position_target"] =
@@ -304,24 +311,31 @@ void AddBenchGameCommand(CLI::App& app) {
   bench::GameBenchmarkOptions& o = args->options;
   cmd->add_option("--layouts", o.layouts, "Drills from ball in hand per noise and policy")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  cmd->add_option("--calibration-layouts", o.calibration_layouts, "Choices whose finalists are replayed")
+  cmd->add_option("--calibration-layouts", o.calibration_layouts, "Choices whose chosen shot is replayed")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  cmd->add_option("--executions", o.executions, "Replays of each finalist")
+  cmd->add_option("--executions", o.executions, "Replays of each chosen shot")
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_option("--samples", o.samples, "The choice's full-model executions per finalist")
       ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--confirm-samples", o.confirm_samples,
+                  "Fresh full-model executions of the chosen shot: its reported probability")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", o.seed, "The first layout's seed")->capture_default_str();
   cmd->add_option("--threads", o.threads, "Threads")->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--chunk", o.chunk, "Layouts between the report's rewrites")
+      ->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_option("--out", args->out, "Write game_report.md, game_reliability.png and game_results.json here");
   cmd->callback([args] {
     if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
     bench::GameBenchmarkOptions options = args->options;
     options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
-    const bench::GameBenchmarkResult result = bench::RunGameBenchmark(options);
-    if (!args->out.empty()) {
-      bench::WriteGameReport(result, args->out);
-      std::cerr << "bench-game: wrote " << args->out << "/game_report.md\n";
-    }
+    // The report rewritten after each chunk: a run stopped early leaves its largest whole part.
+    const std::string out = args->out;
+    const bench::GameBenchmarkResult result =
+        bench::RunGameBenchmark(options, [out](const bench::GameBenchmarkResult& so_far) {
+          if (!out.empty()) bench::WriteGameReport(so_far, out);
+        });
+    if (!out.empty()) std::cerr << "bench-game: wrote " << out << "/game_report.md\n";
     std::cout << bench::GameSummaryJson(result).dump() << std::endl;
   });
 }
