@@ -352,7 +352,9 @@ void WriteGameReport(const GameBenchmarkResult& r, const std::string& dir) {
       << "probability is " << Fixed(cal["mean_predicted"].get<double>(), 3) << ", the measured rate "
       << Fixed(cal["measured"].get<double>(), 3) << "; the finalists' own estimate that chose the "
       << "shot would have said " << Fixed(cal["mean_selection_estimate"].get<double>(), 3)
-      << " (the winner's curse the confirmation removes). A decile holding " << kJudgedCount
+      << " (the maximum of the finalists' noisy estimates is biased up, a winner's curse; "
+      << "the gap to the measured rate is what the confirmation removes, however small). "
+      << "A decile holding " << kJudgedCount
       << " or more executions is judged against 5 points; the measured rate's binomial standard "
       << "error is given (replays of one choice share its true probability, so the error across "
       << "choices is larger where a decile holds few choices).\n\n"

@@ -86,7 +86,9 @@ TEST_F(GameTest, NineBallCallsTheLowestBall) {
   const GameRecord game = PlayGame(table_, params_, balls, options_, pool);
   std::vector<int> on_table = {1, 2, 3, 4, 5, 6, 7, 8, 9};
   for (const ShotRecord& r : game.shots) {
-    if (r.ball >= 0) EXPECT_EQ(r.ball, on_table.front());
+    if (r.ball >= 0) {
+      EXPECT_EQ(r.ball, on_table.front());
+    }
     if (r.foul) continue;
     for (int id : r.potted) on_table.erase(std::find(on_table.begin(), on_table.end(), id));
   }

@@ -196,7 +196,7 @@ std::vector<Placement> CandidatePlacements(const table::TableGeometry& table, do
             return (Position(b) - place).norm() >= 2 * radius + kPlacementClearance;
           });
           if (!clear) continue;
-          const double estimate = EasyPotEstimate(table, radius, WithCueBallAt(others, place), ball,
+          const double estimate = EasyPotEstimate(radius, WithCueBallAt(others, place), ball,
                                                   pocket, options.noise);
           if (!top || estimate > top->estimate) top = Placement{place, estimate};
         }
@@ -207,6 +207,29 @@ std::vector<Placement> CandidatePlacements(const table::TableGeometry& table, do
   std::stable_sort(best.begin(), best.end(),
                    [](const Placement& a, const Placement& b) { return a.estimate > b.estimate; });
   return best;
+}
+
+// The executions of one candidate (the k-th of a batch of `samples` each): its pot rate and the
+// mean next-shot value of the executions that pot.
+struct Tally {
+  PotProbability pots;
+  double next_shot_value = 0.0;
+};
+
+Tally TallyOf(const std::vector<Execution>& executions, std::size_t k, int samples) {
+  int successes = 0;
+  double value_sum = 0.0;
+  for (int s = 0; s < samples; ++s) {
+    const Execution& e = executions[k * samples + s];
+    successes += e.potted;
+    value_sum += e.next_value;
+  }
+  return {Binomial(successes, samples), successes > 0 ? value_sum / successes : 0.0};
+}
+
+// p (1 + v) with the lookahead, p alone without it.
+double Score(const Tally& tally, bool lookahead) {
+  return lookahead ? tally.pots.probability * (1 + tally.next_shot_value) : tally.pots.probability;
 }
 
 // Screens candidates `which`: screen_samples closed-form executions each, their legal pot rate
@@ -220,16 +243,9 @@ int Screen(const table::TableGeometry& table, const physics::ModelParameters& pa
                                                      options.lookahead, pool);
   for (std::size_t k = 0; k < which.size(); ++k) {
     Candidate& c = (*candidates)[which[k]];
-    int successes = 0;
-    double value_sum = 0.0;
-    for (int s = 0; s < options.screen_samples; ++s) {
-      const Execution& e = screened[k * options.screen_samples + s];
-      successes += e.potted;
-      value_sum += e.next_value;
-    }
-    c.screen_probability = Binomial(successes, options.screen_samples).probability;
-    const double value = successes > 0 ? value_sum / successes : 0.0;
-    c.score = options.lookahead ? c.screen_probability * (1 + value) : c.screen_probability;
+    const Tally tally = TallyOf(screened, k, options.screen_samples);
+    c.screen_probability = tally.pots.probability;
+    c.score = Score(tally, options.lookahead);
   }
   return static_cast<int>(screened.size());
 }
@@ -406,8 +422,7 @@ PotProbability EstimatePotProbability(const table::TableGeometry& table,
   return Binomial(successes, samples);
 }
 
-double EasyPotEstimate(const table::TableGeometry& table, double radius,
-                       const std::vector<table::SceneBall>& balls, int ball,
+double EasyPotEstimate(double radius, const std::vector<table::SceneBall>& balls, int ball,
                        const table::Pocket& pocket, const params::ExecutionNoise& noise,
                        double max_cut_deg) {
   const table::SceneBall* cue = FindBall(balls, 0);
@@ -447,7 +462,7 @@ double BestNextShotValue(const table::TableGeometry& table, double radius,
   double best = 0.0;
   for (int ball : targets) {
     for (const table::Pocket& pocket : table.pockets) {
-      best = std::max(best, EasyPotEstimate(table, radius, balls, ball, pocket, noise));
+      best = std::max(best, EasyPotEstimate(radius, balls, ball, pocket, noise));
     }
   }
   return best;
@@ -521,17 +536,10 @@ ChoiceResult ChooseUnconfirmed(const table::TableGeometry& table,
   for (std::size_t f = 0; f < finalists.size(); ++f) {
     Candidate& c = candidates[finalists[f]];
     c.finalist = true;
-    int successes = 0;
-    double value_sum = 0.0;
-    for (int s = 0; s < options.samples; ++s) {
-      const Execution& e = full[f * options.samples + s];
-      successes += e.potted;
-      value_sum += e.next_value;
-    }
-    c.full = Binomial(successes, options.samples);
-    c.next_shot_value = successes > 0 ? value_sum / successes : 0.0;
-    c.score = options.lookahead ? c.full.probability * (1 + c.next_shot_value)
-                                : c.full.probability;
+    const Tally tally = TallyOf(full, f, options.samples);
+    c.full = tally.pots;
+    c.next_shot_value = tally.next_shot_value;
+    c.score = Score(tally, options.lookahead);
   }
   // Finalists first, by score; the others after them in screening order.
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
@@ -639,7 +647,7 @@ ChoiceResult ChooseEasiestLooking(const table::TableGeometry& table,
   for (int ball : LegalTargets(options.rules, scene)) {
     for (const table::Pocket& pocket : table.pockets) {
       looks.push_back({ball, &pocket,
-                       EasyPotEstimate(table, params.ball.radius, scene, ball, pocket, options.noise)});
+                       EasyPotEstimate(params.ball.radius, scene, ball, pocket, options.noise)});
     }
   }
   std::stable_sort(looks.begin(), looks.end(),

@@ -141,8 +141,7 @@ PotProbability EstimatePotProbability(const table::TableGeometry& table,
 // the ghost ball, turns the object ball by e D / (2 r cos cut) (the line of centres moves
 // sideways by e D on a ball of reach 2 r cos cut). It ignores throw, squirt and speed: a ranking,
 // not the truth.
-double EasyPotEstimate(const table::TableGeometry& table, double radius,
-                       const std::vector<table::SceneBall>& balls, int ball,
+double EasyPotEstimate(double radius, const std::vector<table::SceneBall>& balls, int ball,
                        const table::Pocket& pocket, const params::ExecutionNoise& noise,
                        double max_cut_deg = 80.0);
 

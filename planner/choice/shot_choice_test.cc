@@ -144,15 +144,15 @@ TEST_F(ShotChoiceTest, ScratchAndWrongContactAreNotPots) {
 TEST_F(ShotChoiceTest, EasyEstimateSeesBlocksAndDistance) {
   const params::ExecutionNoise noise = params::LoadNoise("robot");
   const table::Pocket& corner = *table_.PocketNamed("upper_right");
-  const double near = EasyPotEstimate(table_, params_.ball.radius, StraightPot(0.3, 0.3), 1, corner, noise);
-  const double far = EasyPotEstimate(table_, params_.ball.radius, StraightPot(1.2, 1.0), 1, corner, noise);
+  const double near = EasyPotEstimate(params_.ball.radius, StraightPot(0.3, 0.3), 1, corner, noise);
+  const double far = EasyPotEstimate(params_.ball.radius, StraightPot(1.2, 1.0), 1, corner, noise);
   EXPECT_GT(near, 0.99);
   EXPECT_LT(far, near);
   auto blocked = StraightPot(0.6, 0.6);
   const Eigen::Vector2d mid = 0.5 * (blocked[0].state.segment<2>(physics::kX) +
                                      blocked[1].state.segment<2>(physics::kX));
   blocked.push_back(Ball(2, mid.x(), mid.y()));
-  EXPECT_EQ(EasyPotEstimate(table_, params_.ball.radius, blocked, 1, corner, noise), 0.0);
+  EXPECT_EQ(EasyPotEstimate(params_.ball.radius, blocked, 1, corner, noise), 0.0);
 }
 
 // Ball 3 sits near a corner; ball 1 is across the table. Any ball: the easy 3. Nine-ball: the
