@@ -261,7 +261,7 @@ void WritePotResults(const PotBenchmarkResult& r, const std::string& dir) {
   std::ofstream out = OpenForWriting(dir + "/pot_results.csv");
   out << "seed,table,balls,straight_clear,status,kind,rail,cut_deg,margin_left_deg,margin_right_deg,"
          "speed_lo,speed_hi,solve_us,simulations,verified,ghost_pots,inner_left,inner_right,"
-         "outer_left_misses,outer_right_misses,target_x,target_y,rest_error_m\n";
+         "outer_left_misses,outer_right_misses,target_x,target_y,rest_error_m,cpu_us\n";
   const auto row = [&](std::uint64_t seed, const std::string& table, int balls, bool clear, const pot::PotPlan& p) {
     const bool ok = p.status == pot::PotStatus::kOk;
     out << seed << "," << table << "," << balls << "," << clear << "," << pot::PotStatusName(p.status)
@@ -274,13 +274,13 @@ void WritePotResults(const PotBenchmarkResult& r, const std::string& dir) {
     row(run.seed, run.table, run.balls, run.straight_clear, run.plan);
     out << "," << (run.plan.status == pot::PotStatus::kOk ? (run.verified ? "1" : "0") : "") << ","
         << Flag(run.ghost_pots) << "," << Flag(run.inner_left) << "," << Flag(run.inner_right) << ","
-        << Flag(run.outer_left) << "," << Flag(run.outer_right) << ",,,\n";
+        << Flag(run.outer_left) << "," << Flag(run.outer_right) << ",,,," << Fixed(run.cpu_us, 0) << "\n";
   }
   for (const PositionRun& p : r.positions) {
     row(p.seed, "pool-9ft", 0, false, p.plan);
     out << "," << (p.plan.status == pot::PotStatus::kOk ? (p.legal ? "1" : "0") : "") << ",,,,,,"
         << Fixed(p.target.x(), 4) << "," << Fixed(p.target.y(), 4) << ","
-        << (p.rest_error_m >= 0.0 ? Sci(p.rest_error_m) : "") << "\n";
+        << (p.rest_error_m >= 0.0 ? Sci(p.rest_error_m) : "") << ",\n";
   }
 }
 

@@ -54,10 +54,13 @@ constexpr double kWidestWindow = 20.0 * kDegree;
 // that misses, kHeadingBracket either side of the edge predicted, and where the prediction is off
 // by bisection until the outside is within kHeadingResolution of the inside (beyond the inside by
 // less than (1 + 0.1) / (1 - 0.1) = 1.22: a margin lies between them, 0.9 of it inside, 1.1 of
-// it outside). The speed window more coarsely (it is what the robot's speed may be off by, not
-// what it aims with).
+// it outside). The bracket about the prediction is as wide as the tolerance, so that where the
+// edge lies in it the margin's 1 - and 1 + kMarginTolerance are the two headings played. The
+// speed window more coarsely (it is what the robot's speed may be off by, not what it aims with).
 constexpr double kMarginTolerance = 0.1;
-constexpr double kHeadingBracket = 0.09;
+constexpr double kHeadingBracket = kMarginTolerance;
+// Headings closer than this are the same heading played [rad].
+constexpr double kSameHeading = 1e-12;
 // A margin's bisection halves its bracket at most this often (an edge at the aim itself).
 constexpr int kEdgeHalvings = 12;
 // An edge's first guess is at least this fraction of the way to its limit.
@@ -108,6 +111,9 @@ constexpr int kMaxTruthCorrections = 4;
 // Curves: the cue elevations [rad] and side offsets (fraction of the largest) tried.
 constexpr double kCurveElevations[] = {25.0 * kDegree, 45.0 * kDegree, 60.0 * kDegree};
 constexpr double kCurveSides[] = {0.7, -0.7};
+// How far a curve's cut on its path alone may lie beyond the cue's limit and its aim still be
+// searched: the aim moves the contact around the object ball, which turns the cut [rad].
+constexpr double kCurveCutSlack = 10.0 * kDegree;
 
 double Wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
 Eigen::Vector2d Unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
@@ -186,6 +192,9 @@ struct Aimed {
 struct Refusal {
   PotStatus status;
   std::string reason;
+  // K does not drop along its own route, whatever the cue ball does: a curve, which changes only
+  // the cue ball's path, cannot mend it.
+  bool object_route_closed = false;
 };
 
 class PotSearch {
@@ -225,6 +234,9 @@ class PotSearch {
     }
     StrokeShape shape{kFirstCueSpeed, route.tip_side, 0.0, route.elevation};
     const double first_heading = FirstHeading(route, shape, ghost);
+    if (route.kind == ShotKind::kCurve) {
+      if (std::optional<Refusal> thin = CurveTooThin(shape, first_heading, ghost, departure)) return *thin;
+    }
     std::optional<Aimed> aimed = AimAt(shape, first_heading, Angle(departure), false, 0.0);
     if (!aimed) return Refusal{PotStatus::kBlocked, BlockedReason(shape, first_heading)};
     const double cut_angle = CutAngle(Unit(Angle(aimed->contact.cue_before.segment<2>(physics::kVx))),
@@ -245,9 +257,10 @@ class PotSearch {
       const double scan = route.kind == ShotKind::kBank ? kRailScan : kDirectScan;
       drop = DropWindow(aimed->contact, line, scan, kReachSpeed, kCoarseWindowResolution);
       if (!drop) {
-        return Refusal{PotStatus::kBlocked, "ball " + std::to_string(object_id_) +
-                                                " does not drop in " + pocket_.name +
-                                                " along its route (a ball or a jaw is in the way)"};
+        return Refusal{PotStatus::kBlocked,
+                       "ball " + std::to_string(object_id_) + " does not drop in " + pocket_.name +
+                           " along its route (a ball or a jaw is in the way)",
+                       true};
       }
       aimed = AimAt(shape, aimed->heading, drop->Middle(), false, aimed->slope);
       if (!aimed) return Refusal{PotStatus::kBlocked, BlockedReason(shape, first_heading)};
@@ -439,6 +452,20 @@ class PotSearch {
     return h1;
   }
 
+  // A curve's cut read off the cue ball's path alone where it passes its ghost ball: one that
+  // leaves the cut beyond the cue's limit by more than the aim can change it is refused before
+  // the aim is searched (every heading tried there is a simulation). Where the path does not
+  // pass the ghost ball, the aim's own scan decides.
+  std::optional<Refusal> CurveTooThin(const StrokeShape& shape, double heading,
+                                      const Eigen::Vector2d& ghost, const Eigen::Vector2d& departure) {
+    const Passing pass = Pass(physics::StrikeBall(shape.At(heading), cue_position_, params_), ghost, false);
+    if (!(std::abs(pass.side) < r_) || pass.velocity.norm() <= 0.0) return std::nullopt;
+    const double cut = CutAngle(pass.velocity.normalized(), departure);
+    const double limit = options_.max_cut_deg * kDegree;
+    if (cut <= limit + kCurveCutSlack) return std::nullopt;
+    return Refusal{PotStatus::kTooThin, "the curve's cut is " + Degrees(cut) + ", beyond " + Degrees(limit)};
+  }
+
   // The signed distance [m] by which the cue ball's path alone on the table passes `point`
   // (left of its travel > 0), at its closest approach.
   double PassingSide(const CueStroke& stroke, const Eigen::Vector2d& point, bool after_rail) {
@@ -447,13 +474,24 @@ class PotSearch {
 
   // The same for a ball that starts in `state`, alone on the table.
   double PassingSide(const BallState& state, const Eigen::Vector2d& point, bool after_rail) {
+    return Pass(state, point, after_rail).side;
+  }
+
+  // How a ball's path alone on the table passes a point: the signed distance of PassingSide
+  // (infinite where it never does, after its rail if asked) and the ball's velocity there.
+  struct Passing {
+    double side = std::numeric_limits<double>::infinity();
+    Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
+  };
+  Passing Pass(const BallState& state, const Eigen::Vector2d& point, bool after_rail) {
     std::vector<SceneBall> alone = {{0, state}};
     std::unique_ptr<TableSimulation> sim = Simulation(alone, false);
     // Run a stretch at a time until the path has passed the point (it draws away again) or
     // the ball rests: a kick's cue ball would go on from cushion to cushion.
     constexpr double kStretch = 0.1, kSample = 2e-3;  // [s]
     constexpr double kPassed = 0.2;                    // [m] beyond the closest approach
-    double best = std::numeric_limits<double>::infinity(), side = 0.0, t = 0.0;
+    double best = std::numeric_limits<double>::infinity(), t = 0.0;
+    Passing passing;
     bool railed = !after_rail;
     std::size_t seen = 0;
     while (!sim->AtRest() && t < kLongestTime) {
@@ -476,12 +514,12 @@ class PotSearch {
         if (d < best) {
           best = d;
           const Eigen::Vector2d v = s.segment<2>(physics::kVx);
-          side = (v.x() * to.y() - v.y() * to.x()) > 0.0 ? best : -best;
+          passing = {(v.x() * to.y() - v.y() * to.x()) > 0.0 ? best : -best, v};
         }
       }
       if (d > best + kPassed) break;
     }
-    return railed ? side : std::numeric_limits<double>::infinity();
+    return railed ? passing : Passing{};
   }
 
   // The direction near `mirror` in which K, leaving the contact at the reach speed alone on the
@@ -941,7 +979,18 @@ class PotSearch {
   static double Margin(const Bracket& b, double centre) {
     const double in = std::abs(b.in - centre), out = std::abs(b.out - centre);
     const double margin = in / (1.0 - kMarginTolerance);
-    return (1.0 + kMarginTolerance) * margin >= out ? margin : in;
+    return (1.0 + kMarginTolerance) * margin >= out - kSameHeading ? margin : in;
+  }
+
+  // Margin(), its far side played: where the heading 1 + kMarginTolerance of it out still pots
+  // (K drops again past a hole in the window at the outside), the margin is the one whose
+  // 1 + kMarginTolerance is the outside, a heading played that misses.
+  static double PlayedMargin(const std::function<bool(double)>& pots, const Bracket& b, double centre) {
+    const double margin = Margin(b, centre);
+    const double side = b.out >= centre ? 1.0 : -1.0;
+    const double beyond = centre + side * (1.0 + kMarginTolerance) * margin;
+    if (margin <= 0.0 || std::abs(beyond - b.out) <= kSameHeading || !pots(beyond)) return margin;
+    return std::abs(b.out - centre) / (1.0 + kMarginTolerance);
   }
 
   // Margin, speed window and the check against the truth.
@@ -999,8 +1048,8 @@ class PotSearch {
                               kHeadingBracket, kHeadingResolution);
     const Bracket right = Edge(pots_heading, centre.heading, centre.heading - down, centre.heading - 0.5 * M_PI,
                                kHeadingBracket, kHeadingResolution);
-    plan.margin_left_deg = Margin(left, centre.heading) / kDegree;
-    plan.margin_right_deg = Margin(right, centre.heading) / kDegree;
+    plan.margin_left_deg = PlayedMargin(pots_heading, left, centre.heading) / kDegree;
+    plan.margin_right_deg = PlayedMargin(pots_heading, right, centre.heading) / kDegree;
     const auto pots_speed = [&](double speed) {
       StrokeShape s = shape;
       s.speed = speed;
@@ -1272,8 +1321,12 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
   std::vector<std::string> tried;
   int alternatives = 0;
   std::string direct_blocked;
+  bool direct_object_closed = false;
   const auto refused = [&](const Refusal& r, const Route& route) {
-    if (route.kind == ShotKind::kDirect) direct_blocked = r.reason;
+    if (route.kind == ShotKind::kDirect) {
+      direct_blocked = r.reason;
+      direct_object_closed = r.object_route_closed;
+    }
     if (!worst || Rank(r.status) > Rank(worst->status)) worst = r;
     std::string label = ShotKindName(route.kind);
     if (route.rail >= 0) label += " off rail " + std::to_string(route.rail);
@@ -1287,9 +1340,12 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
     }
   };
   for (ShotKind kind : kinds) {
-    // A curve is for a cue ball's line that is blocked when no bank or kick plans; asked for, it
-    // is tried anyway.
-    if (kind == ShotKind::kCurve && !request.kind && (direct_blocked.empty() || best)) continue;
+    // A curve is for a cue ball's line that is blocked (or too thin) when no bank or kick plans,
+    // and K's own route is open; asked for, it is tried anyway.
+    if (kind == ShotKind::kCurve && !request.kind &&
+        (direct_blocked.empty() || direct_object_closed || best)) {
+      continue;
+    }
     std::vector<std::pair<PotPlan, Route>> planned;
     int searched = 0;
     for (const Candidate& c : Routes(kind, table, params, search.balls(), request.ball, pocket)) {
