@@ -266,6 +266,15 @@ TEST_F(PotPlannerTest, BadRequestsAreRefusedWithAReason) {
   EXPECT_EQ(PlanPot(table_, params_, no_cue, {1, "upper_right", std::nullopt, {}}).status, PotStatus::kInvalid);
 }
 
+// The pocket behind the object ball: no curve within the cue's elevations bends the cue ball
+// round to a cut below the limit, which its path alone shows where it passes the ghost ball.
+TEST_F(PotPlannerTest, ABackwardsCurveIsTooThin) {
+  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9)};
+  const PotPlan plan = PlanPot(table_, params_, balls, {1, "lower_left", ShotKind::kCurve, {}});
+  EXPECT_EQ(plan.status, PotStatus::kTooThin) << plan.reason;
+  EXPECT_NE(plan.reason.find("curve: the curve's cut is"), std::string::npos) << plan.reason;
+}
+
 // Every ok plan of seeded layouts pots legally when its launch is simulated on its own.
 TEST_F(PotPlannerTest, SeededLayoutsPlanOnlyPotsThatDrop) {
   int ok = 0;
