@@ -94,9 +94,8 @@ constexpr double kRingRadii = 2.5;
 
 bool NearPocket(const TableRegion& table, const Eigen::Vector2d& centre, double radius) {
   const auto pockets = table.PocketPlaces();
-  return std::any_of(pockets.begin(), pockets.end(), [&](const auto& p) {
-    return (p - centre).norm() < kPocketRadii * radius;
-  });
+  return std::any_of(pockets.begin(), pockets.end(),
+                     [&](const auto& p) { return (p - centre).norm() < kPocketRadii * radius; });
 }
 
 bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double radius) {

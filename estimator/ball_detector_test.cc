@@ -340,7 +340,7 @@ TEST(BallDetector, BallsInThePocketsJawsButNotThePocketsMouths) {
   // A rendered pool table with the corner pockets' mouths drawn beyond the cushions' noses (a dark
   // hole ringed by its liner's rim, as a camera sees one between the jaws), and a ball resting in
   // two of the four corners' jaws, 4 mm off both cushions: both balls are found (within half a
-  // radius: a ball against the cushion is found less exactly, see above), and nothing in the mouths.
+  // radius: a ball against a cushion is found less exactly, see above), nothing in the mouths.
   const physics::ModelParameters params = params::LoadParameters("pool");
   const double r = params.ball.radius;
   const camera::CameraModel camera = camera::CameraModel::Overhead(params.table, 1280, 720);
@@ -353,9 +353,8 @@ TEST(BallDetector, BallsInThePocketsJawsButNotThePocketsMouths) {
                                               {length - r - 4e-3, width - r - 4e-3}};
   std::vector<render::RenderBall> balls;
   for (std::size_t i = 0; i < truth.size(); ++i) {
-    balls.push_back(render::RenderBall::AtRest(static_cast<int>(i) + 1,
-                                               render::PoolBallColour(static_cast<int>(i) + 1),
-                                               truth[i]));
+    balls.push_back(render::RenderBall::AtRest(
+        static_cast<int>(i) + 1, render::PoolBallColour(static_cast<int>(i) + 1), truth[i]));
   }
   cv::Mat image = render::TableRenderer(camera, params, render).Render(balls, 0.0);
   const double radius_px = ExpectedRadiusPx(camera, r);
