@@ -52,7 +52,9 @@ constexpr double kWindowRadiiAroundTable = 3.0;
 // is only held to them near a pocket (within kPocketRadii of a corner or the middle of a side),
 // where pocket liners and holes look like balls, and taken up to kOffSurfaceRadii outside them;
 // elsewhere its centre may be up to kOffClothRadii outside the cloth's outline (which a dark edge
-// of the cloth, in the cushion's shade, can pull in).
+// of the cloth, in the cushion's shade, can pull in). Only a sure outline (kSureScore, below) is
+// taken outside the noses near a pocket: an unsure one there is the pocket's dark mouth between
+// its jaws, its rim outlined.
 constexpr double kPocketRadii = 3.0;
 constexpr double kOffSurfaceRadii = 0.5;
 constexpr double kOffClothRadii = 0.5;
@@ -90,13 +92,21 @@ constexpr double kUnknownEdgeNoise = 1.0;
 constexpr int kRingSamples = 64;
 constexpr double kRingRadii = 2.5;
 
+bool NearPocket(const TableRegion& table, const Eigen::Vector2d& centre, double radius) {
+  const auto pockets = table.PocketPlaces();
+  return std::any_of(pockets.begin(), pockets.end(),
+                     [&](const auto& p) { return (p - centre).norm() < kPocketRadii * radius; });
+}
+
 bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double radius) {
   if (!table.InsideCloth(centre, -kOffClothRadii * radius)) return false;
-  const auto pockets = table.PocketPlaces();
-  const bool near_pocket = std::any_of(pockets.begin(), pockets.end(), [&](const auto& p) {
-    return (p - centre).norm() < kPocketRadii * radius;
-  });
-  return !near_pocket || table.Contains(centre, -kOffSurfaceRadii * radius);
+  return !NearPocket(table, centre, radius) || table.Contains(centre, -kOffSurfaceRadii * radius);
+}
+
+// Whether an outline scoring `score` is a pocket's mouth rather than a ball (kPocketRadii).
+bool InPocketMouth(const TableRegion& table, const Eigen::Vector2d& centre, double radius,
+                   double score) {
+  return score < kSureScore && NearPocket(table, centre, radius) && !table.Contains(centre);
 }
 
 // The share of the places on the playing surface of the circle around `ball` (kSurroundRadii) on
@@ -446,6 +456,7 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
         EvidenceForBall(bgr, lab, *outline, radius,
                         {cloth_.ColourAt(outline->centre), cloth_.noise}, peak.support)
             .Score();
+    if (InPocketMouth(*table_, outline->centre, radius, score)) continue;
     outlined.push_back({{outline->centre, outline->radius, score}, peak.support});
   }
   // Best first; among outlines of one ball (from a peak at its centre, or between it and its

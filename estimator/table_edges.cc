@@ -16,7 +16,7 @@ namespace {
 // over the band searched (the cloth's weave and the camera's noise). Up to kMaxLines lines are
 // found, each through the edges of at least kMinPlaces of the places on each half of the side;
 // RANSAC (kEdgeRansacTries tries) keeps the edges within kEdgeInlierPx of a line.
-constexpr int kEdgeSamples = 24;
+constexpr int kEdgeSamples = kEdgePlaces / 2;
 constexpr double kEdgeFrom = 0.12, kEdgeMiddle = 0.08;
 constexpr double kMinEdge = 2.0, kEdgeNoises = 4.0;
 constexpr int kMaxLines = 3;
@@ -256,8 +256,8 @@ std::optional<EdgeLine> ClothSide(const cv::Mat& bgr, const Eigen::Matrix3d& ima
   return lines.front();
 }
 
-std::optional<Eigen::Vector3d> NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& cloth_from_table,
-                                        bool long_first, int side, double max_cushion_width) {
+std::optional<EdgeLine> NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& cloth_from_table,
+                                 bool long_first, int side, double max_cushion_width) {
   const auto lines = EdgeLinesAlong(bgr, cloth_from_table, long_first, side, 0.0, max_cushion_width,
                                     kOutlineClearancePx);
   if (lines.empty()) return std::nullopt;
@@ -267,7 +267,7 @@ std::optional<Eigen::Vector3d> NoseLine(const cv::Mat& bgr, const Eigen::Matrix3
       nose = &l;
     }
   }
-  return nose->line;
+  return *nose;
 }
 
 std::optional<Eigen::Vector3d> FaintNoseLine(const cv::Mat& bgr,

@@ -29,6 +29,10 @@ std::array<Eigen::Vector2d, 4> TableCorners(bool long_first);
 // The image line of side `side` (table corners side, side + 1) of `image_from_table`.
 Eigen::Vector3d SideLine(const Eigen::Matrix3d& image_from_table, bool long_first, int side);
 
+// The places along a side where edges are looked for, half on each of its halves (EdgeLine's
+// `places` counts up to this many).
+inline constexpr int kEdgePlaces = 48;
+
 // A straight edge along a side: its homogeneous image line, at how many places along the side it
 // was met, and its mean distance inward from the side's line [px] (negative: outward).
 struct EdgeLine {
@@ -54,8 +58,8 @@ std::optional<EdgeLine> ClothSide(const cv::Mat& bgr, const Eigen::Matrix3d& ima
 // The nose of the cushion along side `side` of `cloth_from_table` (the cloth's outline), up to
 // `max_cushion_width` table widths inward: the best supported straight edge, or the innermost
 // nearly as well supported; none when there is none (a cushion seen from behind hides its face).
-std::optional<Eigen::Vector3d> NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& cloth_from_table,
-                                        bool long_first, int side, double max_cushion_width);
+std::optional<EdgeLine> NoseLine(const cv::Mat& bgr, const Eigen::Matrix3d& cloth_from_table,
+                                 bool long_first, int side, double max_cushion_width);
 
 // The nose of a cushion seen from behind (the one nearest the camera in an oblique view): its top
 // is of the cloth, so the cloth's outline is the cushion's back, and the nose is a faint line

@@ -47,6 +47,15 @@ constexpr double kSideBand = 0.02;
 constexpr double kSideEnd = 0.12;
 constexpr double kRansacInlierPx = 1.5;
 constexpr int kRansacTries = 200;
+// Up to kMaxStretches lines are fitted to a side's outline points, each through kMinStretch of them
+// at least (but the first): the straight stretches of a side that an arm, a cue or the cushion's
+// top breaks (FitSides).
+constexpr std::size_t kMaxStretches = 3;
+constexpr double kMinStretch = 0.1;
+constexpr double kMaxStretchTurn = 0.15;  // [rad] from the hull's side
+// A stretch other than the best supported is taken for the side only when the nose found inside
+// it is met at kOtherStretchNose of the places along the side at least (table_edges.h).
+constexpr double kOtherStretchNose = 0.6;
 // The outline found at the search resolution is refined within kOutlineSearchPx pixels of that
 // resolution of it (its barrier and opening leave it a pixel or two inside).
 constexpr double kOutlineSearchPx = 3.0;
@@ -210,13 +219,17 @@ cv::Mat FillHoles(const cv::Mat& region) {
   return padded(cv::Rect(1, 1, region.cols, region.rows)) != 128;
 }
 
-// The line through the outline points near the side from `a` to `b`: RANSAC (seeded, so that a
-// frame always gives the same table) then least squares over its inliers.
-std::optional<Line> FitSide(const std::vector<cv::Point>& outline, const cv::Point2d& a,
-                            const cv::Point2d& b, double perimeter) {
+// The lines through the outline points near the side from `a` to `b`, best supported first: RANSAC
+// (seeded, so that a frame always gives the same table) then least squares over its inliers, then
+// again over the points left, while a line holds kMinStretch of the side's points. The cloth's
+// outline along a side is a straight stretch where the cloth runs up to the cushion, and others
+// where an arm or a cue hides it, or where the cushion's top, of the cloth's colour, joins the bed
+// for a while: the best supported line may bridge two of them, and one of the others be the side.
+std::vector<Line> FitSides(const std::vector<cv::Point>& outline, const cv::Point2d& a,
+                           const cv::Point2d& b, double perimeter) {
   const cv::Point2d along = b - a;
   const double length = cv::norm(along);
-  if (length < 1) return std::nullopt;
+  if (length < 1) return {};
   const cv::Point2d u = along / length, normal(-u.y, u.x);
   std::vector<cv::Point2d> points;
   for (const cv::Point& p : outline) {
@@ -226,45 +239,56 @@ std::optional<Line> FitSide(const std::vector<cv::Point>& outline, const cv::Poi
       points.push_back(p);
     }
   }
-  if (points.size() < 2) return std::nullopt;
+  const double min_points = std::max(2.0, kMinStretch * static_cast<double>(points.size()));
+  std::vector<Line> lines;
   std::mt19937 random(1);
-  std::uniform_int_distribution<std::size_t> pick(0, points.size() - 1);
-  Eigen::Vector3d best_line = Eigen::Vector3d::Zero();
-  int best_count = 0;
-  for (int attempt = 0; attempt < kRansacTries; ++attempt) {
-    const cv::Point2d p1 = points[pick(random)], p2 = points[pick(random)];
-    const cv::Point2d d = p2 - p1;
-    const double n = cv::norm(d);
-    if (n < 5) continue;
-    const Eigen::Vector3d line(-d.y / n, d.x / n, (d.y * p1.x - d.x * p1.y) / n);
-    int count = 0;
+  for (std::size_t tries = 0; tries < kMaxStretches && points.size() >= min_points; ++tries) {
+    std::uniform_int_distribution<std::size_t> pick(0, points.size() - 1);
+    Eigen::Vector3d best_line = Eigen::Vector3d::Zero();
+    int best_count = 0;
+    for (int attempt = 0; attempt < kRansacTries; ++attempt) {
+      const cv::Point2d p1 = points[pick(random)], p2 = points[pick(random)];
+      const cv::Point2d d = p2 - p1;
+      const double n = cv::norm(d);
+      if (n < 5) continue;
+      const Eigen::Vector3d line(-d.y / n, d.x / n, (d.y * p1.x - d.x * p1.y) / n);
+      int count = 0;
+      for (const auto& p : points) {
+        count += std::abs(line.dot(Eigen::Vector3d(p.x, p.y, 1))) < kRansacInlierPx;
+      }
+      if (count > best_count) {
+        best_count = count;
+        best_line = line;
+      }
+    }
+    std::vector<cv::Point2f> inliers;
+    std::vector<cv::Point2d> rest;
     for (const auto& p : points) {
-      count += std::abs(line.dot(Eigen::Vector3d(p.x, p.y, 1))) < kRansacInlierPx;
+      if (std::abs(best_line.dot(Eigen::Vector3d(p.x, p.y, 1))) < kRansacInlierPx) {
+        inliers.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+      } else {
+        rest.push_back(p);
+      }
     }
-    if (count > best_count) {
-      best_count = count;
-      best_line = line;
+    if (inliers.size() < std::max<std::size_t>(2, lines.empty() ? 2 : min_points)) break;
+    points = std::move(rest);
+    // A stretch turned from the side (an arm's edge, a cue's) is none of it.
+    const double turn = std::abs(best_line.x() * u.x + best_line.y() * u.y);
+    if (!lines.empty() && turn > std::sin(kMaxStretchTurn)) continue;
+    cv::Vec4f fitted;
+    cv::fitLine(inliers, fitted, cv::DIST_L2, 0, 0.01, 0.01);
+    Line line;
+    line.coefficients = {-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]};
+    double squares = 0;
+    for (const auto& p : inliers) {
+      const double e = line.coefficients.dot(Eigen::Vector3d(p.x, p.y, 1));
+      squares += e * e;
     }
+    line.points = static_cast<int>(inliers.size());
+    line.rms = std::sqrt(squares / inliers.size());
+    lines.push_back(line);
   }
-  std::vector<cv::Point2f> inliers;
-  for (const auto& p : points) {
-    if (std::abs(best_line.dot(Eigen::Vector3d(p.x, p.y, 1))) < kRansacInlierPx) {
-      inliers.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
-    }
-  }
-  if (inliers.size() < 2) return std::nullopt;
-  cv::Vec4f fitted;
-  cv::fitLine(inliers, fitted, cv::DIST_L2, 0, 0.01, 0.01);
-  Line line;
-  line.coefficients = {-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]};
-  double squares = 0;
-  for (const auto& p : inliers) {
-    const double e = line.coefficients.dot(Eigen::Vector3d(p.x, p.y, 1));
-    squares += e * e;
-  }
-  line.points = static_cast<int>(inliers.size());
-  line.rms = std::sqrt(squares / inliers.size());
-  return line;
+  return lines;
 }
 
 // The homography from the table (long side along x when `long_first`, else along y first and
@@ -364,6 +388,65 @@ double OverheadAspect(const std::array<Eigen::Vector2d, 4>& corners) {
   const double along = (0.5 * (corners[1] + corners[2]) - 0.5 * (corners[0] + corners[3])).norm();
   const double across = (0.5 * (corners[2] + corners[3]) - 0.5 * (corners[0] + corners[1])).norm();
   return std::max(along, across) / std::min(along, across);
+}
+
+// The cloth's outline along side `side` at full resolution (ClothSide) near the first of the side's
+// straight stretches at the search resolution (`stretches`, best supported first; the other sides
+// as in `rough_lines`) that a straight edge along both halves of the side confirms, and which
+// stretch that was; none when no stretch is.
+struct ClothEdge {
+  EdgeLine edge;
+  std::size_t stretch = 0;
+};
+std::optional<ClothEdge> ClothSideOfStretches(const cv::Mat& bgr,
+                                              std::array<Eigen::Vector3d, 4> rough_lines,
+                                              const std::vector<Line>& stretches, bool long_first,
+                                              int side, double search_px) {
+  for (std::size_t k = 0; k < stretches.size(); ++k) {
+    rough_lines[side] = stretches[k].coefficients;
+    std::array<Eigen::Vector2d, 4> corners;
+    if (!Intersections(rough_lines, &corners)) continue;
+    const auto found =
+        ClothSide(bgr, ImageFromTable(corners, long_first), long_first, side, search_px);
+    if (found) return ClothEdge{*found, k};
+  }
+  return std::nullopt;
+}
+
+// The lines of the cushions' noses inside the cloth's outline `cloth_corners` (the outline's own
+// side where none is found), and at how many places along each side its nose was met (0 where
+// none was, or only the faint line of a cushion seen from behind).
+std::array<Eigen::Vector3d, 4> CushionNoses(const cv::Mat& bgr,
+                                            const std::array<Eigen::Vector2d, 4>& cloth_corners,
+                                            bool long_first, std::array<int, 4>* places) {
+  const Eigen::Matrix3d cloth_from_table = ImageFromTable(cloth_corners, long_first);
+  // The side nearest the camera (the largest inverse depth at its middle), whose cushion is seen
+  // from behind in an oblique view.
+  const Eigen::Vector3d cloth_depth = cloth_from_table.inverse().row(2).transpose();
+  int nearest = 0;
+  double nearest_inverse_depth = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector2d middle = 0.5 * (cloth_corners[i] + cloth_corners[(i + 1) % 4]);
+    const double w = std::abs(cloth_depth.dot(middle.homogeneous()));
+    if (w > nearest_inverse_depth) {
+      nearest_inverse_depth = w;
+      nearest = i;
+    }
+  }
+  const bool oblique = DepthRatio(cloth_corners) > kOverheadDepthRatio;
+  std::array<Eigen::Vector3d, 4> lines;
+  for (int i = 0; i < 4; ++i) {
+    const std::optional<EdgeLine> edge =
+        NoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+    (*places)[i] = edge ? edge->places : 0;
+    std::optional<Eigen::Vector3d> nose;
+    if (edge) nose = edge->line;
+    if (!nose && oblique && i == nearest) {
+      nose = FaintNoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+    }
+    lines[i] = nose.value_or(SideLine(cloth_from_table, long_first, i));
+  }
+  return lines;
 }
 
 }  // namespace
@@ -481,60 +564,61 @@ TableSearch FindTable(const cv::Mat& bgr) {
   if (polygon.size() != 4) {
     return {std::nullopt, "no table: the cloth's outline is not a quadrilateral"};
   }
+  std::array<std::vector<Line>, 4> stretches;
   std::array<Line, 4> sides;
-  for (int i = 0; i < 4; ++i) {
-    const auto side = FitSide(outline, polygon[i], polygon[(i + 1) % 4], perimeter);
-    if (!side) return {std::nullopt, "no table: a side of the cloth is not straight"};
-    sides[i] = *side;
-  }
   std::array<Eigen::Vector3d, 4> lines;
   for (int i = 0; i < 4; ++i) {
-    sides[i].coefficients.z() /= scale;  // to full-resolution pixels
-    sides[i].rms /= scale;
+    stretches[i] = FitSides(outline, polygon[i], polygon[(i + 1) % 4], perimeter);
+    if (stretches[i].empty()) {
+      return {std::nullopt, "no table: a side of the cloth is not straight"};
+    }
+    for (Line& stretch : stretches[i]) {
+      stretch.coefficients.z() /= scale;  // to full-resolution pixels
+      stretch.rms /= scale;
+    }
+    sides[i] = stretches[i].front();
     lines[i] = sides[i].coefficients;
   }
   if (!Intersections(lines, &table.cloth_corners)) {
     return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
   }
   const bool long_first = LongSideFirst(table.cloth_corners, bgr.size());
-  const Eigen::Matrix3d rough_from_table = ImageFromTable(table.cloth_corners, long_first);
-  double squares = 0;
-  int points = 0;
-  for (int i = 0; i < 4; ++i) {
-    // Where no straight edge is near it, the side found at the search resolution stands.
-    const EdgeLine side =
-        ClothSide(bgr, rough_from_table, long_first, i, kOutlineSearchPx / scale)
-            .value_or(EdgeLine{sides[i].coefficients, sides[i].points, 0.0, sides[i].rms});
-    lines[i] = side.line;
-    squares += side.rms_px * side.rms_px * side.places;
-    points += side.places;
-  }
-  table.side_fit_rms_px = std::sqrt(squares / std::max(1, points));
-  if (!Intersections(lines, &table.cloth_corners)) {
-    return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
-  }
-  const Eigen::Matrix3d cloth_from_table = ImageFromTable(table.cloth_corners, long_first);
-  // The side nearest the camera (the largest inverse depth at its middle), whose cushion is seen
-  // from behind in an oblique view.
-  const Eigen::Vector3d cloth_depth = cloth_from_table.inverse().row(2).transpose();
-  int nearest = 0;
-  double nearest_inverse_depth = 0;
-  for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector2d middle = 0.5 * (table.cloth_corners[i] + table.cloth_corners[(i + 1) % 4]);
-    const double w = std::abs(cloth_depth.dot(middle.homogeneous()));
-    if (w > nearest_inverse_depth) {
-      nearest_inverse_depth = w;
-      nearest = i;
+  const std::array<Eigen::Vector3d, 4> rough_lines = lines;
+  // A stretch of a side's outline other than its best supported is the cloth's side only when the
+  // cushion's nose found inside it runs along most of the side too (kOtherStretchNose): the
+  // stretch a straight edge confirms may be the rail's, beyond a cushion whose nose cannot be seen
+  // (or is hidden by whoever hid the first stretch), and the side would be left at the rail.
+  std::array<bool, 4> other_stretches = {true, true, true, true};
+  for (bool again = true; again;) {
+    again = false;
+    std::array<bool, 4> other_stretch_taken = {false, false, false, false};
+    double squares = 0;
+    int points = 0;
+    for (int i = 0; i < 4; ++i) {
+      // Where no straight edge is near it, the side found at the search resolution stands.
+      const std::vector<Line> tried(
+          stretches[i].begin(), other_stretches[i] ? stretches[i].end() : stretches[i].begin() + 1);
+      const std::optional<ClothEdge> found =
+          ClothSideOfStretches(bgr, rough_lines, tried, long_first, i, kOutlineSearchPx / scale);
+      const EdgeLine side =
+          found ? found->edge : EdgeLine{sides[i].coefficients, sides[i].points, 0.0, sides[i].rms};
+      other_stretch_taken[i] = found && found->stretch > 0;
+      lines[i] = side.line;
+      squares += side.rms_px * side.rms_px * side.places;
+      points += side.places;
     }
-  }
-  const bool oblique = DepthRatio(table.cloth_corners) > kOverheadDepthRatio;
-  for (int i = 0; i < 4; ++i) {
-    std::optional<Eigen::Vector3d> nose =
-        NoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
-    if (!nose && oblique && i == nearest) {
-      nose = FaintNoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+    table.side_fit_rms_px = std::sqrt(squares / std::max(1, points));
+    if (!Intersections(lines, &table.cloth_corners)) {
+      return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
     }
-    lines[i] = nose.value_or(SideLine(cloth_from_table, long_first, i));
+    std::array<int, 4> nose_places;
+    lines = CushionNoses(bgr, table.cloth_corners, long_first, &nose_places);
+    for (int i = 0; i < 4; ++i) {
+      if (other_stretch_taken[i] && nose_places[i] < kOtherStretchNose * kEdgePlaces) {
+        other_stretches[i] = false;
+        again = true;
+      }
+    }
   }
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet"};

@@ -12,7 +12,12 @@
 // distortion bends them a little): the convex hull reduced to four vertices says roughly where,
 // and a line fitted (RANSAC, then least squares) to the outline points along the middle of each
 // side, away from the corner pockets, says exactly. The corners are the lines' intersections,
-// where the cloth would meet without pockets.
+// where the cloth would meet without pockets. Where a player, an arm or a cue hides part of a
+// side, or the cushion's top joins the bed for a while, the outline along it is broken into
+// straight stretches at different depths and the best supported line may bridge two of them.
+// When no straight edge along both halves of the side confirms that line at full resolution, the
+// side is the first of the other stretches (turned little from it) that one confirms, if a
+// cushion's nose runs along most of the side inside it too; else the best supported line stands.
 //
 // The cloth covers the cushions too, so its outline may be their outer edge. The playing surface
 // ends at the cushions' noses: inside each side, up to kMaxCushionWidth of the table's width in,

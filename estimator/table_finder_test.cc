@@ -106,6 +106,26 @@ TEST(TableFinder, FindsThePlayingSurfaceInEveryViewOnEveryCloth) {
   }
 }
 
+// An arm reaching over a corner of the table from outside (a player's, bridging a shot there)
+// hides that corner and a stretch of both sides at it: the sides are still the table's, not
+// lines bridging the arm's edge and the cushion beyond it.
+TEST(TableFinder, AnArmOverACornerLeavesTheSidesWhereTheyAre) {
+  for (const Scene& scene : Cameras()) {
+    cv::Mat frame = Render(scene.camera, {60, 110, 30});
+    const Eigen::Vector2d from = scene.camera.Project({-0.35, -0.25, 0.05});
+    const Eigen::Vector2d to = scene.camera.Project({0.3, 0.15, 0.05});
+    const double thickness =
+        (scene.camera.Project({0.3, 0.15, 0.05}) - scene.camera.Project({0.3, 0.25, 0.05}))
+            .norm();  // a forearm, 10 cm across
+    cv::line(frame, cv::Point(from.x(), from.y()), cv::Point(to.x(), to.y()),
+             cv::Scalar(120, 150, 200), static_cast<int>(std::lround(thickness)), cv::LINE_AA);
+    const TableSearch search = FindTable(frame);
+    ASSERT_TRUE(search.table) << scene.name << ": " << search.reason;
+    ExpectTheSurface(*search.table, scene.camera,
+                     std::string(scene.name) + ", an arm over a corner");
+  }
+}
+
 // The camera's depth of a table point (its z in the camera frame).
 double Depth(const camera::CameraModel& camera, const Eigen::Vector3d& p) {
   return (camera.rotation * p + camera.translation).z();

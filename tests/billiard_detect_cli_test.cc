@@ -219,7 +219,9 @@ TEST_F(BilliardDetect, SaysWhichBallEachIsAndWhereTheTableIs) {
 // hands dropped, identity given all at once with the rack's count of each class) raised them to
 // 95.0 % overhead precision and 82 % identity, and the near cushion's nose found from its faint
 // line brought the tables found within 2 px per side of the corner labels
-// (estimator/testing/real_table_corners.json) from 15 to 18 of 26.
+// (estimator/testing/real_table_corners.json) from 15 to 18 of 26. A side's outline taken as its
+// straight stretches found dap_snooker2's ball beyond its left side, and an unsure outline in a
+// pocket's mouth dropped brought precision to 96.1 % overhead and 97.7 % oblique.
 TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   BILLIARD_TEST_DATA_OR_SKIP(labels, "real-tables/dev/labels.json");
   const std::string set = labels.substr(0, labels.rfind('/'));
@@ -231,9 +233,9 @@ TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   const auto j = OneObject(r, args);
   const auto& views = j["views"];
   EXPECT_GE(views["overhead"]["recall"].get<double>(), 0.98) << views;
-  EXPECT_GE(views["overhead"]["precision"].get<double>(), 0.945) << views;
-  EXPECT_GE(views["oblique"]["recall"].get<double>(), 0.94) << views;
-  EXPECT_GE(views["oblique"]["precision"].get<double>(), 0.945) << views;
+  EXPECT_GE(views["overhead"]["precision"].get<double>(), 0.955) << views;
+  EXPECT_GE(views["oblique"]["recall"].get<double>(), 0.945) << views;
+  EXPECT_GE(views["oblique"]["precision"].get<double>(), 0.965) << views;
   EXPECT_LT(views["all"]["median_centre_error_px"].get<double>(), 1.5) << views;
   EXPECT_EQ(views["all"]["frames"], 26);
   EXPECT_EQ(views["all"]["tables_labelled"], 26);
