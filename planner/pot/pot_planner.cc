@@ -51,23 +51,26 @@ constexpr double kCoarseWindowResolution = 1e-3;
 constexpr double kWidestWindow = 20.0 * kDegree;
 // The heading margin is what the truth says to kMarginTolerance: 1 - kMarginTolerance of it pots
 // and 1 + kMarginTolerance misses. Each edge is bracketed between a heading that pots and one
-// that misses, kHeadingBracket either side of the edge predicted, and where the prediction is off
-// by bisection until the outside is within kHeadingResolution of the inside (beyond the inside by
+// that misses, kHeadingEdge.bracket either side of the edge predicted, and where the prediction is off
+// by bisection until the outside is within kHeadingEdge.resolution of the inside (beyond the inside by
 // less than (1 + 0.1) / (1 - 0.1) = 1.22: a margin lies between them, 0.9 of it inside, 1.1 of
 // it outside). The bracket about the prediction is as wide as the tolerance, so that where the
 // edge lies in it the margin's 1 - and 1 + kMarginTolerance are the two headings played. The
 // speed window more coarsely (it is what the robot's speed may be off by, not what it aims with).
 constexpr double kMarginTolerance = 0.1;
-constexpr double kHeadingBracket = kMarginTolerance;
 // Headings closer than this are the same heading played [rad].
 constexpr double kSameHeading = 1e-12;
-// A margin's bisection halves its bracket at most this often (an edge at the aim itself).
-constexpr int kEdgeHalvings = 12;
+// An edge's search: the bracket about its prediction, the resolution the bisection goes to and
+// how often at most it halves (an edge at the aim itself). A speed edge at the plan's own speed
+// (a fragile pot) is told to 1/64 of its bracket, a heading edge, which the margin is, to 1/4096.
+struct EdgeSearch {
+  double bracket, resolution;
+  int halvings;
+};
+constexpr EdgeSearch kHeadingEdge{kMarginTolerance, 0.2, 12};
+constexpr EdgeSearch kSpeedEdge{0.1, 0.1, 6};
 // An edge's first guess is at least this fraction of the way to its limit.
 constexpr double kSmallestEdge = 1e-4;
-constexpr double kHeadingResolution = 0.2;
-constexpr double kSpeedBracket = 0.1;
-constexpr double kSpeedResolution = 0.1;
 // Planning scenes that need more events are refused; a pot takes tens.
 constexpr std::int64_t kMaxPlanEvents = 20000;
 // The longest a cue ball's path is followed to find where it passes its ghost ball [s].
@@ -933,13 +936,14 @@ class PotSearch {
 
   // The last x from x0 toward `guess` (a predicted edge), at most `limit`, for which `pots` holds
   // and the first beyond it that misses (both `limit` where it still pots there): the guess's own
-  // bracket (`bracket` of it either side) where the edge lies in it, else found by bisection
-  // until the two are within `resolution` of the inside's distance from x0.
+  // bracket (`search.bracket` of it either side) where the edge lies in it, else found by
+  // bisection until the two are within `search.resolution` of the inside's distance from x0.
   struct Bracket {
     double in, out;
   };
   Bracket Edge(const std::function<bool(double)>& pots, double x0, double guess, double limit,
-               double bracket, double resolution) {
+               const EdgeSearch& search) {
+    const double bracket = search.bracket;
     // A guess at x0 itself (a window of no width) brackets nothing: a small step toward the limit.
     if (!(std::abs(guess - x0) >= kSmallestEdge * std::abs(limit - x0))) {
       guess = x0 + kSmallestEdge * (limit - x0);
@@ -962,9 +966,9 @@ class PotSearch {
     } else if (pots(at(1.0 - 4.0 * bracket))) {  // short of the guess: a wider bracket first
       in = at(1.0 - 4.0 * bracket);
     }
-    // To `resolution` of the edge, or to 2^-kEdgeHalvings of the bracket where the edge is at x0.
-    const double floor = std::ldexp(std::abs(out - in), -kEdgeHalvings);
-    while (std::abs(out - in) > std::max(resolution * std::abs(in - x0), floor)) {
+    // To the resolution of the edge, or to 2^-halvings of the bracket where the edge is at x0.
+    const double floor = std::ldexp(std::abs(out - in), -search.halvings);
+    while (std::abs(out - in) > std::max(search.resolution * std::abs(in - x0), floor)) {
       const double mid = 0.5 * (in + out);
       (pots(mid) ? in : out) = mid;
     }
@@ -1045,9 +1049,9 @@ class PotSearch {
     const double up = (slope > 0.0 ? window.hi - window.Middle() : window.Middle() - window.lo) / std::abs(slope);
     const double down = (slope > 0.0 ? window.Middle() - window.lo : window.hi - window.Middle()) / std::abs(slope);
     const Bracket left = Edge(pots_heading, centre.heading, centre.heading + up, centre.heading + 0.5 * M_PI,
-                              kHeadingBracket, kHeadingResolution);
+                              kHeadingEdge);
     const Bracket right = Edge(pots_heading, centre.heading, centre.heading - down, centre.heading - 0.5 * M_PI,
-                               kHeadingBracket, kHeadingResolution);
+                               kHeadingEdge);
     plan.margin_left_deg = PlayedMargin(pots_heading, left, centre.heading) / kDegree;
     plan.margin_right_deg = PlayedMargin(pots_heading, right, centre.heading) / kDegree;
     const auto pots_speed = [&](double speed) {
@@ -1061,11 +1065,11 @@ class PotSearch {
         ? std::sqrt(std::max(0.0, shape.speed * shape.speed - arrival_ * arrival_ / pace_slope_))
         : 0.8 * shape.speed;
     plan.speed_lo = Edge(pots_speed, shape.speed, std::max(kSlowestCue, slowest), kSlowestCue,
-                         kSpeedBracket, kSpeedResolution).in;
+                         kSpeedEdge).in;
     plan.speed_hi = pots_speed(params_.cue.max_speed)
         ? params_.cue.max_speed
         : Edge(pots_speed, shape.speed, std::min(params_.cue.max_speed, 1.25 * shape.speed),
-               params_.cue.max_speed, kSpeedBracket, kSpeedResolution).in;
+               params_.cue.max_speed, kSpeedEdge).in;
 
     const std::size_t cue = IndexOf(*played.sim, 0);
     plan.v0 = played.sim->StateAt(cue, 0.0).segment<2>(physics::kVx);
