@@ -482,8 +482,9 @@ std::vector<double> LaggedProducts(const TrackedShot& shot, double horizon,
 }
 
 // The residuals' integrated correlation time in samples, tau = 1 + 2 sum_k rho_k, the lag-k
-// autocorrelations pooled over the shots, summed while they stay positive (Geyer 1992's initial
-// positive sequence): n correlated residuals say what n / tau independent ones would. The
+// autocorrelations pooled over the shots, summed up to the first that is not positive (the
+// simplest of Geyer 1992's initial sequence estimators): n correlated residuals say what
+// n / tau independent ones would. The
 // estimator's tracks are filtered, so neighbouring frames share their errors; a model's own
 // error on real shots lasts for seconds. Never below 1.
 double CorrelationTime(const std::vector<ShotBlocks>& blocks) {

@@ -126,6 +126,7 @@ void WriteFittedSet(const std::string& path, const std::string& option,
   report["prior"] = params::ParameterSetLabel(prior);
   report["constants"] = ConstantsJson(fit);
   report["constant_shots"] = fit.constant_shots;
+  report["residual_correlation_samples"] = fit.correlation_time;
   report["median_cue_rmse_m"] = fit.median_cue_rmse;
   physics::ModelParameters out_set = fit.params;
   out_set.name = prior.name + "-fitted";
