@@ -1,8 +1,18 @@
-// `billiard fit-shots` as a user runs it: its JSON, the set it writes, its refusals.
+// `billiard fit-shots` and `billiard identify` as a user runs them: their JSON, the set and the
+// shots they write, their refusals.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <lcm/lcm-cpp.hpp>
 #include <string>
+#include <vector>
+
+#include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/table_state_t.hpp"
+#include "lcmtypes/names.h"
 
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
@@ -67,6 +77,82 @@ TEST(BilliardFitShots, RefusesBadInputInOneLine) {
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(r.out.find('\n'), r.out.size() - 1) << args << ": " << r.out;
   }
+}
+
+template <typename Message>
+void Write(lcm::LogFile& log, const std::string& channel, std::int64_t utime, const Message& m) {
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(m.getEncodedSize()));
+  m.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  lcm::LogEvent e{};
+  e.timestamp = utime;
+  e.channel = channel;
+  e.datalen = static_cast<std::int32_t>(bytes.size());
+  e.data = bytes.data();
+  log.writeEvent(&e);
+}
+
+table_state_t State(std::int64_t utime, std::int32_t id, double x, double y) {
+  table_state_t state{};
+  state.utime = utime;
+  ball_state_t b{};
+  b.utime = utime;
+  b.ball_id = id;
+  b.position[0] = x;
+  b.position[1] = y;
+  state.balls = {b};
+  state.num_balls = 1;
+  return state;
+}
+
+// A loop's log: one ball at rest at (1, 0.7), struck at 0.1 s by the cue, rolling along x at
+// 30 frames a second; the simulator's truth as ball 0, the estimator's track 7 seen 2 mm off in y.
+std::string LoopLog() {
+  const std::string path = ::testing::TempDir() + "/identify_loop.lcm";
+  lcm::LogFile log(path, "w");
+  constexpr double kDt = 1.0 / 30.0, kSpeed = 1.0, kDeceleration = 0.07;
+  cue_command_t strike{};
+  strike.status = cue_command_t::STATUS_OK;
+  strike.cue_speed = 1.5;
+  strike.ball_id = 7;
+  strike.utime = 100000;
+  for (int k = 0; k < 60; ++k) {
+    const auto utime = static_cast<std::int64_t>(std::llround(1e6 * k * kDt));
+    const double t = std::clamp(k * kDt - 0.1, 0.0, kSpeed / kDeceleration);
+    const double x = 1.0 + kSpeed * t - 0.5 * kDeceleration * t * t;
+    Write(log, messages::kTableTruthChannel, utime, State(utime, 0, x, 0.7));
+    Write(log, messages::kTableStateChannel, utime, State(utime, 7, x, 0.702));
+    if (k == 3) Write(log, messages::kCueCommandChannel, strike.utime, strike);
+  }
+  return path;
+}
+
+// The same shot cut from the estimator's tracks or from the truth: --shots-out writes what the
+// fit takes, the struck ball the true one nearest the struck track.
+TEST(BilliardIdentify, CutsTheShotsFromTheTracksOrTheTruth) {
+  const std::string log = LoopLog();
+  for (const std::string tracks : {"estimator", "truth"}) {
+    SCOPED_TRACE(tracks);
+    const std::string shots = ::testing::TempDir() + "/identify_" + tracks + ".json";
+    const CommandResult r = Billiard("identify " + log + " --tracks " + tracks +
+                                     " --fit-physics rolling --shots-out " + shots + " --json");
+    ASSERT_EQ(r.status, 0) << r.out;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["log"]["tracks"], tracks);
+    EXPECT_EQ(j["shots"].size(), 1u);
+    EXPECT_TRUE(j.contains("residual_correlation_samples"));
+    EXPECT_TRUE(j["constants"]["rolling"].contains("at_bound"));
+    const shot_fit::TrackedShots cut = shot_fit::ReadTrackedShots(shots);
+    ASSERT_EQ(cut.shots.size(), 1u);
+    const shot_fit::TrackedBall& ball = cut.shots[0].balls.at(cut.shots[0].cue);
+    EXPECT_EQ(ball.name, tracks == "truth" ? "track 0" : "track 7");
+    EXPECT_DOUBLE_EQ(ball.position.front().x(), 1.0);  // at rest, the state before the strike
+    EXPECT_DOUBLE_EQ(ball.position.back().y(), tracks == "truth" ? 0.7 : 0.702);
+    EXPECT_GT(ball.position.back().x(), 1.5);
+  }
+  const CommandResult bad = Billiard("identify " + log + " --tracks camera", true);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("--tracks must be estimator or truth"), std::string::npos) << bad.out;
+  EXPECT_EQ(bad.out.find('\n'), bad.out.size() - 1) << bad.out;
 }
 
 }  // namespace

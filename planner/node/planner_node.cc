@@ -559,7 +559,7 @@ void PlannerNode::IdentifyIfDue() {
       if (c.identifiable) {
         line << " -> " << c.value << " +- " << c.sd;
       } else {
-        line << " kept (not identifiable)";
+        line << (c.at_bound ? " kept (its fit ran to its bound)" : " kept (not identifiable)");
       }
     }
     const std::string base = params_.name.substr(0, params_.name.rfind("-identified"));

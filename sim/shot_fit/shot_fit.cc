@@ -44,6 +44,9 @@ constexpr int kLaunchSamples = 3;
 const char* const kConstantNames[] = {"mu",      "rolling",          "spin",
                                       "cushion", "cushion_friction", "ball_ball"};
 
+// How near a bound of its Range a fitted constant sits at it, relative.
+constexpr double kAtBound = 1e-6;
+
 // The range the fit searches for each constant (far beyond any cloth, cushion or ball).
 struct Range {
   double lo, hi;
@@ -447,7 +450,56 @@ struct ShotBlocks {
   Eigen::VectorXd gs, gc;      // J_s^T r, J_c^T r
   double squares = 0.0;
   int residuals = 0;
+  // Index k: the sum over each ball's coordinates of r_i r_{i+k}, i and i + k samples of that
+  // ball k apart (k = 0: the squares): the residuals' autocovariance, unnormalised.
+  std::vector<double> lagged;
 };
+
+// The lags the residuals' correlation is summed over [samples]: at 30-50 Hz, 2-3 s, beyond the
+// estimator's filtered tracks' memory.
+constexpr int kMaxLag = 100;
+
+// The residuals' sums of products at lags 0..kMaxLag (ShotBlocks::lagged), per ball and
+// coordinate over its samples up to `horizon` (ShotModel::Residuals' order: ball by ball,
+// x then y per sample).
+std::vector<double> LaggedProducts(const TrackedShot& shot, double horizon,
+                                   const std::vector<double>& r) {
+  std::vector<double> lagged(kMaxLag + 1, 0.0);
+  std::size_t first = 0;  // the ball's first residual
+  for (const TrackedBall& b : shot.balls) {
+    const auto n = static_cast<std::size_t>(
+        std::count_if(b.t.begin(), b.t.end(), [&](double t) { return t <= horizon; }));
+    for (std::size_t axis = 0; axis < 2; ++axis) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const double ri = r[first + 2 * i + axis];
+        for (std::size_t k = 0; k <= kMaxLag && i + k < n; ++k)
+          lagged[k] += ri * r[first + 2 * (i + k) + axis];
+      }
+    }
+    first += 2 * n;
+  }
+  return lagged;
+}
+
+// The residuals' integrated correlation time in samples, tau = 1 + 2 sum_k rho_k, the lag-k
+// autocorrelations pooled over the shots, summed up to the first that is not positive (the
+// simplest of Geyer 1992's initial sequence estimators): n correlated residuals say what
+// n / tau independent ones would. The
+// estimator's tracks are filtered, so neighbouring frames share their errors; a model's own
+// error on real shots lasts for seconds. Never below 1.
+double CorrelationTime(const std::vector<ShotBlocks>& blocks) {
+  std::vector<double> lagged(kMaxLag + 1, 0.0);
+  for (const ShotBlocks& b : blocks)
+    for (std::size_t k = 0; k < b.lagged.size(); ++k) lagged[k] += b.lagged[k];
+  if (!(lagged[0] > 0.0)) return 1.0;
+  double tau = 1.0;
+  for (std::size_t k = 1; k <= kMaxLag; ++k) {
+    const double rho = lagged[k] / lagged[0];
+    if (rho <= 0.0) break;
+    tau += 2.0 * rho;
+  }
+  return tau;
+}
 
 struct JointProblem {
   const table::TableGeometry& table;
@@ -528,6 +580,7 @@ struct JointProblem {
     b.gc = jc.transpose() * r;
     b.squares = r.squaredNorm();
     b.residuals = m;
+    b.lagged = LaggedProducts(shots[s], horizon, e0.r);
     return b;
   }
 
@@ -668,11 +721,13 @@ void SolveJoint(const JointProblem& problem, const FitOptions& options,
   }
 }
 
-// The marginal covariance of the constants at the solution (see the header): sigma^2 S^-1 with
-// the undamped reduced matrix S; infinite where S is singular (a constant no shot excites).
+// The marginal covariance of the constants at the solution (see the header): tau sigma^2 S^-1
+// with the undamped reduced matrix S and the residuals' correlation time tau
+// (CorrelationTime, into *correlation_time); infinite where S is singular (a constant no shot
+// excites).
 Eigen::MatrixXd ConstantsCovariance(const JointProblem& problem,
                                     const std::vector<std::vector<double>>& strikes,
-                                    const std::vector<double>& values) {
+                                    const std::vector<double>& values, double* correlation_time) {
   const std::size_t k = values.size();
   const std::vector<ShotBlocks> blocks = problem.LinearizeAll(strikes, values);
   const Reduced reduced = Reduce(blocks, k, 0.0);
@@ -682,7 +737,8 @@ Eigen::MatrixXd ConstantsCovariance(const JointProblem& problem,
     squares += blocks[j].squares;
     dof += blocks[j].residuals - static_cast<int>(strikes[j].size());
   }
-  const double sigma2 = squares / std::max(dof, 1);
+  *correlation_time = CorrelationTime(blocks);
+  const double sigma2 = *correlation_time * squares / std::max(dof, 1);
   // A constant no shot excites has a zero row: its variance is infinite, and the others' are
   // those of the rest of the matrix.
   Eigen::MatrixXd cov = Eigen::MatrixXd::Constant(k, k, std::numeric_limits<double>::infinity());
@@ -907,14 +963,21 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
     // others are fitted once more without them.
     while (!constants.empty()) {
       choose_shots();
-      const Eigen::MatrixXd cov = ConstantsCovariance(problem, strikes_of(), values_of());
+      const Eigen::MatrixXd cov =
+          ConstantsCovariance(problem, strikes_of(), values_of(), &out.correlation_time);
       std::vector<Constant> kept;
       for (std::size_t c = 0; c < constants.size(); ++c) {
         auto it = std::find_if(out.constants.begin(), out.constants.end(),
                                [&](const ConstantFit& f) { return f.constant == constants[c]; });
         it->value = ConstantValue(out.params, constants[c]);
         it->sd = std::sqrt(cov(c, c));
-        it->identifiable = it->sd <= options.max_relative_sd * std::abs(it->value);
+        // A fit that ran to the edge of its range found no minimum there: what the shots say
+        // lies beyond what any table is, and its curvature is no uncertainty.
+        const Range range = ConstantRange(constants[c]);
+        it->at_bound = it->value <= range.lo * (1.0 + kAtBound) ||
+                       it->value >= range.hi * (1.0 - kAtBound);
+        it->identifiable =
+            !it->at_bound && it->sd <= options.max_relative_sd * std::abs(it->value);
         if (it->identifiable) {
           kept.push_back(constants[c]);
         } else {

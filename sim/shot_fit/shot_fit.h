@@ -22,10 +22,12 @@
 // differences on the pool, the strikes eliminated by the Schur complement, the sums in shot
 // order), robust (Cauchy's loss of each shot's RMSE) and over the same growing horizon. The
 // uncertainty of the constants is their marginal covariance, the strikes eliminated:
-// sigma^2 (sum_s J_c^T J_c - J_c^T J_s (J_s^T J_s)^-1 J_s^T J_c)^-1, sigma^2 from the
-// residuals. A constant whose relative standard uncertainty exceeds FitOptions::max_relative_sd
-// (the shots do not excite it) is reported as not identifiable, kept at its prior value, and
-// the others fitted again. The design and its measurements: sim/shot_fit/README.md.
+// tau sigma^2 (sum_s J_c^T J_c - J_c^T J_s (J_s^T J_s)^-1 J_s^T J_c)^-1, sigma^2 from the
+// residuals and tau their correlation time in samples (a filtered track's neighbouring frames
+// share their errors: n of them say what n / tau independent ones would). A constant whose
+// relative standard uncertainty exceeds FitOptions::max_relative_sd (the shots do not excite
+// it), or whose fit ran to the edge of its range, is reported as not identifiable, kept at its
+// prior value, and the others fitted again. The design and its measurements: sim/shot_fit/README.md.
 //
 // Module: billiard::shot_fit. Includes the physics, the table and the batch (sim/physics,
 // sim/table, sim/batch); its implementation uses Ceres' solver.
@@ -138,7 +140,10 @@ struct ConstantFit {
   Constant constant = Constant::kMu;
   double prior = 0.0;       // the value of the given parameter set
   double value = 0.0;       // fitted, or the prior when not identifiable
-  double sd = 0.0;          // standard uncertainty (infinite when the shots do not excite it)
+  // Standard uncertainty: the marginal covariance inflated by the residuals' correlation time
+  // (ShotsFit::correlation_time); infinite when the shots do not excite the constant.
+  double sd = 0.0;
+  bool at_bound = false;    // the fit ran to the edge of the constant's range: not identifiable
   bool identifiable = false;
 };
 
@@ -147,6 +152,9 @@ struct ShotsFit {
   physics::ModelParameters params;  // the given set with the fitted constants
   std::vector<ConstantFit> constants;
   int constant_shots = 0;           // shots the constants were fitted on (outliers left out)
+  // The residuals' integrated correlation time at the constants' solution [samples]: n
+  // residuals tell what n / correlation_time independent ones would (1: independent).
+  double correlation_time = 1.0;
   double median_cue_rmse = 0.0;           // over the fitted shots [m]
   double held_out_median_cue_rmse = 0.0;  // over the held-out shots, 0 when none [m]
 };

@@ -144,6 +144,79 @@ TEST(ShotFit, ReportsAConstantNoShotExcitesAsNotIdentifiable) {
   EXPECT_EQ(fit.params.collision.ball_restitution, prior.collision.ball_restitution);
 }
 
+// Shots of one ball from the table's centre, struck below, at and above the centre (so that
+// they slide), simulated with `truth`, tracked every 20 ms without thinning and without noise.
+std::vector<TrackedShot> LoneBallShots(const table::TableGeometry& table,
+                                       const physics::ModelParameters& truth) {
+  std::vector<TrackedShot> shots;
+  for (int i = 0; i < 4; ++i) {
+    Strike s;
+    s.stroke.speed = 2.0 + 0.4 * i;
+    s.stroke.heading = 0.3 + 1.4 * i;
+    s.stroke.tip_height = (0.3 - 0.2 * i) * truth.ball.radius;
+    s.time = 0.01;
+    shots.push_back(
+        SimulateTrackedShot(table, truth, {{1.42, 0.71}}, 0, s, 6.0, 0.02, 0.0, 0.0, 100 + i));
+  }
+  return shots;
+}
+
+// The uncertainty counts what the residuals really say. The same shots tracked with noise of the
+// same size, once independent from frame to frame and once correlated as a filter's output is
+// (AR(1), rho = 0.8: a correlation time (1 + rho) / (1 - rho) = 9 frames): the fit measures the
+// correlation time and the correlated noise's uncertainty is about sqrt(9) = 3 times the other's.
+TEST(ShotFit, UncertaintyCountsTheResidualsCorrelation) {
+  const table::TableGeometry table = Carom();
+  const physics::ModelParameters prior = params::LoadParameters("carom");
+  const physics::ModelParameters truth = WithConstants(prior, {Constant::kRolling}, {0.011});
+  constexpr double kNoise = 0.001, kRho = 0.8;
+  auto noisy = [&](double rho) {
+    std::vector<TrackedShot> shots = LoneBallShots(table, truth);
+    std::mt19937_64 random(5);
+    std::normal_distribution<double> gauss(0.0, kNoise * std::sqrt(1.0 - rho * rho));
+    for (TrackedShot& shot : shots) {
+      Eigen::Vector2d e(gauss(random), gauss(random));
+      e /= std::sqrt(1.0 - rho * rho);  // the stationary spread from the first sample on
+      for (Eigen::Vector2d& q : shot.balls[0].position) {
+        q += e;
+        e = rho * e + Eigen::Vector2d(gauss(random), gauss(random));
+      }
+    }
+    return shots;
+  };
+  FitOptions options;
+  options.constants = {Constant::kRolling};
+  batch::ThreadPool pool(2);
+  const ShotsFit independent = FitShots(table, prior, noisy(0.0), options, pool);
+  const ShotsFit correlated = FitShots(table, prior, noisy(kRho), options, pool);
+  EXPECT_LT(independent.correlation_time, 1.5);
+  EXPECT_GT(correlated.correlation_time, 5.0);
+  EXPECT_LT(correlated.correlation_time, 14.0);
+  EXPECT_GT(correlated.constants[0].sd, 2.0 * independent.constants[0].sd);
+  EXPECT_LT(correlated.constants[0].sd, 4.5 * independent.constants[0].sd);
+}
+
+// A fit that runs to the edge of a constant's range found no minimum: the cloth's friction of
+// these shots (0.01, a ball that slides across the table) is below the range a fit searches
+// (from 0.02). The fit stops at 0.02 with a relative uncertainty of about 7 %, which alone
+// would pass for identifiable; it is reported at its bound, not identifiable, and kept at its
+// prior.
+TEST(ShotFit, NeverReportsAConstantAtItsBoundAsIdentifiable) {
+  const table::TableGeometry table = Carom();
+  const physics::ModelParameters prior = params::LoadParameters("carom");
+  const std::vector<TrackedShot> shots =
+      LoneBallShots(table, WithConstants(prior, {Constant::kMu}, {0.01}));
+  FitOptions options;
+  options.constants = {Constant::kMu};
+  batch::ThreadPool pool(2);
+  const ShotsFit fit = FitShots(table, prior, shots, options, pool);
+  ASSERT_EQ(fit.constants.size(), 1u);
+  EXPECT_TRUE(fit.constants[0].at_bound);
+  EXPECT_FALSE(fit.constants[0].identifiable);
+  EXPECT_EQ(fit.constants[0].value, prior.contact.mu);
+  EXPECT_EQ(fit.params.contact.mu, prior.contact.mu);
+}
+
 // The same fit gives the same answer on one thread as on two (each shot its own job, the sums
 // in shot order).
 TEST(ShotFit, IsTheSameOnAnyThreadCount) {

@@ -68,6 +68,7 @@ nlohmann::json ConstantsJson(const shot_fit::ShotsFit& fit) {
         {"value", c.value},
         {"prior", c.prior},
         {"sd", std::isfinite(c.sd) ? nlohmann::json(c.sd) : nlohmann::json(nullptr)},
+        {"at_bound", c.at_bound},
         {"identifiable", c.identifiable}};
   }
   return out;
@@ -110,6 +111,7 @@ nlohmann::json FitJson(const shot_fit::ShotsFit& fit, const physics::ModelParame
           {"median_cue_rmse_m", fit.median_cue_rmse},
           {"constants", ConstantsJson(fit)},
           {"constant_shots", fit.constant_shots},
+          {"residual_correlation_samples", fit.correlation_time},
           {"params", nlohmann::json::parse(params::ParametersJson(fit.params))},
           {"prior", params::ParameterSetLabel(prior)}};
 }
@@ -124,6 +126,7 @@ void WriteFittedSet(const std::string& path, const std::string& option,
   report["prior"] = params::ParameterSetLabel(prior);
   report["constants"] = ConstantsJson(fit);
   report["constant_shots"] = fit.constant_shots;
+  report["residual_correlation_samples"] = fit.correlation_time;
   report["median_cue_rmse_m"] = fit.median_cue_rmse;
   physics::ModelParameters out_set = fit.params;
   out_set.name = prior.name + "-fitted";
@@ -142,9 +145,15 @@ void PrintConstants(const shot_fit::ShotsFit& fit) {
     std::cerr << "  " << shot_fit::ConstantName(c.constant) << " = " << c.value;
     if (c.identifiable) {
       std::cerr << " +- " << c.sd << " (prior " << c.prior << ")\n";
+    } else if (c.at_bound) {
+      std::cerr << ": its fit ran to the edge of its range, kept at the prior\n";
     } else {
       std::cerr << ": not identifiable from these shots, kept at the prior\n";
     }
+  }
+  if (!fit.constants.empty()) {
+    std::cerr << "  (uncertainties with the residuals' correlation over "
+              << fit.correlation_time << " samples)\n";
   }
 }
 
@@ -330,39 +339,65 @@ void RunBench(const BenchShotFitArgs& args) {
 
 
 struct IdentifyArgs {
-  std::string log, out, params = params::kDefaultParameterSet, table = "pool-9ft",
-                        fit_physics = "mu,rolling,cushion";
+  std::string log, out, shots_out, params = params::kDefaultParameterSet, table = "pool-9ft",
+                                  fit_physics = "mu,rolling,cushion", tracks = "estimator";
   int threads = batch::DefaultThreadCount(), rounds = 1;
   bool json = false;
 };
 
 // The shots of a recorded loop, cut by shot_fit::ShotRecorder: each commanded strike
 // (CUE_COMMAND, status ok) the start of one, the estimator's TABLE_STATE tracks its samples.
-// The truth the table simulator publishes (TABLE_TRUTH) is not looked at.
+// With `truth`, the samples are the table simulator's TABLE_TRUTH instead, the struck ball the
+// true one nearest the struck track: the same shots without the estimator, which tells what
+// the tracking adds to the constants' error from what the fit does.
 struct LoggedShots {
   std::vector<shot_fit::TrackedShot> shots;
   long events = 0, states = 0, strikes = 0, refused = 0, undecodable = 0;
   int skipped = 0;  // strikes that started no shot (ShotRecorder::skipped)
 };
 
-LoggedShots ReadLoggedShots(const std::string& path) {
+std::vector<shot_fit::TrackSample> Samples(const table_state_t& state) {
+  std::vector<shot_fit::TrackSample> tracks;
+  for (const ball_state_t& b : state.balls)
+    tracks.push_back({b.ball_id, {b.position[0], b.position[1]}});
+  return tracks;
+}
+
+// The ball of `to` nearest track `track` of `from`; `track` itself when `from` has no such track
+// or `to` no ball.
+std::int32_t NearestBall(const std::vector<shot_fit::TrackSample>& from, std::int32_t track,
+                         const std::vector<shot_fit::TrackSample>& to) {
+  const auto struck = std::find_if(from.begin(), from.end(),
+                                   [&](const shot_fit::TrackSample& s) { return s.track == track; });
+  if (struck == from.end() || to.empty()) return track;
+  const auto nearest = std::min_element(
+      to.begin(), to.end(), [&](const shot_fit::TrackSample& a, const shot_fit::TrackSample& b) {
+        return (a.position - struck->position).squaredNorm() <
+               (b.position - struck->position).squaredNorm();
+      });
+  return nearest->track;
+}
+
+LoggedShots ReadLoggedShots(const std::string& path, bool truth) {
   lcm::LogFile log(path, "r");
   if (!log.good()) throw UsageError("cannot read LCM log '" + path + "'");
   shot_fit::ShotRecorder recorder;
   LoggedShots out;
+  std::vector<shot_fit::TrackSample> estimated, true_balls;  // the latest of each
+  const std::string samples_channel =
+      truth ? messages::kTableTruthChannel : messages::kTableStateChannel;
   for (const lcm::LogEvent* e; (e = log.readNextEvent()); ++out.events) {
     const auto size = static_cast<std::size_t>(e->datalen);
-    if (e->channel == messages::kTableStateChannel) {
+    if (e->channel == messages::kTableStateChannel || e->channel == messages::kTableTruthChannel) {
       table_state_t state;
       if (!messages::DecodeChecked(e->data, size, state).empty()) {
         ++out.undecodable;
         continue;
       }
+      (e->channel == messages::kTableStateChannel ? estimated : true_balls) = Samples(state);
+      if (e->channel != samples_channel) continue;
       ++out.states;
-      std::vector<shot_fit::TrackSample> tracks;
-      for (const ball_state_t& b : state.balls)
-        tracks.push_back({b.ball_id, {b.position[0], b.position[1]}});
-      recorder.State(state.utime, tracks);
+      recorder.State(state.utime, truth ? true_balls : estimated);
     } else if (e->channel == messages::kCueCommandChannel) {
       cue_command_t command;
       if (!messages::DecodeChecked(e->data, size, command).empty()) {
@@ -371,7 +406,8 @@ LoggedShots ReadLoggedShots(const std::string& path) {
         ++out.refused;
       } else {
         ++out.strikes;
-        recorder.Strike(command.utime, command.ball_id);
+        recorder.Strike(command.utime, truth ? NearestBall(estimated, command.ball_id, true_balls)
+                                             : command.ball_id);
       }
     }
   }
@@ -380,8 +416,8 @@ LoggedShots ReadLoggedShots(const std::string& path) {
   out.shots = recorder.shots();
   out.skipped = recorder.skipped();
   if (out.shots.empty()) {
-    throw UsageError("'" + path + "' holds no commanded strike followed by the estimator's " +
-                     "tracks (" + std::to_string(out.strikes) + " strikes, " +
+    throw UsageError("'" + path + "' holds no commanded strike followed by " +
+                     (truth ? "the simulator's truth" : "the estimator's tracks") + " (" + std::to_string(out.strikes) + " strikes, " +
                      std::to_string(out.states) + " table states): nothing to identify from");
   }
   return out;
@@ -397,17 +433,29 @@ void RunIdentify(const IdentifyArgs& args) {
       std::abs(table.width - p.table.width) > 1e-9) {
     throw UsageError("--table " + args.table + " is not the size of the parameter set's table");
   }
-  const LoggedShots logged = ReadLoggedShots(args.log);
+  if (args.tracks != "estimator" && args.tracks != "truth")
+    throw UsageError("--tracks must be estimator or truth, not '" + args.tracks + "'");
+  const LoggedShots logged = ReadLoggedShots(args.log, args.tracks == "truth");
   std::cerr << "identify: " << logged.shots.size() << " shots from " << logged.strikes
             << " commanded strikes and " << logged.states << " table states of " << args.log
             << "\n";
+  if (!args.shots_out.empty()) {
+    shot_fit::TrackedShots cut;
+    cut.source = "shots of the loop recorded in " + args.log + ", the " +
+                 (args.tracks == "truth" ? "simulator's truth" : "estimator's tracks");
+    cut.shots = logged.shots;
+    std::ofstream file(args.shots_out);
+    if (!file) throw UsageError("--shots-out: cannot write " + args.shots_out);
+    file << shot_fit::TrackedShotsJson(cut);
+  }
   const auto started = std::chrono::steady_clock::now();
   batch::ThreadPool pool(args.threads);
   const shot_fit::ShotsFit fit =
       shot_fit::FitShots(table, p, logged.shots, options, pool, {}, TerminalProgress("identify"));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const nlohmann::json log = {{"file", args.log},          {"events", logged.events},
+  const nlohmann::json log = {{"file", args.log},          {"tracks", args.tracks},
+                              {"events", logged.events},
                               {"table_states", logged.states}, {"strikes", logged.strikes},
                               {"refused", logged.refused}, {"undecodable", logged.undecodable},
                               {"skipped", logged.skipped}};
@@ -448,6 +496,12 @@ void AddIdentifyCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--rounds", args->rounds,
                   "Rounds of the joint fit over whole shots after the continuation")
+      ->capture_default_str();
+  cmd->add_option("--shots-out", args->shots_out,
+                  "Write the shots cut from the log, in fit-shots' format, to this file");
+  cmd->add_option("--tracks", args->tracks,
+                  "The shots' samples: the estimator's TABLE_STATE, or the simulator's "
+                  "TABLE_TRUTH (truth: what the fit does without the tracking's errors)")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads")->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
