@@ -461,9 +461,19 @@ cue_command_t PlannerNode::AnswerChoice(const shot_request_t& q, const ball_stat
   auto balls = SceneAtRest(
       cue.ball_id, [&](int32_t id) { return number.at(id); }, &message_id, &moving);
   if (!balls) return Refusal(c, cue_command_t::STATUS_INVALID, moving);
+  // An object ball seen further over a pocket's mouth or into a cushion than settling moves one
+  // is dropping (the estimator's last frames of it): no ball to play.
+  balls->erase(std::remove_if(balls->begin(), balls->end(),
+                              [&](const table::SceneBall& b) {
+                                return b.id != 0 &&
+                                       !table_.OnSurface(
+                                           b.state.head<2>(),
+                                           params_.ball.radius - options_.pot.settle_overlap);
+                              }),
+               balls->end());
   choice::ChoiceOptions options = options_.choice;
-  options.rules = q.rules == shot_request_t::RULES_NINE_BALL ? choice::Rules::kNineBall
-                                                              : choice::Rules::kAny;
+  options.rules =
+      q.rules == shot_request_t::RULES_NINE_BALL ? choice::Rules::kNineBall : choice::Rules::kAny;
   options.seed = choice::SampleSeed(options_.choice.seed, static_cast<std::uint64_t>(q.request_id));
   options.pot = options_.pot;
   choice::ChoiceResult result;
@@ -549,11 +559,20 @@ std::optional<PlannerNode::Unfit> PlannerNode::UnfitToPlanFrom(const shot_reques
 }
 
 const ball_state_t* PlannerNode::BallFor(const shot_request_t& q) const {
-  // A choice is made on a whole rack, which has one cue ball: the likeliest, however unsure.
-  if (q.mode == shot_request_t::MODE_CHOOSE && q.ball_class == ball_state_t::CLASS_CUE) {
-    return Named(Candidates(q), q.ball_id, q.ball_class, 0.0f);
+  if (q.ball_id != shot_request_t::BALL_BY_CLASS) return Named(Candidates(q), q.ball_id, 0);
+  // By class among the balls the estimator sees now: one it has lost (pocketed, or of a rack
+  // cleared away) is no ball to strike, however sure it was of it.
+  std::vector<const ball_state_t*> seen;
+  if (latest_table_) {
+    for (const ball_state_t& b : latest_table_->balls) seen.push_back(&b);
   }
-  return Named(Candidates(q), q.ball_id, q.ball_class);
+  // A choice is made on a whole rack, which has one cue ball: the likeliest, however unsure, or
+  // when the estimator names none now, the ball it named the cue ball last.
+  if (q.mode != shot_request_t::MODE_CHOOSE) return Named(seen, q.ball_id, q.ball_class);
+  if (const ball_state_t* likeliest = Named(seen, q.ball_id, q.ball_class, 0.0f)) return likeliest;
+  const auto last = last_of_class_.find(q.ball_class);
+  if (last == last_of_class_.end()) return nullptr;
+  return Named(seen, last->second, 0);
 }
 
 std::int64_t PlannerNode::StateUtime(const shot_request_t& q) const {
@@ -586,10 +605,18 @@ void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string
              ": the balls known so far are forgotten");
         balls_.clear();
         latest_table_.reset();
+        last_of_class_.clear();
         answered_.clear();
         break;
     }
     for (const ball_state_t& ball : state.balls) balls_.insert_or_assign(ball.ball_id, ball);
+    std::vector<const ball_state_t*> seen;
+    for (const ball_state_t& b : state.balls) seen.push_back(&b);
+    for (const ball_state_t& b : state.balls) {
+      if (b.ball_class == ball_state_t::CLASS_UNKNOWN) continue;
+      last_of_class_[b.ball_class] =
+          Named(seen, shot_request_t::BALL_BY_CLASS, b.ball_class, 0.0f)->ball_id;
+    }
     if (options_.identify_every > 0) {
       std::vector<shot_fit::TrackSample> tracks;
       for (const ball_state_t& b : state.balls)

@@ -24,7 +24,9 @@
 // ball lifted and placed: the answer's cue_placement). The balls are named by the estimator's
 // classes (BallNumbers: the rules need the numbers) and the answer names them back by the table
 // state's ids. Its noise samples are seeded by PlannerNodeOptions::choice.seed and the
-// request_id, so that a logged run replays to the same choice. When no pot plans, the answer is
+// request_id, so that a logged run replays to the same choice. An object ball seen further
+// over a pocket's mouth (or into a cushion) than pot.settle_overlap is taken for dropping and
+// left out. When no pot plans, the answer is
 // ok with object_ball_id -1 and the choice's fallback stroke (the first legal ball hit full).
 //
 // Refusals (status != STATUS_OK, the reason in words, the stroke fields zero; the plan fields say
@@ -71,6 +73,7 @@
 #include <deque>
 #include <functional>
 #include <lcm/lcm-cpp.hpp>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -224,9 +227,10 @@ class PlannerNode {
   const PlannerNodeOptions options_;
   const table::TableGeometry table_;
   void Publish(const cue_command_t& command, nodes::NodeHealth::Clock::time_point arrived);
-  // The ball a request strikes: by its id, or by class the one the estimator is surest of (at
-  // least kMinClassConfidence; a choice's cue ball at any confidence, a rack having one);
-  // nullptr when the table state has none.
+  // The ball a request strikes: by its id, or by class the one of the latest table state the
+  // estimator is surest of (at least kMinClassConfidence; a choice's cue ball at any confidence,
+  // a rack having one, and when none has the class, the ball it was last given to if it is still
+  // seen); nullptr when there is none.
   const ball_state_t* BallFor(const shot_request_t& q) const;
   // The utime of that ball's latest state (a pot's: of the latest table state, which its answer
   // depends on), -1 if none.
@@ -236,6 +240,9 @@ class PlannerNode {
   nodes::NodeHealth health_;
   std::unordered_map<int32_t, ball_state_t> balls_;
   std::optional<table_state_t> latest_table_;
+  // The ball each class was last given to (the surest of it in the latest table state naming
+  // one): a choice's cue ball when the estimator names none for a while.
+  std::map<int8_t, int32_t> last_of_class_;
   nodes::MessageClock state_clock_;
   std::deque<Waiting> waiting_;
   std::deque<Answered> answered_;

@@ -647,7 +647,8 @@ TEST_F(PlannerNodePotTest, APotAmongMovingBallsIsRefused) {
 }
 
 // "Choose and play" on the pot table: the cue ball by class, under nine-ball rules.
-shot_request_t Choose(int64_t id, bool ball_in_hand, int8_t rules = shot_request_t::RULES_NINE_BALL) {
+shot_request_t Choose(int64_t id, bool ball_in_hand,
+                      int8_t rules = shot_request_t::RULES_NINE_BALL) {
   shot_request_t q = Request(id, shot_request_t::BALL_BY_CLASS, 0.0, 0.0);
   q.ball_class = ball_state_t::CLASS_CUE;
   q.mode = shot_request_t::MODE_CHOOSE;
@@ -738,9 +739,9 @@ TEST_F(PlannerNodePotTest, BadChoiceRequestsAreRefusedWithAReasonAndTheNodeKeeps
   const auto empty = Ask(Choose(3, false));
   ASSERT_TRUE(empty);
   EXPECT_EQ(Status(*empty), cue_command_t::STATUS_NO_SUCH_BALL) << empty->reason;
-  PublishTable({Classed(kCueTrack, 1.0, 0.45, ball_state_t::CLASS_CUE, 0.9f),
-                Ball(7, 2.0, 1.0, 0.4, 0.0)},
-               1'000'200);
+  PublishTable(
+      {Classed(kCueTrack, 1.0, 0.45, ball_state_t::CLASS_CUE, 0.9f), Ball(7, 2.0, 1.0, 0.4, 0.0)},
+      1'000'200);
   const auto moving = Ask(Choose(4, false));
   ASSERT_TRUE(moving);
   EXPECT_EQ(Status(*moving), kInvalid);

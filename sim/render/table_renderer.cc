@@ -349,10 +349,9 @@ void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
                                                            std::pow(half, options_.shininess))
                                       : 0.0f;
           const bool cap = region.striped[hit.ball] && std::abs(normal.y()) > kStripeHalfWidth;
-          const Eigen::Vector3f ball =
-              ((cap ? stripe_cap : region.albedo[hit.ball]) * lambert +
-               Eigen::Vector3f::Constant(highlight)) *
-              vignette;
+          const Eigen::Vector3f ball = ((cap ? stripe_cap : region.albedo[hit.ball]) * lambert +
+                                        Eigen::Vector3f::Constant(highlight)) *
+                                       vignette;
           colour = hit.coverage * ball + (1 - hit.coverage) * colour;
         }
         sum += colour;

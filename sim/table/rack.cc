@@ -197,10 +197,11 @@ Eigen::Vector2d FreeSpotFrom(const TableGeometry& table, double radius,
   return spot;
 }
 
-std::vector<SceneBall> WithBallAt(std::vector<SceneBall> balls, int id, const Eigen::Vector2d& place) {
-  balls.erase(std::remove_if(balls.begin(), balls.end(),
-                             [id](const SceneBall& b) { return b.id == id; }),
-              balls.end());
+std::vector<SceneBall> WithBallAt(std::vector<SceneBall> balls, int id,
+                                  const Eigen::Vector2d& place) {
+  balls.erase(
+      std::remove_if(balls.begin(), balls.end(), [id](const SceneBall& b) { return b.id == id; }),
+      balls.end());
   SceneBall placed;
   placed.id = id;
   placed.state.segment<2>(physics::kX) = place;

@@ -83,7 +83,8 @@ Eigen::Vector2d FreeSpotFrom(const TableGeometry& table, double radius,
                              const Eigen::Vector2d& step, double clearance);
 
 // `balls` with ball `id` lifted, if there, and placed at rest at `place`, first.
-std::vector<SceneBall> WithBallAt(std::vector<SceneBall> balls, int id, const Eigen::Vector2d& place);
+std::vector<SceneBall> WithBallAt(std::vector<SceneBall> balls, int id,
+                                  const Eigen::Vector2d& place);
 
 // A nine-ball layout for a drill from ball in hand: balls 1-9 placed uniformly on the playing
 // surface from `seed` (SeededUniform), each a ball's width clear of the others and of the

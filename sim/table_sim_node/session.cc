@@ -233,27 +233,34 @@ nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::stri
   std::vector<double> decisions, rms;
   double worst = 0.0;
   for (const GameResult& game : games) {
-    nlohmann::json rack = {{"seed", game.seed}, {"cleared", game.cleared},
-                           {"visits", game.visits}, {"run_out", game.cleared && game.visits == 1}};
+    nlohmann::json rack = {{"seed", game.seed},
+                           {"cleared", game.cleared},
+                           {"visits", game.visits},
+                           {"run_out", game.cleared && game.visits == 1}};
     int rack_attempts = 0, rack_pots = 0, rack_fouls = 0, rack_balls = 0;
     for (const GameShot& s : game.shots) {
-      nlohmann::json shot = {{"number", s.number}, {"visit", s.visit},
-                             {"break", s.break_shot}, {"ball_in_hand", s.ball_in_hand},
-                             {"status", s.status},    {"potted", s.potted},
-                             {"called_potted", s.called_potted}, {"foul", s.foul},
+      nlohmann::json shot = {{"number", s.number},
+                             {"visit", s.visit},
+                             {"break", s.break_shot},
+                             {"ball_in_hand", s.ball_in_hand},
+                             {"status", s.status},
+                             {"potted", s.potted},
+                             {"called_potted", s.called_potted},
+                             {"foul", s.foul},
                              {"decision_ms", s.decision_ms},
-                             {"estimator", {{"position_rms_mm", s.position_rms_mm},
-                                            {"position_max_mm", s.position_max_mm},
-                                            {"untracked", s.untracked},
-                                            {"misidentified", s.misidentified}}}};
+                             {"estimator",
+                              {{"position_rms_mm", s.position_rms_mm},
+                               {"position_max_mm", s.position_max_mm},
+                               {"untracked", s.untracked},
+                               {"misidentified", s.misidentified}}}};
       shot["first_contact"] =
           s.first_contact < 0 ? nlohmann::json() : nlohmann::json(s.first_contact);
       if (!s.reason.empty()) shot["reason"] = s.reason;
       if (s.foul) shot["foul_reason"] = s.foul_reason;
       if (s.cue_placement) shot["cue_placement"] = {s.cue_placement->x(), s.cue_placement->y()};
       if (s.called >= 0) {
-        shot["called"] = {{"ball", s.called}, {"pocket", s.pocket}, {"kind", s.kind},
-                          {"predicted", s.predicted}};
+        shot["called"] = {
+            {"ball", s.called}, {"pocket", s.pocket}, {"kind", s.kind}, {"predicted", s.predicted}};
         ++rack_attempts;
         rack_pots += s.called_potted;
       }

@@ -111,10 +111,10 @@ constexpr int kNewLayoutSettles = 4;
 
 // The name of the pocket nearest `at`.
 std::string NearestPocket(const table::TableGeometry& table, const Eigen::Vector2d& at) {
-  const auto nearest = std::min_element(
-      table.pockets.begin(), table.pockets.end(), [&](const auto& a, const auto& b) {
-        return (a.centre - at).norm() < (b.centre - at).norm();
-      });
+  const auto nearest = std::min_element(table.pockets.begin(), table.pockets.end(),
+                                        [&](const auto& a, const auto& b) {
+                                          return (a.centre - at).norm() < (b.centre - at).norm();
+                                        });
   return nearest->name;
 }
 
@@ -122,9 +122,9 @@ std::string NearestPocket(const table::TableGeometry& table, const Eigen::Vector
 // half, x = 1/4 length), or the nearest free place behind it toward the head rail.
 std::vector<table::SceneBall> InTheKitchen(const table::TableGeometry& table, double radius,
                                            std::vector<table::SceneBall> balls) {
-  const Eigen::Vector2d spot = table::FreeSpotFrom(
-      table, radius, balls, {0.25 * table.length, 0.5 * table.width}, {-kPlacementStep, 0.0},
-      kPlacementClearance);
+  const Eigen::Vector2d spot =
+      table::FreeSpotFrom(table, radius, balls, {0.25 * table.length, 0.5 * table.width},
+                          {-kPlacementStep, 0.0}, kPlacementClearance);
   return table::WithBallAt(std::move(balls), kCueBall, spot);
 }
 
@@ -676,8 +676,7 @@ SceneResult TableSimNode::RunScene() {
   return result;
 }
 
-void TableSimNode::ScoreEstimate(const std::vector<table::SceneBall>& balls,
-                                 GameShot& shot) const {
+void TableSimNode::ScoreEstimate(const std::vector<table::SceneBall>& balls, GameShot& shot) const {
   double sum = 0.0;
   for (const table::SceneBall& b : balls) {
     const ball_state_t* nearest = nullptr;
@@ -756,10 +755,9 @@ GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeo
     for (const table::SceneBall& b : balls) {
       if (b.id != kCueBall) others.push_back(b);
     }
-    const Eigen::Vector2d placed =
-        table::FreeSpotFrom(geometry, radius, others,
-                            {command.cue_placement[0], command.cue_placement[1]},
-                            {-kPlacementStep, 0.0}, 0.0);
+    const Eigen::Vector2d placed = table::FreeSpotFrom(
+        geometry, radius, others, {command.cue_placement[0], command.cue_placement[1]},
+        {-kPlacementStep, 0.0}, 0.0);
     shot.cue_placement = placed;
     balls = table::WithBallAt(others, kCueBall, placed);
   }
@@ -796,8 +794,8 @@ GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeo
   } else if (shot.first_contact < 0) {
     shot.foul_reason = "no contact";
   } else if (!shot.break_shot && shot.first_contact != lowest) {
-    shot.foul_reason = "first contact " + std::to_string(shot.first_contact) +
-                       ", not the lowest " + std::to_string(lowest);
+    shot.foul_reason = "first contact " + std::to_string(shot.first_contact) + ", not the lowest " +
+                       std::to_string(lowest);
   }
   shot.foul = !shot.foul_reason.empty();
   shot.called_potted = shot.called_potted && !shot.foul;
@@ -805,9 +803,9 @@ GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeo
   *nine_legal = nine && !shot.foul;
   if (nine && shot.foul) {
     table::SceneBall spotted{9, physics::BallState::Zero()};
-    spotted.state.head<2>() = table::FreeSpotFrom(
-        geometry, radius, rest, {0.75 * geometry.length, 0.5 * geometry.width},
-        {kPlacementStep, 0.0}, kPlacementClearance);
+    spotted.state.head<2>() =
+        table::FreeSpotFrom(geometry, radius, rest, {0.75 * geometry.length, 0.5 * geometry.width},
+                            {kPlacementStep, 0.0}, kPlacementClearance);
     rest.push_back(spotted);
   }
   if (scratch) rest = InTheKitchen(geometry, radius, std::move(rest));
