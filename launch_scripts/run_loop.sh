@@ -284,9 +284,10 @@ if [ -n "$log" ]; then
   [ -n "$log_failure" ] || [ -s "$log" ] || log_failure="it recorded nothing"
 fi
 $json && echo "$summary"
-python3 - "$summary" >&2 <<'PY'
+# The summary from its file: a game's is longer than a command line may be.
+python3 - "$summary_file" >&2 <<'PY'
 import json, sys
-s = json.loads(sys.argv[1])
+s = json.load(open(sys.argv[1]))
 pots = s.get("scene", {}).get("pots", [])
 game = s.get("game")
 if game:
@@ -296,7 +297,8 @@ if game:
         print(f"{'shot':>4} {'visit':>5} {'call':>18} {'p':>5} {'potted':>10} {'foul':>24} {'ms':>6} {'est mm':>6}")
         for shot in rack["shots"]:
             c = shot.get("called")
-            call = "break" if shot["break"] else f"{c['ball']} {c['pocket']}" if c else shot["status"]
+            call = ("break" if shot["break"] else f"{c['ball']} {c['pocket']}" if c else
+                    "fallback" if shot["status"] == "ok" else shot["status"])
             p = f"{c['predicted']:.2f}" if c else ""
             potted = ",".join(str(b) for b in shot["potted"]) + (" *" if shot["called_potted"] else "")
             hand = " (in hand)" if shot["ball_in_hand"] else ""
