@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# usage: launch_scripts/run_loop.sh [--shots N] [--seed S] [--noise on|off]
+# usage: launch_scripts/run_loop.sh [--game nine-ball|drill] [--racks N] [--shot-limit N]
+#                                   [--shots N] [--seed S] [--noise on|off]
 #                                   [--scene break|seeded|FILE]
 #                                   [--pot K:P ...] [--params NAME|FILE] [--log FILE]
 #                                   [--plant-params NAME|FILE] [--identify-every N]
@@ -8,13 +9,24 @@
 #                                   [--lockstep | --realtime] [--view] [--view-port PORT]
 #                                   [--json] [--no-build] [-h | --help]
 #
-# The closed loop: estimator_node, planner_node and table_sim_node over LCM, for N shots to random
+# The closed loop: estimator_node, planner_node and table_sim_node over LCM, playing nine-ball
+# (the default: one rack broken and played until it is cleared), or for N shots to random
 # targets; prints the summary on stderr and, with --json, one JSON object on stdout.
 #
-#   --shots N              shots (default 20)
-#   --seed S               seed of the targets and of the noise, two streams of their own
-#                          (default 1): the noise leaves the targets as they were
-#   --noise on|off         the robot's execution noise (default off)
+#   --game nine-ball|drill the game (the default without --shots or --scene): nine-ball, the
+#                          rack of --seed broken and then played; drill, a seeded nine-ball
+#                          layout (billiard play's) from ball in hand. Under nine-ball rules,
+#                          the planner choosing every shot (shot_request_t::MODE_CHOOSE) from
+#                          the estimator's view, the table executing it with the robot's noise,
+#                          until the table is clear or the shot limit; prints every shot and the
+#                          summary (pots per attempt, run-outs, balls per visit, fouls, decision
+#                          time, the estimator's position error at each decision)
+#   --racks N              --game: racks played, of seeds S, S + 1, ... (default 1)
+#   --shot-limit N         --game: the most shots of a rack (default 40)
+#   --shots N              N shots to random targets instead of a game (default 20)
+#   --seed S               seed of the targets (the racks) and of the noise, two streams of
+#                          their own (default 1): the noise leaves the targets as they were
+#   --noise on|off         the robot's execution noise (default off; on in a game)
 #   --scene break|seeded|FILE
 #                          one whole-table shot instead: the eight-ball rack of --seed (break) or
 #                          a scene file at rest, the cue ball rolled into the ball nearest it;
@@ -67,13 +79,16 @@
 set -euo pipefail
 source "$(dirname "$0")/script_support.sh"
 
-shots=20 seed=1 noise=off scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true
+shots="" game="" racks=1 shot_limit=40 seed=1 noise="" scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true
 pots=()
 view=false view_port=8765
 while [ $# -gt 0 ]; do
   case "$1" in
     -h | --help) help_and_exit ;;
     --shots) need_number 1 "$@"; shots=$2; shift 2 ;;
+    --game) need_value "$@"; game=$2; shift 2 ;;
+    --racks) need_number 1 "$@"; racks=$2; shift 2 ;;
+    --shot-limit) need_number 1 "$@"; shot_limit=$2; shift 2 ;;
     --seed) need_number 0 "$@"; seed=$2; shift 2 ;;
     --noise) need_value "$@"; noise=$2; shift 2 ;;
     # A scene file, like --log, is the caller's path; "break" is a name.
@@ -107,6 +122,17 @@ while [ $# -gt 0 ]; do
     *) unknown_argument "$1" ;;
   esac
 done
+# Without --shots or --scene the loop plays the game this controller exists for.
+[ -z "$game" ] && [ -z "$shots" ] && [ -z "$scene" ] && game=nine-ball
+case "$game" in
+  "" | nine-ball | drill) ;;
+  *) usage_error "--game must be nine-ball or drill, not '$game'" ;;
+esac
+if [ -n "$game" ] && { [ -n "$shots" ] || [ -n "$scene" ]; }; then
+  usage_error "--game plays racks: not with --shots or --scene"
+fi
+[ -n "$shots" ] || shots=20
+[ -n "$noise" ] || { [ -n "$game" ] && noise=on || noise=off; }
 case "$noise" in
   on|off) ;;
   *) usage_error "--noise must be on or off, not '$noise'" ;;
@@ -149,7 +175,9 @@ if $view && [ -z "${in_namespace:-}" ] && unshare -n true 2>/dev/null; then
 fi
 
 source launch_scripts/lcm_network.sh
-enter_private_network launch_scripts/run_loop.sh --no-build --shots "$shots" --seed "$seed" \
+playing=(--shots "$shots")
+[ -n "$game" ] && playing=(--game "$game" --racks "$racks" --shot-limit "$shot_limit")
+enter_private_network launch_scripts/run_loop.sh --no-build "${playing[@]}" --seed "$seed" \
   --noise "$noise" --params "$params" ${plant:+--plant-params "$plant"} --identify-every "$identify_every" --identify "$identify" ${scene:+--scene "$scene"} "${pots[@]}" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
@@ -232,7 +260,7 @@ $in_process && identifying+=(--identify-every "$identify_every")
 # In the background, so that a signal reaches the trap at once and the cleanup stops it too.
 session=("$bin_dir/table_sim_node")
 $in_process && session=("$bin_dir/billiard" loop)
-"${session[@]}" --params "$params" ${plant:+--plant-params "$plant"} "${identifying[@]}" --shots "$shots" --seed "$seed" --noise "$noise" \
+"${session[@]}" --params "$params" ${plant:+--plant-params "$plant"} "${identifying[@]}" "${playing[@]}" --seed "$seed" --noise "$noise" \
   ${scene:+--scene "$scene"} "${pots[@]}" $sim_clock >"$summary_file" &
 pids+=($!)
 status=0
@@ -256,13 +284,37 @@ if [ -n "$log" ]; then
   [ -n "$log_failure" ] || [ -s "$log" ] || log_failure="it recorded nothing"
 fi
 $json && echo "$summary"
-python3 - "$summary" >&2 <<'PY'
+# The summary from its file: a game's is longer than a command line may be.
+python3 - "$summary_file" >&2 <<'PY'
 import json, sys
-s = json.loads(sys.argv[1])
+s = json.load(open(sys.argv[1]))
 pots = s.get("scene", {}).get("pots", [])
-if not pots:
+game = s.get("game")
+if game:
+    for k, rack in enumerate(game["racks"]):
+        print(f"rack {k} (seed {rack['seed']}): {'cleared' if rack['cleared'] else 'not cleared'} in "
+              f"{len(rack['shots'])} shots, {rack['visits']} visit(s){', a run-out' if rack['run_out'] else ''}")
+        print(f"{'shot':>4} {'visit':>5} {'call':>18} {'p':>5} {'potted':>10} {'foul':>24} {'ms':>6} {'est mm':>6}")
+        for shot in rack["shots"]:
+            c = shot.get("called")
+            call = ("break" if shot["break"] else f"{c['ball']} {c['pocket']}" if c else
+                    "fallback" if shot["status"] == "ok" else shot["status"])
+            p = f"{c['predicted']:.2f}" if c else ""
+            potted = ",".join(str(b) for b in shot["potted"]) + (" *" if shot["called_potted"] else "")
+            hand = " (in hand)" if shot["ball_in_hand"] else ""
+            print(f"{shot['number']:>4} {shot['visit']:>5} {call + hand:>18} {p:>5} {potted:>10} "
+                  f"{shot.get('foul_reason', ''):>24} {shot['decision_ms']:6.0f} "
+                  f"{shot['estimator']['position_rms_mm']:6.2f}")
+    g = game["summary"]
+    print(f"{g['cleared']} of {g['racks']} racks cleared, {g['run_outs']} run-outs; "
+          f"{g['pots']} of {g['attempts']} attempts potted ({100 * g['pots_per_attempt']:.0f} %), "
+          f"{g['balls_per_visit']:.2f} balls per visit, {g['fouls']} fouls; decision "
+          f"{g['median_decision_ms']:.0f} ms median ({g['max_decision_ms']:.0f} max); the estimator "
+          f"{g['median_position_rms_mm']:.2f} mm rms median at the decisions ({g['max_position_error_mm']:.2f} "
+          f"max), {g['misidentified_ball_decisions']} balls misidentified in {g['decisions']} decisions")
+if not pots and not game:
     print(f"{'shot':>4} {'target':>16} {'final':>16} {'miss mm':>9} {'plan ms':>8}  status")
-for i, shot in enumerate([] if pots else s["shots"]):
+for i, shot in enumerate([] if pots or game else s["shots"]):
     t, f = shot["target"], shot["final"]
     print(f"{i:>4} ({t[0]:6.3f},{t[1]:6.3f}) ({f[0]:6.3f},{f[1]:6.3f}) {1e3*shot['miss_m']:9.2f} "
           f"{shot['plan_ms']:8.2f}  {shot['status']}")
@@ -279,7 +331,7 @@ for i, p in enumerate(pots):
     else:
         line += f" ({p['reason']})"
     print(line)
-if not pots:
+if not pots and not game:
     print(f"median miss {1e3*s['median_miss_m']:.2f} mm, max {1e3*s['max_miss_m']:.2f} mm, "
           f"mean {1e3*s['mean_miss_m']:.2f} +- {1e3*s['stddev_miss_m']:.2f} mm, {s['wall_s']:.1f} s")
 if "plant" in s:

@@ -104,6 +104,7 @@ std::string WalkLayout(WireWalk& w, const cue_command_t*) {
     w.Skip(w.Count(2 * kDouble, kMaxPathPoints, "ball path num_points") * 2 * kDouble,
            "ball path points");
   }
+  w.Skip(2 * kDouble + kInt8 + 2 * kDouble, "cue_command_t choice");
   w.Skip(kInt8, "cue_command_t status");
   w.String("reason");
   return w.error();
@@ -238,13 +239,35 @@ std::string CheckPotRequest(const shot_request_t& m) {
   return {};
 }
 
+// A choice: known rules, ball in hand a flag.
+std::string CheckChoiceRequest(const shot_request_t& m) {
+  if (m.rules != shot_request_t::RULES_ANY && m.rules != shot_request_t::RULES_NINE_BALL) {
+    return "unknown rules " + std::to_string(m.rules) + " (0-1, see shot_request_t)";
+  }
+  if (m.ball_in_hand != 0 && m.ball_in_hand != 1) {
+    return "ball_in_hand is " + std::to_string(m.ball_in_hand) + ", not 0 or 1";
+  }
+  return {};
+}
+
 // A pot's prediction: finite, a window that is one, the kind a chosen one, one path a ball.
 std::string CheckPotCommand(const cue_command_t& m) {
   const std::string command = "command " + std::to_string(m.request_id);
   const double pot[] = {m.margin_deg[0],   m.margin_deg[1], m.speed_window[0],
                         m.speed_window[1], m.cue_rest[0],   m.cue_rest[1]};
   if (!Finite(pot, 6)) return command + " has a non-finite margin, speed window or cue rest";
-  if (m.mode != shot_request_t::MODE_TO_POINT && m.mode != shot_request_t::MODE_POT) {
+  const double choice[] = {m.success_probability, m.probability_stderr, m.cue_placement[0],
+                           m.cue_placement[1]};
+  if (!Finite(choice, 4)) return command + " has a non-finite probability or cue placement";
+  if (m.success_probability < 0.0 || m.success_probability > 1.0 || m.probability_stderr < 0.0) {
+    return command + " has a probability outside 0..1 or a negative standard error";
+  }
+  if (m.has_cue_placement != 0 && m.has_cue_placement != 1) {
+    return command + " has has_cue_placement " + std::to_string(m.has_cue_placement) +
+           ", not 0 or 1";
+  }
+  if (m.mode != shot_request_t::MODE_TO_POINT && m.mode != shot_request_t::MODE_POT &&
+      m.mode != shot_request_t::MODE_CHOOSE) {
     return command + " has an unknown mode " + std::to_string(m.mode);
   }
   if (!KnownPotKind(m.kind)) return command + " has an unknown kind " + std::to_string(m.kind);
@@ -341,8 +364,9 @@ std::string Check(const shot_request_t& m) {
     return "side_spin is more than " + std::to_string(kMaxSpin) + " rad/s";
   }
   if (m.mode == shot_request_t::MODE_POT) return CheckPotRequest(m);
+  if (m.mode == shot_request_t::MODE_CHOOSE) return CheckChoiceRequest(m);
   if (m.mode != shot_request_t::MODE_TO_POINT) {
-    return "unknown mode " + std::to_string(m.mode) + " (0-1, see shot_request_t)";
+    return "unknown mode " + std::to_string(m.mode) + " (0-2, see shot_request_t)";
   }
   return {};
 }

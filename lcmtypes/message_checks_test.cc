@@ -180,9 +180,10 @@ TEST(MessageChecks, CountsThatLieAreRefusedBeforeAnythingIsAllocated) {
   EXPECT_NE(Decode(command.data(), command.size(), out).find("not terminated"), std::string::npos);
 
   // A pot's ball paths: their count, and each path's, after the pocket. Two paths of a cue
-  // command with an empty reason end 2 (points) x 16 + 8, 3 x 16 + 8, 1 (status) and 5 bytes
-  // (reason) before the end.
-  const std::size_t pot_tail = 2 * 16 + 8 + 3 * 16 + 8 + 1 + 5;
+  // command with an empty reason end 2 (points) x 16 + 8, 3 x 16 + 8, 33 (a choice's
+  // probability, its error and the cue placement), 1 (status) and 5 bytes (reason) before the
+  // end.
+  const std::size_t pot_tail = 2 * 16 + 8 + 3 * 16 + 8 + 33 + 1 + 5;
   const std::size_t ball_paths = Encode(PotCommand()).size() - pot_tail - 4;
   for (std::uint32_t count : {0xffffffffu, 65u, 0x40000000u}) {
     command = Encode(PotCommand());
@@ -323,7 +324,25 @@ TEST(MessageChecks, PotRequestMeaning) {
   EXPECT_NE(refused([](shot_request_t& m) { m.cue_radius = kNaN; }), "");
   EXPECT_NE(refused([](shot_request_t& m) { m.cue_radius = -0.1; }), "");
   EXPECT_NE(refused([](shot_request_t& m) { m.has_cue_target = 2; }), "");
-  EXPECT_NE(refused([](shot_request_t& m) { m.mode = 2; }).find("mode"), std::string::npos);
+  EXPECT_NE(refused([](shot_request_t& m) { m.mode = 3; }).find("mode"), std::string::npos);
+  // A choice: rules and ball in hand known, the pot's fields unread.
+  EXPECT_EQ(refused([](shot_request_t& m) {
+              m.mode = shot_request_t::MODE_CHOOSE;
+              m.rules = shot_request_t::RULES_NINE_BALL;
+              m.ball_in_hand = 1;
+              m.pocket = "";
+            }),
+            "");
+  EXPECT_NE(refused([](shot_request_t& m) {
+              m.mode = shot_request_t::MODE_CHOOSE;
+              m.rules = 2;
+            }).find("rules"),
+            std::string::npos);
+  EXPECT_NE(refused([](shot_request_t& m) {
+              m.mode = shot_request_t::MODE_CHOOSE;
+              m.ball_in_hand = 2;
+            }).find("ball_in_hand"),
+            std::string::npos);
   EXPECT_NE(refused([](shot_request_t& m) { m.kind = 5; }).find("kind"), std::string::npos);
   EXPECT_NE(refused([](shot_request_t& m) { m.kind = -1; }), "");
   EXPECT_NE(refused([](shot_request_t& m) { m.pocket = ""; }).find("pocket"), std::string::npos);
@@ -385,6 +404,22 @@ TEST(MessageChecks, PotCommandMeaning) {
             std::string::npos);
   EXPECT_NE(refused([](cue_command_t& m) { m.ball_paths[1].ball_id = -1; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.kind = 7; }).find("kind"), std::string::npos);
+  // A choice's: a probability, its error and the cue placement.
+  EXPECT_EQ(refused([](cue_command_t& m) {
+              m.mode = shot_request_t::MODE_CHOOSE;
+              m.success_probability = 0.9;
+              m.probability_stderr = 0.02;
+              m.has_cue_placement = 1;
+              m.cue_placement[0] = 0.6;
+              m.cue_placement[1] = 0.5;
+            }),
+            "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.success_probability = 1.5; }).find("probability"),
+            std::string::npos);
+  EXPECT_NE(refused([](cue_command_t& m) { m.probability_stderr = -0.1; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.cue_placement[1] = kNaN; }).find("non-finite"),
+            std::string::npos);
+  EXPECT_NE(refused([](cue_command_t& m) { m.has_cue_placement = 2; }), "");
   // Counts that are not the arrays' sizes, or beyond what a receiver decodes: not to be sent.
   EXPECT_NE(refused([](cue_command_t& m) { m.num_ball_paths = 3; }).find("num_ball_paths"),
             std::string::npos);

@@ -45,7 +45,7 @@ const std::map<std::string, std::set<std::string>>& Layers() {
       {"planner/choice",
        {"planner/pot", "sim/physics", "sim/table", "sim/params", "sim/model_choice", "sim/batch"}},
       {"planner/node",
-       {"planner", "planner/pot", "sim/physics", "sim/table", "sim/params", "sim/shot_fit",
+       {"planner", "planner/pot", "planner/choice", "sim/physics", "sim/table", "sim/params", "sim/shot_fit",
         "sim/batch", "lcmtypes", "lcmtypes/node"}},
       {"estimator", {"sim/physics", "sim/camera"}},
       {"estimator/testing", {"estimator", "sim/physics", "sim/params", "tests/support"}},

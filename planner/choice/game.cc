@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "sim/model_choice/model_choice.h"
-#include "sim/table/seeded_uniform.h"
+#include "sim/table/rack.h"
 
 namespace billiard::choice {
 
@@ -23,22 +23,14 @@ bool Has(const std::vector<table::SceneBall>& balls, int id) {
   return std::any_of(balls.begin(), balls.end(), [&](const auto& b) { return b.id == id; });
 }
 
-bool Free(const table::TableGeometry& table, double radius,
-          const std::vector<table::SceneBall>& balls, const Eigen::Vector2d& p) {
-  if (!table.OnSurface(p, radius)) return false;
-  return std::all_of(balls.begin(), balls.end(), [&](const auto& b) {
-    return (Position(b) - p).norm() >= 2 * radius + kClearance;
-  });
-}
-
 // The 9 back on the foot spot, or the nearest free place behind it toward the foot rail.
 void RespotNine(const table::TableGeometry& table, double radius,
                 std::vector<table::SceneBall>* balls) {
-  Eigen::Vector2d p(0.75 * table.length, 0.5 * table.width);
-  while (!Free(table, radius, *balls, p) && p.x() < table.length) p.x() += kRespotStep;
   table::SceneBall nine;
   nine.id = 9;
-  nine.state.segment<2>(physics::kX) = p;
+  nine.state.segment<2>(physics::kX) =
+      table::FreeSpotFrom(table, radius, *balls, {0.75 * table.length, 0.5 * table.width},
+                          {kRespotStep, 0.0}, kClearance);
   balls->push_back(nine);
 }
 
@@ -195,26 +187,6 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
   }
   game.final_balls = balls;
   return game;
-}
-
-std::vector<table::SceneBall> SeededNineBallLayout(const table::TableGeometry& table,
-                                                   double radius, std::uint64_t seed) {
-  table::SeededUniform uniform(seed);
-  std::vector<table::SceneBall> balls;
-  for (int id = 1; id <= 9; ++id) {
-    for (;;) {
-      const Eigen::Vector2d p(uniform.Between(0, table.length), uniform.Between(0, table.width));
-      // A ball's width clear of the cushions: inside the surface shrunk by a diameter.
-      if (!table.OnSurface(p, 3 * radius)) continue;
-      if (!Free(table, 2 * radius, balls, p)) continue;
-      table::SceneBall b;
-      b.id = id;
-      b.state.segment<2>(physics::kX) = p;
-      balls.push_back(b);
-      break;
-    }
-  }
-  return balls;
 }
 
 }  // namespace billiard::choice

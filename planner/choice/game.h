@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "planner/choice/shot_choice.h"
+#include "sim/table/rack.h"
 
 namespace billiard::choice {
 
@@ -90,10 +91,8 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
                     std::vector<table::SceneBall> balls, const GameOptions& options,
                     batch::ThreadPool& pool);
 
-// A nine-ball layout for a drill from ball in hand: balls 1-9 placed uniformly on the playing
-// surface from `seed` (table::SeededUniform), each a ball's width clear of the others and of
-// the cushions; no cue ball.
-std::vector<table::SceneBall> SeededNineBallLayout(const table::TableGeometry& table,
-                                                   double radius, std::uint64_t seed);
+// The layouts of the drills and benchmarks (sim/table/rack.h), where the table simulator
+// places them too.
+using table::SeededNineBallLayout;
 
 }  // namespace billiard::choice

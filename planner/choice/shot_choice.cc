@@ -9,6 +9,7 @@
 
 #include "planner/pot/pot_geometry.h"
 #include "sim/model_choice/model_choice.h"
+#include "sim/table/rack.h"
 
 namespace billiard::choice {
 
@@ -320,14 +321,7 @@ std::vector<int> LegalTargets(Rules rules, const std::vector<table::SceneBall>& 
 
 std::vector<table::SceneBall> WithCueBallAt(std::vector<table::SceneBall> balls,
                                             const Eigen::Vector2d& place) {
-  balls.erase(std::remove_if(balls.begin(), balls.end(),
-                             [](const table::SceneBall& b) { return b.id == 0; }),
-              balls.end());
-  table::SceneBall cue;
-  cue.id = 0;
-  cue.state.segment<2>(physics::kX) = place;
-  balls.insert(balls.begin(), cue);
-  return balls;
+  return table::WithBallAt(std::move(balls), 0, place);
 }
 
 std::uint64_t SampleSeed(std::uint64_t seed, std::uint64_t index) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <exception>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <utility>
 
@@ -89,14 +90,14 @@ int8_t ToMessageKind(pot::ShotKind kind) {
 // `ball_class` the estimator is surest of, at least kMinClassConfidence. Ties by id: the answer
 // must not depend on the balls' order. nullptr when there is none.
 const ball_state_t* Named(const std::vector<const ball_state_t*>& balls, int32_t id,
-                          int8_t ball_class) {
+                          int8_t ball_class, float min_confidence = kMinClassConfidence) {
   const ball_state_t* surest = nullptr;
   for (const ball_state_t* ball : balls) {
     if (id != shot_request_t::BALL_BY_CLASS) {
       if (ball->ball_id == id) return ball;
       continue;
     }
-    if (ball->ball_class != ball_class || ball->class_confidence < kMinClassConfidence) continue;
+    if (ball->ball_class != ball_class || ball->class_confidence < min_confidence) continue;
     if (surest == nullptr || ball->class_confidence > surest->class_confidence ||
         (ball->class_confidence == surest->class_confidence && ball->ball_id < surest->ball_id)) {
       surest = ball;
@@ -110,14 +111,62 @@ table::TableGeometry TableOf(const PlannerNodeOptions& options) {
                        : table::BuildTable(params::LoadTableSpec(kDefaultPotTable));
 }
 
+}  // namespace
+
+std::unordered_map<int32_t, int> BallNumbers(const table_state_t& table, int32_t cue) {
+  constexpr int kHighestNumber = 15;
+  std::vector<const ball_state_t*> balls;
+  for (const ball_state_t& b : table.balls) balls.push_back(&b);
+  std::sort(balls.begin(), balls.end(),
+            [](const ball_state_t* a, const ball_state_t* b) { return a->ball_id < b->ball_id; });
+  // Each number's surest claimant: first among the confident, then, for the numbers still
+  // free, among the others (a faint stripe is still likelier its own number than any other).
+  std::map<int, const ball_state_t*> claimant;
+  std::unordered_map<int32_t, int> number;
+  for (const bool confident : {true, false}) {
+    std::map<int, const ball_state_t*> surest;
+    for (const ball_state_t* b : balls) {
+      if (b->ball_id == cue || number.count(b->ball_id) || b->ball_class < 1 ||
+          b->ball_class > kHighestNumber || claimant.count(b->ball_class) ||
+          (b->class_confidence >= kMinClassConfidence) != confident) {
+        continue;
+      }
+      const ball_state_t*& s = surest[b->ball_class];
+      if (s == nullptr || b->class_confidence > s->class_confidence) s = b;
+    }
+    for (const auto& [n, b] : surest) {
+      claimant[n] = b;
+      number[b->ball_id] = n;
+    }
+  }
+  number[cue] = 0;
+  int free = 1;
+  for (const ball_state_t* b : balls) {
+    if (number.count(b->ball_id)) continue;
+    while (free <= kHighestNumber && claimant.count(free)) ++free;
+    number[b->ball_id] = free++;
+  }
+  return number;
+}
+
+namespace {
+
 std::string Describe(const cue_command_t& c) {
   std::ostringstream line;
   line << "request " << c.request_id << " (ball " << c.ball_id;
   if (c.mode == shot_request_t::MODE_POT) {
     line << ", pot ball " << c.object_ball_id << " in " << c.pocket;
   }
+  if (c.mode == shot_request_t::MODE_CHOOSE) {
+    line << ", chose ball " << c.object_ball_id << " in " << c.pocket << " at p "
+         << c.success_probability;
+    if (c.has_cue_placement) {
+      line << ", the cue ball placed at (" << c.cue_placement[0] << ", " << c.cue_placement[1]
+           << ")";
+    }
+  }
   line << "): " << messages::CueCommandStatusName(c.status);
-  if (c.status == cue_command_t::STATUS_OK && c.mode == shot_request_t::MODE_POT) {
+  if (c.status == cue_command_t::STATUS_OK && c.mode != shot_request_t::MODE_TO_POINT) {
     line << ": " << messages::PotKindName(c.kind) << ", cue " << c.cue_speed << " m/s, heading "
          << c.heading << " rad, margin " << c.margin_deg[0] << "/" << c.margin_deg[1]
          << " deg, cue ball rests at (" << c.cue_rest[0] << ", " << c.cue_rest[1] << "), "
@@ -144,6 +193,10 @@ cue_command_t ReplyTo(const shot_request_t& q) {
     c.object_ball_id = q.object_ball_id;
     c.pocket = q.pocket;
     c.kind = q.kind;
+  }
+  if (q.mode == shot_request_t::MODE_CHOOSE && messages::Check(q).empty()) {
+    c.mode = q.mode;
+    c.object_ball_id = -1;
   }
   return c;
 }
@@ -312,6 +365,7 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   std::copy(state.position, state.position + 2, c.start);
   if (auto unfit = UnfitToPlanFrom(q, state)) return Refusal(c, unfit->status, unfit->reason);
   if (q.mode == shot_request_t::MODE_POT) return AnswerPot(q, state, std::move(c));
+  if (q.mode == shot_request_t::MODE_CHOOSE) return AnswerChoice(q, state, std::move(c));
   planner::ShotPlan plan;
   try {
     plan = planner::PlanShot(ToShotRequest(q, state), params_, options_.planner);
@@ -354,37 +408,117 @@ cue_command_t PlannerNode::AnswerPot(const shot_request_t& q, const ball_state_t
     }
     request.cue_target = pot::CueTarget{point, q.cue_radius};
   }
-  // The scene: the cue ball id 0, the others by their ids (one that is 0 takes a free id), all
-  // at rest where they were seen.
-  std::unordered_map<int, int32_t> message_id;
-  std::vector<table::SceneBall> balls;
+  // The scene: the cue ball id 0, the others by their ids (one that is 0 takes a free id).
   int32_t free_id = 1;
   for (const ball_state_t& b : latest_table_->balls) free_id = std::max(free_id, b.ball_id + 1);
+  std::unordered_map<int, int32_t> message_id;
+  std::string moving;
+  const auto balls = SceneAtRest(
+      cue.ball_id, [&](int32_t id) { return id == 0 ? free_id : id; }, &message_id, &moving);
+  if (!balls) return Refusal(c, cue_command_t::STATUS_INVALID, moving);
+  for (const auto& [scene_id, id] : message_id) {
+    if (id == object->ball_id) request.ball = scene_id;
+  }
+  pot::PotPlan plan;
+  try {
+    plan = pot::PlanPot(table_, params_, *balls, request, options_.pot);
+  } catch (const std::exception& e) {
+    return Refusal(c, cue_command_t::STATUS_NOT_CONVERGED,
+                   std::string("pot planner failed: ") + e.what());
+  }
+  WritePot(plan, message_id, &c);
+  return Sendable(c);
+}
+
+std::optional<std::vector<table::SceneBall>> PlannerNode::SceneAtRest(
+    int32_t cue_track, const std::function<int(int32_t)>& scene_id,
+    std::unordered_map<int, int32_t>* message_id, std::string* moving) const {
+  std::vector<table::SceneBall> balls;
   for (const ball_state_t& b : latest_table_->balls) {
     const double speed = std::hypot(b.velocity[0], b.velocity[1]);
     if (speed > options_.max_ball_speed) {
       std::ostringstream reason;
       reason << "ball " << b.ball_id << " is moving (" << speed << " m/s, more than "
              << options_.max_ball_speed << " m/s)";
-      return Refusal(c, cue_command_t::STATUS_INVALID, reason.str());
+      *moving = reason.str();
+      return std::nullopt;
     }
-    const int scene_id = b.ball_id == cue.ball_id ? 0 : b.ball_id == 0 ? free_id : b.ball_id;
-    message_id[scene_id] = b.ball_id;
-    if (b.ball_id == object->ball_id) request.ball = scene_id;
-    balls.push_back(
-        {scene_id, physics::MakeBallState(b.position[0], b.position[1], 0, 0, 0, 0, 0)});
+    const int id = b.ball_id == cue_track ? 0 : scene_id(b.ball_id);
+    (*message_id)[id] = b.ball_id;
+    balls.push_back({id, physics::MakeBallState(b.position[0], b.position[1], 0, 0, 0, 0, 0)});
   }
   // By id, so that the plan does not depend on the publisher's order.
   std::sort(balls.begin(), balls.end(),
             [](const table::SceneBall& a, const table::SceneBall& b) { return a.id < b.id; });
-  pot::PotPlan plan;
+  return balls;
+}
+
+cue_command_t PlannerNode::AnswerChoice(const shot_request_t& q, const ball_state_t& cue,
+                                        cue_command_t c) const {
+  const std::unordered_map<int32_t, int> number = BallNumbers(*latest_table_, cue.ball_id);
+  std::unordered_map<int, int32_t> message_id;
+  std::string moving;
+  auto balls = SceneAtRest(
+      cue.ball_id, [&](int32_t id) { return number.at(id); }, &message_id, &moving);
+  if (!balls) return Refusal(c, cue_command_t::STATUS_INVALID, moving);
+  // An object ball seen further over a pocket's mouth or into a cushion than settling moves one
+  // is dropping (the estimator's last frames of it): no ball to play.
+  balls->erase(std::remove_if(balls->begin(), balls->end(),
+                              [&](const table::SceneBall& b) {
+                                return b.id != 0 &&
+                                       !table_.OnSurface(
+                                           b.state.head<2>(),
+                                           params_.ball.radius - options_.pot.settle_overlap);
+                              }),
+               balls->end());
+  choice::ChoiceOptions options = options_.choice;
+  options.rules =
+      q.rules == shot_request_t::RULES_NINE_BALL ? choice::Rules::kNineBall : choice::Rules::kAny;
+  options.seed = choice::SampleSeed(options_.choice.seed, static_cast<std::uint64_t>(q.request_id));
+  options.pot = options_.pot;
+  choice::ChoiceResult result;
   try {
-    plan = pot::PlanPot(table_, params_, balls, request, options_.pot);
+    // What the camera saw, touching balls settled apart as a pot's are.
+    *balls = table::SettledScene(table_, params_.ball.radius, std::move(*balls),
+                                 options_.pot.settle_overlap);
+    if (!choice_pool_) choice_pool_ = std::make_unique<batch::ThreadPool>(options_.choice_threads);
+    result = q.ball_in_hand
+                 ? choice::ChooseWithBallInHand(table_, params_, *balls, options, *choice_pool_)
+                 : choice::ChooseShot(table_, params_, *balls, options, *choice_pool_);
   } catch (const std::exception& e) {
-    return Refusal(c, cue_command_t::STATUS_NOT_CONVERGED,
-                   std::string("pot planner failed: ") + e.what());
+    return Refusal(c, cue_command_t::STATUS_INVALID, std::string("no choice: ") + e.what());
   }
-  WritePot(plan, message_id, &c);
+  switch (result.status) {
+    case choice::ChoiceStatus::kInvalid:
+      return Refusal(c, cue_command_t::STATUS_INVALID, result.reason);
+    case choice::ChoiceStatus::kNoTarget:
+      return Refusal(c, cue_command_t::STATUS_NO_SUCH_BALL, result.reason);
+    case choice::ChoiceStatus::kOk:
+    case choice::ChoiceStatus::kNoPlan:
+      break;
+  }
+  if (result.cue_placement) {
+    c.has_cue_placement = 1;
+    c.start[0] = c.cue_placement[0] = result.cue_placement->x();
+    c.start[1] = c.cue_placement[1] = result.cue_placement->y();
+  }
+  if (const choice::Candidate* chosen = result.chosen()) {
+    WritePot(chosen->plan, message_id, &c);
+    c.object_ball_id = message_id.at(chosen->plan.ball);
+    c.pocket = chosen->plan.pocket;
+    c.success_probability = chosen->reported().probability;
+    c.probability_stderr = chosen->reported().stderr_;
+  } else {  // kNoPlan: the fallback, which at least hits the first legal ball
+    const physics::CueStroke& s = *result.fallback;
+    c.cue_speed = s.speed;
+    c.heading = s.heading;
+    c.tip_side = s.tip_side;
+    c.tip_height = s.tip_height;
+    c.elevation = s.elevation;
+    c.status = cue_command_t::STATUS_OK;
+  }
+  c.solve_us = result.decision_us;
+  c.iterations = result.simulations;
   return Sendable(c);
 }
 
@@ -394,7 +528,7 @@ const ball_state_t* PlannerNode::ObjectBallFor(const shot_request_t& q) const {
 
 std::vector<const ball_state_t*> PlannerNode::Candidates(const shot_request_t& q) const {
   std::vector<const ball_state_t*> balls;
-  if (q.mode == shot_request_t::MODE_POT) {
+  if (q.mode == shot_request_t::MODE_POT || q.mode == shot_request_t::MODE_CHOOSE) {
     if (latest_table_) {
       for (const ball_state_t& b : latest_table_->balls) balls.push_back(&b);
     }
@@ -425,13 +559,26 @@ std::optional<PlannerNode::Unfit> PlannerNode::UnfitToPlanFrom(const shot_reques
 }
 
 const ball_state_t* PlannerNode::BallFor(const shot_request_t& q) const {
-  return Named(Candidates(q), q.ball_id, q.ball_class);
+  if (q.ball_id != shot_request_t::BALL_BY_CLASS) return Named(Candidates(q), q.ball_id, 0);
+  // By class among the balls the estimator sees now: one it has lost (pocketed, or of a rack
+  // cleared away) is no ball to strike, however sure it was of it.
+  std::vector<const ball_state_t*> seen;
+  if (latest_table_) {
+    for (const ball_state_t& b : latest_table_->balls) seen.push_back(&b);
+  }
+  // A choice is made on a whole rack, which has one cue ball: the likeliest, however unsure, or
+  // when the estimator names none now, the ball it named the cue ball last.
+  if (q.mode != shot_request_t::MODE_CHOOSE) return Named(seen, q.ball_id, q.ball_class);
+  if (const ball_state_t* likeliest = Named(seen, q.ball_id, q.ball_class, 0.0f)) return likeliest;
+  const auto last = last_of_class_.find(q.ball_class);
+  if (last == last_of_class_.end()) return nullptr;
+  return Named(seen, last->second, 0);
 }
 
 std::int64_t PlannerNode::StateUtime(const shot_request_t& q) const {
   const ball_state_t* ball = BallFor(q);
   if (ball == nullptr) return -1;
-  return q.mode == shot_request_t::MODE_POT ? latest_table_->utime : ball->utime;
+  return q.mode == shot_request_t::MODE_TO_POINT ? ball->utime : latest_table_->utime;
 }
 
 void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
@@ -458,10 +605,18 @@ void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string
              ": the balls known so far are forgotten");
         balls_.clear();
         latest_table_.reset();
+        last_of_class_.clear();
         answered_.clear();
         break;
     }
     for (const ball_state_t& ball : state.balls) balls_.insert_or_assign(ball.ball_id, ball);
+    std::vector<const ball_state_t*> seen;
+    for (const ball_state_t& b : state.balls) seen.push_back(&b);
+    for (const ball_state_t& b : state.balls) {
+      if (b.ball_class == ball_state_t::CLASS_UNKNOWN) continue;
+      last_of_class_[b.ball_class] =
+          Named(seen, shot_request_t::BALL_BY_CLASS, b.ball_class, 0.0f)->ball_id;
+    }
     if (options_.identify_every > 0) {
       std::vector<shot_fit::TrackSample> tracks;
       for (const ball_state_t& b : state.balls)

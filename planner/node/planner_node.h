@@ -1,6 +1,7 @@
 // The planner node: answers every SHOT_REQUEST with a CUE_COMMAND planned from the latest
-// TABLE_STATE: one ball to a point (MODE_TO_POINT, shot_planner.h) or a pot (MODE_POT,
-// planner/pot/pot_planner.h).
+// TABLE_STATE: one ball to a point (MODE_TO_POINT, shot_planner.h), a pot (MODE_POT,
+// planner/pot/pot_planner.h) or the pot it chooses to play (MODE_CHOOSE,
+// planner/choice/shot_choice.h).
 //
 //   TABLE_STATE   table_state_t    keeps the latest state received of each ball_id (a message
 //                                  naming some balls leaves the others as they were)
@@ -18,6 +19,16 @@
 // request's, so a logged run replays to the same commands (all but solve_us, the planning wall
 // time the message carries by design).
 //
+// A choice (MODE_CHOOSE) is made among the balls of the latest TABLE_STATE as a pot is, on the
+// node's table, under the request's rules, with ball in hand when the request says so (the cue
+// ball lifted and placed: the answer's cue_placement). The balls are named by the estimator's
+// classes (BallNumbers: the rules need the numbers) and the answer names them back by the table
+// state's ids. Its noise samples are seeded by PlannerNodeOptions::choice.seed and the
+// request_id, so that a logged run replays to the same choice. An object ball seen further
+// over a pocket's mouth (or into a cushion) than pot.settle_overlap is taken for dropping and
+// left out. When no pot plans, the answer is
+// ok with object_ball_id -1 and the choice's fallback stroke (the first legal ball hit full).
+//
 // Refusals (status != STATUS_OK, the reason in words, the stroke fields zero; the plan fields say
 // what the planner measured, zero when it did not run):
 //   STATUS_INVALID        a request that fails messages::Check (an unknown spin value, a
@@ -31,7 +42,8 @@
 //                         gets an answer all the same
 //   STATUS_OFF_TABLE      also a pot's cue-ball target off the table's playing surface
 //   STATUS_NO_SUCH_BALL   a pot's object ball is not in the latest table state (by id, or by
-//                         class at kMinClassConfidence), or is the struck ball
+//                         class at kMinClassConfidence), or is the struck ball; a choice's
+//                         table state has no object ball
 //   STATUS_INVALID        also a pot among balls that overlap or lie off the table, or with any
 //                         of them moving faster than max_ball_speed
 //   the others            PlanShot's status (shot_planner.h) or PlanPot's (no_such_pocket,
@@ -61,6 +73,7 @@
 #include <deque>
 #include <functional>
 #include <lcm/lcm-cpp.hpp>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,6 +86,7 @@
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/node/message_clock.h"
 #include "lcmtypes/node/node_health.h"
+#include "planner/choice/shot_choice.h"
 #include "planner/pot/pot_planner.h"
 #include "planner/shot_planner.h"
 #include "sim/batch/thread_pool.h"
@@ -104,6 +118,10 @@ struct PlannerNodeOptions {
   int identify_every = 0;
   std::vector<shot_fit::Constant> identify = {shot_fit::Constant::kMu,
                                               shot_fit::Constant::kRolling};
+  // MODE_CHOOSE: the choice's samples, noise (the robot's, the table simulator's own) and seed;
+  // its rules and pot options are the request's and `pot`.
+  choice::ChoiceOptions choice;
+  int choice_threads = batch::DefaultThreadCount();
 
   // Pots are planned on what the camera saw: touching balls measured a fraction of a millimetre
   // into each other (or into a cushion) are settled apart first (pot::PotOptions::settle_overlap),
@@ -124,6 +142,13 @@ inline constexpr std::size_t kMaxRememberedBalls = 256;
 inline constexpr std::size_t kIdentifyWindow = 40;
 // Answers remembered for requests sent again.
 inline constexpr std::size_t kRememberedAnswers = 64;
+// The pool numbers a choice knows the balls of `table` by, by their table state ids: the cue ball
+// `cue` 0; every other ball the number (1-15) its class names at kMinClassConfidence or more, the
+// surer (then the lower id) when two claim one; then, of the numbers left, those named by less
+// confident classes, as surely; the rest take the numbers no ball claims (a rack has one of
+// each), ascending, in the order of their ids, and 16 up when those run out.
+std::unordered_map<int32_t, int> BallNumbers(const table_state_t& table, int32_t cue);
+
 // A ball asked for by class (shot_request_t::BALL_BY_CLASS) must be of that class with at least
 // this confidence: an even guess between two classes is no ball to strike.
 inline constexpr float kMinClassConfidence = 0.5f;
@@ -178,6 +203,15 @@ class PlannerNode {
   // The pot of a checked MODE_POT request, struck at `cue` (whose state is fit to plan from),
   // into `c` (the reply with the cue ball's id and start).
   cue_command_t AnswerPot(const shot_request_t& q, const ball_state_t& cue, cue_command_t c) const;
+  // The choice of a checked MODE_CHOOSE request, the cue ball `cue`, into `c`.
+  cue_command_t AnswerChoice(const shot_request_t& q, const ball_state_t& cue,
+                             cue_command_t c) const;
+  // The balls of the latest table state at rest, the one of `cue_track` id 0 and the others by
+  // `scene_id` (their message ids kept in `message_id`); nullopt and `moving` set when a ball
+  // moves faster than max_ball_speed.
+  std::optional<std::vector<table::SceneBall>> SceneAtRest(
+      int32_t cue_track, const std::function<int(int32_t)>& scene_id,
+      std::unordered_map<int, int32_t>* message_id, std::string* moving) const;
   // The pot's object ball, by id or by class; nullptr when there is none.
   const ball_state_t* ObjectBallFor(const shot_request_t& q) const;
   // The balls a request's balls are looked for among: a pot's, the latest table state's; a
@@ -193,8 +227,10 @@ class PlannerNode {
   const PlannerNodeOptions options_;
   const table::TableGeometry table_;
   void Publish(const cue_command_t& command, nodes::NodeHealth::Clock::time_point arrived);
-  // The ball a request strikes: by its id, or by class the one the estimator is surest of (at
-  // least kMinClassConfidence); nullptr when the table state has none.
+  // The ball a request strikes: by its id, or by class the one of the latest table state the
+  // estimator is surest of (at least kMinClassConfidence; a choice's cue ball at any confidence,
+  // a rack having one, and when none has the class, the ball it was last given to if it is still
+  // seen); nullptr when there is none.
   const ball_state_t* BallFor(const shot_request_t& q) const;
   // The utime of that ball's latest state (a pot's: of the latest table state, which its answer
   // depends on), -1 if none.
@@ -204,6 +240,9 @@ class PlannerNode {
   nodes::NodeHealth health_;
   std::unordered_map<int32_t, ball_state_t> balls_;
   std::optional<table_state_t> latest_table_;
+  // The ball each class was last given to (the surest of it in the latest table state naming
+  // one): a choice's cue ball when the estimator names none for a while.
+  std::map<int8_t, int32_t> last_of_class_;
   nodes::MessageClock state_clock_;
   std::deque<Waiting> waiting_;
   std::deque<Answered> answered_;
@@ -211,6 +250,7 @@ class PlannerNode {
   shot_fit::ShotRecorder shots_{kLongestShot, kShotThinning};
   std::size_t identified_shots_ = 0;  // closed shots at the latest fit
   std::unique_ptr<batch::ThreadPool> fit_pool_;
+  mutable std::unique_ptr<batch::ThreadPool> choice_pool_;  // made at the first choice
   static constexpr double kLongestShot = 60.0;     // [s]
   static constexpr double kShotThinning = 0.002;   // [m], as the real recordings
   lcm::Subscription* table_state_subscription_ = nullptr;

@@ -74,6 +74,7 @@ struct TableRenderer::Region {
   cv::Rect box;
   int subframes = 1;
   std::vector<Eigen::Vector3f> albedo;  // per ball
+  std::vector<bool> striped;            // per ball
   std::vector<Sample> samples;          // subframe-major: samples[s * balls + k]
   int balls() const { return static_cast<int>(albedo.size()); }
 };
@@ -262,6 +263,7 @@ void TableRenderer::Render(const std::vector<RenderBall>& balls, double t, cv::M
     region.subframes = 1;
     for (const Placed* p : groups[g]) {
       region.albedo.push_back(ToVector(balls[p->ball].colour));
+      region.striped.push_back(balls[p->ball].striped);
       if (p->moves) region.subframes = n;
     }
     for (int s = 0; s < region.subframes; ++s) {
@@ -290,6 +292,7 @@ void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
   // Below this cosine the highlight is under half a gray level: no pow() for most of the ball.
   const double highlight_from =
       std::pow(0.5 / (255.0 * std::max(options_.specular, 1e-12)), 1.0 / options_.shininess);
+  const Eigen::Vector3f stripe_cap = ToVector(PoolBallColour(0));  // ivory, as the cue ball
   std::vector<Hit> hits;
   hits.reserve(k_balls);
   for (int v = region.box.y; v < region.box.y + region.box.height; ++v) {
@@ -345,8 +348,10 @@ void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
                                       ? static_cast<float>(255.0 * options_.specular *
                                                            std::pow(half, options_.shininess))
                                       : 0.0f;
-          const Eigen::Vector3f ball =
-              (region.albedo[hit.ball] * lambert + Eigen::Vector3f::Constant(highlight)) * vignette;
+          const bool cap = region.striped[hit.ball] && std::abs(normal.y()) > kStripeHalfWidth;
+          const Eigen::Vector3f ball = ((cap ? stripe_cap : region.albedo[hit.ball]) * lambert +
+                                        Eigen::Vector3f::Constant(highlight)) *
+                                       vignette;
           colour = hit.coverage * ball + (1 - hit.coverage) * colour;
         }
         sum += colour;

@@ -81,6 +81,10 @@ struct RenderBall {
   int id = 0;
   cv::Vec3b colour;
   std::function<Eigen::Vector2d(double t)> position;
+  // A stripe (pool's 9-15): `colour` on a band around the ball, ivory caps either side of it
+  // (where the surface's normal is more than kStripeHalfWidth along the table's y axis). The
+  // renderer has no ball orientation: the band lies along x whatever the ball does.
+  bool striped = false;
 
   static RenderBall AtRest(int id, const cv::Vec3b& colour, const Eigen::Vector2d& xy);
   // Follows a simulated trajectory (held alive by the ball).
@@ -88,9 +92,16 @@ struct RenderBall {
                               std::shared_ptr<const physics::Trajectory> trajectory);
 };
 
-// The colours of the pool set (0: the cue ball, 1-8 the solids, 9-15 the stripes' colour;
-// stripes are drawn as solids).
+// The colours of the pool set (0: the cue ball, 1-8 the solids, 9-15 the stripes' colour,
+// drawn with RenderBall::striped).
 cv::Vec3b PoolBallColour(int id);
+// Whether pool ball `id` is a stripe (9-15).
+inline bool PoolBallStriped(int id) { return id >= 9 && id <= 15; }
+// The stripe's band: |normal . y| below this is the colour, a band of 41 degrees of latitude
+// (a regulation stripe's is wider, some 60): seen from above, its caps are then 45 % of the
+// middle three quarters of the disc, which the estimator reads a ball's colours from
+// (estimator/ball_identity.cc), where 60 degrees would leave 22 %, too little to tell a stripe.
+inline constexpr double kStripeHalfWidth = 0.3;
 
 class TableRenderer {
  public:

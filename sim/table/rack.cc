@@ -180,4 +180,55 @@ RackKind ParseRackKind(const std::string& name) {
                               "' (eight-ball, nine-ball, snooker or three-cushion)");
 }
 
+bool FreePlace(const TableGeometry& table, double radius, const std::vector<SceneBall>& balls,
+               const Eigen::Vector2d& p, double clearance) {
+  if (!table.OnSurface(p, radius)) return false;
+  return std::all_of(balls.begin(), balls.end(), [&](const SceneBall& b) {
+    return (b.state.segment<2>(physics::kX) - p).norm() >= 2 * radius + clearance;
+  });
+}
+
+Eigen::Vector2d FreeSpotFrom(const TableGeometry& table, double radius,
+                             const std::vector<SceneBall>& balls, Eigen::Vector2d spot,
+                             const Eigen::Vector2d& step, double clearance) {
+  while (!FreePlace(table, radius, balls, spot, clearance) && table.OnSurface(spot + step, 0.0)) {
+    spot += step;
+  }
+  return spot;
+}
+
+std::vector<SceneBall> WithBallAt(std::vector<SceneBall> balls, int id,
+                                  const Eigen::Vector2d& place) {
+  balls.erase(
+      std::remove_if(balls.begin(), balls.end(), [id](const SceneBall& b) { return b.id == id; }),
+      balls.end());
+  SceneBall placed;
+  placed.id = id;
+  placed.state.segment<2>(physics::kX) = place;
+  balls.insert(balls.begin(), placed);
+  return balls;
+}
+
+std::vector<SceneBall> SeededNineBallLayout(const TableGeometry& table, double radius,
+                                            std::uint64_t seed) {
+  // Clear of the others by this beyond touching [m].
+  constexpr double kClearance = 2e-3;
+  SeededUniform uniform(seed);
+  std::vector<SceneBall> balls;
+  for (int id = 1; id <= 9; ++id) {
+    for (;;) {
+      const Eigen::Vector2d p(uniform.Between(0, table.length), uniform.Between(0, table.width));
+      // A ball's width clear of the cushions: inside the surface shrunk by a diameter.
+      if (!table.OnSurface(p, 3 * radius)) continue;
+      if (!FreePlace(table, 2 * radius, balls, p, kClearance)) continue;
+      SceneBall b;
+      b.id = id;
+      b.state.segment<2>(physics::kX) = p;
+      balls.push_back(b);
+      break;
+    }
+  }
+  return balls;
+}
+
 }  // namespace billiard::table

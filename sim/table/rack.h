@@ -71,4 +71,25 @@ std::vector<SceneBall> Rack(RackKind kind, const TableGeometry& table, double ba
 // otherwise.
 RackKind ParseRackKind(const std::string& name);
 
+// Whether a ball centred at `p` lies on `table`'s surface (TableGeometry::OnSurface with
+// `radius`) and at least 2 radius + clearance from every ball of `balls`.
+bool FreePlace(const TableGeometry& table, double radius, const std::vector<SceneBall>& balls,
+               const Eigen::Vector2d& p, double clearance);
+
+// `spot` when a ball of `radius` is free there (FreePlace), else the first free place from it in
+// steps of `step` while on the table (the last tried when none is).
+Eigen::Vector2d FreeSpotFrom(const TableGeometry& table, double radius,
+                             const std::vector<SceneBall>& balls, Eigen::Vector2d spot,
+                             const Eigen::Vector2d& step, double clearance);
+
+// `balls` with ball `id` lifted, if there, and placed at rest at `place`, first.
+std::vector<SceneBall> WithBallAt(std::vector<SceneBall> balls, int id,
+                                  const Eigen::Vector2d& place);
+
+// A nine-ball layout for a drill from ball in hand: balls 1-9 placed uniformly on the playing
+// surface from `seed` (SeededUniform), each a ball's width clear of the others and of the
+// cushions; no cue ball.
+std::vector<SceneBall> SeededNineBallLayout(const TableGeometry& table, double radius,
+                                            std::uint64_t seed);
+
 }  // namespace billiard::table

@@ -93,6 +93,15 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
   app.add_option("--break-speed", options.break_speed,
                  "--scene: the cue ball's speed where it meets the first ball [m/s]")
       ->capture_default_str();
+  app.add_option("--game", options.game,
+                 "A game instead: nine-ball (the rack of --seed broken, then played) or drill "
+                 "(a seeded nine-ball layout from ball in hand), under nine-ball rules, the "
+                 "planner choosing every shot")
+      ->check(CLI::IsMember({"nine-ball", "drill"}));
+  app.add_option("--racks", options.racks, "--game: racks played, seeds --seed, --seed + 1, ...")
+      ->capture_default_str();
+  app.add_option("--shot-limit", options.shot_limit, "--game: the most shots of a rack")
+      ->capture_default_str();
   app.add_option("--reply-timeout", options.reply_timeout,
                  "Longest wait for the estimator or the planner [s]")
       ->capture_default_str();
@@ -101,9 +110,13 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
 TableSimOptions SessionOptions(const SessionCommandLine& line) {
   TableSimOptions options = line.options;
   if (options.shots < 1 || !(options.camera_rate > 0.0) || !(options.reply_timeout > 0.0) ||
-      !(options.break_speed > 0.0)) {
+      !(options.break_speed > 0.0) || options.racks < 1 || options.shot_limit < 1) {
     throw std::invalid_argument(
-        "--shots, --camera-rate, --reply-timeout and --break-speed must be positive");
+        "--shots, --camera-rate, --reply-timeout, --break-speed, --racks and --shot-limit must "
+        "be positive");
+  }
+  if (!options.game.empty() && !options.scene.empty()) {
+    throw std::invalid_argument("--game and --scene are two sessions: one at a time");
   }
   const FaultInjection& f = options.faults;
   if (f.drop_frames + f.reorder_frames + f.duplicate > 1.0) {
@@ -149,8 +162,11 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
   node.RunAlongside(alongside);
   std::vector<ShotResult> shots;
   std::optional<SceneResult> scene;
+  std::optional<std::vector<GameResult>> games;
   try {
-    if (options.scene.empty()) {
+    if (!options.game.empty()) {
+      games = node.RunGame();
+    } else if (options.scene.empty()) {
       shots = node.Run();
     } else {
       scene = node.RunScene();
@@ -169,6 +185,7 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json summary = SessionSummary(shots, node.health().TakeStatus(), wall_s);
   if (scene) summary["scene"] = SceneSummary(*scene, options.scene);
+  if (games) summary["game"] = GameSummary(*games, options.game);
   if (options.plant) summary["plant"] = params::ParameterSetLabel(*options.plant);
   std::cout << summary.dump() << std::endl;
   return 0;
@@ -206,6 +223,96 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
   j["received"] = health.received;
   j["dropped"] = health.dropped;
   j["wall_s"] = wall_s;
+  return j;
+}
+
+nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind) {
+  nlohmann::json j = {{"kind", kind}};
+  int cleared = 0, run_outs = 0, shots = 0, attempts = 0, pots = 0, fouls = 0, visits = 0,
+      balls = 0, misidentified = 0, untracked = 0, decided = 0;
+  std::vector<double> decisions, rms;
+  double worst = 0.0;
+  for (const GameResult& game : games) {
+    nlohmann::json rack = {{"seed", game.seed},
+                           {"cleared", game.cleared},
+                           {"visits", game.visits},
+                           {"run_out", game.cleared && game.visits == 1}};
+    int rack_attempts = 0, rack_pots = 0, rack_fouls = 0, rack_balls = 0;
+    for (const GameShot& s : game.shots) {
+      nlohmann::json shot = {{"number", s.number},
+                             {"visit", s.visit},
+                             {"break", s.break_shot},
+                             {"ball_in_hand", s.ball_in_hand},
+                             {"status", s.status},
+                             {"potted", s.potted},
+                             {"called_potted", s.called_potted},
+                             {"foul", s.foul},
+                             {"decision_ms", s.decision_ms},
+                             {"estimator",
+                              {{"position_rms_mm", s.position_rms_mm},
+                               {"position_max_mm", s.position_max_mm},
+                               {"untracked", s.untracked},
+                               {"misidentified", s.misidentified}}}};
+      shot["first_contact"] =
+          s.first_contact < 0 ? nlohmann::json() : nlohmann::json(s.first_contact);
+      if (!s.reason.empty()) shot["reason"] = s.reason;
+      if (s.foul) shot["foul_reason"] = s.foul_reason;
+      if (s.cue_placement) shot["cue_placement"] = {s.cue_placement->x(), s.cue_placement->y()};
+      if (s.called >= 0) {
+        shot["called"] = {
+            {"ball", s.called}, {"pocket", s.pocket}, {"kind", s.kind}, {"predicted", s.predicted}};
+        ++rack_attempts;
+        rack_pots += s.called_potted;
+      }
+      rack_fouls += s.foul;
+      if (!s.foul) rack_balls += static_cast<int>(s.potted.size());
+      if (!s.break_shot && s.status == "ok") {
+        ++decided;
+        decisions.push_back(s.decision_ms);
+        rms.push_back(s.position_rms_mm);
+        worst = std::max(worst, s.position_max_mm);
+        misidentified += s.misidentified;
+        untracked += s.untracked;
+      }
+      rack["shots"].push_back(shot);
+    }
+    rack["attempts"] = rack_attempts;
+    rack["pots"] = rack_pots;
+    rack["fouls"] = rack_fouls;
+    rack["balls_potted"] = rack_balls;
+    j["racks"].push_back(rack);
+    cleared += game.cleared;
+    run_outs += game.cleared && game.visits == 1;
+    shots += static_cast<int>(game.shots.size());
+    attempts += rack_attempts;
+    pots += rack_pots;
+    fouls += rack_fouls;
+    visits += game.visits;
+    balls += rack_balls;
+  }
+  const auto median = [](std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
+  j["summary"] = {{"racks", games.size()},
+                  {"cleared", cleared},
+                  {"run_outs", run_outs},
+                  {"shots", shots},
+                  {"attempts", attempts},
+                  {"pots", pots},
+                  {"pots_per_attempt", attempts ? static_cast<double>(pots) / attempts : 0.0},
+                  {"fouls", fouls},
+                  {"visits", visits},
+                  {"balls_per_visit", visits ? static_cast<double>(balls) / visits : 0.0},
+                  {"median_decision_ms", median(decisions)},
+                  {"max_decision_ms",
+                   decisions.empty() ? 0.0 : *std::max_element(decisions.begin(), decisions.end())},
+                  {"decisions", decided},
+                  {"median_position_rms_mm", median(rms)},
+                  {"max_position_error_mm", worst},
+                  {"misidentified_ball_decisions", misidentified},
+                  {"untracked_ball_decisions", untracked}};
   return j;
 }
 

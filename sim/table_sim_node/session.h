@@ -64,6 +64,13 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
 nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_status_t& health,
                               double wall_s);
 
+// What a game adds (the summary's "game"): each rack's shots (the call, what dropped, the foul,
+// the decision time and the estimator's error on the table it was made from) and totals, and
+// "summary": racks cleared, run-outs (cleared in one visit), pots per attempt, fouls, balls per
+// visit, the median and largest decision time, the estimator's median RMS and largest position
+// error at the decisions and the balls it misidentified there.
+nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind);
+
 // What a whole-table session adds (the summary's "scene"): the events, where every ball ended
 // (and the pocket it dropped into), how the estimator tracked each ball (RMS and largest error,
 // frames without a track, swaps of tracks between balls), and with pots, "pots": each one's ball

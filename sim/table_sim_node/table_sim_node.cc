@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -75,6 +76,56 @@ std::pair<table::TableGeometry, std::vector<table::SceneBall>> LoadSessionScene(
     }
   }
   return {std::move(geometry), scene.balls};
+}
+
+std::vector<table::SceneBall>::const_iterator Find(const std::vector<table::SceneBall>& balls,
+                                                   int id) {
+  return std::find_if(balls.begin(), balls.end(),
+                      [id](const table::SceneBall& b) { return b.id == id; });
+}
+
+// The object ball nearest the cue ball (id 0, which must be there); throws std::invalid_argument
+// naming `scene` when there is none.
+const table::SceneBall& NearestObjectBall(const std::vector<table::SceneBall>& balls,
+                                          const std::string& scene) {
+  const Eigen::Vector2d cue_at = Find(balls, kCueBall)->state.head<2>();
+  const table::SceneBall* object = nullptr;
+  for (const table::SceneBall& b : balls) {
+    if (b.id == kCueBall) continue;
+    if (object == nullptr ||
+        (b.state.head<2>() - cue_at).norm() < (object->state.head<2>() - cue_at).norm()) {
+      object = &b;
+    }
+  }
+  if (object == nullptr) throw std::invalid_argument(scene + ": no ball to strike at");
+  return *object;
+}
+
+// Ball in hand: a placement on another ball moves toward the head rail in steps of this [m];
+// a respotted ball is this far clear of the others [m].
+constexpr double kPlacementStep = 1e-3;
+constexpr double kPlacementClearance = 2e-3;
+// A new rack's layout is shown this many settle times before its first shot: longer than the
+// estimator coasts the last rack's tracks (estimator::TrackerOptions::max_coast).
+constexpr int kNewLayoutSettles = 4;
+
+// The name of the pocket nearest `at`.
+std::string NearestPocket(const table::TableGeometry& table, const Eigen::Vector2d& at) {
+  const auto nearest = std::min_element(table.pockets.begin(), table.pockets.end(),
+                                        [&](const auto& a, const auto& b) {
+                                          return (a.centre - at).norm() < (b.centre - at).norm();
+                                        });
+  return nearest->name;
+}
+
+// `balls` with the cue ball (id 0) back on the table: on the head spot (the middle of the head
+// half, x = 1/4 length), or the nearest free place behind it toward the head rail.
+std::vector<table::SceneBall> InTheKitchen(const table::TableGeometry& table, double radius,
+                                           std::vector<table::SceneBall> balls) {
+  const Eigen::Vector2d spot =
+      table::FreeSpotFrom(table, radius, balls, {0.25 * table.length, 0.5 * table.width},
+                          {-kPlacementStep, 0.0}, kPlacementClearance);
+  return table::WithBallAt(std::move(balls), kCueBall, spot);
 }
 
 }  // namespace
@@ -219,7 +270,8 @@ void TableSimNode::Frame(const std::vector<TruthBall>& balls, double t) {
     truth.balls.push_back(b);
     const auto& state = ball.state;
     shown.push_back({ball.id, render::PoolBallColour(ball.id),
-                     [state](double time) { return Eigen::Vector2d(state(time).head<2>()); }});
+                     [state](double time) { return Eigen::Vector2d(state(time).head<2>()); },
+                     render::PoolBallStriped(ball.id)});
   }
   truth.num_balls = static_cast<std::int32_t>(truth.balls.size());
   Publish(messages::kTableTruthChannel, truth);
@@ -464,6 +516,24 @@ table::TableSimulation TableSimNode::PlayOut(const table::TableGeometry& geometr
   return sim;
 }
 
+cue_command_t TableSimNode::RequestBreak(int id, const std::vector<table::SceneBall>& balls,
+                                         ShotResult& result) {
+  const Eigen::Vector2d cue_at = Find(balls, kCueBall)->state.head<2>();
+  const table::SceneBall& object = NearestObjectBall(balls, options_.scene);
+  // The target: the cue ball's centre at contact.
+  const Eigen::Vector2d to_object = object.state.head<2>() - cue_at;
+  result.target = object.state.head<2>() - 2.0 * params_.ball.radius * to_object.normalized();
+  shot_request_t ask{};
+  // The robot strikes the cue ball, which the estimator tells from the others by its colours.
+  ask.ball_id = shot_request_t::BALL_BY_CLASS;
+  ask.ball_class = ball_state_t::CLASS_CUE;
+  ask.target[0] = result.target.x();
+  ask.target[1] = result.target.y();
+  ask.final_speed = options_.break_speed;
+  ask.spin = shot_request_t::SPIN_NATURAL;
+  return Request(id, balls, cue_at, ask, result);
+}
+
 PotResult TableSimNode::PlayPot(int id, const PotShot& pot, const table::TableGeometry& geometry,
                                 std::vector<table::SceneBall>& balls, SceneResult& scene) {
   PotResult result;
@@ -545,17 +615,7 @@ SceneResult TableSimNode::RunScene() {
   const auto cue = std::find_if(balls.begin(), balls.end(),
                                 [](const table::SceneBall& b) { return b.id == kCueBall; });
   if (cue == balls.end()) throw std::invalid_argument(options_.scene + ": no cue ball (id 0)");
-  const Eigen::Vector2d cue_at = cue->state.head<2>();
-  // The ball to hit: the nearest to the cue ball; the target, the cue ball's centre at contact.
-  const table::SceneBall* object = nullptr;
-  for (const table::SceneBall& b : balls) {
-    if (b.id == kCueBall) continue;
-    if (object == nullptr ||
-        (b.state.head<2>() - cue_at).norm() < (object->state.head<2>() - cue_at).norm()) {
-      object = &b;
-    }
-  }
-  if (object == nullptr) throw std::invalid_argument(options_.scene + ": no ball to strike at");
+  NearestObjectBall(balls, options_.scene);
 
   health_.Set(messages::kRealtimeClockSetting, options_.lockstep ? 0 : 1);
   health_.Publish(lcm_);
@@ -580,17 +640,7 @@ SceneResult TableSimNode::RunScene() {
     return result;
   }
 
-  const Eigen::Vector2d to_object = object->state.head<2>() - cue_at;
-  result.shot.target = object->state.head<2>() - 2.0 * params_.ball.radius * to_object.normalized();
-  shot_request_t ask{};
-  // The robot strikes the cue ball, which the estimator tells from the others by its colours.
-  ask.ball_id = shot_request_t::BALL_BY_CLASS;
-  ask.ball_class = ball_state_t::CLASS_CUE;
-  ask.target[0] = result.shot.target.x();
-  ask.target[1] = result.shot.target.y();
-  ask.final_speed = options_.break_speed;
-  ask.spin = shot_request_t::SPIN_NATURAL;
-  const cue_command_t command = Request(0, balls, cue_at, ask, result.shot);
+  const cue_command_t command = RequestBreak(0, balls, result.shot);
   result.shot.status = messages::CueCommandStatusName(command.status);
   result.shot.reason = command.reason;
   result.shot.plan_ms = 1e-3 * command.solve_us;
@@ -624,6 +674,203 @@ SceneResult TableSimNode::RunScene() {
   log_(line.str());
   health_.PublishIfDue(lcm_);
   return result;
+}
+
+void TableSimNode::ScoreEstimate(const std::vector<table::SceneBall>& balls, GameShot& shot) const {
+  double sum = 0.0;
+  for (const table::SceneBall& b : balls) {
+    const ball_state_t* nearest = nullptr;
+    double d = 1e300;
+    for (const ball_state_t& track : state_->balls) {
+      const double e = std::hypot(track.position[0] - b.state[physics::kX],
+                                  track.position[1] - b.state[physics::kY]);
+      if (e < d) {
+        d = e;
+        nearest = &track;
+      }
+    }
+    if (nearest == nullptr || d > params_.ball.radius) {
+      ++shot.untracked;
+      continue;
+    }
+    sum += d * d;
+    shot.position_max_mm = std::max(shot.position_max_mm, 1e3 * d);
+    const int8_t truth = b.id == kCueBall ? ball_state_t::CLASS_CUE : static_cast<int8_t>(b.id);
+    shot.misidentified += nearest->ball_class != truth;
+  }
+  const int tracked = static_cast<int>(balls.size()) - shot.untracked;
+  if (tracked > 0) shot.position_rms_mm = 1e3 * std::sqrt(sum / tracked);
+}
+
+GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeometry& geometry,
+                                    std::vector<table::SceneBall>& balls, bool* nine_legal) {
+  const double radius = params_.ball.radius;
+  const Eigen::Vector2d cue_at = Find(balls, kCueBall)->state.head<2>();
+  ShotResult asked;
+  cue_command_t command;
+  if (shot.break_shot) {
+    command = RequestBreak(id, balls, asked);
+  } else {
+    shot_request_t ask{};
+    ask.ball_id = shot_request_t::BALL_BY_CLASS;
+    ask.ball_class = ball_state_t::CLASS_CUE;
+    ask.mode = shot_request_t::MODE_CHOOSE;
+    ask.rules = shot_request_t::RULES_NINE_BALL;
+    ask.ball_in_hand = shot.ball_in_hand ? 1 : 0;
+    command = Request(id, balls, cue_at, ask, asked);
+  }
+  ScoreEstimate(balls, shot);
+  shot.status = messages::CueCommandStatusName(command.status);
+  shot.reason = command.reason;
+  shot.decision_ms = 1e-3 * command.solve_us;
+  if (command.status != cue_command_t::STATUS_OK) {
+    log_("shot " + std::to_string(shot.number) + " refused: " + shot.status + ", " + shot.reason);
+    return shot;
+  }
+  // The called ball: the truth ball nearest the track the planner named.
+  if (!shot.break_shot && command.object_ball_id >= 0) {
+    for (const ball_state_t& track : state_->balls) {
+      if (track.ball_id != command.object_ball_id) continue;
+      double nearest = 1e300;
+      for (const table::SceneBall& b : balls) {
+        const double d = std::hypot(track.position[0] - b.state[physics::kX],
+                                    track.position[1] - b.state[physics::kY]);
+        if (b.id != kCueBall && d < nearest) {
+          nearest = d;
+          shot.called = b.id;
+        }
+      }
+    }
+    shot.pocket = command.pocket;
+    shot.kind = messages::PotKindName(command.kind);
+    shot.predicted = command.success_probability;
+  }
+  const int lowest = std::accumulate(balls.begin(), balls.end(), 99, [](int low, const auto& b) {
+    return b.id == kCueBall ? low : std::min(low, b.id);
+  });
+  // Ball in hand: the robot places the cue ball where the planner says; on another ball (the
+  // estimator's error), the nearest free place toward the head rail.
+  if (command.has_cue_placement) {
+    std::vector<table::SceneBall> others;
+    for (const table::SceneBall& b : balls) {
+      if (b.id != kCueBall) others.push_back(b);
+    }
+    const Eigen::Vector2d placed = table::FreeSpotFrom(
+        geometry, radius, others, {command.cue_placement[0], command.cue_placement[1]},
+        {-kPlacementStep, 0.0}, 0.0);
+    shot.cue_placement = placed;
+    balls = table::WithBallAt(others, kCueBall, placed);
+  }
+  table::TableSimulationOptions motion;
+  motion.five_dof = model_choice::TableMotion(plant_);
+  const table::TableSimulation sim = PlayOut(geometry, balls, command, motion);
+  for (const table::TableEvent& e : sim.events()) {
+    if (e.type == table::EventType::kBallBall && (e.ball == kCueBall || e.other == kCueBall)) {
+      shot.first_contact = e.ball == kCueBall ? e.other : e.ball;
+      break;
+    }
+  }
+  bool scratch = false;
+  std::vector<table::SceneBall> rest;
+  for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+    std::optional<std::string> pocket = sim.pocket(i);
+    // A ball come to rest over a pocket's mouth hangs there in the model, where a real one
+    // would drop (table::TableGeometry::OnSurface): it drops in that pocket.
+    const Eigen::Vector2d at = sim.State(i).head<2>();
+    if (!pocket && !geometry.OnSurface(at, radius)) pocket = NearestPocket(geometry, at);
+    if (!pocket) {
+      rest.push_back({sim.id(i), sim.State(i)});
+    } else if (sim.id(i) == kCueBall) {
+      scratch = true;
+    } else {
+      shot.potted.push_back(sim.id(i));
+      if (sim.id(i) == shot.called && *pocket == shot.pocket) shot.called_potted = true;
+    }
+  }
+  std::sort(shot.potted.begin(), shot.potted.end());
+  // Nine-ball's fouls (WPA Rules of Play), as choice::PlayGame judges them.
+  if (scratch) {
+    shot.foul_reason = "scratch";
+  } else if (shot.first_contact < 0) {
+    shot.foul_reason = "no contact";
+  } else if (!shot.break_shot && shot.first_contact != lowest) {
+    shot.foul_reason = "first contact " + std::to_string(shot.first_contact) + ", not the lowest " +
+                       std::to_string(lowest);
+  }
+  shot.foul = !shot.foul_reason.empty();
+  shot.called_potted = shot.called_potted && !shot.foul;
+  const bool nine = std::find(shot.potted.begin(), shot.potted.end(), 9) != shot.potted.end();
+  *nine_legal = nine && !shot.foul;
+  if (nine && shot.foul) {
+    table::SceneBall spotted{9, physics::BallState::Zero()};
+    spotted.state.head<2>() =
+        table::FreeSpotFrom(geometry, radius, rest, {0.75 * geometry.length, 0.5 * geometry.width},
+                            {kPlacementStep, 0.0}, kPlacementClearance);
+    rest.push_back(spotted);
+  }
+  if (scratch) rest = InTheKitchen(geometry, radius, std::move(rest));
+  balls = std::move(rest);
+  std::ostringstream line;
+  line.precision(3);
+  line << "shot " << shot.number << (shot.break_shot ? " (break)" : "") << ": ";
+  if (shot.called >= 0) {
+    line << "ball " << shot.called << " in " << shot.pocket << " at p " << shot.predicted << ", ";
+  }
+  line << (shot.potted.empty() ? "nothing" : std::to_string(shot.potted.size()) + " ball(s)")
+       << " potted" << (shot.called_potted ? " (the called one)" : "")
+       << (shot.foul ? ", foul: " + shot.foul_reason : "") << "; estimator rms "
+       << shot.position_rms_mm << " mm";
+  log_(line.str());
+  return shot;
+}
+
+std::vector<GameResult> TableSimNode::RunGame() {
+  AwaitPeersOfTheSameBuildAndPhysics();
+  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(kBreakTable));
+  const double radius = params_.ball.radius;
+  health_.Set(messages::kRealtimeClockSetting, options_.lockstep ? 0 : 1);
+  health_.Publish(lcm_);
+  std::vector<GameResult> games;
+  int id = 0;  // request ids, unique over the session
+  for (int rack = 0; rack < options_.racks; ++rack) {
+    GameResult game;
+    game.seed = options_.seed + static_cast<std::uint32_t>(rack);
+    const bool drill = options_.game == "drill";
+    std::vector<table::SceneBall> balls =
+        drill ? InTheKitchen(geometry, radius,
+                             table::SeededNineBallLayout(geometry, radius, game.seed))
+              : table::Rack(table::RackKind::kNineBall, geometry, radius, game.seed);
+    log_("rack " + std::to_string(rack) + " (" + options_.game + ", seed " +
+         std::to_string(game.seed) + ")");
+    // The new layout shown until the estimator has forgotten the last one's balls.
+    for (int k = 0; k < kNewLayoutSettles; ++k) ShowAtRest(balls);
+    bool ball_in_hand = drill, new_visit = true, nine_legal = false;
+    int visit = 1;
+    for (int n = 0; n < options_.shot_limit; ++n) {
+      if (new_visit) game.visits = visit;
+      GameShot shot;
+      shot.number = n + 1;
+      shot.visit = visit;
+      shot.break_shot = !drill && n == 0;
+      shot.ball_in_hand = ball_in_hand;
+      shot = PlayGameShot(id++, shot, geometry, balls, &nine_legal);
+      game.shots.push_back(shot);
+      const bool object_balls_left = std::any_of(
+          balls.begin(), balls.end(), [](const table::SceneBall& b) { return b.id != kCueBall; });
+      if (nine_legal || !object_balls_left) {
+        game.cleared = true;
+        break;
+      }
+      ball_in_hand = shot.foul;
+      new_visit = shot.foul || shot.potted.empty();
+      if (new_visit) ++visit;
+    }
+    log_("rack " + std::to_string(rack) + (game.cleared ? " cleared" : " not cleared") + " in " +
+         std::to_string(game.shots.size()) + " shots, " + std::to_string(game.visits) + " visits");
+    games.push_back(std::move(game));
+  }
+  health_.PublishIfDue(lcm_);
+  return games;
 }
 
 }  // namespace billiard::table_sim_node

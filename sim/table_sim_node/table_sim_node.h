@@ -95,6 +95,13 @@ struct TableSimOptions {
   // when the scene has no ball K), executed with the noise and played out from where the last
   // left the balls.
   std::vector<PotShot> pots;
+  // A game instead (RunGame): "nine-ball" (the nine-ball rack of seed + k broken by the cue
+  // ball rolling into its apex at break_speed) or "drill" (table::SeededNineBallLayout of
+  // seed + k, the cue ball in hand), for racks k = 0 .. racks - 1, each played under nine-ball
+  // rules shot by shot (shot_request_t::MODE_CHOOSE) until it is cleared or shot_limit shots.
+  std::string game;
+  int racks = 1;
+  int shot_limit = 40;
   // The table's own physics when it differs from the nodes' (--plant-params): the session checks
   // the nodes against the parameter set it is given and plays the balls with this one (of the
   // same table and balls), so that a controller can be seen learning a table it does not know.
@@ -154,6 +161,41 @@ struct SceneResult {
   TrackingReport tracking;
 };
 
+// One shot of a game: what the planner chose (by the truth's ids), what the table did with it,
+// the rules' verdict, and how the estimator saw the table the choice was made on.
+struct GameShot {
+  int number = 0;  // from 1 in its rack
+  int visit = 1;
+  bool break_shot = false;
+  bool ball_in_hand = false;
+  std::optional<Eigen::Vector2d> cue_placement;  // where the cue ball was placed
+  std::string status;  // the planner's ("ok", or why not)
+  std::string reason;
+  int called = -1;  // the called ball (the truth ball nearest the track the planner named)
+  std::string pocket;
+  std::string kind;
+  double predicted = -1.0;  // the planner's probability of a legal pot, -1 without one
+  int first_contact = -1;
+  std::vector<int> potted;  // object balls dropped, ascending
+  bool called_potted = false;
+  bool foul = false;
+  std::string foul_reason;
+  double decision_ms = 0.0;  // the planner's
+  // The estimator's latest state when the planner was asked: its error on the balls on the
+  // table (each against its nearest track), the balls without a track within a radius, and the
+  // balls whose track's class is not the ball's number (CLASS_CUE the cue ball's).
+  double position_rms_mm = 0.0, position_max_mm = 0.0;
+  int untracked = 0;
+  int misidentified = 0;
+};
+
+struct GameResult {
+  std::uint32_t seed = 0;  // of the rack or layout
+  std::vector<GameShot> shots;
+  bool cleared = false;  // the 9 potted legally, or no object ball left
+  int visits = 0;
+};
+
 // The estimator or the planner runs with other physics than the simulator, or is another version
 // of the project: a session would plan and track one ball and simulate another.
 struct PeerMismatch : std::runtime_error {
@@ -183,6 +225,9 @@ class TableSimNode {
   // std::invalid_argument for a scene that does not load, is not at rest or lies on another
   // table than the parameter set's).
   SceneResult RunScene();
+
+  // Plays options.game, rack by rack (same preconditions and throws as Run).
+  std::vector<GameResult> RunGame();
 
   // Other nodes' work, called between messages while the session waits: the estimator and the
   // planner when they run in this process (node_loop.h's `work`).
@@ -230,6 +275,17 @@ class TableSimNode {
   // those left on the table, at rest.
   PotResult PlayPot(int id, const PotShot& pot, const table::TableGeometry& geometry,
                     std::vector<table::SceneBall>& balls, SceneResult& scene);
+  // The break of a session: the cue ball rolled into the ball nearest it at break_speed, asked
+  // of the planner as request `id` (a point request: the cue ball's centre at contact).
+  cue_command_t RequestBreak(int id, const std::vector<table::SceneBall>& balls,
+                             ShotResult& result);
+  // Plays shot `shot` of a game on `balls` (at rest; the cue ball on the table) and judges it
+  // under nine-ball rules; `balls` become those left, the cue ball back in the kitchen after a
+  // scratch and the 9 on its spot after a foul that dropped it.
+  GameShot PlayGameShot(int id, GameShot shot, const table::TableGeometry& geometry,
+                        std::vector<table::SceneBall>& balls, bool* nine_legal);
+  // The estimator's latest state against the truth `balls`, into `shot`.
+  void ScoreEstimate(const std::vector<table::SceneBall>& balls, GameShot& shot) const;
   // Scores the estimator's state of a frame against the truth of its balls at t.
   void Track(const std::vector<TruthBall>& balls, double t, const table_state_t& estimate);
   // Handles messages until `done` holds, calling `resend` every retry interval; throws after the
