@@ -26,12 +26,14 @@ constexpr double kWhiteLightness = 65.0, kBlackLightness = 30.0;
 constexpr double kBrightBalls = 0.8;
 constexpr double kMaxCueChroma = 40.0;
 constexpr double kCueLightness = 90.0;
+// A pixel is plain (Plain) when its chroma is below kPlainSaturation of its L*.
+constexpr double kPlainSaturation = 0.3;
 // Shares of a ball's disc: the cue ball is at least kCueWhite white with at most kCueColour
-// coloured; a black ball at least kBlackShare black; a pool ball at least kStripeWhite white a
-// stripe, its certainty growing over kStripeMargin either side.
+// coloured; a black ball at least kBlackShare black; a pool ball at least kStripePlain plain a
+// stripe (its white caps, lit or in shade).
 constexpr double kCueWhite = 0.6, kCueColour = 0.2;
 constexpr double kBlackShare = 0.5;
-constexpr double kStripeWhite = 0.3, kStripeMargin = 0.15;
+constexpr double kStripePlain = 0.3;
 // Colour distance (ColourDistance): hue fully, chroma and L* weighted down.
 constexpr double kChromaWeight = 0.3, kLightnessWeight = 0.3;
 // The classes are given all at once, the rack's count of each respected (the Hungarian method,
@@ -193,27 +195,37 @@ cv::Vec3f WhiteBalance(const std::vector<std::vector<cv::Vec3f>>& discs) {
   return gain;
 }
 
-// What a ball's disc shows: its shares of white, black and coloured pixels, and the coloured
-// ones' median colour.
+// What a ball's disc shows: its shares of white, black, plain and coloured pixels, and the
+// coloured ones' median colour.
 struct DiscLook {
-  double white = 0, black = 0, colour = 0;
+  double white = 0, black = 0, plain = 0, colour = 0;
   cv::Vec3f median{0, 0, 0};  // L*a*b*, of the coloured pixels
   bool seen = false;          // any pixel at all
 };
+
+// Plain: a white surface at any shade, its chroma below kPlainSaturation of its lightness, or
+// black. Shade scales a surface's L*, a* and b* alike (each about the cube root of the light it
+// gets), so their ratio, the saturation (Fairchild 2013), is what shade leaves of a colour: a
+// stripe's white cap turned away from the light is dark grey, not black and not white, and an
+// ivory cap or a cue ball under warm light is pale but far less saturated than any coloured ball.
+bool Plain(const cv::Vec3f& lab) {
+  const double chroma = Chroma(lab);
+  return chroma < kPlainSaturation * lab[0] || (chroma < kGreyChroma && lab[0] <= kBlackLightness);
+}
 
 DiscLook Look(const std::vector<cv::Vec3f>& lab) {
   DiscLook look;
   if (lab.empty()) return look;
   look.seen = true;
-  int white = 0, black = 0;
+  int white = 0, black = 0, plain = 0;
   std::vector<float> a, b, l;
   for (const auto& p : lab) {
     const bool grey = Chroma(p) < kGreyChroma;
-    if (grey && p[0] >= kWhiteLightness) {
-      ++white;
-    } else if (grey && p[0] <= kBlackLightness) {
-      ++black;
-    } else if (!grey) {
+    white += grey && p[0] >= kWhiteLightness;
+    black += grey && p[0] <= kBlackLightness;
+    if (Plain(p)) {
+      ++plain;
+    } else {
       a.push_back(p[1]);
       b.push_back(p[2]);
       l.push_back(p[0]);
@@ -222,6 +234,7 @@ DiscLook Look(const std::vector<cv::Vec3f>& lab) {
   const double n = static_cast<double>(lab.size());
   look.white = white / n;
   look.black = black / n;
+  look.plain = plain / n;
   look.colour = a.size() / n;
   if (!a.empty()) {
     look.median = {static_cast<float>(Median(l)), static_cast<float>(Median(a)),
@@ -262,7 +275,7 @@ double Beyond(double share, double threshold, double margin) {
 }
 
 // The cost of calling a ball of this look `ball_class` of `set`: how far each of its shares is on
-// the wrong side of the class's threshold (kCueWhite, kCueColour, kBlackShare, kStripeWhite), in
+// the wrong side of the class's threshold (kCueWhite, kCueColour, kBlackShare, kStripePlain), in
 // kShareMargin, plus its colour's distance from the class's colour (ColourDistance) in
 // kColourUnit.
 double Cost(const DiscLook& look, BallClass ball_class, BallSet set) {
@@ -279,8 +292,8 @@ double Cost(const DiscLook& look, BallClass ball_class, BallSet set) {
   int number = static_cast<int>(ball_class);
   if (set == BallSet::kPool) {
     const bool stripe = number > 8;
-    cost += stripe ? Beyond(kStripeWhite, look.white, kShareMargin)
-                   : Beyond(look.white, kStripeWhite, kShareMargin);
+    cost += stripe ? Beyond(kStripePlain, look.plain, kShareMargin)
+                   : Beyond(look.plain, kStripePlain, kShareMargin);
     if (stripe) number -= 8;
   } else {
     cost += Beyond(look.white, kCueWhite, kShareMargin);

@@ -6,6 +6,8 @@
 // L*a*b* after the frame's white balance is corrected:
 //   - white: little chroma and bright (the cue ball, a stripe's caps, a number's disc);
 //   - black: little chroma and dark (the eight ball, the snooker black, a number's figure);
+//   - plain: white at any shade (its chroma small against its lightness: a stripe's cap turned
+//     away from the light is dark grey) or black;
 //   - coloured: the rest, whose median colour is the ball's colour.
 // The white balance comes from the frame itself: the ball with the largest share of nearly grey,
 // bright pixels is taken for the cue ball (every game has one, and it is the only ball that is
@@ -18,10 +20,10 @@
 //   - otherwise the coloured pixels' median is compared with each colour of the set (kBallColours,
 //     approximate L*a*b* of the balls under white light), weighting hue over lightness (shading
 //     changes the lightness across a ball, and the camera's exposure all of it); for pool, a ball
-//     whose disc is a large share white (kStripeWhite) is a stripe (9-15), else a solid (1-7).
-// The confidence is how clearly the ball is what it was called: the margin between the nearest
-// colour and the next (a ratio of distances), times how far its white share is from the
-// solid/stripe boundary, in [0, 1].
+//     whose disc is a large share plain (kStripePlain) is a stripe (9-15), else a solid (1-7).
+// The classes are given all at once, the rack's count of each respected (assignment.h). The
+// confidence is how clearly the ball is what it was called: the margin of its class's cost over
+// its next best class's (a ratio), in [0, 1].
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -104,6 +104,60 @@ TEST(BallIdentity, ARackHasOneOfEachNumber) {
   for (int i = 1; i < 4; ++i) EXPECT_EQ(snooker[i].ball_class, BallClass::kRed) << i;
 }
 
+// A pool ball drawn on a cloth, lit from the left: its brightness falls from the lit limb to a
+// quarter of it at the far one (Lambert's law along the light's direction). A stripe's band runs
+// up and down the middle (a third of the ball's width each side), its white caps left and right.
+struct DrawnBall {
+  cv::Vec3b srgb;       // the ball's colour, R, G, B
+  bool stripe = false;  // white beyond the band
+};
+
+constexpr double kDrawnRadiusPx = 24;
+
+cv::Mat DrawShadedBalls(const std::vector<DrawnBall>& balls, std::vector<BallDetection>* detected) {
+  const int spacing = static_cast<int>(3 * kDrawnRadiusPx);
+  cv::Mat frame(2 * spacing, spacing * static_cast<int>(balls.size() + 1), CV_8UC3,
+                cv::Scalar(60, 120, 40));  // BGR: a green cloth
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const double cx = spacing * (i + 1.0), cy = spacing;
+    for (int y = 0; y < frame.rows; ++y) {
+      for (int x = 0; x < frame.cols; ++x) {
+        const double dx = (x - cx) / kDrawnRadiusPx, dy = (y - cy) / kDrawnRadiusPx;
+        if (dx * dx + dy * dy > 1) continue;
+        const double light = 1.0 - 0.75 * (dx + 1) / 2;
+        const bool white = balls[i].stripe && std::abs(dx) > 1.0 / 3;
+        const cv::Vec3b& c = white ? cv::Vec3b(255, 255, 255) : balls[i].srgb;
+        frame.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(c[2] * light),
+                                              cv::saturate_cast<uchar>(c[1] * light),
+                                              cv::saturate_cast<uchar>(c[0] * light));
+      }
+    }
+    detected->push_back({{cx, cy}, kDrawnRadiusPx, 1.0});
+  }
+  return frame;
+}
+
+// A stripe's cap turned away from the light is dark grey, neither white nor black: it is still
+// the stripe's white (its chroma is as small against its lightness as the lit cap's), and a
+// solid's shaded side keeps its colour. The blue and the red each as a solid and as a stripe.
+TEST(BallIdentity, AStripesWhiteInShadeStillMarksAStripe) {
+  const cv::Vec3b blue(20, 50, 160), red(215, 30, 30);
+  std::vector<BallDetection> detected;
+  const cv::Mat frame = DrawShadedBalls({{{255, 255, 255}, false},
+                                         {blue, false},
+                                         {blue, true},
+                                         {red, false},
+                                         {red, true},
+                                         {{10, 10, 10}, false}},
+                                        &detected);
+  const auto identities = IdentifyBalls(frame, detected, BallSet::kPool);
+  ASSERT_EQ(identities.size(), 6u);
+  const std::vector<std::string> expected = {"cue", "2", "10", "3", "11", "8"};
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(BallClassName(identities[i].ball_class), expected[i]) << "ball " << i;
+  }
+}
+
 TEST(BallIdentity, SnookersColoursAndUnknownBeyondTheFrame) {
   const Rendered r = RenderRow({1, 1, 1});
   const auto snooker = IdentifyBalls(r.frame, r.balls, BallSet::kSnooker);
