@@ -40,8 +40,9 @@ constexpr double kChromaWeight = 0.3, kLightnessWeight = 0.3;
 // assignment.h): a share on the wrong side of its threshold costs one per kShareMargin, a colour
 // one per kColourUnit of ColourDistance (about the distance between neighbouring hues of the
 // sets, red and orange); a ball without coloured pixels costs kNoColourCost for a coloured class.
-// A ball none fits better than kUnknownCost stays unknown, and so do the balls beyond the rack's
-// count. The confidence is 1 - (cost + kCostFloor) / (next best cost + kCostFloor).
+// A ball none fits better than kUnknownCost (times its detection's score) stays unknown, and so
+// do the balls beyond the rack's count. The confidence is
+// 1 - (cost + kCostFloor) / (next best cost + kCostFloor).
 constexpr double kShareMargin = 0.15;
 constexpr double kColourUnit = 30.0;
 constexpr double kNoColourCost = 3.0;
@@ -60,13 +61,17 @@ struct Colour {
 // Approximate colours of the balls (their sRGB under white light, read from manufacturers'
 // product pictures: Aramith pool and snooker sets, carom balls, whose red and yellow English
 // pool's are too); the classifier compares hues more than lightness, so a few per cent either way
-// changes little.
+// changes little. A class may have more than one colour, the nearest counting: sets differ, and
+// pool's 4 is purple, or pink in TV sets (Aramith's TV balls, so that it is not taken for the 2
+// on camera), its 7 maroon or brown.
 const std::vector<Colour>& ColoursOf(BallSet set) {
   static const std::vector<Colour> kPool = {
-      {PoolBall(1), {250, 195, 10}},  {PoolBall(2), {20, 50, 160}},
-      {PoolBall(3), {215, 30, 30}},   {PoolBall(4), {85, 35, 125}},
-      {PoolBall(5), {250, 110, 10}},  {PoolBall(6), {10, 110, 60}},
-      {PoolBall(7), {125, 25, 35}}};
+      {PoolBall(1), {250, 195, 10}}, {PoolBall(2), {20, 50, 160}},
+      {PoolBall(3), {215, 30, 30}},  {PoolBall(4), {85, 35, 125}},  // purple
+      {PoolBall(4), {230, 80, 140}},                                // pink (TV sets)
+      {PoolBall(5), {250, 110, 10}}, {PoolBall(6), {10, 110, 60}},
+      {PoolBall(7), {125, 25, 35}},   // maroon
+      {PoolBall(7), {138, 54, 15}}};  // brown
   static const std::vector<Colour> kSnooker = {
       {BallClass::kRed, {200, 20, 20}},   {BallClass::kYellow, {250, 210, 10}},
       {BallClass::kGreen, {10, 100, 50}}, {BallClass::kBrown, {110, 60, 30}},
@@ -169,10 +174,10 @@ cv::Vec3f WhiteBalance(const std::vector<std::vector<cv::Vec3f>>& discs) {
     if (cue < 0 || chroma[b] < chroma[cue]) cue = static_cast<int>(b);
   }
   // The reference: the cue ball's brighter half, or the brightest ball's.
-  const int reference = cue >= 0 ? cue
-                                 : static_cast<int>(std::max_element(lightness.begin(),
-                                                                     lightness.end()) -
-                                                    lightness.begin());
+  const int reference =
+      cue >= 0 ? cue
+               : static_cast<int>(std::max_element(lightness.begin(), lightness.end()) -
+                                  lightness.begin());
   cv::Vec3d mean(0, 0, 0);
   int count = 0;
   for (std::size_t i = 0; i < discs[reference].size(); ++i) {
@@ -243,6 +248,13 @@ DiscLook Look(const std::vector<cv::Vec3f>& lab) {
   return look;
 }
 
+// What leaving a ball unnamed costs: kUnknownCost for a sure ball, less for an outline the
+// detector doubts (its score), so that the rack's one of each number goes to the sure balls
+// before a hand or a shadow takes it.
+double UnknownCost(const BallDetection& ball) {
+  return kUnknownCost * std::clamp(ball.score, 0.0, 1.0);
+}
+
 // How many balls of each class a set holds.
 std::vector<std::pair<BallClass, int>> ClassesOf(BallSet set) {
   std::vector<std::pair<BallClass, int>> classes = {{BallClass::kCue, 1}};
@@ -283,12 +295,12 @@ double Cost(const DiscLook& look, BallClass ball_class, BallSet set) {
     return Beyond(kCueWhite, look.white, kShareMargin) +
            Beyond(look.colour, kCueColour, kShareMargin);
   }
-  const bool black_ball = ball_class == BallClass::kBlack ||
-                          (set == BallSet::kPool && ball_class == PoolBall(8));
+  const bool black_ball =
+      ball_class == BallClass::kBlack || (set == BallSet::kPool && ball_class == PoolBall(8));
   if (black_ball) return Beyond(kBlackShare, look.black, kShareMargin);
   // A coloured ball: some colour, not mostly black, its hue that of its class.
-  double cost = Beyond(kCueColour, look.colour, kShareMargin) +
-                Beyond(look.black, kBlackShare, kShareMargin);
+  double cost =
+      Beyond(kCueColour, look.colour, kShareMargin) + Beyond(look.black, kBlackShare, kShareMargin);
   int number = static_cast<int>(ball_class);
   if (set == BallSet::kPool) {
     const bool stripe = number > 8;
@@ -300,12 +312,13 @@ double Cost(const DiscLook& look, BallClass ball_class, BallSet set) {
   }
   const BallClass colour_class = set == BallSet::kPool ? PoolBall(number) : ball_class;
   if (look.colour == 0) return cost + kNoColourCost;
+  double distance = HUGE_VAL;  // to the nearest of the class's colours
   for (const Colour& c : ColoursOf(set)) {
     if (c.ball_class == colour_class) {
-      return cost + ColourDistance(look.median, LabOfSrgb(c.srgb)) / kColourUnit;
+      distance = std::min(distance, ColourDistance(look.median, LabOfSrgb(c.srgb)));
     }
   }
-  return cost + kNoColourCost;
+  return cost + (distance < HUGE_VAL ? distance / kColourUnit : kNoColourCost);
 }
 
 }  // namespace
@@ -335,7 +348,8 @@ std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<Ba
     for (std::size_t c = 0; c < classes.size(); ++c) {
       for (int k = 0; k < classes[c].second; ++k) cost(i, slot++) = class_cost(i, c);
     }
-    for (int j = 0; j < n; ++j) cost(i, known + j) = looks[i].seen ? kUnknownCost : 0.0;
+    const double unknown = UnknownCost(balls[i]);
+    for (int j = 0; j < n; ++j) cost(i, known + j) = looks[i].seen ? unknown : 0.0;
   }
   const std::vector<int> assigned = AssignMinimumCost(cost, kForbiddenCost);
   std::vector<BallIdentity> identities(balls.size());
@@ -351,7 +365,7 @@ std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<Ba
         other = std::min(other, class_cost(i, c));
       }
     }
-    other = std::min(other, kUnknownCost);
+    other = std::min(other, UnknownCost(balls[i]));
     identities[i] = {ball_class,
                      std::clamp(1.0 - (given + kCostFloor) / (other + kCostFloor), 0.0, 1.0)};
   }

@@ -29,7 +29,8 @@ struct Rendered {
 };
 
 // The pool balls `ids` in a row, rendered overhead under a light of `tint`, detected.
-Rendered RenderRow(const cv::Vec3f& tint, const std::vector<int>& ids = {0, 1, 2, 3, 4, 5, 6, 7, 8}) {
+Rendered RenderRow(const cv::Vec3f& tint,
+                   const std::vector<int>& ids = {0, 1, 2, 3, 4, 5, 6, 7, 8}) {
   const camera::CameraModel camera = camera::CameraModel::Overhead(Pool().table, 1280, 720);
   render::RenderOptions options;
   options.exposure_s = 0;
@@ -38,8 +39,8 @@ Rendered RenderRow(const cv::Vec3f& tint, const std::vector<int>& ids = {0, 1, 2
   std::vector<Eigen::Vector2d> where;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     where.push_back({0.3 + 0.24 * i, 0.5 + 0.1 * (i % 2)});
-    shown.push_back(render::RenderBall::AtRest(static_cast<int>(i),
-                                               render::PoolBallColour(ids[i]), where.back()));
+    shown.push_back(render::RenderBall::AtRest(static_cast<int>(i), render::PoolBallColour(ids[i]),
+                                               where.back()));
   }
   Rendered r;
   r.frame = renderer.Render(shown, 0.0);
@@ -56,8 +57,8 @@ Rendered RenderRow(const cv::Vec3f& tint, const std::vector<int>& ids = {0, 1, 2
 }
 
 TEST(BallIdentity, TheCueBallTheBlackAndEverySolidUnderAnyLight) {
-  for (const cv::Vec3f& tint : {cv::Vec3f(1, 1, 1), cv::Vec3f(0.8f, 1.0f, 1.15f),
-                                cv::Vec3f(1.15f, 1.0f, 0.8f)}) {
+  for (const cv::Vec3f& tint :
+       {cv::Vec3f(1, 1, 1), cv::Vec3f(0.8f, 1.0f, 1.15f), cv::Vec3f(1.15f, 1.0f, 0.8f)}) {
     const Rendered r = RenderRow(tint);
     const auto identities = IdentifyBalls(r.frame, r.balls, BallSet::kPool);
     ASSERT_EQ(identities.size(), 9u);
@@ -155,6 +156,37 @@ TEST(BallIdentity, AStripesWhiteInShadeStillMarksAStripe) {
   const std::vector<std::string> expected = {"cue", "2", "10", "3", "11", "8"};
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(BallClassName(identities[i].ball_class), expected[i]) << "ball " << i;
+  }
+}
+
+// Sets differ: a TV set's 4 is pink, to be told from the 2 on camera (Aramith's TV balls), and
+// the 7 is maroon in some sets and brown in others. Each alone beside the cue ball (no other ball
+// to take the classes it could be taken for, the 3, the 7 or the 5) is named right.
+TEST(BallIdentity, ATvSetsPinkFourAndABrownSeven) {
+  for (const auto& [srgb, name] :
+       {std::pair{cv::Vec3b(230, 80, 140), "4"}, std::pair{cv::Vec3b(140, 60, 20), "7"},
+        std::pair{cv::Vec3b(125, 25, 35), "7"}}) {
+    std::vector<BallDetection> detected;
+    const cv::Mat frame = DrawShadedBalls({{{255, 255, 255}, false}, {srgb, false}}, &detected);
+    const auto identities = IdentifyBalls(frame, detected, BallSet::kPool);
+    ASSERT_EQ(identities.size(), 2u);
+    EXPECT_EQ(identities[0].ball_class, BallClass::kCue);
+    EXPECT_EQ(BallClassName(identities[1].ball_class), name) << srgb;
+  }
+}
+
+// The rack's one of each number goes to the sure balls first: of two purple outlines beside the
+// other solids, the one the detector doubts (a hand's shadow, say; score 0.4) does not take the 4
+// from the sure one, whichever comes first.
+TEST(BallIdentity, ADoubtfulOutlineDoesNotTakeASureBallsNumber) {
+  for (const std::size_t doubtful : {3, 8}) {
+    Rendered r = RenderRow({1, 1, 1}, {0, 2, 3, 4, 5, 6, 7, 8, 4});
+    r.balls[doubtful].score = 0.4;
+    const std::size_t sure = doubtful == 3 ? 8 : 3;
+    const auto identities = IdentifyBalls(r.frame, r.balls, BallSet::kPool);
+    ASSERT_EQ(identities.size(), 9u);
+    EXPECT_EQ(identities[sure].ball_class, PoolBall(4)) << "doubtful " << doubtful;
+    EXPECT_NE(identities[doubtful].ball_class, PoolBall(4)) << "doubtful " << doubtful;
   }
 }
 
