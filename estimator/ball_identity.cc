@@ -26,6 +26,8 @@ constexpr double kWhiteLightness = 65.0, kBlackLightness = 30.0;
 constexpr double kBrightBalls = 0.8;
 constexpr double kMaxCueChroma = 40.0;
 constexpr double kCueLightness = 90.0;
+// A channel at kClippedLevel (of 1) or more is clipped.
+constexpr float kClippedLevel = 250.0f / 255.0f;
 // A pixel is plain (Plain) when its chroma is below kPlainSaturation of its L*.
 constexpr double kPlainSaturation = 0.3;
 // Shares of a ball's disc: the cue ball is at least kCueWhite white with at most kCueColour
@@ -178,12 +180,19 @@ cv::Vec3f WhiteBalance(const std::vector<std::vector<cv::Vec3f>>& discs) {
       cue >= 0 ? cue
                : static_cast<int>(std::max_element(lightness.begin(), lightness.end()) -
                                   lightness.begin());
+  // Its pixels with a channel at the sensor's limit tell the limit, not the light's colour: left
+  // out, unless there are no others.
   cv::Vec3d mean(0, 0, 0);
   int count = 0;
-  for (std::size_t i = 0; i < discs[reference].size(); ++i) {
-    if (labs[reference][i][0] < lightness[reference]) continue;
-    mean += cv::Vec3d(discs[reference][i]);
-    ++count;
+  for (const bool with_clipped : {false, true}) {
+    for (std::size_t i = 0; i < discs[reference].size(); ++i) {
+      const cv::Vec3f& p = discs[reference][i];
+      const bool clipped = std::max({p[0], p[1], p[2]}) >= kClippedLevel;
+      if (labs[reference][i][0] < lightness[reference] || (clipped && !with_clipped)) continue;
+      mean += cv::Vec3d(p);
+      ++count;
+    }
+    if (count > 0) break;
   }
   if (count == 0) return {1, 1, 1};
   mean /= count;

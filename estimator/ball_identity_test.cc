@@ -190,6 +190,23 @@ TEST(BallIdentity, ADoubtfulOutlineDoesNotTakeASureBallsNumber) {
   }
 }
 
+// A warm light on an ivory cue ball: its body is cream, its highlight clipped white. The highlight
+// tells the sensor's limit, not the light's colour, so the white balance is taken from the body,
+// and the ball is the cue ball, not one of English pool's yellows.
+TEST(BallIdentity, AnIvoryCueBallWithAClippedHighlightUnderAWarmLight) {
+  std::vector<BallDetection> detected;
+  cv::Mat frame = DrawShadedBalls(
+      {{{250, 215, 140}, false}, {{250, 210, 20}, false}, {{210, 30, 30}, false}}, &detected);
+  const Eigen::Vector2d highlight = detected[0].pixel - Eigen::Vector2d(0.4 * kDrawnRadiusPx, 0);
+  cv::circle(frame, cv::Point(static_cast<int>(highlight.x()), static_cast<int>(highlight.y())),
+             static_cast<int>(0.35 * kDrawnRadiusPx), cv::Scalar(255, 255, 255), cv::FILLED);
+  const auto identities = IdentifyBalls(frame, detected, BallSet::kBlackball);
+  ASSERT_EQ(identities.size(), 3u);
+  EXPECT_EQ(identities[0].ball_class, BallClass::kCue);
+  EXPECT_EQ(identities[1].ball_class, BallClass::kYellow);
+  EXPECT_EQ(identities[2].ball_class, BallClass::kRed);
+}
+
 TEST(BallIdentity, SnookersColoursAndUnknownBeyondTheFrame) {
   const Rendered r = RenderRow({1, 1, 1});
   const auto snooker = IdentifyBalls(r.frame, r.balls, BallSet::kSnooker);
