@@ -11,8 +11,8 @@
 //   - coloured: the rest, whose median colour is the ball's colour.
 // The white balance comes from the frame itself: the ball with the largest share of nearly grey,
 // bright pixels is taken for the cue ball (every game has one, and it is the only ball that is
-// white all over), and the frame's colours are scaled per channel so that its pixels are grey
-// (von Kries 1902), from its pixels that are not clipped. A frame without such a ball keeps its colours.
+// white all over), and the frame's colours are scaled per channel so that its pixels that are not
+// clipped are grey (von Kries 1902). A frame without such a ball keeps its colours.
 //
 // Then, per ball set:
 //   - the cue ball is mostly white, with no colour of its own;
