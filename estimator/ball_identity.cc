@@ -26,20 +26,25 @@ constexpr double kWhiteLightness = 65.0, kBlackLightness = 30.0;
 constexpr double kBrightBalls = 0.8;
 constexpr double kMaxCueChroma = 40.0;
 constexpr double kCueLightness = 90.0;
+// A channel at kClippedLevel (of 1) or more is clipped.
+constexpr float kClippedLevel = 250.0f / 255.0f;
+// A pixel is plain (Plain) when its chroma is below kPlainSaturation of its L*.
+constexpr double kPlainSaturation = 0.3;
 // Shares of a ball's disc: the cue ball is at least kCueWhite white with at most kCueColour
-// coloured; a black ball at least kBlackShare black; a pool ball at least kStripeWhite white a
-// stripe, its certainty growing over kStripeMargin either side.
+// coloured; a black ball at least kBlackShare black; a pool ball at least kStripePlain plain a
+// stripe (its white caps, lit or in shade).
 constexpr double kCueWhite = 0.6, kCueColour = 0.2;
 constexpr double kBlackShare = 0.5;
-constexpr double kStripeWhite = 0.3, kStripeMargin = 0.15;
+constexpr double kStripePlain = 0.3;
 // Colour distance (ColourDistance): hue fully, chroma and L* weighted down.
 constexpr double kChromaWeight = 0.3, kLightnessWeight = 0.3;
 // The classes are given all at once, the rack's count of each respected (the Hungarian method,
 // assignment.h): a share on the wrong side of its threshold costs one per kShareMargin, a colour
 // one per kColourUnit of ColourDistance (about the distance between neighbouring hues of the
 // sets, red and orange); a ball without coloured pixels costs kNoColourCost for a coloured class.
-// A ball none fits better than kUnknownCost stays unknown, and so do the balls beyond the rack's
-// count. The confidence is 1 - (cost + kCostFloor) / (next best cost + kCostFloor).
+// A ball none fits better than kUnknownCost (times its detection's score) stays unknown, and so
+// do the balls beyond the rack's count. The confidence is
+// 1 - (cost + kCostFloor) / (next best cost + kCostFloor).
 constexpr double kShareMargin = 0.15;
 constexpr double kColourUnit = 30.0;
 constexpr double kNoColourCost = 3.0;
@@ -58,13 +63,17 @@ struct Colour {
 // Approximate colours of the balls (their sRGB under white light, read from manufacturers'
 // product pictures: Aramith pool and snooker sets, carom balls, whose red and yellow English
 // pool's are too); the classifier compares hues more than lightness, so a few per cent either way
-// changes little.
+// changes little. A class may have more than one colour, the nearest counting: sets differ, and
+// pool's 4 is purple, or pink in TV sets (Aramith's TV balls, so that it is not taken for the 2
+// on camera), its 7 maroon or brown.
 const std::vector<Colour>& ColoursOf(BallSet set) {
   static const std::vector<Colour> kPool = {
-      {PoolBall(1), {250, 195, 10}},  {PoolBall(2), {20, 50, 160}},
-      {PoolBall(3), {215, 30, 30}},   {PoolBall(4), {85, 35, 125}},
-      {PoolBall(5), {250, 110, 10}},  {PoolBall(6), {10, 110, 60}},
-      {PoolBall(7), {125, 25, 35}}};
+      {PoolBall(1), {250, 195, 10}}, {PoolBall(2), {20, 50, 160}},
+      {PoolBall(3), {215, 30, 30}},  {PoolBall(4), {85, 35, 125}},  // purple
+      {PoolBall(4), {230, 80, 140}},                                // pink (TV sets)
+      {PoolBall(5), {250, 110, 10}}, {PoolBall(6), {10, 110, 60}},
+      {PoolBall(7), {125, 25, 35}},   // maroon
+      {PoolBall(7), {138, 54, 15}}};  // brown
   static const std::vector<Colour> kSnooker = {
       {BallClass::kRed, {200, 20, 20}},   {BallClass::kYellow, {250, 210, 10}},
       {BallClass::kGreen, {10, 100, 50}}, {BallClass::kBrown, {110, 60, 30}},
@@ -167,16 +176,23 @@ cv::Vec3f WhiteBalance(const std::vector<std::vector<cv::Vec3f>>& discs) {
     if (cue < 0 || chroma[b] < chroma[cue]) cue = static_cast<int>(b);
   }
   // The reference: the cue ball's brighter half, or the brightest ball's.
-  const int reference = cue >= 0 ? cue
-                                 : static_cast<int>(std::max_element(lightness.begin(),
-                                                                     lightness.end()) -
-                                                    lightness.begin());
+  const int reference =
+      cue >= 0 ? cue
+               : static_cast<int>(std::max_element(lightness.begin(), lightness.end()) -
+                                  lightness.begin());
+  // Its pixels with a channel at the sensor's limit tell the limit, not the light's colour: left
+  // out, unless there are no others.
   cv::Vec3d mean(0, 0, 0);
   int count = 0;
-  for (std::size_t i = 0; i < discs[reference].size(); ++i) {
-    if (labs[reference][i][0] < lightness[reference]) continue;
-    mean += cv::Vec3d(discs[reference][i]);
-    ++count;
+  for (const bool with_clipped : {false, true}) {
+    for (std::size_t i = 0; i < discs[reference].size(); ++i) {
+      const cv::Vec3f& p = discs[reference][i];
+      const bool clipped = std::max({p[0], p[1], p[2]}) >= kClippedLevel;
+      if (labs[reference][i][0] < lightness[reference] || (clipped && !with_clipped)) continue;
+      mean += cv::Vec3d(p);
+      ++count;
+    }
+    if (count > 0) break;
   }
   if (count == 0) return {1, 1, 1};
   mean /= count;
@@ -193,27 +209,37 @@ cv::Vec3f WhiteBalance(const std::vector<std::vector<cv::Vec3f>>& discs) {
   return gain;
 }
 
-// What a ball's disc shows: its shares of white, black and coloured pixels, and the coloured
-// ones' median colour.
+// What a ball's disc shows: its shares of white, black, plain and coloured pixels, and the
+// coloured ones' median colour.
 struct DiscLook {
-  double white = 0, black = 0, colour = 0;
+  double white = 0, black = 0, plain = 0, colour = 0;
   cv::Vec3f median{0, 0, 0};  // L*a*b*, of the coloured pixels
   bool seen = false;          // any pixel at all
 };
+
+// Plain: a white surface at any shade, its chroma below kPlainSaturation of its lightness, or
+// black. Shade scales a surface's L*, a* and b* alike (each about the cube root of the light it
+// gets), so their ratio, the saturation (Fairchild 2013), is what shade leaves of a colour: a
+// stripe's white cap turned away from the light is dark grey, not black and not white, and an
+// ivory cap or a cue ball under warm light is pale but far less saturated than any coloured ball.
+bool Plain(const cv::Vec3f& lab) {
+  const double chroma = Chroma(lab);
+  return chroma < kPlainSaturation * lab[0] || (chroma < kGreyChroma && lab[0] <= kBlackLightness);
+}
 
 DiscLook Look(const std::vector<cv::Vec3f>& lab) {
   DiscLook look;
   if (lab.empty()) return look;
   look.seen = true;
-  int white = 0, black = 0;
+  int white = 0, black = 0, plain = 0;
   std::vector<float> a, b, l;
   for (const auto& p : lab) {
     const bool grey = Chroma(p) < kGreyChroma;
-    if (grey && p[0] >= kWhiteLightness) {
-      ++white;
-    } else if (grey && p[0] <= kBlackLightness) {
-      ++black;
-    } else if (!grey) {
+    white += grey && p[0] >= kWhiteLightness;
+    black += grey && p[0] <= kBlackLightness;
+    if (Plain(p)) {
+      ++plain;
+    } else {
       a.push_back(p[1]);
       b.push_back(p[2]);
       l.push_back(p[0]);
@@ -222,12 +248,20 @@ DiscLook Look(const std::vector<cv::Vec3f>& lab) {
   const double n = static_cast<double>(lab.size());
   look.white = white / n;
   look.black = black / n;
+  look.plain = plain / n;
   look.colour = a.size() / n;
   if (!a.empty()) {
     look.median = {static_cast<float>(Median(l)), static_cast<float>(Median(a)),
                    static_cast<float>(Median(b))};
   }
   return look;
+}
+
+// What leaving a ball unnamed costs: kUnknownCost for a sure ball, less for an outline the
+// detector doubts (its score), so that the rack's one of each number goes to the sure balls
+// before a hand or a shadow takes it.
+double UnknownCost(const BallDetection& ball) {
+  return kUnknownCost * std::clamp(ball.score, 0.0, 1.0);
 }
 
 // How many balls of each class a set holds.
@@ -262,7 +296,7 @@ double Beyond(double share, double threshold, double margin) {
 }
 
 // The cost of calling a ball of this look `ball_class` of `set`: how far each of its shares is on
-// the wrong side of the class's threshold (kCueWhite, kCueColour, kBlackShare, kStripeWhite), in
+// the wrong side of the class's threshold (kCueWhite, kCueColour, kBlackShare, kStripePlain), in
 // kShareMargin, plus its colour's distance from the class's colour (ColourDistance) in
 // kColourUnit.
 double Cost(const DiscLook& look, BallClass ball_class, BallSet set) {
@@ -270,29 +304,30 @@ double Cost(const DiscLook& look, BallClass ball_class, BallSet set) {
     return Beyond(kCueWhite, look.white, kShareMargin) +
            Beyond(look.colour, kCueColour, kShareMargin);
   }
-  const bool black_ball = ball_class == BallClass::kBlack ||
-                          (set == BallSet::kPool && ball_class == PoolBall(8));
+  const bool black_ball =
+      ball_class == BallClass::kBlack || (set == BallSet::kPool && ball_class == PoolBall(8));
   if (black_ball) return Beyond(kBlackShare, look.black, kShareMargin);
   // A coloured ball: some colour, not mostly black, its hue that of its class.
-  double cost = Beyond(kCueColour, look.colour, kShareMargin) +
-                Beyond(look.black, kBlackShare, kShareMargin);
+  double cost =
+      Beyond(kCueColour, look.colour, kShareMargin) + Beyond(look.black, kBlackShare, kShareMargin);
   int number = static_cast<int>(ball_class);
   if (set == BallSet::kPool) {
     const bool stripe = number > 8;
-    cost += stripe ? Beyond(kStripeWhite, look.white, kShareMargin)
-                   : Beyond(look.white, kStripeWhite, kShareMargin);
+    cost += stripe ? Beyond(kStripePlain, look.plain, kShareMargin)
+                   : Beyond(look.plain, kStripePlain, kShareMargin);
     if (stripe) number -= 8;
   } else {
     cost += Beyond(look.white, kCueWhite, kShareMargin);
   }
   const BallClass colour_class = set == BallSet::kPool ? PoolBall(number) : ball_class;
   if (look.colour == 0) return cost + kNoColourCost;
+  double distance = HUGE_VAL;  // to the nearest of the class's colours
   for (const Colour& c : ColoursOf(set)) {
     if (c.ball_class == colour_class) {
-      return cost + ColourDistance(look.median, LabOfSrgb(c.srgb)) / kColourUnit;
+      distance = std::min(distance, ColourDistance(look.median, LabOfSrgb(c.srgb)));
     }
   }
-  return cost + kNoColourCost;
+  return cost + (distance < HUGE_VAL ? distance / kColourUnit : kNoColourCost);
 }
 
 }  // namespace
@@ -322,7 +357,8 @@ std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<Ba
     for (std::size_t c = 0; c < classes.size(); ++c) {
       for (int k = 0; k < classes[c].second; ++k) cost(i, slot++) = class_cost(i, c);
     }
-    for (int j = 0; j < n; ++j) cost(i, known + j) = looks[i].seen ? kUnknownCost : 0.0;
+    const double unknown = UnknownCost(balls[i]);
+    for (int j = 0; j < n; ++j) cost(i, known + j) = looks[i].seen ? unknown : 0.0;
   }
   const std::vector<int> assigned = AssignMinimumCost(cost, kForbiddenCost);
   std::vector<BallIdentity> identities(balls.size());
@@ -338,7 +374,7 @@ std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<Ba
         other = std::min(other, class_cost(i, c));
       }
     }
-    other = std::min(other, kUnknownCost);
+    other = std::min(other, UnknownCost(balls[i]));
     identities[i] = {ball_class,
                      std::clamp(1.0 - (given + kCostFloor) / (other + kCostFloor), 0.0, 1.0)};
   }

@@ -6,11 +6,13 @@
 // L*a*b* after the frame's white balance is corrected:
 //   - white: little chroma and bright (the cue ball, a stripe's caps, a number's disc);
 //   - black: little chroma and dark (the eight ball, the snooker black, a number's figure);
+//   - plain: white at any shade (its chroma small against its lightness: a stripe's cap turned
+//     away from the light is dark grey) or black;
 //   - coloured: the rest, whose median colour is the ball's colour.
 // The white balance comes from the frame itself: the ball with the largest share of nearly grey,
 // bright pixels is taken for the cue ball (every game has one, and it is the only ball that is
-// white all over), and the frame's colours are scaled per channel so that its pixels are grey
-// (von Kries 1902). A frame without such a ball keeps its colours.
+// white all over), and the frame's colours are scaled per channel so that its pixels that are not
+// clipped are grey (von Kries 1902). A frame without such a ball keeps its colours.
 //
 // Then, per ball set:
 //   - the cue ball is mostly white, with no colour of its own;
@@ -18,10 +20,10 @@
 //   - otherwise the coloured pixels' median is compared with each colour of the set (kBallColours,
 //     approximate L*a*b* of the balls under white light), weighting hue over lightness (shading
 //     changes the lightness across a ball, and the camera's exposure all of it); for pool, a ball
-//     whose disc is a large share white (kStripeWhite) is a stripe (9-15), else a solid (1-7).
-// The confidence is how clearly the ball is what it was called: the margin between the nearest
-// colour and the next (a ratio of distances), times how far its white share is from the
-// solid/stripe boundary, in [0, 1].
+//     whose disc is a large share plain (kStripePlain) is a stripe (9-15), else a solid (1-7).
+// The classes are given all at once, the rack's count of each respected (assignment.h). The
+// confidence is how clearly the ball is what it was called: the margin of its class's cost over
+// its next best class's (a ratio), in [0, 1].
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -29,7 +29,8 @@ struct Rendered {
 };
 
 // The pool balls `ids` in a row, rendered overhead under a light of `tint`, detected.
-Rendered RenderRow(const cv::Vec3f& tint, const std::vector<int>& ids = {0, 1, 2, 3, 4, 5, 6, 7, 8}) {
+Rendered RenderRow(const cv::Vec3f& tint,
+                   const std::vector<int>& ids = {0, 1, 2, 3, 4, 5, 6, 7, 8}) {
   const camera::CameraModel camera = camera::CameraModel::Overhead(Pool().table, 1280, 720);
   render::RenderOptions options;
   options.exposure_s = 0;
@@ -38,8 +39,8 @@ Rendered RenderRow(const cv::Vec3f& tint, const std::vector<int>& ids = {0, 1, 2
   std::vector<Eigen::Vector2d> where;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     where.push_back({0.3 + 0.24 * i, 0.5 + 0.1 * (i % 2)});
-    shown.push_back(render::RenderBall::AtRest(static_cast<int>(i),
-                                               render::PoolBallColour(ids[i]), where.back()));
+    shown.push_back(render::RenderBall::AtRest(static_cast<int>(i), render::PoolBallColour(ids[i]),
+                                               where.back()));
   }
   Rendered r;
   r.frame = renderer.Render(shown, 0.0);
@@ -56,8 +57,8 @@ Rendered RenderRow(const cv::Vec3f& tint, const std::vector<int>& ids = {0, 1, 2
 }
 
 TEST(BallIdentity, TheCueBallTheBlackAndEverySolidUnderAnyLight) {
-  for (const cv::Vec3f& tint : {cv::Vec3f(1, 1, 1), cv::Vec3f(0.8f, 1.0f, 1.15f),
-                                cv::Vec3f(1.15f, 1.0f, 0.8f)}) {
+  for (const cv::Vec3f& tint :
+       {cv::Vec3f(1, 1, 1), cv::Vec3f(0.8f, 1.0f, 1.15f), cv::Vec3f(1.15f, 1.0f, 0.8f)}) {
     const Rendered r = RenderRow(tint);
     const auto identities = IdentifyBalls(r.frame, r.balls, BallSet::kPool);
     ASSERT_EQ(identities.size(), 9u);
@@ -102,6 +103,108 @@ TEST(BallIdentity, ARackHasOneOfEachNumber) {
   ASSERT_EQ(snooker.size(), 4u);
   EXPECT_EQ(snooker[0].ball_class, BallClass::kCue);
   for (int i = 1; i < 4; ++i) EXPECT_EQ(snooker[i].ball_class, BallClass::kRed) << i;
+}
+
+// A pool ball drawn on a cloth, lit from the left: its brightness falls from the lit limb to a
+// quarter of it at the far one (Lambert's law along the light's direction). A stripe's band runs
+// up and down the middle (a third of the ball's width each side), its white caps left and right.
+struct DrawnBall {
+  cv::Vec3b srgb;       // the ball's colour, R, G, B
+  bool stripe = false;  // white beyond the band
+};
+
+constexpr double kDrawnRadiusPx = 24;
+
+cv::Mat DrawShadedBalls(const std::vector<DrawnBall>& balls, std::vector<BallDetection>* detected) {
+  const int spacing = static_cast<int>(3 * kDrawnRadiusPx);
+  cv::Mat frame(2 * spacing, spacing * static_cast<int>(balls.size() + 1), CV_8UC3,
+                cv::Scalar(60, 120, 40));  // BGR: a green cloth
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const double cx = spacing * (i + 1.0), cy = spacing;
+    for (int y = 0; y < frame.rows; ++y) {
+      for (int x = 0; x < frame.cols; ++x) {
+        const double dx = (x - cx) / kDrawnRadiusPx, dy = (y - cy) / kDrawnRadiusPx;
+        if (dx * dx + dy * dy > 1) continue;
+        const double light = 1.0 - 0.75 * (dx + 1) / 2;
+        const bool white = balls[i].stripe && std::abs(dx) > 1.0 / 3;
+        const cv::Vec3b& c = white ? cv::Vec3b(255, 255, 255) : balls[i].srgb;
+        frame.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(c[2] * light),
+                                              cv::saturate_cast<uchar>(c[1] * light),
+                                              cv::saturate_cast<uchar>(c[0] * light));
+      }
+    }
+    detected->push_back({{cx, cy}, kDrawnRadiusPx, 1.0});
+  }
+  return frame;
+}
+
+// A stripe's cap turned away from the light is dark grey, neither white nor black: it is still
+// the stripe's white (its chroma is as small against its lightness as the lit cap's), and a
+// solid's shaded side keeps its colour. The blue and the red each as a solid and as a stripe.
+TEST(BallIdentity, AStripesWhiteInShadeStillMarksAStripe) {
+  const cv::Vec3b blue(20, 50, 160), red(215, 30, 30);
+  std::vector<BallDetection> detected;
+  const cv::Mat frame = DrawShadedBalls({{{255, 255, 255}, false},
+                                         {blue, false},
+                                         {blue, true},
+                                         {red, false},
+                                         {red, true},
+                                         {{10, 10, 10}, false}},
+                                        &detected);
+  const auto identities = IdentifyBalls(frame, detected, BallSet::kPool);
+  ASSERT_EQ(identities.size(), 6u);
+  const std::vector<std::string> expected = {"cue", "2", "10", "3", "11", "8"};
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(BallClassName(identities[i].ball_class), expected[i]) << "ball " << i;
+  }
+}
+
+// Sets differ: a TV set's 4 is pink, to be told from the 2 on camera (Aramith's TV balls), and
+// the 7 is maroon in some sets and brown in others. Each alone beside the cue ball (no other ball
+// to take the classes it could be taken for, the 3, the 7 or the 5) is named right.
+TEST(BallIdentity, ATvSetsPinkFourAndABrownSeven) {
+  for (const auto& [srgb, name] :
+       {std::pair{cv::Vec3b(230, 80, 140), "4"}, std::pair{cv::Vec3b(140, 60, 20), "7"},
+        std::pair{cv::Vec3b(125, 25, 35), "7"}}) {
+    std::vector<BallDetection> detected;
+    const cv::Mat frame = DrawShadedBalls({{{255, 255, 255}, false}, {srgb, false}}, &detected);
+    const auto identities = IdentifyBalls(frame, detected, BallSet::kPool);
+    ASSERT_EQ(identities.size(), 2u);
+    EXPECT_EQ(identities[0].ball_class, BallClass::kCue);
+    EXPECT_EQ(BallClassName(identities[1].ball_class), name) << srgb;
+  }
+}
+
+// The rack's one of each number goes to the sure balls first: of two purple outlines beside the
+// other solids, the one the detector doubts (a hand's shadow, say; score 0.4) does not take the 4
+// from the sure one, whichever comes first.
+TEST(BallIdentity, ADoubtfulOutlineDoesNotTakeASureBallsNumber) {
+  for (const std::size_t doubtful : {3, 8}) {
+    Rendered r = RenderRow({1, 1, 1}, {0, 2, 3, 4, 5, 6, 7, 8, 4});
+    r.balls[doubtful].score = 0.4;
+    const std::size_t sure = doubtful == 3 ? 8 : 3;
+    const auto identities = IdentifyBalls(r.frame, r.balls, BallSet::kPool);
+    ASSERT_EQ(identities.size(), 9u);
+    EXPECT_EQ(identities[sure].ball_class, PoolBall(4)) << "doubtful " << doubtful;
+    EXPECT_NE(identities[doubtful].ball_class, PoolBall(4)) << "doubtful " << doubtful;
+  }
+}
+
+// A warm light on an ivory cue ball: its body is cream, its highlight clipped white. The highlight
+// tells the sensor's limit, not the light's colour, so the white balance is taken from the body,
+// and the ball is the cue ball, not one of English pool's yellows.
+TEST(BallIdentity, AnIvoryCueBallWithAClippedHighlightUnderAWarmLight) {
+  std::vector<BallDetection> detected;
+  cv::Mat frame = DrawShadedBalls(
+      {{{250, 215, 140}, false}, {{250, 210, 20}, false}, {{210, 30, 30}, false}}, &detected);
+  const Eigen::Vector2d highlight = detected[0].pixel - Eigen::Vector2d(0.4 * kDrawnRadiusPx, 0);
+  cv::circle(frame, cv::Point(static_cast<int>(highlight.x()), static_cast<int>(highlight.y())),
+             static_cast<int>(0.35 * kDrawnRadiusPx), cv::Scalar(255, 255, 255), cv::FILLED);
+  const auto identities = IdentifyBalls(frame, detected, BallSet::kBlackball);
+  ASSERT_EQ(identities.size(), 3u);
+  EXPECT_EQ(identities[0].ball_class, BallClass::kCue);
+  EXPECT_EQ(identities[1].ball_class, BallClass::kYellow);
+  EXPECT_EQ(identities[2].ball_class, BallClass::kRed);
 }
 
 TEST(BallIdentity, SnookersColoursAndUnknownBeyondTheFrame) {

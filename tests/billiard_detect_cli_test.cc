@@ -221,7 +221,9 @@ TEST_F(BilliardDetect, SaysWhichBallEachIsAndWhereTheTableIs) {
 // line brought the tables found within 2 px per side of the corner labels
 // (estimator/testing/real_table_corners.json) from 15 to 18 of 26. A side's outline taken as its
 // straight stretches found dap_snooker2's ball beyond its left side, and an unsure outline in a
-// pocket's mouth dropped brought precision to 96.1 % overhead and 97.7 % oblique.
+// pocket's mouth dropped brought precision to 96.1 % overhead and 97.7 % oblique. Identity at
+// 91.5 % (86 of 94): a stripe by its plain share (its white at any shade), the rack's numbers to
+// the sure balls first, a TV set's pink 4 and a brown 7, the white balance off clipped pixels.
 TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   BILLIARD_TEST_DATA_OR_SKIP(labels, "real-tables/dev/labels.json");
   const std::string set = labels.substr(0, labels.rfind('/'));
@@ -241,7 +243,7 @@ TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   EXPECT_EQ(views["all"]["tables_labelled"], 26);
   EXPECT_GE(views["all"]["tables_within_2px"].get<int>(), 18) << views;
   EXPECT_GE(views["all"]["classed"].get<int>(), 90) << views;
-  EXPECT_GE(views["all"]["identity"].get<double>(), 0.80) << views;
+  EXPECT_GE(views["all"]["identity"].get<double>(), 0.91) << views;
   // Every miss and every false detection has its cause.
   nlohmann::json results;
   std::ifstream(out / "report/detection_results.json") >> results;
