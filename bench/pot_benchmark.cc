@@ -58,12 +58,7 @@ Check Simulate(const Table& t, std::vector<table::SceneBall> balls, const physic
   table::TableSimulation sim(t.geometry, t.p, balls, o);
   sim.Run();
   Check c;
-  for (const table::TableEvent& e : sim.events()) {
-    if (e.type == table::EventType::kBallBall && (e.ball == 0 || e.other == 0)) {
-      c.first_contact = e.ball == 0 ? e.other : e.ball;
-      break;
-    }
-  }
+  c.first_contact = table::FirstBallMet(sim.events(), 0);
   c.potted = sim.pocket(object) && *sim.pocket(object) == pocket;
   c.cue_pocket = sim.pocket(cue);
   c.legal = c.potted && c.first_contact == k && !c.cue_pocket;

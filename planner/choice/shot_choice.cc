@@ -367,13 +367,7 @@ StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelP
   sim_options.five_dof = motion;
   table::TableSimulation sim(table, params, start, sim_options);
   sim.Run(kLongestStroke);
-  for (const table::TableEvent& e : sim.events()) {
-    if (e.type != table::EventType::kBallBall) continue;
-    if (e.ball == 0 || e.other == 0) {
-      result.first_contact = e.ball == 0 ? e.other : e.ball;
-      break;
-    }
-  }
+  result.first_contact = table::FirstBallMet(sim.events(), 0);
   for (std::size_t i = 0; i < sim.ball_count(); ++i) {
     if (sim.pocket(i)) {
       if (sim.id(i) == 0) {

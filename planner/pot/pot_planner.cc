@@ -308,10 +308,8 @@ class PotSearch {
       played.sim->RunUntil(KsFate(*played.sim));
     }
     PotOutcome& o = played.outcome;
+    o.first_contact = table::FirstBallMet(played.sim->events(), 0);
     for (const TableEvent& e : played.sim->events()) {
-      if (o.first_contact < 0 && e.type == EventType::kBallBall && (e.ball == 0 || e.other == 0)) {
-        o.first_contact = e.ball == 0 ? e.other : e.ball;
-      }
       if (e.type == EventType::kBallPocket && e.ball == object_id_) {
         played.arrival_speed = StateBefore(*played.sim, object, e.time).segment<2>(physics::kVx).norm();
       }

@@ -115,6 +115,25 @@ TEST(ShotFit, RecoversHiddenConstantsFromTwentyShots) {
   EXPECT_LT(fit.median_cue_rmse, 0.005);
 }
 
+// Shots of one ball from the table's centre, struck below, at and above the centre (so that
+// they slide), simulated with `truth`, tracked every 20 ms; by default without noise and
+// without thinning.
+std::vector<TrackedShot> LoneBallShots(const table::TableGeometry& table,
+                                       const physics::ModelParameters& truth, double noise = 0.0,
+                                       double thinning = 0.0) {
+  std::vector<TrackedShot> shots;
+  for (int i = 0; i < 4; ++i) {
+    Strike s;
+    s.stroke.speed = 2.0 + 0.4 * i;
+    s.stroke.heading = 0.3 + 1.4 * i;
+    s.stroke.tip_height = (0.3 - 0.2 * i) * truth.ball.radius;
+    s.time = 0.01;
+    shots.push_back(SimulateTrackedShot(table, truth, {{1.42, 0.71}}, 0, s, 6.0, 0.02, noise,
+                                        thinning, 100 + i));
+  }
+  return shots;
+}
+
 // A constant no shot excites: one ball alone on the table never meets another, so nothing says
 // what the balls' restitution is; the fit reports it as not identifiable and keeps the prior,
 // while the cloth's friction, which every shot shows, is fitted.
@@ -122,16 +141,7 @@ TEST(ShotFit, ReportsAConstantNoShotExcitesAsNotIdentifiable) {
   const table::TableGeometry table = Carom();
   const physics::ModelParameters prior = params::LoadParameters("carom");
   const physics::ModelParameters truth = WithConstants(prior, {Constant::kMu}, {0.18});
-  std::vector<TrackedShot> shots;
-  for (int i = 0; i < 4; ++i) {
-    Strike s;
-    s.stroke.speed = 2.0 + 0.4 * i;
-    s.stroke.heading = 0.3 + 1.4 * i;
-    s.stroke.tip_height = (0.3 - 0.2 * i) * prior.ball.radius;
-    s.time = 0.01;
-    shots.push_back(SimulateTrackedShot(table, truth, {{1.42, 0.71}}, 0, s, 6.0, 0.02, 0.001,
-                                        0.002, 100 + i));
-  }
+  const std::vector<TrackedShot> shots = LoneBallShots(table, truth, 0.001, 0.002);
   FitOptions options;
   options.constants = {Constant::kMu, Constant::kBallBall};
   batch::ThreadPool pool(2);
@@ -142,23 +152,6 @@ TEST(ShotFit, ReportsAConstantNoShotExcitesAsNotIdentifiable) {
   EXPECT_FALSE(fit.constants[1].identifiable);
   EXPECT_EQ(fit.constants[1].value, prior.collision.ball_restitution);
   EXPECT_EQ(fit.params.collision.ball_restitution, prior.collision.ball_restitution);
-}
-
-// Shots of one ball from the table's centre, struck below, at and above the centre (so that
-// they slide), simulated with `truth`, tracked every 20 ms without thinning and without noise.
-std::vector<TrackedShot> LoneBallShots(const table::TableGeometry& table,
-                                       const physics::ModelParameters& truth) {
-  std::vector<TrackedShot> shots;
-  for (int i = 0; i < 4; ++i) {
-    Strike s;
-    s.stroke.speed = 2.0 + 0.4 * i;
-    s.stroke.heading = 0.3 + 1.4 * i;
-    s.stroke.tip_height = (0.3 - 0.2 * i) * truth.ball.radius;
-    s.time = 0.01;
-    shots.push_back(
-        SimulateTrackedShot(table, truth, {{1.42, 0.71}}, 0, s, 6.0, 0.02, 0.0, 0.0, 100 + i));
-  }
-  return shots;
 }
 
 // The uncertainty counts what the residuals really say. The same shots tracked with noise of the

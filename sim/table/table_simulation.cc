@@ -49,6 +49,15 @@ constexpr double kParallel = 1e-9;  // |sin| between two directions taken as one
 
 }  // namespace
 
+int FirstBallMet(const std::vector<TableEvent>& events, int id) {
+  for (const TableEvent& e : events) {
+    if (e.type == EventType::kBallBall && (e.ball == id || e.other == id)) {
+      return e.ball == id ? e.other : e.ball;
+    }
+  }
+  return -1;
+}
+
 const char* EventTypeName(EventType type) {
   switch (type) {
     case EventType::kTransition:

@@ -58,6 +58,10 @@ struct TableEvent {
   double impulse = 0.0;  // the normal impulse of an impact [N s]
 };
 
+// The id of the first ball that ball `id` meets in `events` (a kBallBall event), -1 if none:
+// what a stroke's legality turns on.
+int FirstBallMet(const std::vector<TableEvent>& events, int id);
+
 struct TableSimulationOptions {
   CushionModel cushion_model = CushionModel::kMathavan2010;
   // kMathavan2010's steps per approach momentum (ResolveCushionImpact): fewer for a search that

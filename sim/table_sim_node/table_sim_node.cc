@@ -573,12 +573,7 @@ PotResult TableSimNode::PlayPot(int id, const PotShot& pot, const table::TableGe
   table::TableSimulationOptions motion;
   motion.five_dof = model_choice::TableMotion(plant_);
   const table::TableSimulation sim = PlayOut(geometry, balls, command, motion);
-  for (const table::TableEvent& e : sim.events()) {
-    if (e.type == table::EventType::kBallBall && (e.ball == kCueBall || e.other == kCueBall)) {
-      result.first_contact = e.ball == kCueBall ? e.other : e.ball;
-      break;
-    }
-  }
+  result.first_contact = table::FirstBallMet(sim.events(), kCueBall);
   balls.clear();
   scene.final_balls.clear();
   scene.pockets.clear();
@@ -764,12 +759,7 @@ GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeo
   table::TableSimulationOptions motion;
   motion.five_dof = model_choice::TableMotion(plant_);
   const table::TableSimulation sim = PlayOut(geometry, balls, command, motion);
-  for (const table::TableEvent& e : sim.events()) {
-    if (e.type == table::EventType::kBallBall && (e.ball == kCueBall || e.other == kCueBall)) {
-      shot.first_contact = e.ball == kCueBall ? e.other : e.ball;
-      break;
-    }
-  }
+  shot.first_contact = table::FirstBallMet(sim.events(), kCueBall);
   bool scratch = false;
   std::vector<table::SceneBall> rest;
   for (std::size_t i = 0; i < sim.ball_count(); ++i) {
