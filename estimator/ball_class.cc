@@ -23,6 +23,27 @@ BallClass PoolBall(int number) {
   return static_cast<BallClass>(number);
 }
 
+std::vector<BallClass> ClassesIn(BallSet set) {
+  std::vector<BallClass> classes = {BallClass::kCue};
+  switch (set) {
+    case BallSet::kPool:
+      for (int number = 1; number <= 15; ++number) classes.push_back(PoolBall(number));
+      break;
+    case BallSet::kSnooker:
+      classes.insert(classes.end(), {BallClass::kRed, BallClass::kYellow, BallClass::kGreen,
+                                     BallClass::kBrown, BallClass::kBlue, BallClass::kPink,
+                                     BallClass::kBlack});
+      break;
+    case BallSet::kCarom:
+      classes.insert(classes.end(), {BallClass::kRed, BallClass::kYellow});
+      break;
+    case BallSet::kBlackball:
+      classes.insert(classes.end(), {BallClass::kRed, BallClass::kYellow, BallClass::kBlack});
+      break;
+  }
+  return classes;
+}
+
 std::string BallClassName(BallClass ball_class) {
   switch (ball_class) {
     case BallClass::kUnknown:

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace billiard::estimator {
 
@@ -36,6 +37,10 @@ enum class BallClass : std::int8_t {
 
 // The class of pool ball `number` (1-15).
 BallClass PoolBall(int number);
+
+// The classes of a set's balls, each once, the cue ball first: what ball_identity.h may call a
+// ball of the set.
+std::vector<BallClass> ClassesIn(BallSet set);
 
 // "cue", "1".."15", "red", "yellow", ... or "unknown".
 std::string BallClassName(BallClass ball_class);

@@ -14,6 +14,12 @@ DetectorOptions ForTheBalls(DetectorOptions options, const camera::CameraModel& 
   return options;
 }
 
+// The tracker tells apart the classes of the same balls.
+TrackerOptions ForTheBalls(TrackerOptions options, const physics::ModelParameters& params) {
+  options.ball_set = BallSetOf(params.name);
+  return options;
+}
+
 // A ball's centre lies at least its radius inside the cushions' noses; a refinement further out
 // than kCushionSlack radii (the detector's noise is a fiftieth of a radius) has outlined the
 // cushion's edge beside a ball that bounced off it, where the prediction still went on into the
@@ -34,7 +40,7 @@ BallEstimator::BallEstimator(const camera::CameraModel& camera,
       params_(params),
       options_(options),
       detector_(ForTheBalls(options.detector, camera, params)),
-      tracker_(params, options.tracker) {}
+      tracker_(params, ForTheBalls(options.tracker, params)) {}
 
 Eigen::Vector2d BallEstimator::ToTable(const Eigen::Vector2d& pixel) const {
   return camera_.Unproject(pixel, params_.ball.radius).head<2>();

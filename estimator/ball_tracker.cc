@@ -11,34 +11,79 @@ namespace billiard::estimator {
 
 namespace {
 
-// How much a detection's class disagrees with its track's: the product of both confidences when
-// both are known and differ, else 0.
+// How much a detection's class disagrees with its track's: how much less likely the track holds
+// the detection's class than its likeliest, times the detection's confidence; 0 when either is
+// unknown. Two tracks whose identities a contact left even cost the same either way, so that
+// their positions decide.
 double ClassMismatch(const TrackedBall& track, const ClassEvidence& detection) {
-  if (track.ball_class == BallClass::kUnknown || detection.ball_class == BallClass::kUnknown ||
-      track.ball_class == detection.ball_class) {
+  if (track.ball_class == BallClass::kUnknown || detection.ball_class == BallClass::kUnknown) {
     return 0.0;
   }
-  return track.class_confidence * detection.confidence;
+  double probability = 0.0;
+  for (const ClassEvidence& c : track.class_belief) {
+    if (c.ball_class == detection.ball_class) probability = c.confidence;
+  }
+  return (track.class_confidence - probability) * detection.confidence;
 }
 
-// Adds a detection's class to its track's votes and takes the track's class from them.
+// The track's class: its likeliest, unknown while no class is likelier than every other (a
+// track no detection has yet named).
+void TakeLikeliestClass(TrackedBall* track) {
+  track->ball_class = BallClass::kUnknown;
+  track->class_confidence = 0;
+  double runner_up = 0;
+  for (const ClassEvidence& c : track->class_belief) {
+    if (c.confidence > track->class_confidence) {
+      runner_up = track->class_confidence;
+      track->ball_class = c.ball_class;
+      track->class_confidence = c.confidence;
+    } else {
+      runner_up = std::max(runner_up, c.confidence);
+    }
+  }
+  if (!(track->class_confidence > runner_up)) {
+    track->ball_class = BallClass::kUnknown;
+    track->class_confidence = 0;
+  }
+}
+
+// Bayes' rule, with the detection's class as the evidence (the likelihood ratio at the top of
+// ball_tracker.h).
 void AddClassEvidence(const ClassEvidence& detection, TrackedBall* track) {
   if (detection.ball_class == BallClass::kUnknown || !(detection.confidence > 0)) return;
-  auto vote = std::find_if(track->class_votes.begin(), track->class_votes.end(),
-                           [&](const ClassEvidence& v) { return v.ball_class == detection.ball_class; });
-  if (vote == track->class_votes.end()) {
-    track->class_votes.push_back({detection.ball_class, 0.0});
-    vote = track->class_votes.end() - 1;
+  const double ratio =
+      std::min(1.0 / std::max(1.0 - detection.confidence, 0.0), kMaxClassLikelihoodRatio);
+  double total = 0;
+  for (ClassEvidence& c : track->class_belief) {
+    if (c.ball_class == detection.ball_class) c.confidence *= ratio;
+    total += c.confidence;
   }
-  vote->confidence += detection.confidence;
-  double total = 1.0;  // one unseen vote: a single detection is not yet certain
-  const ClassEvidence* best = &track->class_votes.front();
-  for (const ClassEvidence& v : track->class_votes) {
-    total += v.confidence;
-    if (v.confidence > best->confidence) best = &v;
+  for (ClassEvidence& c : track->class_belief) c.confidence /= total;
+  TakeLikeliestClass(track);
+}
+
+// A belief moved `weight` of the way to another (over the same classes in the same order).
+std::vector<ClassEvidence> Blend(std::vector<ClassEvidence> belief,
+                                 const std::vector<ClassEvidence>& toward, double weight) {
+  for (std::size_t k = 0; k < belief.size(); ++k) {
+    belief[k].confidence += weight * (toward[k].confidence - belief[k].confidence);
   }
-  track->ball_class = best->ball_class;
-  track->class_confidence = best->confidence / total;
+  return belief;
+}
+
+// Whether two balls met over the last `dt`, their relative motion taken as straight: apart at its
+// start, closing faster than `closing_speed`, their centres passing within `contact`. Balls still
+// touching after they met, or pushed along in a cluster, have met once already.
+bool Met(const TrackedBall& a, const TrackedBall& b, double dt, double contact,
+         double closing_speed) {
+  const Eigen::Vector2d end = a.position() - b.position();
+  const Eigen::Vector2d travel = (a.velocity() - b.velocity()) * dt;
+  const Eigen::Vector2d start = end - travel;
+  if (start.norm() < contact || -start.dot(travel) <= closing_speed * dt * start.norm()) {
+    return false;
+  }
+  const double s = std::min(-start.dot(travel) / travel.squaredNorm(), 1.0);
+  return (start + s * travel).norm() < contact;
 }
 
 using Vector6 = Eigen::Matrix<double, 6, 1>;
@@ -94,7 +139,30 @@ Eigen::Matrix<double, 7, 7> TrackedBall::BallCovariance(double radius) const {
 }
 
 BallTracker::BallTracker(const physics::ModelParameters& params, TrackerOptions options)
-    : params_(params), options_(options) {}
+    : params_(params), options_(options) {
+  const std::vector<BallClass> classes = ClassesIn(options_.ball_set);
+  for (BallClass c : classes) uniform_belief_.push_back({c, 1.0 / classes.size()});
+}
+
+std::vector<std::vector<ClassEvidence>> BallTracker::IdentitiesAfterContacts(double dt) const {
+  const double contact = kContactRadii * params_.ball.radius;
+  std::vector<std::vector<ClassEvidence>> mixed;
+  for (const TrackedBall& a : tracks_) {
+    std::vector<const TrackedBall*> met;
+    for (const TrackedBall& b : tracks_) {
+      if (&a != &b && Met(a, b, dt, contact, options_.swap_speed)) met.push_back(&b);
+    }
+    // Each ball met leaves `swap_at_contact` of a chance to be on this track; several at once
+    // share it, up to an even chance among all of them.
+    const double n = static_cast<double>(met.size());
+    std::vector<ClassEvidence> belief = a.class_belief;
+    for (const TrackedBall* b : met) {
+      belief = Blend(belief, b->class_belief, 2.0 * options_.swap_at_contact / (n + 1.0));
+    }
+    mixed.push_back(std::move(belief));
+  }
+  return mixed;
+}
 
 void BallTracker::Advance(TrackedBall& t, double time) const {
   const double dt = time - t.time;
@@ -199,7 +267,12 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
   if (time < time_) return false;
   const double dt = tracks_.empty() ? 0.0 : time - time_;
   time_ = time;
-  for (TrackedBall& t : tracks_) Advance(t, time);
+  const double drift = 1.0 - std::exp(-options_.class_drift * dt);
+  for (TrackedBall& t : tracks_) {
+    Advance(t, time);
+    t.class_belief = Blend(t.class_belief, uniform_belief_, drift);
+  }
+  std::vector<std::vector<ClassEvidence>> after_contacts = IdentitiesAfterContacts(dt);
   const auto class_of = [&](std::size_t j) {
     return j < classes.size() ? classes[j] : ClassEvidence{};
   };
@@ -218,6 +291,8 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
   const std::vector<int> assigned = AssignMinimumCost(cost, gate);
   std::vector<bool> used(detections.size(), false);
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    tracks_[i].class_belief = std::move(after_contacts[i]);
+    TakeLikeliestClass(&tracks_[i]);
     if (assigned[i] < 0) continue;
     TrackedBall& t = tracks_[i];
     Correct(t, detections[assigned[i]]);
@@ -246,6 +321,8 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
     // A sure ball is published from its first frame: the hits guard against what flickers
     // (a highlight, a cue tip), not against a ball the detector has no doubt about.
     t.confirmed = options_.hits_to_confirm <= 1 || class_of(j).score >= options_.sure_score;
+    t.class_belief = uniform_belief_;
+    TakeLikeliestClass(&t);
     AddClassEvidence(class_of(j), &t);
     tracks_.push_back(t);
   }

@@ -16,10 +16,24 @@
 // gated by how far the fastest ball moves in a frame, so that a ball struck next to others keeps
 // its identity and balls passing close do not swap. A detection whose class (ball_identity.h)
 // disagrees with its track's costs kClassMismatchRadii ball radii more, in proportion to how sure
-// both are: two balls of different colours passing close keep their tracks.
-// Class: each track sums the confidence of every class its detections were given; its class is
-// the largest sum, its confidence that sum over all of them and one more (a single confident
-// detection is not yet certain; disagreeing ones make it less so).
+// both are: two balls of different colours passing close keep their tracks. The association
+// weighs the identities from before the frame's contacts: what decides who left an impact on
+// which path is who came into it.
+// Class: each track holds the probability of each class of the ball set (a discrete Bayes filter,
+// the forward pass of a hidden Markov model over the ball's identity; Rabiner 1989), uniform when
+// the track starts. A detection's class is evidence: a class given with confidence q is taken
+// 1 / (1 - q) times likelier than another (the confidence is one less the ratio of the class's
+// cost to the next best's, ball_identity.h), at most kMaxClassLikelihoodRatio. Between
+// detections the identity can change without being seen:
+//  - at a contact: two tracks whose balls meet (apart at the frame's start, approaching faster
+//    than swap_speed, their closest approach within kContactRadii ball radii) may leave on each other's
+//    paths, since the predictions from before an impact say nothing of after it; each then takes
+//    swap_at_contact of the other's probabilities (0.5: no telling which is which), so that the
+//    next detections decide where a swap left a track on the wrong ball;
+//  - slowly, at class_drift per second (a swap or a wrong class the tracker did not notice),
+//    so that no history outweighs a few consistent detections.
+// The track's class is the likeliest, its confidence that probability. Touching balls at rest (a
+// rack) do not swap, nor blur each other's identities.
 // Spin is observable only while rolling (w = z x v / r, about the horizontal); it is published with
 // its variance, and with a variance of kUnobservedSpinVariance while sliding and for wz.
 #pragma once
@@ -34,6 +48,12 @@ namespace billiard::estimator {
 
 inline constexpr double kUnobservedSpinVariance = 1e6;  // [(rad/s)^2]
 inline constexpr double kClassMismatchRadii = 1.0;
+// A detection's class confidence is read as a likelihood ratio of at most this: no single frame
+// makes a track certain.
+inline constexpr double kMaxClassLikelihoodRatio = 100.0;
+// Balls whose centres pass within this many radii have touched (2), or nearly: near enough that
+// the association may have crossed their tracks.
+inline constexpr double kContactRadii = 2.2;
 
 // What a detection says of which ball it is (ball_identity.h), and how sure the detector is that
 // it is a ball at all (BallDetection::score; 0 when not given).
@@ -55,6 +75,13 @@ struct TrackerOptions {
   // Jerk noise density [m^2/s^5]: a rolling ball's acceleration, 5/7 mu_r g against v, only
   // turns with v, and a ball at rest has none; the phase changes are left to the maneuver test.
   double jerk_density = 0.005;
+  // Identity (the class filter above): the set whose classes a track may be, how much of each
+  // other's identity two balls take when they meet, faster than what relative speed [m/s], and
+  // the drift of an identity unobserved [1/s].
+  BallSet ball_set = BallSet::kPool;
+  double swap_at_contact = 0.5;
+  double swap_speed = 0.05;
+  double class_drift = 0.02;
 };
 
 struct TrackedBall {
@@ -67,7 +94,7 @@ struct TrackedBall {
   bool confirmed = false;
   BallClass ball_class = BallClass::kUnknown;
   double class_confidence = 0;
-  std::vector<ClassEvidence> class_votes;  // the summed confidence of each class seen
+  std::vector<ClassEvidence> class_belief;  // the probability of each class of the ball set
 
   Eigen::Vector2d position() const { return state.head<2>(); }
   Eigen::Vector2d velocity() const { return state.segment<2>(2); }
@@ -100,9 +127,13 @@ class BallTracker {
                             Eigen::Matrix<double, 6, 1>* after,
                             Eigen::Matrix<double, 6, 6>* covariance) const;
   void Correct(TrackedBall& track, const Eigen::Vector2d& measured) const;
+  // Each track's identity once the contacts over the `dt` before its current (advanced) state
+  // have mixed it with the balls it met (see the top of the file).
+  std::vector<std::vector<ClassEvidence>> IdentitiesAfterContacts(double dt) const;
 
   physics::ModelParameters params_;
   TrackerOptions options_;
+  std::vector<ClassEvidence> uniform_belief_;  // a new track's: every class of the set alike
   std::vector<TrackedBall> tracks_;
   int next_id_ = 0;
   double time_ = -1e300;
