@@ -126,6 +126,67 @@ TEST(TableFinder, AnArmOverACornerLeavesTheSidesWhereTheyAre) {
   }
 }
 
+// The largest distance [px] of the ends of each side of `expected` from the line of the same side
+// of `found` (as bench-detect judges a table: within 2 px per side).
+double SideError(const TableRegion& found, const TableRegion& expected) {
+  double worst = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector3d line =
+        found.corners[i].homogeneous().cross(found.corners[(i + 1) % 4].homogeneous());
+    for (const Eigen::Vector2d& end : {expected.corners[i], expected.corners[(i + 1) % 4]}) {
+      worst = std::max(worst, std::abs(line.dot(end.homogeneous())) / line.head<2>().norm());
+    }
+  }
+  return worst;
+}
+
+// Clutter along a cushion does not move the sides: a row of balls lying against the near long
+// cushion (its outline a straight row that could pass for the cushion's edge), and a dark bar across
+// the middle of the far rail and cushion (an arm, a sleeve, reaching in). The sides found are those
+// of the same frame without the clutter (which the test above holds to the camera's) within
+// kSideTolerancePx, bench-detect's criterion on the real frames. Not yet held: the row seen from the
+// end camera, whose view shows the cushion's face as a band with an edge at each side; the balls
+// hide the inner edge (the nose's foot, where the surface ends) along half the side, so that the
+// outer one, seen whole, is taken (6.4 px off; NoseLine's innermost line nearly as well supported,
+// kNoseOfBest, which an old cloth's worn track needs). Left as a known limit (estimator/README.md).
+constexpr double kSideTolerancePx = 2.0;
+TEST(TableFinder, ARowOfBallsAlongACushionOrAnArmAcrossARailLeavesTheSides) {
+  const physics::TableParameters& t = Pool().table;
+  const double r = Pool().ball.radius;
+  for (const Scene& scene : Cameras()) {
+    render::RenderOptions options;
+    options.exposure_s = 0;
+    options.cloth = {60, 110, 30};
+    options.cushion = options.cloth * 0.8;
+    const render::TableRenderer renderer(scene.camera, Pool(), options);
+    const TableSearch clean = FindTable(renderer.Render({}, 0.0));
+    ASSERT_TRUE(clean.table) << scene.name << ": " << clean.reason;
+    std::vector<render::RenderBall> row;
+    for (int k = 0; k < 8; ++k) {
+      row.push_back(render::RenderBall::AtRest(k + 1, render::PoolBallColour(k + 1),
+                                               {0.35 + 2 * r * k, r}));
+    }
+    const TableSearch with_row = FindTable(renderer.Render(row, 0.0));
+    ASSERT_TRUE(with_row.table) << scene.name << ": " << with_row.reason;
+    if (std::string(scene.name) != "end") {
+      EXPECT_LT(SideError(*with_row.table, *clean.table), kSideTolerancePx)
+          << scene.name << ", a row of balls along the cushion";
+    }
+    cv::Mat frame = renderer.Render({}, 0.0);
+    const Eigen::Vector2d from = scene.camera.Project({0.6 * t.length, t.width + 0.4, 0.05});
+    const Eigen::Vector2d to = scene.camera.Project({0.55 * t.length, t.width - 0.15, 0.05});
+    const double thickness = (scene.camera.Project({0.55 * t.length, t.width - 0.15, 0.05}) -
+                              scene.camera.Project({0.55 * t.length + 0.1, t.width - 0.15, 0.05}))
+                                 .norm();  // a forearm, 10 cm across
+    cv::line(frame, cv::Point(from.x(), from.y()), cv::Point(to.x(), to.y()),
+             cv::Scalar(40, 45, 60), static_cast<int>(std::lround(thickness)), cv::LINE_AA);
+    const TableSearch with_arm = FindTable(frame);
+    ASSERT_TRUE(with_arm.table) << scene.name << ": " << with_arm.reason;
+    EXPECT_LT(SideError(*with_arm.table, *clean.table), kSideTolerancePx)
+        << scene.name << ", an arm across the far rail";
+  }
+}
+
 // The camera's depth of a table point (its z in the camera frame).
 double Depth(const camera::CameraModel& camera, const Eigen::Vector3d& p) {
   return (camera.rotation * p + camera.translation).z();
