@@ -15,8 +15,9 @@
 // Association: the minimum-cost assignment (assignment.h) of detections to predicted positions,
 // gated by how far the fastest ball moves in a frame, so that a ball struck next to others keeps
 // its identity and balls passing close do not swap. A detection whose class (ball_identity.h)
-// disagrees with its track's costs kClassMismatchRadii ball radii more, in proportion to how sure
-// both are: two balls of different colours passing close keep their tracks. The association
+// disagrees with its track's costs kClassMismatchRadii ball radii more, times the detection's
+// confidence and how much less likely its class is on the track than the track's likeliest: two
+// balls of different colours passing close keep their tracks. The association
 // weighs the identities from before the frame's contacts: what decides who left an impact on
 // which path is who came into it.
 // Class: each track holds the probability of each class of the ball set (a discrete Bayes filter,
@@ -26,8 +27,8 @@
 // cost to the next best's, ball_identity.h), at most kMaxClassLikelihoodRatio. Between
 // detections the identity can change without being seen:
 //  - at a contact: two tracks whose balls meet (apart at the frame's start, approaching faster
-//    than swap_speed, their closest approach within kContactRadii ball radii) may leave on each other's
-//    paths, since the predictions from before an impact say nothing of after it; each then takes
+//    than swap_speed, their closest approach within kContactRadii ball radii) may leave on each
+//    other's paths, since the predictions from before an impact say nothing of after it; each takes
 //    swap_at_contact of the other's probabilities (0.5: no telling which is which), so that the
 //    next detections decide where a swap left a track on the wrong ball;
 //  - slowly, at class_drift per second (a swap or a wrong class the tracker did not notice),

@@ -347,9 +347,9 @@ TEST(BallTracker, TheClassIsTheBayesPosteriorOfTheDetectionsClasses) {
   ASSERT_EQ(track.class_belief.size(), 16u);
   double total = 0;
   for (const ClassEvidence& c : track.class_belief) {
-    const double expected = c.ball_class == PoolBall(3)        ? 25.0 / 49.0
+    const double expected = c.ball_class == PoolBall(3)       ? 25.0 / 49.0
                             : c.ball_class == BallClass::kCue ? 10.0 / 49.0
-                                                               : 1.0 / 49.0;
+                                                              : 1.0 / 49.0;
     EXPECT_NEAR(c.confidence, expected, 1e-12) << BallClassName(c.ball_class);
     total += c.confidence;
   }
@@ -380,26 +380,46 @@ TEST(BallTracker, ConsistentDetectionsOutweighAnyHistoryWithinAFewFrames) {
   }
 }
 
-// The cue ball rolling at 3 m/s into the 5 at rest, full and stunned: the cue ball stops where
-// it met the 5, which leaves at 3 m/s. Seen at 30 Hz, the cue ball's track expects it 100 mm on
+// The cue ball rolling at 3 m/s from (0.3, 0.6), struck at 0.5 s, into the 5 at rest, full and
+// stunned, `frames_to_impact` frames of 30 Hz after the strike: the cue ball stops where it meets
+// the 5, which leaves at 3 m/s.
+struct StunShot {
+  static constexpr double kRate = 30.0, kSpeed = 3.0, kStrike = 0.5;
+  explicit StunShot(double frames_to_impact)
+      : impact(kStrike + frames_to_impact / kRate),
+        impact_frame(static_cast<int>(std::ceil(impact * kRate))),
+        object(cue_start.x() + kSpeed * (impact - kStrike) + 2.0 * Pool().ball.radius, 0.6) {}
+  Eigen::Vector2d Cue(double t) const {
+    return cue_start +
+           Eigen::Vector2d(kSpeed * std::clamp(t - kStrike, 0.0, impact - kStrike), 0.0);
+  }
+  Eigen::Vector2d Object(double t) const {
+    return object + Eigen::Vector2d(kSpeed * std::max(0.0, t - impact), 0.0);
+  }
+  const double impact;
+  const int impact_frame;
+  const Eigen::Vector2d cue_start{0.3, 0.6};
+  const Eigen::Vector2d object;
+};
+
+// The track nearest `x`.
+const TrackedBall& TrackAt(const BallTracker& tracker, const Eigen::Vector2d& x) {
+  const TrackedBall* nearest = &tracker.tracks().front();
+  for (const TrackedBall& t : tracker.tracks()) {
+    if ((t.position() - x).norm() < (nearest->position() - x).norm()) nearest = &t;
+  }
+  return *nearest;
+}
+
+// The stun shot met a tenth of a frame after a frame. The cue ball's track expects it 100 mm on
 // and takes the 5's detection (about 57 mm from it, the 5's track 57 mm from the cue ball's: 114
-// mm in all against 180): the swap the closed loop showed, which motion alone cannot tell. The contact
-// blurs both tracks' identities, so that the detector's next classes name them right at once.
+// mm in all against 180): the swap the closed loop showed, which motion alone cannot tell. The
+// contact blurs both tracks' identities, so that the detector's next classes name them right at
+// once.
 TEST(BallTracker, AContactLeavesTheIdentitiesToTheNextDetections) {
-  constexpr double kRate = 30.0, kSpeed = 3.0, kSigma = 0.4e-3;
-  const double d = 2.0 * Pool().ball.radius;
-  // Struck at 0.5 s (frame 15), the 5 met a tenth of a frame after frame 21.
-  const double impact = 0.5 + 6.1 / kRate;
-  const Eigen::Vector2d cue_start(0.3, 0.6), object(cue_start.x() + kSpeed * (impact - 0.5) + d, 0.6);
-  const auto cue_at = [&](double t) {
-    const double s = std::clamp(t - 0.5, 0.0, impact - 0.5);
-    return Eigen::Vector2d(cue_start + Eigen::Vector2d(kSpeed * s, 0.0));
-  };
-  const auto object_at = [&](double t) {
-    return Eigen::Vector2d(object + Eigen::Vector2d(kSpeed * std::max(0.0, t - impact), 0.0));
-  };
+  constexpr double kSigma = 0.4e-3;
+  const StunShot shot(6.1);
   const ClassEvidence cue{BallClass::kCue, 0.95}, five{PoolBall(5), 0.95};
-  const int impact_frame = static_cast<int>(std::ceil(impact * kRate));
   for (double swap : {0.0, 0.5}) {
     TrackerOptions options;
     options.measurement_sigma = kSigma;
@@ -410,31 +430,25 @@ TEST(BallTracker, AContactLeavesTheIdentitiesToTheNextDetections) {
     const auto seen = [&](const Eigen::Vector2d& x) {
       return Eigen::Vector2d(x + Eigen::Vector2d(noise(rng), noise(rng)));
     };
-    const auto track_at = [&](const Eigen::Vector2d& x) {
-      const TrackedBall* nearest = &tracker.tracks().front();
-      for (const TrackedBall& t : tracker.tracks()) {
-        if ((t.position() - x).norm() < (nearest->position() - x).norm()) nearest = &t;
-      }
-      return *nearest;
-    };
     // Named in every frame until the strike, and once more, as by a full detection, 5 frames
     // after the impact.
     int cue_track = -1;
-    for (int f = 0; f <= impact_frame + 5; ++f) {
-      const double t = f / kRate;
-      const bool named = t < 0.5 || f == impact_frame + 5;
+    for (int f = 0; f <= shot.impact_frame + 5; ++f) {
+      const double t = f / StunShot::kRate;
+      const bool named = t < StunShot::kStrike || f == shot.impact_frame + 5;
       ASSERT_TRUE(tracker.Update(
-          t, {seen(cue_at(t)), seen(object_at(t))},
+          t, {seen(shot.Cue(t)), seen(shot.Object(t))},
           named ? std::vector<ClassEvidence>{cue, five} : std::vector<ClassEvidence>{}));
-      if (f == 0) cue_track = track_at(cue_at(t)).id;
+      if (f == 0) cue_track = TrackAt(tracker, shot.Cue(t)).id;
       // The scene is the swap it claims: from the impact the cue ball's track follows the 5.
-      if (f == impact_frame) {
-        ASSERT_EQ(track_at(object_at(t)).id, cue_track) << "no swap: nothing tested";
+      if (f == shot.impact_frame) {
+        ASSERT_EQ(TrackAt(tracker, shot.Object(t)).id, cue_track) << "no swap: nothing tested";
       }
     }
     ASSERT_EQ(tracker.tracks().size(), 2u);
-    const double t = (impact_frame + 5) / kRate;
-    const TrackedBall on_cue = track_at(cue_at(t)), on_five = track_at(object_at(t));
+    const double t = (shot.impact_frame + 5) / StunShot::kRate;
+    const TrackedBall& on_cue = TrackAt(tracker, shot.Cue(t));
+    const TrackedBall& on_five = TrackAt(tracker, shot.Object(t));
     // Without the contact's doubt, the tracks' history outweighs a detection; with it, the cue
     // ball is 10 (an even chance times 20) against the 5's 0.5 and the drift's share of the
     // other 14.
@@ -447,6 +461,30 @@ TEST(BallTracker, AContactLeavesTheIdentitiesToTheNextDetections) {
     EXPECT_EQ(on_five.ball_class, PoolBall(5));
     EXPECT_GT(on_five.class_confidence, 0.94);
   }
+}
+
+// The stun shot met 0.65 of a frame before a frame, every frame named: by distance the tracks
+// would cross at the impact (the cue ball's track expects it 65 mm on, 57 mm + 8 mm: 130 mm in all
+// against 114), by the classes seen they do not. The identities weighed are those from before
+// the contact, which the contact then blurs: who came into the impact decides who left it on
+// which path.
+TEST(BallTracker, TheClassesSeenBeforeAContactDecideWhoLeavesItOnWhichPath) {
+  const StunShot shot(6.35);
+  const ClassEvidence cue{BallClass::kCue, 0.95}, five{PoolBall(5), 0.95};
+  BallTracker tracker(Pool());
+  int cue_track = -1, five_track = -1;
+  for (int f = 0; f <= shot.impact_frame + 3; ++f) {
+    const double t = f / StunShot::kRate;
+    ASSERT_TRUE(tracker.Update(t, {shot.Cue(t), shot.Object(t)}, {cue, five}));
+    if (f == 0) {
+      cue_track = TrackAt(tracker, shot.Cue(t)).id;
+      five_track = TrackAt(tracker, shot.Object(t)).id;
+    }
+    EXPECT_EQ(TrackAt(tracker, shot.Cue(t)).id, cue_track) << "frame " << f;
+    EXPECT_EQ(TrackAt(tracker, shot.Object(t)).id, five_track) << "frame " << f;
+  }
+  EXPECT_EQ(TrackAt(tracker, shot.Cue(shot.impact + 0.1)).ball_class, BallClass::kCue);
+  EXPECT_EQ(TrackAt(tracker, shot.Object(shot.impact + 0.1)).ball_class, PoolBall(5));
 }
 
 // A rack: fifteen balls touching at rest, named once a second, and a ball rolling past it 3 radii
@@ -471,9 +509,8 @@ TEST(BallTracker, TouchingBallsAtRestAndABallPassingByKeepTheirIdentities) {
     const double t = f / kRate;
     std::vector<Eigen::Vector2d> seen = rack;
     seen.push_back({1.5 + 0.4 * t, below});
-    ASSERT_TRUE(tracker.Update(t, seen, f % static_cast<int>(kRate) == 0
-                                            ? named
-                                            : std::vector<ClassEvidence>{}));
+    ASSERT_TRUE(tracker.Update(
+        t, seen, f % static_cast<int>(kRate) == 0 ? named : std::vector<ClassEvidence>{}));
   }
   ASSERT_EQ(tracker.tracks().size(), 16u);
   for (std::size_t i = 0; i < tracker.tracks().size(); ++i) {
