@@ -322,7 +322,6 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
     // (a highlight, a cue tip), not against a ball the detector has no doubt about.
     t.confirmed = options_.hits_to_confirm <= 1 || class_of(j).score >= options_.sure_score;
     t.class_belief = uniform_belief_;
-    TakeLikeliestClass(&t);
     AddClassEvidence(class_of(j), &t);
     tracks_.push_back(t);
   }

@@ -61,6 +61,13 @@ std::array<Eigen::Vector3d, 4> TableCorners(double z) {
           Eigen::Vector3d(t.length, t.width, z), Eigen::Vector3d(0, t.width, z)};
 }
 
+// The distance [px] of `p` from the line through side `i` of `table` (corners i and i + 1).
+double DistanceFromSide(const TableRegion& table, int i, const Eigen::Vector2d& p) {
+  const Eigen::Vector3d line =
+      table.corners[i].homogeneous().cross(table.corners[(i + 1) % 4].homogeneous());
+  return std::abs(line.dot(p.homogeneous())) / line.head<2>().norm();
+}
+
 // Each side of the table lies along a side found: its points at a quarter, half and three
 // quarters of its length within kSurfaceTolerancePx of the found side's line, on the cloth or at
 // the nose's height (where the view shows the face of the cushion, the surface found ends at its
@@ -74,12 +81,9 @@ void ExpectTheSurface(const TableRegion& table, const camera::CameraModel& camer
     for (const double z : {0.0, nose}) {
       const Eigen::Vector3d a = TableCorners(z)[i], b = TableCorners(z)[(i + 1) % 4];
       for (int j = 0; j < 4; ++j) {
-        const Eigen::Vector3d line =
-            table.corners[j].homogeneous().cross(table.corners[(j + 1) % 4].homogeneous());
         double worst = 0;
         for (const double t : {0.25, 0.5, 0.75}) {
-          const Eigen::Vector2d p = camera.Project(a + t * (b - a));
-          worst = std::max(worst, std::abs(line.dot(p.homogeneous())) / line.head<2>().norm());
+          worst = std::max(worst, DistanceFromSide(table, j, camera.Project(a + t * (b - a))));
         }
         best = std::min(best, worst);
       }
@@ -131,10 +135,8 @@ TEST(TableFinder, AnArmOverACornerLeavesTheSidesWhereTheyAre) {
 double SideError(const TableRegion& found, const TableRegion& expected) {
   double worst = 0;
   for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector3d line =
-        found.corners[i].homogeneous().cross(found.corners[(i + 1) % 4].homogeneous());
     for (const Eigen::Vector2d& end : {expected.corners[i], expected.corners[(i + 1) % 4]}) {
-      worst = std::max(worst, std::abs(line.dot(end.homogeneous())) / line.head<2>().norm());
+      worst = std::max(worst, DistanceFromSide(found, i, end));
     }
   }
   return worst;
