@@ -473,7 +473,11 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
     });
     if (!overlaps) balls.push_back(ball);
   }
-  return OnCloth(bgr, *table_, cloth_, balls);
+  std::vector<BallDetection> on_cloth = OnCloth(bgr, *table_, cloth_, balls);
+  for (BallDetection& ball : on_cloth) {
+    ball.pixel = CentreOnChroma(lab, ball.pixel, ball.radius_px, MinEdge(cloth_.edge_noise));
+  }
+  return on_cloth;
 }
 
 cv::Mat BallDetector::Smoothed(const cv::Mat& bgr) const {
@@ -516,8 +520,9 @@ std::optional<BallDetection> BallDetector::RefineAt(const cv::Mat& image,
   if (!outline) return std::nullopt;
   const double score =
       EvidenceForBall(bgr, lab, *outline, radius_px, {cloth, cloth_.noise}, 1.0).Score();
-  if (score < options_.min_score) return std::nullopt;
-  return BallDetection{outline->centre, outline->radius, score};
+  if (score < kSureScore) return std::nullopt;
+  return BallDetection{CentreOnChroma(lab, outline->centre, outline->radius, MinEdge(edge_noise)),
+                       outline->radius, score};
 }
 
 }  // namespace billiard::estimator

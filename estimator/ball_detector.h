@@ -98,8 +98,11 @@ class BallDetector {
   std::vector<BallDetection> Detect(const cv::Mat& image);
 
   // The ball near `predicted` (within about one radius of `radius_px`), for a tracker. Before a
-  // table is learnt, the cloth is the colour around the window. Empty when nothing there scores
-  // min_score.
+  // table is learnt, the cloth is the colour around the window. Empty when nothing there is
+  // surely a ball (a score of 0.8, where Detect takes 0.5): where a prediction has overshot a
+  // ball that was stopped or turned (by a collision, a cushion, a pocket's jaw), the outline
+  // found beside it is a part of the ball's, of its shadow or of a cushion's edge, scoring
+  // 0.2-0.75, and the tracker needs a full Detect to find the ball.
   std::optional<BallDetection> RefineAt(const cv::Mat& image, const Eigen::Vector2d& predicted,
                                         double radius_px) const;
 

@@ -20,18 +20,6 @@ TrackerOptions ForTheBalls(TrackerOptions options, const physics::ModelParameter
   return options;
 }
 
-// A ball's centre lies at least its radius inside the cushions' noses; a refinement further out
-// than kCushionSlack radii (the detector's noise is a fiftieth of a radius) has outlined the
-// cushion's edge beside a ball that bounced off it, where the prediction still went on into the
-// rail: the frame gets a full detection instead.
-constexpr double kCushionSlack = 0.1;
-
-bool InsideTheCushions(const Eigen::Vector2d& x, const physics::ModelParameters& params) {
-  const double margin = (1.0 - kCushionSlack) * params.ball.radius;
-  return x.x() >= margin && x.x() <= params.table.length - margin && x.y() >= margin &&
-         x.y() <= params.table.width - margin;
-}
-
 }  // namespace
 
 BallEstimator::BallEstimator(const camera::CameraModel& camera,
@@ -61,11 +49,11 @@ bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats
     for (const Eigen::Vector2d& predicted : tracker_.Predict(time)) {
       const auto found = detector_.RefineAt(
           frame, camera_.Project({predicted.x(), predicted.y(), params_.ball.radius}), radius_px);
-      const Eigen::Vector2d x = found ? ToTable(found->pixel) : Eigen::Vector2d::Zero();
-      if (!found || !InsideTheCushions(x, params_)) {
+      if (!found) {
         full = true;
         break;
       }
+      const Eigen::Vector2d x = ToTable(found->pixel);
       // Two tracks on one ball (a tentative one beside a confirmed one) refine to the same
       // pixel: one measurement, or the copy would seed yet another track.
       bool seen = false;

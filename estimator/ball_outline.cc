@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace billiard::estimator {
@@ -14,13 +15,15 @@ namespace {
 // widely and coarsely (kFirstRange radii either side of the radius, every kFirstStepPx), the
 // second, from about the centre, narrowly and finely (kSecondRange, kSecondStepPx). An edge
 // candidate is a local maximum of the colour's rate of change of at least kEdgeOfRayMax of the
-// ray's largest.
+// ray's largest. CentreOnChroma's round places each edge on the chroma (SettledOnChroma).
 struct RaySampling {
   double range;       // radii either side of the radius
   double step;        // [px]
   double prior_rays;  // the weight of the radius prior, in rays
+  bool on_chroma = false;
 };
 constexpr RaySampling kRounds[] = {{0.5, 1.0, 0.5}, {0.3, 0.5, 0.5}};
+constexpr RaySampling kChromaRound = {0.3, 0.5, 0.5, true};
 constexpr double kEdgeOfRayMax = 0.25;
 // The window holds every ray from a centre that may move a radius.
 constexpr double kWindowRadii = 2.6;
@@ -39,6 +42,83 @@ constexpr int kMinCandidateRays = 6;
 constexpr double kMaxShiftRadii = 1.0, kMaxRadiusChange = 0.4;
 // A ray supports the circle with an edge within max(kSupportPx, kSupportRadii r) of it.
 constexpr double kSupportPx = 1.0, kSupportRadii = 0.08;
+
+// An edge's chroma is compared with the chroma kSideReachPx (at most kSideReachRadii radii) either
+// side of it: past a JPEG's chroma, halved in resolution and smoothed back, which steps over about
+// four pixels. Between them it is read every kChromaStepPx; sides whose chroma differs by less
+// than kMinChromaStep [L*a*b* units] do not place an edge. The window is centred on its own
+// crossing in kSettleRounds rounds; a crossing further than kMaxSettlePx from the fastest change
+// of colour is another edge's.
+constexpr double kSideReachPx = 3.0, kSideReachRadii = 0.5;
+constexpr double kChromaStepPx = 0.25;
+constexpr double kMinChromaStep = 4.0;
+constexpr int kSettleRounds = 3;
+constexpr double kMaxSettlePx = 2.0;
+
+// The peak of the parabola through samples i - 1, i, i + 1 of `rate` (a local maximum), in
+// samples from i.
+double ParabolaPeak(const std::vector<double>& rate, int i) {
+  const double curvature = rate[i - 1] - 2 * rate[i] + rate[i + 1];
+  const double offset = curvature < 0 ? 0.5 * (rate[i - 1] - rate[i + 1]) / curvature : 0.0;
+  return std::clamp(offset, -1.0, 1.0);
+}
+
+// Where along the ray from `centre` in `direction` the chroma is half way between its values
+// `reach` either side of `middle` [px from centre], the crossing nearest `middle`; none when
+// the sides' chroma hardly differs or a side is outside the image.
+std::optional<double> ChromaCrossing(const LabImage& lab, const Eigen::Vector2d& centre,
+                                     const Eigen::Vector2d& direction, double middle,
+                                     double reach) {
+  cv::Vec3f inside, beyond;
+  if (!lab.At(centre + (middle - reach) * direction, &inside) ||
+      !lab.At(centre + (middle + reach) * direction, &beyond)) {
+    return std::nullopt;
+  }
+  const Eigen::Vector2d from(inside[1], inside[2]);
+  const Eigen::Vector2d chroma_step = Eigen::Vector2d(beyond[1], beyond[2]) - from;
+  if (chroma_step.norm() < kMinChromaStep) return std::nullopt;
+  std::optional<double> nearest;
+  double previous_share = 0.0;
+  const int samples = static_cast<int>(2 * reach / kChromaStepPx);
+  for (int i = 0; i <= samples; ++i) {
+    const double s = middle - reach + i * kChromaStepPx;
+    cv::Vec3f colour;
+    lab.At(centre + s * direction, &colour);
+    const double share =
+        (Eigen::Vector2d(colour[1], colour[2]) - from).dot(chroma_step) / chroma_step.squaredNorm();
+    if (i > 0 && (previous_share - 0.5) * (share - 0.5) <= 0 && share != previous_share) {
+      const double crossing = s - kChromaStepPx * (share - 0.5) / (share - previous_share);
+      if (!nearest || std::abs(crossing - middle) < std::abs(*nearest - middle)) {
+        nearest = crossing;
+      }
+    }
+    previous_share = share;
+  }
+  return nearest;
+}
+
+// The edge found at `place` [px from centre along `direction`], placed where the chroma is half
+// way between the colours either side of it, when the chroma steps there; else `place`.
+// On the inner limb of a ball off the camera's axis, lit from above, the camera sees the ball's
+// shaded underside against its own shadow on the cloth: the lightness rises steadily from the
+// outline inwards and hardly steps at it, and only the chroma does. The fastest change of colour
+// lies inside the ball there, on its shading, once a JPEG has blurred the chroma, and the centre
+// moves away from the axis: a scale of the positions about it (+0.087 % through the loop's JPEG),
+// which an identification of the table reads as rolling resistance. A blurred step of chroma is
+// still half way where the step was, and shading changes a ball's chroma much less than its
+// lightness. A change of lightness alone (a grey ball on grey cloth, a grey frame) keeps its
+// fastest change.
+double SettledOnChroma(const LabImage& lab, const Eigen::Vector2d& centre,
+                       const Eigen::Vector2d& direction, double place, double radius) {
+  const double reach = std::min(kSideReachPx, kSideReachRadii * radius);
+  double middle = place;
+  for (int round = 0; round < kSettleRounds; ++round) {
+    const std::optional<double> crossing = ChromaCrossing(lab, centre, direction, middle, reach);
+    if (!crossing || std::abs(*crossing - place) > kMaxSettlePx) return place;
+    middle = *crossing;
+  }
+  return middle;
+}
 
 // The places along each ray from `centre` where the colour changes fastest (frame pixels), and
 // how fast; rays that leave the image have none.
@@ -72,11 +152,9 @@ std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabImage& lab,
           rate[i] < rate[i + 1]) {
         continue;
       }
-      // The peak of the parabola through the maximum and its neighbours.
-      const double curvature = rate[i - 1] - 2 * rate[i] + rate[i + 1];
-      double offset = curvature < 0 ? 0.5 * (rate[i - 1] - rate[i + 1]) / curvature : 0.0;
-      offset = std::clamp(offset, -1.0, 1.0);
-      edges[k].push_back({centre + (from + (i + offset) * step) * direction, rate[i]});
+      double place = from + (i + ParabolaPeak(rate, i)) * step;
+      if (sampling.on_chroma) place = SettledOnChroma(lab, centre, direction, place, radius);
+      edges[k].push_back({centre + place * direction, rate[i]});
     }
   }
   return edges;
@@ -192,6 +270,16 @@ std::optional<BallOutline> FitBallOutline(const LabImage& lab, const Eigen::Vect
   outline.radius = fitted;
   MeasureSupport(edges, radius, &outline);
   return outline;
+}
+
+Eigen::Vector2d CentreOnChroma(const LabImage& lab, const Eigen::Vector2d& centre, double radius,
+                               double min_edge) {
+  Eigen::Vector2d placed = centre;
+  double fitted = radius;
+  const std::array<RayEdges, kOutlineRays> edges =
+      EdgesAlongRays(lab, centre, radius, min_edge, kChromaRound);
+  const bool fitted_ok = FitCircle(edges, radius, kChromaRound.prior_rays, &placed, &fitted);
+  return fitted_ok && (placed - centre).norm() <= kMaxSettlePx ? placed : centre;
 }
 
 }  // namespace billiard::estimator
