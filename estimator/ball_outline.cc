@@ -52,6 +52,9 @@ constexpr double kSupportPx = 1.0, kSupportRadii = 0.08;
 constexpr double kSideReachPx = 3.0, kSideReachRadii = 0.5;
 constexpr double kChromaStepPx = 0.25;
 constexpr double kMinChromaStep = 4.0;
+// A ball's side is white (the cue ball, a stripe's white) when its chroma is under
+// kNeutralChroma and its lightness over kNeutralLightness [L*a*b* units].
+constexpr double kNeutralChroma = 10.0, kNeutralLightness = 30.0;
 constexpr int kSettleRounds = 3;
 constexpr double kMaxSettlePx = 2.0;
 
@@ -65,7 +68,7 @@ double ParabolaPeak(const std::vector<double>& rate, int i) {
 
 // Where along the ray from `centre` in `direction` the chroma is half way between its values
 // `reach` either side of `middle` [px from centre], the crossing nearest `middle`; none when
-// the sides' chroma hardly differs or a side is outside the image.
+// the sides' chroma hardly differs, the inner side is not white, or a side is outside the image.
 std::optional<double> ChromaCrossing(const LabImage& lab, const Eigen::Vector2d& centre,
                                      const Eigen::Vector2d& direction, double middle,
                                      double reach) {
@@ -77,6 +80,9 @@ std::optional<double> ChromaCrossing(const LabImage& lab, const Eigen::Vector2d&
   const Eigen::Vector2d from(inside[1], inside[2]);
   const Eigen::Vector2d chroma_step = Eigen::Vector2d(beyond[1], beyond[2]) - from;
   if (chroma_step.norm() < kMinChromaStep) return std::nullopt;
+  if (std::hypot(inside[1], inside[2]) > kNeutralChroma || inside[0] < kNeutralLightness) {
+    return std::nullopt;
+  }
   std::optional<double> nearest;
   double previous_share = 0.0;
   const int samples = static_cast<int>(2 * reach / kChromaStepPx);
@@ -105,9 +111,10 @@ std::optional<double> ChromaCrossing(const LabImage& lab, const Eigen::Vector2d&
 // lies inside the ball there, on its shading, once a JPEG has blurred the chroma, and the centre
 // moves away from the axis: a scale of the positions about it (+0.087 % through the loop's JPEG),
 // which an identification of the table reads as rolling resistance. A blurred step of chroma is
-// still half way where the step was, and shading changes a ball's chroma much less than its
-// lightness. A change of lightness alone (a grey ball on grey cloth, a grey frame) keeps its
-// fastest change.
+// still half way where the step was, and shading leaves a white ball's chroma where it was (none);
+// a coloured ball's L*a*b* chroma falls with its lightness, so its half-way crossing is not its
+// outline (on exact frames it moves the centre more than the shading did), and it keeps its
+// fastest change, as does a change of lightness alone (a grey frame).
 double SettledOnChroma(const LabImage& lab, const Eigen::Vector2d& centre,
                        const Eigen::Vector2d& direction, double place, double radius) {
   const double reach = std::min(kSideReachPx, kSideReachRadii * radius);

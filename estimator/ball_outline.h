@@ -45,15 +45,16 @@ struct BallOutline {
 std::optional<BallOutline> FitBallOutline(const LabImage& lab, const Eigen::Vector2d& start,
                                           double radius, double min_edge);
 
-// The centre of a found outline (`centre`, `radius` [px]) with each edge placed where the chroma is
-// half way between the colours either side of it, where the chroma steps there (within 2 px of
-// the fastest change of colour); `centre` where too few do. Lit from above, a ball off the
-// camera's axis shows the camera its shaded underside on the limb nearer the axis, about as dark
-// as its own shadow beside it: the lightness hardly steps at the outline there, the fastest
-// change of colour lies inside it (once a JPEG has blurred the chroma), and the centre moves
-// away from the axis: a scale of the positions about it (+0.087 % through the loop's JPEG,
-// ball_estimator_test), which an identification of the table takes for rolling resistance. The
-// detector finds and scores a ball on the fastest changes, and places it with this.
+// The centre of a found outline (`centre`, `radius` [px]) with each edge where the ball's side is
+// white (the cue ball, a stripe's caps) placed where the chroma is half way between the colours
+// either side of it, where the chroma steps there (within 2 px of the fastest change of colour);
+// `centre` where too few do. Lit from above, a ball off the camera's axis shows the camera its
+// shaded underside on the limb nearer the axis, about as dark as its own shadow beside it: the
+// lightness hardly steps at the outline there, the fastest change of colour lies inside it (once a
+// JPEG has blurred the chroma), and the centre moves away from the axis: a scale of the positions
+// about it (+0.087 % through the loop's JPEG, ball_estimator_test), which an identification of the
+// table takes for rolling resistance. The detector finds and scores a ball on the fastest changes,
+// and places it with this.
 Eigen::Vector2d CentreOnChroma(const LabImage& lab, const Eigen::Vector2d& centre, double radius,
                                double min_edge);
 
