@@ -23,7 +23,9 @@ struct RaySampling {
   bool on_chroma = false;
 };
 constexpr RaySampling kRounds[] = {{0.5, 1.0, 0.5}, {0.3, 0.5, 0.5}};
-constexpr RaySampling kChromaRound = {0.3, 0.5, 0.5, true};
+// CentreOnChroma's round: the second round's sampling, from the found centre.
+constexpr RaySampling kChromaRound = {kRounds[1].range, kRounds[1].step, kRounds[1].prior_rays,
+                                      true};
 constexpr double kEdgeOfRayMax = 0.25;
 // The window holds every ray from a centre that may move a radius.
 constexpr double kWindowRadii = 2.6;
