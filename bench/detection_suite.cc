@@ -92,7 +92,9 @@ std::vector<Eigen::Vector2d> Scattered(const physics::TableParameters& table, do
   return placed;
 }
 
-// The label of a frame: each ball's projected centre and radius.
+// The label of a frame: each ball's projected centre and radius. A ball whose centre projects
+// outside the frame (an end view's near balls, below its bottom edge) is less than half in view:
+// ignored, as the real sets' hidden balls are, neither a miss nor a false detection.
 LabelledFrame Label(const std::string& name, const View& view,
                     const std::vector<Eigen::Vector2d>& balls, double r) {
   LabelledFrame frame;
@@ -104,7 +106,9 @@ LabelledFrame Label(const std::string& name, const View& view,
     const Eigen::Vector3d centre(b.x(), b.y(), r);
     const Eigen::Vector2d pixel = view.camera.Project(centre);
     const double depth = (view.camera.rotation * centre + view.camera.translation).z();
-    frame.balls.push_back(pixel);
+    const bool in_view = pixel.x() >= 0 && pixel.y() >= 0 && pixel.x() < view.camera.width &&
+                         pixel.y() < view.camera.height;
+    (in_view ? frame.balls : frame.ignored).push_back(pixel);
     radii.push_back(view.camera.fx * r / depth);
   }
   std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());

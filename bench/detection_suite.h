@@ -10,7 +10,10 @@
 // seen by three cameras: overhead (CameraModel::Overhead, 1280x720, a mild barrel lens), from the
 // side (2 m from the table's middle, 35 degrees up) and from the foot end (a broadcast's view);
 // on the renderer's green cloth and on blue, navy, burgundy and grey ones. A ball's label is the
-// projection of its centre (the silhouette's centre is within 0.1 px of it, table_renderer.h).
+// projection of its centre (the silhouette's centre is within 0.1 px of it, table_renderer.h); a
+// ball whose centre projects outside the frame (the end view's nearest) is ignored, as a real
+// set's hidden balls are. The side and end views see the near cushion hide the lower part of the
+// balls against it.
 #pragma once
 
 #include <cstdint>

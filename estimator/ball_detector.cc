@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 
 #include "estimator/ball_identity.h"
@@ -56,6 +57,9 @@ constexpr double kWindowRadiiAroundTable = 3.0;
 // taken outside the noses near a pocket: an unsure one there is the pocket's dark mouth between
 // its jaws, its rim outlined.
 constexpr double kPocketRadii = 3.0;
+// The near cushion's nose hides what lies beyond it less kNoseMarginPx (or kNoseMarginRadii of a
+// radius): its own edge, found that close to the line fitted through it.
+constexpr double kNoseMarginPx = 1.5, kNoseMarginRadii = 0.1;
 constexpr double kOffSurfaceRadii = 0.5;
 constexpr double kOffClothRadii = 0.5;
 // Unless given, the balls' scale is settled on the first frame with balls: from those scoring at
@@ -107,6 +111,28 @@ bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double rad
 bool InPocketMouth(const TableRegion& table, const Eigen::Vector2d& centre, double radius,
                    double score) {
   return score < kSureScore && NearPocket(table, centre, radius) && !table.Contains(centre);
+}
+
+// The near cushion's nose in an oblique view, as an occluder of the balls against it: the cushion
+// stands between the camera and such a ball and hides its lower part, which is not missing from
+// its outline but out of view. The near side is the one nearest the camera (the largest inverse
+// depth at its middle); an overhead camera sees every ball whole.
+Occluder NearCushion(const TableRegion& table, double radius) {
+  if (table.view != TableView::kOblique) return {};
+  int near = 0;
+  double nearest = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 4; ++i) {
+    const double depth = table.InverseDepthAt(0.5 * (table.corners[i] + table.corners[(i + 1) % 4]));
+    if (depth > nearest) {
+      nearest = depth;
+      near = i;
+    }
+  }
+  const Eigen::Vector2d a = table.corners[near];
+  const Eigen::Vector2d along = (table.corners[(near + 1) % 4] - a).normalized();
+  Eigen::Vector2d normal(along.y(), -along.x());
+  if (normal.dot(table.Centre() - a) > 0) normal = -normal;
+  return {normal, normal.dot(a), std::max(kNoseMarginPx, kNoseMarginRadii * radius)};
 }
 
 // The share of the places on the playing surface of the circle around `ball` (kSurroundRadii) on
@@ -450,7 +476,8 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
              (o.first.pixel - peak.pixel).norm() < kExplainedRadii * radius;
     });
     if (explained) continue;
-    const auto outline = FitBallOutline(lab, peak.pixel, radius, MinEdge(cloth_.edge_noise));
+    const auto outline = FitBallOutline(lab, peak.pixel, radius, MinEdge(cloth_.edge_noise),
+                                        NearCushion(*table_, radius));
     if (!outline || !OnTable(*table_, outline->centre, radius)) continue;
     const double score =
         EvidenceForBall(bgr, lab, *outline, radius,
@@ -475,7 +502,8 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
   }
   std::vector<BallDetection> on_cloth = OnCloth(bgr, *table_, cloth_, balls);
   for (BallDetection& ball : on_cloth) {
-    ball.pixel = CentreOnChroma(lab, ball.pixel, ball.radius_px, MinEdge(cloth_.edge_noise));
+    ball.pixel = CentreOnChroma(lab, ball.pixel, ball.radius_px, MinEdge(cloth_.edge_noise),
+                                NearCushion(*table_, ball.radius_px));
   }
   return on_cloth;
 }
@@ -516,13 +544,15 @@ std::optional<BallDetection> BallDetector::RefineAt(const cv::Mat& image,
     edge_noise = kUnknownEdgeNoise;
   }
   const LabImage lab(bgr, OutlineWindow(predicted, radius_px));
-  const auto outline = FitBallOutline(lab, predicted, radius_px, MinEdge(edge_noise));
+  const Occluder near_cushion = table_ ? NearCushion(*table_, radius_px) : Occluder();
+  const auto outline = FitBallOutline(lab, predicted, radius_px, MinEdge(edge_noise), near_cushion);
   if (!outline) return std::nullopt;
   const double score =
       EvidenceForBall(bgr, lab, *outline, radius_px, {cloth, cloth_.noise}, 1.0).Score();
   if (score < kSureScore) return std::nullopt;
-  return BallDetection{CentreOnChroma(lab, outline->centre, outline->radius, MinEdge(edge_noise)),
-                       outline->radius, score};
+  return BallDetection{
+      CentreOnChroma(lab, outline->centre, outline->radius, MinEdge(edge_noise), near_cushion),
+      outline->radius, score};
 }
 
 }  // namespace billiard::estimator

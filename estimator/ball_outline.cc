@@ -42,6 +42,8 @@ constexpr int kMinCandidateRays = 6;
 // A fit that moves more than kMaxShiftRadii or changes the radius by more than kMaxRadiusChange
 // (relative) found something else.
 constexpr double kMaxShiftRadii = 1.0, kMaxRadiusChange = 0.4;
+// A guess beyond an occluder starts kInViewRadii radii on this side of it (InView).
+constexpr double kInViewRadii = 0.25;
 // A ray supports the circle with an edge within max(kSupportPx, kSupportRadii r) of it.
 constexpr double kSupportPx = 1.0, kSupportRadii = 0.08;
 
@@ -129,13 +131,60 @@ double SettledOnChroma(const LabImage& lab, const Eigen::Vector2d& centre,
   return middle;
 }
 
+Eigen::Vector2d RayDirection(int k) {
+  const double angle = 2 * M_PI * k / kOutlineRays;
+  return {std::cos(angle), std::sin(angle)};
+}
+
+// The outline judged on the rays in view: supporting_rays, seen_rays and largest_gap counted over
+// the rays whose places on the circle `occluder` does not hide (a gap runs over the rays in view
+// between two supporting ones), unless it hides more than half the circle.
+void CountSupportInView(const Occluder& occluder, BallOutline* outline) {
+  for (int k = 0; k < kOutlineRays; ++k) {
+    outline->hidden[k] = occluder.Hides(outline->centre + outline->radius * RayDirection(k));
+  }
+  if (2 * outline->hidden.count() > kOutlineRays) outline->hidden.reset();
+  const OutlineRays seen = ~outline->hidden;
+  outline->seen_rays = static_cast<int>(seen.count());
+  outline->supporting_rays = static_cast<int>((outline->supporting & seen).count());
+  outline->largest_gap = 2 * M_PI;
+  if (outline->supporting_rays == 0) return;
+  // Around the circle from a supporting ray: each gap is one ray's angle more than the rays in
+  // view without support between two supporting ones.
+  int first = 0;
+  while (!(outline->supporting[first] && seen[first])) ++first;
+  int largest_run = 0, run = 0;
+  for (int step = 1; step <= kOutlineRays; ++step) {
+    const int k = (first + step) % kOutlineRays;
+    if (!seen[k]) continue;
+    if (outline->supporting[k]) {
+      largest_run = std::max(largest_run, run);
+      run = 0;
+    } else {
+      ++run;
+    }
+  }
+  outline->largest_gap = 2 * M_PI * (largest_run + 1) / kOutlineRays;
+}
+
+// A ball at least half in view has its centre on this side of the occluder: a guess beyond it (a
+// peak of the votes pulled onto the occluder's own straight edge) is moved back into view, to
+// kInViewRadii radii from it, where the rays from it reach the ball's far edge.
+Eigen::Vector2d InView(const Eigen::Vector2d& start, double radius, const Occluder& occluder) {
+  const double limit = occluder.offset - occluder.margin_px - kInViewRadii * radius;
+  const double beyond = occluder.normal.dot(start) - limit;
+  return occluder.normal.squaredNorm() > 0 && beyond > 0 ? start - beyond * occluder.normal
+                                                         : start;
+}
+
 // The places along each ray from `centre` where the colour changes fastest (frame pixels), and
-// how fast; rays that leave the image have none.
+// how fast; rays that leave the image have none, and `occluder` hides the places beyond it.
 using RayEdges = std::vector<std::pair<Eigen::Vector2d, double>>;
 
 std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabImage& lab,
                                                   const Eigen::Vector2d& centre, double radius,
-                                                  double min_edge, const RaySampling& sampling) {
+                                                  double min_edge, const RaySampling& sampling,
+                                                  const Occluder& occluder) {
   std::array<RayEdges, kOutlineRays> edges;
   const double step = sampling.step;
   const double from = (1.0 - sampling.range) * radius;
@@ -143,8 +192,7 @@ std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabImage& lab,
   std::vector<cv::Vec3f> colour(samples);
   std::vector<double> rate(samples, 0.0);
   for (int k = 0; k < kOutlineRays; ++k) {
-    const double angle = 2 * M_PI * k / kOutlineRays;
-    const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+    const Eigen::Vector2d direction = RayDirection(k);
     bool inside = true;
     for (int i = 0; i < samples && inside; ++i) {
       inside = lab.At(centre + (from + i * step) * direction, &colour[i]);
@@ -163,7 +211,8 @@ std::array<RayEdges, kOutlineRays> EdgesAlongRays(const LabImage& lab,
       }
       double place = from + (i + ParabolaPeak(rate, i)) * step;
       if (sampling.on_chroma) place = SettledOnChroma(lab, centre, direction, place, radius);
-      edges[k].push_back({centre + place * direction, rate[i]});
+      const Eigen::Vector2d point = centre + place * direction;
+      if (!occluder.Hides(point)) edges[k].push_back({point, rate[i]});
     }
   }
   return edges;
@@ -226,9 +275,8 @@ bool FitCircle(const std::array<RayEdges, kOutlineRays>& edges, double expected,
 // How the fitted circle is supported: rays with an edge of at least `min_edge` within a band of
 // it (the edges of the last round, cast from about the fitted centre).
 void MeasureSupport(const std::array<RayEdges, kOutlineRays>& edges, double expected,
-                    BallOutline* outline) {
+                    const Occluder& occluder, BallOutline* outline) {
   const double band = std::max(kSupportPx, kSupportRadii * expected);
-  std::vector<double> angles;
   double strength = 0;
   for (int k = 0; k < kOutlineRays; ++k) {
     double best = 0;
@@ -237,19 +285,12 @@ void MeasureSupport(const std::array<RayEdges, kOutlineRays>& edges, double expe
         best = std::max(best, rate);
       }
     }
-    if (best > 0) {
-      angles.push_back(2 * M_PI * k / kOutlineRays);
-      strength += best;
-    }
+    outline->supporting[k] = best > 0;
+    strength += best;
   }
-  outline->supporting_rays = static_cast<int>(angles.size());
-  outline->edge_strength = angles.empty() ? 0.0 : strength / angles.size();
-  outline->largest_gap = 2 * M_PI;
-  if (angles.empty()) return;
-  outline->largest_gap = 2 * M_PI - (angles.back() - angles.front());
-  for (std::size_t i = 1; i < angles.size(); ++i) {
-    outline->largest_gap = std::max(outline->largest_gap, angles[i] - angles[i - 1]);
-  }
+  const std::size_t supporting = outline->supporting.count();
+  outline->edge_strength = supporting > 0 ? strength / supporting : 0.0;
+  CountSupportInView(occluder, outline);
 }
 
 }  // namespace
@@ -261,15 +302,17 @@ cv::Rect OutlineWindow(const Eigen::Vector2d& start, double radius) {
 }
 
 std::optional<BallOutline> FitBallOutline(const LabImage& lab, const Eigen::Vector2d& start,
-                                          double radius, double min_edge) {
+                                          double radius, double min_edge,
+                                          const Occluder& occluder) {
   if (!(radius > 0)) return std::nullopt;
-  Eigen::Vector2d centre = start;
+  const Eigen::Vector2d from = InView(start, radius, occluder);
+  Eigen::Vector2d centre = from;
   double fitted = radius;
   std::array<RayEdges, kOutlineRays> edges;
   for (const RaySampling& sampling : kRounds) {
-    edges = EdgesAlongRays(lab, centre, radius, min_edge, sampling);
+    edges = EdgesAlongRays(lab, centre, radius, min_edge, sampling, occluder);
     if (!FitCircle(edges, radius, sampling.prior_rays, &centre, &fitted)) return std::nullopt;
-    if ((centre - start).norm() > kMaxShiftRadii * radius ||
+    if ((centre - from).norm() > kMaxShiftRadii * radius ||
         std::abs(fitted - radius) > kMaxRadiusChange * radius) {
       return std::nullopt;
     }
@@ -277,16 +320,16 @@ std::optional<BallOutline> FitBallOutline(const LabImage& lab, const Eigen::Vect
   BallOutline outline;
   outline.centre = centre;
   outline.radius = fitted;
-  MeasureSupport(edges, radius, &outline);
+  MeasureSupport(edges, radius, occluder, &outline);
   return outline;
 }
 
 Eigen::Vector2d CentreOnChroma(const LabImage& lab, const Eigen::Vector2d& centre, double radius,
-                               double min_edge) {
+                               double min_edge, const Occluder& occluder) {
   Eigen::Vector2d placed = centre;
   double fitted = radius;
   const std::array<RayEdges, kOutlineRays> edges =
-      EdgesAlongRays(lab, centre, radius, min_edge, kChromaRound);
+      EdgesAlongRays(lab, centre, radius, min_edge, kChromaRound, occluder);
   const bool fitted_ok = FitCircle(edges, radius, kChromaRound.prior_rays, &placed, &fitted);
   return fitted_ok && (placed - centre).norm() <= kMaxSettlePx ? placed : centre;
 }

@@ -98,8 +98,7 @@ BallEvidence EvidenceForBall(const cv::Mat& bgr, const LabImage& lab, const Ball
                              double vote_support) {
   BallEvidence evidence;
   evidence.outline = outline.largest_gap < kMaxGap
-                         ? Ramp(static_cast<double>(outline.supporting_rays) / kOutlineRays,
-                                kOutlineFrom, kOutlineWidth)
+                         ? Ramp(outline.SupportedShare(), kOutlineFrom, kOutlineWidth)
                          : 0.0;
   const double q = (outline.radius / expected_radius - 1.0) / kSizeTolerance;
   evidence.size = std::clamp(1.0 - q * q, 0.0, 1.0);

@@ -1,6 +1,7 @@
 #include "sim/render/table_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -73,6 +74,7 @@ struct TableRenderer::Region {
   };
   cv::Rect box;
   int subframes = 1;
+  double pixel_angle = 0;               // between neighbouring pixels' rays near the balls [rad]
   std::vector<Eigen::Vector3f> albedo;  // per ball
   std::vector<bool> striped;            // per ball
   std::vector<Sample> samples;          // subframe-major: samples[s * balls + k]
@@ -276,11 +278,34 @@ void TableRenderer::Render(const std::vector<RenderBall>& balls, double t, cv::M
         const double angle =
             0.5 * ((RayAt(u + 1, v) - RayAt(u, v)).norm() + (RayAt(u, v + 1) - RayAt(u, v)).norm());
         region.samples.push_back({c, (c - centre_).norm() * angle});
+        region.pixel_angle = angle;
       }
     }
     RenderRegion(region, frame);
   }
   AddNoise(t, frame);
+}
+
+TableRenderer::CushionCover TableRenderer::CoverAt(const Eigen::Vector3d& d,
+                                                  double pixel_angle) const {
+  if (d.z() >= 0) return {};
+  const double distance = (options_.cushion_height - centre_.z()) / d.z();
+  const Eigen::Vector3d top = centre_ + distance * d;
+  // How far beyond each side the ray comes down, for the sides the camera is beyond (a camera
+  // above the playing surface sees every ball in front of the cushions).
+  const double L = table_.length, W = table_.width;
+  const std::array<std::pair<double, double>, 4> beyond_side = {
+      {{-top.x(), -centre_.x()}, {top.x() - L, centre_.x() - L},
+       {-top.y(), -centre_.y()}, {top.y() - W, centre_.y() - W}}};
+  // The nose's edge anti-aliased as a ball's is: a ramp of one pixel's width at that distance.
+  const double footprint = std::max(pixel_angle * distance, 1e-12);
+  float share = 0;
+  for (const auto& [beyond, camera_beyond] : beyond_side) {
+    if (camera_beyond > 0) {
+      share = std::max(share, static_cast<float>(std::clamp(0.5 + beyond / footprint, 0.0, 1.0)));
+    }
+  }
+  return {distance, share};
 }
 
 void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
@@ -304,6 +329,7 @@ void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
       // Where the ray meets the cloth (the shadows fall there); far away if it looks up.
       const double to_cloth = d.z() < 0 ? -centre_.z() / d.z() : 1e6;
       const Eigen::Vector2d cloth = centre_.head<2>() + to_cloth * d.head<2>();
+      const CushionCover cover = CoverAt(d, region.pixel_angle);
       const float vignette = Vignette(u, v);
       Eigen::Vector3f sum = Eigen::Vector3f::Zero();
       for (int s = 0; s < region.subframes; ++s) {
@@ -323,7 +349,10 @@ void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
           const double ramp = sample[k].footprint;
           if (depth <= 0 || miss2 >= (r + 0.5 * ramp) * (r + 0.5 * ramp)) continue;
           const double miss = std::sqrt(miss2);
-          const float coverage = static_cast<float>(std::clamp(0.5 + (r - miss) / ramp, 0.0, 1.0));
+          float coverage = static_cast<float>(std::clamp(0.5 + (r - miss) / ramp, 0.0, 1.0));
+          if (depth - std::sqrt(std::max(0.0, r2 - miss2)) > cover.distance) {
+            coverage *= 1.0f - cover.share;
+          }
           if (coverage > 0) hits.push_back({depth, coverage, k, miss});
         }
         Eigen::Vector3f colour = bg * lit;

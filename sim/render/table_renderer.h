@@ -9,7 +9,9 @@
 // That background is rendered once, 3x3 supersampled. A frame is a copy of it plus the balls:
 // each ball is ray-traced as a sphere of radius r centred at (x, y, r), only inside the bounding
 // box of its projection and of its shadow, with analytic anti-aliasing (the pixel's coverage
-// from the ray's distance to the sphere).
+// from the ray's distance to the sphere). A camera beyond a rail sees that side's cushion hide
+// what lies beyond its nose: the lower part of a ball against it (CoverAt, the nose's edge
+// anti-aliased the same way); a camera above the playing surface sees every ball whole.
 //
 // What the estimator should know about the pictures:
 //  - The centre of a ball's silhouette is not exactly Project((x, y, r)): a sphere off the optical
@@ -38,6 +40,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -123,6 +126,15 @@ class TableRenderer {
  private:
   struct Region;
   void RenderRegion(const Region& region, cv::Mat* frame) const;
+  // What the cushions and the rail hide along a ray `d`: what lies beyond `distance` along it
+  // (where the ray comes down to the cushions' height), `share` of it (0 where the ray comes down
+  // onto the playing surface, 1 onto a cushion, a pixel's ramp between). A camera beyond the rail
+  // sees the near cushion hide the lower part of a ball against it.
+  struct CushionCover {
+    double distance = std::numeric_limits<double>::infinity();
+    float share = 0;
+  };
+  CushionCover CoverAt(const Eigen::Vector3d& d, double pixel_angle) const;
   void AddNoise(double t, cv::Mat* frame) const;
   const Eigen::Vector3d& RayAt(int u, int v) const { return rays_[v * camera_.width + u]; }
   float Vignette(int u, int v) const;

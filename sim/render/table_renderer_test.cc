@@ -81,8 +81,9 @@ Blob Measure(const cv::Mat& coverage) {
 }
 
 // The exact image of the sphere: the camera's projection of the circle where the rays from the
-// camera's centre touch it, as a polygon, and that polygon's area and centroid.
-Blob Silhouette(const camera::CameraModel& camera, const Eigen::Vector3d& centre, double r) {
+// camera's centre touch it, as a polygon.
+std::vector<Eigen::Vector2d> SilhouettePolygon(const camera::CameraModel& camera,
+                                               const Eigen::Vector3d& centre, double r) {
   const Eigen::Vector3d eye = camera.Centre();
   const double distance = (centre - eye).norm();
   const Eigen::Vector3d axis = (centre - eye) / distance;
@@ -95,6 +96,11 @@ Blob Silhouette(const camera::CameraModel& camera, const Eigen::Vector3d& centre
         std::cos(alpha) * axis + std::sin(alpha) * (std::cos(phi) * e1 + std::sin(phi) * e2);
     polygon.push_back(camera.Project(eye + distance * std::cos(alpha) * ray));
   }
+  return polygon;
+}
+
+// A polygon's area and centroid.
+Blob PolygonBlob(const std::vector<Eigen::Vector2d>& polygon) {
   Blob b;
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const Eigen::Vector2d& p = polygon[i];
@@ -106,6 +112,31 @@ Blob Silhouette(const camera::CameraModel& camera, const Eigen::Vector3d& centre
   b.centroid /= b.area;
   b.area = std::abs(b.area);
   return b;
+}
+
+Blob Silhouette(const camera::CameraModel& camera, const Eigen::Vector3d& centre, double r) {
+  return PolygonBlob(SilhouettePolygon(camera, centre, r));
+}
+
+// The part of a convex polygon on the side of the line through a and b where `kept` lies
+// (Sutherland and Hodgman 1974, one edge).
+std::vector<Eigen::Vector2d> Clipped(const std::vector<Eigen::Vector2d>& polygon,
+                                     const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                     const Eigen::Vector2d& kept) {
+  const auto side = [&](const Eigen::Vector2d& p) {
+    const Eigen::Vector2d d = b - a, e = p - a;
+    return d.x() * e.y() - d.y() * e.x();
+  };
+  const double sign = side(kept) > 0 ? 1.0 : -1.0;
+  std::vector<Eigen::Vector2d> out;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector2d& p = polygon[i];
+    const Eigen::Vector2d& q = polygon[(i + 1) % polygon.size()];
+    const double sp = sign * side(p), sq = sign * side(q);
+    if (sp >= 0) out.push_back(p);
+    if ((sp >= 0) != (sq >= 0)) out.push_back(p + sp / (sp - sq) * (q - p));
+  }
+  return out;
 }
 
 double EquivalentRadius(const Blob& b) { return std::sqrt(b.area / M_PI); }
@@ -307,6 +338,43 @@ TEST(TableRenderer, NearerOfTwoTouchingBallsHidesTheOther) {
     }
   }
   EXPECT_GT(overlap, 20);  // the far ball alone does reach under the near one
+}
+
+TEST(TableRenderer, TheNearCushionHidesTheLowerPartOfABallAgainstIt) {
+  // A camera beyond the near rail (2 m from the table's middle, 35 degrees up, no lens distortion)
+  // sees a ball against the near cushion over the cushion's nose, 36 mm high: what it sees of the
+  // ball is its silhouette on the far side of the nose's image, a straight line (the exact
+  // polygons of the sphere's silhouette, clipped). An overhead camera sees the same ball whole.
+  const physics::ModelParameters p = Pool();
+  const double r = p.ball.radius;
+  const Eigen::Vector3d middle(0.5 * p.table.length, 0.5 * p.table.width, 0.0);
+  const double elevation = 35.0 * M_PI / 180.0;
+  const camera::CameraModel side = camera::CameraModel::LookingAt(
+      middle + 2.0 * Eigen::Vector3d(0, -std::cos(elevation), std::sin(elevation)), middle, 1280,
+      720, 1.2);
+  const RenderOptions flat = Flat();
+  const TableRenderer renderer(side, p, flat);
+  const Eigen::Vector2d nose_a = side.Project({0.5, 0.0, flat.cushion_height});
+  const Eigen::Vector2d nose_b = side.Project({2.0, 0.0, flat.cushion_height});
+  for (const double x : {1.0, 1.9}) {
+    const Eigen::Vector3d centre(x, r, r);
+    SCOPED_TRACE(testing::Message() << "ball at x = " << x);
+    const Blob blob = Measure(Coverage(renderer.Render({RenderBall::AtRest(0, kWhite, {x, r})}, 0.0),
+                                       renderer.background(), kWhite));
+    const Blob whole = Silhouette(side, centre, r);
+    const Blob seen = PolygonBlob(
+        Clipped(SilhouettePolygon(side, centre, r), nose_a, nose_b, side.Project({x, 0.5, 0.0})));
+    EXPECT_LT(seen.area, 0.9 * whole.area);  // the nose does hide a good part of it
+    EXPECT_NEAR(EquivalentRadius(blob), EquivalentRadius(seen), 0.1);
+    EXPECT_LT((blob.centroid - seen.centroid).norm(), 0.05);
+  }
+  const camera::CameraModel overhead = Straight();
+  const TableRenderer from_above(overhead, p, flat);
+  const Blob blob = Measure(Coverage(from_above.Render({RenderBall::AtRest(0, kWhite, {1.0, r})}, 0.0),
+                                     from_above.background(), kWhite));
+  const Blob truth = Silhouette(overhead, {1.0, r, r}, r);
+  EXPECT_NEAR(EquivalentRadius(blob), EquivalentRadius(truth), 0.1);
+  EXPECT_LT((blob.centroid - truth.centroid).norm(), 0.03);
 }
 
 // Not a timing assertion: the time per frame is printed for the record (sim/README.md).
