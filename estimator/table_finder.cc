@@ -434,6 +434,8 @@ std::array<Eigen::Vector3d, 4> CushionNoses(const cv::Mat& bgr,
     }
   }
   const bool oblique = DepthRatio(cloth_corners) > kOverheadDepthRatio;
+  const Eigen::Vector2d centre = 0.25 * (cloth_corners[0] + cloth_corners[1] + cloth_corners[2] +
+                                         cloth_corners[3]);
   std::array<Eigen::Vector3d, 4> lines;
   for (int i = 0; i < 4; ++i) {
     const std::optional<EdgeLine> edge =
@@ -441,8 +443,18 @@ std::array<Eigen::Vector3d, 4> CushionNoses(const cv::Mat& bgr,
     (*places)[i] = edge ? edge->places : 0;
     std::optional<Eigen::Vector3d> nose;
     if (edge) nose = edge->line;
-    if (!nose && oblique && i == nearest) {
-      nose = FaintNoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+    if (oblique && i == nearest) {
+      // Seen from behind, the cushion's top is of the cloth, and a straight edge met along the
+      // band is its back or the rail's, outside its faint nose.
+      const auto faint = FaintNoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
+      const Eigen::Vector2d middle = 0.5 * (cloth_corners[i] + cloth_corners[(i + 1) % 4]);
+      const auto inward = [&](const Eigen::Vector3d& line) {
+        return -line.dot(middle.homogeneous()) / line.head<2>().dot(centre - middle);
+      };
+      if (faint && (!nose || inward(*faint) > inward(*nose))) {
+        nose = faint;
+        (*places)[i] = 0;
+      }
     }
     lines[i] = nose.value_or(SideLine(cloth_from_table, long_first, i));
   }

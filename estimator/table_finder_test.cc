@@ -110,6 +110,44 @@ TEST(TableFinder, FindsThePlayingSurfaceInEveryViewOnEveryCloth) {
   }
 }
 
+// A camera beyond the near rail sees that cushion from behind: its top is of the bed's cloth,
+// and meets the bed at a faint line (the nose, a thin highlight along it), while a dark seam runs
+// along its back, by the rail (as on upd_g2c1's table): a straight edge met all along the side.
+// The near side of the playing surface is the faint line (within 2 px at a quarter, half and
+// three quarters of it), not the seam beyond it.
+TEST(TableFinder, TheNearCushionSeenFromBehindEndsAtItsNoseNotItsBack) {
+  constexpr double kSeamOfCushionWidth = 0.8, kSeamShade = 0.8, kHighlight = 1.06;
+  const cv::Vec3b cloth(60, 110, 30);
+  const double nose = render::RenderOptions{}.cushion_height;
+  const Scene side = Cameras()[1];
+  render::RenderOptions options;
+  options.exposure_s = 0;
+  options.cloth = cloth;
+  options.cushion = cloth;
+  cv::Mat frame = render::TableRenderer(side.camera, Pool(), options).Render({}, 0.0);
+  const auto draw_along_y = [&](double y, const cv::Scalar& colour, int thickness) {
+    const Eigen::Vector2d from = side.camera.Project({0.0, y, nose});
+    const Eigen::Vector2d to = side.camera.Project({Pool().table.length, y, nose});
+    cv::line(frame, cv::Point2d(from.x(), from.y()), cv::Point2d(to.x(), to.y()), colour,
+             thickness, cv::LINE_AA);
+  };
+  draw_along_y(-kSeamOfCushionWidth * options.cushion_width, cv::Scalar(cloth * kSeamShade), 2);
+  draw_along_y(0.0, cv::Scalar(cloth * kHighlight), 1);
+  const TableSearch search = FindTable(frame);
+  ASSERT_TRUE(search.table) << search.reason;
+  const Eigen::Vector3d a = TableCorners(nose)[0], b = TableCorners(nose)[1];  // y = 0: nearest
+  double best = HUGE_VAL;
+  for (int j = 0; j < 4; ++j) {
+    double worst = 0;
+    for (const double t : {0.25, 0.5, 0.75}) {
+      worst = std::max(worst,
+                       DistanceFromSide(*search.table, j, side.camera.Project(a + t * (b - a))));
+    }
+    best = std::min(best, worst);
+  }
+  EXPECT_LT(best, 2.0);
+}
+
 // An arm reaching over a corner of the table from outside (a player's, bridging a shot there)
 // hides that corner and a stretch of both sides at it: the sides are still the table's, not
 // lines bridging the arm's edge and the cushion beyond it.
