@@ -44,8 +44,8 @@ constexpr int kLaunchSamples = 3;
 const char* const kConstantNames[] = {"mu",      "rolling",          "spin",
                                       "cushion", "cushion_friction", "ball_ball"};
 
-// How near a bound of its Range a fitted constant sits at it, relative.
-constexpr double kAtBound = 1e-6;
+// How near a bound of its Range a fitted constant sits at it (AtRangeBound).
+constexpr double kAtBound = 1e-6, kAtBoundSds = 3.0;
 
 // The range the fit searches for each constant (far beyond any cloth, cushion or ball).
 struct Range {
@@ -836,6 +836,12 @@ ShotFit FitStrike(const table::TableGeometry& table, const ModelParameters& para
   return FitOne(table, params, shot, options, previous);
 }
 
+bool AtRangeBound(double value, double sd, bool pinned, double lo, double hi) {
+  const double margin = pinned ? kAtBoundSds * sd : 0.0;
+  return value <= std::max(lo * (1.0 + kAtBound), lo + margin) ||
+         value >= std::min(hi * (1.0 - kAtBound), hi - margin);
+}
+
 ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& params,
                   const std::vector<TrackedShot>& shots, const FitOptions& options,
                   batch::ThreadPool& pool, const std::vector<bool>& held_out,
@@ -974,10 +980,9 @@ ShotsFit FitShots(const table::TableGeometry& table, const ModelParameters& para
         // A fit that ran to the edge of its range found no minimum there: what the shots say
         // lies beyond what any table is, and its curvature is no uncertainty.
         const Range range = ConstantRange(constants[c]);
-        it->at_bound = it->value <= range.lo * (1.0 + kAtBound) ||
-                       it->value >= range.hi * (1.0 - kAtBound);
-        it->identifiable =
-            !it->at_bound && it->sd <= options.max_relative_sd * std::abs(it->value);
+        const bool pinned = it->sd <= options.max_relative_sd * std::abs(it->value);
+        it->at_bound = AtRangeBound(it->value, it->sd, pinned, range.lo, range.hi);
+        it->identifiable = !it->at_bound && pinned;
         if (it->identifiable) {
           kept.push_back(constants[c]);
         } else {

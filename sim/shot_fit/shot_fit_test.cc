@@ -210,6 +210,20 @@ TEST(ShotFit, NeverReportsAConstantAtItsBoundAsIdentifiable) {
   EXPECT_EQ(fit.params.contact.mu, prior.contact.mu);
 }
 
+// A fit that stops a hair inside the edge of its range with a tiny standard deviation is at its
+// bound, as one that reaches it: the adaptive loop's truth fitted mu 0.5995 +- 0.0003 against
+// the range's 0.6 from shots that never slide (docs/benchmarks/adaptive_loop_report.md). A wide
+// fit near a bound is merely unknown (its sd says so), and a known fit 3 sd clear of both is
+// inside.
+TEST(ShotFit, AFitWithin3SdOfItsRangesEdgeIsAtItsBound) {
+  EXPECT_TRUE(AtRangeBound(0.5995, 0.0003, true, 0.02, 0.6));
+  EXPECT_TRUE(AtRangeBound(0.6, 0.0, true, 0.02, 0.6));
+  EXPECT_TRUE(AtRangeBound(0.02 * (1 + 1e-7), 0.5, false, 0.02, 0.6));
+  EXPECT_FALSE(AtRangeBound(0.5995, 0.0003, false, 0.02, 0.6));
+  EXPECT_FALSE(AtRangeBound(0.5985, 0.0003, true, 0.02, 0.6));
+  EXPECT_FALSE(AtRangeBound(0.24, 0.0004, true, 0.02, 0.6));
+}
+
 // The same fit gives the same answer on one thread as on two (each shot its own job, the sums
 // in shot order).
 TEST(ShotFit, IsTheSameOnAnyThreadCount) {
