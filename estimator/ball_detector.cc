@@ -11,6 +11,7 @@
 #include "estimator/circle_votes.h"
 #include "estimator/lab_image.h"
 #include "estimator/local_cloth.h"
+#include "estimator/not_cloth.h"
 
 namespace billiard::estimator {
 
@@ -29,11 +30,9 @@ constexpr double kMinCellCloth = 0.2;
 // kMinEdge L*a*b* units per pixel (a clean frame's cloth has almost no noise, and the least
 // ball, black on navy, changes by several units per pixel).
 constexpr double kEdgeNoises = 1.5, kMinEdge = 2.0;
-// The balls' scale is measured on the compact blobs of not-cloth (contrast of at least 1,
-// local_cloth.h) at a resolution where the table is at most kBlobTableSize pixels across: blobs
-// of at least kMinBlobArea pixels, about as wide as high (kMaxBlobAspect), filling at least
+// The balls' scale is measured on the compact blobs of not-cloth (not_cloth.h): blobs of at least
+// kMinBlobArea of its pixels, about as wide as high (kMaxBlobAspect), filling at least
 // kMinBlobFill of their bounding ellipse; their outlines count with kMinScaleSupport of the rays.
-constexpr double kBlobTableSize = 640.0;
 constexpr int kMinBlobArea = 12;
 constexpr double kMaxBlobAspect = 1.55;
 constexpr double kMinBlobFill = 0.75;
@@ -78,7 +77,9 @@ constexpr double kOverlapRadii = 1.75;
 // places on the surface on something else lies on a hand, an arm, a sleeve, a cue's butt or a
 // pocket's liner. A sure one stands: a ball of a rack whose neighbours were not all found is
 // surrounded by balls, not cloth. With less than kMinSurroundSeen of the circle on the surface (a
-// ball in a corner of a surface found too small) nothing is judged.
+// ball in a corner of a surface found too small) nothing is judged. An unsure outline whose centre
+// lies on what leans over the table (an intruder, not_cloth.h: an arm and the dark glove at its
+// end) is on it, however much cloth shows between the fingers around it.
 constexpr double kSurroundRadii = 1.5;
 constexpr int kSurroundSamples = 64;
 constexpr double kMaxForeignSurround = 0.6;
@@ -161,15 +162,33 @@ double ForeignSurround(const cv::Mat& bgr, const TableRegion& table, const Cloth
   return seen >= kMinSurroundSeen * kSurroundSamples ? static_cast<double>(foreign) / seen : 0.0;
 }
 
-// The balls that are sure, or lie on the cloth (ForeignSurround).
+// Whether a full-resolution pixel lies on one of `intruders` (NotClothMap::Intruders).
+bool OnIntruder(const NotClothMap& not_cloth, const cv::Mat& intruders,
+                const Eigen::Vector2d& pixel) {
+  const Eigen::Vector2d p = not_cloth.ToMap(pixel);
+  const int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+  return x >= 0 && y >= 0 && x < intruders.cols && y < intruders.rows &&
+         intruders.at<uint8_t>(y, x) != 0;
+}
+
+// The balls that are sure, or lie on the cloth (ForeignSurround) and not on what leans over it
+// (an intruder of not_cloth.h, looked for only when an unsure ball needs it).
 std::vector<BallDetection> OnCloth(const cv::Mat& bgr, const TableRegion& table,
-                                   const ClothModel& cloth, const std::vector<BallDetection>& balls) {
+                                   const ClothModel& cloth, const BallScale& scale,
+                                   const std::vector<BallDetection>& balls) {
+  std::optional<NotClothMap> not_cloth;
+  cv::Mat intruders;
   std::vector<BallDetection> kept;
   for (const BallDetection& ball : balls) {
-    if (ball.score >= kSureScore ||
-        ForeignSurround(bgr, table, cloth, ball, balls) <= kMaxForeignSurround) {
-      kept.push_back(ball);
+    if (ball.score < kSureScore) {
+      if (ForeignSurround(bgr, table, cloth, ball, balls) > kMaxForeignSurround) continue;
+      if (!not_cloth) {
+        not_cloth.emplace(bgr, table, cloth);
+        intruders = not_cloth->Intruders(scale);
+      }
+      if (OnIntruder(*not_cloth, intruders, ball.pixel)) continue;
     }
+    kept.push_back(ball);
   }
   return kept;
 }
@@ -288,49 +307,11 @@ ClothModel LearnClothModel(const cv::Mat& bgr, const TableRegion& table) {
 // give the scale.
 std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& table,
                                       const ClothModel& cloth) {
-  const cv::Rect region = table.Bounds() & cv::Rect(0, 0, bgr.cols, bgr.rows);
-  if (region.empty()) return {};
-  const int factor =
-      std::max(1, static_cast<int>(std::max(region.width, region.height) / kBlobTableSize));
-  cv::Mat small;
-  cv::resize(bgr(region), small, {}, 1.0 / factor, 1.0 / factor, cv::INTER_AREA);
-  const auto to_full = [&](double x, double y) {
-    return Eigen::Vector2d((x + 0.5) * factor - 0.5 + region.x,
-                           (y + 0.5) * factor - 0.5 + region.y);
-  };
-  cv::Mat surface = cv::Mat::zeros(small.size(), CV_8U);
-  std::vector<cv::Point> corners;
-  for (const auto& c : table.corners) {
-    corners.emplace_back(static_cast<int>(std::lround((c.x() - region.x + 0.5) / factor - 0.5)),
-                         static_cast<int>(std::lround((c.y() - region.y + 0.5) / factor - 0.5)));
-  }
-  cv::fillConvexPoly(surface, corners, 255);
-  // The cloth's colour at each pixel of `small`: its map resampled (cell coordinates of a pixel
-  // are an affine function of the pixel's).
-  const double per_cell = factor / cloth.cell;
-  const cv::Matx23d cell_from_small(per_cell, 0, (region.x + 0.5 * factor - 0.5) / cloth.cell - 0.5,
-                                    0, per_cell,
-                                    (region.y + 0.5 * factor - 0.5) / cloth.cell - 0.5);
-  cv::Mat colour;
-  cv::warpAffine(cloth.colour, colour, cell_from_small, small.size(),
-                 cv::INTER_LINEAR | cv::WARP_INVERSE_MAP, cv::BORDER_REPLICATE);
-  cv::Mat not_cloth = cv::Mat::zeros(small.size(), CV_8U);
-  for (int y = 0; y < small.rows; ++y) {
-    const auto* in = small.ptr<cv::Vec3b>(y);
-    const auto* on = surface.ptr<uint8_t>(y);
-    const auto* local_colour = colour.ptr<cv::Vec3f>(y);
-    auto* out = not_cloth.ptr<uint8_t>(y);
-    for (int x = 0; x < small.cols; ++x) {
-      if (!on[x]) continue;
-      const LocalCloth local = MakeLocalCloth(local_colour[x], cloth.noise);
-      float along, across;
-      Decompose(cv::Vec3f(in[x][0], in[x][1], in[x][2]), local, &along, &across);
-      out[x] = Contrast(along, across, local) >= 1.0f ? 255 : 0;
-    }
-  }
+  const NotClothMap not_cloth(bgr, table, cloth);
+  if (not_cloth.mask().empty()) return {};
   cv::Mat labels, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(not_cloth, labels, stats, centroids, 8);
-  const LabImage lab(bgr, region);
+  const int n = cv::connectedComponentsWithStats(not_cloth.mask(), labels, stats, centroids, 8);
+  const LabImage lab(bgr, table.Bounds() & cv::Rect(0, 0, bgr.cols, bgr.rows));
   std::vector<BallOutline> outlines;
   for (int i = 1; i < n; ++i) {
     const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
@@ -339,8 +320,8 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
     const double fill = area / (0.25 * M_PI * w * h);
     if (area < kMinBlobArea || aspect > kMaxBlobAspect || fill < kMinBlobFill) continue;
     const auto outline =
-        FitBallOutline(lab, to_full(centroids.at<double>(i, 0), centroids.at<double>(i, 1)),
-                       factor * std::sqrt(area / M_PI), MinEdge(cloth.edge_noise));
+        FitBallOutline(lab, not_cloth.ToFull({centroids.at<double>(i, 0), centroids.at<double>(i, 1)}),
+                       not_cloth.factor() * std::sqrt(area / M_PI), MinEdge(cloth.edge_noise));
     if (outline && outline->supporting_rays >= kMinScaleSupport * kOutlineRays) {
       outlines.push_back(*outline);
     }
@@ -349,17 +330,6 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
 }
 
 }  // namespace
-
-cv::Vec3f ClothModel::ColourAt(const Eigen::Vector2d& pixel) const {
-  const double x = std::clamp(pixel.x() / cell - 0.5, 0.0, colour.cols - 1.0);
-  const double y = std::clamp(pixel.y() / cell - 0.5, 0.0, colour.rows - 1.0);
-  const int x0 = std::min(static_cast<int>(x), colour.cols - 2 < 0 ? 0 : colour.cols - 2);
-  const int y0 = std::min(static_cast<int>(y), colour.rows - 2 < 0 ? 0 : colour.rows - 2);
-  const int x1 = std::min(x0 + 1, colour.cols - 1), y1 = std::min(y0 + 1, colour.rows - 1);
-  const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
-  return (1 - fy) * ((1 - fx) * colour.at<cv::Vec3f>(y0, x0) + fx * colour.at<cv::Vec3f>(y0, x1)) +
-         fy * ((1 - fx) * colour.at<cv::Vec3f>(y1, x0) + fx * colour.at<cv::Vec3f>(y1, x1));
-}
 
 double ExpectedRadiusPx(const camera::CameraModel& camera, double ball_radius) {
   const Eigen::Vector3d centre =
@@ -447,8 +417,12 @@ std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
 void BallDetector::SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* balls) {
   std::vector<BallOutline> outlines;
   for (const BallDetection& ball : *balls) {
-    if (ball.score >= kSettlingScore)
-      outlines.push_back({ball.pixel, ball.radius_px, kOutlineRays});
+    if (ball.score < kSettlingScore) continue;
+    BallOutline outline;
+    outline.centre = ball.pixel;
+    outline.radius = ball.radius_px;
+    outline.supporting_rays = kOutlineRays;
+    outlines.push_back(outline);
   }
   const std::optional<BallScale> settled = ScaleFromOutlines(*table_, outlines);
   if (!settled) return;  // nothing sure yet: an empty table so far
@@ -500,7 +474,7 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
     });
     if (!overlaps) balls.push_back(ball);
   }
-  std::vector<BallDetection> on_cloth = OnCloth(bgr, *table_, cloth_, balls);
+  std::vector<BallDetection> on_cloth = OnCloth(bgr, *table_, cloth_, *scale_, balls);
   for (BallDetection& ball : on_cloth) {
     ball.pixel = CentreOnChroma(lab, ball.pixel, ball.radius_px, MinEdge(cloth_.edge_noise),
                                 NearCushion(*table_, ball.radius_px));

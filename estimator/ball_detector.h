@@ -38,6 +38,7 @@
 
 #include "estimator/ball_class.h"
 #include "estimator/ball_scale.h"
+#include "estimator/cloth_model.h"
 #include "estimator/table_finder.h"
 #include "sim/camera/camera_model.h"
 
@@ -51,19 +52,6 @@ struct BallDetection {
   // Which ball it is (ball_identity.h), and how sure: set by Detect, unknown from RefineAt.
   BallClass ball_class = BallClass::kUnknown;
   double class_confidence = 0;
-};
-
-// The local colour of the cloth, learnt from a frame.
-struct ClothModel {
-  cv::Mat colour;    // CV_32FC3 (BGR) map of the cloth colour, one cell per `cell` full-res px
-  double cell = 0;   // full-resolution pixels per cell of `colour`
-  double noise = 0;  // robust spread of the cloth's colour across its own colour, relative
-  // The rate of colour change [L*a*b* units per full-resolution px] of the cloth's own texture
-  // and noise (circle_votes.h): the scale of what counts as an edge.
-  double edge_noise = 0;
-  bool empty() const { return colour.empty(); }
-  // The cloth colour at a full-resolution pixel.
-  cv::Vec3f ColourAt(const Eigen::Vector2d& pixel) const;
 };
 
 struct DetectorOptions {

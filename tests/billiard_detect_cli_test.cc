@@ -224,6 +224,8 @@ TEST_F(BilliardDetect, SaysWhichBallEachIsAndWhereTheTableIs) {
 // pocket's mouth dropped brought precision to 96.1 % overhead and 97.7 % oblique. Identity at
 // 91.5 % (86 of 94): a stripe by its plain share (its white at any shade), the rack's numbers to
 // the sure balls first, a TV set's pink 4 and a brown 7, the white balance off clipped pixels.
+// Unsure outlines on what reaches over a rail (an arm and its dark glove, not_cloth.h) dropped
+// brought overhead precision to 98.9 %.
 TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   BILLIARD_TEST_DATA_OR_SKIP(labels, "real-tables/dev/labels.json");
   const std::string set = labels.substr(0, labels.rfind('/'));
@@ -235,7 +237,7 @@ TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   const auto j = OneObject(r, args);
   const auto& views = j["views"];
   EXPECT_GE(views["overhead"]["recall"].get<double>(), 0.98) << views;
-  EXPECT_GE(views["overhead"]["precision"].get<double>(), 0.955) << views;
+  EXPECT_GE(views["overhead"]["precision"].get<double>(), 0.985) << views;
   EXPECT_GE(views["oblique"]["recall"].get<double>(), 0.945) << views;
   EXPECT_GE(views["oblique"]["precision"].get<double>(), 0.965) << views;
   EXPECT_LT(views["all"]["median_centre_error_px"].get<double>(), 1.5) << views;
