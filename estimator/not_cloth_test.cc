@@ -113,13 +113,9 @@ TEST(NotCloth, TheArmAndItsGloveIntrudeAndNothingElseOnTheTableDoes) {
 }
 
 TEST(NotCloth, MapPixelsAndFullResolutionPixelsAreInverse) {
-  const Scene scene = ArmOverTheTable();
-  DetectorOptions options;
-  options.ball_radius_px = kRadius;
-  BallDetector detector(options);
-  ASSERT_TRUE(detector.LearnTable(scene.frame)) << detector.failure();
   cv::Mat large;
-  cv::resize(scene.frame, large, {}, 3, 3, cv::INTER_LINEAR);
+  cv::resize(ArmOverTheTable().frame, large, {}, 3, 3, cv::INTER_LINEAR);
+  BallDetector detector;
   ASSERT_TRUE(detector.LearnTable(large)) << detector.failure();
   const NotClothMap map(large, *detector.table(), detector.cloth());
   EXPECT_GT(map.factor(), 1);
