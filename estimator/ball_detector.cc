@@ -75,11 +75,12 @@ constexpr double kOverlapRadii = 1.75;
 // the playing surface and not cloth (in any light, local_cloth.h) is another ball kept. An unsure
 // outline (scoring less than kSureScore) with more than kMaxForeignSurround of that circle's
 // places on the surface on something else lies on a hand, an arm, a sleeve, a cue's butt or a
-// pocket's liner. A sure one stands: a ball of a rack whose neighbours were not all found is
-// surrounded by balls, not cloth. With less than kMinSurroundSeen of the circle on the surface (a
-// ball in a corner of a surface found too small) nothing is judged. An unsure outline whose centre
-// lies on what leans over the table (an intruder, not_cloth.h: an arm and the dark glove at its
-// end) is on it, however much cloth shows between the fingers around it.
+// pocket's liner. So does an unsure outline whose centre lies on what leans over the table (an
+// intruder, not_cloth.h: an arm and the dark glove at its end), however much cloth shows between
+// the fingers around it. A sure one stands unless both (a logo on a cap): a ball of a rack whose
+// neighbours were not all found is surrounded by balls, not cloth. With less than
+// kMinSurroundSeen of the circle on the surface (a ball in a corner of a surface found too small)
+// the surround is not judged.
 constexpr double kSurroundRadii = 1.5;
 constexpr int kSurroundSamples = 64;
 constexpr double kMaxForeignSurround = 0.6;
@@ -171,23 +172,28 @@ bool OnIntruder(const NotClothMap& not_cloth, const cv::Mat& intruders,
          intruders.at<uint8_t>(y, x) != 0;
 }
 
-// The balls that are sure, or lie on the cloth (ForeignSurround) and not on what leans over it
-// (an intruder of not_cloth.h, looked for only when an unsure ball needs it).
+// The balls on the cloth: an unsure one is not when it is mostly surrounded by something else
+// (ForeignSurround) or lies on what leans over the table (an intruder of not_cloth.h); a sure one
+// only when both (a logo on a player's cap, a knuckle in the middle of a hand), for a ball is
+// never under an arm and a sure ball in a rack is surrounded by balls that were not all found.
+// The intruders are looked for only when a ball needs them.
 std::vector<BallDetection> OnCloth(const cv::Mat& bgr, const TableRegion& table,
                                    const ClothModel& cloth, const BallScale& scale,
                                    const std::vector<BallDetection>& balls) {
   std::optional<NotClothMap> not_cloth;
   cv::Mat intruders;
+  const auto on_intruder = [&](const BallDetection& ball) {
+    if (!not_cloth) {
+      not_cloth.emplace(bgr, table, cloth);
+      intruders = not_cloth->Intruders(scale);
+    }
+    return OnIntruder(*not_cloth, intruders, ball.pixel);
+  };
   std::vector<BallDetection> kept;
   for (const BallDetection& ball : balls) {
-    if (ball.score < kSureScore) {
-      if (ForeignSurround(bgr, table, cloth, ball, balls) > kMaxForeignSurround) continue;
-      if (!not_cloth) {
-        not_cloth.emplace(bgr, table, cloth);
-        intruders = not_cloth->Intruders(scale);
-      }
-      if (OnIntruder(*not_cloth, intruders, ball.pixel)) continue;
-    }
+    const bool surrounded = ForeignSurround(bgr, table, cloth, ball, balls) > kMaxForeignSurround;
+    const bool sure = ball.score >= kSureScore;
+    if (sure ? surrounded && on_intruder(ball) : surrounded || on_intruder(ball)) continue;
     kept.push_back(ball);
   }
   return kept;

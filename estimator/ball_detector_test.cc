@@ -1,6 +1,6 @@
-// The ball detector on the real photograph and on deterministic variants of it (an arm and a cue,
-// extra shadows, projected light, noise, motion blur, another cloth colour), and its sub-pixel
-// accuracy on anti-aliased synthetic frames whose ball centres are known exactly.
+// The ball detector on the real photograph and on deterministic variants of it (an arm with a
+// badge and a cue, extra shadows, projected light, noise, motion blur, another cloth colour), and
+// its sub-pixel accuracy on anti-aliased synthetic frames whose ball centres are known exactly.
 #include "estimator/ball_detector.h"
 
 #include <gtest/gtest.h>
@@ -144,6 +144,16 @@ TEST_F(RealPhoto, IgnoresAnArmAndACueOverTheCloth) {
         }
         covered.at<uint8_t>(y, x) = 255;
       }
+    }
+  }
+  // A round white badge on the forearm, shaded like a ball: a logo on a sleeve, a watch's face.
+  const Eigen::Vector2d badge(795, 560);
+  for (int y = 540; y <= 580; ++y) {
+    for (int x = 775; x <= 815; ++x) {
+      const double rho = (Eigen::Vector2d(x, y) - badge).norm() / kRealTablePhotoRadiusPx;
+      if (rho > 1) continue;
+      const double shade = 0.6 + 0.4 * std::sqrt(1 - rho * rho);
+      image.at<cv::Vec3b>(y, x) = cv::Vec3b::all(cv::saturate_cast<uint8_t>(240 * shade));
     }
   }
   const auto found = DetectWithHint(image);

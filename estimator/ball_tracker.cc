@@ -299,7 +299,8 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
     AddClassEvidence(class_of(assigned[i]), &t);
     used[assigned[i]] = true;
     t.last_seen = time;
-    t.confirmed = t.confirmed || ++t.hits >= options_.hits_to_confirm;
+    t.confirmed = t.confirmed || ++t.hits >= options_.hits_to_confirm ||
+                  class_of(assigned[i]).score >= options_.sure_score;
   }
   tracks_.erase(
       std::remove_if(tracks_.begin(), tracks_.end(),
@@ -318,8 +319,9 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
     t.covariance = Matrix6::Zero();
     t.covariance.diagonal() << r2, r2, 1.0, 1.0, mu_g * mu_g, mu_g * mu_g;
     t.hits = 1;
-    // A sure ball is published from its first frame: the hits guard against what flickers
-    // (a highlight, a cue tip), not against a ball the detector has no doubt about.
+    // A sure ball is published from its first frame (a doubted one from its first sure frame,
+    // above): the hits guard against what flickers (a highlight, a cue tip), not against a ball
+    // the detector has no doubt about.
     t.confirmed = options_.hits_to_confirm <= 1 || class_of(j).score >= options_.sure_score;
     t.class_belief = uniform_belief_;
     AddClassEvidence(class_of(j), &t);

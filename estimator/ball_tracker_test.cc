@@ -243,16 +243,23 @@ TEST(BallTracker, ATrackIsConfirmedAtExactlyTheConfiguredDetection) {
 }
 
 // A detection the detector is sure of (score at least sure_score) is a ball from its first frame;
-// a doubtful one waits for its hits.
+// a doubtful one waits for its hits, or for its first sure detection (a ball in the middle of a
+// rack, whose outline shows more clearly from one frame's noise to the next).
 TEST(BallTracker, ASureDetectionIsPublishedFromItsFirstFrame) {
   const TrackerOptions options;
+  ASSERT_GE(options.hits_to_confirm, 3);
   BallTracker tracker(Pool(), options);
   const ClassEvidence sure{BallClass::kUnknown, 0.0, options.sure_score};
   const ClassEvidence doubtful{BallClass::kUnknown, 0.0, 0.99 * options.sure_score};
-  ASSERT_TRUE(tracker.Update(0.0, {{1.0, 0.5}, {2.0, 0.8}}, {sure, doubtful}));
-  ASSERT_EQ(tracker.tracks().size(), 2u);
+  const std::vector<Eigen::Vector2d> balls = {{1.0, 0.5}, {2.0, 0.8}, {1.5, 0.3}};
+  ASSERT_TRUE(tracker.Update(0.0, balls, {sure, doubtful, doubtful}));
+  ASSERT_EQ(tracker.tracks().size(), 3u);
   EXPECT_TRUE(tracker.tracks()[0].confirmed);
   EXPECT_FALSE(tracker.tracks()[1].confirmed);
+  EXPECT_FALSE(tracker.tracks()[2].confirmed);
+  ASSERT_TRUE(tracker.Update(1.0 / 30, balls, {sure, sure, doubtful}));
+  EXPECT_TRUE(tracker.tracks()[1].confirmed) << "at its first sure detection";
+  EXPECT_FALSE(tracker.tracks()[2].confirmed) << "doubted twice";
 }
 
 // A ball still for a second, then struck at 2 m/s between two frames at 30 Hz (it moves 67 mm
