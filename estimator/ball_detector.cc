@@ -184,7 +184,7 @@ std::vector<BallDetection> OnCloth(const cv::Mat& bgr, const TableRegion& table,
   cv::Mat intruders;
   const auto on_intruder = [&](const BallDetection& ball) {
     if (!not_cloth) {
-      not_cloth.emplace(bgr, table, cloth);
+      not_cloth.emplace(bgr, table, cloth, NotClothMap::IntruderFactor(scale));
       intruders = not_cloth->Intruders(scale);
     }
     return OnIntruder(*not_cloth, intruders, ball.pixel);
@@ -313,7 +313,7 @@ ClothModel LearnClothModel(const cv::Mat& bgr, const TableRegion& table) {
 // give the scale.
 std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& table,
                                       const ClothModel& cloth) {
-  const NotClothMap not_cloth(bgr, table, cloth);
+  const NotClothMap not_cloth(bgr, table, cloth, NotClothMap::BlobFactor(table));
   if (not_cloth.mask().empty()) return {};
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(not_cloth.mask(), labels, stats, centroids, 8);

@@ -14,11 +14,19 @@ using internal::Decompose;
 using internal::LocalCloth;
 using internal::MakeLocalCloth;
 
-NotClothMap::NotClothMap(const cv::Mat& bgr, const TableRegion& table, const ClothModel& cloth)
-    : region_(table.Bounds() & cv::Rect(0, 0, bgr.cols, bgr.rows)) {
+int NotClothMap::BlobFactor(const TableRegion& table) {
+  const cv::Rect bounds = table.Bounds();
+  return std::max(1, static_cast<int>(std::max(bounds.width, bounds.height) / kNotClothTableSize));
+}
+
+int NotClothMap::IntruderFactor(const BallScale& scale) {
+  return std::max(1, static_cast<int>(scale.radius_at_centre / kIntruderRadiusPx));
+}
+
+NotClothMap::NotClothMap(const cv::Mat& bgr, const TableRegion& table, const ClothModel& cloth,
+                         int factor)
+    : region_(table.Bounds() & cv::Rect(0, 0, bgr.cols, bgr.rows)), factor_(std::max(1, factor)) {
   if (region_.empty()) return;
-  factor_ = std::max(1, static_cast<int>(std::max(region_.width, region_.height) /
-                                         kNotClothTableSize));
   cv::Mat small;
   cv::resize(bgr(region_), small, {}, 1.0 / factor_, 1.0 / factor_, cv::INTER_AREA);
   surface_ = cv::Mat::zeros(small.size(), CV_8U);
@@ -98,8 +106,7 @@ cv::Mat NotClothMap::Intruders(const BallScale& scale) const {
     intruder[i] = on_edge[i] && stats.at<int>(i, cv::CC_STAT_AREA) >=
                                     kIntruderBallAreas * M_PI * local_radius * local_radius;
   }
-  // What is faintly not cloth and joined to an intruder is the intruder too (as Canny's (1986)
-  // hysteresis joins faint edges to strong ones): a dark glove, a sleeve in the arm's shade.
+  // The faint not-cloth joined to an intruder.
   cv::Mat faint_labels;
   const int m = cv::connectedComponents(faint, faint_labels, 8);
   std::vector<bool> joined(m, false);

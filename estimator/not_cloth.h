@@ -1,8 +1,9 @@
 // What on the playing surface is not its cloth (local_cloth.h: another hue, or darker or brighter
-// than the table's light makes the cloth), seen reduced by the largest whole factor that leaves
-// the table kNotClothTableSize pixels across or more. Its compact blobs are mostly single balls, whose outlines give
-// the balls' scale (ball_detector.cc); its large parts that come across the surface's edge are
-// what leans over the table.
+// than the table's light makes the cloth), seen reduced by a whole factor. Its compact blobs are
+// mostly single balls, whose outlines give the balls' scale (ball_detector.cc): seen with the
+// table kNotClothTableSize pixels across or more (BlobFactor). Its large parts that come across
+// the surface's edge are what leans over the table, which needs no detail: seen with the balls
+// about kIntruderRadiusPx in radius (IntruderFactor), it costs a millisecond a frame.
 //
 // An arm, a sleeve, a body over a rail, a cue's butt: each reaches onto the playing surface from
 // beyond its edge, and what lies on it (a gloved finger, a knuckle, a watch's face) can be outlined
@@ -10,7 +11,10 @@
 // a few. So a part of the not-cloth that touches the surface's edge and covers at least
 // kIntruderBallAreas balls' areas is an intruder, once the not-cloth is opened by a disc of
 // kIntruderOpeningRadii of a ball's radius: a cue's shaft, narrower than that, is cut from the
-// ball it points at, and a ball frozen to a cushion from the cushion's shade.
+// ball it points at, and a ball frozen to a cushion from the cushion's shade. What is faintly not
+// cloth (a contrast of kIntruderFaintContrast, local_cloth.h: between a shadow's and a ball's) and
+// joined to an intruder is the intruder too, as Canny's (1986) hysteresis joins faint edges to
+// strong ones: a dark glove at the end of an arm, a sleeve in the arm's shade.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,14 +27,20 @@
 namespace billiard::estimator {
 
 inline constexpr double kNotClothTableSize = 640.0;
+inline constexpr double kIntruderRadiusPx = 4.0;
 inline constexpr double kIntruderBallAreas = 8.0;
 inline constexpr double kIntruderOpeningRadii = 0.5;
 inline constexpr float kIntruderFaintContrast = 0.4f;
 
 class NotClothMap {
  public:
-  // The not-cloth of a BGR frame over `table`'s playing surface, on `cloth`.
-  NotClothMap(const cv::Mat& bgr, const TableRegion& table, const ClothModel& cloth);
+  // The not-cloth of a BGR frame over `table`'s playing surface, on `cloth`, reduced by `factor`
+  // (full-resolution pixels per map pixel, at least 1).
+  NotClothMap(const cv::Mat& bgr, const TableRegion& table, const ClothModel& cloth, int factor);
+
+  // The factors above: for the blobs of the balls' scale, and for the intruders.
+  static int BlobFactor(const TableRegion& table);
+  static int IntruderFactor(const BallScale& scale);
 
   // 255 where the surface is not cloth (the map's pixels), 0 elsewhere and off the surface.
   const cv::Mat& mask() const { return mask_; }

@@ -97,7 +97,8 @@ TEST(NotCloth, TheArmAndItsGloveIntrudeAndNothingElseOnTheTableDoes) {
   options.ball_radius_px = kRadius;
   BallDetector detector(options);
   ASSERT_TRUE(detector.LearnTable(scene.frame)) << detector.failure();
-  const NotClothMap map(scene.frame, *detector.table(), detector.cloth());
+  const NotClothMap map(scene.frame, *detector.table(), detector.cloth(),
+                        NotClothMap::IntruderFactor(*detector.scale()));
   const cv::Mat intruders = map.Intruders(*detector.scale());
   for (const auto& [what, pixel] : scene.intruders) {
     EXPECT_TRUE(At(map, intruders, pixel)) << what << " at " << pixel.transpose();
@@ -117,7 +118,8 @@ TEST(NotCloth, MapPixelsAndFullResolutionPixelsAreInverse) {
   cv::resize(ArmOverTheTable().frame, large, {}, 3, 3, cv::INTER_LINEAR);
   BallDetector detector;
   ASSERT_TRUE(detector.LearnTable(large)) << detector.failure();
-  const NotClothMap map(large, *detector.table(), detector.cloth());
+  const NotClothMap map(large, *detector.table(), detector.cloth(),
+                        NotClothMap::BlobFactor(*detector.table()));
   EXPECT_GT(map.factor(), 1);
   const Eigen::Vector2d full(1234.5, 678.25);
   EXPECT_LT((map.ToFull(map.ToMap(full)) - full).norm(), 1e-9);
