@@ -3,7 +3,7 @@
 // mostly single balls, whose outlines give the balls' scale (ball_detector.cc): seen with the
 // table kNotClothTableSize pixels across or more (BlobFactor). Its large parts that come across
 // the surface's edge are what leans over the table, which needs no detail: seen with the balls
-// about kIntruderRadiusPx in radius (IntruderFactor), it costs a millisecond a frame.
+// about kIntruderRadiusPx in radius (IntruderFactor), it costs 1-2 ms a frame.
 //
 // An arm, a sleeve, a body over a rail, a cue's butt: each reaches onto the playing surface from
 // beyond its edge, and what lies on it (a gloved finger, a knuckle, a watch's face) can be outlined
