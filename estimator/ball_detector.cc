@@ -63,9 +63,15 @@ constexpr double kOffSurfaceRadii = 0.5;
 constexpr double kOffClothRadii = 0.5;
 // Unless given, the balls' scale is settled on the first frame with balls: from those scoring at
 // least kSettlingScore, and if it changes by more than kSettledScaleChange they are looked for
-// again.
+// again. A measured scale is at most the balls': the outlines it is measured on follow the radius
+// they start from, and an edge inside a ball as strong as its outline (the dark ring a sharpening
+// camera draws inside a white ball's edge, a stripe's cap) holds them inside it; never outside,
+// where the cloth is. So each of kLargerScales times it is tried, and the largest taken that makes
+// kSureGain more of the frame's balls sure (at least one more): a scale too large makes fewer.
 constexpr double kSettlingScore = 0.8;
 constexpr double kSettledScaleChange = 0.05;
+constexpr double kLargerScales[] = {1.1, 1.2};
+constexpr double kSureGain = 0.2;
 // Two balls' centres are at least two radii apart on the table; closer than kOverlapRadii radii
 // (touching balls' outlines fitted a little large, or a ball's shadow beside it) only the better
 // is kept.
@@ -434,9 +440,32 @@ void BallDetector::SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* b
   if (!settled) return;  // nothing sure yet: an empty table so far
   scale_settled_ = true;
   const double change = settled->radius_at_centre / scale_->radius_at_centre;
-  if (std::abs(change - 1.0) <= kSettledScaleChange) return;
-  scale_ = settled;
-  *balls = FindBalls(bgr);
+  if (std::abs(change - 1.0) > kSettledScaleChange) {
+    scale_ = settled;
+    *balls = FindBalls(bgr);
+  }
+  TryLargerScales(bgr, balls);
+}
+
+void BallDetector::TryLargerScales(const cv::Mat& bgr, std::vector<BallDetection>* balls) {
+  const auto sure = [](const std::vector<BallDetection>& found) {
+    return static_cast<double>(std::count_if(
+        found.begin(), found.end(), [](const BallDetection& b) { return b.score >= kSureScore; }));
+  };
+  const BallScale measured = *scale_;
+  BallScale best = measured;
+  double most = sure(*balls);
+  for (const double larger : kLargerScales) {
+    scale_ = BallScale{measured.inverse_depth, larger * measured.radius_at_centre};
+    std::vector<BallDetection> found = FindBalls(bgr);
+    const double now = sure(found);
+    if (now >= most + std::max(1.0, kSureGain * most)) {
+      best = *scale_;
+      most = now;
+      *balls = std::move(found);
+    }
+  }
+  scale_ = best;
 }
 
 std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {

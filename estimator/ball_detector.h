@@ -115,6 +115,9 @@ class BallDetector {
   std::vector<BallDetection> FindBalls(const cv::Mat& bgr) const;
   // Settles a measured scale from the balls found, finding them again if it changed.
   void SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* balls);
+  // A larger scale than the measured one, where it makes clearly more balls sure (the top of
+  // ball_detector.cc), with the balls found at it.
+  void TryLargerScales(const cv::Mat& bgr, std::vector<BallDetection>* balls);
   // The frame as the balls are looked for in it: smoothed a little if the camera is noisy.
   cv::Mat Smoothed(const cv::Mat& bgr) const;
 

@@ -228,6 +228,9 @@ TEST_F(BilliardDetect, SaysWhichBallEachIsAndWhereTheTableIs) {
 // brought overhead precision to 98.9 %, and a sure one surrounded by it (a logo on grr_03's cap)
 // to 99.4 %; identity fell to 90.4 % (85 of 94) with it: the logo had taken the 10, which went to
 // grr_03's blue solid instead of its blue stripe, whose caps its disc does not show as plain.
+// Trying scales 10 and 20 % larger than the measured one (ball_detector.cc) found ph_taiwan's
+// far cue ball and put mech_webcam0's outlines on its balls: oblique precision 99.2 %, identity
+// 92.6 % (87 of 94).
 TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   BILLIARD_TEST_DATA_OR_SKIP(labels, "real-tables/dev/labels.json");
   const std::string set = labels.substr(0, labels.rfind('/'));
@@ -241,13 +244,13 @@ TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   EXPECT_GE(views["overhead"]["recall"].get<double>(), 0.98) << views;
   EXPECT_GE(views["overhead"]["precision"].get<double>(), 0.99) << views;
   EXPECT_GE(views["oblique"]["recall"].get<double>(), 0.945) << views;
-  EXPECT_GE(views["oblique"]["precision"].get<double>(), 0.965) << views;
+  EXPECT_GE(views["oblique"]["precision"].get<double>(), 0.99) << views;
   EXPECT_LT(views["all"]["median_centre_error_px"].get<double>(), 1.5) << views;
   EXPECT_EQ(views["all"]["frames"], 26);
   EXPECT_EQ(views["all"]["tables_labelled"], 26);
   EXPECT_GE(views["all"]["tables_within_2px"].get<int>(), 18) << views;
   EXPECT_GE(views["all"]["classed"].get<int>(), 90) << views;
-  EXPECT_GE(views["all"]["identity"].get<double>(), 0.90) << views;
+  EXPECT_GE(views["all"]["identity"].get<double>(), 0.92) << views;
   // Every miss and every false detection has its cause.
   nlohmann::json results;
   std::ifstream(out / "report/detection_results.json") >> results;
