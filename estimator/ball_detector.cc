@@ -323,7 +323,7 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
   if (not_cloth.mask().empty()) return {};
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(not_cloth.mask(), labels, stats, centroids, 8);
-  const LabImage lab(bgr, table.Bounds() & cv::Rect(0, 0, bgr.cols, bgr.rows));
+  const LabImage lab(bgr, not_cloth.region());
   std::vector<BallOutline> outlines;
   for (int i = 1; i < n; ++i) {
     const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
@@ -331,9 +331,10 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
     const double aspect = static_cast<double>(std::max(w, h)) / std::min(w, h);
     const double fill = area / (0.25 * M_PI * w * h);
     if (area < kMinBlobArea || aspect > kMaxBlobAspect || fill < kMinBlobFill) continue;
-    const auto outline =
-        FitBallOutline(lab, not_cloth.ToFull({centroids.at<double>(i, 0), centroids.at<double>(i, 1)}),
-                       not_cloth.factor() * std::sqrt(area / M_PI), MinEdge(cloth.edge_noise));
+    const Eigen::Vector2d centroid(centroids.at<double>(i, 0), centroids.at<double>(i, 1));
+    const auto outline = FitBallOutline(lab, not_cloth.ToFull(centroid),
+                                        not_cloth.factor() * std::sqrt(area / M_PI),
+                                        MinEdge(cloth.edge_noise));
     if (outline && outline->supporting_rays >= kMinScaleSupport * kOutlineRays) {
       outlines.push_back(*outline);
     }

@@ -44,7 +44,9 @@ class NotClothMap {
 
   // 255 where the surface is not cloth (the map's pixels), 0 elsewhere and off the surface.
   const cv::Mat& mask() const { return mask_; }
-  // Full-resolution pixels per map pixel.
+  // The frame's rectangle the map covers (the table's bounds in the frame), and the full-resolution
+  // pixels per map pixel.
+  const cv::Rect& region() const { return region_; }
   int factor() const { return factor_; }
   // A map pixel's full-resolution pixel, and back.
   Eigen::Vector2d ToFull(const Eigen::Vector2d& map_pixel) const;
