@@ -417,8 +417,15 @@ std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
   const cv::Mat raw = AsBgr(image);
   if ((raw.size() != frame_size_ || !table_) && !LearnTable(raw)) return {};
   const cv::Mat bgr = Smoothed(raw);
-  std::vector<BallDetection> balls = FindBalls(bgr);
-  if (!scale_settled_) SettleScale(bgr, &balls);
+  const bool settling = !scale_settled_;
+  std::vector<BallDetection> balls =
+      FindBalls(bgr, settling ? Doubts::kAsVoted : Doubts::kVotedAgain);
+  if (settling) {
+    // The scales are compared on the votes alone, which are alike for all the balls at each; the
+    // balls are then found again with their doubts voted on.
+    SettleScale(bgr, &balls);
+    balls = FindBalls(bgr, Doubts::kVotedAgain);
+  }
   const std::vector<BallIdentity> identities = IdentifyBalls(bgr, balls, options_.ball_set);
   for (std::size_t i = 0; i < balls.size(); ++i) {
     balls[i].ball_class = identities[i].ball_class;
@@ -443,7 +450,7 @@ void BallDetector::SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* b
   const double change = settled->radius_at_centre / scale_->radius_at_centre;
   if (std::abs(change - 1.0) > kSettledScaleChange) {
     scale_ = settled;
-    *balls = FindBalls(bgr);
+    *balls = FindBalls(bgr, Doubts::kAsVoted);
   }
   TryLargerScales(bgr, balls);
 }
@@ -458,7 +465,7 @@ void BallDetector::TryLargerScales(const cv::Mat& bgr, std::vector<BallDetection
   double most = sure(*balls);
   for (const double larger : kLargerScales) {
     scale_ = BallScale{measured.inverse_depth, larger * measured.radius_at_centre};
-    std::vector<BallDetection> found = FindBalls(bgr);
+    std::vector<BallDetection> found = FindBalls(bgr, Doubts::kAsVoted);
     const double now = sure(found);
     if (now >= most + std::max(1.0, kSureGain * most)) {
       best = *scale_;
@@ -469,7 +476,7 @@ void BallDetector::TryLargerScales(const cv::Mat& bgr, std::vector<BallDetection
   scale_ = best;
 }
 
-std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
+std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr, Doubts doubts) const {
   // The table and a ball's width around it: every outline and every vote's edge is there.
   double largest = 0;
   for (const auto& c : table_->cloth_corners) largest = std::max(largest, scale_->RadiusAt(c));
@@ -489,10 +496,17 @@ std::vector<BallDetection> BallDetector::FindBalls(const cv::Mat& bgr) const {
     const auto outline = FitBallOutline(lab, peak.pixel, radius, MinEdge(cloth_.edge_noise),
                                         NearCushion(*table_, radius));
     if (!outline || !OnTable(*table_, outline->centre, radius)) continue;
-    const double score =
-        EvidenceForBall(bgr, lab, *outline, radius,
-                        {cloth_.ColourAt(outline->centre), cloth_.noise}, peak.support)
-            .Score();
+    const auto score_for = [&](double support) {
+      return EvidenceForBall(bgr, lab, *outline, radius,
+                             {cloth_.ColourAt(outline->centre), cloth_.noise}, support)
+          .Score();
+    };
+    double score = score_for(peak.support);
+    if (doubts == Doubts::kVotedAgain && score >= options_.min_score && score < kSureScore) {
+      score = std::max(score, score_for(FullResolutionSupport(bgr, outline->centre,
+                                                              outline->radius,
+                                                              cloth_.edge_noise)));
+    }
     if (InPocketMouth(*table_, outline->centre, radius, score)) continue;
     outlined.push_back({{outline->centre, outline->radius, score}, peak.support});
   }

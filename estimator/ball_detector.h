@@ -22,7 +22,8 @@
 //      hand or a spot on the cloth: enough of its circle has an edge and voted for it, its radius
 //      is the ball's at that place, and inside it is not the cloth (its colour is far from the
 //      cloth's) or it shines (a ball is glossy: its highlight stands out of its own colour, which
-//      also tells a dark ball from a shadow).
+//      also tells a dark ball from a shadow). An outline scored below sure is voted for again at
+//      full resolution (the black in the middle of a rack loses its creases at the votes' own).
 //   4. Best first, an outline is kept unless it overlaps one kept already (balls touch but never
 //      overlap): a shadow beside its ball, a second outline of one ball.
 //   5. Each ball kept is identified by its colours (ball_identity.h).
@@ -111,8 +112,10 @@ class BallDetector {
   const std::string& failure() const { return failure_; }
 
  private:
+  // Whether FindBalls votes again, at full resolution, for the outlines it doubts.
+  enum class Doubts { kAsVoted, kVotedAgain };
   // Steps 1 to 4 (see the top of the file) at the current scale.
-  std::vector<BallDetection> FindBalls(const cv::Mat& bgr) const;
+  std::vector<BallDetection> FindBalls(const cv::Mat& bgr, Doubts doubts) const;
   // Settles a measured scale from the balls found, finding them again if it changed.
   void SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* balls);
   // A larger scale than the measured one, where it makes clearly more balls sure (the top of

@@ -44,6 +44,7 @@ bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats
                                ? options_.detector.ball_radius_px
                                : ExpectedRadiusPx(camera_, params_.ball.radius);
   std::vector<Eigen::Vector2d> measured;
+  std::vector<ClassEvidence> classes;  // one per measurement
   bool full = frames_++ % options_.full_detect_every == 0 || tracker_.tracks().empty();
   if (!full) {
     for (const Eigen::Vector2d& predicted : tracker_.Predict(time)) {
@@ -58,12 +59,16 @@ bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats
       // pixel: one measurement, or the copy would seed yet another track.
       bool seen = false;
       for (const Eigen::Vector2d& y : measured) seen = seen || (x - y).norm() < params_.ball.radius;
-      if (!seen) measured.push_back(x);
+      if (seen) continue;
+      measured.push_back(x);
+      // RefineAt answers only at the sure score: a track the first frame doubted is published
+      // from here, as from any sure detection. The class is read on full frames only.
+      classes.push_back({BallClass::kUnknown, 0.0, found->score});
     }
   }
-  std::vector<ClassEvidence> classes;
   if (full) {
     measured.clear();
+    classes.clear();
     if (detector_.table() && detector_.OutlineAgreement(frame) < kMovedAgreement) {
       ++views_moved_;
       detector_.LearnTable(frame);

@@ -101,6 +101,44 @@ void Splat(cv::Mat& votes, double x, double y, float weight) {
   r1[x0 + 1] += weight * fx * fy;
 }
 
+// Every edge's votes [share of a circle's outline per pixel] for the centres of the circles of
+// radius `radius_at(x, y)` [px] through it, from the colour gradient of an image whose noise
+// (median rate of change) is `noise`.
+template <typename RadiusAt>
+cv::Mat Votes(const ColourGradient& gradient, double noise, RadiusAt radius_at) {
+  const cv::Mat& strength2 = gradient.strength2();
+  const float min_edge2 = static_cast<float>(std::pow(kMinEdgeNoises * noise, 2));
+  const float full_edge = static_cast<float>(std::max(kMinFullEdge, kFullEdgeNoises * noise));
+  cv::Mat votes = cv::Mat::zeros(strength2.size(), CV_32F);
+  for (int y = 1; y + 1 < strength2.rows; ++y) {
+    const float* m = strength2.ptr<float>(y);
+    for (int x = 1; x + 1 < strength2.cols; ++x) {
+      if (m[x] < min_edge2) continue;
+      float c, s;
+      gradient.DirectionAt(x, y, &c, &s);
+      // Thin: only the strongest pixel across the edge votes.
+      const int dx = static_cast<int>(std::lround(c)), dy = static_cast<int>(std::lround(s));
+      if (m[x] < strength2.at<float>(y + dy, x + dx) ||
+          m[x] < strength2.at<float>(y - dy, x - dx)) {
+        continue;
+      }
+      const double r = radius_at(x, y);
+      if (!(r > 1)) continue;
+      const float weight =
+          std::min(1.0f, std::sqrt(m[x]) / full_edge) / static_cast<float>(2 * M_PI * r);
+      Splat(votes, x + r * c, y + r * s, weight);
+      Splat(votes, x - r * c, y - r * s, weight);
+    }
+  }
+  return votes;
+}
+
+// The votes summed over a Gaussian of `sigma` [px] around every pixel.
+void SumOverPeaks(double sigma, cv::Mat* votes) {
+  cv::GaussianBlur(*votes, *votes, {0, 0}, sigma);
+  *votes *= 2 * M_PI * sigma * sigma;  // the sum over the Gaussian's area, not its mean
+}
+
 }  // namespace
 
 double EdgeNoise(const LabImage& lab, const TableRegion& table) {
@@ -185,33 +223,10 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
     std::nth_element(rates.begin(), rates.begin() + rates.size() / 2, rates.end());
     noise = std::max(noise, std::sqrt(static_cast<double>(rates[rates.size() / 2])));
   }
-  const float min_edge2 = static_cast<float>(std::pow(kMinEdgeNoises * noise, 2));
-  const float full_edge = static_cast<float>(std::max(kMinFullEdge, kFullEdgeNoises * noise));
-
-  cv::Mat votes = cv::Mat::zeros(small.size(), CV_32F);
-  for (int y = 1; y + 1 < small.rows; ++y) {
-    const float* m = strength2.ptr<float>(y);
-    for (int x = 1; x + 1 < small.cols; ++x) {
-      if (m[x] < min_edge2) continue;
-      float c, s;
-      gradient.DirectionAt(x, y, &c, &s);
-      // Thin: only the strongest pixel across the edge votes.
-      const int dx = static_cast<int>(std::lround(c)), dy = static_cast<int>(std::lround(s));
-      if (m[x] < strength2.at<float>(y + dy, x + dx) ||
-          m[x] < strength2.at<float>(y - dy, x - dx)) {
-        continue;
-      }
-      const double r = scale.RadiusAt(to_full(x, y)) / factor;
-      if (!(r > 1)) continue;
-      const float weight =
-          std::min(1.0f, std::sqrt(m[x]) / full_edge) / static_cast<float>(2 * M_PI * r);
-      Splat(votes, x + r * c, y + r * s, weight);
-      Splat(votes, x - r * c, y - r * s, weight);
-    }
-  }
-  const double sigma = std::max(1.0, kPeakRadii * smallest / factor);
-  cv::GaussianBlur(votes, votes, {0, 0}, sigma);
-  votes *= 2 * M_PI * sigma * sigma;  // the sum over the Gaussian's area, not its mean
+  cv::Mat votes = Votes(gradient, noise, [&](int x, int y) {
+    return scale.RadiusAt(to_full(x, y)) / factor;
+  });
+  SumOverPeaks(std::max(1.0, kPeakRadii * smallest / factor), &votes);
   const int separation = std::max(1, static_cast<int>(kPeakSeparationRadii * smallest / factor));
   cv::Mat neighbourhood_max;
   cv::dilate(votes, neighbourhood_max,
@@ -229,6 +244,34 @@ std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& ta
   std::sort(peaks.begin(), peaks.end(),
             [](const CircleVote& a, const CircleVote& b) { return a.support > b.support; });
   return peaks;
+}
+
+double FullResolutionSupport(const cv::Mat& bgr, const Eigen::Vector2d& centre, double radius,
+                             double edge_noise) {
+  if (!(radius > 1)) return 0.0;
+  // The circle, the edges it is thinned against, and the window's own border.
+  const int reach = static_cast<int>(std::ceil(radius)) + 3;
+  const cv::Point middle(static_cast<int>(std::lround(centre.x())),
+                         static_cast<int>(std::lround(centre.y())));
+  const cv::Rect window =
+      cv::Rect(middle.x - reach, middle.y - reach, 2 * reach + 1, 2 * reach + 1) &
+      cv::Rect(0, 0, bgr.cols, bgr.rows);
+  if (window.width < 3 || window.height < 3) return 0.0;
+  cv::Mat lab;
+  cv::cvtColor(bgr(window), lab, cv::COLOR_BGR2Lab);
+  cv::Mat votes = Votes(ColourGradient(lab), std::max(kMinNoise, edge_noise),
+                        [radius](int, int) { return radius; });
+  SumOverPeaks(std::max(1.0, kPeakRadii * radius), &votes);
+  // The peak nearest the centre given, as VoteForCircles would have found it.
+  const int near = std::max(1, static_cast<int>(std::lround(kPeakRadii * radius)));
+  const cv::Rect around =
+      cv::Rect(middle.x - window.x - near, middle.y - window.y - near, 2 * near + 1,
+               2 * near + 1) &
+      cv::Rect(0, 0, votes.cols, votes.rows);
+  if (around.empty()) return 0.0;
+  double peak = 0;
+  cv::minMaxLoc(votes(around), nullptr, &peak);
+  return peak;
 }
 
 }  // namespace billiard::estimator

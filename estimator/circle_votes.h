@@ -44,6 +44,14 @@ struct CircleVote {
 std::vector<CircleVote> VoteForCircles(const cv::Mat& bgr, const TableRegion& table,
                                        const BallScale& scale, double min_support);
 
+// The support of a circle of `radius` [px] centred within a tenth of its radius of `centre`,
+// voted as VoteForCircles does but at full resolution, in a window around it; `edge_noise` is
+// EdgeNoise's. At the votes' reduced resolution the crease between a dark ball and a bright
+// neighbour touching it is a pixel wide, and the thinning keeps the neighbour's edge only: the
+// black in the middle of a rack keeps a quarter of its outline there, all of it here.
+double FullResolutionSupport(const cv::Mat& bgr, const Eigen::Vector2d& centre, double radius,
+                             double edge_noise);
+
 // The median rate of colour change over the table [L*a*b* units per full-resolution px]: the
 // cloth's own texture and noise, the scale of what counts as an edge.
 double EdgeNoise(const LabImage& lab, const TableRegion& table);

@@ -9,6 +9,7 @@
 
 #include "estimator/ball_outline.h"
 #include "estimator/ball_scale.h"
+#include "estimator/lab_image.h"
 #include "estimator/table_finder.h"
 #include "estimator/testing/synthetic_table.h"
 
@@ -66,6 +67,37 @@ TEST(CircleVotes, APeakAtEveryBallIsolatedOrInARack) {
   // Strongest first.
   for (std::size_t i = 1; i < peaks.size(); ++i) {
     EXPECT_GE(peaks[i - 1].support, peaks[i].support);
+  }
+}
+
+TEST(CircleVotes, AtFullResolutionTheShareOfTheOutlineThereWhereverTheBall) {
+  // Its share of the outline: all of an isolated ball's, half of a ball cut by the frame's edge,
+  // none on bare cloth, and in a rack as much as the reduced resolution's votes give it (about
+  // half: touching balls of like lightness have faint creases) or more. The black in the middle
+  // of a rendered rack, with contact shadows, is BallDetector's test.
+  std::vector<SyntheticBall> balls = RackAndStrays(4);
+  const cv::Mat frame = DrawTable(balls, kRadius, kSize, kCloth, 3.0, 1);
+  const TableSearch search = FindTable(frame);
+  ASSERT_TRUE(search.table) << search.reason;
+  const double noise = EdgeNoise(LabImage(frame, search.table->Bounds()), *search.table);
+  const Eigen::Vector2d isolated = balls.back().centre;
+  EXPECT_NEAR(FullResolutionSupport(frame, isolated, kRadius, noise), 1.0, 0.15);
+  EXPECT_LT(FullResolutionSupport(frame, {300.0, 300.0}, kRadius, noise), 0.08);
+  const cv::Mat cut = frame(cv::Rect(cvRound(isolated.x()), 0, 300, kSize.height)).clone();
+  EXPECT_NEAR(FullResolutionSupport(cut, isolated - Eigen::Vector2d(cvRound(isolated.x()), 0),
+                                    kRadius, noise),
+              0.5, 0.12);
+  const BallScale scale{search.table->inverse_depth, kRadius};
+  const std::vector<CircleVote> peaks = VoteForCircles(frame, *search.table, scale, 0.0);
+  for (int i = 0; i < 10; ++i) {  // the rack
+    const Eigen::Vector2d centre = balls[i].centre;
+    double coarse = 0;
+    for (const CircleVote& peak : peaks) {
+      if ((peak.pixel - centre).norm() < 2.0) coarse = std::max(coarse, peak.support);
+    }
+    const double fine = FullResolutionSupport(frame, centre, kRadius, noise);
+    EXPECT_GT(fine, 0.45) << centre.transpose();
+    EXPECT_GT(fine, coarse - 0.02) << centre.transpose();
   }
 }
 
