@@ -43,8 +43,9 @@ constexpr double kChromaWeight = 0.3, kLightnessWeight = 0.3;
 // one per kColourUnit of ColourDistance (about the distance between neighbouring hues of the
 // sets, red and orange); a ball without coloured pixels costs kNoColourCost for a coloured class.
 // A ball none fits better than kUnknownCost (times its detection's score) stays unknown, and so
-// do the balls beyond the rack's count. The confidence is
-// 1 - (cost + kCostFloor) / (next best cost + kCostFloor).
+// do the balls beyond the rack's count. The confidence is 1 - (cost + kCostFloor) / (cost + margin
+// + kCostFloor), where the margin is what the whole assignment would lose were the ball not of its
+// class (ClassMargin).
 constexpr double kShareMargin = 0.15;
 constexpr double kColourUnit = 30.0;
 constexpr double kNoColourCost = 3.0;
@@ -330,6 +331,29 @@ double Cost(const DiscLook& look, BallClass ball_class, BallSet set) {
   return cost + (distance < HUGE_VAL ? distance / kColourUnit : kNoColourCost);
 }
 
+double TotalCost(const Eigen::MatrixXd& cost, const std::vector<int>& assigned) {
+  double total = 0;
+  for (int i = 0; i < cost.rows(); ++i) {
+    if (assigned[i] >= 0) total += cost(i, assigned[i]);
+  }
+  return total;
+}
+
+// How much more the best assignment costs when `ball` may not take any of the slots of
+// `ball_class` (whose class is `slots`'): its next best class, unless a ball given that class is
+// moved, or the rack's count of it lets another ball take this one's (two balls alike, one
+// slot). A rack has one of each number: the 11 whose stripe reads pale red is sure where the 3 is
+// plainly a solid, unsure where the 3 is not on the table.
+double ClassMargin(const Eigen::MatrixXd& cost, const std::vector<BallClass>& slots, int ball,
+                   BallClass ball_class, double best_total) {
+  Eigen::MatrixXd without = cost;
+  for (std::size_t s = 0; s < slots.size(); ++s) {
+    if (slots[s] == ball_class) without(ball, static_cast<int>(s)) = kForbiddenCost;
+  }
+  return std::max(
+      0.0, TotalCost(without, AssignMinimumCost(without, kForbiddenCost)) - best_total);
+}
+
 }  // namespace
 
 std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<BallDetection>& balls,
@@ -361,20 +385,13 @@ std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<Ba
     for (int j = 0; j < n; ++j) cost(i, known + j) = looks[i].seen ? unknown : 0.0;
   }
   const std::vector<int> assigned = AssignMinimumCost(cost, kForbiddenCost);
+  const double best_total = TotalCost(cost, assigned);
   std::vector<BallIdentity> identities(balls.size());
   for (int i = 0; i < n; ++i) {
     if (assigned[i] < 0 || assigned[i] >= known) continue;
     const BallClass ball_class = slots[assigned[i]];
-    // Confidence: the margin of the class given over the ball's next best class, as a ratio.
-    double given = 0, other = HUGE_VAL;
-    for (std::size_t c = 0; c < classes.size(); ++c) {
-      if (classes[c].first == ball_class) {
-        given = class_cost(i, c);
-      } else {
-        other = std::min(other, class_cost(i, c));
-      }
-    }
-    other = std::min(other, UnknownCost(balls[i]));
+    const double given = cost(i, assigned[i]);
+    const double other = given + ClassMargin(cost, slots, i, ball_class, best_total);
     identities[i] = {ball_class,
                      std::clamp(1.0 - (given + kCostFloor) / (other + kCostFloor), 0.0, 1.0)};
   }

@@ -347,9 +347,11 @@ nlohmann::json SceneSummary(const SceneResult& scene, const std::string& name) {
   }
   const TrackingReport& t = scene.tracking;
   double sum = 0.0, worst = 0.0;
-  int frames = 0, lost = 0;
+  int frames = 0, lost = 0, misnamed = 0, unnamed = 0, named_at_end = 0;
   for (const BallTracking& b : t.balls) {
-    nlohmann::json ball = {{"id", b.id}, {"frames", b.frames}, {"lost", b.lost}};
+    nlohmann::json ball = {{"id", b.id},           {"frames", b.frames},
+                           {"lost", b.lost},       {"misnamed", b.misnamed},
+                           {"unnamed", b.unnamed}, {"named_at_end", b.named_at_end}};
     if (b.frames > 0) {
       ball["rms_error_mm"] = 1e3 * std::sqrt(b.sum_squared_error / b.frames);
       ball["max_error_mm"] = 1e3 * b.max_error;
@@ -358,11 +360,17 @@ nlohmann::json SceneSummary(const SceneResult& scene, const std::string& name) {
     sum += b.sum_squared_error;
     frames += b.frames;
     lost += b.lost;
+    misnamed += b.misnamed;
+    unnamed += b.unnamed;
+    named_at_end += b.named_at_end;
     worst = std::max(worst, b.max_error);
   }
   j["tracking"]["rms_error_mm"] = frames > 0 ? 1e3 * std::sqrt(sum / frames) : 0.0;
   j["tracking"]["max_error_mm"] = 1e3 * worst;
   j["tracking"]["lost_ball_frames"] = lost;
+  j["tracking"]["misnamed_ball_frames"] = misnamed;
+  j["tracking"]["unnamed_ball_frames"] = unnamed;
+  j["tracking"]["named_at_end"] = named_at_end;
   j["tracking"]["swaps"] = t.swaps;
   j["tracking"]["reacquired"] = t.reacquired;
   return j;

@@ -398,9 +398,19 @@ void TableSimNode::Track(const std::vector<TruthBall>& balls, double t,
         track = &b;
       }
     }
+    tracking->named_at_end = false;
     if (track == nullptr) {
       ++tracking->lost;
       continue;
+    }
+    const int8_t own_class = ball.id == kCueBall ? ball_state_t::CLASS_CUE
+                                                 : static_cast<int8_t>(ball.id);
+    if (track->ball_class == ball_state_t::CLASS_UNKNOWN) {
+      ++tracking->unnamed;
+    } else if (track->ball_class != own_class) {
+      ++tracking->misnamed;
+    } else {
+      tracking->named_at_end = true;
     }
     const auto mapped = track_of_.find(ball.id);
     if (mapped != track_of_.end() && mapped->second != track->ball_id) {

@@ -120,11 +120,14 @@ struct ShotResult {
 
 // How the estimator followed one ball of a whole-table session, frame by frame (lockstep): the
 // error of the track associated with the ball (the nearest within a ball's radius), the frames
-// without a track there, and how often its track changed.
+// without a track there, how often its track changed, and the class the track was published with.
 struct BallTracking {
   int id = 0;
-  int frames = 0;  // frames with the ball tracked
-  int lost = 0;    // frames of the ball on the table without a track within a diameter
+  int frames = 0;    // frames with the ball tracked
+  int lost = 0;      // frames of the ball on the table without a track within a diameter
+  int misnamed = 0;  // of the tracked frames, those whose track was published as another ball
+  int unnamed = 0;   // and those whose track was published without a class
+  bool named_at_end = false;  // its track had its own class in its last frame on the table
   double sum_squared_error = 0.0;
   double max_error = 0.0;  // [m]
 };
