@@ -57,8 +57,9 @@ RenderedRun EstimateRenderedScene(const estimator::shots::Scene& scene, double d
   std::vector<render::RenderBall> balls;
   for (std::size_t i = 0; i < scene.rest.size(); ++i) {
     const int id = static_cast<int>(i);
-    balls.push_back(
-        {id, render::PoolBallColour(id % 16), [&scene, i](double t) { return scene.At(i, t); }});
+    balls.push_back({id, render::PoolBallColour(id % 16),
+                     [&scene, i](double t) { return scene.At(i, t); },
+                     render::PoolBallStriped(id % 16)});
   }
   estimator::EstimatorOptions options;
   options.tracker.measurement_sigma = 0.3e-3;

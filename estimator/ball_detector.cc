@@ -426,12 +426,20 @@ std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
     SettleScale(bgr, &balls);
     balls = FindBalls(bgr, Doubts::kVotedAgain);
   }
-  const std::vector<BallIdentity> identities = IdentifyBalls(bgr, balls, options_.ball_set);
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    balls[i].ball_class = identities[i].ball_class;
-    balls[i].class_confidence = identities[i].confidence;
-  }
+  Name(bgr, &balls);
   return balls;
+}
+
+void BallDetector::Identify(const cv::Mat& image, std::vector<BallDetection>* balls) const {
+  Name(Smoothed(AsBgr(image)), balls);
+}
+
+void BallDetector::Name(const cv::Mat& bgr, std::vector<BallDetection>* balls) const {
+  const std::vector<BallIdentity> identities = IdentifyBalls(bgr, *balls, options_.ball_set);
+  for (std::size_t i = 0; i < balls->size(); ++i) {
+    (*balls)[i].ball_class = identities[i].ball_class;
+    (*balls)[i].class_confidence = identities[i].confidence;
+  }
 }
 
 void BallDetector::SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* balls) {

@@ -95,6 +95,10 @@ class BallDetector {
   std::optional<BallDetection> RefineAt(const cv::Mat& image, const Eigen::Vector2d& predicted,
                                         double radius_px) const;
 
+  // Names the balls of a frame as Detect names its own (ball_identity.h): every ball of the frame
+  // at once, the rack's count of each class respected. For balls RefineAt found.
+  void Identify(const cv::Mat& image, std::vector<BallDetection>* balls) const;
+
   // How much of the table's outline a frame shows where the frame the table was learnt from
   // showed it: the normalized correlation of the two frames' colour gradients along the cloth's
   // outline (the rails and pockets, which do not move when the balls do), at the table search's
@@ -114,6 +118,8 @@ class BallDetector {
  private:
   // Whether FindBalls votes again, at full resolution, for the outlines it doubts.
   enum class Doubts { kAsVoted, kVotedAgain };
+  // Step 5 on a frame as Detect smooths it.
+  void Name(const cv::Mat& bgr, std::vector<BallDetection>* balls) const;
   // Steps 1 to 4 (see the top of the file) at the current scale.
   std::vector<BallDetection> FindBalls(const cv::Mat& bgr, Doubts doubts) const;
   // Settles a measured scale from the balls found, finding them again if it changed.

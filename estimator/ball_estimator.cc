@@ -1,8 +1,14 @@
 #include "estimator/ball_estimator.h"
 
+#include <algorithm>
+
 namespace billiard::estimator {
 
 namespace {
+
+// A track's identity is in doubt below this probability of its likeliest class: two balls that
+// met share theirs about evenly (0.5); a few frames of detections name a ball above 0.99.
+constexpr double kIdentityInDoubt = 0.9;
 
 // The detector looks for the camera's balls: of their size, and of their set's classes.
 DetectorOptions ForTheBalls(DetectorOptions options, const camera::CameraModel& camera,
@@ -18,6 +24,13 @@ DetectorOptions ForTheBalls(DetectorOptions options, const camera::CameraModel& 
 TrackerOptions ForTheBalls(TrackerOptions options, const physics::ModelParameters& params) {
   options.ball_set = BallSetOf(params.name);
   return options;
+}
+
+// Whether a published track's likeliest class is less likely than kIdentityInDoubt.
+bool IdentityInDoubt(const std::vector<TrackedBall>& tracks) {
+  return std::any_of(tracks.begin(), tracks.end(), [](const TrackedBall& t) {
+    return t.confirmed && t.class_confidence < kIdentityInDoubt;
+  });
 }
 
 }  // namespace
@@ -47,6 +60,7 @@ bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats
   std::vector<ClassEvidence> classes;  // one per measurement
   bool full = frames_++ % options_.full_detect_every == 0 || tracker_.tracks().empty();
   if (!full) {
+    std::vector<BallDetection> refined;
     for (const Eigen::Vector2d& predicted : tracker_.Predict(time)) {
       const auto found = detector_.RefineAt(
           frame, camera_.Project({predicted.x(), predicted.y(), params_.ball.radius}), radius_px);
@@ -61,9 +75,14 @@ bool BallEstimator::Process(const cv::Mat& frame, double time, FrameStats* stats
       for (const Eigen::Vector2d& y : measured) seen = seen || (x - y).norm() < params_.ball.radius;
       if (seen) continue;
       measured.push_back(x);
-      // RefineAt answers only at the sure score: a track the first frame doubted is published
-      // from here, as from any sure detection. The class is read on full frames only.
-      classes.push_back({BallClass::kUnknown, 0.0, found->score});
+      refined.push_back(*found);
+    }
+    // RefineAt answers only at the sure score: a track the first frame doubted is published from
+    // here, as from any sure detection. The classes are read where a track's is in doubt (balls
+    // that met share their identities, ball_tracker.h), not left to the next full detection.
+    if (!full && IdentityInDoubt(tracker_.tracks())) detector_.Identify(frame, &refined);
+    for (const BallDetection& d : refined) {
+      classes.push_back({d.ball_class, d.class_confidence, d.score});
     }
   }
   if (full) {

@@ -4,7 +4,9 @@
 // Speed: a full-frame Detect costs several times a RefineAt per ball, so once every ball is
 // tracked each frame only refines the balls near their predicted pixels, and a full Detect runs
 // every `full_detect_every` frames (to pick up a ball put on the table) or when a refinement
-// misses.
+// misses. The refined balls' classes are read (BallDetector::Identify) on the frames where a
+// published track's identity is in doubt, as after two balls met and shared theirs
+// (ball_tracker.h): the next full detection may be a second away.
 //
 // A fixed camera's table is learnt once, on its first frame, and kept. Each full detection first
 // checks that the view has not moved (BallDetector::OutlineAgreement below kMovedAgreement: the

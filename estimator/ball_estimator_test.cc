@@ -69,10 +69,12 @@ TEST(BallEstimator, TracksEveryBallThroughABreakAtThirtyFramesASecond) {
   std::vector<render::RenderBall> shown;
   for (std::size_t i = 0; i < sim.ball_count(); ++i) {
     const table::SceneBall rest = balls[i];
-    shown.push_back({sim.id(i), render::PoolBallColour(sim.id(i)), [&sim, i, rest](double t) {
+    shown.push_back({sim.id(i), render::PoolBallColour(sim.id(i)),
+                     [&sim, i, rest](double t) {
                        return t < kStrike ? Eigen::Vector2d(rest.state.head<2>())
                                           : Eigen::Vector2d(sim.StateAt(i, t - kStrike).head<2>());
-                     }});
+                     },
+                     render::PoolBallStriped(sim.id(i))});
   }
   BallEstimator estimator(camera, p);
   std::map<int, int> track_of;  // ball id -> its track

@@ -22,8 +22,10 @@
 //     changes the lightness across a ball, and the camera's exposure all of it); for pool, a ball
 //     whose disc is a large share plain (kStripePlain) is a stripe (9-15), else a solid (1-7).
 // The classes are given all at once, the rack's count of each respected (assignment.h). The
-// confidence is how clearly the ball is what it was called: the margin of its class's cost over
-// its next best class's (a ratio), in [0, 1].
+// confidence is how clearly the ball is what it was called, in [0, 1]: how much more the whole
+// assignment would cost were the ball not of its class, against its class's cost (a ratio). It is
+// the rack's margin, not the ball's alone: of two red solids alike, neither is sure which is the 3;
+// a pale red stripe whose other fit, the 3, is plainly another ball's is sure it is the 11.
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -141,6 +141,24 @@ cv::Mat DrawShadedBalls(const std::vector<DrawnBall>& balls, std::vector<BallDet
 // A stripe's cap turned away from the light is dark grey, neither white nor black: it is still
 // the stripe's white (its chroma is as small against its lightness as the lit cap's), and a
 // solid's shaded side keeps its colour. The blue and the red each as a solid and as a stripe.
+TEST(BallIdentity, TheConfidenceIsTheRacksNotTheBallsAlone) {
+  // Two red solids alike: whichever is called the 3 (the rack has one), the other could be it as
+  // well, so neither is sure of it, however plainly each looks a 3 (alone, its margin over its
+  // next best class, the 7, is wide). Beside the cue ball alone, the same 3 is sure.
+  const Rendered alone = RenderRow({1, 1, 1}, {0, 3});
+  const auto one = IdentifyBalls(alone.frame, alone.balls, BallSet::kPool);
+  ASSERT_EQ(one.size(), 2u);
+  EXPECT_EQ(one[1].ball_class, PoolBall(3));
+  EXPECT_GT(one[1].confidence, 0.5);
+  const Rendered twins = RenderRow({1, 1, 1}, {0, 3, 3});
+  const auto two = IdentifyBalls(twins.frame, twins.balls, BallSet::kPool);
+  ASSERT_EQ(two.size(), 3u);
+  const int three = two[1].ball_class == PoolBall(3) ? 1 : 2;
+  EXPECT_EQ(two[three].ball_class, PoolBall(3));
+  EXPECT_LT(two[three].confidence, 0.5);
+  EXPECT_LT(two[3 - three].confidence, 0.5);
+}
+
 TEST(BallIdentity, AStripesWhiteInShadeStillMarksAStripe) {
   const cv::Vec3b blue(20, 50, 160), red(215, 30, 30);
   std::vector<BallDetection> detected;

@@ -340,13 +340,17 @@ if "scene" in s:
     scene, tracking = s["scene"], s["scene"]["tracking"]
     pocketed = [f"{b['id']} ({b['pocketed']})" for b in scene["balls"] if b["pocketed"]]
     print(f"{scene['name']}: {scene['events']} events, pocketed: {', '.join(pocketed) or 'none'}")
-    print(f"{'ball':>4} {'frames':>6} {'lost':>5} {'rms mm':>7} {'max mm':>7}")
+    print(f"{'ball':>4} {'frames':>6} {'lost':>5} {'rms mm':>7} {'max mm':>7} {'misnamed':>8} {'at end':>6}")
     for b in tracking["balls"]:
         print(f"{b['id']:>4} {b['frames']:>6} {b['lost']:>5} {b.get('rms_error_mm', float('nan')):7.2f} "
-              f"{b.get('max_error_mm', float('nan')):7.2f}")
+              f"{b.get('max_error_mm', float('nan')):7.2f} {b['misnamed'] + b['unnamed']:>8} "
+              f"{'right' if b['named_at_end'] else 'wrong':>6}")
     print(f"tracking: rms {tracking['rms_error_mm']:.2f} mm, max {tracking['max_error_mm']:.2f} mm, "
           f"{tracking['swaps']} swaps, {tracking['reacquired']} tracks re-acquired, "
-          f"{tracking['lost_ball_frames']} ball-frames without a track")
+          f"{tracking['lost_ball_frames']} ball-frames without a track; identity: "
+          f"{tracking['misnamed_ball_frames']} ball-frames misnamed, "
+          f"{tracking['unnamed_ball_frames']} unnamed, {tracking['named_at_end']} of "
+          f"{len(tracking['balls'])} balls named right at the end")
 PY
 # The planner's online identifications, each after the shots it was fitted to.
 grep -h "identif" "$planner_err" >&2 || true

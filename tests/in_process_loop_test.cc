@@ -182,14 +182,22 @@ table_sim_node::SceneResult Break(std::uint64_t seed) {
   return node.RunScene();
 }
 
-// Issue 27's acceptance: every ball tracked in every frame, the worst frame within 5 mm, no swaps.
+// Issue 27's acceptance: every ball tracked in every frame, the worst frame within 5 mm, no swaps,
+// identities kept: every ball named right at the end, and misnamed in at most 1 % of its frames
+// (a frame or two as two balls meet and share their identities; 2 to 9 % before the classes were
+// read as soon as a track's was in doubt).
 void ExpectEveryBallTrackedInEveryFrame(const table_sim_node::TrackingReport& tracking) {
   ASSERT_EQ(tracking.balls.size(), 16u);
   EXPECT_EQ(tracking.swaps, 0);
+  int frames = 0, misnamed = 0;
   for (const table_sim_node::BallTracking& b : tracking.balls) {
     EXPECT_EQ(b.lost, 0) << "ball " << b.id;
     EXPECT_LE(b.max_error, 5e-3) << "ball " << b.id;
+    EXPECT_TRUE(b.named_at_end) << "ball " << b.id;
+    frames += b.frames;
+    misnamed += b.misnamed + b.unnamed;
   }
+  EXPECT_LE(misnamed, 0.01 * frames);
 }
 
 TEST(InProcessLoop, ABreakIsPlannedSimulatedAndTrackedBallByBall) {
