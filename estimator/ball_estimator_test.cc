@@ -38,14 +38,17 @@ TEST(BallEstimator, RefusesEmptyMisSizedAndBackwardFrames) {
 }
 
 // The loop's break (run_loop.sh --scene break): the eight-ball rack, the cue ball rolling into
-// its head ball at 5 m/s, seen from overhead at 1280x720 and 30 frames a second, the truth from
+// its head ball at 7 m/s (issue 27's fast cue ball: 28 mm of motion blur in the 4 ms exposure; at
+// 9 m/s, beyond TrackerOptions::max_speed, its first frame after the strike falls outside the
+// association's gate and starts a track of its own), seen from overhead at 1280x720 and 30 frames
+// a second, the stripes striped as table_sim_node renders them, the truth from
 // the whole-table simulation. Every ball on the table is tracked in every frame from the first
 // (a sure detection is published at once), within 5 mm (a racked ball sent off at 2 m/s, or the
-// cue ball struck from rest, moves 50-170 mm between frames: the track must follow the jump,
+// cue ball struck from rest, moves 50-230 mm between frames: the track must follow the jump,
 // not a fraction of it), its track never another ball's.
 TEST(BallEstimator, TracksEveryBallThroughABreakAtThirtyFramesASecond) {
   constexpr double kRate = 30.0, kStrike = 0.1, kAfter = 3.0;  // [Hz], [s], [s]
-  constexpr double kBreakSpeed = 5.0;                          // [m/s]
+  constexpr double kBreakSpeed = 7.0;                          // [m/s]
   constexpr double kMaxErrorMm = 5.0;
   const physics::ModelParameters& p = Pool();
   const double r = p.ball.radius;
