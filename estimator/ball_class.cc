@@ -1,5 +1,6 @@
 #include "estimator/ball_class.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace billiard::estimator {
@@ -42,6 +43,24 @@ std::vector<BallClass> ClassesIn(BallSet set) {
       break;
   }
   return classes;
+}
+
+int CountIn(BallSet set, BallClass ball_class) {
+  constexpr int kSnookerReds = 15, kCaromReds = 2, kBlackballGroup = 7;
+  const std::vector<BallClass> classes = ClassesIn(set);
+  if (std::find(classes.begin(), classes.end(), ball_class) == classes.end()) return 0;
+  switch (set) {
+    case BallSet::kSnooker:
+      return ball_class == BallClass::kRed ? kSnookerReds : 1;
+    case BallSet::kCarom:
+      return ball_class == BallClass::kRed ? kCaromReds : 1;
+    case BallSet::kBlackball:
+      return ball_class == BallClass::kRed || ball_class == BallClass::kYellow ? kBlackballGroup
+                                                                              : 1;
+    case BallSet::kPool:
+      break;
+  }
+  return 1;
 }
 
 std::string BallClassName(BallClass ball_class) {

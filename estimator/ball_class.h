@@ -42,6 +42,11 @@ BallClass PoolBall(int number);
 // ball of the set.
 std::vector<BallClass> ClassesIn(BallSet set);
 
+// How many balls of `ball_class` a set holds: snooker's 15 reds, carom's 2 (four-ball games have
+// two), English pool's 7 reds and 7 yellows; 1 for every other class of the set, 0 for a class
+// not in it.
+int CountIn(BallSet set, BallClass ball_class);
+
 // "cue", "1".."15", "red", "yellow", ... or "unknown".
 std::string BallClassName(BallClass ball_class);
 

@@ -38,17 +38,16 @@ TEST(BallEstimator, RefusesEmptyMisSizedAndBackwardFrames) {
 }
 
 // The loop's break (run_loop.sh --scene break): the eight-ball rack, the cue ball rolling into
-// its head ball at 7 m/s (issue 27's fast cue ball: 28 mm of motion blur in the 4 ms exposure; at
-// 9 m/s, beyond TrackerOptions::max_speed, its first frame after the strike falls outside the
-// association's gate and starts a track of its own), seen from overhead at 1280x720 and 30 frames
-// a second, the stripes striped as table_sim_node renders them, the truth from
-// the whole-table simulation. Every ball on the table is tracked in every frame from the first
+// its head ball at `break_speed` (below, 7 m/s: issue 27's fast cue ball, 28 mm of motion blur in
+// the 4 ms exposure; at 9 m/s, beyond TrackerOptions::max_speed, its first frame after the strike
+// falls outside the association's gate and starts a track of its own), seen from overhead at
+// 1280x720 and 30 frames a second, the stripes striped as table_sim_node renders them (or not),
+// the truth from the whole-table simulation. Every ball on the table is tracked in every frame from the first
 // (a sure detection is published at once), within 5 mm (a racked ball sent off at 2 m/s, or the
 // cue ball struck from rest, moves 50-230 mm between frames: the track must follow the jump,
 // not a fraction of it), its track never another ball's.
-TEST(BallEstimator, TracksEveryBallThroughABreakAtThirtyFramesASecond) {
+void ExpectABreakTrackedAtThirtyFramesASecond(double break_speed, bool stripes_striped) {
   constexpr double kRate = 30.0, kStrike = 0.1, kAfter = 3.0;  // [Hz], [s], [s]
-  constexpr double kBreakSpeed = 7.0;                          // [m/s]
   constexpr double kMaxErrorMm = 5.0;
   const physics::ModelParameters& p = Pool();
   const double r = p.ball.radius;
@@ -62,7 +61,7 @@ TEST(BallEstimator, TracksEveryBallThroughABreakAtThirtyFramesASecond) {
     const Eigen::Vector2d x = balls[i].state.head<2>();
     if ((x - cue).norm() < (head - cue).norm()) head = x;
   }
-  const Eigen::Vector2d v = kBreakSpeed * (head - cue).normalized();
+  const Eigen::Vector2d v = break_speed * (head - cue).normalized();
   balls[0].state = physics::MakeBallState(cue.x(), cue.y(), v.x(), v.y(), -v.y() / r, v.x() / r, 0);
   table::TableSimulation sim(geometry, p, balls);
   sim.Run(kAfter);
@@ -77,7 +76,7 @@ TEST(BallEstimator, TracksEveryBallThroughABreakAtThirtyFramesASecond) {
                        return t < kStrike ? Eigen::Vector2d(rest.state.head<2>())
                                           : Eigen::Vector2d(sim.StateAt(i, t - kStrike).head<2>());
                      },
-                     render::PoolBallStriped(sim.id(i))});
+                     stripes_striped && render::PoolBallStriped(sim.id(i))});
   }
   BallEstimator estimator(camera, p);
   std::map<int, int> track_of;  // ball id -> its track
@@ -117,7 +116,20 @@ TEST(BallEstimator, TracksEveryBallThroughABreakAtThirtyFramesASecond) {
   }
   EXPECT_EQ(lost, 0);
   EXPECT_EQ(swaps, 0);
-  RecordProperty("worst_error_mm", std::to_string(1e3 * worst));
+  ::testing::Test::RecordProperty("worst_error_mm", std::to_string(1e3 * worst));
+}
+
+TEST(BallEstimator, TracksEveryBallThroughABreakAtThirtyFramesASecond) {
+  ExpectABreakTrackedAtThirtyFramesASecond(7.0, true);
+}
+
+// The same break at 5 m/s with the stripes drawn as solids: every object ball has a twin (the 1
+// and the 9, ...), so no detection tells the racked balls apart (the rack's margin, the class's
+// confidence, is 0), as snooker's reds cannot be. The cue ball, stopped dead by the head ball and
+// detected beside the balls it pushed on, keeps its track by its class alone: the cue ball's
+// track holds it surely (without it, the cue ball took the track of the ball beside it).
+TEST(BallEstimator, TheCueBallKeepsItsTrackAmongBallsItCannotBeToldFrom) {
+  ExpectABreakTrackedAtThirtyFramesASecond(5.0, false);
 }
 
 // The loop's camera (table_sim_node's: overhead, 1280x720) and its frames as the estimator gets

@@ -52,9 +52,6 @@ constexpr double kNoColourCost = 3.0;
 constexpr double kUnknownCost = 4.0;
 constexpr double kForbiddenCost = 1e6;
 constexpr double kCostFloor = 0.1;
-// The racks' counts beyond one: snooker's reds, carom's reds (four-ball games have two), English
-// pool's reds and yellows.
-constexpr int kSnookerReds = 15, kCaromReds = 2, kBlackballGroup = 7;
 
 struct Colour {
   BallClass ball_class;
@@ -267,27 +264,8 @@ double UnknownCost(const BallDetection& ball) {
 
 // How many balls of each class a set holds.
 std::vector<std::pair<BallClass, int>> ClassesOf(BallSet set) {
-  std::vector<std::pair<BallClass, int>> classes = {{BallClass::kCue, 1}};
-  switch (set) {
-    case BallSet::kPool:
-      for (int number = 1; number <= 15; ++number) classes.push_back({PoolBall(number), 1});
-      break;
-    case BallSet::kSnooker:
-      classes.push_back({BallClass::kBlack, 1});
-      for (const Colour& c : ColoursOf(set)) {
-        classes.push_back({c.ball_class, c.ball_class == BallClass::kRed ? kSnookerReds : 1});
-      }
-      break;
-    case BallSet::kCarom:
-      for (const Colour& c : ColoursOf(set)) {
-        classes.push_back({c.ball_class, c.ball_class == BallClass::kRed ? kCaromReds : 1});
-      }
-      break;
-    case BallSet::kBlackball:
-      classes.push_back({BallClass::kBlack, 1});
-      for (const Colour& c : ColoursOf(set)) classes.push_back({c.ball_class, kBlackballGroup});
-      break;
-  }
+  std::vector<std::pair<BallClass, int>> classes;
+  for (const BallClass c : ClassesIn(set)) classes.push_back({c, CountIn(set, c)});
   return classes;
 }
 

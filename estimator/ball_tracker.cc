@@ -26,6 +26,25 @@ double ClassMismatch(const TrackedBall& track, const ClassEvidence& detection) {
   return (track.class_confidence - probability) * detection.confidence;
 }
 
+// How surely another track than `track` (an index of `tracks`) holds `detection`'s class, when the
+// set has one ball of it (the cue ball, a numbered ball): the largest probability of the class on
+// a confirmed other track, times the detection's confidence. A cue ball seen beside racked balls
+// it cannot yet be told from by their tracks' beliefs is still the cue ball's track's.
+double HeldByAnother(const std::vector<TrackedBall>& tracks, std::size_t track,
+                     const ClassEvidence& detection, BallSet set) {
+  if (detection.ball_class == BallClass::kUnknown || CountIn(set, detection.ball_class) != 1) {
+    return 0.0;
+  }
+  double held = 0.0;
+  for (std::size_t k = 0; k < tracks.size(); ++k) {
+    if (k == track || !tracks[k].confirmed) continue;
+    for (const ClassEvidence& c : tracks[k].class_belief) {
+      if (c.ball_class == detection.ball_class) held = std::max(held, c.confidence);
+    }
+  }
+  return held * detection.confidence;
+}
+
 // The track's class: its likeliest, unknown while no class is likelier than every other (a
 // track no detection has yet named).
 void TakeLikeliestClass(TrackedBall* track) {
@@ -284,8 +303,9 @@ bool BallTracker::Update(double time, const std::vector<Eigen::Vector2d>& detect
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     for (std::size_t j = 0; j < detections.size(); ++j) {
       cost(i, j) = (detections[j] - tracks_[i].position()).norm() +
-                   ClassMismatch(tracks_[i], class_of(j)) * kClassMismatchRadii *
-                       params_.ball.radius;
+                   (ClassMismatch(tracks_[i], class_of(j)) +
+                    HeldByAnother(tracks_, i, class_of(j), options_.ball_set)) *
+                       kClassMismatchRadii * params_.ball.radius;
     }
   }
   const std::vector<int> assigned = AssignMinimumCost(cost, gate);

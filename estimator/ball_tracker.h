@@ -16,8 +16,10 @@
 // gated by how far the fastest ball moves in a frame, so that a ball struck next to others keeps
 // its identity and balls passing close do not swap. A detection whose class (ball_identity.h)
 // disagrees with its track's costs kClassMismatchRadii ball radii more, times the detection's
-// confidence and how much less likely its class is on the track than the track's likeliest: two
-// balls of different colours passing close keep their tracks. The association
+// confidence and how much less likely its class is on the track than the track's likeliest, and as
+// much again times how surely another track holds its class where the set has one ball of it: two
+// balls of different colours passing close keep their tracks, and the cue ball meeting a rack of
+// balls no detection has yet told apart keeps its own. The association
 // weighs the identities from before the frame's contacts: what decides who left an impact on
 // which path is who came into it.
 // Class: each track holds the probability of each class of the ball set (a discrete Bayes filter,
