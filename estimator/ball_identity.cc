@@ -15,6 +15,11 @@ namespace {
 // The disc a ball's colours are read from, in fitted radii: inside the blur of the outline and
 // the darkest shading at the rim.
 constexpr double kDiscRadii = 0.75;
+// The disc a ball's plain share is read from, in fitted radii: nearly the whole ball. A stripe
+// turned with its band to the camera shows its white caps only near the limb, foreshortened and in
+// shade, outside kDiscRadii; a solid shows its colour there too (the cloth beyond the outline's
+// blur is coloured, or dark and saturated in the ball's shadow).
+constexpr double kLimbRadii = 0.9;
 // A pixel is grey when its chroma (sqrt(a*^2 + b*^2)) is below kGreyChroma; grey and at least
 // kWhiteLightness (after the exposure is set, below) it is white, grey and at most
 // kBlackLightness black.
@@ -31,8 +36,8 @@ constexpr float kClippedLevel = 250.0f / 255.0f;
 // A pixel is plain (Plain) when its chroma is below kPlainSaturation of its L*.
 constexpr double kPlainSaturation = 0.3;
 // Shares of a ball's disc: the cue ball is at least kCueWhite white with at most kCueColour
-// coloured; a black ball at least kBlackShare black; a pool ball at least kStripePlain plain a
-// stripe (its white caps, lit or in shade).
+// coloured; a black ball at least kBlackShare black; a pool ball at least kStripePlain plain
+// within kLimbRadii a stripe (its white caps, lit or in shade, facing the camera or at the limb).
 constexpr double kCueWhite = 0.6, kCueColour = 0.2;
 constexpr double kBlackShare = 0.5;
 constexpr double kStripePlain = 0.3;
@@ -117,10 +122,10 @@ double Median(std::vector<float>& values) {
   return values[values.size() / 2];
 }
 
-// A ball's disc pixels (BGR, 0..1).
-std::vector<cv::Vec3f> DiscPixels(const cv::Mat& bgr, const BallDetection& ball) {
+// A ball's disc pixels (BGR, 0..1) within `radii` of its fitted radius.
+std::vector<cv::Vec3f> DiscPixels(const cv::Mat& bgr, const BallDetection& ball, double radii) {
   std::vector<cv::Vec3f> pixels;
-  const double reach = kDiscRadii * ball.radius_px;
+  const double reach = radii * ball.radius_px;
   const int x0 = std::max(0, static_cast<int>(std::floor(ball.pixel.x() - reach)));
   const int x1 = std::min(bgr.cols - 1, static_cast<int>(std::ceil(ball.pixel.x() + reach)));
   const int y0 = std::max(0, static_cast<int>(std::floor(ball.pixel.y() - reach)));
@@ -207,8 +212,8 @@ cv::Vec3f WhiteBalance(const std::vector<std::vector<cv::Vec3f>>& discs) {
   return gain;
 }
 
-// What a ball's disc shows: its shares of white, black, plain and coloured pixels, and the
-// coloured ones' median colour.
+// What a ball shows: its disc's shares of white, black and coloured pixels and the coloured ones'
+// median colour, and the share of plain pixels over nearly the whole ball (kLimbRadii).
 struct DiscLook {
   double white = 0, black = 0, plain = 0, colour = 0;
   cv::Vec3f median{0, 0, 0};  // L*a*b*, of the coloured pixels
@@ -225,28 +230,32 @@ bool Plain(const cv::Vec3f& lab) {
   return chroma < kPlainSaturation * lab[0] || (chroma < kGreyChroma && lab[0] <= kBlackLightness);
 }
 
-DiscLook Look(const std::vector<cv::Vec3f>& lab) {
+double PlainShare(const std::vector<cv::Vec3f>& lab) {
+  if (lab.empty()) return 0.0;
+  return static_cast<double>(std::count_if(lab.begin(), lab.end(), Plain)) / lab.size();
+}
+
+// `disc` and `limb`: the ball's pixels (L*a*b*) within kDiscRadii and kLimbRadii.
+DiscLook Look(const std::vector<cv::Vec3f>& disc, const std::vector<cv::Vec3f>& limb) {
   DiscLook look;
-  if (lab.empty()) return look;
+  if (disc.empty()) return look;
   look.seen = true;
-  int white = 0, black = 0, plain = 0;
+  int white = 0, black = 0;
   std::vector<float> a, b, l;
-  for (const auto& p : lab) {
+  for (const auto& p : disc) {
     const bool grey = Chroma(p) < kGreyChroma;
     white += grey && p[0] >= kWhiteLightness;
     black += grey && p[0] <= kBlackLightness;
-    if (Plain(p)) {
-      ++plain;
-    } else {
+    if (!Plain(p)) {
       a.push_back(p[1]);
       b.push_back(p[2]);
       l.push_back(p[0]);
     }
   }
-  const double n = static_cast<double>(lab.size());
+  const double n = static_cast<double>(disc.size());
   look.white = white / n;
   look.black = black / n;
-  look.plain = plain / n;
+  look.plain = PlainShare(limb);
   look.colour = a.size() / n;
   if (!a.empty()) {
     look.median = {static_cast<float>(Median(l)), static_cast<float>(Median(a)),
@@ -337,10 +346,13 @@ double ClassMargin(const Eigen::MatrixXd& cost, const std::vector<BallClass>& sl
 std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<BallDetection>& balls,
                                         BallSet set) {
   std::vector<std::vector<cv::Vec3f>> discs;
-  for (const BallDetection& ball : balls) discs.push_back(DiscPixels(bgr, ball));
+  for (const BallDetection& ball : balls) discs.push_back(DiscPixels(bgr, ball, kDiscRadii));
   const cv::Vec3f gain = WhiteBalance(discs);
   std::vector<DiscLook> looks;
-  for (const auto& disc : discs) looks.push_back(Look(ToLab(disc, gain)));
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    looks.push_back(
+        Look(ToLab(discs[i], gain), ToLab(DiscPixels(bgr, balls[i], kLimbRadii), gain)));
+  }
   // The rack holds so many of each class: one slot per ball of it, and for every ball a slot
   // "unknown" at kUnknownCost, which takes the balls beyond the rack's count (a false detection,
   // a ball of another set) and those no class fits.

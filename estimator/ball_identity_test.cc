@@ -107,10 +107,11 @@ TEST(BallIdentity, ARackHasOneOfEachNumber) {
 
 // A pool ball drawn on a cloth, lit from the left: its brightness falls from the lit limb to a
 // quarter of it at the far one (Lambert's law along the light's direction). A stripe's band runs
-// up and down the middle (a third of the ball's width each side), its white caps left and right.
+// up and down the middle (`band` of the ball's radius each side), its white caps left and right.
 struct DrawnBall {
   cv::Vec3b srgb;       // the ball's colour, R, G, B
   bool stripe = false;  // white beyond the band
+  double band = 1.0 / 3;
 };
 
 constexpr double kDrawnRadiusPx = 24;
@@ -126,7 +127,7 @@ cv::Mat DrawShadedBalls(const std::vector<DrawnBall>& balls, std::vector<BallDet
         const double dx = (x - cx) / kDrawnRadiusPx, dy = (y - cy) / kDrawnRadiusPx;
         if (dx * dx + dy * dy > 1) continue;
         const double light = 1.0 - 0.75 * (dx + 1) / 2;
-        const bool white = balls[i].stripe && std::abs(dx) > 1.0 / 3;
+        const bool white = balls[i].stripe && std::abs(dx) > balls[i].band;
         const cv::Vec3b& c = white ? cv::Vec3b(255, 255, 255) : balls[i].srgb;
         frame.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<uchar>(c[2] * light),
                                               cv::saturate_cast<uchar>(c[1] * light),
@@ -174,6 +175,38 @@ TEST(BallIdentity, AStripesWhiteInShadeStillMarksAStripe) {
   const std::vector<std::string> expected = {"cue", "2", "10", "3", "11", "8"};
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(BallClassName(identities[i].ball_class), expected[i]) << "ball " << i;
+  }
+}
+
+// A stripe turned with its band to the camera, its axis across the view: its caps show only at
+// the limb, beyond 0.8 of its radius (a band of +-53 degrees of latitude seen side on), the right
+// one in shade. Beside the solids, the one of its colour too, each is still a stripe, whichever
+// comes first: the solids' limbs, shaded as they are, stay coloured.
+TEST(BallIdentity, AStripeWhoseCapsShowOnlyAtTheLimb) {
+  constexpr double kBandOn = 0.8;
+  const auto srgb = [](int number) {  // the renderer's colours, B, G, R
+    const cv::Vec3b bgr = render::PoolBallColour(number);
+    return cv::Vec3b(bgr[2], bgr[1], bgr[0]);
+  };
+  for (const bool stripes_first : {false, true}) {
+    std::vector<DrawnBall> balls;
+    std::vector<std::string> expected;
+    for (int number = 0; number <= 8; ++number) {
+      balls.push_back({srgb(number), false});
+      expected.push_back(number == 0 ? "cue" : std::to_string(number));
+    }
+    for (const int number : {10, 11}) {
+      balls.insert(stripes_first ? balls.begin() : balls.end(), {srgb(number), true, kBandOn});
+      expected.insert(stripes_first ? expected.begin() : expected.end(), std::to_string(number));
+    }
+    std::vector<BallDetection> detected;
+    const cv::Mat frame = DrawShadedBalls(balls, &detected);
+    const auto identities = IdentifyBalls(frame, detected, BallSet::kPool);
+    ASSERT_EQ(identities.size(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      EXPECT_EQ(BallClassName(identities[i].ball_class), expected[i])
+          << "ball " << i << (stripes_first ? ", the stripes first" : "");
+    }
   }
 }
 
