@@ -122,10 +122,17 @@ double Median(std::vector<float>& values) {
   return values[values.size() / 2];
 }
 
-// A ball's disc pixels (BGR, 0..1) within `radii` of its fitted radius.
-std::vector<cv::Vec3f> DiscPixels(const cv::Mat& bgr, const BallDetection& ball, double radii) {
+// The per-channel median of pixels' L*, a* and b*.
+cv::Vec3f MedianColour(std::vector<float>& l, std::vector<float>& a, std::vector<float>& b) {
+  return {static_cast<float>(Median(l)), static_cast<float>(Median(a)),
+          static_cast<float>(Median(b))};
+}
+
+// A ball's pixels (BGR, 0..1) from `inner` to `outer` of its fitted radius.
+std::vector<cv::Vec3f> RingPixels(const cv::Mat& bgr, const BallDetection& ball, double inner,
+                                  double outer) {
   std::vector<cv::Vec3f> pixels;
-  const double reach = radii * ball.radius_px;
+  const double reach = outer * ball.radius_px, from = inner * ball.radius_px;
   const int x0 = std::max(0, static_cast<int>(std::floor(ball.pixel.x() - reach)));
   const int x1 = std::min(bgr.cols - 1, static_cast<int>(std::ceil(ball.pixel.x() + reach)));
   const int y0 = std::max(0, static_cast<int>(std::floor(ball.pixel.y() - reach)));
@@ -133,11 +140,16 @@ std::vector<cv::Vec3f> DiscPixels(const cv::Mat& bgr, const BallDetection& ball,
   for (int y = y0; y <= y1; ++y) {
     const auto* row = bgr.ptr<cv::Vec3b>(y);
     for (int x = x0; x <= x1; ++x) {
-      if (std::hypot(x - ball.pixel.x(), y - ball.pixel.y()) > reach) continue;
+      const double r = std::hypot(x - ball.pixel.x(), y - ball.pixel.y());
+      if (r > reach || r < from) continue;
       pixels.emplace_back(row[x][0] / 255.0f, row[x][1] / 255.0f, row[x][2] / 255.0f);
     }
   }
   return pixels;
+}
+
+std::vector<cv::Vec3f> DiscPixels(const cv::Mat& bgr, const BallDetection& ball, double radii) {
+  return RingPixels(bgr, ball, 0.0, radii);
 }
 
 std::vector<cv::Vec3f> ToLab(const std::vector<cv::Vec3f>& bgr, const cv::Vec3f& gain) {
@@ -218,6 +230,7 @@ struct DiscLook {
   double white = 0, black = 0, plain = 0, colour = 0;
   cv::Vec3f median{0, 0, 0};  // L*a*b*, of the coloured pixels
   bool seen = false;          // any pixel at all
+  bool coloured = false;      // a colour read (median): the disc's, or a stripe's band beyond its cap
 };
 
 // Plain: a white surface at any shade, its chroma below kPlainSaturation of its lightness, or
@@ -257,11 +270,50 @@ DiscLook Look(const std::vector<cv::Vec3f>& disc, const std::vector<cv::Vec3f>& 
   look.black = black / n;
   look.plain = PlainShare(limb);
   look.colour = a.size() / n;
-  if (!a.empty()) {
-    look.median = {static_cast<float>(Median(l)), static_cast<float>(Median(a)),
-                   static_cast<float>(Median(b))};
-  }
+  if (!a.empty()) look.median = MedianColour(l, a, b);
+  look.coloured = !a.empty();
   return look;
+}
+
+// A stripe seen cap on (its axis toward the camera) shows its white cap over nearly all of its
+// disc, out to about sin 60 = 0.87 of its radius for a band of +-30 degrees of latitude, and its
+// outline is fitted to the cap's edge, the sharpest; its band is then a ring just outside the
+// outline, out to about 1.15 of it. A ball without colour in its disc and with a stripe's plain
+// share takes the colour of that ring (out to kBandRadii), the cloth left out: the pixels within
+// kColourUnit of the cloth's median around the ball (kClothRing, a ring clear of the ball and of
+// its shadow), and the plain ones (the cap's blur, the shadow's grey), if they leave kBandShare of
+// the ring. A cue ball alone has only cloth and shadow around it, so nothing is read; one touching
+// a coloured ball may read that ball's colour, which costs it nothing as the cue ball (its cost
+// is in shares, not hues) and only matters against another white ball, a stripe cap on.
+constexpr double kBandRadii = 1.25;
+constexpr double kClothRing[2] = {1.5, 2.0};
+constexpr double kBandShare = 0.15;
+
+void ReadBandBeyondCap(const cv::Mat& bgr, const BallDetection& ball, const cv::Vec3f& gain,
+                       DiscLook* look) {
+  if (!look->seen || look->colour >= kCueColour || look->plain < kStripePlain) return;
+  const auto cloth = ToLab(RingPixels(bgr, ball, kClothRing[0], kClothRing[1]), gain);
+  if (cloth.empty()) return;
+  std::vector<float> l, a, b;
+  for (const auto& p : cloth) {
+    l.push_back(p[0]);
+    a.push_back(p[1]);
+    b.push_back(p[2]);
+  }
+  const cv::Vec3f cloth_colour = MedianColour(l, a, b);
+  const auto band = ToLab(RingPixels(bgr, ball, 1.0, kBandRadii), gain);
+  l.clear();
+  a.clear();
+  b.clear();
+  for (const auto& p : band) {
+    if (Plain(p) || ColourDistance(p, cloth_colour) < kColourUnit) continue;
+    l.push_back(p[0]);
+    a.push_back(p[1]);
+    b.push_back(p[2]);
+  }
+  if (a.empty() || a.size() < kBandShare * band.size()) return;
+  look->median = MedianColour(l, a, b);
+  look->coloured = true;
 }
 
 // What leaving a ball unnamed costs: kUnknownCost for a sure ball, less for an outline the
@@ -308,7 +360,7 @@ double Cost(const DiscLook& look, BallClass ball_class, BallSet set) {
     cost += Beyond(look.white, kCueWhite, kShareMargin);
   }
   const BallClass colour_class = set == BallSet::kPool ? PoolBall(number) : ball_class;
-  if (look.colour == 0) return cost + kNoColourCost;
+  if (!look.coloured) return cost + kNoColourCost;
   double distance = HUGE_VAL;  // to the nearest of the class's colours
   for (const Colour& c : ColoursOf(set)) {
     if (c.ball_class == colour_class) {
@@ -352,6 +404,9 @@ std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<Ba
   for (std::size_t i = 0; i < balls.size(); ++i) {
     looks.push_back(
         Look(ToLab(discs[i], gain), ToLab(DiscPixels(bgr, balls[i], kLimbRadii), gain)));
+  }
+  if (set == BallSet::kPool) {
+    for (std::size_t i = 0; i < balls.size(); ++i) ReadBandBeyondCap(bgr, balls[i], gain, &looks[i]);
   }
   // The rack holds so many of each class: one slot per ball of it, and for every ball a slot
   // "unknown" at kUnknownCost, which takes the balls beyond the rack's count (a false detection,

@@ -20,7 +20,10 @@
 //   - otherwise the coloured pixels' median is compared with each colour of the set (kBallColours,
 //     approximate L*a*b* of the balls under white light), weighting hue over lightness (shading
 //     changes the lightness across a ball, and the camera's exposure all of it); for pool, a ball
-//     whose disc is a large share plain (kStripePlain) is a stripe (9-15), else a solid (1-7).
+//     that is a large share plain (kStripePlain) out to nearly its outline (a stripe turned band
+//     on shows its caps only at the limb) is a stripe (9-15), else a solid (1-7); a ball with no
+//     colour in its disc and a stripe's plain share may be a stripe seen cap on, outlined along
+//     its cap's edge: its colour is read from the ring just outside, the cloth's colour left out.
 // The classes are given all at once, the rack's count of each respected (assignment.h). The
 // confidence is how clearly the ball is what it was called, in [0, 1]: how much more the whole
 // assignment would cost were the ball not of its class, against its class's cost (a ratio). It is
