@@ -122,10 +122,15 @@ double Median(std::vector<float>& values) {
   return values[values.size() / 2];
 }
 
-// The per-channel median of pixels' L*, a* and b*.
-cv::Vec3f MedianColour(std::vector<float>& l, std::vector<float>& a, std::vector<float>& b) {
-  return {static_cast<float>(Median(l)), static_cast<float>(Median(a)),
-          static_cast<float>(Median(b))};
+// The per-channel median of pixels (L*a*b*), of which there is at least one.
+cv::Vec3f MedianColour(const std::vector<cv::Vec3f>& lab) {
+  cv::Vec3f median;
+  std::vector<float> channel(lab.size());
+  for (int c = 0; c < 3; ++c) {
+    for (std::size_t i = 0; i < lab.size(); ++i) channel[i] = lab[i][c];
+    median[c] = static_cast<float>(Median(channel));
+  }
+  return median;
 }
 
 // A ball's pixels (BGR, 0..1) from `inner` to `outer` of its fitted radius.
@@ -254,24 +259,20 @@ DiscLook Look(const std::vector<cv::Vec3f>& disc, const std::vector<cv::Vec3f>& 
   if (disc.empty()) return look;
   look.seen = true;
   int white = 0, black = 0;
-  std::vector<float> a, b, l;
+  std::vector<cv::Vec3f> coloured;
   for (const auto& p : disc) {
     const bool grey = Chroma(p) < kGreyChroma;
     white += grey && p[0] >= kWhiteLightness;
     black += grey && p[0] <= kBlackLightness;
-    if (!Plain(p)) {
-      a.push_back(p[1]);
-      b.push_back(p[2]);
-      l.push_back(p[0]);
-    }
+    if (!Plain(p)) coloured.push_back(p);
   }
   const double n = static_cast<double>(disc.size());
   look.white = white / n;
   look.black = black / n;
   look.plain = PlainShare(limb);
-  look.colour = a.size() / n;
-  if (!a.empty()) look.median = MedianColour(l, a, b);
-  look.coloured = !a.empty();
+  look.colour = coloured.size() / n;
+  look.coloured = !coloured.empty();
+  if (look.coloured) look.median = MedianColour(coloured);
   return look;
 }
 
@@ -294,25 +295,14 @@ void ReadBandBeyondCap(const cv::Mat& bgr, const BallDetection& ball, const cv::
   if (!look->seen || look->colour >= kCueColour || look->plain < kStripePlain) return;
   const auto cloth = ToLab(RingPixels(bgr, ball, kClothRing[0], kClothRing[1]), gain);
   if (cloth.empty()) return;
-  std::vector<float> l, a, b;
-  for (const auto& p : cloth) {
-    l.push_back(p[0]);
-    a.push_back(p[1]);
-    b.push_back(p[2]);
-  }
-  const cv::Vec3f cloth_colour = MedianColour(l, a, b);
+  const cv::Vec3f cloth_colour = MedianColour(cloth);
+  std::vector<cv::Vec3f> coloured;
   const auto band = ToLab(RingPixels(bgr, ball, 1.0, kBandRadii), gain);
-  l.clear();
-  a.clear();
-  b.clear();
   for (const auto& p : band) {
-    if (Plain(p) || ColourDistance(p, cloth_colour) < kColourUnit) continue;
-    l.push_back(p[0]);
-    a.push_back(p[1]);
-    b.push_back(p[2]);
+    if (!Plain(p) && ColourDistance(p, cloth_colour) >= kColourUnit) coloured.push_back(p);
   }
-  if (a.empty() || a.size() < kBandShare * band.size()) return;
-  look->median = MedianColour(l, a, b);
+  if (coloured.empty() || coloured.size() < kBandShare * band.size()) return;
+  look->median = MedianColour(coloured);
   look->coloured = true;
 }
 
