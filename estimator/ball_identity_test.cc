@@ -146,9 +146,6 @@ cv::Mat DrawShadedBalls(const std::vector<DrawnBall>& balls, std::vector<BallDet
   return frame;
 }
 
-// A stripe's cap turned away from the light is dark grey, neither white nor black: it is still
-// the stripe's white (its chroma is as small against its lightness as the lit cap's), and a
-// solid's shaded side keeps its colour. The blue and the red each as a solid and as a stripe.
 TEST(BallIdentity, TheConfidenceIsTheRacksNotTheBallsAlone) {
   // Two red solids alike: whichever is called the 3 (the rack has one), the other could be it as
   // well, so neither is sure of it, however plainly each looks a 3 (alone, its margin over its
@@ -165,24 +162,6 @@ TEST(BallIdentity, TheConfidenceIsTheRacksNotTheBallsAlone) {
   EXPECT_EQ(two[three].ball_class, PoolBall(3));
   EXPECT_LT(two[three].confidence, 0.5);
   EXPECT_LT(two[3 - three].confidence, 0.5);
-}
-
-TEST(BallIdentity, AStripesWhiteInShadeStillMarksAStripe) {
-  const cv::Vec3b blue(20, 50, 160), red(215, 30, 30);
-  std::vector<BallDetection> detected;
-  const cv::Mat frame = DrawShadedBalls({{{255, 255, 255}, false},
-                                         {blue, false},
-                                         {blue, true},
-                                         {red, false},
-                                         {red, true},
-                                         {{10, 10, 10}, false}},
-                                        &detected);
-  const auto identities = IdentifyBalls(frame, detected, BallSet::kPool);
-  ASSERT_EQ(identities.size(), 6u);
-  const std::vector<std::string> expected = {"cue", "2", "10", "3", "11", "8"};
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    EXPECT_EQ(BallClassName(identities[i].ball_class), expected[i]) << "ball " << i;
-  }
 }
 
 // Pool ball `number`'s colour as the renderer draws it (R, G, B).
@@ -206,12 +185,30 @@ DrawnBalls CueBallAndSolids() {
   return drawn;
 }
 
+// Each ball named as `names` says, in order; `context` tells a failure's case.
 void ExpectNamed(const std::vector<BallIdentity>& identities,
                  const std::vector<std::string>& names, const std::string& context) {
   ASSERT_EQ(identities.size(), names.size()) << context;
   for (std::size_t i = 0; i < names.size(); ++i) {
     EXPECT_EQ(BallClassName(identities[i].ball_class), names[i]) << "ball " << i << context;
   }
+}
+
+// A stripe's cap turned away from the light is dark grey, neither white nor black: it is still
+// the stripe's white (its chroma is as small against its lightness as the lit cap's), and a
+// solid's shaded side keeps its colour. The blue and the red each as a solid and as a stripe.
+TEST(BallIdentity, AStripesWhiteInShadeStillMarksAStripe) {
+  const cv::Vec3b blue(20, 50, 160), red(215, 30, 30);
+  std::vector<BallDetection> detected;
+  const cv::Mat frame = DrawShadedBalls({{{255, 255, 255}, false},
+                                         {blue, false},
+                                         {blue, true},
+                                         {red, false},
+                                         {red, true},
+                                         {{10, 10, 10}, false}},
+                                        &detected);
+  ExpectNamed(IdentifyBalls(frame, detected, BallSet::kPool),
+              {"cue", "2", "10", "3", "11", "8"}, "");
 }
 
 // A stripe turned with its band to the camera, its axis across the view: its caps show only at
