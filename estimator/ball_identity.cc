@@ -133,11 +133,11 @@ cv::Vec3f MedianColour(const std::vector<cv::Vec3f>& lab) {
   return median;
 }
 
-// A ball's pixels (BGR, 0..1) from `inner` to `outer` of its fitted radius.
-std::vector<cv::Vec3f> RingPixels(const cv::Mat& bgr, const BallDetection& ball, double inner,
-                                  double outer) {
-  std::vector<cv::Vec3f> pixels;
-  const double reach = outer * ball.radius_px, from = inner * ball.radius_px;
+// Calls visit(pixel, distance) for each of a ball's pixels (BGR, 0..1) within `radii` of its
+// fitted radius, with its distance from the centre in pixels.
+template <typename Visit>
+void ForEachPixelWithin(const cv::Mat& bgr, const BallDetection& ball, double radii, Visit visit) {
+  const double reach = radii * ball.radius_px;
   const int x0 = std::max(0, static_cast<int>(std::floor(ball.pixel.x() - reach)));
   const int x1 = std::min(bgr.cols - 1, static_cast<int>(std::ceil(ball.pixel.x() + reach)));
   const int y0 = std::max(0, static_cast<int>(std::floor(ball.pixel.y() - reach)));
@@ -146,15 +146,36 @@ std::vector<cv::Vec3f> RingPixels(const cv::Mat& bgr, const BallDetection& ball,
     const auto* row = bgr.ptr<cv::Vec3b>(y);
     for (int x = x0; x <= x1; ++x) {
       const double r = std::hypot(x - ball.pixel.x(), y - ball.pixel.y());
-      if (r > reach || r < from) continue;
-      pixels.emplace_back(row[x][0] / 255.0f, row[x][1] / 255.0f, row[x][2] / 255.0f);
+      if (r > reach) continue;
+      visit(cv::Vec3f(row[x][0] / 255.0f, row[x][1] / 255.0f, row[x][2] / 255.0f), r);
     }
   }
+}
+
+// A ball's pixels (BGR, 0..1) from `inner` to `outer` of its fitted radius.
+std::vector<cv::Vec3f> RingPixels(const cv::Mat& bgr, const BallDetection& ball, double inner,
+                                  double outer) {
+  std::vector<cv::Vec3f> pixels;
+  const double from = inner * ball.radius_px;
+  ForEachPixelWithin(bgr, ball, outer, [&](const cv::Vec3f& p, double r) {
+    if (r >= from) pixels.push_back(p);
+  });
   return pixels;
 }
 
-std::vector<cv::Vec3f> DiscPixels(const cv::Mat& bgr, const BallDetection& ball, double radii) {
-  return RingPixels(bgr, ball, 0.0, radii);
+// A ball's pixels (BGR, 0..1) in one pass: its disc, within kDiscRadii, and the ring beyond it
+// out to kLimbRadii.
+struct BallPixels {
+  std::vector<cv::Vec3f> disc, limb_ring;
+};
+
+BallPixels ReadBall(const cv::Mat& bgr, const BallDetection& ball) {
+  BallPixels pixels;
+  const double disc = kDiscRadii * ball.radius_px;
+  ForEachPixelWithin(bgr, ball, kLimbRadii, [&](const cv::Vec3f& p, double r) {
+    (r <= disc ? pixels.disc : pixels.limb_ring).push_back(p);
+  });
+  return pixels;
 }
 
 std::vector<cv::Vec3f> ToLab(const std::vector<cv::Vec3f>& bgr, const cv::Vec3f& gain) {
@@ -175,11 +196,11 @@ std::vector<cv::Vec3f> ToLab(const std::vector<cv::Vec3f>& bgr, const cv::Vec3f&
 // that bring its brightest ball pixels there. The cue ball is the least coloured of the bright
 // balls (those whose median L* is within kBrightBalls of the brightest ball's): under a tinted
 // light it takes the light's colour, but less of it than any coloured ball has.
-cv::Vec3f WhiteBalance(const std::vector<std::vector<cv::Vec3f>>& discs) {
+cv::Vec3f WhiteBalance(const std::vector<BallPixels>& balls) {
   std::vector<std::vector<cv::Vec3f>> labs;
   std::vector<double> lightness, chroma;
-  for (const auto& disc : discs) {
-    labs.push_back(ToLab(disc, {1, 1, 1}));
+  for (const BallPixels& ball : balls) {
+    labs.push_back(ToLab(ball.disc, {1, 1, 1}));
     std::vector<float> l, c;
     for (const auto& p : labs.back()) {
       l.push_back(p[0]);
@@ -188,10 +209,10 @@ cv::Vec3f WhiteBalance(const std::vector<std::vector<cv::Vec3f>>& discs) {
     lightness.push_back(l.empty() ? 0.0 : Median(l));
     chroma.push_back(c.empty() ? HUGE_VAL : Median(c));
   }
-  if (discs.empty()) return {1, 1, 1};
+  if (balls.empty()) return {1, 1, 1};
   const double brightest = *std::max_element(lightness.begin(), lightness.end());
   int cue = -1;
-  for (std::size_t b = 0; b < discs.size(); ++b) {
+  for (std::size_t b = 0; b < balls.size(); ++b) {
     if (lightness[b] < kBrightBalls * brightest || chroma[b] > kMaxCueChroma) continue;
     if (cue < 0 || chroma[b] < chroma[cue]) cue = static_cast<int>(b);
   }
@@ -205,8 +226,9 @@ cv::Vec3f WhiteBalance(const std::vector<std::vector<cv::Vec3f>>& discs) {
   cv::Vec3d mean(0, 0, 0);
   int count = 0;
   for (const bool with_clipped : {false, true}) {
-    for (std::size_t i = 0; i < discs[reference].size(); ++i) {
-      const cv::Vec3f& p = discs[reference][i];
+    const std::vector<cv::Vec3f>& disc = balls[reference].disc;
+    for (std::size_t i = 0; i < disc.size(); ++i) {
+      const cv::Vec3f& p = disc[i];
       const bool clipped = std::max({p[0], p[1], p[2]}) >= kClippedLevel;
       if (labs[reference][i][0] < lightness[reference] || (clipped && !with_clipped)) continue;
       mean += cv::Vec3d(p);
@@ -248,13 +270,13 @@ bool Plain(const cv::Vec3f& lab) {
   return chroma < kPlainSaturation * lab[0] || (chroma < kGreyChroma && lab[0] <= kBlackLightness);
 }
 
-double PlainShare(const std::vector<cv::Vec3f>& lab) {
-  if (lab.empty()) return 0.0;
-  return static_cast<double>(std::count_if(lab.begin(), lab.end(), Plain)) / lab.size();
+std::ptrdiff_t PlainCount(const std::vector<cv::Vec3f>& lab) {
+  return std::count_if(lab.begin(), lab.end(), Plain);
 }
 
-// `disc` and `limb`: the ball's pixels (L*a*b*) within kDiscRadii and kLimbRadii.
-DiscLook Look(const std::vector<cv::Vec3f>& disc, const std::vector<cv::Vec3f>& limb) {
+// `disc` and `limb_ring`: the ball's pixels (L*a*b*) within kDiscRadii and from there to
+// kLimbRadii.
+DiscLook Look(const std::vector<cv::Vec3f>& disc, const std::vector<cv::Vec3f>& limb_ring) {
   DiscLook look;
   if (disc.empty()) return look;
   look.seen = true;
@@ -269,7 +291,8 @@ DiscLook Look(const std::vector<cv::Vec3f>& disc, const std::vector<cv::Vec3f>& 
   const double n = static_cast<double>(disc.size());
   look.white = white / n;
   look.black = black / n;
-  look.plain = PlainShare(limb);
+  look.plain = static_cast<double>(PlainCount(disc) + PlainCount(limb_ring)) /
+               (disc.size() + limb_ring.size());
   look.colour = coloured.size() / n;
   look.coloured = !coloured.empty();
   if (look.coloured) look.median = MedianColour(coloured);
@@ -387,13 +410,12 @@ double ClassMargin(const Eigen::MatrixXd& cost, const std::vector<BallClass>& sl
 
 std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<BallDetection>& balls,
                                         BallSet set) {
-  std::vector<std::vector<cv::Vec3f>> discs;
-  for (const BallDetection& ball : balls) discs.push_back(DiscPixels(bgr, ball, kDiscRadii));
-  const cv::Vec3f gain = WhiteBalance(discs);
+  std::vector<BallPixels> pixels;
+  for (const BallDetection& ball : balls) pixels.push_back(ReadBall(bgr, ball));
+  const cv::Vec3f gain = WhiteBalance(pixels);
   std::vector<DiscLook> looks;
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    looks.push_back(
-        Look(ToLab(discs[i], gain), ToLab(DiscPixels(bgr, balls[i], kLimbRadii), gain)));
+  for (const BallPixels& ball : pixels) {
+    looks.push_back(Look(ToLab(ball.disc, gain), ToLab(ball.limb_ring, gain)));
   }
   if (set == BallSet::kPool) {
     for (std::size_t i = 0; i < balls.size(); ++i) ReadBandBeyondCap(bgr, balls[i], gain, &looks[i]);
