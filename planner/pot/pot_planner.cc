@@ -158,6 +158,7 @@ struct Tally {
   std::string direct_blocked;
   bool direct_object_closed = false;
 
+  // A route refused: told in words, the furthest-got refusal kept.
   void Refused(const Refusal& r, const Route& route) {
     if (route.kind == ShotKind::kDirect) {
       direct_blocked = r.reason;
@@ -174,7 +175,7 @@ struct Tally {
   bool CurveWanted() const { return !direct_blocked.empty() && !direct_object_closed && !best; }
 
   // The plan refused when every route of `kinds` kinds failed.
-  PotPlan Refused(std::size_t kinds) const {
+  PotPlan EveryRouteRefused(std::size_t kinds) const {
     PotPlan plan;
     plan.status = worst ? worst->status : PotStatus::kBlocked;
     if (worst && worst->status == PotStatus::kBlocked && kinds > 1) {
@@ -344,7 +345,7 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
     if (kind == ShotKind::kDirect && tally.best) break;
     if (request.cue_target && tally.best) break;
   }
-  if (!tally.best) return finish(tally.Refused(kinds.size()), search.simulations());
+  if (!tally.best) return finish(tally.EveryRouteRefused(kinds.size()), search.simulations());
   tally.best->why = tally.Why(request);
   return finish(*tally.best, search.simulations());
 }
