@@ -28,6 +28,9 @@
 //     not pot legally (K in P, the cue ball's first contact K, no scratch).
 // Searching runs the closed form (Jaroukh 2019) between events, which is exact for the
 // level-cue paths that most pots are and 30-100 times cheaper; the check runs the truth.
+// Each step has a header of its own beside this one (README, "A pot in named steps"): routes.h
+// and lone_path.h, aim.h, pace.h, drop_window.h, truth.h, margin.h and position.h, on the search
+// context they share (search_context.h).
 //
 // Module: billiard::pot. Includes the physics, the table, the parameter sets and the table's
 // motion rule (sim/model_choice/).

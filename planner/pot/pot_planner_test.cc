@@ -5,91 +5,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planner/pot/testing/pot_fixture.h"
 #include "planner/pot/testing/pot_layouts.h"
-#include "sim/model_choice/model_choice.h"
-#include "sim/params/parameter_sets.h"
-#include "sim/params/table_specs.h"
 
 namespace billiard::pot {
 namespace {
 
 using table::SceneBall;
 
-constexpr double kDegree = M_PI / 180.0;
-
-class PotPlannerTest : public ::testing::Test {
- protected:
-  PotPlannerTest()
-      : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))),
-        params_(params::LoadParameters("pool")) {}
-
-  SceneBall Ball(int id, double x, double y) const {
-    return {id, physics::MakeBallState(x, y, 0, 0, 0, 0, 0)};
-  }
-
-  // What `billiard simulate --scene` makes of the scene with the cue ball launched at the plan's
-  // v0, w0 (its default motion and cushion), independently of the planner's own check.
-  struct Outcome {
-    bool potted = false;
-    int first_contact = -1;
-    bool scratch = false;
-    Eigen::Vector2d cue_rest = Eigen::Vector2d::Zero();
-    double departure = 0.0, normal = 0.0;  // K's direction after the first contact, and the line
-                                           // of centres there [rad]
-  };
-  Outcome Simulate(std::vector<SceneBall> balls, const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
-                   int k, const std::string& pocket) const {
-    std::size_t cue = 0, object = 0;
-    for (std::size_t i = 0; i < balls.size(); ++i) {
-      if (balls[i].id == 0) cue = i;
-      if (balls[i].id == k) object = i;
-    }
-    balls[cue].state.segment<2>(physics::kVx) = v0;
-    balls[cue].state.segment<3>(physics::kWx) = w0;
-    table::TableSimulationOptions options;
-    options.five_dof = model_choice::TableMotion(params_);
-    table::TableSimulation sim(table_, params_, balls, options);
-    sim.Run();
-    Outcome o;
-    for (const table::TableEvent& e : sim.events()) {
-      if (e.type == table::EventType::kBallBall && (e.ball == 0 || e.other == 0)) {
-        o.first_contact = e.ball == 0 ? e.other : e.ball;
-        const Eigen::Vector2d after = sim.StateAt(object, e.time).segment<2>(physics::kVx);
-        const Eigen::Vector2d line = sim.StateAt(object, e.time).head<2>() - sim.StateAt(cue, e.time).head<2>();
-        o.departure = std::atan2(after.y(), after.x());
-        o.normal = std::atan2(line.y(), line.x());
-        break;
-      }
-    }
-    o.potted = sim.pocket(object) && *sim.pocket(object) == pocket;
-    o.scratch = sim.pocket(cue).has_value();
-    o.cue_rest = sim.State(cue).head<2>();
-    return o;
-  }
-
-  Outcome SimulatePlan(const std::vector<SceneBall>& balls, const PotPlan& plan) const {
-    return Simulate(balls, plan.v0, plan.w0, plan.ball, plan.pocket);
-  }
-
-  Outcome SimulateStroke(const std::vector<SceneBall>& balls, const physics::CueStroke& stroke,
-                         const PotPlan& plan) const {
-    const physics::BallState launch = physics::StrikeBall(stroke, balls.front().state.head<2>(), params_);
-    return Simulate(balls, launch.segment<2>(physics::kVx), launch.segment<3>(physics::kWx), plan.ball,
-                    plan.pocket);
-  }
-
-  void ExpectLegalPot(const std::vector<SceneBall>& balls, const PotPlan& plan) const {
-    ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
-    const Outcome o = SimulatePlan(balls, plan);
-    EXPECT_TRUE(o.potted) << "ball " << plan.ball << " does not drop in " << plan.pocket;
-    EXPECT_EQ(o.first_contact, plan.ball);
-    EXPECT_FALSE(o.scratch);
-    EXPECT_NEAR((o.cue_rest - plan.cue_rest).norm(), 0.0, 1e-9) << "the plan's rest is the truth's";
-  }
-
-  table::TableGeometry table_;
-  physics::ModelParameters params_;
-};
+class PotPlannerTest : public testing::PotFixture {};
 
 TEST_F(PotPlannerTest, ADirectCutPotsWhenItsLaunchIsSimulated) {
   const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)};
@@ -142,47 +66,6 @@ TEST_F(PotPlannerTest, TheMirroredLayoutGetsTheMirroredPlan) {
   EXPECT_NEAR(plan.cue_rest.y(), w - image.cue_rest.y(), 1e-3);
 }
 
-// The margin is what the simulation says: turned to 0.9 of it either way the stroke still pots,
-// to 1.1 it misses.
-TEST_F(PotPlannerTest, TheMarginIsTrueOnTheSimulation) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)};
-  const PotPlan plan = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kDirect, {}});
-  ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
-  for (const auto& [fraction, pots] : {std::pair{0.9, true}, {1.1, false}}) {
-    for (double side : {1.0, -1.0}) {
-      physics::CueStroke s = plan.stroke;
-      s.heading += side * fraction * (side > 0 ? plan.margin_left_deg : plan.margin_right_deg) * kDegree;
-      const Outcome o = SimulateStroke(balls, s, plan);
-      EXPECT_EQ(o.potted && o.first_contact == 1 && !o.scratch, pots) << fraction << " x " << side;
-    }
-  }
-}
-
-// Cut-induced throw (Alciatore, TP A.14): the object ball leaves between the line of centres and
-// the cue ball's travel, a few degrees off the line for a slow cut. Aimed through the ghost ball
-// alone (the line of centres on the window's middle) it departs off the middle by the throw; the
-// plan's aim departs on it.
-TEST_F(PotPlannerTest, TheAimCorrectsTheThrowThatTheGhostBallAloneLeaves) {
-  const std::vector<SceneBall> balls = {Ball(0, 1.5, 0.2), Ball(4, 1.7, 0.75)};
-  const PotPlan plan = PlanPot(table_, params_, balls, {4, "upper_right", ShotKind::kDirect, {}});
-  ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
-  const std::optional<double> heading = GhostBallHeading(table_, params_, balls, plan);
-  ASSERT_TRUE(heading);
-  ASSERT_GT(plan.cut_deg, 20.0);
-  physics::CueStroke ghost = plan.stroke;
-  ghost.heading = *heading;
-  const Outcome aimed = SimulateStroke(balls, plan.stroke, plan);
-  const Outcome naive = SimulateStroke(balls, ghost, plan);
-  const double throw_deg = std::remainder(naive.departure - naive.normal, 2 * M_PI) / kDegree;
-  const double cue_side = std::remainder(ghost.heading - naive.normal, 2 * M_PI);
-  EXPECT_GT(std::abs(throw_deg), 0.5);
-  EXPECT_LT(std::abs(throw_deg), 6.0);
-  EXPECT_GT(throw_deg * cue_side, 0.0) << "thrown toward the cue ball's travel";
-  // The plan departs along its departure, where the ghost ball's line of centres points.
-  EXPECT_NEAR(std::remainder(naive.normal - plan.departure, 2 * M_PI), 0.0, 1e-5);
-  EXPECT_NEAR(std::remainder(aimed.departure - plan.departure, 2 * M_PI), 0.0, 1e-5);
-}
-
 TEST_F(PotPlannerTest, ABlockedLineIsRefusedNamingTheBlocker) {
   // Ball 2 sits on the straight line from ball 1 to the lower right pocket.
   const std::vector<SceneBall> balls = {Ball(0, 0.5, 0.4), Ball(1, 1.6, 0.7), Ball(2, 2.05, 0.38)};
@@ -227,22 +110,6 @@ TEST_F(PotPlannerTest, ACurveBendsTheCueBallAroundABlocker) {
   EXPECT_NE(plan.stroke.tip_side, 0.0);
 }
 
-// A target the cue ball can reach by construction: where the pot played with more pace (an
-// arrival speed of 1 m/s at the pocket, not 0.6) leaves it.
-TEST_F(PotPlannerTest, PositionPlayStopsTheCueBallAtTheTarget) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)};
-  PotOptions firmer;
-  firmer.arrival_speed = 1.0;
-  const PotPlan firm = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kDirect, {}}, firmer);
-  ASSERT_EQ(firm.status, PotStatus::kOk) << firm.reason;
-  const Eigen::Vector2d target = firm.cue_rest;
-  const PotPlan plan = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kDirect, CueTarget{target, 0.0}});
-  ExpectLegalPot(balls, plan);
-  EXPECT_LT((plan.cue_rest - target).norm(), 0.01);
-  const PotPlan far = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kDirect, CueTarget{{0.1, 1.2}, 0.0}});
-  EXPECT_EQ(far.status, PotStatus::kTargetUnreachable) << far.reason;
-}
-
 TEST_F(PotPlannerTest, BadRequestsAreRefusedWithAReason) {
   const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9)};
   const auto refused = [&](const PotRequest& r, PotStatus status) {
@@ -264,15 +131,6 @@ TEST_F(PotPlannerTest, BadRequestsAreRefusedWithAReason) {
   EXPECT_EQ(plan.status, PotStatus::kInvalid);
   const std::vector<SceneBall> no_cue = {Ball(1, 1.8, 0.9)};
   EXPECT_EQ(PlanPot(table_, params_, no_cue, {1, "upper_right", std::nullopt, {}}).status, PotStatus::kInvalid);
-}
-
-// The pocket behind the object ball: no curve within the cue's elevations bends the cue ball
-// round to a cut below the limit, which its path alone shows where it passes the ghost ball.
-TEST_F(PotPlannerTest, ABackwardsCurveIsTooThin) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9)};
-  const PotPlan plan = PlanPot(table_, params_, balls, {1, "lower_left", ShotKind::kCurve, {}});
-  EXPECT_EQ(plan.status, PotStatus::kTooThin) << plan.reason;
-  EXPECT_NE(plan.reason.find("curve: the curve's cut is"), std::string::npos) << plan.reason;
 }
 
 // Every ok plan of seeded layouts pots legally when its launch is simulated on its own.
