@@ -12,7 +12,7 @@
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 #include "sim/table/seeded_uniform.h"
-#include "tools/plot/reliability.h"
+#include "plot/reliability.h"
 
 namespace billiard::bench {
 

@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "bench/format.h"
-#include "tools/plot/chart.h"
+#include "plot/chart.h"
 
 namespace billiard::bench {
 
@@ -184,7 +184,7 @@ void WriteMarkdown(const BenchmarkResult& r, const std::string& path) {
   if (!md) throw std::runtime_error("writing '" + path + "' failed");
 }
 
-// Log-log chart (tools/plot/chart.h): x = median wall time, y = p95 error against the integral
+// Log-log chart (plot/chart.h): x = median wall time, y = p95 error against the integral
 // model, all scenes; one line per method family, each point labelled with its tolerances.
 void WritePlot(const BenchmarkResult& r, const std::string& path) {
   plot::Chart chart;

@@ -22,7 +22,7 @@ packages=(
   # tools/viewer_node/: its HTTP server; its test's browser and HTTP client; run_loop.sh --view's
   # forwarding of the view out of the loop's network namespace
   libcpp-httplib-dev chromium curl socat
-  # tools/plot/: billiard plot's pictures and billiard bench's chart
+  # plot/: billiard plot's pictures and billiard bench's chart
   libcairo2-dev
   # tools/python/: the billiard Python module (pybind11) and its pytest suite, on Debian's
   # python3 with Debian's NumPy

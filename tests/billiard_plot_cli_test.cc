@@ -1,6 +1,6 @@
 // `billiard plot` as a user runs it: the PNG and the SVG of a scene put each ball where the
 // scene (and `billiard simulate --scene`, for a ball that moves) puts it, in the picture's
-// documented frame (tools/plot/table_picture.h: 400 px a metre, a 60 px rail, y up); a plan's
+// documented frame (plot/table_picture.h: 400 px a metre, a 60 px rail, y up); a plan's
 // ball ends on its target; bad input exits 2.
 #include <gtest/gtest.h>
 

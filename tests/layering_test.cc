@@ -54,16 +54,16 @@ const std::map<std::string, std::set<std::string>>& Layers() {
       {"fuzz",
        {"lcmtypes", "lcmtypes/testing", "sim/table", "sim/table/testing", "sim/params",
         "sim/physics"}},
-      {"tools/plot", {"sim/table", "sim/physics"}},
+      {"plot", {"sim/table", "sim/physics"}},
       {"bench",
-       {"tools/plot", "sim/physics", "sim/batch", "sim/table", "sim/table/testing", "sim/params",
+       {"plot", "sim/physics", "sim/batch", "sim/table", "sim/table/testing", "sim/params",
         "sim/model_choice", "sim/camera", "sim/render", "planner", "planner/testing", "planner/pot",
         "planner/pot/testing", "planner/choice", "estimator", "estimator/testing", "sim/shot_fit", "tests/support"}},
       {"tools/billiard",
        {"sim/physics", "sim/batch", "sim/table", "sim/params", "sim/model_choice",
         "sim/contact_fit", "sim/shot_fit", "sim/camera", "sim/render", "sim/table_sim_node",
         "lcmtypes", "lcmtypes/node", "planner", "planner/pot", "planner/choice", "planner/node", "estimator",
-        "estimator/node", "bench", "planner/pot/testing", "tools/plot"}},
+        "estimator/node", "bench", "planner/pot/testing", "plot"}},
       {"tools/viewer_node", {"lcmtypes", "lcmtypes/node", "sim/params", "sim/physics"}},
       {"tools/python", {"sim/physics", "sim/table", "sim/params", "planner", "planner/pot", "estimator"}},
       {"tests", {}},  // the cross-module tests may include anything
@@ -96,7 +96,7 @@ std::vector<Include> IncludesOfTheTree() {
   const std::regex directive(R"(^\s*#\s*include\s*([<"])([^>"]+)[>"])");
   std::vector<Include> found;
   for (const char* top :
-       {"sim", "planner", "estimator", "lcmtypes", "tools", "bench", "fuzz", "tests"}) {
+       {"sim", "planner", "estimator", "lcmtypes", "plot", "tools", "bench", "fuzz", "tests"}) {
     for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
       const std::string ext = entry.path().extension();
       if (!entry.is_regular_file() || (ext != ".h" && ext != ".cc" && ext != ".in")) continue;

@@ -25,7 +25,7 @@
 #include "sim/shot_fit/shot_fit.h"
 #include "sim/shot_fit/shot_recorder.h"
 #include "tools/billiard/command_line.h"
-#include "tools/plot/table_picture.h"
+#include "plot/table_picture.h"
 
 namespace billiard::cli {
 

@@ -17,8 +17,8 @@
 #include "sim/table/table_simulation.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/scene_commands.h"
-#include "tools/plot/canvas.h"
-#include "tools/plot/table_picture.h"
+#include "plot/canvas.h"
+#include "plot/table_picture.h"
 
 namespace billiard::cli {
 

@@ -1,4 +1,4 @@
-// `billiard plot`: a picture of a scene simulated, or of a plan, as PNG or SVG (tools/plot/).
+// `billiard plot`: a picture of a scene simulated, or of a plan, as PNG or SVG (plot/).
 #pragma once
 
 #include <CLI/CLI.hpp>

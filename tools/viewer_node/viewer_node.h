@@ -20,7 +20,7 @@
 
 namespace billiard::viewer {
 
-// The page's frame, as billiard plot's (tools/plot/table_picture.h): 400 px a metre, y up, the
+// The page's frame, as billiard plot's (plot/table_picture.h): 400 px a metre, y up, the
 // playing surface's corner (0, 0) at (kMarginPx, kMarginPx + 400 W) px on the page's canvas.
 inline constexpr double kPixelsPerMetre = 400.0;
 inline constexpr double kMarginPx = 40.0;

@@ -1,6 +1,6 @@
 // A Cairo drawing surface written to a PNG or an SVG file, chosen by the file's extension.
 //
-// Module: billiard::plot (tools/plot/). Cairo, Eigen, sim/table/ and sim/physics/.
+// Module: billiard::plot (plot/). Cairo, Eigen, sim/table/ and sim/physics/.
 #pragma once
 
 #include <cairo.h>

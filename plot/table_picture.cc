@@ -1,4 +1,4 @@
-#include "tools/plot/table_picture.h"
+#include "plot/table_picture.h"
 
 #include <cairo.h>
 
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <map>
 
-#include "tools/plot/canvas.h"
+#include "plot/canvas.h"
 
 namespace billiard::plot {
 

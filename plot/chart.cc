@@ -1,4 +1,4 @@
-#include "tools/plot/chart.h"
+#include "plot/chart.h"
 
 #include <cairo.h>
 
@@ -6,7 +6,7 @@
 #include <array>
 #include <cmath>
 
-#include "tools/plot/canvas.h"
+#include "plot/canvas.h"
 
 namespace billiard::plot {
 

@@ -1,4 +1,4 @@
-#include "tools/plot/reliability.h"
+#include "plot/reliability.h"
 
 #include <cairo.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "tools/plot/canvas.h"
+#include "plot/canvas.h"
 
 namespace billiard::plot {
 

@@ -1,4 +1,4 @@
-#include "tools/plot/canvas.h"
+#include "plot/canvas.h"
 
 #include <cairo-svg.h>
 
