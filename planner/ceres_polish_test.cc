@@ -4,31 +4,21 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/params/parameter_sets.h"
+#include "planner/testing/held_shot.h"
 
 namespace billiard::planner {
 namespace {
 
+using testing::Paper;
+
 // A draw with side spin on the paper's set, refined from its closed-form launch.
 class CeresPolishTest : public ::testing::Test {
  protected:
-  CeresPolishTest() {
-    q_.from = {0.5, 0.3};
-    q_.to = {1.7, 1.0};
-    q_.final_speed = 0.2;
-    q_.style = SpinStyle::kDraw;
-    q_.side_spin = 12.0;
-    held_ = HoldTheSpin(q_, InvertClosedForm(q_, physics::ClosedFormParameters::From(params_)),
-                        params_);
-  }
-
   double MissAt(Shot& shot, const double launch[2]) {
-    return (shot.Arrive(launch[0], launch[1], false).state.head<2>() - q_.to).norm();
+    return (shot.Arrive(launch[0], launch[1], false).state.head<2>() - draw_.q.to).norm();
   }
 
-  const physics::ModelParameters params_ = params::LoadParameters("paper");
-  ShotRequest q_;
-  HeldSpin held_;
+  testing::HeldShot draw_{{0.5, 0.3}, {1.7, 1.0}, 0.2, SpinStyle::kDraw, 12.0};
 };
 
 TEST_F(CeresPolishTest, ReachesTheToleranceWithEitherJacobian) {
@@ -36,8 +26,8 @@ TEST_F(CeresPolishTest, ReachesTheToleranceWithEitherJacobian) {
        {JacobianMethod::kSensitivities, JacobianMethod::kCentralDifferences}) {
     PlannerOptions options;
     options.jacobian = method;
-    Shot shot(q_, held_, params_, options);
-    double launch[2] = {held_.speed, held_.heading};
+    Shot shot(draw_.q, draw_.held, Paper(), options);
+    double launch[2] = {draw_.held.speed, draw_.held.heading};
     EXPECT_GT(MissAt(shot, launch), 1e-3) << "the closed form's centimetres";
     const int iterations = Polish(shot, launch, options.max_iterations);
     EXPECT_GE(iterations, 1);
@@ -47,20 +37,20 @@ TEST_F(CeresPolishTest, ReachesTheToleranceWithEitherJacobian) {
 
 TEST_F(CeresPolishTest, WithoutIterationsSimulatesNothing) {
   const PlannerOptions options;
-  Shot shot(q_, held_, params_, options);
-  double launch[2] = {held_.speed, held_.heading};
+  Shot shot(draw_.q, draw_.held, Paper(), options);
+  double launch[2] = {draw_.held.speed, draw_.held.heading};
   EXPECT_EQ(Polish(shot, launch, 0), 0);
   EXPECT_EQ(shot.simulations(), 0);
-  EXPECT_EQ(launch[0], held_.speed);
+  EXPECT_EQ(launch[0], draw_.held.speed);
 }
 
 TEST_F(CeresPolishTest, KeepsTheSpeedWithinItsBounds) {
   const PlannerOptions options;
-  const double cap = 0.9 * held_.speed;  // slower than any launch that reaches the target
-  HeldSpin capped = held_;
+  const double cap = 0.9 * draw_.held.speed;  // slower than any launch that reaches the target
+  HeldSpin capped = draw_.held;
   capped.speeds.max = cap;
-  Shot shot(q_, capped, params_, options);
-  double launch[2] = {held_.speed, held_.heading};
+  Shot shot(draw_.q, capped, Paper(), options);
+  double launch[2] = {draw_.held.speed, draw_.held.heading};
   Polish(shot, launch, options.max_iterations);
   EXPECT_LE(launch[0], cap);
   EXPECT_GT(MissAt(shot, launch), 1e-2) << "short of the target";

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "sim/params/parameter_sets.h"
+#include "planner/testing/held_shot.h"
 
 namespace billiard::planner {
 namespace {
@@ -26,28 +26,14 @@ TEST(QuadraticRoot, IsTheRootNearestZero) {
   EXPECT_DOUBLE_EQ(QuadraticRoot(1.0, 1.0, 1.0), -1.0) << "no root: Newton's step";
 }
 
-// The request of a shot, and the shot the planner refines for it on the paper's set.
-struct PaperShot {
-  const physics::ModelParameters params = params::LoadParameters("paper");
-  const PlannerOptions options;
-  ShotRequest q;
-  HeldSpin held;
-  PaperShot(const Eigen::Vector2d& from, const Eigen::Vector2d& to, double final_speed,
-            SpinStyle style, double side_spin) {
-    q.from = from;
-    q.to = to;
-    q.final_speed = final_speed;
-    q.style = style;
-    q.side_spin = side_spin;
-    held = HoldTheSpin(q, InvertClosedForm(q, physics::ClosedFormParameters::From(params)), params);
-  }
-};
+using testing::HeldShot;
+using testing::Paper;
 
 // The premise of the aim: turning the heading turns the whole path about the ball, so the reach
 // and the turn of a run do not depend on its heading.
 TEST(ReachOf, DoesNotDependOnTheHeading) {
-  PaperShot p({1.2, 0.6}, {2.0, 0.9}, 0.2, SpinStyle::kDraw, 18.0);
-  Shot shot(p.q, p.held, p.params, p.options);
+  HeldShot p({1.2, 0.6}, {2.0, 0.9}, 0.2, SpinStyle::kDraw, 18.0);
+  Shot shot(p.q, p.held, Paper(), p.options);
   const double speed = p.held.speed;
   const Reach a = ReachOf(shot.Arrive(speed, 0.3, false), p.q.from, 0.3);
   const Reach b = ReachOf(shot.Arrive(speed, 2.5, false), p.q.from, 2.5);
@@ -57,9 +43,9 @@ TEST(ReachOf, DoesNotDependOnTheHeading) {
 }
 
 TEST(Aim, ReachesTheToleranceInTwoCorrectionsWithOneRunWithSensitivities) {
-  for (PaperShot p : {PaperShot({0.3, 0.4}, {1.9, 0.9}, 0.0, SpinStyle::kStun, 0.0),
-                      PaperShot({0.5, 0.3}, {1.7, 1.0}, 0.2, SpinStyle::kDraw, 12.0)}) {
-    Shot shot(p.q, p.held, p.params, p.options);
+  for (HeldShot p : {HeldShot({0.3, 0.4}, {1.9, 0.9}, 0.0, SpinStyle::kStun, 0.0),
+                     HeldShot({0.5, 0.3}, {1.7, 1.0}, 0.2, SpinStyle::kDraw, 12.0)}) {
+    Shot shot(p.q, p.held, Paper(), p.options);
     double launch[2] = {p.held.speed, p.held.heading};
     const int steps = Aim(shot, launch);
     EXPECT_GE(steps, 1);
@@ -70,9 +56,9 @@ TEST(Aim, ReachesTheToleranceInTwoCorrectionsWithOneRunWithSensitivities) {
 }
 
 TEST(Aim, StopsWhereItsStepLeavesTheSpeedBounds) {
-  PaperShot p({0.3, 0.4}, {1.9, 0.9}, 0.0, SpinStyle::kStun, 0.0);
+  HeldShot p({0.3, 0.4}, {1.9, 0.9}, 0.0, SpinStyle::kStun, 0.0);
   p.held.speeds = {p.held.speed, p.held.speed};  // the closed form's launch, centimetres off
-  Shot shot(p.q, p.held, p.params, p.options);
+  Shot shot(p.q, p.held, Paper(), p.options);
   double launch[2] = {p.held.speed, p.held.heading};
   EXPECT_EQ(Aim(shot, launch), 0);
   EXPECT_EQ(launch[0], p.held.speed);

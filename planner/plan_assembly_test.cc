@@ -5,27 +5,26 @@
 
 #include <cmath>
 
-#include "sim/params/parameter_sets.h"
+#include "planner/testing/held_shot.h"
 #include "sim/physics/cue_strike.h"
 
 namespace billiard::planner {
 namespace {
 
+using testing::Paper;
+
 class PlanAssemblyTest : public ::testing::Test {
  protected:
   // A stun shot from `from` to `to` on the paper's set, at its closed-form launch.
   void Aim(const Eigen::Vector2d& from, const Eigen::Vector2d& to, double side_spin = 0.0) {
-    q_.from = from;
-    q_.to = to;
-    q_.style = SpinStyle::kStun;
-    q_.side_spin = side_spin;
-    held_ = HoldTheSpin(q_, InvertClosedForm(q_, physics::ClosedFormParameters::From(params_)),
-                        params_);
+    const testing::HeldShot stun(from, to, 0.0, SpinStyle::kStun, side_spin);
+    q_ = stun.q;
+    held_ = stun.held;
     launch_[0] = held_.speed;
     launch_[1] = held_.heading;
   }
 
-  const physics::ModelParameters params_ = params::LoadParameters("paper");
+  const physics::ModelParameters& params_ = Paper();
   PlannerOptions options_;
   ShotRequest q_;
   HeldSpin held_;

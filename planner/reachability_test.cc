@@ -3,15 +3,13 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/params/parameter_sets.h"
+#include "planner/testing/held_shot.h"
 
 namespace billiard::planner {
 namespace {
 
-const physics::ModelParameters& Paper() {
-  static const physics::ModelParameters p = params::LoadParameters("paper");
-  return p;
-}
+using testing::HeldShot;
+using testing::Paper;
 
 TEST(OnTable, IsARadiusInsideEveryEdge) {
   const double r = Paper().ball.radius, length = Paper().table.length, width = Paper().table.width;
@@ -35,27 +33,17 @@ TEST(NoStrokeGivesTheSpin, NamesTheSpinAndTheRobotsLimits) {
 }
 
 // A natural roll 1 m along the table, its speeds bounded as the test says.
-struct Roll {
-  ShotRequest q;
-  HeldSpin held;
-  PlannerOptions options;
-  Roll() {
-    q.from = {0.5, 0.6};
-    q.to = {1.5, 0.6};
-    held =
-        HoldTheSpin(q, InvertClosedForm(q, physics::ClosedFormParameters::From(Paper())), Paper());
-  }
-};
+HeldShot Roll() { return HeldShot({0.5, 0.6}, {1.5, 0.6}); }
 
 TEST(BeyondReach, WithinTheBoundsNothingIsDecidedOrSimulated) {
-  Roll roll;
+  HeldShot roll = Roll();
   Shot shot(roll.q, roll.held, Paper(), roll.options);
   EXPECT_FALSE(BeyondReach(shot, roll.held.speed, roll.held.heading));
   EXPECT_EQ(shot.simulations(), 0);
 }
 
 TEST(BeyondReach, TheFastestLaunchShortOfTheTargetIsOutOfReach) {
-  Roll roll;
+  HeldShot roll = Roll();
   roll.held.speeds.max = 0.5 * roll.held.speed;  // a quarter of the energy: a quarter of the way
   Shot shot(roll.q, roll.held, Paper(), roll.options);
   const auto reason = BeyondReach(shot, roll.held.speeds.max, roll.held.heading);
@@ -65,7 +53,7 @@ TEST(BeyondReach, TheFastestLaunchShortOfTheTargetIsOutOfReach) {
 }
 
 TEST(BeyondReach, TheSlowestLaunchPastTheTargetIsOutOfReach) {
-  Roll roll;
+  HeldShot roll = Roll();
   roll.held.speeds.min = 1.5 * roll.held.speed;
   Shot shot(roll.q, roll.held, Paper(), roll.options);
   const auto reason = BeyondReach(shot, roll.held.speed, roll.held.heading);
@@ -74,7 +62,7 @@ TEST(BeyondReach, TheSlowestLaunchPastTheTargetIsOutOfReach) {
 }
 
 TEST(BeyondReach, ABoundThatReachesTheTargetDecidesNothing) {
-  Roll roll;
+  HeldShot roll = Roll();
   roll.held.speeds.max = roll.held.speed;  // the closed form's natural roll: within millimetres
   roll.options.acceptable_miss = 0.05;
   Shot shot(roll.q, roll.held, Paper(), roll.options);

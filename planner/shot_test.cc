@@ -6,15 +6,13 @@
 
 #include <cmath>
 
-#include "sim/params/parameter_sets.h"
+#include "planner/testing/held_shot.h"
 
 namespace billiard::planner {
 namespace {
 
-const physics::ModelParameters& Paper() {
-  static const physics::ModelParameters p = params::LoadParameters("paper");
-  return p;
-}
+using testing::HeldShot;
+using testing::Paper;
 
 TEST(Launch, IsTheSpeedAlongTheHeadingWithTheSpinRatioAcrossTheLine) {
   const double radius = 0.028575, k = -0.7, side = 12.0, speed = 2.0, heading = 2.4;
@@ -44,23 +42,10 @@ TEST(Launch, DerivativeIsTheRateOfChangeOfTheState) {
 }
 
 // A follow shot with side spin, on the paper's table.
-struct FollowShot {
-  ShotRequest q;
-  LaunchSolution guess;
-  HeldSpin held;
-  FollowShot() {
-    q.from = {0.4, 1.0};
-    q.to = {2.1, 0.3};
-    q.final_speed = 0.3;
-    q.style = SpinStyle::kFollow;
-    q.side_spin = -15.0;
-    guess = InvertClosedForm(q, physics::ClosedFormParameters::From(Paper()));
-    held = HoldTheSpin(q, guess, Paper());
-  }
-};
+HeldShot FollowShot() { return HeldShot({0.4, 1.0}, {2.1, 0.3}, 0.3, SpinStyle::kFollow, -15.0); }
 
 TEST(HoldTheSpin, StartsFromTheClosedFormsLaunchWithItsSpin) {
-  const FollowShot f;
+  const HeldShot f = FollowShot();
   ASSERT_TRUE(f.guess.ok) << f.guess.reason;
   EXPECT_DOUBLE_EQ(f.held.speed, f.guess.v0.norm());
   EXPECT_DOUBLE_EQ(f.held.spin_ratio, SpinRatio(SpinStyle::kFollow));
@@ -75,9 +60,8 @@ TEST(HoldTheSpin, StartsFromTheClosedFormsLaunchWithItsSpin) {
 }
 
 TEST(Shot, SimulatesEachLaunchOnceAndARunWithSensitivitiesServesOneWithout) {
-  const FollowShot f;
-  const PlannerOptions options;
-  Shot shot(f.q, f.held, Paper(), options);
+  const HeldShot f = FollowShot();
+  Shot shot(f.q, f.held, Paper(), f.options);
   const physics::Arrival& plain = shot.Arrive(f.held.speed, f.held.heading, false);
   EXPECT_EQ(&shot.Arrive(f.held.speed, f.held.heading, false), &plain);
   EXPECT_EQ(shot.simulations(), 1);
@@ -91,17 +75,16 @@ TEST(Shot, SimulatesEachLaunchOnceAndARunWithSensitivitiesServesOneWithout) {
 }
 
 TEST(Shot, TheMissIsTheArrivalLessTheTargetAndItsJacobianTheSensitivities) {
-  const FollowShot f;
-  PlannerOptions options;
-  options.simulation.tolerance = 1e-11;  // central differences of runs this close
-  Shot shot(f.q, f.held, Paper(), options);
+  HeldShot f = FollowShot();
+  f.options.simulation.tolerance = 1e-11;  // central differences of runs this close
+  Shot shot(f.q, f.held, Paper(), f.options);
   const double s = f.held.speed, theta = f.held.heading, h = 1e-4;
   Eigen::Vector2d miss;
   Eigen::Matrix2d jacobian;
   ASSERT_TRUE(shot.Miss(s, theta, &miss, &jacobian));
   EXPECT_EQ(miss, Eigen::Vector2d(shot.Arrive(s, theta, false).state.head<2>() - f.q.to));
   const double launch[2] = {s, theta};
-  EXPECT_EQ(shot.Close(launch), miss.norm() < options.miss_tolerance);
+  EXPECT_EQ(shot.Close(launch), miss.norm() < f.options.miss_tolerance);
   Eigen::Vector2d plus, minus;
   ASSERT_TRUE(shot.Miss(s + h, theta, &plus, nullptr) && shot.Miss(s - h, theta, &minus, nullptr));
   EXPECT_LT((jacobian.col(0) - (plus - minus) / (2 * h)).norm(), 1e-5 * jacobian.col(0).norm());
