@@ -13,6 +13,11 @@
 //      (Levenberg-Marquardt on speed and heading, a sensitivity run per iteration) finishes;
 //   3. the cue stroke that gives that launch (sim/physics/cue_strike.h), within the robot's
 //      limits, which also bound the refinement (tip offset, cue speed).
+//
+// PlanShot's steps, each in its file: the request checked and the closed form's launch (here),
+// its spin held and the launch's simulations (shot.h), Newton's method on the speed
+// (newton_aim.h), Ceres where that does not converge (ceres_polish.h), the bounds that decide
+// reachability (reachability.h), and the plan predicted and judged (plan_assembly.h).
 #pragma once
 
 #include <Eigen/Core>

@@ -8,149 +8,20 @@
 #include <sstream>
 #include <utility>
 
-#include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
+#include "planner/node/choose_request.h"
+#include "planner/node/command_writing.h"
+#include "planner/node/named_ball.h"
+#include "planner/node/pot_request.h"
+#include "planner/node/to_point_request.h"
 #include "sim/params/parameter_sets.h"
-#include "sim/params/table_specs.h"
-#include "sim/physics/ball_state.h"
 
 namespace billiard::planner_node {
 
 namespace {
 
-int8_t ToMessageStatus(planner::PlanStatus status) {
-  switch (status) {
-    case planner::PlanStatus::kOk:
-      return cue_command_t::STATUS_OK;
-    case planner::PlanStatus::kInvalid:
-      return cue_command_t::STATUS_INVALID;
-    case planner::PlanStatus::kOffTable:
-      return cue_command_t::STATUS_OFF_TABLE;
-    case planner::PlanStatus::kUnreachable:
-      return cue_command_t::STATUS_UNREACHABLE;
-    case planner::PlanStatus::kNotConverged:
-      return cue_command_t::STATUS_NOT_CONVERGED;
-  }
-  return cue_command_t::STATUS_INVALID;
-}
-
-int8_t ToMessageStatus(pot::PotStatus status) {
-  switch (status) {
-    case pot::PotStatus::kOk:
-      return cue_command_t::STATUS_OK;
-    case pot::PotStatus::kInvalid:
-      return cue_command_t::STATUS_INVALID;
-    case pot::PotStatus::kNoSuchBall:
-      return cue_command_t::STATUS_NO_SUCH_BALL;
-    case pot::PotStatus::kNoSuchPocket:
-      return cue_command_t::STATUS_NO_SUCH_POCKET;
-    case pot::PotStatus::kBlocked:
-      return cue_command_t::STATUS_BLOCKED;
-    case pot::PotStatus::kTooThin:
-      return cue_command_t::STATUS_TOO_THIN;
-    case pot::PotStatus::kNoStroke:
-      return cue_command_t::STATUS_NO_STROKE;
-    case pot::PotStatus::kTargetUnreachable:
-      return cue_command_t::STATUS_TARGET_UNREACHABLE;
-  }
-  return cue_command_t::STATUS_INVALID;
-}
-
-// shot_request_t's KIND_ constants and the pot planner's kinds (KIND_ANY: none).
-std::optional<pot::ShotKind> ToShotKind(int8_t kind) {
-  switch (kind) {
-    case shot_request_t::KIND_DIRECT:
-      return pot::ShotKind::kDirect;
-    case shot_request_t::KIND_BANK:
-      return pot::ShotKind::kBank;
-    case shot_request_t::KIND_KICK:
-      return pot::ShotKind::kKick;
-    case shot_request_t::KIND_CURVE:
-      return pot::ShotKind::kCurve;
-  }
-  return std::nullopt;
-}
-
-int8_t ToMessageKind(pot::ShotKind kind) {
-  switch (kind) {
-    case pot::ShotKind::kDirect:
-      return shot_request_t::KIND_DIRECT;
-    case pot::ShotKind::kBank:
-      return shot_request_t::KIND_BANK;
-    case pot::ShotKind::kKick:
-      return shot_request_t::KIND_KICK;
-    case pot::ShotKind::kCurve:
-      return shot_request_t::KIND_CURVE;
-  }
-  return shot_request_t::KIND_ANY;
-}
-
-// The ball `id` names among `balls`; with shot_request_t::BALL_BY_CLASS, the one of
-// `ball_class` the estimator is surest of, at least kMinClassConfidence. Ties by id: the answer
-// must not depend on the balls' order. nullptr when there is none.
-const ball_state_t* Named(const std::vector<const ball_state_t*>& balls, int32_t id,
-                          int8_t ball_class, float min_confidence = kMinClassConfidence) {
-  const ball_state_t* surest = nullptr;
-  for (const ball_state_t* ball : balls) {
-    if (id != shot_request_t::BALL_BY_CLASS) {
-      if (ball->ball_id == id) return ball;
-      continue;
-    }
-    if (ball->ball_class != ball_class || ball->class_confidence < min_confidence) continue;
-    if (surest == nullptr || ball->class_confidence > surest->class_confidence ||
-        (ball->class_confidence == surest->class_confidence && ball->ball_id < surest->ball_id)) {
-      surest = ball;
-    }
-  }
-  return surest;
-}
-
-table::TableGeometry TableOf(const PlannerNodeOptions& options) {
-  return options.table ? *options.table
-                       : table::BuildTable(params::LoadTableSpec(kDefaultPotTable));
-}
-
-}  // namespace
-
-std::unordered_map<int32_t, int> BallNumbers(const table_state_t& table, int32_t cue) {
-  constexpr int kHighestNumber = 15;
-  std::vector<const ball_state_t*> balls;
-  for (const ball_state_t& b : table.balls) balls.push_back(&b);
-  std::sort(balls.begin(), balls.end(),
-            [](const ball_state_t* a, const ball_state_t* b) { return a->ball_id < b->ball_id; });
-  // Each number's surest claimant: first among the confident, then, for the numbers still
-  // free, among the others (a faint stripe is still likelier its own number than any other).
-  std::map<int, const ball_state_t*> claimant;
-  std::unordered_map<int32_t, int> number;
-  for (const bool confident : {true, false}) {
-    std::map<int, const ball_state_t*> surest;
-    for (const ball_state_t* b : balls) {
-      if (b->ball_id == cue || number.count(b->ball_id) || b->ball_class < 1 ||
-          b->ball_class > kHighestNumber || claimant.count(b->ball_class) ||
-          (b->class_confidence >= kMinClassConfidence) != confident) {
-        continue;
-      }
-      const ball_state_t*& s = surest[b->ball_class];
-      if (s == nullptr || b->class_confidence > s->class_confidence) s = b;
-    }
-    for (const auto& [n, b] : surest) {
-      claimant[n] = b;
-      number[b->ball_id] = n;
-    }
-  }
-  number[cue] = 0;
-  int free = 1;
-  for (const ball_state_t* b : balls) {
-    if (number.count(b->ball_id)) continue;
-    while (free <= kHighestNumber && claimant.count(free)) ++free;
-    number[b->ball_id] = free++;
-  }
-  return number;
-}
-
-namespace {
-
+// The answer in one line of the log.
 std::string Describe(const cue_command_t& c) {
   std::ostringstream line;
   line << "request " << c.request_id << " (ball " << c.ball_id;
@@ -178,144 +49,6 @@ std::string Describe(const cue_command_t& c) {
     line << ": " << c.reason;
   }
   return line.str();
-}
-
-// The answer to `q` before anything is planned: its ids and the request's utime, so that the
-// answer is a function of the messages alone; a pot's ball, pocket and kind when the request
-// passes its checks (those of one that does not may be anything).
-cue_command_t ReplyTo(const shot_request_t& q) {
-  cue_command_t c{};
-  c.utime = q.utime;
-  c.request_id = q.request_id;
-  c.ball_id = q.ball_id;
-  if (q.mode == shot_request_t::MODE_POT && messages::Check(q).empty()) {
-    c.mode = q.mode;
-    c.object_ball_id = q.object_ball_id;
-    c.pocket = q.pocket;
-    c.kind = q.kind;
-  }
-  if (q.mode == shot_request_t::MODE_CHOOSE && messages::Check(q).empty()) {
-    c.mode = q.mode;
-    c.object_ball_id = -1;
-  }
-  return c;
-}
-
-cue_command_t Refusal(cue_command_t c, int8_t status, std::string reason) {
-  c.status = status;
-  c.reason = std::move(reason);
-  return c;
-}
-
-// The planner's request for the ball at `s`, with the message's spin choice (messages::Check has
-// made sure it is one of the five).
-planner::ShotRequest ToShotRequest(const shot_request_t& q, const ball_state_t& s) {
-  planner::ShotRequest request;
-  switch (q.spin) {
-    case shot_request_t::SPIN_NATURAL:
-      request.style = planner::SpinStyle::kNatural;
-      break;
-    case shot_request_t::SPIN_STUN:
-      request.style = planner::SpinStyle::kStun;
-      break;
-    case shot_request_t::SPIN_FOLLOW:
-      request.style = planner::SpinStyle::kFollow;
-      break;
-    case shot_request_t::SPIN_DRAW:
-      request.style = planner::SpinStyle::kDraw;
-      break;
-    default:
-      request.slide_length = q.slide_length;
-      break;  // SPIN_SLIDE
-  }
-  request.from = {s.position[0], s.position[1]};
-  request.to = {q.target[0], q.target[1]};
-  request.final_speed = q.final_speed;
-  request.side_spin = q.side_spin;
-  return request;
-}
-
-// The plan into the command. The planner's measurements go out with a refusal too (a
-// not-converged plan's miss says by how much); the stroke only with an ok plan, so that a
-// refused command cannot move the cue.
-void WritePlan(const planner::ShotPlan& plan, cue_command_t* c) {
-  std::copy(plan.v0.data(), plan.v0.data() + 2, c->v0);
-  std::copy(plan.w0.data(), plan.w0.data() + 3, c->w0);
-  c->num_path_points = static_cast<int32_t>(plan.predicted_path.size());
-  c->path.reserve(plan.predicted_path.size());
-  for (const Eigen::Vector2d& p : plan.predicted_path) c->path.push_back({p.x(), p.y()});
-  c->predicted_final[0] = plan.predicted_final.x();
-  c->predicted_final[1] = plan.predicted_final.y();
-  c->closed_form_miss_m = plan.closed_form_miss_m;
-  c->refined_miss_m = plan.refined_miss_m;
-  c->solve_us = plan.solve_us;
-  c->iterations = plan.iterations;
-  c->status = ToMessageStatus(plan.status);
-  if (plan.status == planner::PlanStatus::kOk) {
-    c->cue_speed = plan.stroke.speed;
-    c->heading = plan.stroke.heading;
-    c->tip_side = plan.stroke.tip_side;
-    c->tip_height = plan.stroke.tip_height;
-    c->elevation = plan.stroke.elevation;
-  } else {
-    c->reason = plan.reason.empty() ? planner::PlanStatusName(plan.status) : plan.reason;
-  }
-}
-
-// The pot into the command, the balls named by the table state's ids (`message_id` of each of
-// the scene's ids). The stroke, like a point plan's, only with an ok plan.
-void WritePot(const pot::PotPlan& plan, const std::unordered_map<int, int32_t>& message_id,
-              cue_command_t* c) {
-  c->status = ToMessageStatus(plan.status);
-  if (plan.status != pot::PotStatus::kOk) {
-    c->reason = plan.reason.empty() ? pot::PotStatusName(plan.status) : plan.reason;
-    c->solve_us = plan.solve_us;
-    return;
-  }
-  c->cue_speed = plan.stroke.speed;
-  c->heading = plan.stroke.heading;
-  c->tip_side = plan.stroke.tip_side;
-  c->tip_height = plan.stroke.tip_height;
-  c->elevation = plan.stroke.elevation;
-  std::copy(plan.v0.data(), plan.v0.data() + 2, c->v0);
-  std::copy(plan.w0.data(), plan.w0.data() + 3, c->w0);
-  c->kind = ToMessageKind(plan.kind);
-  c->margin_deg[0] = plan.margin_left_deg;
-  c->margin_deg[1] = plan.margin_right_deg;
-  c->speed_window[0] = plan.speed_lo;
-  c->speed_window[1] = plan.speed_hi;
-  c->cue_rest[0] = c->predicted_final[0] = plan.cue_rest.x();
-  c->cue_rest[1] = c->predicted_final[1] = plan.cue_rest.y();
-  c->solve_us = plan.solve_us;
-  c->iterations = plan.simulations;
-  for (const pot::BallPath& path : plan.paths) {
-    ball_path_t out{};
-    out.ball_id = message_id.at(path.id);
-    for (const Eigen::Vector2d& p : path.points) out.points.push_back({p.x(), p.y()});
-    out.num_points = static_cast<int32_t>(out.points.size());
-    if (path.id == 0) c->path = out.points;
-    c->ball_paths.push_back(std::move(out));
-  }
-  c->num_path_points = static_cast<int32_t>(c->path.size());
-  c->num_ball_paths = static_cast<int32_t>(c->ball_paths.size());
-}
-
-// What goes out must pass the receiver's checks, or the answer is lost: a refusal keeps its
-// status without the measurements, and an ok that fails them is no ok.
-cue_command_t Sendable(const cue_command_t& c) {
-  const std::string why = messages::Check(c);
-  if (why.empty()) return c;
-  const bool was_ok = c.status == cue_command_t::STATUS_OK;
-  cue_command_t refused{};
-  refused.utime = c.utime;
-  refused.request_id = c.request_id;
-  refused.ball_id = c.ball_id;
-  refused.mode = c.mode;
-  refused.object_ball_id = c.object_ball_id;
-  refused.pocket = c.pocket;
-  std::copy(c.start, c.start + 2, refused.start);
-  return Refusal(refused, was_ok ? cue_command_t::STATUS_NOT_CONVERGED : c.status,
-                 was_ok ? "the plan is not a valid command: " + why : c.reason);
 }
 
 }  // namespace
@@ -364,174 +97,21 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   c.ball_id = state.ball_id;
   std::copy(state.position, state.position + 2, c.start);
   if (auto unfit = UnfitToPlanFrom(q, state)) return Refusal(c, unfit->status, unfit->reason);
-  if (q.mode == shot_request_t::MODE_POT) return AnswerPot(q, state, std::move(c));
-  if (q.mode == shot_request_t::MODE_CHOOSE) return AnswerChoice(q, state, std::move(c));
-  planner::ShotPlan plan;
-  try {
-    plan = planner::PlanShot(ToShotRequest(q, state), params_, options_.planner);
-  } catch (const std::exception& e) {
-    return Refusal(c, cue_command_t::STATUS_NOT_CONVERGED,
-                   std::string("planner failed: ") + e.what());
+  if (q.mode == shot_request_t::MODE_POT) {
+    return AnswerPot(q, state, *latest_table_, table_, params_, options_, std::move(c));
   }
-  WritePlan(plan, &c);
-  return Sendable(c);
-}
-
-cue_command_t PlannerNode::AnswerPot(const shot_request_t& q, const ball_state_t& cue,
-                                     cue_command_t c) const {
-  const ball_state_t* object = ObjectBallFor(q);
-  if (object == nullptr) {
-    std::ostringstream reason;
-    reason << "no ball "
-           << (q.object_ball_id == shot_request_t::BALL_BY_CLASS
-                   ? "of class " + std::to_string(q.object_ball_class) + " with a confidence of " +
-                         std::to_string(kMinClassConfidence) + " or more"
-                   : std::to_string(q.object_ball_id))
-           << " in the latest table state";
-    return Refusal(c, cue_command_t::STATUS_NO_SUCH_BALL, reason.str());
-  }
-  c.object_ball_id = object->ball_id;
-  if (object->ball_id == cue.ball_id) {
-    return Refusal(c, cue_command_t::STATUS_NO_SUCH_BALL,
-                   "ball " + std::to_string(cue.ball_id) + " is the ball struck, not one to pot");
-  }
-  pot::PotRequest request;
-  request.pocket = q.pocket;
-  request.kind = ToShotKind(q.kind);
-  if (q.has_cue_target) {
-    const Eigen::Vector2d point(q.cue_target[0], q.cue_target[1]);
-    if (!table_.OnSurface(point, params_.ball.radius)) {
-      std::ostringstream reason;
-      reason << "the cue-ball target (" << point.x() << ", " << point.y() << ") is off the "
-             << table_.name << " table's playing surface";
-      return Refusal(c, cue_command_t::STATUS_OFF_TABLE, reason.str());
-    }
-    request.cue_target = pot::CueTarget{point, q.cue_radius};
-  }
-  // The scene: the cue ball id 0, the others by their ids (one that is 0 takes a free id).
-  int32_t free_id = 1;
-  for (const ball_state_t& b : latest_table_->balls) free_id = std::max(free_id, b.ball_id + 1);
-  std::unordered_map<int, int32_t> message_id;
-  std::string moving;
-  const auto balls = SceneAtRest(
-      cue.ball_id, [&](int32_t id) { return id == 0 ? free_id : id; }, &message_id, &moving);
-  if (!balls) return Refusal(c, cue_command_t::STATUS_INVALID, moving);
-  for (const auto& [scene_id, id] : message_id) {
-    if (id == object->ball_id) request.ball = scene_id;
-  }
-  pot::PotPlan plan;
-  try {
-    plan = pot::PlanPot(table_, params_, *balls, request, options_.pot);
-  } catch (const std::exception& e) {
-    return Refusal(c, cue_command_t::STATUS_NOT_CONVERGED,
-                   std::string("pot planner failed: ") + e.what());
-  }
-  WritePot(plan, message_id, &c);
-  return Sendable(c);
-}
-
-std::optional<std::vector<table::SceneBall>> PlannerNode::SceneAtRest(
-    int32_t cue_track, const std::function<int(int32_t)>& scene_id,
-    std::unordered_map<int, int32_t>* message_id, std::string* moving) const {
-  std::vector<table::SceneBall> balls;
-  for (const ball_state_t& b : latest_table_->balls) {
-    const double speed = std::hypot(b.velocity[0], b.velocity[1]);
-    if (speed > options_.max_ball_speed) {
-      std::ostringstream reason;
-      reason << "ball " << b.ball_id << " is moving (" << speed << " m/s, more than "
-             << options_.max_ball_speed << " m/s)";
-      *moving = reason.str();
-      return std::nullopt;
-    }
-    const int id = b.ball_id == cue_track ? 0 : scene_id(b.ball_id);
-    (*message_id)[id] = b.ball_id;
-    balls.push_back({id, physics::MakeBallState(b.position[0], b.position[1], 0, 0, 0, 0, 0)});
-  }
-  // By id, so that the plan does not depend on the publisher's order.
-  std::sort(balls.begin(), balls.end(),
-            [](const table::SceneBall& a, const table::SceneBall& b) { return a.id < b.id; });
-  return balls;
-}
-
-cue_command_t PlannerNode::AnswerChoice(const shot_request_t& q, const ball_state_t& cue,
-                                        cue_command_t c) const {
-  const std::unordered_map<int32_t, int> number = BallNumbers(*latest_table_, cue.ball_id);
-  std::unordered_map<int, int32_t> message_id;
-  std::string moving;
-  auto balls = SceneAtRest(
-      cue.ball_id, [&](int32_t id) { return number.at(id); }, &message_id, &moving);
-  if (!balls) return Refusal(c, cue_command_t::STATUS_INVALID, moving);
-  // An object ball seen further over a pocket's mouth or into a cushion than settling moves one
-  // is dropping (the estimator's last frames of it): no ball to play.
-  balls->erase(std::remove_if(balls->begin(), balls->end(),
-                              [&](const table::SceneBall& b) {
-                                return b.id != 0 &&
-                                       !table_.OnSurface(
-                                           b.state.head<2>(),
-                                           params_.ball.radius - options_.pot.settle_overlap);
-                              }),
-               balls->end());
-  choice::ChoiceOptions options = options_.choice;
-  options.rules =
-      q.rules == shot_request_t::RULES_NINE_BALL ? choice::Rules::kNineBall : choice::Rules::kAny;
-  options.seed = choice::SampleSeed(options_.choice.seed, static_cast<std::uint64_t>(q.request_id));
-  options.pot = options_.pot;
-  choice::ChoiceResult result;
-  try {
-    // What the camera saw, touching balls settled apart as a pot's are.
-    *balls = table::SettledScene(table_, params_.ball.radius, std::move(*balls),
-                                 options_.pot.settle_overlap);
+  if (q.mode == shot_request_t::MODE_CHOOSE) {
     if (!choice_pool_) choice_pool_ = std::make_unique<batch::ThreadPool>(options_.choice_threads);
-    result = q.ball_in_hand
-                 ? choice::ChooseWithBallInHand(table_, params_, *balls, options, *choice_pool_)
-                 : choice::ChooseShot(table_, params_, *balls, options, *choice_pool_);
-  } catch (const std::exception& e) {
-    return Refusal(c, cue_command_t::STATUS_INVALID, std::string("no choice: ") + e.what());
+    return AnswerChoice(q, state, *latest_table_, table_, params_, options_, *choice_pool_,
+                        std::move(c));
   }
-  switch (result.status) {
-    case choice::ChoiceStatus::kInvalid:
-      return Refusal(c, cue_command_t::STATUS_INVALID, result.reason);
-    case choice::ChoiceStatus::kNoTarget:
-      return Refusal(c, cue_command_t::STATUS_NO_SUCH_BALL, result.reason);
-    case choice::ChoiceStatus::kOk:
-    case choice::ChoiceStatus::kNoPlan:
-      break;
-  }
-  if (result.cue_placement) {
-    c.has_cue_placement = 1;
-    c.start[0] = c.cue_placement[0] = result.cue_placement->x();
-    c.start[1] = c.cue_placement[1] = result.cue_placement->y();
-  }
-  if (const choice::Candidate* chosen = result.chosen()) {
-    WritePot(chosen->plan, message_id, &c);
-    c.object_ball_id = message_id.at(chosen->plan.ball);
-    c.pocket = chosen->plan.pocket;
-    c.success_probability = chosen->reported().probability;
-    c.probability_stderr = chosen->reported().stderr_;
-  } else {  // kNoPlan: the fallback, which at least hits the first legal ball
-    const physics::CueStroke& s = *result.fallback;
-    c.cue_speed = s.speed;
-    c.heading = s.heading;
-    c.tip_side = s.tip_side;
-    c.tip_height = s.tip_height;
-    c.elevation = s.elevation;
-    c.status = cue_command_t::STATUS_OK;
-  }
-  c.solve_us = result.decision_us;
-  c.iterations = result.simulations;
-  return Sendable(c);
-}
-
-const ball_state_t* PlannerNode::ObjectBallFor(const shot_request_t& q) const {
-  return Named(Candidates(q), q.object_ball_id, q.object_ball_class);
+  return AnswerToPoint(q, state, params_, options_.planner, std::move(c));
 }
 
 std::vector<const ball_state_t*> PlannerNode::Candidates(const shot_request_t& q) const {
   std::vector<const ball_state_t*> balls;
   if (q.mode == shot_request_t::MODE_POT || q.mode == shot_request_t::MODE_CHOOSE) {
-    if (latest_table_) {
-      for (const ball_state_t& b : latest_table_->balls) balls.push_back(&b);
-    }
+    if (latest_table_) balls = BallsOf(*latest_table_);
   } else {
     for (const auto& [id, b] : balls_) balls.push_back(&b);
   }
@@ -563,9 +143,7 @@ const ball_state_t* PlannerNode::BallFor(const shot_request_t& q) const {
   // By class among the balls the estimator sees now: one it has lost (pocketed, or of a rack
   // cleared away) is no ball to strike, however sure it was of it.
   std::vector<const ball_state_t*> seen;
-  if (latest_table_) {
-    for (const ball_state_t& b : latest_table_->balls) seen.push_back(&b);
-  }
+  if (latest_table_) seen = BallsOf(*latest_table_);
   // A choice is made on a whole rack, which has one cue ball: the likeliest, however unsure, or
   // when the estimator names none now, the ball it named the cue ball last.
   if (q.mode != shot_request_t::MODE_CHOOSE) return Named(seen, q.ball_id, q.ball_class);
@@ -610,8 +188,7 @@ void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string
         break;
     }
     for (const ball_state_t& ball : state.balls) balls_.insert_or_assign(ball.ball_id, ball);
-    std::vector<const ball_state_t*> seen;
-    for (const ball_state_t& b : state.balls) seen.push_back(&b);
+    const std::vector<const ball_state_t*> seen = BallsOf(state);
     for (const ball_state_t& b : state.balls) {
       if (b.ball_class == ball_state_t::CLASS_UNKNOWN) continue;
       last_of_class_[b.ball_class] =
@@ -725,8 +302,7 @@ void PlannerNode::IdentifyIfDue() {
     log_(line.str());
   } catch (const std::exception& e) {
     health_.Count("identification_failed");
-    log_(std::string("identification failed, planning on with the constants so far: ") +
-         e.what());
+    log_(std::string("identification failed, planning on with the constants so far: ") + e.what());
   }
 }
 

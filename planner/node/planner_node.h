@@ -1,33 +1,17 @@
 // The planner node: answers every SHOT_REQUEST with a CUE_COMMAND planned from the latest
-// TABLE_STATE: one ball to a point (MODE_TO_POINT, shot_planner.h), a pot (MODE_POT,
-// planner/pot/pot_planner.h) or the pot it chooses to play (MODE_CHOOSE,
-// planner/choice/shot_choice.h).
+// TABLE_STATE: one ball to a point (MODE_TO_POINT, to_point_request.h), a pot (MODE_POT,
+// pot_request.h) or the pot it chooses to play (MODE_CHOOSE, choose_request.h). This is its
+// message loop: the table states kept, the requests queued and answered, the ball each names
+// (named_ball.h), a repeated request answered from memory, its health on NODE_STATUS.
 //
 //   TABLE_STATE   table_state_t    keeps the latest state received of each ball_id (a message
 //                                  naming some balls leaves the others as they were)
 //   SHOT_REQUEST  shot_request_t   one cue_command_t per request, ok or refused
 //   CUE_COMMAND   cue_command_t    utime, request_id and ball_id of the request
 //
-// A pot is planned on the node's table (PlannerNodeOptions::table) among the balls of the latest
-// TABLE_STATE, every ball its publisher knows of (one it no longer names is gone: pocketed, or
-// lost by the estimator), each at rest where it was seen; the cue ball and the object ball are
-// looked for there. The struck ball is the cue ball (id 0
-// of pot::PlanPot's scene, whatever the estimator calls it); the answer names the balls, in
-// object_ball_id and the paths, by the table state's ids.
-//
 // The answer depends only on the messages received, never on the clock: its utime is the
 // request's, so a logged run replays to the same commands (all but solve_us, the planning wall
 // time the message carries by design).
-//
-// A choice (MODE_CHOOSE) is made among the balls of the latest TABLE_STATE as a pot is, on the
-// node's table, under the request's rules, with ball in hand when the request says so (the cue
-// ball lifted and placed: the answer's cue_placement). The balls are named by the estimator's
-// classes (BallNumbers: the rules need the numbers) and the answer names them back by the table
-// state's ids. Its noise samples are seeded by PlannerNodeOptions::choice.seed and the
-// request_id, so that a logged run replays to the same choice. An object ball seen further
-// over a pocket's mouth (or into a cushion) than pot.settle_overlap is taken for dropping and
-// left out. When no pot plans, the answer is
-// ok with object_ball_id -1 and the choice's fallback stroke (the first legal ball hit full).
 //
 // Refusals (status != STATUS_OK, the reason in words, the stroke fields zero; the plan fields say
 // what the planner measured, zero when it did not run):
@@ -86,55 +70,13 @@
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/node/message_clock.h"
 #include "lcmtypes/node/node_health.h"
-#include "planner/choice/shot_choice.h"
-#include "planner/pot/pot_planner.h"
-#include "planner/shot_planner.h"
+#include "planner/node/planner_node_options.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/physics/parameters.h"
-#include "sim/shot_fit/shot_fit.h"
 #include "sim/shot_fit/shot_recorder.h"
-#include "sim/table/scene.h"
 #include "sim/table/table_geometry.h"
 
 namespace billiard::planner_node {
-
-struct PlannerNodeOptions {
-  planner::PlannerOptions planner;
-  // A ball faster than this [m/s] is still moving: a plan from where it is now would start from
-  // the wrong place, so the request is refused. The default is above an estimator's noise on a
-  // ball at rest and below any ball that will roll on for more than a few millimetres.
-  double max_ball_speed = 0.05;
-  // The most a ball's state and a request may be apart in time [s] (their utimes).
-  double max_state_age = 1.0;
-  // Requests waiting to be planned; more are answered STATUS_BUSY.
-  int queue_capacity = 32;
-  // The table pots are planned on (its cushions and pockets); kDefaultPotTable when not given.
-  std::optional<table::TableGeometry> table;
-  pot::PotOptions pot = CameraPotOptions();
-  // Online identification of the table (0: off): after every `identify_every` shots the node
-  // commanded and saw tracked, the constants `identify` are fitted jointly to its latest
-  // kIdentifyWindow shots (sim/shot_fit/shot_fit.h, from the constants it plans with) and its
-  // plans use them from then on; what the shots do not excite is kept.
-  int identify_every = 0;
-  std::vector<shot_fit::Constant> identify = {shot_fit::Constant::kMu,
-                                              shot_fit::Constant::kRolling};
-  // MODE_CHOOSE: the choice's samples, noise (the robot's, the table simulator's own) and seed;
-  // its rules and pot options are the request's and `pot`.
-  choice::ChoiceOptions choice;
-  int choice_threads = batch::DefaultThreadCount();
-
-  // Pots are planned on what the camera saw: touching balls measured a fraction of a millimetre
-  // into each other (or into a cushion) are settled apart first (pot::PotOptions::settle_overlap),
-  // by up to 2 mm, some four times the estimator's position error.
-  static pot::PotOptions CameraPotOptions() {
-    pot::PotOptions o;
-    o.settle_overlap = 2e-3;
-    return o;
-  }
-};
-
-// The table of a node started without one: the table of the default parameter set's size.
-inline constexpr char kDefaultPotTable[] = "pool-9ft";
 
 // At most this many balls are remembered; beyond it the longest unseen is forgotten.
 inline constexpr std::size_t kMaxRememberedBalls = 256;
@@ -142,16 +84,6 @@ inline constexpr std::size_t kMaxRememberedBalls = 256;
 inline constexpr std::size_t kIdentifyWindow = 40;
 // Answers remembered for requests sent again.
 inline constexpr std::size_t kRememberedAnswers = 64;
-// The pool numbers a choice knows the balls of `table` by, by their table state ids: the cue ball
-// `cue` 0; every other ball the number (1-15) its class names at kMinClassConfidence or more, the
-// surer (then the lower id) when two claim one; then, of the numbers left, those named by less
-// confident classes, as surely; the rest take the numbers no ball claims (a rack has one of
-// each), ascending, in the order of their ids, and 16 up when those run out.
-std::unordered_map<int32_t, int> BallNumbers(const table_state_t& table, int32_t cue);
-
-// A ball asked for by class (shot_request_t::BALL_BY_CLASS) must be of that class with at least
-// this confidence: an even guess between two classes is no ball to strike.
-inline constexpr float kMinClassConfidence = 0.5f;
 
 class PlannerNode {
  public:
@@ -200,20 +132,6 @@ class PlannerNode {
 
   std::optional<Unfit> UnfitToPlanFrom(const shot_request_t& q, const ball_state_t& s) const;
 
-  // The pot of a checked MODE_POT request, struck at `cue` (whose state is fit to plan from),
-  // into `c` (the reply with the cue ball's id and start).
-  cue_command_t AnswerPot(const shot_request_t& q, const ball_state_t& cue, cue_command_t c) const;
-  // The choice of a checked MODE_CHOOSE request, the cue ball `cue`, into `c`.
-  cue_command_t AnswerChoice(const shot_request_t& q, const ball_state_t& cue,
-                             cue_command_t c) const;
-  // The balls of the latest table state at rest, the one of `cue_track` id 0 and the others by
-  // `scene_id` (their message ids kept in `message_id`); nullopt and `moving` set when a ball
-  // moves faster than max_ball_speed.
-  std::optional<std::vector<table::SceneBall>> SceneAtRest(
-      int32_t cue_track, const std::function<int(int32_t)>& scene_id,
-      std::unordered_map<int, int32_t>* message_id, std::string* moving) const;
-  // The pot's object ball, by id or by class; nullptr when there is none.
-  const ball_state_t* ObjectBallFor(const shot_request_t& q) const;
   // The balls a request's balls are looked for among: a pot's, the latest table state's; a
   // point request's, the latest state of every ball.
   std::vector<const ball_state_t*> Candidates(const shot_request_t& q) const;
@@ -251,8 +169,8 @@ class PlannerNode {
   std::size_t identified_shots_ = 0;  // closed shots at the latest fit
   std::unique_ptr<batch::ThreadPool> fit_pool_;
   mutable std::unique_ptr<batch::ThreadPool> choice_pool_;  // made at the first choice
-  static constexpr double kLongestShot = 60.0;     // [s]
-  static constexpr double kShotThinning = 0.002;   // [m], as the real recordings
+  static constexpr double kLongestShot = 60.0;              // [s]
+  static constexpr double kShotThinning = 0.002;            // [m], as the real recordings
   lcm::Subscription* table_state_subscription_ = nullptr;
   lcm::Subscription* shot_request_subscription_ = nullptr;
 };

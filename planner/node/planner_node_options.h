@@ -1,0 +1,59 @@
+// What a planner node is started with (planner_node.h): the planners' options, its limits on the
+// table states it plans from, its queue, its table, online identification and the choice's
+// sampling. planner_node_command.h fills them from build/bin/planner_node's command line.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "planner/choice/shot_choice.h"
+#include "planner/pot/pot_planner.h"
+#include "planner/shot_planner.h"
+#include "sim/batch/thread_pool.h"
+#include "sim/shot_fit/shot_fit.h"
+#include "sim/table/table_geometry.h"
+
+namespace billiard::planner_node {
+
+struct PlannerNodeOptions {
+  planner::PlannerOptions planner;
+  // A ball faster than this [m/s] is still moving: a plan from where it is now would start from
+  // the wrong place, so the request is refused. The default is above an estimator's noise on a
+  // ball at rest and below any ball that will roll on for more than a few millimetres.
+  double max_ball_speed = 0.05;
+  // The most a ball's state and a request may be apart in time [s] (their utimes).
+  double max_state_age = 1.0;
+  // Requests waiting to be planned; more are answered STATUS_BUSY.
+  int queue_capacity = 32;
+  // The table pots are planned on (its cushions and pockets); kDefaultPotTable when not given.
+  std::optional<table::TableGeometry> table;
+  pot::PotOptions pot = CameraPotOptions();
+  // Online identification of the table (0: off): after every `identify_every` shots the node
+  // commanded and saw tracked, the constants `identify` are fitted jointly to its latest
+  // kIdentifyWindow shots (planner_node.h; sim/shot_fit/shot_fit.h, from the constants it plans
+  // with) and its plans use them from then on; what the shots do not excite is kept.
+  int identify_every = 0;
+  std::vector<shot_fit::Constant> identify = {shot_fit::Constant::kMu,
+                                              shot_fit::Constant::kRolling};
+  // MODE_CHOOSE: the choice's samples, noise (the robot's, the table simulator's own) and seed;
+  // its rules and pot options are the request's and `pot`.
+  choice::ChoiceOptions choice;
+  int choice_threads = batch::DefaultThreadCount();
+
+  // Pots are planned on what the camera saw: touching balls measured a fraction of a millimetre
+  // into each other (or into a cushion) are settled apart first (pot::PotOptions::settle_overlap),
+  // by up to 2 mm, some four times the estimator's position error.
+  static pot::PotOptions CameraPotOptions() {
+    pot::PotOptions o;
+    o.settle_overlap = 2e-3;
+    return o;
+  }
+};
+
+// The table of a node started without one: the table of the default parameter set's size.
+inline constexpr char kDefaultPotTable[] = "pool-9ft";
+
+// The table pots and choices are planned on: `options.table`, else kDefaultPotTable.
+table::TableGeometry TableOf(const PlannerNodeOptions& options);
+
+}  // namespace billiard::planner_node
