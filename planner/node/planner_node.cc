@@ -11,6 +11,7 @@
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
+#include "planner/choice/ball_in_hand.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 #include "sim/physics/ball_state.h"
