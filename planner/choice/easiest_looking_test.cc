@@ -15,7 +15,7 @@ using EasiestLookingTest = testing::ChoiceTest;
 // A short straight pot and a long one: the short one, a direct pot, its score the estimate,
 // its probability not estimated.
 TEST_F(EasiestLookingTest, PlaysTheEasiestLookingPot) {
-  auto balls = StraightPot(0.3, 0.3);
+  auto balls = StraightPot(0.4, 0.4);
   balls.push_back(Ball(2, 0.4, 0.3));
   ChoiceOptions options;
   const ChoiceResult r = ChooseEasiestLooking(table_, params_, balls, options, false);

@@ -28,13 +28,15 @@ TEST_F(LookaheadTest, EasyEstimateSeesBlocksAndDistance) {
 TEST_F(LookaheadTest, MirroredScenesLookAlikeAndCutsHaveALimit) {
   const params::ExecutionNoise noise = params::LoadNoise("robot");
   const double r = params_.ball.radius, w = table_.width;
-  const std::vector<table::SceneBall> scene = {Ball(0, 1.0, 0.35), Ball(4, 1.6, 0.7)};
-  const std::vector<table::SceneBall> mirror = {Ball(0, 1.0, w - 0.35), Ball(4, 1.6, w - 0.7)};
+  const std::vector<table::SceneBall> scene = {Ball(0, 1.0, 0.9), Ball(4, 1.6, 0.7)};
+  const std::vector<table::SceneBall> mirror = {Ball(0, 1.0, w - 0.9), Ball(4, 1.6, w - 0.7)};
   const double upper = EasyPotEstimate(r, scene, 4, *table_.PocketNamed("upper_right"), noise);
   const double lower = EasyPotEstimate(r, mirror, 4, *table_.PocketNamed("lower_right"), noise);
   ASSERT_GT(upper, 0.0);
   EXPECT_NEAR(upper, lower, 1e-9);
-  EXPECT_EQ(EasyPotEstimate(r, scene, 4, *table_.PocketNamed("upper_right"), noise, 1.0), 0.0);
+  // The cut here is near 50 degrees.
+  EXPECT_EQ(EasyPotEstimate(r, scene, 4, *table_.PocketNamed("upper_right"), noise, 40.0), 0.0);
+  EXPECT_EQ(EasyPotEstimate(r, scene, 4, *table_.PocketNamed("upper_right"), noise, 60.0), upper);
 }
 
 // The next shot of a table whose rack is over is worth a ball; without a cue ball nothing.

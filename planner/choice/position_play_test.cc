@@ -18,7 +18,7 @@ TEST_F(PositionPlayTest, TheBestScreenedPotsPlannedAgainForPosition) {
   balls.push_back(Ball(3, 0.6, 0.9));
   std::vector<Candidate> screened;
   for (const auto& [ball, pocket] : std::vector<std::pair<int, std::string>>{
-           {1, "upper_right"}, {2, "lower_middle"}, {3, "upper_left"}}) {
+           {1, "upper_right"}, {2, "lower_left"}, {3, "upper_left"}}) {
     Candidate c;
     c.plan = Plan(balls, ball, pocket);
     ASSERT_EQ(c.plan.status, pot::PotStatus::kOk) << ball << " " << c.plan.reason;
