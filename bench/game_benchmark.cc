@@ -123,13 +123,13 @@ void Calibrate(const table::TableGeometry& table, const physics::ModelParameters
         seed);
     choice::ChoiceOptions c = BaseChoice(options, noise);
     c.seed = seed;
-    const rules::Constraints constraints{false, rules::LegalTargets(c.rules, balls)};
-    const choice::ChoiceResult r = ours->Decide(table, params, balls, constraints, c, pool);
+    const players::Turn turn{table, params, balls, {false, rules::LegalTargets(c.rules, balls)}};
+    const choice::ChoiceResult r = ours->Decide(turn, c, pool);
     result->choice_us.push_back(r.decision_us);
     if (i == 0) {
       batch::ThreadPool one(1);
       result->thread_count_independent =
-          SameChoice(r, ours->Decide(table, params, balls, constraints, c, one));
+          SameChoice(r, ours->Decide(turn, c, one));
     }
     const choice::Candidate* chosen = r.chosen();
     if (chosen && chosen->finalist) {

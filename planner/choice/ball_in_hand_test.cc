@@ -39,13 +39,8 @@ TEST_F(BallInHandTest, TheCueBallOnTheTableIsLifted) {
   const std::vector<table::SceneBall> without = {Ball(1, 1.6, 0.7), Ball(2, 0.7, 0.4)};
   std::vector<table::SceneBall> with = without;
   with.push_back(Ball(0, 0.3, 0.3));
-  ChoiceOptions options;
-  options.samples = 8;
-  options.screen_samples = 4;
-  options.finalists = 1;
-  options.confirm_samples = 16;
+  ChoiceOptions options = QuickChoice();
   options.placements = 1;
-  options.kinds = {pot::ShotKind::kDirect};
   batch::ThreadPool pool(2);
   const ChoiceResult a = ChooseWithBallInHand(table_, params_, without, options, pool);
   const ChoiceResult b = ChooseWithBallInHand(table_, params_, with, options, pool);

@@ -12,8 +12,7 @@ using CandidatesTest = testing::ChoiceTest;
 // Every candidate is a legal target's pot in a pocket of the table, of a kind asked for, in
 // target, pocket and kind order; under nine-ball only the lowest ball's.
 TEST_F(CandidatesTest, EveryLegalTargetPocketAndKindInOrder) {
-  auto balls = StraightPot(0.5, 0.5);
-  balls.push_back(Ball(2, 1.2, 0.5));
+  const auto balls = TwoBalls();
   ChoiceOptions options;
   options.kinds = {pot::ShotKind::kDirect, pot::ShotKind::kBank};
   batch::ThreadPool pool(2);

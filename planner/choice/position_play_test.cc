@@ -13,8 +13,7 @@ using PositionPlayTest = testing::ChoiceTest;
 // kind, the target on the table, no more than position_plans, none for a pot that never
 // dropped.
 TEST_F(PositionPlayTest, TheBestScreenedPotsPlannedAgainForPosition) {
-  auto balls = StraightPot(0.5, 0.5);
-  balls.push_back(Ball(2, 1.2, 0.5));
+  auto balls = TwoBalls();
   balls.push_back(Ball(3, 0.6, 0.9));
   std::vector<Candidate> screened;
   for (const auto& [ball, pocket] : std::vector<std::pair<int, std::string>>{

@@ -69,8 +69,7 @@ TEST_F(ShotChoiceTest, NineBallPlaysTheLowestBall) {
 }
 
 TEST_F(ShotChoiceTest, SameChoiceOnOneThreadOrTwo) {
-  auto balls = StraightPot(0.5, 0.5);
-  balls.push_back(Ball(2, 1.2, 0.5));
+  const auto balls = TwoBalls();
   ChoiceOptions options;
   options.samples = 12;
   options.screen_samples = 6;
@@ -94,24 +93,19 @@ TEST_F(ShotChoiceTest, SameChoiceOnOneThreadOrTwo) {
 // The named steps' contract: the finalists first, best scored first, each with its full-model
 // estimate and score p (1 + v); the others after them; the chosen alone confirmed.
 TEST_F(ShotChoiceTest, FinalistsFirstByScoreAndOnlyTheChosenConfirmed) {
-  auto balls = StraightPot(0.5, 0.5);
-  balls.push_back(Ball(2, 1.2, 0.5));
-  ChoiceOptions options;
-  options.samples = 12;
-  options.screen_samples = 6;
-  options.finalists = 2;
-  options.confirm_samples = 32;
-  options.kinds = {pot::ShotKind::kDirect, pot::ShotKind::kBank};
+  const auto balls = TwoBalls();
+  ChoiceOptions options = QuickChoice();
+  options.kinds.push_back(pot::ShotKind::kBank);
   batch::ThreadPool pool(2);
   const ChoiceResult r = ChooseShot(table_, params_, balls, options, pool);
   ASSERT_EQ(r.status, ChoiceStatus::kOk) << r.reason;
   ASSERT_GT(r.candidates.size(), 2u);
   for (std::size_t i = 0; i < r.candidates.size(); ++i) {
     const Candidate& c = r.candidates[i];
-    EXPECT_EQ(c.finalist, i < 2) << i;
-    EXPECT_EQ(c.confirmed.samples, i == 0 ? 32 : 0) << i;
+    EXPECT_EQ(c.finalist, static_cast<int>(i) < options.finalists) << i;
+    EXPECT_EQ(c.confirmed.samples, i == 0 ? options.confirm_samples : 0) << i;
     if (!c.finalist) continue;
-    EXPECT_EQ(c.full.samples, 12);
+    EXPECT_EQ(c.full.samples, options.samples);
     EXPECT_DOUBLE_EQ(c.score, c.full.probability * (1 + c.next_shot_value));
     if (i > 0) EXPECT_GE(r.candidates[i - 1].score, c.score);
   }

@@ -59,7 +59,7 @@ std::optional<physics::CueStroke> PlayersStroke(const table::TableGeometry& tabl
   choice::ChoiceOptions choice = options.choice;
   choice.seed = choice::SampleSeed(options.choice.seed, static_cast<std::uint64_t>(n));
   const choice::ChoiceResult decided =
-      options.player->Decide(table, params, *balls, constraints, choice, pool);
+      options.player->Decide({table, params, *balls, constraints}, choice, pool);
   rec->status = choice::ChoiceStatusName(decided.status);
   rec->decision_us = decided.decision_us;
   if (decided.cue_placement) {

@@ -31,11 +31,9 @@ class Scripted final : public players::Player {
  public:
   explicit Scripted(std::vector<physics::CueStroke> strokes) : strokes_(std::move(strokes)) {}
   const char* Name() const override { return "scripted"; }
-  choice::ChoiceResult Decide(const table::TableGeometry&, const physics::ModelParameters&,
-                              const std::vector<table::SceneBall>&,
-                              const rules::Constraints& constraints,
-                              const choice::ChoiceOptions&, batch::ThreadPool&) const override {
-    seen_.push_back(constraints);
+  choice::ChoiceResult Decide(const players::Turn& turn, const choice::ChoiceOptions&,
+                              batch::ThreadPool&) const override {
+    seen_.push_back(turn.constraints);
     choice::ChoiceResult r;
     r.status = choice::ChoiceStatus::kNoPlan;
     r.fallback = strokes_[std::min(seen_.size(), strokes_.size()) - 1];

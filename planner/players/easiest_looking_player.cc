@@ -4,13 +4,11 @@
 
 namespace billiard::players {
 
-choice::ChoiceResult EasiestLooking::Decide(const table::TableGeometry& table,
-                                            const physics::ModelParameters& params,
-                                            const std::vector<table::SceneBall>& balls,
-                                            const rules::Constraints& constraints,
+choice::ChoiceResult EasiestLooking::Decide(const Turn& turn,
                                             const choice::ChoiceOptions& options,
                                             batch::ThreadPool& /*pool*/) const {
-  return choice::ChooseEasiestLooking(table, params, balls, options, constraints.ball_in_hand);
+  return choice::ChooseEasiestLooking(turn.table, turn.params, turn.balls, options,
+                                      turn.constraints.ball_in_hand);
 }
 
 }  // namespace billiard::players

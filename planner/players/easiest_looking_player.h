@@ -5,8 +5,6 @@
 // Module: billiard::players.
 #pragma once
 
-#include <vector>
-
 #include "planner/players/player.h"
 
 namespace billiard::players {
@@ -14,11 +12,7 @@ namespace billiard::players {
 class EasiestLooking final : public Player {
  public:
   const char* Name() const override { return "easiest-looking"; }
-  choice::ChoiceResult Decide(const table::TableGeometry& table,
-                              const physics::ModelParameters& params,
-                              const std::vector<table::SceneBall>& balls,
-                              const rules::Constraints& constraints,
-                              const choice::ChoiceOptions& options,
+  choice::ChoiceResult Decide(const Turn& turn, const choice::ChoiceOptions& options,
                               batch::ThreadPool& pool) const override;
 };
 

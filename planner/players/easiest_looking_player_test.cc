@@ -19,8 +19,8 @@ TEST_F(EasiestLookingPlayerTest, IsTheBaselineWithBallInHandAsTheRulesSay) {
   batch::ThreadPool pool(1);
   const EasiestLooking player;
   for (bool in_hand : {false, true}) {
-    const rules::Constraints constraints{in_hand, rules::LegalTargets(options.rules, balls)};
-    const choice::ChoiceResult r = player.Decide(table_, params_, balls, constraints, options, pool);
+    const Turn turn{table_, params_, balls, {in_hand, rules::LegalTargets(options.rules, balls)}};
+    const choice::ChoiceResult r = player.Decide(turn, options, pool);
     EXPECT_EQ(r.cue_placement.has_value(), in_hand);
     ExpectSameChoice(r, choice::ChooseEasiestLooking(table_, params_, balls, options, in_hand));
   }

@@ -5,16 +5,24 @@
 
 namespace billiard::players {
 
-choice::ChoiceResult Ours::Decide(const table::TableGeometry& table,
-                                  const physics::ModelParameters& params,
-                                  const std::vector<table::SceneBall>& balls,
-                                  const rules::Constraints& constraints,
-                                  const choice::ChoiceOptions& options,
-                                  batch::ThreadPool& pool) const {
-  if (constraints.ball_in_hand) {
-    return choice::ChooseWithBallInHand(table, params, balls, options, pool);
+namespace {
+
+choice::ChoiceResult Choose(const Turn& turn, const choice::ChoiceOptions& options,
+                            batch::ThreadPool& pool) {
+  if (turn.constraints.ball_in_hand) {
+    return choice::ChooseWithBallInHand(turn.table, turn.params, turn.balls, options, pool);
   }
-  return choice::ChooseShot(table, params, balls, options, pool);
+  return choice::ChooseShot(turn.table, turn.params, turn.balls, options, pool);
+}
+
+}  // namespace
+
+choice::ChoiceResult Ours::Decide(const Turn& turn, const choice::ChoiceOptions& options,
+                                  batch::ThreadPool& pool) const {
+  if (lookahead_) return Choose(turn, options, pool);
+  choice::ChoiceOptions without = options;
+  without.lookahead = false;
+  return Choose(turn, without, pool);
 }
 
 }  // namespace billiard::players

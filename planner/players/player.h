@@ -4,7 +4,7 @@
 // cue_placement), with the call and the estimates behind it. It only decides: the table plays
 // the stroke and the rules (sim/rules/) judge what it did.
 //
-// The players are a file each (ours_player.h, no_lookahead_player.h,
+// The players are a file each (ours_player.h, with or without the lookahead;
 // easiest_looking_player.h), found by name in players.h.
 //
 // Module: billiard::players.
@@ -22,6 +22,15 @@
 
 namespace billiard::players {
 
+// What a player is shown before its shot.
+struct Turn {
+  const table::TableGeometry& table;
+  const physics::ModelParameters& params;
+  // Id 0 the cue ball (which may be absent when in hand); every ball at rest.
+  const std::vector<table::SceneBall>& balls;
+  rules::Constraints constraints;  // the cue ball in hand or not, the legal first contacts
+};
+
 class Player {
  public:
   virtual ~Player() = default;
@@ -29,15 +38,10 @@ class Player {
   // "ours", "no-lookahead", "easiest-looking".
   virtual const char* Name() const = 0;
 
-  // The decision on `balls` (id 0 the cue ball, which may be absent in hand; every ball at
-  // rest) under `constraints`, with `options` (the rules played under, whose legal targets are
-  // constraints.legal_targets and whose end of the rack the lookahead sees; the noise assumed;
-  // the seed of its samples) on `pool`'s threads. Deterministic in its arguments.
-  virtual choice::ChoiceResult Decide(const table::TableGeometry& table,
-                                      const physics::ModelParameters& params,
-                                      const std::vector<table::SceneBall>& balls,
-                                      const rules::Constraints& constraints,
-                                      const choice::ChoiceOptions& options,
+  // The decision of `turn`, with `options` (the rules played under, whose legal targets are
+  // the turn's and whose end of the rack the lookahead sees; the noise assumed; the seed of its
+  // samples) on `pool`'s threads. Deterministic in its arguments.
+  virtual choice::ChoiceResult Decide(const Turn& turn, const choice::ChoiceOptions& options,
                                       batch::ThreadPool& pool) const = 0;
 };
 

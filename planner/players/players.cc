@@ -3,18 +3,17 @@
 #include <stdexcept>
 
 #include "planner/players/easiest_looking_player.h"
-#include "planner/players/no_lookahead_player.h"
 #include "planner/players/ours_player.h"
 
 namespace billiard::players {
 
 std::vector<std::string> PlayerNames() {
-  return {Ours().Name(), NoLookahead().Name(), EasiestLooking().Name()};
+  return {Ours().Name(), Ours(false).Name(), EasiestLooking().Name()};
 }
 
 std::unique_ptr<Player> MakePlayer(const std::string& name) {
   if (name == Ours().Name()) return std::make_unique<Ours>();
-  if (name == NoLookahead().Name()) return std::make_unique<NoLookahead>();
+  if (name == Ours(false).Name()) return std::make_unique<Ours>(false);
   if (name == EasiestLooking().Name()) return std::make_unique<EasiestLooking>();
   std::string known;
   for (const std::string& n : PlayerNames()) known += (known.empty() ? "" : ", ") + n;

@@ -216,10 +216,9 @@ void AddChooseShotCommand(CLI::App& app) {
     const LoadedScene s = LoadSceneOption(args->scene_path);
     const choice::ChoiceOptions options = ChoiceOptionsOf(*args);
     batch::ThreadPool pool(args->threads);
-    const rules::Constraints constraints{args->ball_in_hand,
-                                         rules::LegalTargets(options.rules, s.balls)};
-    const choice::ChoiceResult r =
-        players::MakePlayer("ours")->Decide(s.table, s.params, s.balls, constraints, options, pool);
+    const players::Turn turn{s.table, s.params, s.balls,
+                             {args->ball_in_hand, rules::LegalTargets(options.rules, s.balls)}};
+    const choice::ChoiceResult r = players::MakePlayer("ours")->Decide(turn, options, pool);
     if (args->json) {
       nlohmann::json j = ChoiceJson(r);
       j["rules"] = rules::RulesName(options.rules);

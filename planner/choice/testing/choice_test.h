@@ -44,6 +44,12 @@ class ChoiceTest : public ::testing::Test {
     const Eigen::Vector2d o = corner - object_back * in, c = o - cue_back * in;
     return {Ball(0, c.x(), c.y()), Ball(1, o.x(), o.y())};
   }
+  // StraightPot(0.5, 0.5) and ball 2 in the open: two balls to choose between.
+  std::vector<table::SceneBall> TwoBalls() const {
+    std::vector<table::SceneBall> balls = StraightPot(0.5, 0.5);
+    balls.push_back(Ball(2, 1.2, 0.5));
+    return balls;
+  }
   pot::PotPlan Plan(const std::vector<table::SceneBall>& balls, int ball,
                     const std::string& pocket) const {
     pot::PotRequest r;
