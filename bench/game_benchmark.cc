@@ -5,12 +5,17 @@
 #include <stdexcept>
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include "bench/format.h"
+#include "planner/choice/monte_carlo.h"
+#include "planner/choice/scene_balls.h"
+#include "planner/players/players.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
+#include "sim/rules/rules.h"
 #include "sim/table/seeded_uniform.h"
 #include "plot/reliability.h"
 
@@ -84,7 +89,7 @@ std::vector<plot::ReliabilityBin> Deciles(const std::vector<CalibrationPoint>& p
 choice::ChoiceOptions BaseChoice(const GameBenchmarkOptions& options,
                                  const params::ExecutionNoise& noise) {
   choice::ChoiceOptions c;
-  c.rules = choice::Rules::kNineBall;
+  c.rules = rules::Rules::kNineBall;
   c.noise = noise;
   c.samples = options.samples;
   c.confirm_samples = options.confirm_samples;
@@ -110,19 +115,21 @@ void Calibrate(const table::TableGeometry& table, const physics::ModelParameters
                GameBenchmarkResult* result) {
   const params::ExecutionNoise noise = params::LoadNoise(params::kDefaultNoise);
   const auto motion = model_choice::TableMotion(params);
+  const std::unique_ptr<players::Player> ours = players::MakePlayer("ours");
   for (int i = 0; i < options.calibration_layouts; ++i) {
     const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(i);
     const auto balls = WithSeededCueBall(
-        table, params.ball.radius, choice::SeededNineBallLayout(table, params.ball.radius, seed),
+        table, params.ball.radius, game::SeededNineBallLayout(table, params.ball.radius, seed),
         seed);
     choice::ChoiceOptions c = BaseChoice(options, noise);
     c.seed = seed;
-    const choice::ChoiceResult r = choice::ChooseShot(table, params, balls, c, pool);
+    const players::Turn turn{table, params, balls, {false, rules::LegalTargets(c.rules, balls)}};
+    const choice::ChoiceResult r = ours->Decide(turn, c, pool);
     result->choice_us.push_back(r.decision_us);
     if (i == 0) {
       batch::ThreadPool one(1);
       result->thread_count_independent =
-          SameChoice(r, choice::ChooseShot(table, params, balls, c, one));
+          SameChoice(r, ours->Decide(turn, c, one));
     }
     const choice::Candidate* chosen = r.chosen();
     if (chosen && chosen->finalist) {
@@ -150,31 +157,28 @@ void Calibrate(const table::TableGeometry& table, const physics::ModelParameters
   }
 }
 
-// The six drills of a layout: each noise x each policy, in that order.
+// The six drills of a layout: each noise x each player, in that order.
 struct Drill {
   const char* noise;
-  choice::Policy policy;
+  std::string player;
 };
 
 std::vector<Drill> Drills() {
   std::vector<Drill> drills;
   for (const char* noise : {params::kDefaultNoise, kTournamentNoise}) {
-    for (choice::Policy policy : {choice::Policy::kOurs, choice::Policy::kNoLookahead,
-                                  choice::Policy::kEasiestLooking}) {
-      drills.push_back({noise, policy});
-    }
+    for (const std::string& player : players::PlayerNames()) drills.push_back({noise, player});
   }
   return drills;
 }
 
-void Tally(const choice::GameRecord& game, PolicyResult* pr) {
+void Tally(const game::GameRecord& game, PolicyResult* pr) {
   ++pr->games;
   pr->attempts += game.summary.attempts;
   pr->pots += game.summary.pots;
   pr->fouls += game.summary.fouls;
   pr->run_outs += game.summary.run_out;
   pr->balls += game.summary.balls_potted;
-  for (const choice::ShotRecord& s : game.shots) {
+  for (const game::ShotRecord& s : game.shots) {
     pr->decision_us.push_back(s.decision_us);
     if (s.ball >= 0 && s.likely) {
       ++pr->likely_attempts;
@@ -189,11 +193,13 @@ void PlayDrills(const table::TableGeometry& table, const physics::ModelParameter
                 GameBenchmarkResult* result) {
   const std::vector<Drill> drills = Drills();
   std::vector<params::ExecutionNoise> noises;
+  std::vector<std::shared_ptr<const players::Player>> drill_players;
   for (const Drill& d : drills) {
     noises.push_back(params::LoadNoise(d.noise));
+    drill_players.push_back(players::MakePlayer(d.player));
     PolicyResult pr;
     pr.noise = d.noise;
-    pr.policy = choice::PolicyName(d.policy);
+    pr.policy = d.player;
     result->policies.push_back(pr);
   }
   const auto start = std::chrono::steady_clock::now();
@@ -205,19 +211,18 @@ void PlayDrills(const table::TableGeometry& table, const physics::ModelParameter
       const std::uint64_t seed =
           options.seed + 100000 + static_cast<std::uint64_t>(first + job / drills.size());
       const std::size_t d = job % drills.size();
-      choice::GameOptions g;
+      game::GameOptions g;
       g.choice = BaseChoice(options, noises[d]);
       g.choice.seed = seed;
-      g.policy = drills[d].policy;
+      g.player = drill_players[d];
       g.execution = noises[d];
       g.seed = seed;
       g.ball_in_hand = true;
       g.single_visit = true;
       g.shot_limit = options.shot_limit;
       batch::ThreadPool one(1);
-      return choice::PlayGame(table, params,
-                              choice::SeededNineBallLayout(table, params.ball.radius, seed), g,
-                              one);
+      return game::PlayGame(table, params,
+                            game::SeededNineBallLayout(table, params.ball.radius, seed), g, one);
     });
     for (std::size_t job = 0; job < games.size(); ++job) {
       if (!games[job].ok()) throw std::runtime_error("bench-game: a drill failed: " + games[job].error);

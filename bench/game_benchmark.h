@@ -1,17 +1,18 @@
 // The shot choice's benchmark (planner/choice/), on seeded nine-ball layouts
-// (choice::SeededNineBallLayout) on the pool-9ft table:
+// (game::SeededNineBallLayout) on the pool-9ft table:
 //  - calibration: seeded choices (a seeded cue ball, nine-ball rules, the robot's noise, the
 //    table's own model), the chosen shot's reported probability (its confirmation, fresh samples
 //    independent of the choice) against `executions` more plays of it with fresh noise on the
 //    same model: the measured pot rate per decile of the prediction (a reliability diagram);
 //  - games: each layout a drill from ball in hand, one visit (until a shot pots nothing or
 //    fouls), under the robot's noise and under the computational-pool noise, played by ours, by
-//    ours without the lookahead and by the easiest-looking ghost-ball shot: pots per attempt,
+//    ours without the lookahead and by the easiest-looking ghost-ball shot (the players of
+//    planner/players/, each a game of planner/game/): pots per attempt,
 //    run-outs, fouls. The layouts run in chunks, each layout's six drills side by side on the
 //    pool's threads (one thread each), so that a run stopped early has played every policy on
 //    the same layouts (`checkpoint` is told after each chunk);
-//  - decision time: the calibration choices' wall time (ChooseShot, no ball in hand, on all the
-//    threads), and whether one thread and `threads` give the same choice.
+//  - decision time: the calibration choices' wall time (our player's, no ball in hand, on all
+//    the threads), and whether one thread and `threads` give the same choice.
 #pragma once
 
 #include <cstdint>
@@ -20,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "planner/choice/game.h"
+#include "planner/game/game.h"
 
 namespace billiard::bench {
 
@@ -53,7 +54,7 @@ struct PolicyResult {
 struct GameBenchmarkResult {
   GameBenchmarkOptions options;
   std::vector<CalibrationPoint> calibration;
-  std::vector<double> choice_us;  // calibration choices, ChooseShot on `threads` threads
+  std::vector<double> choice_us;  // calibration choices, our player's on `threads` threads
   bool thread_count_independent = false;
   std::vector<PolicyResult> policies;
 };

@@ -9,10 +9,11 @@
 #include <utility>
 #include <vector>
 
-#include "planner/choice/shot_choice.h"
+#include "planner/choice/monte_carlo.h"
 #include "planner/node/ball_numbers.h"
 #include "planner/node/command_writing.h"
 #include "planner/node/scene_at_rest.h"
+#include "sim/rules/rules.h"
 #include "sim/table/scene.h"
 #include "sim/table/table_simulation.h"
 
@@ -48,7 +49,7 @@ std::optional<std::vector<table::SceneBall>> ChoiceScene(
 choice::ChoiceOptions ChoiceOptionsFor(const shot_request_t& q, const PlannerNodeOptions& node) {
   choice::ChoiceOptions options = node.choice;
   options.rules =
-      q.rules == shot_request_t::RULES_NINE_BALL ? choice::Rules::kNineBall : choice::Rules::kAny;
+      q.rules == shot_request_t::RULES_NINE_BALL ? rules::Rules::kNineBall : rules::Rules::kAny;
   options.seed = choice::SampleSeed(node.choice.seed, static_cast<std::uint64_t>(q.request_id));
   options.pot = node.pot;
   return options;
@@ -97,8 +98,8 @@ cue_command_t WriteChoice(const choice::ChoiceResult& result,
 cue_command_t AnswerChoice(const shot_request_t& q, const ball_state_t& cue,
                            const table_state_t& latest, const table::TableGeometry& table,
                            const physics::ModelParameters& params,
-                           const PlannerNodeOptions& options, batch::ThreadPool& pool,
-                           cue_command_t c) {
+                           const PlannerNodeOptions& options, const players::Player& player,
+                           batch::ThreadPool& pool, cue_command_t c) {
   std::unordered_map<int, int32_t> message_id;
   std::string moving;
   auto balls = ChoiceScene(latest, cue, table, params, options, &message_id, &moving);
@@ -109,8 +110,9 @@ cue_command_t AnswerChoice(const shot_request_t& q, const ball_state_t& cue,
     // What the camera saw, touching balls settled apart as a pot's are.
     *balls = table::SettledScene(table, params.ball.radius, std::move(*balls),
                                  options.pot.settle_overlap);
-    result = q.ball_in_hand ? choice::ChooseWithBallInHand(table, params, *balls, choosing, pool)
-                            : choice::ChooseShot(table, params, *balls, choosing, pool);
+    const players::Turn turn{table, params, *balls,
+                             {q.ball_in_hand != 0, rules::LegalTargets(choosing.rules, *balls)}};
+    result = player.Decide(turn, choosing, pool);
   } catch (const std::exception& e) {
     return Refusal(c, cue_command_t::STATUS_INVALID, std::string("no choice: ") + e.what());
   }

@@ -10,8 +10,8 @@
 // legal ball hit full). Refused: a ball moving (STATUS_INVALID), a table without an object ball
 // (STATUS_NO_SUCH_BALL), and what the choice refuses or throws (STATUS_INVALID).
 //
-// The choice is made in one place, AnswerChoice's call of ChooseShot or ChooseWithBallInHand: a
-// player that chooses otherwise takes its place there.
+// The choice is the player's (planner/players/player.h, PlannerNodeOptions::player): it is shown
+// the balls and the rules' constraints (the cue ball in hand or not, the legal first contacts).
 #pragma once
 
 #include "lcmtypes/billiard/ball_state_t.hpp"
@@ -19,6 +19,7 @@
 #include "lcmtypes/billiard/shot_request_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "planner/node/planner_node_options.h"
+#include "planner/players/player.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/physics/parameters.h"
 #include "sim/table/table_geometry.h"
@@ -26,12 +27,12 @@
 namespace billiard::planner_node {
 
 // The choice of a checked MODE_CHOOSE request, the cue ball `cue` (whose state is fit to plan
-// from), among the balls of `latest` on `table`, its samples run on `pool`, into `c` (the reply
-// with the cue ball's id and start).
+// from), among the balls of `latest` on `table`, decided by `player` with its samples run on
+// `pool`, into `c` (the reply with the cue ball's id and start).
 cue_command_t AnswerChoice(const shot_request_t& q, const ball_state_t& cue,
                            const table_state_t& latest, const table::TableGeometry& table,
                            const physics::ModelParameters& params,
-                           const PlannerNodeOptions& options, batch::ThreadPool& pool,
-                           cue_command_t c);
+                           const PlannerNodeOptions& options, const players::Player& player,
+                           batch::ThreadPool& pool, cue_command_t c);
 
 }  // namespace billiard::planner_node

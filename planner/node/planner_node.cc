@@ -11,6 +11,7 @@
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
 #include "planner/node/choose_request.h"
+#include "planner/players/players.h"
 #include "planner/node/command_writing.h"
 #include "planner/node/named_ball.h"
 #include "planner/node/pot_request.h"
@@ -62,7 +63,8 @@ PlannerNode::PlannerNode(lcm::LCM& lcm, physics::ModelParameters params, Planner
       log_(log ? std::move(log) : Log([](const std::string& line) {
         std::cerr << "planner_node: " << line << std::endl;
       })),
-      health_("planner_node", log_) {
+      health_("planner_node", log_),
+      player_(players::MakePlayer(options_.player)) {
   health_.SetParameters(params::ParameterSetLabel(params_), params::ParameterHash(params_));
   table_state_subscription_ =
       lcm_.subscribe(messages::kTableStateChannel, &PlannerNode::OnTableState, this);
@@ -102,8 +104,8 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   }
   if (q.mode == shot_request_t::MODE_CHOOSE) {
     if (!choice_pool_) choice_pool_ = std::make_unique<batch::ThreadPool>(options_.choice_threads);
-    return AnswerChoice(q, state, *latest_table_, table_, params_, options_, *choice_pool_,
-                        std::move(c));
+    return AnswerChoice(q, state, *latest_table_, table_, params_, options_, *player_,
+                        *choice_pool_, std::move(c));
   }
   return AnswerToPoint(q, state, params_, options_.planner, std::move(c));
 }

@@ -71,6 +71,7 @@
 #include "lcmtypes/node/message_clock.h"
 #include "lcmtypes/node/node_health.h"
 #include "planner/node/planner_node_options.h"
+#include "planner/players/player.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/physics/parameters.h"
 #include "sim/shot_fit/shot_recorder.h"
@@ -169,6 +170,7 @@ class PlannerNode {
   std::size_t identified_shots_ = 0;  // closed shots at the latest fit
   std::unique_ptr<batch::ThreadPool> fit_pool_;
   mutable std::unique_ptr<batch::ThreadPool> choice_pool_;  // made at the first choice
+  std::unique_ptr<players::Player> player_;                 // who chooses (options_.player)
   static constexpr double kLongestShot = 60.0;              // [s]
   static constexpr double kShotThinning = 0.002;            // [m], as the real recordings
   lcm::Subscription* table_state_subscription_ = nullptr;

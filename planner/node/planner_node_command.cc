@@ -7,6 +7,7 @@
 
 #include "lcmtypes/names.h"
 #include "lcmtypes/node/node_loop.h"
+#include "planner/players/players.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 
@@ -33,6 +34,9 @@ void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line) {
                  "a table file")
       ->capture_default_str();
   app.add_flag("--no-refine", line->no_refine, "Plan with the closed-form inverse alone");
+  app.add_option("--player", options.player, "Who chooses a MODE_CHOOSE shot: ours | no-lookahead | easiest-looking")
+      ->capture_default_str()
+      ->check(CLI::IsMember(players::PlayerNames()));
   app.add_option("--identify-every", options.identify_every,
                  "Identify the table online: every N shots, fit --identify to the node's own "
                  "tracked shots and plan with them (0: never)")

@@ -39,6 +39,8 @@ struct PlannerNodeOptions {
   // its rules and pot options are the request's and `pot`.
   choice::ChoiceOptions choice;
   int choice_threads = batch::DefaultThreadCount();
+  // MODE_CHOOSE: who decides (planner/players/players.h): ours, no-lookahead, easiest-looking.
+  std::string player = "ours";
 
   // Pots are planned on what the camera saw: touching balls measured a fraction of a millimetre
   // into each other (or into a cushion) are settled apart first (pot::PotOptions::settle_overlap),

@@ -2,13 +2,17 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "bench/game_benchmark.h"
+#include "planner/players/players.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/scene_file.h"
+#include "sim/rules/rules.h"
 #include "sim/table/rack.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/pot_commands.h"
@@ -49,9 +53,9 @@ void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
 
 choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
   choice::ChoiceOptions options;
-  const auto rules = choice::ParseRules(args.rules);
-  if (!rules) throw UsageError("--rules: unknown rules '" + args.rules + "' (any, nine-ball)");
-  options.rules = *rules;
+  const std::optional<rules::Rules> parsed = rules::ParseRules(args.rules);
+  if (!parsed) throw UsageError("--rules: unknown rules '" + args.rules + "' (any, nine-ball)");
+  options.rules = *parsed;
   try {
     options.noise = params::LoadNoise(args.noise);
   } catch (const std::invalid_argument& e) {
@@ -153,9 +157,9 @@ nlohmann::json ChoiceJson(const choice::ChoiceResult& r) {
   return j;
 }
 
-nlohmann::json GameJson(const choice::GameRecord& game) {
+nlohmann::json GameJson(const game::GameRecord& game) {
   nlohmann::json shots = nlohmann::json::array();
-  for (const choice::ShotRecord& s : game.shots) {
+  for (const game::ShotRecord& s : game.shots) {
     nlohmann::json j;
     j["shot"] = s.number;
     j["visit"] = s.visit;
@@ -176,7 +180,7 @@ nlohmann::json GameJson(const choice::GameRecord& game) {
     j["decision_us"] = s.decision_us;
     shots.push_back(j);
   }
-  const choice::GameSummary& m = game.summary;
+  const game::GameSummary& m = game.summary;
   nlohmann::json summary = {{"shots", m.shots},
                             {"attempts", m.attempts},
                             {"pots", m.pots},
@@ -212,12 +216,12 @@ void AddChooseShotCommand(CLI::App& app) {
     const LoadedScene s = LoadSceneOption(args->scene_path);
     const choice::ChoiceOptions options = ChoiceOptionsOf(*args);
     batch::ThreadPool pool(args->threads);
-    const choice::ChoiceResult r =
-        args->ball_in_hand ? choice::ChooseWithBallInHand(s.table, s.params, s.balls, options, pool)
-                           : choice::ChooseShot(s.table, s.params, s.balls, options, pool);
+    const players::Turn turn{s.table, s.params, s.balls,
+                             {args->ball_in_hand, rules::LegalTargets(options.rules, s.balls)}};
+    const choice::ChoiceResult r = players::MakePlayer("ours")->Decide(turn, options, pool);
     if (args->json) {
       nlohmann::json j = ChoiceJson(r);
-      j["rules"] = choice::RulesName(options.rules);
+      j["rules"] = rules::RulesName(options.rules);
       j["noise"] = options.noise.name;
       j["table"] = s.table.name;
       DescribeParameters(s.params, &j);
@@ -247,14 +251,15 @@ void AddPlayCommand(CLI::App& app) {
   CLI::Option* scene = cmd->add_option("--scene", args->scene_path, "The scene JSON, every ball at rest");
   CLI::Option* rack = cmd->add_option("--rack", args->rack, "nine-ball: the seeded rack, broken first");
   scene->excludes(rack);
-  cmd->add_option("--policy", args->policy, "ours | no-lookahead | easiest-looking")->capture_default_str();
+  cmd->add_option("--policy", args->policy, "The player: ours | no-lookahead | easiest-looking")
+      ->capture_default_str();
   cmd->add_option("--shot-limit", args->shot_limit, "Shots at most")->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_flag("--ball-in-hand", args->ball_in_hand, "Start with the cue ball in hand (a drill)");
   AddChoiceOptions(cmd, args.get());
   cmd->callback([args, scene, rack] {
     if (!scene->count() && !rack->count()) throw UsageError("play: give --scene S.json or --rack nine-ball");
     LoadedScene s;
-    choice::GameOptions options;
+    game::GameOptions options;
     options.choice = ChoiceOptionsOf(*args);
     if (rack->count()) {
       if (args->rack != "nine-ball") throw UsageError("--rack: only nine-ball is played");
@@ -262,36 +267,37 @@ void AddPlayCommand(CLI::App& app) {
       s.table = LoadTableOption("pool-9ft");
       s.balls = table::Rack(table::RackKind::kNineBall, s.table, s.params.ball.radius, args->seed);
       options.break_shot = !args->ball_in_hand;
-      if (args->rules == "any") options.choice.rules = choice::Rules::kNineBall;
+      if (args->rules == "any") options.choice.rules = rules::Rules::kNineBall;
     } else {
       s = LoadSceneOption(args->scene_path);
     }
-    if (args->policy == "ours") options.policy = choice::Policy::kOurs;
-    else if (args->policy == "no-lookahead") options.policy = choice::Policy::kNoLookahead;
-    else if (args->policy == "easiest-looking") options.policy = choice::Policy::kEasiestLooking;
-    else throw UsageError("--policy: unknown policy '" + args->policy + "'");
+    try {
+      options.player = players::MakePlayer(args->policy);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--policy: ") + e.what());
+    }
     options.execution = options.choice.noise;
     options.seed = args->seed;
     options.shot_limit = args->shot_limit;
     options.ball_in_hand = args->ball_in_hand;
     batch::ThreadPool pool(args->threads);
-    const choice::GameRecord game = choice::PlayGame(s.table, s.params, s.balls, options, pool);
-    for (const choice::ShotRecord& r : game.shots) {
+    const game::GameRecord game = game::PlayGame(s.table, s.params, s.balls, options, pool);
+    for (const game::ShotRecord& r : game.shots) {
       std::cerr << "shot " << r.number << " (visit " << r.visit << "): ";
       if (r.break_shot) std::cerr << "break";
       else if (r.ball >= 0) std::cerr << "ball " << r.ball << " in " << r.pocket << " (" << r.kind << ", p " << r.predicted << ")";
       else std::cerr << r.status;
       std::cerr << " -> potted " << r.potted.size() << (r.foul ? ", foul: " + r.foul_reason : "") << "\n";
     }
-    const choice::GameSummary& m = game.summary;
+    const game::GameSummary& m = game.summary;
     std::cerr << "play: " << (m.cleared ? "cleared" : "not cleared") << " in " << m.shots << " shots, "
               << m.visits << " visits, " << m.pots << " of " << m.attempts << " attempts potted, "
               << m.fouls << " fouls" << (m.run_out ? ", a run-out" : "") << "\n";
     if (args->json) {
       nlohmann::json j = GameJson(game);
-      j["rules"] = choice::RulesName(options.choice.rules);
+      j["rules"] = rules::RulesName(options.choice.rules);
       j["noise"] = options.choice.noise.name;
-      j["policy"] = choice::PolicyName(options.policy);
+      j["policy"] = options.player->Name();
       j["seed"] = args->seed;
       std::cout << j.dump() << std::endl;
     }

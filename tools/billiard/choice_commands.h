@@ -6,15 +6,15 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "planner/choice/game.h"
-#include "planner/choice/shot_choice.h"
+#include "planner/choice/choice_result.h"
+#include "planner/game/game.h"
 
 namespace billiard::cli {
 
 // A choice as `choose-shot --json` prints it.
 nlohmann::json ChoiceJson(const choice::ChoiceResult& result);
 // A game as `play --json` prints it: the shots and the summary.
-nlohmann::json GameJson(const choice::GameRecord& game);
+nlohmann::json GameJson(const game::GameRecord& game);
 
 void AddChooseShotCommand(CLI::App& app);
 void AddPlayCommand(CLI::App& app);

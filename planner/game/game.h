@@ -1,39 +1,44 @@
-// A rack played in simulation, shot by shot: the choice (shot_choice.h) decides, the table
-// executes the chosen stroke with the robot's noise on the full model, the rules judge the
-// outcome, and the next shot starts from where the balls rest. No camera: the choice sees the
-// truth (the closed loop through the estimator is run_loop.sh's).
+// A rack played in simulation, shot by shot: a player (planner/players/) decides, the table
+// executes the chosen stroke with the robot's noise on the full model, the rules
+// (sim/rules/, the ruleset of ChoiceOptions::rules) judge the outcome, and the next shot starts
+// from where the balls rest. No camera: the player sees the truth (the closed loop through the
+// estimator is run_loop.sh's).
 //
 // A visit lasts while the shots pot legally; a shot that pots nothing ends it (the next visit
 // plays on from the balls as they lie: one player alone at the table), a foul ends it with ball
-// in hand (the cue ball placed by ChooseWithBallInHand). Under nine-ball a 9 potted on a foul
-// comes back to the foot spot (WPA Rules of Play), or the nearest free place behind it on the
-// long axis. A run-out is a rack cleared in its first visit.
+// in hand (the player places the cue ball). The balls the rules put back (under nine-ball a 9
+// potted on a foul, to the foot spot or the nearest free place behind it on the long axis) go
+// back before the next shot. A run-out is a rack cleared in its first visit.
 //
 // Deterministic: the execution noise of shot n is drawn from SampleSeed(seed + stream, n), its
-// own stream, apart from the choice's samples; a seed plays the same game on any thread count.
+// own stream, apart from the player's samples (seeded SampleSeed(choice seed, n)); a seed plays
+// the same game on any thread count.
 //
-// Module: billiard::choice.
+// Module: billiard::game.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "planner/choice/shot_choice.h"
+#include "planner/choice/choice_options.h"
+#include "planner/players/player.h"
+#include "planner/players/players.h"
+#include "sim/batch/thread_pool.h"
+#include "sim/params/execution_noise.h"
+#include "sim/physics/parameters.h"
 #include "sim/table/rack.h"
+#include "sim/table/scene.h"
+#include "sim/table/table_geometry.h"
 
-namespace billiard::choice {
-
-// Who decides: ours; ours without the lookahead (score p alone); the easiest-looking pot
-// through the ghost ball (ChooseEasiestLooking).
-enum class Policy { kOurs, kNoLookahead, kEasiestLooking };
-const char* PolicyName(Policy policy);  // "ours", "no-lookahead", "easiest-looking"
+namespace billiard::game {
 
 struct GameOptions {
-  ChoiceOptions choice;  // its noise is the one the choice assumes
-  Policy policy = Policy::kOurs;
+  choice::ChoiceOptions choice;  // its noise is the one the player assumes, its rules the game's
+  std::shared_ptr<const players::Player> player = players::MakePlayer("ours");
   params::ExecutionNoise execution = params::LoadNoise(params::kDefaultNoise);  // the table's
   std::uint64_t seed = 1;
   int shot_limit = 40;
@@ -42,7 +47,6 @@ struct GameOptions {
   // break_speed (the table simulator's break).
   bool break_shot = false;
   double break_speed = 5.0;  // [m/s]
-  int placements = 3;        // ball in hand: places chosen among
   bool single_visit = false;  // stop when the first visit ends (a run-out drill)
 };
 
@@ -86,7 +90,8 @@ struct GameRecord {
 };
 
 // Plays `balls` (id 0 the cue ball, which may be absent when options.ball_in_hand) until the
-// rack is cleared (no object ball left; nine-ball: the 9 potted legally) or shot_limit shots.
+// rules say the rack is over (no object ball left; nine-ball: the 9 potted legally) or
+// shot_limit shots.
 GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParameters& params,
                     std::vector<table::SceneBall> balls, const GameOptions& options,
                     batch::ThreadPool& pool);
@@ -95,4 +100,4 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
 // places them too.
 using table::SeededNineBallLayout;
 
-}  // namespace billiard::choice
+}  // namespace billiard::game

@@ -1,0 +1,44 @@
+// What a choice is told: the rules it plays under, the noise it assumes, how many executions
+// each of its steps runs (shot_choice.h), and the pots it considers.
+//
+// Module: billiard::choice.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "planner/pot/pot_planner.h"
+#include "sim/params/execution_noise.h"
+#include "sim/rules/rules.h"
+
+namespace billiard::choice {
+
+// The games a choice plays under (sim/rules/rules.h): their legal targets are its candidates'
+// balls, and their end of the rack its lookahead's.
+using rules::Rules;
+
+struct ChoiceOptions {
+  Rules rules = Rules::kAny;
+  params::ExecutionNoise noise = params::LoadNoise(params::kDefaultNoise);
+  int samples = 64;         // full-model executions of each finalist
+  int screen_samples = 16;  // closed-form executions of each candidate
+  int finalists = 4;        // candidates that reach the full model
+  // Fresh full-model executions of the chosen shot alone, on their own seed stream: the
+  // probability reported (a binomial standard error of at most 0.5 / sqrt(n), 0.03 at 256).
+  // 0: report the finalists' own (biased) estimate.
+  int confirm_samples = 256;
+  std::uint64_t seed = 1;
+  bool lookahead = true;  // score p (1 + v); false: p alone
+  // Below this probability the choice says that no shot is likely.
+  double likely = 0.5;
+  // With the lookahead, the best screened candidates planned again with position play: the cue
+  // ball sent within position_radius of the place the next shot looks easiest from.
+  int position_plans = 3;
+  double position_radius = 0.15;  // [m]
+  int placements = 3;             // ball in hand: the places chosen among (ball_in_hand.h)
+  std::vector<pot::ShotKind> kinds = {pot::ShotKind::kDirect, pot::ShotKind::kBank,
+                                      pot::ShotKind::kKick, pot::ShotKind::kCurve};
+  pot::PotOptions pot;
+};
+
+}  // namespace billiard::choice

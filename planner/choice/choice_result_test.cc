@@ -1,0 +1,64 @@
+#include "planner/choice/choice_result.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "planner/choice/testing/choice_test.h"
+
+namespace billiard::choice {
+namespace {
+
+using ChoiceResultTest = testing::ChoiceTest;
+
+TEST(ChoiceStatusTest, Names) {
+  EXPECT_STREQ(ChoiceStatusName(ChoiceStatus::kOk), "ok");
+  EXPECT_STREQ(ChoiceStatusName(ChoiceStatus::kInvalid), "invalid");
+  EXPECT_STREQ(ChoiceStatusName(ChoiceStatus::kNoTarget), "no_target");
+  EXPECT_STREQ(ChoiceStatusName(ChoiceStatus::kNoPlan), "no_plan");
+}
+
+TEST_F(ChoiceResultTest, RefusesWhatCannotBePlayed) {
+  EXPECT_EQ(Unplayable(table_, params_, {Ball(1, 1, 0.5)}, Rules::kAny)->status,
+            ChoiceStatus::kInvalid);
+  EXPECT_EQ(Unplayable(table_, params_, {Ball(0, 1, 0.5)}, Rules::kAny)->status,
+            ChoiceStatus::kNoTarget);
+  table::SceneBall moving = Ball(1, 1.5, 0.5);
+  moving.state[physics::kVx] = 0.1;
+  const auto refused = Unplayable(table_, params_, {Ball(0, 1, 0.5), moving}, Rules::kAny);
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->status, ChoiceStatus::kInvalid);
+  EXPECT_EQ(refused->reason, "ball 1 is moving: a choice starts at rest");
+  const auto overlapping = Unplayable(table_, params_, {Ball(0, 1, 0.5), Ball(1, 1.01, 0.5)},
+                                      Rules::kAny);
+  ASSERT_TRUE(overlapping);
+  EXPECT_EQ(overlapping->status, ChoiceStatus::kInvalid);
+  EXPECT_FALSE(Unplayable(table_, params_, {Ball(0, 1, 0.5), Ball(1, 1.5, 0.5)}, Rules::kAny));
+}
+
+// Nothing plans: the fallback rolls the cue ball straight at the first legal target's centre
+// (the lowest under nine-ball), and it is the stroke to play.
+TEST_F(ChoiceResultTest, TheFallbackHitsTheFirstLegalTargetFullInTheFace) {
+  const std::vector<table::SceneBall> balls = {Ball(0, 1, 0.5), Ball(4, 1.3, 0.9),
+                                               Ball(2, 0.6, 0.1)};
+  ChoiceResult r;
+  NoPlan(balls, Rules::kNineBall, "why", &r);
+  EXPECT_EQ(r.status, ChoiceStatus::kNoPlan);
+  EXPECT_EQ(r.reason, "why");
+  ASSERT_TRUE(r.fallback);
+  EXPECT_DOUBLE_EQ(r.fallback->heading, std::atan2(0.1 - 0.5, 0.6 - 1.0));
+  EXPECT_GT(r.fallback->speed, 0.0);
+  EXPECT_EQ(r.stroke(), &*r.fallback);
+}
+
+TEST(ChoiceResultStrokeTest, TheChosenPotsStrokeElseNone) {
+  ChoiceResult r;
+  EXPECT_EQ(r.stroke(), nullptr);  // nothing to play
+  r.fallback = physics::CueStroke{1.0, 0.5, 0, 0, 0};
+  r.candidates.resize(2);
+  r.candidates[0].plan.stroke.heading = 2.0;
+  EXPECT_EQ(r.stroke(), &r.candidates[0].plan.stroke);
+}
+
+}  // namespace
+}  // namespace billiard::choice

@@ -1,0 +1,112 @@
+// The Monte Carlo estimate: a stroke played many times with the robot's execution noise
+// (sim/params/execution_noise.h) on the table's own motion, and how often it pots legally.
+//
+// Deterministic: execution s of every stroke draws its noise from a generator seeded by
+// (seed, s) alone (common random numbers: candidates are compared on the same errors), each
+// execution's result is stored at its index and the sums run in index order, so a seed gives the
+// same estimate on 1 thread or 64.
+//
+// Module: billiard::choice.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "planner/choice/choice_options.h"
+#include "planner/pot/pot_planner.h"
+#include "sim/batch/thread_pool.h"
+#include "sim/params/execution_noise.h"
+#include "sim/physics/cue_strike.h"
+#include "sim/physics/parameters.h"
+#include "sim/table/scene.h"
+#include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
+
+namespace billiard::choice {
+
+// The table's motion between events: empty for the closed form (Jaroukh 2019) throughout, else
+// the 5-DOF model where it says (model_choice::TableMotion).
+using Motion = decltype(table::TableSimulationOptions::five_dof);
+
+// A generator's seed for execution `index` of a run seeded `seed` (SplitMix64 of both): the
+// executions are independent of one another and of the order they run in.
+std::uint64_t SampleSeed(std::uint64_t seed, std::uint64_t index);
+
+// Standard normal numbers from std::mt19937_64 by the Box-Muller transform, by hand so that a
+// seed gives the same numbers on every standard library.
+class NormalStream {
+ public:
+  explicit NormalStream(std::uint64_t seed) : engine_(seed) {}
+  double Next();
+
+ private:
+  std::mt19937_64 engine_;
+  std::optional<double> spare_;  // Box-Muller makes two at a time
+};
+
+// What a stroke did, played to rest.
+struct StrokeResult {
+  bool struck = false;     // false: no cue gives the stroke (the cue model refused it)
+  int first_contact = -1;  // the first ball the cue ball touched, -1 none
+  std::vector<std::pair<int, std::string>> pocketed;  // object balls and their pockets
+  bool scratch = false;                               // the cue ball dropped
+  std::vector<table::SceneBall> rest;                 // the balls left on the table, at rest
+};
+
+// Strikes the cue ball (id 0, at rest) of `balls` with `stroke` and simulates the table until
+// every ball rests (closed form between events when `motion` is empty, else `motion`'s 5-DOF
+// where it says).
+StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelParameters& params,
+                        const std::vector<table::SceneBall>& balls,
+                        const physics::CueStroke& stroke, const Motion& motion);
+
+// Whether `result` pots `ball` in `pocket` legally: the cue ball's first contact that ball, the
+// ball in that pocket, no scratch.
+bool LegalPot(const StrokeResult& result, int ball, const std::string& pocket);
+
+// The probability of a legal pot and its standard error over noisy executions.
+struct PotProbability {
+  int samples = 0;
+  int successes = 0;
+  double probability = 0.0;  // successes / samples
+  double stderr_ = 0.0;      // sqrt(p (1 - p) / samples), the binomial standard error
+};
+
+// The binomial estimate of `successes` in `samples`.
+PotProbability Binomial(int successes, int samples);
+
+// One noisy execution of a stroke: whether it potted legally and, if it did and the lookahead
+// was asked, the value of the best next shot on the table it left (BestNextShotValue).
+struct Execution {
+  bool potted = false;
+  double next_value = 0.0;
+};
+
+// The legal-pot rate of `executions`, all of one stroke.
+PotProbability PotRateOf(const std::vector<Execution>& executions);
+
+// Executions [0, samples) of each of `plans`, flattened into one batch on `pool`'s threads,
+// results in index order (plan k's execution s at k samples + s). Execution s of every plan is
+// its stroke perturbed by options.noise from SampleSeed(options.seed, s), played on `motion`;
+// with `value_next` a pot's next shot is valued under options.rules. A throw counts as a miss.
+std::vector<Execution> ExecuteAll(const table::TableGeometry& table,
+                                  const physics::ModelParameters& params,
+                                  const std::vector<table::SceneBall>& balls,
+                                  const std::vector<const pot::PotPlan*>& plans, int samples,
+                                  const ChoiceOptions& options, const Motion& motion,
+                                  bool value_next, batch::ThreadPool& pool);
+
+// `plan`'s stroke executed `samples` times with `noise` (execution s seeded SampleSeed(seed, s))
+// on the full model the table runs, on `pool`'s threads.
+PotProbability EstimatePotProbability(const table::TableGeometry& table,
+                                      const physics::ModelParameters& params,
+                                      const std::vector<table::SceneBall>& balls,
+                                      const pot::PotPlan& plan,
+                                      const params::ExecutionNoise& noise, int samples,
+                                      std::uint64_t seed, batch::ThreadPool& pool);
+
+}  // namespace billiard::choice

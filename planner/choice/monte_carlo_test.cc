@@ -1,0 +1,144 @@
+#include "planner/choice/monte_carlo.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "planner/choice/testing/choice_test.h"
+
+namespace billiard::choice {
+namespace {
+
+using MonteCarloTest = testing::ChoiceTest;
+
+TEST_F(MonteCarloTest, StraightShortPotIsNearlyCertainAndFallsWithNoise) {
+  const auto balls = StraightPot(0.4, 0.4);
+  const pot::PotPlan plan = Plan(balls, 1, "upper_right");
+  ASSERT_EQ(plan.status, pot::PotStatus::kOk) << plan.reason;
+  batch::ThreadPool pool(2);
+  const PotProbability tiny =
+      EstimatePotProbability(table_, params_, balls, plan, HeadingNoise(0.01), 32, 1, pool);
+  EXPECT_EQ(tiny.successes, 32);
+  EXPECT_DOUBLE_EQ(tiny.stderr_, 0.0);
+  // 3 degrees of heading turns the object ball by about 3 x 0.4 / (2 r) = 21 degrees: far
+  // outside a corner's window at 0.4 m, so most miss.
+  const PotProbability wild =
+      EstimatePotProbability(table_, params_, balls, plan, HeadingNoise(3.0), 32, 1, pool);
+  EXPECT_LT(wild.probability, 0.5);
+  EXPECT_NEAR(wild.stderr_, std::sqrt(wild.probability * (1 - wild.probability) / 32), 1e-12);
+}
+
+// The spread of independent estimates is the binomial standard error each reports.
+TEST_F(MonteCarloTest, StandardErrorMatchesTheSpreadOfEstimates) {
+  const auto balls = StraightPot(0.6, 0.6);
+  const pot::PotPlan plan = Plan(balls, 1, "upper_right");
+  ASSERT_EQ(plan.status, pot::PotStatus::kOk) << plan.reason;
+  batch::ThreadPool pool(2);
+  const int runs = 10, samples = 24;
+  double sum = 0, sum_sq = 0, stderr_sum = 0;
+  for (int seed = 1; seed <= runs; ++seed) {
+    const PotProbability p =
+        EstimatePotProbability(table_, params_, balls, plan, HeadingNoise(0.6), samples, seed, pool);
+    sum += p.probability;
+    sum_sq += p.probability * p.probability;
+    stderr_sum += p.stderr_;
+  }
+  const double mean = sum / runs;
+  ASSERT_GT(mean, 0.15);  // a shot that neither always drops nor always misses
+  ASSERT_LT(mean, 0.85);
+  const double spread = std::sqrt((sum_sq - runs * mean * mean) / (runs - 1));
+  const double predicted = std::sqrt(mean * (1 - mean) / samples);
+  EXPECT_GT(spread / predicted, 0.5);
+  EXPECT_LT(spread / predicted, 1.6);
+  EXPECT_NEAR(stderr_sum / runs / predicted, 1.0, 0.2);
+}
+
+TEST_F(MonteCarloTest, ScratchAndWrongContactAreNotPots) {
+  // The cue ball alone, sent into the upper right pocket: a scratch, no contact.
+  auto balls = StraightPot(0.4, 0.4);
+  balls[1] = Ball(1, 0.5, 0.3);
+  const StrokeResult r =
+      PlayToRest(table_, params_, balls, {2.0, std::atan2(1.0, 1.0), 0, 0, 0}, {});
+  ASSERT_TRUE(r.struck);
+  EXPECT_TRUE(r.scratch);
+  EXPECT_EQ(r.first_contact, -1);
+  EXPECT_FALSE(LegalPot(r, 1, "upper_right"));
+  EXPECT_EQ(r.rest.size(), 1u);
+}
+
+// A stroke no cue gives (the tip off the ball): not struck, the balls as they were.
+TEST_F(MonteCarloTest, AStrokeTheCueCannotGiveIsNotStruck) {
+  const auto balls = StraightPot(0.4, 0.4);
+  const StrokeResult r = PlayToRest(table_, params_, balls, {2.0, 0.0, 2 * params_.ball.radius, 0, 0}, {});
+  EXPECT_FALSE(r.struck);
+  EXPECT_FALSE(LegalPot(r, 1, "upper_right"));
+  ASSERT_EQ(r.rest.size(), balls.size());
+  EXPECT_EQ(r.rest[1].state, balls[1].state);
+}
+
+// SplitMix64 seeds: the same for the same pair, distinct over many indices and seeds.
+TEST(SampleSeedTest, IsAFunctionOfSeedAndIndexAlone) {
+  EXPECT_EQ(SampleSeed(7, 3), SampleSeed(7, 3));
+  std::set<std::uint64_t> seen;
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    for (std::uint64_t index = 0; index < 50; ++index) seen.insert(SampleSeed(seed, index));
+  }
+  EXPECT_EQ(seen.size(), 20u * 50u);
+}
+
+// Box-Muller's numbers have mean 0, variance 1 and the normal's fourth moment, 3 (to the
+// sampling error of 20000 draws), and a seed repeats them.
+TEST(NormalStreamTest, IsAStandardNormalThatASeedRepeats) {
+  NormalStream a(5), b(5);
+  const int n = 20000;
+  double sum = 0, sum_sq = 0, sum_4 = 0;
+  for (int i = 0; i < n; ++i) {
+    const double z = a.Next();
+    EXPECT_EQ(z, b.Next());
+    sum += z;
+    sum_sq += z * z;
+    sum_4 += z * z * z * z;
+  }
+  EXPECT_NEAR(sum / n, 0.0, 4 / std::sqrt(n));
+  EXPECT_NEAR(sum_sq / n, 1.0, 4 * std::sqrt(2.0 / n));
+  EXPECT_NEAR(sum_4 / n, 3.0, 4 * std::sqrt(96.0 / n));
+}
+
+TEST(BinomialTest, ProbabilityAndStandardError) {
+  const PotProbability p = Binomial(12, 48);
+  EXPECT_EQ(p.samples, 48);
+  EXPECT_EQ(p.successes, 12);
+  EXPECT_DOUBLE_EQ(p.probability, 0.25);
+  EXPECT_DOUBLE_EQ(p.stderr_, std::sqrt(0.25 * 0.75 / 48));
+  EXPECT_EQ(Binomial(0, 0).probability, 0.0);  // no samples: nothing known
+  const std::vector<Execution> executions = {{true, 0.5}, {false, 0}, {true, 0.1}, {false, 0}};
+  EXPECT_DOUBLE_EQ(PotRateOf(executions).probability, 0.5);
+}
+
+// A batch of two plans is each plan's own executions, side by side: execution s of a plan
+// depends on (seed, s) alone, not on the batch it runs in or the threads.
+TEST_F(MonteCarloTest, ABatchIsItsPlansExecutionsSideBySide) {
+  const auto balls = StraightPot(0.6, 0.6);
+  const pot::PotPlan plan = Plan(balls, 1, "upper_right");
+  ASSERT_EQ(plan.status, pot::PotStatus::kOk) << plan.reason;
+  pot::PotPlan wide = plan;
+  wide.stroke.heading += 0.004;
+  ChoiceOptions options;
+  options.noise = HeadingNoise(0.6);
+  batch::ThreadPool two(2), one(1);
+  const int samples = 12;
+  const auto both = ExecuteAll(table_, params_, balls, {&plan, &wide}, samples, options, {}, true, two);
+  const auto alone = ExecuteAll(table_, params_, balls, {&wide}, samples, options, {}, true, one);
+  ASSERT_EQ(both.size(), 2u * samples);
+  for (int s = 0; s < samples; ++s) {
+    EXPECT_EQ(both[samples + s].potted, alone[s].potted);
+    EXPECT_EQ(both[samples + s].next_value, alone[s].next_value);
+    if (!both[s].potted) EXPECT_EQ(both[s].next_value, 0.0);
+    // The rack is over when the only object ball drops: the next shot is worth a ball.
+    if (both[s].potted) EXPECT_EQ(both[s].next_value, 1.0);
+  }
+}
+
+}  // namespace
+}  // namespace billiard::choice

@@ -1,0 +1,26 @@
+#include "planner/players/players.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace billiard::players {
+namespace {
+
+TEST(PlayersTest, EachNameMakesThatPlayer) {
+  const std::vector<std::string> names = PlayerNames();
+  EXPECT_EQ(names, (std::vector<std::string>{"ours", "no-lookahead", "easiest-looking"}));
+  for (const std::string& name : names) EXPECT_EQ(MakePlayer(name)->Name(), name);
+}
+
+TEST(PlayersTest, AnUnknownNameIsRefusedWithTheKnownOnes) {
+  try {
+    MakePlayer("random");
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "unknown player 'random' (ours, no-lookahead, easiest-looking)");
+  }
+}
+
+}  // namespace
+}  // namespace billiard::players

@@ -1,0 +1,42 @@
+// Nine-ball, as the WPA Rules of Play (World Pool-Billiard Association) have it, in the part
+// judged here:
+//  - "On each shot the first ball the cue ball contacts must be the lowest-numbered ball on the
+//    table" (Nine-Ball, Object of the Game), the break excepted: any contact is one there;
+//  - a scratch (Standard Fouls, Cue Ball Scratch), a wrong first contact (Wrong Ball First) or
+//    none is a foul, and after a foul the incoming player has the cue ball in hand anywhere on
+//    the table (here the next visit);
+//  - the 9 potted on a foul is spotted: on the foot spot, or when that is taken on the long
+//    string behind it, toward the foot rail, as near the spot as it is free (Nine-Ball,
+//    Spotting Balls; General Rules, Spotting Balls);
+//  - the rack is won by pocketing the 9 on a legal shot (Object of the Game); a rack with no
+//    object ball left (one racked without the 9) is over too.
+// A stroke the cue cannot give is judged a miscue, a foul (the pocket games' fouls, ruleset.h).
+// Not judged (yet): No Rail after Contact, the push-out after the break, three successive
+// fouls, the break's own requirements.
+//
+// Module: billiard::rules.
+#pragma once
+
+#include <vector>
+
+#include "sim/rules/ruleset.h"
+
+namespace billiard::rules {
+
+class NineBall final : public Ruleset {
+ public:
+  // The ball whose legal pot wins the rack, respotted when potted on a foul.
+  static constexpr int kNine = 9;
+
+  const char* Name() const override { return "nine-ball"; }
+  // The lowest-numbered object ball alone (none when the table has none).
+  std::vector<int> LegalTargets(const std::vector<table::SceneBall>& balls) const override;
+  // No object ball left, or the 9 gone.
+  bool RackOver(const std::vector<table::SceneBall>& balls) const override;
+  Judgement Judge(const table::TableGeometry& table, const Shot& shot) const override;
+};
+
+// The foot spot of `table`: the middle of its foot half (x = 3/4 length, across the middle).
+Eigen::Vector2d FootSpot(const table::TableGeometry& table);
+
+}  // namespace billiard::rules

@@ -1,0 +1,37 @@
+#include "sim/rules/rules.h"
+
+#include "sim/rules/any.h"
+#include "sim/rules/nine_ball.h"
+
+namespace billiard::rules {
+
+namespace {
+
+constexpr Rules kEveryRules[] = {Rules::kAny, Rules::kNineBall};
+
+}  // namespace
+
+const Ruleset& RulesetOf(Rules rules) {
+  static const AnyBall any;
+  static const NineBall nine_ball;
+  switch (rules) {
+    case Rules::kAny: return any;
+    case Rules::kNineBall: return nine_ball;
+  }
+  return any;
+}
+
+const char* RulesName(Rules rules) { return RulesetOf(rules).Name(); }
+
+std::optional<Rules> ParseRules(const std::string& name) {
+  for (Rules rules : kEveryRules) {
+    if (name == RulesName(rules)) return rules;
+  }
+  return std::nullopt;
+}
+
+std::vector<int> LegalTargets(Rules rules, const std::vector<table::SceneBall>& balls) {
+  return RulesetOf(rules).LegalTargets(balls);
+}
+
+}  // namespace billiard::rules

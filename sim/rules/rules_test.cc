@@ -1,0 +1,34 @@
+#include "sim/rules/rules.h"
+
+#include <gtest/gtest.h>
+
+namespace billiard::rules {
+namespace {
+
+TEST(RulesTest, NamesRoundTrip) {
+  for (Rules rules : {Rules::kAny, Rules::kNineBall}) {
+    EXPECT_EQ(ParseRules(RulesName(rules)), rules);
+    EXPECT_STREQ(RulesetOf(rules).Name(), RulesName(rules));
+  }
+  EXPECT_STREQ(RulesName(Rules::kNineBall), "nine-ball");
+  EXPECT_STREQ(RulesName(Rules::kAny), "any");
+  EXPECT_FALSE(ParseRules("snooker"));
+  EXPECT_FALSE(ParseRules("Nine-Ball"));
+}
+
+TEST(RulesTest, LegalTargetsAreTheGamesOwn) {
+  std::vector<table::SceneBall> balls(4);
+  balls[1].id = 6;
+  balls[2].id = 2;
+  balls[3].id = 9;
+  EXPECT_EQ(LegalTargets(Rules::kAny, balls), (std::vector<int>{2, 6, 9}));
+  EXPECT_EQ(LegalTargets(Rules::kNineBall, balls), (std::vector<int>{2}));
+}
+
+TEST(RulesTest, OneRulesetPerGame) {
+  EXPECT_EQ(&RulesetOf(Rules::kNineBall), &RulesetOf(Rules::kNineBall));
+  EXPECT_NE(&RulesetOf(Rules::kNineBall), &RulesetOf(Rules::kAny));
+}
+
+}  // namespace
+}  // namespace billiard::rules

@@ -1,0 +1,104 @@
+// A ruleset: the referee of a pocket game. It turns a shot as played into its judgement (legal
+// or a foul and why, whether the visit and the rack are over, the balls the rules put back)
+// and says what the next shot may do (ball in hand, the balls the cue ball may hit first).
+//
+// The shape is pooltool's `ruleset/` (Kiefl 2024: a ruleset's legality, turn over, game over
+// and the next shot's constraints, one file per game): the table simulator (the referee of the
+// closed loop) and the planner's games judge with the same code, and a game is a file of its
+// own (any.h, nine_ball.h; rules.h names them).
+//
+// One player is at the table: a visit lasts while its shots pot legally, and a rack over is won
+// by whoever is at the table. Nothing here plays or simulates a shot: what the shot did (its
+// first contact, the balls it potted, the scratch) comes from the table simulation that played
+// it.
+//
+// Module: billiard::rules. Includes the table (its geometry, the scene's balls) and the physics.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "sim/table/scene.h"
+#include "sim/table/table_geometry.h"
+
+namespace billiard::rules {
+
+// What the rules allow a shot: pooltool's ShotConstraints.
+struct Constraints {
+  bool ball_in_hand = false;       // the cue ball may be placed anywhere on the table first
+  std::vector<int> legal_targets;  // the object balls the cue ball may hit first, ascending
+};
+
+// A shot as it was played.
+struct Shot {
+  Constraints constraints;  // what the rules allowed it (its legal first contacts)
+  bool break_shot = false;
+  bool struck = true;       // false: no stroke reached the ball (the cue refused it: a miscue)
+  int first_contact = -1;   // the first ball the cue ball touched, -1 none
+  std::vector<int> potted;  // the object balls that dropped
+  bool scratch = false;     // the cue ball dropped
+  int object_balls_left = 0;  // object balls at rest on the table after it
+};
+
+// A ball the rules put back on the table: on `spot`, or the first free place from it in the
+// direction `toward` (the referee steps along it; PlaceRespotted).
+struct Respot {
+  int ball = -1;
+  Eigen::Vector2d spot = Eigen::Vector2d::Zero();
+  Eigen::Vector2d toward = Eigen::Vector2d::UnitX();
+};
+
+// The judgement of a shot: pooltool's ShotInfo.
+struct Judgement {
+  bool foul = false;
+  // Why, when a foul: "miscue", "scratch", "no contact", or the game's own ("first contact 3,
+  // not the lowest 2" under nine-ball). Empty when legal.
+  std::string foul_reason;
+  bool turn_over = false;  // the visit ends: a foul, or nothing potted
+  bool rack_over = false;
+  // The next shot: with ball in hand (after a foul), and the balls put back before it.
+  bool ball_in_hand = false;
+  std::vector<Respot> respots;
+
+  bool legal() const { return !foul; }
+};
+
+class Ruleset {
+ public:
+  virtual ~Ruleset() = default;
+
+  // "any", "nine-ball".
+  virtual const char* Name() const = 0;
+
+  // The object balls the cue ball may hit first (and a called shot pot) on `balls`: ids > 0,
+  // ascending.
+  virtual std::vector<int> LegalTargets(const std::vector<table::SceneBall>& balls) const = 0;
+
+  // Whether nothing is left to play on `balls` as they lie (a lookahead's table after a pot).
+  virtual bool RackOver(const std::vector<table::SceneBall>& balls) const = 0;
+
+  // The judgement of `shot`, played on `table`.
+  virtual Judgement Judge(const table::TableGeometry& table, const Shot& shot) const = 0;
+};
+
+// The object balls of `balls` (ids > 0), ascending.
+std::vector<int> ObjectBalls(const std::vector<table::SceneBall>& balls);
+
+// The fouls of every pocket game, in the order they are called: no stroke ("miscue"), the cue
+// ball potted ("scratch"), the cue ball touching no ball ("no contact"); "" when none.
+std::string PocketGameFoul(const Shot& shot);
+
+// The judgement common to the pocket games of a single player at the table, given the foul
+// found (`foul_reason`, "" when legal): a foul gives the next shot ball in hand, and the visit
+// ends on a foul or when nothing drops. Respots and the rack's end are the game's.
+Judgement PocketGameJudgement(const Shot& shot, std::string foul_reason);
+
+// `balls` with each of `respots` placed on the table: on its spot, or the first free place
+// (table::FreeSpotFrom, at least `clearance` from every ball) in steps of `step` toward its
+// direction.
+void PlaceRespotted(const table::TableGeometry& table, double radius,
+                    const std::vector<Respot>& respots, double step, double clearance,
+                    std::vector<table::SceneBall>* balls);
+
+}  // namespace billiard::rules
