@@ -12,24 +12,6 @@ namespace billiard::shot_fit {
 
 namespace {
 
-// The Gauss-Newton blocks of a shot whose Jacobian is `j` (its first n columns the strike's, the
-// others the constants') at residuals `residuals`.
-ShotBlocks BlocksOf(const Eigen::MatrixXd& j, std::size_t n, const std::vector<double>& residuals) {
-  const int m = static_cast<int>(residuals.size());
-  const std::size_t k = static_cast<std::size_t>(j.cols()) - n;
-  const Eigen::Map<const Eigen::VectorXd> r(residuals.data(), m);
-  const auto js = j.leftCols(n), jc = j.rightCols(k);
-  ShotBlocks b;
-  b.ss = js.transpose() * js;
-  b.sc = js.transpose() * jc;
-  b.cc = jc.transpose() * jc;
-  b.gs = js.transpose() * r;
-  b.gc = jc.transpose() * r;
-  b.squares = r.squaredNorm();
-  b.residuals = m;
-  return b;
-}
-
 // Cauchy's loss of each shot's RMSE (SolveJoint), c^2 the median mean squared error of the
 // shots where the solve starts.
 class CauchyLoss {
@@ -102,6 +84,22 @@ JointPoint Step(const JointProblem& problem, const std::vector<ShotBlocks>& bloc
 }
 
 }  // namespace
+
+ShotBlocks BlocksOf(const Eigen::MatrixXd& j, std::size_t n, const std::vector<double>& residuals) {
+  const int m = static_cast<int>(residuals.size());
+  const std::size_t k = static_cast<std::size_t>(j.cols()) - n;
+  const Eigen::Map<const Eigen::VectorXd> r(residuals.data(), m);
+  const auto js = j.leftCols(n), jc = j.rightCols(k);
+  ShotBlocks b;
+  b.ss = js.transpose() * js;
+  b.sc = js.transpose() * jc;
+  b.cc = jc.transpose() * jc;
+  b.gs = js.transpose() * r;
+  b.gc = jc.transpose() * r;
+  b.squares = r.squaredNorm();
+  b.residuals = m;
+  return b;
+}
 
 double JointProblem::Evaluation::Squares() const {
   if (r.empty()) return std::numeric_limits<double>::infinity();

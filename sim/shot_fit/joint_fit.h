@@ -47,6 +47,10 @@ struct ShotBlocks {
   std::vector<double> lagged;
 };
 
+// The blocks of a shot whose Jacobian is `j` (its first n columns the strike's, the others the
+// constants') at residuals `residuals`; `lagged` left empty.
+ShotBlocks BlocksOf(const Eigen::MatrixXd& j, std::size_t n, const std::vector<double>& residuals);
+
 // The shots `included` (indices into `shots`), each with its strike vector (strike_fit.h's
 // Layout), and the values of `constants`, the others as in `base`; the samples up to `horizon`.
 // Holds references to its arguments, which must outlive it.

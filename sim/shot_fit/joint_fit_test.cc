@@ -35,17 +35,12 @@ TEST(Reduce, GivesTheStepOfTheWholeDampedSystem) {
   const Eigen::VectorXd r = random_matrix(kShots * kRows, 1);
   std::vector<ShotBlocks> blocks;
   for (int s = 0; s < kShots; ++s) {
-    const Eigen::MatrixXd js = random_matrix(kRows, kStrike), jc = random_matrix(kRows, kConstants);
+    Eigen::MatrixXd shot(kRows, kStrike + kConstants);
+    shot << random_matrix(kRows, kStrike), random_matrix(kRows, kConstants);
+    j.block(s * kRows, s * kStrike, kRows, kStrike) = shot.leftCols(kStrike);
+    j.block(s * kRows, kShots * kStrike, kRows, kConstants) = shot.rightCols(kConstants);
     const Eigen::VectorXd rs = r.segment(s * kRows, kRows);
-    j.block(s * kRows, s * kStrike, kRows, kStrike) = js;
-    j.block(s * kRows, kShots * kStrike, kRows, kConstants) = jc;
-    ShotBlocks b;
-    b.ss = js.transpose() * js;
-    b.sc = js.transpose() * jc;
-    b.cc = jc.transpose() * jc;
-    b.gs = js.transpose() * rs;
-    b.gc = jc.transpose() * rs;
-    blocks.push_back(b);
+    blocks.push_back(BlocksOf(shot, kStrike, std::vector<double>(rs.data(), rs.data() + kRows)));
   }
   Eigen::MatrixXd a = j.transpose() * j;
   a.diagonal() += kLambda * a.diagonal().eval();
@@ -60,20 +55,15 @@ TEST(Reduce, GivesTheStepOfTheWholeDampedSystem) {
   }
 }
 
-// One ball struck alone from the table's centre, tracked without noise.
+// One ball struck alone, where and as SyntheticScenes' first ball is, tracked without noise.
 std::vector<TrackedShot> LoneBallShots(const table::TableGeometry& table,
                                        const physics::ModelParameters& truth,
                                        std::vector<Strike>* strikes) {
   std::vector<TrackedShot> shots;
-  for (int i = 0; i < 3; ++i) {
-    Strike s;
-    s.stroke.speed = 2.0 + 0.4 * i;
-    s.stroke.heading = 0.3 + 1.4 * i;
-    s.stroke.tip_height = (0.3 - 0.2 * i) * truth.ball.radius;
-    s.time = 0.01;
-    strikes->push_back(s);
-    shots.push_back(SimulateTrackedShot(table, truth, {{1.42, 0.71}}, 0, s, 6.0, 0.02, 0.0, 0.0, i));
-    shots.back().id = std::to_string(i);
+  for (const SyntheticScene& scene : SyntheticScenes(table, truth.ball.radius, 3, 6)) {
+    strikes->push_back(scene.strike);
+    shots.push_back(SimulateTrackedShot(table, truth, {scene.starts[0]}, 0, scene.strike, 6.0,
+                                        kSyntheticPeriod, 0.0, 0.0, 0));
   }
   return shots;
 }

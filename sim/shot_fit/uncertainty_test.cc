@@ -47,21 +47,13 @@ struct LineFit {
   }
 
   ShotBlocks Blocks(bool unexcited) const {
-    const int n = static_cast<int>(x.size()), k = unexcited ? 2 : 1;
-    Eigen::MatrixXd js(n, 1), jc = Eigen::MatrixXd::Zero(n, k);
+    const int n = static_cast<int>(x.size());
+    Eigen::MatrixXd j = Eigen::MatrixXd::Zero(n, unexcited ? 3 : 2);
     for (int i = 0; i < n; ++i) {
-      js(i, 0) = x[i];
-      jc(i, 0) = 1.0;
+      j(i, 0) = x[i];
+      j(i, 1) = 1.0;
     }
-    const Eigen::Map<const Eigen::VectorXd> residuals(r.data(), n);
-    ShotBlocks b;
-    b.ss = js.transpose() * js;
-    b.sc = js.transpose() * jc;
-    b.cc = jc.transpose() * jc;
-    b.gs = js.transpose() * residuals;
-    b.gc = jc.transpose() * residuals;
-    b.squares = ssr;
-    b.residuals = n;
+    ShotBlocks b = BlocksOf(j, 1, r);
     b.lagged = {ssr};  // uncorrelated: no products at any lag
     return b;
   }
