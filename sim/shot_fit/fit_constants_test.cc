@@ -10,7 +10,7 @@
 namespace billiard::shot_fit {
 namespace {
 
-constexpr Constant kAll[] = {Constant::kMu,      Constant::kRolling,          Constant::kSpin,
+constexpr Constant kAll[] = {Constant::kMu,      Constant::kRolling,         Constant::kSpin,
                              Constant::kCushion, Constant::kCushionFriction, Constant::kBallBall};
 
 std::string RefusalOf(const std::string& list) {

@@ -52,7 +52,8 @@ std::vector<StrikeBounds> IncludedBounds(const JointProblem& problem) {
   std::vector<StrikeBounds> bounds;
   for (std::size_t s : problem.included) {
     const auto [lo, hi] = ImpactRange(problem.shots[s]);
-    bounds.push_back(BoundsOf(Layout(problem.options, problem.base.ball.radius, problem.shots[s]), lo, hi));
+    bounds.push_back(
+        BoundsOf(Layout(problem.options, problem.base.ball.radius, problem.shots[s]), lo, hi));
   }
   return bounds;
 }
@@ -113,8 +114,8 @@ JointProblem::Evaluation JointProblem::Evaluate(std::size_t s, const std::vector
   const physics::ModelParameters p = WithConstants(base, constants, values);
   Evaluation e;
   e.r = ShotModel(table, p, shots[s])
-            .Residuals(FromVector(strike.data(), Layout(options, p.ball.radius, shots[s])),
-                       horizon, &e.impacts);
+            .Residuals(FromVector(strike.data(), Layout(options, p.ball.radius, shots[s])), horizon,
+                       &e.impacts);
   return e;
 }
 
@@ -177,17 +178,17 @@ std::vector<ShotBlocks> JointProblem::LinearizeAll(const std::vector<std::vector
   return out;
 }
 
-JointProblem::Evaluations JointProblem::EvaluateAll(
-    const std::vector<std::vector<double>>& strikes, const std::vector<double>& values) const {
+JointProblem::Evaluations JointProblem::EvaluateAll(const std::vector<std::vector<double>>& strikes,
+                                                    const std::vector<double>& values) const {
   auto results = pool.Map(included.size(), [&](std::size_t job) {
     const Evaluation e = Evaluate(included[job], strikes[job], values);
     return std::make_pair(e.Squares(), e.impacts);
   });
   Evaluations out;
   for (const auto& result : results)
-    out.push_back(result.ok() ? *result.value
-                              : std::make_pair(std::numeric_limits<double>::infinity(),
-                                               std::uint64_t{0}));
+    out.push_back(result.ok()
+                      ? *result.value
+                      : std::make_pair(std::numeric_limits<double>::infinity(), std::uint64_t{0}));
   return out;
 }
 

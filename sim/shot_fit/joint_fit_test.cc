@@ -131,8 +131,7 @@ TEST(Inliers, LeaveOutAShotFarFromTheMedian) {
   x[0][0] *= 1.001;  // each speed a little off
   x[1][0] *= 1.002;
   x[2][0] *= 0.999;
-  EXPECT_EQ(Inliers(lone.problem, x, lone.TrueValues(), 3.0),
-            (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(Inliers(lone.problem, x, lone.TrueValues(), 3.0), (std::vector<std::size_t>{0, 1, 2}));
   x[1][1] += 0.3;  // shot 1's heading far off
   EXPECT_EQ(Inliers(lone.problem, x, lone.TrueValues(), 3.0), (std::vector<std::size_t>{0, 2}));
 }

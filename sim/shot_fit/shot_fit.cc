@@ -87,9 +87,8 @@ class ShotsFitter {
           if (refine && out_.shots[i].ok()) previous = out_.shots[i].strike;
           return FitStrikeUpTo(table_, out_.params, shots_[i], phase_options_, previous, horizon);
         },
-        progress_ ? batch::Progress([&](std::size_t done, std::size_t total) {
-          progress_(stage, done, total);
-        })
+        progress_ ? batch::Progress(
+                        [&](std::size_t done, std::size_t total) { progress_(stage, done, total); })
                   : batch::Progress());
     for (std::size_t job = 0; job < which.size(); ++job) {
       const std::size_t i = which[job];
@@ -111,7 +110,8 @@ class ShotsFitter {
   // The strike vectors of the shots the constants are fitted on.
   std::vector<std::vector<double>> StrikesOf() const {
     std::vector<std::vector<double>> x;
-    for (std::size_t i : problem_.included) x.push_back(ToVector(out_.shots[i].strike, LayoutOf(i)));
+    for (std::size_t i : problem_.included)
+      x.push_back(ToVector(out_.shots[i].strike, LayoutOf(i)));
     return x;
   }
 
@@ -165,13 +165,14 @@ class ShotsFitter {
   void DropTheUnidentifiable() {
     while (!constants_.empty()) {
       ChooseShots();
-      const Eigen::MatrixXd cov = ConstantsCovariance(
-          problem_.LinearizeAll(StrikesOf(), ValuesOf()), constants_.size(), &out_.correlation_time);
+      const Eigen::MatrixXd cov =
+          ConstantsCovariance(problem_.LinearizeAll(StrikesOf(), ValuesOf()), constants_.size(),
+                              &out_.correlation_time);
       std::vector<Constant> kept;
       for (std::size_t c = 0; c < constants_.size(); ++c) {
-        ConstantFit& fit = *std::find_if(
-            out_.constants.begin(), out_.constants.end(),
-            [&](const ConstantFit& f) { return f.constant == constants_[c]; });
+        ConstantFit& fit =
+            *std::find_if(out_.constants.begin(), out_.constants.end(),
+                          [&](const ConstantFit& f) { return f.constant == constants_[c]; });
         JudgeIdentifiable(ConstantValue(out_.params, constants_[c]), cov(c, c),
                           options_.max_relative_sd, &fit);
         if (fit.identifiable) {
@@ -207,10 +208,10 @@ class ShotsFitter {
   const std::vector<bool>& held_out_;
   const FitProgress& progress_;
   ShotsFit out_;
-  FitOptions phase_options_;      // the options of the strikes' fits in the current phase
-  std::vector<Constant> constants_;  // those still fitted
+  FitOptions phase_options_;               // the options of the strikes' fits in the current phase
+  std::vector<Constant> constants_;        // those still fitted
   std::vector<std::size_t> all_, fitted_;  // every shot; those not held out
-  JointProblem problem_;  // over constants_ with phase_options_
+  JointProblem problem_;                   // over constants_ with phase_options_
 };
 
 }  // namespace

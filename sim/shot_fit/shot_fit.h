@@ -59,7 +59,7 @@ struct ShotsFit {
   std::vector<ShotFit> shots;
   physics::ModelParameters params;  // the given set with the fitted constants
   std::vector<ConstantFit> constants;
-  int constant_shots = 0;           // shots the constants were fitted on (outliers left out)
+  int constant_shots = 0;  // shots the constants were fitted on (outliers left out)
   // The residuals' integrated correlation time at the constants' solution [samples]: n
   // residuals tell what n / correlation_time independent ones would (1: independent).
   double correlation_time = 1.0;
@@ -68,7 +68,8 @@ struct ShotsFit {
 };
 
 // Told of each stage's progress: its name ("strikes", "constants", ...), the jobs done, of total.
-using FitProgress = std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
+using FitProgress =
+    std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
 
 // Fits the strike of every shot and, with options.constants, the shared constants over the shots
 // not held out (held_out[i]: shot i; empty: none). A shot that fails carries the reason; the

@@ -128,7 +128,8 @@ table::TableSimulation ShotModel::Run(const Strike& strike, double until) const 
 ShotErrors ErrorsOf(const ShotModel& model, const Strike& strike) {
   const TrackedShot& shot = model.shot();
   const std::vector<double> r = model.Residuals(strike, std::numeric_limits<double>::infinity());
-  if (r.empty()) throw std::invalid_argument("shot " + shot.id + ": the strike cannot be simulated");
+  if (r.empty())
+    throw std::invalid_argument("shot " + shot.id + ": the strike cannot be simulated");
   ShotErrors e;
   std::size_t k = 0;
   double all = 0.0;
@@ -148,8 +149,8 @@ ShotErrors Errors(const table::TableGeometry& table, const physics::ModelParamet
 }
 
 table::TableSimulation SimulateShot(const table::TableGeometry& table,
-                                    const physics::ModelParameters& params,
-                                    const TrackedShot& shot, const Strike& strike) {
+                                    const physics::ModelParameters& params, const TrackedShot& shot,
+                                    const Strike& strike) {
   return ShotModel(table, params, shot).Run(strike, shot.Duration());
 }
 

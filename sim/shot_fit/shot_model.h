@@ -54,8 +54,8 @@ ShotErrors Errors(const table::TableGeometry& table, const physics::ModelParamet
 // The simulation Errors compares: ball i of the scene is shot.balls[i], its clock starting at
 // the impact (table time t is shot time t + strike.time), run to the shot's end.
 table::TableSimulation SimulateShot(const table::TableGeometry& table,
-                                    const physics::ModelParameters& params,
-                                    const TrackedShot& shot, const Strike& strike);
+                                    const physics::ModelParameters& params, const TrackedShot& shot,
+                                    const Strike& strike);
 
 // The balls moved onto the playing surface and off each other where the tracking (or a fitted
 // offset) put them a millimetre wrong (touching balls, millimetre rounding): apart along their

@@ -45,10 +45,9 @@ TEST(Placed, MovesOverlappingBallsApartSymmetricallyAndBallsOntoTheSurface) {
   const table::TableGeometry table = Carom();
   const double r = 0.03;
   const Eigen::Vector2d middle(1.0, 0.7), along(0.6, 0.8);
-  const std::vector<Eigen::Vector2d> placed =
-      Placed(table, r,
-             {middle - 0.025 * along, middle + 0.025 * along, {table.length + 0.01, 0.2},
-              {2.0, 1.0}});
+  const std::vector<Eigen::Vector2d> placed = Placed(
+      table, r,
+      {middle - 0.025 * along, middle + 0.025 * along, {table.length + 0.01, 0.2}, {2.0, 1.0}});
   const Eigen::Vector2d apart = placed[1] - placed[0];
   EXPECT_NEAR(apart.norm(), 2.0 * r + 1e-6, 1e-12);
   EXPECT_NEAR(apart.normalized().dot(along), 1.0, 1e-12);

@@ -226,9 +226,9 @@ std::vector<double> DifferenceSteps(const Layout& layout, const std::vector<doub
 }
 
 StrikeBounds BoundsOf(const Layout& layout, double impact_lo, double impact_hi) {
-  StrikeBounds b{{0.01, -std::numeric_limits<double>::infinity(), -kTipLimit, -kTipLimit, impact_lo},
-                 {kMaxCueSpeed, std::numeric_limits<double>::infinity(), kTipLimit, kTipLimit,
-                  impact_hi}};
+  StrikeBounds b{
+      {0.01, -std::numeric_limits<double>::infinity(), -kTipLimit, -kTipLimit, impact_lo},
+      {kMaxCueSpeed, std::numeric_limits<double>::infinity(), kTipLimit, kTipLimit, impact_hi}};
   if (layout.elevation) {
     b.lo.push_back(0.0);
     b.hi.push_back(kMaxElevation);

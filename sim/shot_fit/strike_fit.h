@@ -41,19 +41,19 @@
 namespace billiard::shot_fit {
 
 struct FitOptions {
-  bool fit_elevation = false;     // else the cue is level
-  bool fit_start = true;          // each object ball's start within a few mm of its first sample
+  bool fit_elevation = false;  // else the cue is level
+  bool fit_start = true;       // each object ball's start within a few mm of its first sample
   // The cue ball's too, in the strikes reported; while constants are fitted it stays where it
   // was first seen (along its line its offset is nearly the impact's time).
   bool fit_cue_start = true;
   std::vector<Constant> constants;  // fitted jointly over the shots (FitShots)
-  int rounds = 1;                 // joint fits over whole shots, after the continuation
-  double max_relative_sd = 0.2;   // beyond it a constant is not identifiable
-  // Shots whose fit leaves an RMSE (all balls, over the horizon) above this multiple of the median are
-  // left out of the constants' fit: a shot the model cannot follow (a kiss the tracking lost,
-  // a double hit) would pull every constant.
+  int rounds = 1;                   // joint fits over whole shots, after the continuation
+  double max_relative_sd = 0.2;     // beyond it a constant is not identifiable
+  // Shots whose fit leaves an RMSE (all balls, over the horizon) above this multiple of the
+  // median are left out of the constants' fit: a shot the model cannot follow (a kiss the
+  // tracking lost, a double hit) would pull every constant.
   double outlier_factor = 3.0;
-  int max_iterations = 40;        // of each Ceres solve and of each joint solve
+  int max_iterations = 40;  // of each Ceres solve and of each joint solve
 };
 
 struct ShotFit {

@@ -70,8 +70,7 @@ TEST(StrikeVector, BoundsTheImpactBetweenTheFirstSamplesAndTheStartsWithinMillim
     EXPECT_EQ(bounds.lo[k], -0.004);
     EXPECT_EQ(bounds.hi[k], 0.004);
   }
-  EXPECT_EQ(DifferenceSteps(layout, std::vector<double>(layout.size(), 2.0)).size(),
-            layout.size());
+  EXPECT_EQ(DifferenceSteps(layout, std::vector<double>(layout.size(), 2.0)).size(), layout.size());
 }
 
 // A shot whose cue ball is never seen moving has no strike: the fit reports none, and the
@@ -93,8 +92,8 @@ TEST(StrikeFit, RecoversTheStrikeOfASimulatedShot) {
   truth.stroke.tip_side = 0.3 * p.ball.radius;
   truth.stroke.tip_height = 0.2 * p.ball.radius;
   truth.time = 0.011;
-  const TrackedShot shot = SimulateTrackedShot(
-      table, p, {{0.7, 0.4}, {2.0, 1.0}, {1.5, 0.3}}, 0, truth, 8.0, 0.02, 0.001, 0.002, 1);
+  const TrackedShot shot = SimulateTrackedShot(table, p, {{0.7, 0.4}, {2.0, 1.0}, {1.5, 0.3}}, 0,
+                                               truth, 8.0, 0.02, 0.001, 0.002, 1);
   const ShotFit fit = FitStrike(table, p, shot, FitOptions{});
   EXPECT_LT(fit.rmse_cue, 0.003);
   EXPECT_NEAR(fit.strike.stroke.speed, truth.stroke.speed, 0.03);

@@ -83,8 +83,7 @@ std::vector<TrackedShot> SyntheticShots(const table::TableGeometry& table,
   std::vector<TrackedShot> shots;
   for (const SyntheticScene& scene : SyntheticScenes(table, params.ball.radius, count, seed)) {
     shots.push_back(SimulateTrackedShot(table, params, scene.starts, 0, scene.strike, kDuration,
-                                        kSyntheticPeriod, kNoise, kThinning,
-                                        seed + shots.size()));
+                                        kSyntheticPeriod, kNoise, kThinning, seed + shots.size()));
     shots.back().id = std::to_string(shots.size());
   }
   return shots;

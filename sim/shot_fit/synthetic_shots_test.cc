@@ -27,7 +27,8 @@ TEST(SimulateTrackedShot, SamplesEveryFrameAndThinsWhereABallMovedLess) {
   const table::TableGeometry table = Carom();
   const physics::ModelParameters p = params::LoadParameters("carom");
   const std::vector<Eigen::Vector2d> starts = {{0.4, 0.3}, {2.5, 1.2}};  // ball 1 out of reach
-  const TrackedShot every = SimulateTrackedShot(table, p, starts, 0, Slow(), 4.0, 0.02, 0.0, 0.0, 1);
+  const TrackedShot every =
+      SimulateTrackedShot(table, p, starts, 0, Slow(), 4.0, 0.02, 0.0, 0.0, 1);
   ASSERT_EQ(every.balls.size(), 2u);
   EXPECT_EQ(every.cue, 0u);
   EXPECT_EQ(every.balls[0].t.size(), 201u);
@@ -53,9 +54,9 @@ TEST(SimulateTrackedShot, SamplesEveryFrameAndThinsWhereABallMovedLess) {
 TEST(SimulateTrackedShot, ScattersTheSamplesByTheNoise) {
   constexpr double kNoise = 0.001;
   const Eigen::Vector2d at(2.0, 1.0);
-  const TrackedShot shot = SimulateTrackedShot(Carom(), params::LoadParameters("carom"),
-                                               {{0.4, 0.3}, at}, 0, Slow(), 8.0, 0.02, kNoise,
-                                               0.0, 9);
+  const TrackedShot shot =
+      SimulateTrackedShot(Carom(), params::LoadParameters("carom"), {{0.4, 0.3}, at}, 0, Slow(),
+                          8.0, 0.02, kNoise, 0.0, 9);
   const TrackedBall& still = shot.balls[1];
   double sum = 0.0, squares = 0.0;
   for (const Eigen::Vector2d& q : still.position) {

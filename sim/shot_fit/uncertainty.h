@@ -29,12 +29,12 @@ namespace billiard::shot_fit {
 
 struct ConstantFit {
   Constant constant = Constant::kMu;
-  double prior = 0.0;       // the value of the given parameter set
-  double value = 0.0;       // fitted, or the prior when not identifiable
+  double prior = 0.0;  // the value of the given parameter set
+  double value = 0.0;  // fitted, or the prior when not identifiable
   // Standard uncertainty: the marginal covariance inflated by the residuals' correlation time
   // (ShotsFit::correlation_time); infinite when the shots do not excite the constant.
   double sd = 0.0;
-  bool at_bound = false;    // the fit ran to the edge of the constant's range (AtRangeBound)
+  bool at_bound = false;  // the fit ran to the edge of the constant's range (AtRangeBound)
   bool identifiable = false;
 };
 

@@ -51,8 +51,7 @@ int CalledBall(const table_state_t& estimate, std::int32_t track_id,
 
 // Ball in hand: `balls` with the cue ball where the planner says, `asked`; on another ball (the
 // estimator's error), the nearest free place toward the head rail. Where it went into *placed.
-std::vector<table::SceneBall> WithCueBallPlaced(const table::TableGeometry& geometry,
-                                                double radius,
+std::vector<table::SceneBall> WithCueBallPlaced(const table::TableGeometry& geometry, double radius,
                                                 const std::vector<table::SceneBall>& balls,
                                                 const Eigen::Vector2d& asked,
                                                 Eigen::Vector2d* placed) {
@@ -204,9 +203,9 @@ GameResult TableSimNode::PlayRack(int rack, const table::TableGeometry& geometry
   game.seed = options_.seed + static_cast<std::uint32_t>(rack);
   const bool drill = options_.game == "drill";
   std::vector<table::SceneBall> balls =
-      drill ? InTheKitchen(geometry, radius,
-                           table::SeededNineBallLayout(geometry, radius, game.seed))
-            : table::Rack(table::RackKind::kNineBall, geometry, radius, game.seed);
+      drill
+          ? InTheKitchen(geometry, radius, table::SeededNineBallLayout(geometry, radius, game.seed))
+          : table::Rack(table::RackKind::kNineBall, geometry, radius, game.seed);
   log_("rack " + std::to_string(rack) + " (" + options_.game + ", seed " +
        std::to_string(game.seed) + ")");
   // The new layout shown until the estimator has forgotten the last one's balls.

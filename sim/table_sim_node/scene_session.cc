@@ -68,7 +68,8 @@ SceneResult TableSimNode::RunScene() {
   health_.Publish(lcm_);
   tracking_ = TrackingReport{};
   for (const table::SceneBall& b : balls) tracking_->balls.push_back({b.id});
-  SceneResult result = options_.pots.empty() ? PlayBreak(geometry, balls) : PlayPots(geometry, balls);
+  SceneResult result =
+      options_.pots.empty() ? PlayBreak(geometry, balls) : PlayPots(geometry, balls);
   health_.PublishIfDue(lcm_);
   return result;
 }

@@ -109,10 +109,10 @@ TEST(GameSummary, TheRacksTotalsAndTheDecisions) {
   EXPECT_EQ(s["fouls"], 1);
   EXPECT_EQ(s["visits"], 4);
   EXPECT_DOUBLE_EQ(s["balls_per_visit"].get<double>(), 2.0 / 4.0);
-  EXPECT_EQ(s["decisions"], 3);                     // 20, 40 and 30 ms
+  EXPECT_EQ(s["decisions"], 3);  // 20, 40 and 30 ms
   EXPECT_EQ(s["median_decision_ms"], 30.0);
   EXPECT_EQ(s["max_decision_ms"], 40.0);
-  EXPECT_EQ(s["median_position_rms_mm"], 3.0);      // of 2, 3 and 4 mm
+  EXPECT_EQ(s["median_position_rms_mm"], 3.0);  // of 2, 3 and 4 mm
   EXPECT_EQ(s["max_position_error_mm"], 8.0);
   EXPECT_EQ(s["misidentified_ball_decisions"], 1);
 }

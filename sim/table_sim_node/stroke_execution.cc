@@ -16,9 +16,9 @@ StrokeExecution::StrokeExecution(const params::ExecutionNoise& noise, double bal
 
 physics::CueStroke StrokeExecution::Executed(const cue_command_t& command) {
   std::normal_distribution<double> unit(0.0, 1.0);
-  return params::Perturbed({command.cue_speed, command.heading, command.tip_side,
-                            command.tip_height, command.elevation},
-                           noise_, ball_radius_, [&] { return unit(random_); });
+  return params::Perturbed(
+      {command.cue_speed, command.heading, command.tip_side, command.tip_height, command.elevation},
+      noise_, ball_radius_, [&] { return unit(random_); });
 }
 
 std::vector<table::SceneBall> StrokeExecution::Struck(const std::vector<table::SceneBall>& balls,

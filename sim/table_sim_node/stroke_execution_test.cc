@@ -55,8 +55,8 @@ TEST(StrokeExecution, TheSameSeedExecutesTheSameCommandsTheSameWay) {
     const physics::CueStroke sc = c.Executed(command);
     EXPECT_TRUE(Same(sa, sb)) << k;
     EXPECT_FALSE(Same(sa, sc)) << k;
-    EXPECT_FALSE(Same(sa, {command.cue_speed, command.heading, command.tip_side,
-                           command.tip_height, command.elevation}))
+    EXPECT_FALSE(Same(sa, {command.cue_speed, command.heading, command.tip_side, command.tip_height,
+                           command.elevation}))
         << k;
     EXPECT_NEAR(sa.speed, command.cue_speed, 0.2 * command.cue_speed);
     EXPECT_NEAR(sa.heading, command.heading, 0.05);
