@@ -1,18 +1,18 @@
 // A session of the table simulator as its command line starts it: the options of
 // build/bin/table_sim_node (and of `billiard loop`, which runs the three nodes in one process),
-// the session run over LCM, and its summary as one JSON object.
+// the session run over LCM, and its summary as one JSON object (session_summary.h).
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <lcm/lcm-cpp.hpp>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/physics/parameters.h"
+#include "sim/table_sim_node/session_summary.h"
 #include "sim/table_sim_node/table_sim_node.h"
 
 namespace billiard::table_sim_node {
@@ -58,24 +58,5 @@ using InProcessNodes = std::function<std::function<bool()>(
 // "scene"; a scene that does not load or fit is exit 2.
 int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
                       const InProcessNodes& in_process = nullptr);
-
-// What the session measured: the shots, the misses' median, max, mean and spread, the node's
-// counters and the wall time.
-nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_status_t& health,
-                              double wall_s);
-
-// What a game adds (the summary's "game"): each rack's shots (the call, what dropped, the foul,
-// the decision time and the estimator's error on the table it was made from) and totals, and
-// "summary": racks cleared, run-outs (cleared in one visit), pots per attempt, fouls, balls per
-// visit, the median and largest decision time, the estimator's median RMS and largest position
-// error at the decisions and the balls it misidentified there.
-nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind);
-
-// What a whole-table session adds (the summary's "scene"): the events, where every ball ended
-// (and the pocket it dropped into), how the estimator tracked each ball (RMS and largest error,
-// frames without a track, swaps of tracks between balls), and with pots, "pots": each one's ball
-// and pocket, the planner's status, reason, kind, margin and speed window, whether it dropped
-// (and where), a scratch, the cue ball's first contact, and its rest against the plan's.
-nlohmann::json SceneSummary(const SceneResult& scene, const std::string& name);
 
 }  // namespace billiard::table_sim_node

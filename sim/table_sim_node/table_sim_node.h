@@ -21,6 +21,11 @@
 // The replies are decoded and checked (message_checks.h); only the latest of each is kept. Counts
 // go out on NODE_STATUS (node_health.h), the first before the first frame with the clock among
 // them (messages::kRealtimeClockSetting), so that a log of the session says how it was clocked.
+//
+// The class is implemented in three files, by the sessions it runs: table_sim_node.cc (the link
+// to the nodes, the frames, the requests, the shots to random targets), scene_session.cc
+// (RunScene) and game_session.cc (RunGame). What a frame shows is truth_frame.h's, how a command
+// is executed stroke_execution.h's, and a game shot's verdict game_judgement.h's.
 #pragma once
 
 #include <Eigen/Core>
@@ -49,6 +54,8 @@
 #include "sim/table/scene.h"
 #include "sim/table/table_geometry.h"
 #include "sim/table/table_simulation.h"
+#include "sim/table_sim_node/stroke_execution.h"
+#include "sim/table_sim_node/truth_frame.h"
 
 namespace billiard::table_sim_node {
 
@@ -62,6 +69,9 @@ struct FaultInjection {
   double duplicate = 0.0;       // a frame or a request is sent twice
   std::uint32_t seed = 7;
 };
+
+// The table of the "break" scene and of the games.
+inline constexpr char kBreakTable[] = "pool-9ft";
 
 // A pot to play in a whole-table session: ball `ball` (the truth's id) into pocket `pocket`.
 struct PotShot {
@@ -249,11 +259,6 @@ class TableSimNode {
   // Waits for the peers' NODE_STATUS and compares their physics and version with the
   // simulator's.
   void AwaitPeersOfTheSameBuildAndPhysics();
-  // A ball on the table and its true state at any sim time.
-  struct TruthBall {
-    int id;
-    std::function<physics::BallState(double)> state;
-  };
   // Publishes the balls' true states at time t (sim time) and the camera's frame of them and, in
   // lockstep, waits for the estimator's state of that frame (and scores it, with tracking_).
   void Frame(const std::vector<TruthBall>& balls, double t);
@@ -274,6 +279,14 @@ class TableSimNode {
                                  const std::vector<table::SceneBall>& balls,
                                  const cue_command_t& command,
                                  const table::TableSimulationOptions& motion);
+  // A whole-table session's pots in turn (options.pots) from `balls`, which become those left.
+  SceneResult PlayPots(const table::TableGeometry& geometry, std::vector<table::SceneBall>& balls);
+  // A whole-table session's one strike: the cue ball rolled into the ball nearest it.
+  SceneResult PlayBreak(const table::TableGeometry& geometry,
+                        const std::vector<table::SceneBall>& balls);
+  // Asks the planner for pot `pot` (request `id`) on `balls`; its plan into `result`.
+  cue_command_t RequestPot(int id, const PotShot& pot, const std::vector<table::SceneBall>& balls,
+                           PotResult& result);
   // Asks for pot `pot` (request `id`) on `balls`, plays it out and scores it; `balls` become
   // those left on the table, at rest.
   PotResult PlayPot(int id, const PotShot& pot, const table::TableGeometry& geometry,
@@ -282,6 +295,13 @@ class TableSimNode {
   // of the planner as request `id` (a point request: the cue ball's centre at contact).
   cue_command_t RequestBreak(int id, const std::vector<table::SceneBall>& balls,
                              ShotResult& result);
+  // Rack `rack` of options.game played until it is cleared or the shot limit, its requests
+  // numbered from *id on.
+  GameResult PlayRack(int rack, const table::TableGeometry& geometry, int* id);
+  // Asks the planner for game shot `shot` (request `id`): the break, or its choice under
+  // nine-ball rules (with ball in hand after a foul).
+  cue_command_t RequestGameShot(int id, const GameShot& shot,
+                                const std::vector<table::SceneBall>& balls);
   // Plays shot `shot` of a game on `balls` (at rest; the cue ball on the table) and judges it
   // under nine-ball rules; `balls` become those left, the cue ball back in the kitchen after a
   // scratch and the 9 on its spot after a foul that dropped it.
@@ -298,7 +318,6 @@ class TableSimNode {
   template <class Message>
   void Publish(const char* channel, const Message& message);
   std::int64_t Utime(double t) const;
-  physics::CueStroke WithNoise(physics::CueStroke stroke);
 
   lcm::LCM& lcm_;
   physics::ModelParameters params_;  // the nodes'
@@ -311,7 +330,7 @@ class TableSimNode {
   // the noise on leaves the targets as they were, and a run with noise differs from one without
   // by the noise alone.
   std::mt19937 target_rng_;
-  std::mt19937 noise_rng_;
+  StrokeExecution execution_;
   std::mt19937 fault_rng_;
   std::function<bool()> alongside_;
   std::vector<lcm::Subscription*> subscriptions_;

@@ -1,0 +1,251 @@
+// TableSimNode's games (RunGame, table_sim_node.h): racks played shot by shot, each shot chosen
+// by the planner, executed, judged under nine-ball rules (game_judgement.h), and the estimator's
+// view at each decision scored against the truth.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include "lcmtypes/message_checks.h"
+#include "lcmtypes/names.h"
+#include "sim/params/table_specs.h"
+#include "sim/table/rack.h"
+#include "sim/table_sim_node/game_judgement.h"
+#include "sim/table_sim_node/session_balls.h"
+#include "sim/table_sim_node/stroke_execution.h"
+#include "sim/table_sim_node/table_sim_node.h"
+
+namespace billiard::table_sim_node {
+
+namespace {
+
+// A new rack's layout is shown this many settle times before its first shot: longer than the
+// estimator coasts the last rack's tracks (estimator::TrackerOptions::max_coast).
+constexpr int kNewLayoutSettles = 4;
+
+// The lowest object ball of `balls` (99 when there is none).
+int LowestObjectBall(const std::vector<table::SceneBall>& balls) {
+  return std::accumulate(balls.begin(), balls.end(), 99, [](int low, const auto& b) {
+    return b.id == kCueBall ? low : std::min(low, b.id);
+  });
+}
+
+// The called ball: the truth ball nearest the track the planner named, `called` where the
+// estimate has no such track.
+int CalledBall(const table_state_t& estimate, std::int32_t track_id,
+               const std::vector<table::SceneBall>& balls, int called) {
+  for (const ball_state_t& track : estimate.balls) {
+    if (track.ball_id != track_id) continue;
+    double nearest = 1e300;
+    for (const table::SceneBall& b : balls) {
+      const double d = std::hypot(track.position[0] - b.state[physics::kX],
+                                  track.position[1] - b.state[physics::kY]);
+      if (b.id != kCueBall && d < nearest) {
+        nearest = d;
+        called = b.id;
+      }
+    }
+  }
+  return called;
+}
+
+// Ball in hand: `balls` with the cue ball where the planner says, `asked`; on another ball (the
+// estimator's error), the nearest free place toward the head rail. Where it went into *placed.
+std::vector<table::SceneBall> WithCueBallPlaced(const table::TableGeometry& geometry, double radius,
+                                                const std::vector<table::SceneBall>& balls,
+                                                const Eigen::Vector2d& asked,
+                                                Eigen::Vector2d* placed) {
+  std::vector<table::SceneBall> others;
+  for (const table::SceneBall& b : balls) {
+    if (b.id != kCueBall) others.push_back(b);
+  }
+  *placed = table::FreeSpotFrom(geometry, radius, others, asked, {-kPlacementStep, 0.0}, 0.0);
+  return table::WithBallAt(others, kCueBall, *placed);
+}
+
+// What the table did with a game shot: the balls left at rest, the object balls dropped
+// (ascending), whether the cue ball dropped, and whether the ball `called` dropped in `pocket`.
+struct TableOutcome {
+  std::vector<table::SceneBall> rest;
+  std::vector<int> potted;
+  bool scratch = false;
+  bool called_potted = false;
+};
+
+TableOutcome OutcomeOf(const table::TableSimulation& sim, const table::TableGeometry& geometry,
+                       double radius, int called, const std::string& called_pocket) {
+  TableOutcome outcome;
+  for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+    std::optional<std::string> pocket = sim.pocket(i);
+    // A ball come to rest over a pocket's mouth hangs there in the model, where a real one
+    // would drop (table::TableGeometry::OnSurface): it drops in that pocket.
+    const Eigen::Vector2d at = sim.State(i).head<2>();
+    if (!pocket && !geometry.OnSurface(at, radius)) pocket = NearestPocket(geometry, at);
+    if (!pocket) {
+      outcome.rest.push_back({sim.id(i), sim.State(i)});
+    } else if (sim.id(i) == kCueBall) {
+      outcome.scratch = true;
+    } else {
+      outcome.potted.push_back(sim.id(i));
+      if (sim.id(i) == called && *pocket == called_pocket) outcome.called_potted = true;
+    }
+  }
+  std::sort(outcome.potted.begin(), outcome.potted.end());
+  return outcome;
+}
+
+// The log's line of a game shot played.
+std::string GameShotLine(const GameShot& shot) {
+  std::ostringstream line;
+  line.precision(3);
+  line << "shot " << shot.number << (shot.break_shot ? " (break)" : "") << ": ";
+  if (shot.called >= 0) {
+    line << "ball " << shot.called << " in " << shot.pocket << " at p " << shot.predicted << ", ";
+  }
+  line << (shot.potted.empty() ? "nothing" : std::to_string(shot.potted.size()) + " ball(s)")
+       << " potted" << (shot.called_potted ? " (the called one)" : "")
+       << (shot.foul ? ", foul: " + shot.foul_reason : "") << "; estimator rms "
+       << shot.position_rms_mm << " mm";
+  return line.str();
+}
+
+}  // namespace
+
+void TableSimNode::ScoreEstimate(const std::vector<table::SceneBall>& balls, GameShot& shot) const {
+  double sum = 0.0;
+  for (const table::SceneBall& b : balls) {
+    const ball_state_t* nearest = nullptr;
+    double d = 1e300;
+    for (const ball_state_t& track : state_->balls) {
+      const double e = std::hypot(track.position[0] - b.state[physics::kX],
+                                  track.position[1] - b.state[physics::kY]);
+      if (e < d) {
+        d = e;
+        nearest = &track;
+      }
+    }
+    if (nearest == nullptr || d > params_.ball.radius) {
+      ++shot.untracked;
+      continue;
+    }
+    sum += d * d;
+    shot.position_max_mm = std::max(shot.position_max_mm, 1e3 * d);
+    shot.misidentified += nearest->ball_class != TruthClass(b.id);
+  }
+  const int tracked = static_cast<int>(balls.size()) - shot.untracked;
+  if (tracked > 0) shot.position_rms_mm = 1e3 * std::sqrt(sum / tracked);
+}
+
+cue_command_t TableSimNode::RequestGameShot(int id, const GameShot& shot,
+                                            const std::vector<table::SceneBall>& balls) {
+  ShotResult asked;
+  if (shot.break_shot) return RequestBreak(id, balls, asked);
+  shot_request_t ask{};
+  ask.ball_id = shot_request_t::BALL_BY_CLASS;
+  ask.ball_class = ball_state_t::CLASS_CUE;
+  ask.mode = shot_request_t::MODE_CHOOSE;
+  ask.rules = shot_request_t::RULES_NINE_BALL;
+  ask.ball_in_hand = shot.ball_in_hand ? 1 : 0;
+  return Request(id, balls, Find(balls, kCueBall)->state.head<2>(), ask, asked);
+}
+
+GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeometry& geometry,
+                                    std::vector<table::SceneBall>& balls, bool* nine_legal) {
+  const double radius = params_.ball.radius;
+  const cue_command_t command = RequestGameShot(id, shot, balls);
+  ScoreEstimate(balls, shot);
+  shot.status = messages::CueCommandStatusName(command.status);
+  shot.reason = command.reason;
+  shot.decision_ms = 1e-3 * command.solve_us;
+  if (command.status != cue_command_t::STATUS_OK) {
+    log_("shot " + std::to_string(shot.number) + " refused: " + shot.status + ", " + shot.reason);
+    return shot;
+  }
+  if (!shot.break_shot && command.object_ball_id >= 0) {
+    shot.called = CalledBall(*state_, command.object_ball_id, balls, shot.called);
+    shot.pocket = command.pocket;
+    shot.kind = messages::PotKindName(command.kind);
+    shot.predicted = command.success_probability;
+  }
+  const int lowest = LowestObjectBall(balls);
+  if (command.has_cue_placement) {
+    Eigen::Vector2d placed;
+    balls = WithCueBallPlaced(geometry, radius, balls,
+                              {command.cue_placement[0], command.cue_placement[1]}, &placed);
+    shot.cue_placement = placed;
+  }
+  const table::TableSimulation sim = PlayOut(geometry, balls, command, SceneMotion(plant_));
+  shot.first_contact = table::FirstBallMet(sim.events(), kCueBall);
+  TableOutcome outcome = OutcomeOf(sim, geometry, radius, shot.called, shot.pocket);
+  shot.potted = outcome.potted;
+  const GameVerdict verdict =
+      JudgeNineBallShot({shot.break_shot, lowest, outcome.called_potted, shot.first_contact,
+                         outcome.potted, outcome.scratch},
+                        geometry, radius, outcome.rest);
+  shot.foul_reason = verdict.foul_reason;
+  shot.foul = !shot.foul_reason.empty();
+  shot.called_potted = verdict.called_potted;
+  *nine_legal = verdict.nine_legal;
+  if (verdict.nine_spot) {
+    table::SceneBall spotted{9, physics::BallState::Zero()};
+    spotted.state.head<2>() = *verdict.nine_spot;
+    outcome.rest.push_back(spotted);
+  }
+  if (outcome.scratch) outcome.rest = InTheKitchen(geometry, radius, std::move(outcome.rest));
+  balls = std::move(outcome.rest);
+  log_(GameShotLine(shot));
+  return shot;
+}
+
+GameResult TableSimNode::PlayRack(int rack, const table::TableGeometry& geometry, int* id) {
+  const double radius = params_.ball.radius;
+  GameResult game;
+  game.seed = options_.seed + static_cast<std::uint32_t>(rack);
+  const bool drill = options_.game == "drill";
+  std::vector<table::SceneBall> balls =
+      drill
+          ? InTheKitchen(geometry, radius, table::SeededNineBallLayout(geometry, radius, game.seed))
+          : table::Rack(table::RackKind::kNineBall, geometry, radius, game.seed);
+  log_("rack " + std::to_string(rack) + " (" + options_.game + ", seed " +
+       std::to_string(game.seed) + ")");
+  // The new layout shown until the estimator has forgotten the last one's balls.
+  for (int k = 0; k < kNewLayoutSettles; ++k) ShowAtRest(balls);
+  bool ball_in_hand = drill, new_visit = true, nine_legal = false;
+  int visit = 1;
+  for (int n = 0; n < options_.shot_limit; ++n) {
+    if (new_visit) game.visits = visit;
+    GameShot shot;
+    shot.number = n + 1;
+    shot.visit = visit;
+    shot.break_shot = !drill && n == 0;
+    shot.ball_in_hand = ball_in_hand;
+    shot = PlayGameShot((*id)++, shot, geometry, balls, &nine_legal);
+    game.shots.push_back(shot);
+    const bool object_balls_left = std::any_of(
+        balls.begin(), balls.end(), [](const table::SceneBall& b) { return b.id != kCueBall; });
+    if (nine_legal || !object_balls_left) {
+      game.cleared = true;
+      break;
+    }
+    ball_in_hand = shot.foul;
+    new_visit = shot.foul || shot.potted.empty();
+    if (new_visit) ++visit;
+  }
+  log_("rack " + std::to_string(rack) + (game.cleared ? " cleared" : " not cleared") + " in " +
+       std::to_string(game.shots.size()) + " shots, " + std::to_string(game.visits) + " visits");
+  return game;
+}
+
+std::vector<GameResult> TableSimNode::RunGame() {
+  AwaitPeersOfTheSameBuildAndPhysics();
+  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(kBreakTable));
+  health_.Set(messages::kRealtimeClockSetting, options_.lockstep ? 0 : 1);
+  health_.Publish(lcm_);
+  std::vector<GameResult> games;
+  int id = 0;  // request ids, unique over the session
+  for (int rack = 0; rack < options_.racks; ++rack) games.push_back(PlayRack(rack, geometry, &id));
+  health_.PublishIfDue(lcm_);
+  return games;
+}
+
+}  // namespace billiard::table_sim_node

@@ -1,0 +1,72 @@
+#include "sim/table_sim_node/session_balls.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "lcmtypes/billiard/ball_state_t.hpp"
+#include "sim/params/table_specs.h"
+
+namespace billiard::table_sim_node {
+namespace {
+
+constexpr double kRadius = 0.028575;
+
+table::TableGeometry Pool() { return table::BuildTable(params::LoadTableSpec("pool-9ft")); }
+
+table::SceneBall At(int id, double x, double y) {
+  table::SceneBall b;
+  b.id = id;
+  b.state.head<2>() = Eigen::Vector2d(x, y);
+  return b;
+}
+
+TEST(SessionBalls, AnObjectBallsClassIsItsNumberAndTheCueBallsIsCue) {
+  EXPECT_EQ(TruthClass(kCueBall), ball_state_t::CLASS_CUE);
+  EXPECT_EQ(TruthClass(9), 9);
+  EXPECT_EQ(TruthClass(15), 15);
+}
+
+TEST(SessionBalls, FindsABallByItsIdAndTheObjectBallNearestTheCueBall) {
+  const std::vector<table::SceneBall> balls = {At(3, 2.0, 0.6), At(kCueBall, 0.5, 0.6),
+                                               At(7, 0.9, 1.0), At(5, 1.0, 0.6)};
+  EXPECT_EQ(Find(balls, 7)->id, 7);
+  EXPECT_EQ(Find(balls, 8), balls.end());
+  EXPECT_EQ(NearestObjectBall(balls, "s").id, 5);  // 0.5 m away; ball 7 is 0.57 m
+  try {
+    NearestObjectBall({At(kCueBall, 0.5, 0.6)}, "lonely.json");
+    ADD_FAILURE() << "no object ball, no throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "lonely.json: no ball to strike at");
+  }
+}
+
+TEST(SessionBalls, TheNearestPocketOfAPointIsTheCornerOrSideItLiesBy) {
+  const table::TableGeometry table = Pool();
+  EXPECT_EQ(NearestPocket(table, {0.02, 0.03}), "lower_left");
+  EXPECT_EQ(NearestPocket(table, {0.5 * table.length + 0.01, 0.02}), "lower_middle");
+  EXPECT_EQ(NearestPocket(table, {table.length, table.width}), "upper_right");
+}
+
+// After a scratch the cue ball goes on the head spot (x = 1/4 length, the middle of the width);
+// a ball there sends it toward the head rail, clear of that ball. Its old place, if any, goes.
+TEST(SessionBalls, TheCueBallGoesBackOnTheHeadSpotOrBehindIt) {
+  const table::TableGeometry table = Pool();
+  const Eigen::Vector2d head_spot(0.25 * table.length, 0.5 * table.width);
+  const std::vector<table::SceneBall> free =
+      InTheKitchen(table, kRadius, {At(kCueBall, 2.0, 0.3), At(4, 1.5, 0.6)});
+  ASSERT_EQ(free.size(), 2u);
+  EXPECT_EQ(Find(free, kCueBall)->state.head<2>(), head_spot);
+
+  const std::vector<table::SceneBall> blocked =
+      InTheKitchen(table, kRadius, {At(4, head_spot.x(), head_spot.y())});
+  ASSERT_EQ(blocked.size(), 2u);
+  const Eigen::Vector2d cue = Find(blocked, kCueBall)->state.head<2>();
+  EXPECT_LT(cue.x(), head_spot.x());
+  EXPECT_EQ(cue.y(), head_spot.y());
+  EXPECT_GE(head_spot.x() - cue.x(), 2.0 * kRadius + kPlacementClearance);
+  EXPECT_LT(head_spot.x() - cue.x(), 2.0 * kRadius + kPlacementClearance + kPlacementStep);
+}
+
+}  // namespace
+}  // namespace billiard::table_sim_node

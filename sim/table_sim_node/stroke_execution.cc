@@ -1,0 +1,52 @@
+#include "sim/table_sim_node/stroke_execution.h"
+
+#include "sim/model_choice/model_choice.h"
+#include "sim/table_sim_node/session_balls.h"
+
+namespace billiard::table_sim_node {
+
+std::mt19937 NoiseStream(std::uint32_t seed) {
+  std::seed_seq sequence{seed, std::uint32_t{1}};
+  return std::mt19937(sequence);
+}
+
+StrokeExecution::StrokeExecution(const params::ExecutionNoise& noise, double ball_radius,
+                                 std::uint32_t seed)
+    : noise_(noise), ball_radius_(ball_radius), random_(NoiseStream(seed)) {}
+
+physics::CueStroke StrokeExecution::Executed(const cue_command_t& command) {
+  std::normal_distribution<double> unit(0.0, 1.0);
+  return params::Perturbed(
+      {command.cue_speed, command.heading, command.tip_side, command.tip_height, command.elevation},
+      noise_, ball_radius_, [&] { return unit(random_); });
+}
+
+std::vector<table::SceneBall> StrokeExecution::Struck(const std::vector<table::SceneBall>& balls,
+                                                      const cue_command_t& command,
+                                                      const physics::ModelParameters& plant) {
+  std::vector<table::SceneBall> struck = balls;
+  if (command.status == cue_command_t::STATUS_OK) {
+    const physics::CueStroke stroke = Executed(command);
+    for (table::SceneBall& b : struck) {
+      if (b.id == kCueBall) b.state = physics::StrikeBall(stroke, b.state.head<2>(), plant);
+    }
+  }
+  return struck;
+}
+
+table::TableSimulationOptions SceneMotion(const physics::ModelParameters& plant) {
+  table::TableSimulationOptions motion;
+  motion.five_dof = model_choice::TableMotion(plant);
+  return motion;
+}
+
+table::TableSimulation PlayedToRest(const table::TableGeometry& geometry,
+                                    const physics::ModelParameters& plant,
+                                    const std::vector<table::SceneBall>& struck,
+                                    const table::TableSimulationOptions& motion) {
+  table::TableSimulation sim(geometry, plant, struck, motion);
+  sim.Run(kLongestScene);
+  return sim;
+}
+
+}  // namespace billiard::table_sim_node

@@ -1,0 +1,109 @@
+#include "sim/table_sim_node/stroke_execution.h"
+
+#include <gtest/gtest.h>
+
+#include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
+#include "sim/table_sim_node/session_balls.h"
+
+namespace billiard::table_sim_node {
+namespace {
+
+cue_command_t Command(double speed, double heading) {
+  cue_command_t command{};
+  command.status = cue_command_t::STATUS_OK;
+  command.cue_speed = speed;
+  command.heading = heading;
+  command.tip_side = 0.004;
+  command.tip_height = -0.003;
+  return command;
+}
+
+bool Same(const physics::CueStroke& a, const physics::CueStroke& b) {
+  return a.speed == b.speed && a.heading == b.heading && a.tip_side == b.tip_side &&
+         a.tip_height == b.tip_height && a.elevation == b.elevation;
+}
+
+const params::ExecutionNoise& Robot() {
+  static const params::ExecutionNoise noise = params::LoadNoise(params::kDefaultNoise);
+  return noise;
+}
+
+// The noise's stream is not the targets' (seeded with the seed itself): turning the noise on
+// leaves the targets as they were.
+TEST(NoiseStream, IsItsSeedsOwnAndNotTheTargetsStream) {
+  std::mt19937 noise = NoiseStream(5), again = NoiseStream(5), targets(5);
+  const std::uint32_t first = noise();
+  EXPECT_EQ(first, again());
+  EXPECT_NE(first, targets());
+  EXPECT_NE(first, NoiseStream(6)());
+}
+
+TEST(StrokeExecution, WithoutNoiseExecutesTheStrokeAsCommanded) {
+  StrokeExecution execution(params::ExecutionNoise{}, 0.028575, 1);
+  const physics::CueStroke stroke = execution.Executed(Command(3.0, 0.7));
+  EXPECT_TRUE(Same(stroke, {3.0, 0.7, 0.004, -0.003, 0.0}));
+}
+
+// The same seed executes the same commands the same way, stroke after stroke; another seed
+// otherwise. The robot's noise is small: a few per cent of the speed, a degree of heading.
+TEST(StrokeExecution, TheSameSeedExecutesTheSameCommandsTheSameWay) {
+  StrokeExecution a(Robot(), 0.028575, 3), b(Robot(), 0.028575, 3), c(Robot(), 0.028575, 4);
+  for (int k = 0; k < 5; ++k) {
+    const cue_command_t command = Command(2.0 + 0.5 * k, 0.3 * k);
+    const physics::CueStroke sa = a.Executed(command), sb = b.Executed(command);
+    const physics::CueStroke sc = c.Executed(command);
+    EXPECT_TRUE(Same(sa, sb)) << k;
+    EXPECT_FALSE(Same(sa, sc)) << k;
+    EXPECT_FALSE(Same(sa, {command.cue_speed, command.heading, command.tip_side, command.tip_height,
+                           command.elevation}))
+        << k;
+    EXPECT_NEAR(sa.speed, command.cue_speed, 0.2 * command.cue_speed);
+    EXPECT_NEAR(sa.heading, command.heading, 0.05);
+  }
+}
+
+// A refusal strikes nothing and draws no noise; a command strikes the cue ball alone.
+TEST(StrokeExecution, StrikesTheCueBallAloneAndNothingOnARefusal) {
+  const physics::ModelParameters plant = params::LoadParameters("pool");
+  std::vector<table::SceneBall> balls(2);
+  balls[0].id = 4;
+  balls[0].state.head<2>() = Eigen::Vector2d(1.5, 0.6);
+  balls[1].id = kCueBall;
+  balls[1].state.head<2>() = Eigen::Vector2d(0.6, 0.6);
+  StrokeExecution execution(Robot(), plant.ball.radius, 2), twin(Robot(), plant.ball.radius, 2);
+
+  cue_command_t refusal = Command(3.0, 0.0);
+  refusal.status = cue_command_t::STATUS_UNREACHABLE;
+  const std::vector<table::SceneBall> unstruck = execution.Struck(balls, refusal, plant);
+  EXPECT_EQ(unstruck[1].state, balls[1].state);
+
+  const std::vector<table::SceneBall> struck = execution.Struck(balls, Command(3.0, 0.0), plant);
+  EXPECT_EQ(struck[0].state, balls[0].state);
+  EXPECT_EQ(struck[1].state,
+            physics::StrikeBall(twin.Executed(Command(3.0, 0.0)), {0.6, 0.6}, plant));
+}
+
+// The table played to rest: every ball rests or has dropped, and the same strike plays the same.
+TEST(PlayedToRest, RunsTheTableUntilEveryBallRestsTheSameEveryTime) {
+  const physics::ModelParameters plant = params::LoadParameters("pool");
+  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  std::vector<table::SceneBall> balls(2);
+  balls[0].id = 4;
+  balls[0].state.head<2>() = Eigen::Vector2d(1.5, 0.6);
+  balls[1].id = kCueBall;
+  balls[1].state = physics::StrikeBall({3.0, 0.1, 0.0, 0.0, 0.0}, {0.6, 0.6}, plant);
+  const table::TableSimulation a = PlayedToRest(geometry, plant, balls, SceneMotion(plant));
+  const table::TableSimulation b = PlayedToRest(geometry, plant, balls, SceneMotion(plant));
+  ASSERT_EQ(a.ball_count(), 2u);
+  for (std::size_t i = 0; i < a.ball_count(); ++i) {
+    if (!a.pocket(i)) {
+      EXPECT_LT(a.State(i).tail<5>().norm(), 1e-9) << i;
+    }
+    EXPECT_EQ(a.State(i), b.State(i)) << i;
+  }
+  EXPECT_EQ(a.events().size(), b.events().size());
+}
+
+}  // namespace
+}  // namespace billiard::table_sim_node
