@@ -5,11 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "planner/node/command_writing.h"
+#include "planner/node/planner_node.h"
+#include "planner/players/players.h"
 #include "planner/node/testing/node_harness.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/physics/ball_state.h"
@@ -126,7 +129,7 @@ TEST_F(PlannerNodePotTest, BadChoiceRequestsAreRefusedWithAReasonAndTheNodeKeeps
 
 // The 5 seen over the upper-right pocket's mouth (the estimator's last frames of it): no ball to
 // play, so under nine-ball rules the 9, where the pot table's 5 is, is the lowest on the table
-// and the one to pot.
+// and the one to pot, whoever chooses.
 TEST_F(PlannerNodePotTest, ABallSeenDroppingIntoAPocketIsLeftOut) {
   table_state_t latest{};
   const Eigen::Vector2d mouth(table_.length - 0.01, table_.width - 0.01);
@@ -137,10 +140,26 @@ TEST_F(PlannerNodePotTest, ABallSeenDroppingIntoAPocketIsLeftOut) {
   const shot_request_t q = Choose(1, false);
   PlannerNodeOptions options;
   batch::ThreadPool pool(2);
-  const cue_command_t c =
-      AnswerChoice(q, latest.balls[0], latest, table_, params_, options, pool, ReplyTo(q));
-  ASSERT_EQ(Status(c), kOk) << c.reason;
-  EXPECT_EQ(c.object_ball_id, kOther) << "the 5 is gone";
+  for (const std::string& name : players::PlayerNames()) {
+    const cue_command_t c = AnswerChoice(q, latest.balls[0], latest, table_, params_, options,
+                                         *players::MakePlayer(name), pool, ReplyTo(q));
+    ASSERT_EQ(Status(c), kOk) << name << ": " << c.reason;
+    EXPECT_EQ(c.object_ball_id, kOther) << name << ": the 5 is gone";
+  }
+}
+
+// A node is started with a player it knows: an unknown one is named at construction, never met
+// at the first choice.
+TEST(PlannerNodePlayer, AnUnknownPlayerIsRefusedWhenTheNodeIsMade) {
+  lcm::LCM lcm("memq://");
+  PlannerNodeOptions options;
+  options.player = "nosuch";
+  try {
+    PlannerNode node(lcm, params::LoadParameters("pool"), options);
+    ADD_FAILURE() << "a node with player nosuch was made";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("nosuch"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // TableSimNode's games (RunGame, table_sim_node.h): racks played shot by shot, each shot chosen
-// by the planner, executed, judged under nine-ball rules (game_judgement.h), and the estimator's
+// by the planner, executed, judged under nine-ball rules (sim/rules/nine_ball.h, the ruleset the
+// planner's own games are judged by), and the estimator's
 // view at each decision scored against the truth.
 #include <algorithm>
 #include <cmath>
@@ -9,8 +10,8 @@
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
 #include "sim/params/table_specs.h"
+#include "sim/rules/rules.h"
 #include "sim/table/rack.h"
-#include "sim/table_sim_node/game_judgement.h"
 #include "sim/table_sim_node/session_balls.h"
 #include "sim/table_sim_node/stroke_execution.h"
 #include "sim/table_sim_node/table_sim_node.h"
@@ -22,13 +23,6 @@ namespace {
 // A new rack's layout is shown this many settle times before its first shot: longer than the
 // estimator coasts the last rack's tracks (estimator::TrackerOptions::max_coast).
 constexpr int kNewLayoutSettles = 4;
-
-// The lowest object ball of `balls` (99 when there is none).
-int LowestObjectBall(const std::vector<table::SceneBall>& balls) {
-  return std::accumulate(balls.begin(), balls.end(), 99, [](int low, const auto& b) {
-    return b.id == kCueBall ? low : std::min(low, b.id);
-  });
-}
 
 // The called ball: the truth ball nearest the track the planner named, `called` where the
 // estimate has no such track.
@@ -150,7 +144,7 @@ cue_command_t TableSimNode::RequestGameShot(int id, const GameShot& shot,
 }
 
 GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeometry& geometry,
-                                    std::vector<table::SceneBall>& balls, bool* nine_legal) {
+                                    std::vector<table::SceneBall>& balls, bool* rack_over) {
   const double radius = params_.ball.radius;
   const cue_command_t command = RequestGameShot(id, shot, balls);
   ScoreEstimate(balls, shot);
@@ -167,7 +161,10 @@ GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeo
     shot.kind = messages::PotKindName(command.kind);
     shot.predicted = command.success_probability;
   }
-  const int lowest = LowestObjectBall(balls);
+  const rules::Ruleset& nine_ball = rules::RulesetOf(rules::Rules::kNineBall);
+  rules::Shot played;
+  played.constraints = {shot.ball_in_hand, nine_ball.LegalTargets(balls)};
+  played.break_shot = shot.break_shot;
   if (command.has_cue_placement) {
     Eigen::Vector2d placed;
     balls = WithCueBallPlaced(geometry, radius, balls,
@@ -178,19 +175,17 @@ GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeo
   shot.first_contact = table::FirstBallMet(sim.events(), kCueBall);
   TableOutcome outcome = OutcomeOf(sim, geometry, radius, shot.called, shot.pocket);
   shot.potted = outcome.potted;
-  const GameVerdict verdict =
-      JudgeNineBallShot({shot.break_shot, lowest, outcome.called_potted, shot.first_contact,
-                         outcome.potted, outcome.scratch},
-                        geometry, radius, outcome.rest);
-  shot.foul_reason = verdict.foul_reason;
-  shot.foul = !shot.foul_reason.empty();
-  shot.called_potted = verdict.called_potted;
-  *nine_legal = verdict.nine_legal;
-  if (verdict.nine_spot) {
-    table::SceneBall spotted{9, physics::BallState::Zero()};
-    spotted.state.head<2>() = *verdict.nine_spot;
-    outcome.rest.push_back(spotted);
-  }
+  played.first_contact = shot.first_contact;
+  played.potted = outcome.potted;
+  played.scratch = outcome.scratch;
+  played.object_balls_left = static_cast<int>(rules::ObjectBalls(outcome.rest).size());
+  const rules::Judgement judged = nine_ball.Judge(geometry, played);
+  shot.foul = judged.foul;
+  shot.foul_reason = judged.foul_reason;
+  shot.called_potted = outcome.called_potted && judged.legal();
+  *rack_over = judged.rack_over;
+  rules::PlaceRespotted(geometry, radius, judged.respots, kPlacementStep, kPlacementClearance,
+                        &outcome.rest);
   if (outcome.scratch) outcome.rest = InTheKitchen(geometry, radius, std::move(outcome.rest));
   balls = std::move(outcome.rest);
   log_(GameShotLine(shot));
@@ -210,7 +205,7 @@ GameResult TableSimNode::PlayRack(int rack, const table::TableGeometry& geometry
        std::to_string(game.seed) + ")");
   // The new layout shown until the estimator has forgotten the last one's balls.
   for (int k = 0; k < kNewLayoutSettles; ++k) ShowAtRest(balls);
-  bool ball_in_hand = drill, new_visit = true, nine_legal = false;
+  bool ball_in_hand = drill, new_visit = true, rack_over = false;
   int visit = 1;
   for (int n = 0; n < options_.shot_limit; ++n) {
     if (new_visit) game.visits = visit;
@@ -219,11 +214,9 @@ GameResult TableSimNode::PlayRack(int rack, const table::TableGeometry& geometry
     shot.visit = visit;
     shot.break_shot = !drill && n == 0;
     shot.ball_in_hand = ball_in_hand;
-    shot = PlayGameShot((*id)++, shot, geometry, balls, &nine_legal);
+    shot = PlayGameShot((*id)++, shot, geometry, balls, &rack_over);
     game.shots.push_back(shot);
-    const bool object_balls_left = std::any_of(
-        balls.begin(), balls.end(), [](const table::SceneBall& b) { return b.id != kCueBall; });
-    if (nine_legal || !object_balls_left) {
+    if (rack_over) {
       game.cleared = true;
       break;
     }

@@ -25,7 +25,8 @@
 // The class is implemented in three files, by the sessions it runs: table_sim_node.cc (the link
 // to the nodes, the frames, the requests, the shots to random targets), scene_session.cc
 // (RunScene) and game_session.cc (RunGame). What a frame shows is truth_frame.h's, how a command
-// is executed stroke_execution.h's, and a game shot's verdict game_judgement.h's.
+// is executed stroke_execution.h's, and a game shot's judgement the rules' (sim/rules/nine_ball.h,
+// the ruleset the planner's own games are judged by).
 #pragma once
 
 #include <Eigen/Core>
@@ -303,10 +304,11 @@ class TableSimNode {
   cue_command_t RequestGameShot(int id, const GameShot& shot,
                                 const std::vector<table::SceneBall>& balls);
   // Plays shot `shot` of a game on `balls` (at rest; the cue ball on the table) and judges it
-  // under nine-ball rules; `balls` become those left, the cue ball back in the kitchen after a
-  // scratch and the 9 on its spot after a foul that dropped it.
+  // under nine-ball rules (sim/rules/nine_ball.h); `balls` become those left, the cue ball back
+  // in the kitchen after a scratch and the 9 on its spot after a foul that dropped it;
+  // *rack_over whether the rules end the rack there.
   GameShot PlayGameShot(int id, GameShot shot, const table::TableGeometry& geometry,
-                        std::vector<table::SceneBall>& balls, bool* nine_legal);
+                        std::vector<table::SceneBall>& balls, bool* rack_over);
   // The estimator's latest state against the truth `balls`, into `shot`.
   void ScoreEstimate(const std::vector<table::SceneBall>& balls, GameShot& shot) const;
   // Scores the estimator's state of a frame against the truth of its balls at t.
