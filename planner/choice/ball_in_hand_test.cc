@@ -10,7 +10,7 @@ namespace {
 using BallInHandTest = testing::ChoiceTest;
 
 TEST_F(BallInHandTest, PlacesTheCueBallForALikelyPot) {
-  const std::vector<table::SceneBall> balls = {Ball(1, 1.6, 0.7), Ball(2, 0.7, 0.4)};
+  const std::vector<table::SceneBall> balls = {table::AtRest(1, 1.6, 0.7), table::AtRest(2, 0.7, 0.4)};
   ChoiceOptions options;
   options.rules = Rules::kNineBall;
   options.samples = 16;
@@ -36,9 +36,9 @@ TEST_F(BallInHandTest, PlacesTheCueBallForALikelyPot) {
 // A cue ball already on the table is lifted: where it lay does not block its own placement,
 // and the result is the same as without it.
 TEST_F(BallInHandTest, TheCueBallOnTheTableIsLifted) {
-  const std::vector<table::SceneBall> without = {Ball(1, 1.6, 0.7), Ball(2, 0.7, 0.4)};
+  const std::vector<table::SceneBall> without = {table::AtRest(1, 1.6, 0.7), table::AtRest(2, 0.7, 0.4)};
   std::vector<table::SceneBall> with = without;
-  with.push_back(Ball(0, 0.3, 0.3));
+  with.push_back(table::AtRest(0, 0.3, 0.3));
   ChoiceOptions options = QuickChoice();
   options.placements = 1;
   batch::ThreadPool pool(2);

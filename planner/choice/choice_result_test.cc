@@ -19,28 +19,28 @@ TEST(ChoiceStatusTest, Names) {
 }
 
 TEST_F(ChoiceResultTest, RefusesWhatCannotBePlayed) {
-  EXPECT_EQ(Unplayable(table_, params_, {Ball(1, 1, 0.5)}, Rules::kAny)->status,
+  EXPECT_EQ(Unplayable(table_, params_, {table::AtRest(1, 1, 0.5)}, Rules::kAny)->status,
             ChoiceStatus::kInvalid);
-  EXPECT_EQ(Unplayable(table_, params_, {Ball(0, 1, 0.5)}, Rules::kAny)->status,
+  EXPECT_EQ(Unplayable(table_, params_, {table::AtRest(0, 1, 0.5)}, Rules::kAny)->status,
             ChoiceStatus::kNoTarget);
-  table::SceneBall moving = Ball(1, 1.5, 0.5);
+  table::SceneBall moving = table::AtRest(1, 1.5, 0.5);
   moving.state[physics::kVx] = 0.1;
-  const auto refused = Unplayable(table_, params_, {Ball(0, 1, 0.5), moving}, Rules::kAny);
+  const auto refused = Unplayable(table_, params_, {table::AtRest(0, 1, 0.5), moving}, Rules::kAny);
   ASSERT_TRUE(refused);
   EXPECT_EQ(refused->status, ChoiceStatus::kInvalid);
   EXPECT_EQ(refused->reason, "ball 1 is moving: a choice starts at rest");
-  const auto overlapping = Unplayable(table_, params_, {Ball(0, 1, 0.5), Ball(1, 1.01, 0.5)},
+  const auto overlapping = Unplayable(table_, params_, {table::AtRest(0, 1, 0.5), table::AtRest(1, 1.01, 0.5)},
                                       Rules::kAny);
   ASSERT_TRUE(overlapping);
   EXPECT_EQ(overlapping->status, ChoiceStatus::kInvalid);
-  EXPECT_FALSE(Unplayable(table_, params_, {Ball(0, 1, 0.5), Ball(1, 1.5, 0.5)}, Rules::kAny));
+  EXPECT_FALSE(Unplayable(table_, params_, {table::AtRest(0, 1, 0.5), table::AtRest(1, 1.5, 0.5)}, Rules::kAny));
 }
 
 // Nothing plans: the fallback rolls the cue ball straight at the first legal target's centre
 // (the lowest under nine-ball), and it is the stroke to play.
 TEST_F(ChoiceResultTest, TheFallbackHitsTheFirstLegalTargetFullInTheFace) {
-  const std::vector<table::SceneBall> balls = {Ball(0, 1, 0.5), Ball(4, 1.3, 0.9),
-                                               Ball(2, 0.6, 0.1)};
+  const std::vector<table::SceneBall> balls = {table::AtRest(0, 1, 0.5), table::AtRest(4, 1.3, 0.9),
+                                               table::AtRest(2, 0.6, 0.1)};
   ChoiceResult r;
   NoPlan(balls, Rules::kNineBall, "why", &r);
   EXPECT_EQ(r.status, ChoiceStatus::kNoPlan);

@@ -16,7 +16,7 @@ using EasiestLookingTest = testing::ChoiceTest;
 // its probability not estimated.
 TEST_F(EasiestLookingTest, PlaysTheEasiestLookingPot) {
   auto balls = StraightPot(0.4, 0.4);
-  balls.push_back(Ball(2, 0.4, 0.3));
+  balls.push_back(table::AtRest(2, 0.4, 0.3));
   ChoiceOptions options;
   const ChoiceResult r = ChooseEasiestLooking(table_, params_, balls, options, false);
   ASSERT_EQ(r.status, ChoiceStatus::kOk) << r.reason;
@@ -35,7 +35,7 @@ TEST_F(EasiestLookingTest, PlaysTheEasiestLookingPot) {
 
 // With ball in hand the cue ball goes to the easiest-looking place, clear of the balls.
 TEST_F(EasiestLookingTest, PlacesTheCueBallInHand) {
-  const std::vector<table::SceneBall> balls = {Ball(1, 1.6, 0.7), Ball(2, 0.7, 0.4)};
+  const std::vector<table::SceneBall> balls = {table::AtRest(1, 1.6, 0.7), table::AtRest(2, 0.7, 0.4)};
   ChoiceOptions options;
   options.rules = Rules::kNineBall;
   const ChoiceResult r = ChooseEasiestLooking(table_, params_, balls, options, true);
@@ -48,7 +48,7 @@ TEST_F(EasiestLookingTest, PlacesTheCueBallInHand) {
 // No direct pot plans (every cut refused as too thin): the fallback hits the one legal ball
 // full in the face.
 TEST_F(EasiestLookingTest, NoDirectPotFallsBack) {
-  const std::vector<table::SceneBall> balls = {Ball(0, 1.0, 0.5), Ball(1, 1.5, 0.9)};
+  const std::vector<table::SceneBall> balls = {table::AtRest(0, 1.0, 0.5), table::AtRest(1, 1.5, 0.9)};
   ChoiceOptions options;
   options.pot.max_cut_deg = -1.0;
   const ChoiceResult r = ChooseEasiestLooking(table_, params_, balls, options, false);

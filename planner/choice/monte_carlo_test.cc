@@ -57,7 +57,7 @@ TEST_F(MonteCarloTest, StandardErrorMatchesTheSpreadOfEstimates) {
 TEST_F(MonteCarloTest, ScratchAndWrongContactAreNotPots) {
   // The cue ball alone, sent into the upper right pocket: a scratch, no contact.
   auto balls = StraightPot(0.4, 0.4);
-  balls[1] = Ball(1, 0.5, 0.3);
+  balls[1] = table::AtRest(1, 0.5, 0.3);
   const StrokeResult r =
       PlayToRest(table_, params_, balls, {2.0, std::atan2(1.0, 1.0), 0, 0, 0}, {});
   ASSERT_TRUE(r.struck);

@@ -16,8 +16,8 @@ using PlacementsTest = testing::ChoiceTest;
 // target and pocket.
 TEST_F(PlacementsTest, PlacesAreOnTheTableClearAndBestFirst) {
   const double r = params_.ball.radius;
-  const std::vector<table::SceneBall> balls = {Ball(0, 0.4, 0.9), Ball(1, 1.6, 0.68),
-                                               Ball(2, 0.7, 0.4), Ball(3, 2.1, 1.0)};
+  const std::vector<table::SceneBall> balls = {table::AtRest(0, 0.4, 0.9), table::AtRest(1, 1.6, 0.68),
+                                               table::AtRest(2, 0.7, 0.4), table::AtRest(3, 2.1, 1.0)};
   ChoiceOptions options;
   const std::vector<Placement> places = CandidatePlacements(table_, r, balls, options);
   ASSERT_FALSE(places.empty());
@@ -49,7 +49,7 @@ TEST_F(PlacementsTest, TheCueBallGoesBehindTheTarget) {
   const Eigen::Vector2d o = corner - 0.3 * Eigen::Vector2d(1, 1).normalized();
   ChoiceOptions options;
   options.rules = Rules::kNineBall;
-  const std::vector<table::SceneBall> balls = {Ball(1, o.x(), o.y()), Ball(5, 0.5, 0.3)};
+  const std::vector<table::SceneBall> balls = {table::AtRest(1, o.x(), o.y()), table::AtRest(5, 0.5, 0.3)};
   const std::vector<Placement> places =
       CandidatePlacements(table_, params_.ball.radius, balls, options);
   ASSERT_FALSE(places.empty());

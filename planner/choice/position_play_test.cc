@@ -14,7 +14,7 @@ using PositionPlayTest = testing::ChoiceTest;
 // dropped.
 TEST_F(PositionPlayTest, TheBestScreenedPotsPlannedAgainForPosition) {
   auto balls = TwoBalls();
-  balls.push_back(Ball(3, 0.6, 0.9));
+  balls.push_back(table::AtRest(3, 0.6, 0.9));
   std::vector<Candidate> screened;
   for (const auto& [ball, pocket] : std::vector<std::pair<int, std::string>>{
            {1, "upper_right"}, {2, "lower_left"}, {3, "upper_left"}}) {

@@ -51,7 +51,7 @@ TEST_F(ShotChoiceTest, ReportedProbabilityIsTheConfirmationsAndUnbiased) {
 TEST_F(ShotChoiceTest, NineBallPlaysTheLowestBall) {
   auto balls = StraightPot(0.35, 0.35);
   balls[1].id = 3;
-  balls.push_back(Ball(1, 0.5, 0.25));
+  balls.push_back(table::AtRest(1, 0.5, 0.25));
   ChoiceOptions options;
   options.samples = 16;
   options.screen_samples = 8;
@@ -116,9 +116,9 @@ TEST_F(ShotChoiceTest, FinalistsFirstByScoreAndOnlyTheChosenConfirmed) {
 TEST_F(ShotChoiceTest, RefusesWhatCannotBePlayed) {
   batch::ThreadPool pool(1);
   ChoiceOptions options;
-  EXPECT_EQ(ChooseShot(table_, params_, {Ball(1, 1, 0.5)}, options, pool).status,
+  EXPECT_EQ(ChooseShot(table_, params_, {table::AtRest(1, 1, 0.5)}, options, pool).status,
             ChoiceStatus::kInvalid);
-  EXPECT_EQ(ChooseShot(table_, params_, {Ball(0, 1, 0.5)}, options, pool).status,
+  EXPECT_EQ(ChooseShot(table_, params_, {table::AtRest(0, 1, 0.5)}, options, pool).status,
             ChoiceStatus::kNoTarget);
 }
 

@@ -48,8 +48,8 @@ class Scripted final : public players::Player {
 
 // Three open balls from ball in hand: cleared, and the summary adds up the shots.
 TEST_F(GameTest, ClearsAnOpenTableAndCountsWhatHappened) {
-  const std::vector<table::SceneBall> balls = {Ball(1, 1.9, 0.9), Ball(2, 0.8, 0.35),
-                                               Ball(3, 1.3, 0.7)};
+  const std::vector<table::SceneBall> balls = {table::AtRest(1, 1.9, 0.9), table::AtRest(2, 0.8, 0.35),
+                                               table::AtRest(3, 1.3, 0.7)};
   options_.ball_in_hand = true;
   batch::ThreadPool pool(2);
   const GameRecord game = PlayGame(table_, params_, balls, options_, pool);
@@ -124,7 +124,7 @@ TEST_F(GameTest, SeededLayoutsAreClearAndRepeatable) {
 // A shot that touches nothing is a foul: the next shot has ball in hand and starts a visit;
 // the player is told so, and the game records the reason.
 TEST_F(GameTest, AFoulGivesTheNextShotBallInHand) {
-  const std::vector<table::SceneBall> balls = {Ball(0, 0.5, 0.5), Ball(1, 2.0, 1.0)};
+  const std::vector<table::SceneBall> balls = {table::AtRest(0, 0.5, 0.5), table::AtRest(1, 2.0, 1.0)};
   auto player = std::make_shared<Scripted>(std::vector<physics::CueStroke>{{0.3, M_PI, 0, 0, 0}});
   options_.player = player;
   options_.execution = params::ExecutionNoise{};  // the strokes played as given
@@ -151,7 +151,7 @@ TEST_F(GameTest, AFoulGivesTheNextShotBallInHand) {
 TEST_F(GameTest, TheNinePottedOnAFoulComesBackToTheFootSpot) {
   auto balls = StraightPot(0.4, 0.4);
   balls[1].id = 9;
-  balls.push_back(Ball(1, 0.5, 0.3));
+  balls.push_back(table::AtRest(1, 0.5, 0.3));
   const pot::PotPlan plan = Plan(balls, 9, "upper_right");
   ASSERT_EQ(plan.status, pot::PotStatus::kOk) << plan.reason;
   options_.player = std::make_shared<Scripted>(std::vector<physics::CueStroke>{plan.stroke});

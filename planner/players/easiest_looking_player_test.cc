@@ -13,8 +13,8 @@ using EasiestLookingPlayerTest = choice::testing::ChoiceTest;
 
 // The baseline, with ball in hand as the rules say.
 TEST_F(EasiestLookingPlayerTest, IsTheBaselineWithBallInHandAsTheRulesSay) {
-  const std::vector<table::SceneBall> balls = {Ball(0, 0.5, 0.5), Ball(1, 1.6, 0.7),
-                                               Ball(2, 0.7, 0.4)};
+  const std::vector<table::SceneBall> balls = {table::AtRest(0, 0.5, 0.5), table::AtRest(1, 1.6, 0.7),
+                                               table::AtRest(2, 0.7, 0.4)};
   const choice::ChoiceOptions options;
   batch::ThreadPool pool(1);
   const EasiestLooking player;

@@ -50,7 +50,7 @@ TEST_F(AimTest, TheAimOfAStraightShotMeetsTheGhostBall) {
   const Eigen::Vector2d corner = table_.PocketNamed("lower_left")->centre;
   const Eigen::Vector2d along = Eigen::Vector2d(1.0, 1.0).normalized();
   const Eigen::Vector2d k = corner + 0.6 * along, cue = corner + 1.2 * along;
-  SearchContext search = Search({Ball(0, cue.x(), cue.y()), Ball(3, k.x(), k.y())}, 3, "lower_left");
+  SearchContext search = Search({table::AtRest(0, cue.x(), cue.y()), table::AtRest(3, k.x(), k.y())}, 3, "lower_left");
   const double line = Angle(-along);
   const std::optional<Aimed> aimed = AimAt(search, {1.5, 0.0, 0.0, 0.0}, line + 0.5 * kDegree, line, false, 0.0);
   ASSERT_TRUE(aimed);
@@ -62,7 +62,7 @@ TEST_F(AimTest, TheAimOfAStraightShotMeetsTheGhostBall) {
 
 // A first guess that misses K by a degree: the headings either side are tried until one meets it.
 TEST_F(AimTest, AFirstGuessThatMissesKIsMovedUntilItMeetsK) {
-  SearchContext search = Search({Ball(0, 0.6, 0.6), Ball(1, 1.6, 0.6)}, 1, "upper_right");
+  SearchContext search = Search({table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.6, 0.6)}, 1, "upper_right");
   const double edge = std::asin(2.0 * params_.ball.radius / 1.0);  // the thinnest touch
   const double target = -1.0;  // a cut of 57 degrees: K leaves to the right of the cue ball
   const std::optional<Aimed> aimed = AimAt(search, {1.5, 0.0, 0.0, 0.0}, edge + 1.0 * kDegree, target, false, 0.0);
@@ -73,7 +73,7 @@ TEST_F(AimTest, AFirstGuessThatMissesKIsMovedUntilItMeetsK) {
 }
 
 TEST_F(AimTest, ABlockedAimNamesTheBallMetFirst) {
-  SearchContext search = Search({Ball(0, 0.6, 0.6), Ball(1, 1.6, 0.6), Ball(2, 1.1, 0.6)}, 1, "upper_right");
+  SearchContext search = Search({table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.6, 0.6), table::AtRest(2, 1.1, 0.6)}, 1, "upper_right");
   EXPECT_FALSE(AimAt(search, {1.5, 0.0, 0.0, 0.0}, 0.0, 0.0, false, 0.0));
   EXPECT_EQ(BlockedReason(search, {1.5, 0.0, 0.0, 0.0}, 0.0), "the cue ball meets ball 2 before ball 1");
 }
@@ -83,7 +83,7 @@ TEST_F(AimTest, ABlockedAimNamesTheBallMetFirst) {
 // alone (the line of centres on the window's middle) it departs off the middle by the throw; the
 // plan's aim departs on it.
 TEST_F(AimTest, TheAimCorrectsTheThrowThatTheGhostBallAloneLeaves) {
-  const std::vector<SceneBall> balls = {Ball(0, 1.5, 0.2), Ball(4, 1.7, 0.75)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 1.5, 0.2), table::AtRest(4, 1.7, 0.75)};
   const PotPlan plan = PlanPot(table_, params_, balls, {4, "upper_right", ShotKind::kDirect, {}});
   ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
   const std::optional<double> heading = GhostBallHeading(table_, params_, balls, plan);

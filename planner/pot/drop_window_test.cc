@@ -24,7 +24,7 @@ class DropWindowTest : public testing::PotFixture {
   SearchContext StraightInSearch(double distance) const {
     const Eigen::Vector2d corner = table_.PocketNamed("lower_left")->centre;
     const Eigen::Vector2d k = corner - distance * Unit(Diagonal()), cue = k - 0.6 * Unit(Diagonal());
-    return Search({Ball(0, cue.x(), cue.y()), Ball(3, k.x(), k.y())}, 3, "lower_left");
+    return Search({table::AtRest(0, cue.x(), cue.y()), table::AtRest(3, k.x(), k.y())}, 3, "lower_left");
   }
   static double Diagonal() { return Angle(Eigen::Vector2d(-1.0, -1.0)); }
 };
@@ -68,7 +68,7 @@ TEST_F(DropWindowTest, ABallInTheWayClosesTheWindowOnItsSide) {
   const Eigen::Vector2d corner = table_.PocketNamed("lower_left")->centre;
   const Eigen::Vector2d beside = corner - 0.3 * Unit(Diagonal()) + 0.065 * Unit(Diagonal() + M_PI / 2.0);
   std::vector<SceneBall> balls = open.balls();
-  balls.push_back(Ball(5, beside.x(), beside.y()));
+  balls.push_back(table::AtRest(5, beside.x(), beside.y()));
   SearchContext blocked_search = Search(balls, 3, "lower_left");
   const std::optional<Drop> blocked =
       DropWindow(blocked_search, StraightIn(&blocked_search), Diagonal(), kDirectScan, 0.0, kWindowResolution);

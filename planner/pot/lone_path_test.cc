@@ -42,7 +42,7 @@ class LonePathTest : public testing::PotFixture {
 // A ball sent along +x passes a point 5 cm to its left at +5 cm, one to its right at -5 cm (to
 // the path's sampling: every 2 ms, 3 mm of travel, puts the closest sample within 3e-5 m).
 TEST_F(LonePathTest, APathPassesAPointOnItsLeftAtAPositiveDistance) {
-  SearchContext search = Search({Ball(0, 0.5, 0.6), Ball(1, 2.0, 1.0)}, 1, "upper_right");
+  SearchContext search = Search({table::AtRest(0, 0.5, 0.6), table::AtRest(1, 2.0, 1.0)}, 1, "upper_right");
   const physics::CueStroke stroke{1.5, 0.0, 0.0, 0.0, 0.0};
   EXPECT_NEAR(PassingSide(search, stroke, {1.2, 0.65}, false), 0.05, 3e-5);
   EXPECT_NEAR(PassingSide(search, stroke, {1.2, 0.55}, false), -0.05, 3e-5);
@@ -55,7 +55,7 @@ TEST_F(LonePathTest, APathPassesAPointOnItsLeftAtAPositiveDistance) {
 
 // A direct route's heading is the line to the ghost ball, less the squirt of the side spin.
 TEST_F(LonePathTest, ADirectHeadingIsTheGhostBallsLineLessTheSquirt) {
-  SearchContext search = Search({Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9)}, 1, "upper_right");
+  SearchContext search = Search({table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9)}, 1, "upper_right");
   const Eigen::Vector2d ghost(1.75, 0.88);
   const double line = Angle(ghost - Eigen::Vector2d(0.6, 0.6));
   Route route{ShotKind::kDirect, -1, search.pocket().centre, ghost};
@@ -69,7 +69,7 @@ TEST_F(LonePathTest, ADirectHeadingIsTheGhostBallsLineLessTheSquirt) {
 // ghost ball (to the path's sampling, 2 ms of travel), which the mirror's heading (the ideal
 // reflection, degrees off the cushion model's rebound) does not.
 TEST_F(LonePathTest, AKicksHeadingSendsTheCueBallThroughTheGhostBallAfterItsRail) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.5, 0.4), Ball(1, 1.6, 0.7), Ball(2, 1.1, 0.55)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.5, 0.4), table::AtRest(1, 1.6, 0.7), table::AtRest(2, 1.1, 0.55)};
   SearchContext search = Search(balls, 1, "upper_right");
   search.SearchAmong({}, true);  // a kick's rail is met as the truth meets it
   const std::vector<Candidate> kicks = Routes(search, ShotKind::kKick);
@@ -87,7 +87,7 @@ TEST_F(LonePathTest, AKicksHeadingSendsTheCueBallThroughTheGhostBallAfterItsRail
 // A curve's heading bends the cue ball's path (an elevated cue with side spin) through the ghost
 // ball (to the path's sampling, 2 ms of travel); the straight line's heading bends it past.
 TEST_F(LonePathTest, ACurvesHeadingBendsTheCueBallThroughTheGhostBall) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.7), Ball(3, 1.6, 0.7), Ball(6, 1.1, 0.735)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.7), table::AtRest(3, 1.6, 0.7), table::AtRest(6, 1.1, 0.735)};
   SearchContext search = Search(balls, 3, "upper_right");
   const Route route = Routes(search, ShotKind::kCurve).front().route;
   const StrokeShape shape{1.5, route.tip_side, 0.0, route.elevation};
@@ -100,7 +100,7 @@ TEST_F(LonePathTest, ACurvesHeadingBendsTheCueBallThroughTheGhostBall) {
 // The pocket behind the object ball: no curve within the cue's elevations bends the cue ball
 // round to a cut below the limit, which its path alone shows where it passes the ghost ball.
 TEST_F(LonePathTest, ABackwardsCurveIsTooThin) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9)};
   const PotPlan plan = PlanPot(table_, params_, balls, {1, "lower_left", ShotKind::kCurve, {}});
   EXPECT_EQ(plan.status, PotStatus::kTooThin) << plan.reason;
   EXPECT_NE(plan.reason.find("curve: the curve's cut is"), std::string::npos) << plan.reason;
@@ -108,7 +108,7 @@ TEST_F(LonePathTest, ABackwardsCurveIsTooThin) {
 
 // A bank's line is found on K's own path off the rail: it passes the pocket's mouth.
 TEST_F(LonePathTest, ABanksLinePassesThePocketsMouthAfterTheRail) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.5), Ball(1, 1.3, 0.4)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.5), table::AtRest(1, 1.3, 0.4)};
   SearchContext search = Search(balls, 1, "upper_right");
   const std::vector<Candidate> banks = Routes(search, ShotKind::kBank);
   ASSERT_FALSE(banks.empty());

@@ -85,7 +85,7 @@ class MarginTest : public testing::PotFixture {};
 // The margin is what the simulation says: turned to 0.9 of it either way the stroke still pots,
 // to 1.1 it misses.
 TEST_F(MarginTest, TheMarginIsTrueOnTheSimulation) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9), table::AtRest(2, 1.2, 0.3)};
   const PotPlan plan = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kDirect, {}});
   ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
   for (const auto& [fraction, pots] : {std::pair{0.9, true}, {1.1, false}}) {
@@ -104,7 +104,7 @@ TEST_F(MarginTest, AStraightInPotsSpeedWindowRunsFromACreepToTheTopSpeed) {
   const Eigen::Vector2d corner = table_.PocketNamed("lower_left")->centre;
   const Eigen::Vector2d along = Eigen::Vector2d(1.0, 1.0).normalized();
   const Eigen::Vector2d k = corner + 0.6 * along, cue = corner + 1.2 * along;
-  SearchContext search = Search({Ball(0, cue.x(), cue.y()), Ball(3, k.x(), k.y())}, 3, "lower_left");
+  SearchContext search = Search({table::AtRest(0, cue.x(), cue.y()), table::AtRest(3, k.x(), k.y())}, 3, "lower_left");
   const StrokeShape shape{1.5, 0.0, 0.0, 0.0};
   const SpeedWindow window = SpeedWindowAt(search, shape, Angle(-along));
   EXPECT_EQ(window.hi, params_.cue.max_speed);

@@ -18,8 +18,8 @@ class PaceTest : public testing::PotFixture {
   PaceTest()
       : corner_(table_.PocketNamed("lower_left")->centre),
         along_(Eigen::Vector2d(1.0, 1.0).normalized()),
-        balls_({Ball(0, corner_.x() + 1.2 * along_.x(), corner_.y() + 1.2 * along_.y()),
-                Ball(3, corner_.x() + 0.6 * along_.x(), corner_.y() + 0.6 * along_.y())}) {}
+        balls_({table::AtRest(0, corner_.x() + 1.2 * along_.x(), corner_.y() + 1.2 * along_.y()),
+                table::AtRest(3, corner_.x() + 0.6 * along_.x(), corner_.y() + 0.6 * along_.y())}) {}
 
   const Eigen::Vector2d corner_, along_;
   const std::vector<SceneBall> balls_;

@@ -11,7 +11,7 @@ using table::SceneBall;
 
 class PositionTest : public testing::PotFixture {
  protected:
-  const std::vector<SceneBall> balls_ = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)};
+  const std::vector<SceneBall> balls_ = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9), table::AtRest(2, 1.2, 0.3)};
 
   // Where the pot played with more pace (an arrival speed of 1 m/s at the pocket, not 0.6) leaves
   // the cue ball: a target it can reach by construction.

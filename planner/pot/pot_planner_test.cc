@@ -16,7 +16,7 @@ using table::SceneBall;
 class PotPlannerTest : public testing::PotFixture {};
 
 TEST_F(PotPlannerTest, ADirectCutPotsWhenItsLaunchIsSimulated) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9), table::AtRest(2, 1.2, 0.3)};
   for (const char* pocket : {"upper_right", "lower_right", "upper_middle_not"}) {
     PotRequest request{1, pocket, ShotKind::kDirect, std::nullopt};
     const PotPlan plan = PlanPot(table_, params_, balls, request);
@@ -40,7 +40,7 @@ TEST_F(PotPlannerTest, AStraightInShotAlongTheDiagonalAimsAlongItWithAnEvenMargi
   const Eigen::Vector2d corner = table_.PocketNamed("lower_left")->centre;
   const Eigen::Vector2d along = Eigen::Vector2d(1.0, 1.0).normalized();
   const Eigen::Vector2d k = corner + 0.6 * along, cue = corner + 1.2 * along;
-  const std::vector<SceneBall> balls = {Ball(0, cue.x(), cue.y()), Ball(3, k.x(), k.y())};
+  const std::vector<SceneBall> balls = {table::AtRest(0, cue.x(), cue.y()), table::AtRest(3, k.x(), k.y())};
   const PotPlan plan = PlanPot(table_, params_, balls, {3, "lower_left", ShotKind::kDirect, {}});
   ExpectLegalPot(balls, plan);
   EXPECT_NEAR(std::remainder(plan.stroke.heading - std::atan2(-along.y(), -along.x()), 2 * M_PI), 0.0, 1e-5);
@@ -51,7 +51,7 @@ TEST_F(PotPlannerTest, AStraightInShotAlongTheDiagonalAimsAlongItWithAnEvenMargi
 // The table is symmetric about its long axis: the mirrored layout gets the mirrored plan.
 TEST_F(PotPlannerTest, TheMirroredLayoutGetsTheMirroredPlan) {
   const double w = table_.width;
-  const std::vector<SceneBall> balls = {Ball(0, 0.7, 0.45), Ball(5, 1.6, 0.85), Ball(7, 2.0, 0.3)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.7, 0.45), table::AtRest(5, 1.6, 0.85), table::AtRest(7, 2.0, 0.3)};
   std::vector<SceneBall> mirrored = balls;
   for (SceneBall& b : mirrored) b.state.y() = w - b.state.y();
   const PotPlan plan = PlanPot(table_, params_, balls, {5, "upper_right", ShotKind::kDirect, {}});
@@ -68,7 +68,7 @@ TEST_F(PotPlannerTest, TheMirroredLayoutGetsTheMirroredPlan) {
 
 TEST_F(PotPlannerTest, ABlockedLineIsRefusedNamingTheBlocker) {
   // Ball 2 sits on the straight line from ball 1 to the lower right pocket.
-  const std::vector<SceneBall> balls = {Ball(0, 0.5, 0.4), Ball(1, 1.6, 0.7), Ball(2, 2.05, 0.38)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.5, 0.4), table::AtRest(1, 1.6, 0.7), table::AtRest(2, 2.05, 0.38)};
   const PotPlan direct = PlanPot(table_, params_, balls, {1, "lower_right", ShotKind::kDirect, {}});
   EXPECT_EQ(direct.status, PotStatus::kBlocked);
   EXPECT_NE(direct.reason.find("blocked by ball 2"), std::string::npos) << direct.reason;
@@ -101,7 +101,7 @@ TEST_F(PotPlannerTest, BanksAndKicksPotWhenTheirLaunchIsSimulated) {
 
 TEST_F(PotPlannerTest, ACurveBendsTheCueBallAroundABlocker) {
   // Ball 6 stands halfway on the cue ball's line to the ghost ball, 3.5 cm off it.
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.7), Ball(3, 1.6, 0.7), Ball(6, 1.1, 0.735)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.7), table::AtRest(3, 1.6, 0.7), table::AtRest(6, 1.1, 0.735)};
   const PotPlan direct = PlanPot(table_, params_, balls, {3, "upper_right", ShotKind::kDirect, {}});
   EXPECT_EQ(direct.status, PotStatus::kBlocked) << direct.reason;
   const PotPlan plan = PlanPot(table_, params_, balls, {3, "upper_right", ShotKind::kCurve, {}});
@@ -111,7 +111,7 @@ TEST_F(PotPlannerTest, ACurveBendsTheCueBallAroundABlocker) {
 }
 
 TEST_F(PotPlannerTest, BadRequestsAreRefusedWithAReason) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9)};
   const auto refused = [&](const PotRequest& r, PotStatus status) {
     const PotPlan plan = PlanPot(table_, params_, balls, r);
     EXPECT_EQ(plan.status, status) << PotStatusName(plan.status) << ": " << plan.reason;
@@ -129,7 +129,7 @@ TEST_F(PotPlannerTest, BadRequestsAreRefusedWithAReason) {
   nan_scene[1].state.x() = NAN;
   const PotPlan plan = PlanPot(table_, params_, nan_scene, {1, "upper_right", std::nullopt, {}});
   EXPECT_EQ(plan.status, PotStatus::kInvalid);
-  const std::vector<SceneBall> no_cue = {Ball(1, 1.8, 0.9)};
+  const std::vector<SceneBall> no_cue = {table::AtRest(1, 1.8, 0.9)};
   EXPECT_EQ(PlanPot(table_, params_, no_cue, {1, "upper_right", std::nullopt, {}}).status, PotStatus::kInvalid);
 }
 

@@ -36,7 +36,7 @@ class RoutesTest : public testing::PotFixture {
 };
 
 TEST_F(RoutesTest, ADirectRouteAimsKAtThePocketAndTheCueBallAtTheGhostBall) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9)};
   const SearchContext search = Search(balls, 1, "upper_right");
   const std::vector<Candidate> routes = Routes(search, ShotKind::kDirect);
   ASSERT_EQ(routes.size(), 1u);
@@ -50,7 +50,7 @@ TEST_F(RoutesTest, ADirectRouteAimsKAtThePocketAndTheCueBallAtTheGhostBall) {
 
 TEST_F(RoutesTest, ABlockedLineNamesTheBallsAcrossIt) {
   // Ball 2 sits on the straight line from ball 1 to the lower right pocket.
-  const std::vector<SceneBall> balls = {Ball(0, 0.5, 0.4), Ball(1, 1.6, 0.7), Ball(2, 2.05, 0.38)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.5, 0.4), table::AtRest(1, 1.6, 0.7), table::AtRest(2, 2.05, 0.38)};
   const std::vector<Candidate> routes = Routes(Search(balls, 1, "lower_right"), ShotKind::kDirect);
   ASSERT_EQ(routes.size(), 1u);
   EXPECT_EQ(routes.front().blockers, std::vector<int>{2});
@@ -60,7 +60,7 @@ TEST_F(RoutesTest, ABlockedLineNamesTheBallsAcrossIt) {
 // A bank sends K to the pocket's mirror image in the rail: its bounce is a mirror's, K's route
 // to the bounce and on to the pocket the same angle either side of the rail's normal.
 TEST_F(RoutesTest, ABanksRouteMirrorsInItsRail) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.5), Ball(1, 1.3, 0.4)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.5), table::AtRest(1, 1.3, 0.4)};
   const SearchContext search = Search(balls, 1, "upper_right");
   const std::vector<Candidate> banks = Routes(search, ShotKind::kBank);
   ASSERT_FALSE(banks.empty());
@@ -73,7 +73,7 @@ TEST_F(RoutesTest, ABanksRouteMirrorsInItsRail) {
 
 // A kick sends the cue ball to the ghost ball's mirror image in the rail.
 TEST_F(RoutesTest, AKicksRouteMirrorsTheGhostBallInItsRail) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.5, 0.4), Ball(1, 1.6, 0.7), Ball(2, 1.1, 0.55)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.5, 0.4), table::AtRest(1, 1.6, 0.7), table::AtRest(2, 1.1, 0.55)};
   const SearchContext search = Search(balls, 1, "upper_right");
   const Eigen::Vector2d k(1.6, 0.7);
   const Eigen::Vector2d ghost = GhostBall(k, (search.pocket().centre - k).normalized(), params_.ball.radius);
@@ -86,7 +86,7 @@ TEST_F(RoutesTest, AKicksRouteMirrorsTheGhostBallInItsRail) {
 }
 
 TEST_F(RoutesTest, RoutesComeShortestFirst) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.5), Ball(1, 1.3, 0.4)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.5), table::AtRest(1, 1.3, 0.4)};
   const SearchContext search = Search(balls, 1, "upper_right");
   for (ShotKind kind : {ShotKind::kBank, ShotKind::kKick}) {
     const std::vector<Candidate> routes = Routes(search, kind);
@@ -99,7 +99,7 @@ TEST_F(RoutesTest, RoutesComeShortestFirst) {
 
 // A curve bends away from the cue ball's line: a ball on it blocks no curve.
 TEST_F(RoutesTest, CurvesAreTriedAtEachElevationAndSideWhateverIsOnTheCueBallsLine) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.7), Ball(3, 1.6, 0.7), Ball(6, 1.1, 0.735)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.7), table::AtRest(3, 1.6, 0.7), table::AtRest(6, 1.1, 0.735)};
   const std::vector<Candidate> curves = Routes(Search(balls, 3, "upper_right"), ShotKind::kCurve);
   ASSERT_EQ(curves.size(), 6u);
   for (const Candidate& c : curves) {
@@ -113,8 +113,8 @@ TEST_F(RoutesTest, CurvesAreTriedAtEachElevationAndSideWhateverIsOnTheCueBallsLi
 // contact); one 30 cm off them is left to the truth.
 TEST_F(RoutesTest, TheSearchSimulatesTheBallsNearTheRoutes) {
   const double r = params_.ball.radius;
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.6, 0.6), Ball(2, 1.1, 0.6 + 2 * r + 0.1),
-                                        Ball(3, 1.1, 0.6 - 2 * r - 0.3)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.6, 0.6), table::AtRest(2, 1.1, 0.6 + 2 * r + 0.1),
+                                        table::AtRest(3, 1.1, 0.6 - 2 * r - 0.3)};
   const SearchContext search = Search(balls, 1, "lower_right");
   const std::vector<Candidate> routes = Routes(search, ShotKind::kDirect);
   ASSERT_EQ(routes.size(), 1u);

@@ -33,7 +33,7 @@ TEST(SearchAngles, RotatedTurnsVelocityAndSpinAboutTheVertical) {
 }
 
 TEST_F(SearchContextTest, TheCueBallIsStruckFromRestWhereItLies) {
-  std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.6, 0.6)};
+  std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.6, 0.6)};
   balls[0].state[physics::kVx] = 1.0;
   const SearchContext search = Search(balls, 1, "upper_right");
   EXPECT_EQ(search.cue_position(), Eigen::Vector2d(0.6, 0.6));
@@ -45,7 +45,7 @@ TEST_F(SearchContextTest, TheCueBallIsStruckFromRestWhereItLies) {
 // A full-ball stroke along the line of centres meets K where the ghost ball is, and K leaves
 // along that line: no cut, no throw.
 TEST_F(SearchContextTest, AFullBallStrokeMeetsKAtTheGhostBall) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.6, 0.6), Ball(2, 2.0, 1.0)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.6, 0.6), table::AtRest(2, 2.0, 1.0)};
   SearchContext search = Search(balls, 1, "upper_right");
   const Contact c = search.FirstContact({1.5, 0.0, 0.0, 0.0, 0.0}, false);
   ASSERT_EQ(c.ball, 1);
@@ -59,7 +59,7 @@ TEST_F(SearchContextTest, AFullBallStrokeMeetsKAtTheGhostBall) {
 }
 
 TEST_F(SearchContextTest, AStrokeThatMeetsNoBallHasNoContact) {
-  const std::vector<SceneBall> balls = {Ball(0, 0.6, 0.6), Ball(1, 1.6, 0.6)};
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.6, 0.6)};
   SearchContext search = Search(balls, 1, "upper_right");
   EXPECT_EQ(search.FirstContact({1.0, M_PI / 2.0, 0.0, 0.0, 0.0}, false).ball, -1);
 }
@@ -71,7 +71,7 @@ TEST_F(SearchContextTest, APotPlayedUntilKDropsStopsThere) {
   const Eigen::Vector2d corner = table_.PocketNamed("lower_left")->centre;
   const Eigen::Vector2d along = Eigen::Vector2d(1.0, 1.0).normalized();
   const Eigen::Vector2d k = corner + 0.6 * along, cue = corner + 1.2 * along;
-  const std::vector<SceneBall> balls = {Ball(0, cue.x(), cue.y()), Ball(3, k.x(), k.y())};
+  const std::vector<SceneBall> balls = {table::AtRest(0, cue.x(), cue.y()), table::AtRest(3, k.x(), k.y())};
   SearchContext search = Search(balls, 3, "lower_left");
   const physics::CueStroke stroke{1.5, Angle(-along), 0.0, 0.0, 0.0};
   const Played until = search.Play(stroke, false, false);

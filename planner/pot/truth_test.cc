@@ -14,7 +14,7 @@ using table::SceneBall;
 
 class TruthTest : public testing::PotFixture {
  protected:
-  TruthTest() : balls_({Ball(0, 0.6, 0.6), Ball(1, 1.8, 0.9), Ball(2, 1.2, 0.3)}), search_(Search(balls_, 1, "upper_right")) {
+  TruthTest() : balls_({table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9), table::AtRest(2, 1.2, 0.3)}), search_(Search(balls_, 1, "upper_right")) {
     route_ = Routes(search_, ShotKind::kDirect).front().route;
     search_.SearchAmong(NearRoute(search_, route_), false);
   }

@@ -9,17 +9,11 @@
 namespace billiard::rules {
 namespace {
 
-table::SceneBall Ball(int id, double x, double y) {
-  table::SceneBall b;
-  b.id = id;
-  b.state.head<2>() = Eigen::Vector2d(x, y);
-  return b;
-}
 
 TEST(RulesetTest, ObjectBallsAreTheNumberedOnesAscending) {
-  EXPECT_EQ(ObjectBalls({Ball(5, 1, 1), Ball(0, 2, 1), Ball(2, 1, 0.5), Ball(9, 0.5, 0.5)}),
+  EXPECT_EQ(ObjectBalls({table::AtRest(5, 1, 1), table::AtRest(0, 2, 1), table::AtRest(2, 1, 0.5), table::AtRest(9, 0.5, 0.5)}),
             (std::vector<int>{2, 5, 9}));
-  EXPECT_TRUE(ObjectBalls({Ball(0, 1, 1)}).empty());
+  EXPECT_TRUE(ObjectBalls({table::AtRest(0, 1, 1)}).empty());
 }
 
 // The pocket games' fouls, each alone and in the order they are called.
@@ -64,7 +58,7 @@ class RespotTest : public ::testing::Test {
 
 TEST_F(RespotTest, OnItsSpotWhenFree) {
   const Eigen::Vector2d spot(0.75 * table_.length, 0.5 * table_.width);
-  std::vector<table::SceneBall> balls = {Ball(0, 0.5, 0.5)};
+  std::vector<table::SceneBall> balls = {table::AtRest(0, 0.5, 0.5)};
   PlaceRespotted(table_, radius_, {{9, spot, Eigen::Vector2d::UnitX()}}, 5e-3, 2e-3, &balls);
   ASSERT_EQ(balls.size(), 2u);
   EXPECT_EQ(balls.back().id, 9);
@@ -77,7 +71,7 @@ TEST_F(RespotTest, OnItsSpotWhenFree) {
 TEST_F(RespotTest, BehindItsSpotWhenTaken) {
   const Eigen::Vector2d spot(0.75 * table_.length, 0.5 * table_.width);
   const double step = 1e-3, clearance = 2e-3;
-  std::vector<table::SceneBall> balls = {Ball(4, spot.x(), spot.y())};
+  std::vector<table::SceneBall> balls = {table::AtRest(4, spot.x(), spot.y())};
   PlaceRespotted(table_, radius_, {{9, spot, Eigen::Vector2d::UnitX()}}, step, clearance, &balls);
   const Eigen::Vector2d at = balls.back().state.head<2>();
   EXPECT_EQ(at.y(), spot.y());  // on the long string

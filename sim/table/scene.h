@@ -10,4 +10,11 @@ struct SceneBall {
   physics::BallState state = physics::BallState::Zero();
 };
 
+// Ball `id` at rest at (x, y).
+inline SceneBall AtRest(int id, double x, double y) {
+  SceneBall ball{id};
+  ball.state.head<2>() = Eigen::Vector2d(x, y);
+  return ball;
+}
+
 }  // namespace billiard::table

@@ -14,12 +14,6 @@ constexpr double kRadius = 0.028575;
 
 table::TableGeometry Pool() { return table::BuildTable(params::LoadTableSpec("pool-9ft")); }
 
-table::SceneBall At(int id, double x, double y) {
-  table::SceneBall b;
-  b.id = id;
-  b.state.head<2>() = Eigen::Vector2d(x, y);
-  return b;
-}
 
 TEST(SessionBalls, AnObjectBallsClassIsItsNumberAndTheCueBallsIsCue) {
   EXPECT_EQ(TruthClass(kCueBall), ball_state_t::CLASS_CUE);
@@ -28,13 +22,13 @@ TEST(SessionBalls, AnObjectBallsClassIsItsNumberAndTheCueBallsIsCue) {
 }
 
 TEST(SessionBalls, FindsABallByItsIdAndTheObjectBallNearestTheCueBall) {
-  const std::vector<table::SceneBall> balls = {At(3, 2.0, 0.6), At(kCueBall, 0.5, 0.6),
-                                               At(7, 0.9, 1.0), At(5, 1.0, 0.6)};
+  const std::vector<table::SceneBall> balls = {table::AtRest(3, 2.0, 0.6), table::AtRest(kCueBall, 0.5, 0.6),
+                                               table::AtRest(7, 0.9, 1.0), table::AtRest(5, 1.0, 0.6)};
   EXPECT_EQ(Find(balls, 7)->id, 7);
   EXPECT_EQ(Find(balls, 8), balls.end());
   EXPECT_EQ(NearestObjectBall(balls, "s").id, 5);  // 0.5 m away; ball 7 is 0.57 m
   try {
-    NearestObjectBall({At(kCueBall, 0.5, 0.6)}, "lonely.json");
+    NearestObjectBall({table::AtRest(kCueBall, 0.5, 0.6)}, "lonely.json");
     ADD_FAILURE() << "no object ball, no throw";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "lonely.json: no ball to strike at");
@@ -54,12 +48,12 @@ TEST(SessionBalls, TheCueBallGoesBackOnTheHeadSpotOrBehindIt) {
   const table::TableGeometry table = Pool();
   const Eigen::Vector2d head_spot(0.25 * table.length, 0.5 * table.width);
   const std::vector<table::SceneBall> free =
-      InTheKitchen(table, kRadius, {At(kCueBall, 2.0, 0.3), At(4, 1.5, 0.6)});
+      InTheKitchen(table, kRadius, {table::AtRest(kCueBall, 2.0, 0.3), table::AtRest(4, 1.5, 0.6)});
   ASSERT_EQ(free.size(), 2u);
   EXPECT_EQ(Find(free, kCueBall)->state.head<2>(), head_spot);
 
   const std::vector<table::SceneBall> blocked =
-      InTheKitchen(table, kRadius, {At(4, head_spot.x(), head_spot.y())});
+      InTheKitchen(table, kRadius, {table::AtRest(4, head_spot.x(), head_spot.y())});
   ASSERT_EQ(blocked.size(), 2u);
   const Eigen::Vector2d cue = Find(blocked, kCueBall)->state.head<2>();
   EXPECT_LT(cue.x(), head_spot.x());

@@ -30,24 +30,18 @@ class ChoiceTest : public ::testing::Test {
       : params_(params::LoadParameters("pool")),
         table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {}
 
-  static table::SceneBall Ball(int id, double x, double y) {
-    table::SceneBall b;
-    b.id = id;
-    b.state.segment<2>(physics::kX) = Eigen::Vector2d(x, y);
-    return b;
-  }
   // The cue ball and ball 1 on the upper right corner pocket's diagonal, `object_back` and
   // `object_back + cue_back` from the pocket: a dead-straight pot.
   std::vector<table::SceneBall> StraightPot(double object_back, double cue_back) const {
     const Eigen::Vector2d corner = table_.PocketNamed("upper_right")->centre;
     const Eigen::Vector2d in = Eigen::Vector2d(1, 1).normalized();
     const Eigen::Vector2d o = corner - object_back * in, c = o - cue_back * in;
-    return {Ball(0, c.x(), c.y()), Ball(1, o.x(), o.y())};
+    return {table::AtRest(0, c.x(), c.y()), table::AtRest(1, o.x(), o.y())};
   }
   // StraightPot(0.5, 0.5) and ball 2 in the open: two balls to choose between.
   std::vector<table::SceneBall> TwoBalls() const {
     std::vector<table::SceneBall> balls = StraightPot(0.5, 0.5);
-    balls.push_back(Ball(2, 1.2, 0.5));
+    balls.push_back(table::AtRest(2, 1.2, 0.5));
     return balls;
   }
   pot::PotPlan Plan(const std::vector<table::SceneBall>& balls, int ball,

@@ -27,9 +27,6 @@ class PotFixture : public ::testing::Test {
       : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))),
         params_(params::LoadParameters("pool")) {}
 
-  static table::SceneBall Ball(int id, double x, double y) {
-    return {id, physics::MakeBallState(x, y, 0, 0, 0, 0, 0)};
-  }
 
   // The search context of the pot of ball `object` into `pocket` among `balls`.
   SearchContext Search(const std::vector<table::SceneBall>& balls, int object, const std::string& pocket,
