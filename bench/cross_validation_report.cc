@@ -23,18 +23,6 @@ const Protocol kProtocols[] = {
 
 const char* const kViews[] = {"overhead", "oblique", "all"};
 
-nlohmann::json FiguresJson(const Totals& t) {
-  return {{"frames", t.frames},
-          {"labels", t.labels},
-          {"found", t.found},
-          {"false", t.false_detections},
-          {"recall", t.recall},
-          {"precision", t.precision},
-          {"classed", t.classed},
-          {"classed_right", t.classed_right},
-          {"identity", t.classed ? static_cast<double>(t.classed_right) / t.classed : 0.0}};
-}
-
 nlohmann::json ViewsJson(const std::vector<FrameScore>& frames) {
   nlohmann::json views = nlohmann::json::object();
   for (const auto& [view, group] : ByView(frames)) views[view] = FiguresJson(Total(group));

@@ -459,25 +459,30 @@ std::map<std::string, std::vector<const FrameScore*>> ByView(
   return groups;
 }
 
-namespace {
-
-nlohmann::json TotalsJson(const Totals& t) {
+nlohmann::json FiguresJson(const Totals& t) {
   return {{"frames", t.frames},
           {"labels", t.labels},
           {"found", t.found},
           {"false", t.false_detections},
           {"recall", t.recall},
           {"precision", t.precision},
-          {"median_centre_error_px", t.median_error_px},
-          {"median_first_frame_ms", t.median_first_frame_ms},
-          {"median_next_frame_ms", t.median_next_frame_ms},
-          {"tables_labelled", t.tables_labelled},
-          {"tables_within_2px", t.tables_found},
           {"classed", t.classed},
           {"classed_right", t.classed_right},
-          {"identity", t.classed ? static_cast<double>(t.classed_right) / t.classed : 0.0},
-          {"missed_by_cause", t.missed_by_cause},
-          {"false_by_cause", t.false_by_cause}};
+          {"identity", t.classed ? static_cast<double>(t.classed_right) / t.classed : 0.0}};
+}
+
+namespace {
+
+nlohmann::json TotalsJson(const Totals& t) {
+  nlohmann::json j = FiguresJson(t);
+  j.update({{"median_centre_error_px", t.median_error_px},
+            {"median_first_frame_ms", t.median_first_frame_ms},
+            {"median_next_frame_ms", t.median_next_frame_ms},
+            {"tables_labelled", t.tables_labelled},
+            {"tables_within_2px", t.tables_found},
+            {"missed_by_cause", t.missed_by_cause},
+            {"false_by_cause", t.false_by_cause}});
+  return j;
 }
 
 }  // namespace
