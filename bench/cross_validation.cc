@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
-#include <set>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "bench/format.h"
 #include "bench/one_thread.h"
