@@ -5,13 +5,13 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <tuple>
 
 #include "bench/format.h"
+#include "bench/one_thread.h"
 #include "estimator/detection_overlay.h"
 
 namespace billiard::bench {
@@ -32,18 +32,6 @@ double MillisecondsOf(const Run& run) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
 }
-
-// OpenCV on one thread while it lives: the budget is a core's.
-class OneThread {
- public:
-  OneThread() : threads_(cv::getNumThreads()) { cv::setNumThreads(1); }
-  ~OneThread() { cv::setNumThreads(threads_); }
-  OneThread(const OneThread&) = delete;
-  OneThread& operator=(const OneThread&) = delete;
-
- private:
-  int threads_;
-};
 
 std::vector<Eigen::Vector2d> Points(const nlohmann::json& entry, const char* key,
                                     const std::string& where) {
@@ -461,41 +449,47 @@ Totals Total(const std::vector<const FrameScore*>& frames) {
   return t;
 }
 
-namespace {
-
-std::map<std::string, std::vector<const FrameScore*>> ByView(const DetectionBenchmarkResult& r) {
+std::map<std::string, std::vector<const FrameScore*>> ByView(
+    const std::vector<FrameScore>& frames) {
   std::map<std::string, std::vector<const FrameScore*>> groups;
-  for (const FrameScore& f : r.frames) {
+  for (const FrameScore& f : frames) {
     groups[f.view.empty() ? "no table" : f.view].push_back(&f);
     groups["all"].push_back(&f);
   }
   return groups;
 }
 
-nlohmann::json TotalsJson(const Totals& t) {
+nlohmann::json FiguresJson(const Totals& t) {
   return {{"frames", t.frames},
           {"labels", t.labels},
           {"found", t.found},
           {"false", t.false_detections},
           {"recall", t.recall},
           {"precision", t.precision},
-          {"median_centre_error_px", t.median_error_px},
-          {"median_first_frame_ms", t.median_first_frame_ms},
-          {"median_next_frame_ms", t.median_next_frame_ms},
-          {"tables_labelled", t.tables_labelled},
-          {"tables_within_2px", t.tables_found},
           {"classed", t.classed},
           {"classed_right", t.classed_right},
-          {"identity", t.classed ? static_cast<double>(t.classed_right) / t.classed : 0.0},
-          {"missed_by_cause", t.missed_by_cause},
-          {"false_by_cause", t.false_by_cause}};
+          {"identity", t.classed ? static_cast<double>(t.classed_right) / t.classed : 0.0}};
+}
+
+namespace {
+
+nlohmann::json TotalsJson(const Totals& t) {
+  nlohmann::json j = FiguresJson(t);
+  j.update({{"median_centre_error_px", t.median_error_px},
+            {"median_first_frame_ms", t.median_first_frame_ms},
+            {"median_next_frame_ms", t.median_next_frame_ms},
+            {"tables_labelled", t.tables_labelled},
+            {"tables_within_2px", t.tables_found},
+            {"missed_by_cause", t.missed_by_cause},
+            {"false_by_cause", t.false_by_cause}});
+  return j;
 }
 
 }  // namespace
 
 nlohmann::json DetectionSummaryJson(const DetectionBenchmarkResult& result) {
   nlohmann::json views = nlohmann::json::object();
-  for (const auto& [view, frames] : ByView(result)) views[view] = TotalsJson(Total(frames));
+  for (const auto& [view, frames] : ByView(result.frames)) views[view] = TotalsJson(Total(frames));
   return {{"set", result.set}, {"views", views}, {"wall_s", result.wall_s}};
 }
 
@@ -546,7 +540,7 @@ void WriteDetectionReport(const DetectionBenchmarkResult& result, const std::str
      << "| view | frames | labels | found | false | recall | precision | median centre error "
         "[px] | median time, first / next frame [ms] | tables within 2 px | identity |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const auto& [view, group] : ByView(result)) {
+  for (const auto& [view, group] : ByView(result.frames)) {
     const Totals t = Total(group);
     md << "| " << view << " | " << t.frames << " | " << t.labels << " | " << t.found << " | "
        << t.false_detections << " | " << Fixed(100 * t.recall, 1) << " % | "
@@ -555,7 +549,7 @@ void WriteDetectionReport(const DetectionBenchmarkResult& result, const std::str
        << t.tables_found << " / " << t.tables_labelled << " | " << t.classed_right << " / "
        << t.classed << " |\n";
   }
-  const Totals overall = Total(ByView(result)["all"]);
+  const Totals overall = Total(ByView(result.frames)["all"]);
   md << "\nMisses by cause:";
   for (const auto& [cause, n] : overall.missed_by_cause) md << " " << cause << " " << n << ";";
   md << "\nFalse detections by cause:";

@@ -141,6 +141,14 @@ struct Totals {
 };
 Totals Total(const std::vector<const FrameScore*>& frames);
 
+// A group's counts, recall, precision and identity (the matched balls whose class is labelled,
+// named right), as JSON.
+nlohmann::json FiguresJson(const Totals& t);
+
+// The frames by view ("overhead", "oblique", or "no table" where neither was labelled nor found)
+// and all of them ("all").
+std::map<std::string, std::vector<const FrameScore*>> ByView(const std::vector<FrameScore>& frames);
+
 // detection_report.md (and detection_results.json) into `dir`, created if missing.
 void WriteDetectionReport(const DetectionBenchmarkResult& result, const std::string& dir);
 

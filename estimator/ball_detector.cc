@@ -431,11 +431,14 @@ std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
 }
 
 void BallDetector::Identify(const cv::Mat& image, std::vector<BallDetection>* balls) const {
-  Name(Smoothed(AsBgr(image)), balls);
+  Name(SearchedFrame(image), balls);
 }
 
+cv::Mat BallDetector::SearchedFrame(const cv::Mat& image) const { return Smoothed(AsBgr(image)); }
+
 void BallDetector::Name(const cv::Mat& bgr, std::vector<BallDetection>* balls) const {
-  const std::vector<BallIdentity> identities = IdentifyBalls(bgr, *balls, options_.ball_set);
+  const std::vector<BallIdentity> identities =
+      IdentifyBalls(bgr, *balls, options_.ball_set, options_.identity);
   for (std::size_t i = 0; i < balls->size(); ++i) {
     (*balls)[i].ball_class = identities[i].ball_class;
     (*balls)[i].class_confidence = identities[i].confidence;

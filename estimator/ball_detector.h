@@ -40,6 +40,7 @@
 #include "estimator/ball_class.h"
 #include "estimator/ball_scale.h"
 #include "estimator/cloth_model.h"
+#include "estimator/identity_parameters.h"
 #include "estimator/table_finder.h"
 #include "sim/camera/camera_model.h"
 
@@ -59,10 +60,12 @@ struct DetectorOptions {
   // Expected ball radius [px] at the centre of the table (elsewhere the table's perspective
   // scales it); 0 = measure it from the balls in the frame.
   double ball_radius_px = 0;
-  // Detections scoring below this are not reported.
+  // Detections scoring below this are not reported (`billiard bench-detect --cross-validate`
+  // fits it on labelled frames).
   double min_score = 0.5;
-  // The balls' set, for their classes.
+  // The balls' set, for their classes, and the colours and shares they are told apart by.
   BallSet ball_set = BallSet::kPool;
+  IdentityParameters identity = HandSetIdentity();
   // The ball's radius over the playing surface's width, for a first scale where nothing on the
   // table is the size and shape of a ball (an empty table, a rack): pool balls on a 9-ft table.
   double ball_to_table_width = 0.028575 / 1.27;
@@ -99,6 +102,11 @@ class BallDetector {
   // at once, the rack's count of each class respected. For balls RefineAt found.
   void Identify(const cv::Mat& image, std::vector<BallDetection>* balls) const;
 
+  // The frame as Detect looks for and names the balls in it: BGR, smoothed when the camera the
+  // table was learnt from is noisy. ball_identity.h's NameBalls of LookAtBalls of it, with
+  // options().ball_set, is Detect's naming under any identity parameters.
+  cv::Mat SearchedFrame(const cv::Mat& image) const;
+
   // How much of the table's outline a frame shows where the frame the table was learnt from
   // showed it: the normalized correlation of the two frames' colour gradients along the cloth's
   // outline (the rails and pockets, which do not move when the balls do), at the table search's
@@ -106,6 +114,7 @@ class BallDetector {
   // width. 1 before a table is learnt, or for a frame of another size.
   double OutlineAgreement(const cv::Mat& image) const;
 
+  const DetectorOptions& options() const { return options_; }
   const std::optional<TableRegion>& table() const { return table_; }
   const std::optional<BallScale>& scale() const { return scale_; }
   const ClothModel& cloth() const { return cloth_; }

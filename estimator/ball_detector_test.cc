@@ -13,6 +13,7 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "estimator/ball_identity.h"
 #include "estimator/testing/real_table_photo.h"
 #include "estimator/testing/synthetic_table.h"
 #include "sim/params/parameter_sets.h"
@@ -482,6 +483,54 @@ TEST(BallDetector, EveryBallOfARackIsSureOnTheFirstFrame) {
       EXPECT_GE(nearest->score, kSure) << "seed " << seed << ", ball " << ball.id;
     }
   }
+}
+
+// What `billiard bench-detect --cross-validate` relies on: the balls' looks in the frame the
+// detector searched (SearchedFrame, smoothed here: the camera is noisy) named under other identity
+// parameters are what the detector names with those parameters, its balls unchanged. The other
+// parameters swap the 2's and the 3's colours, so that the names do change.
+TEST(BallDetector, NamesUnderOtherParametersAsItsBallsLooksSay) {
+  const physics::ModelParameters params = params::LoadParameters("pool");
+  const camera::CameraModel camera = camera::CameraModel::Overhead(params.table, 1280, 720);
+  render::RenderOptions render;
+  render.exposure_s = 0;
+  render.noise_sigma = 8;
+  std::vector<render::RenderBall> shown;
+  for (int id = 0; id <= 8; ++id) {
+    shown.push_back(render::RenderBall::AtRest(id, render::PoolBallColour(id),
+                                               {0.3 + 0.24 * id, 0.5 + 0.1 * (id % 2)}));
+  }
+  const cv::Mat image = render::TableRenderer(camera, params, render).Render(shown, 0.0);
+  IdentityParameters swapped = HandSetIdentity();
+  for (ColourPrototype& c : swapped.colours) {
+    if (c.table != BallSet::kPool) continue;
+    if (c.ball_class == PoolBall(2)) {
+      c.ball_class = PoolBall(3);
+    } else if (c.ball_class == PoolBall(3)) {
+      c.ball_class = PoolBall(2);
+    }
+  }
+  BallDetector by_hand;
+  const std::vector<BallDetection> found = by_hand.Detect(image);
+  ASSERT_EQ(found.size(), shown.size());
+  ASSERT_FALSE(by_hand.SearchedFrame(image).empty());
+  EXPECT_GT(cv::norm(by_hand.SearchedFrame(image), image, cv::NORM_INF), 0) << "not smoothed";
+  DetectorOptions options;
+  options.identity = swapped;
+  const std::vector<BallDetection> with_swapped = BallDetector(options).Detect(image);
+  const std::vector<BallIdentity> named = NameBalls(
+      LookAtBalls(by_hand.SearchedFrame(image), found, BallSet::kPool), found, BallSet::kPool,
+      swapped);
+  ASSERT_EQ(with_swapped.size(), found.size());
+  int changed = 0;
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    EXPECT_EQ(with_swapped[i].pixel, found[i].pixel);
+    EXPECT_EQ(with_swapped[i].score, found[i].score);
+    EXPECT_EQ(with_swapped[i].ball_class, named[i].ball_class) << "ball " << i;
+    EXPECT_EQ(with_swapped[i].class_confidence, named[i].confidence) << "ball " << i;
+    changed += with_swapped[i].ball_class != found[i].ball_class;
+  }
+  EXPECT_EQ(changed, 2);
 }
 
 TEST_F(RealPhoto, TimePerFrame) {

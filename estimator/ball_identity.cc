@@ -35,12 +35,9 @@ constexpr double kCueLightness = 90.0;
 constexpr float kClippedLevel = 250.0f / 255.0f;
 // A pixel is plain (Plain) when its chroma is below kPlainSaturation of its L*.
 constexpr double kPlainSaturation = 0.3;
-// Shares of a ball's disc: the cue ball is at least kCueWhite white with at most kCueColour
-// coloured; a black ball at least kBlackShare black; a pool ball at least kStripePlain plain
-// within kLimbRadii a stripe (its white caps, lit or in shade, facing the camera or at the limb).
-constexpr double kCueWhite = 0.6, kCueColour = 0.2;
-constexpr double kBlackShare = 0.5;
-constexpr double kStripePlain = 0.3;
+// The shares of a ball's disc that make it the cue ball, a black ball or a stripe are parameters
+// (identity_parameters.h); a stripe's plain share is read within kLimbRadii (its white caps, lit or
+// in shade, facing the camera or at the limb).
 // Colour distance (ColourDistance): hue fully, chroma and L* weighted down.
 constexpr double kChromaWeight = 0.3, kLightnessWeight = 0.3;
 // The classes are given all at once, the rack's count of each respected (the Hungarian method,
@@ -57,51 +54,6 @@ constexpr double kNoColourCost = 3.0;
 constexpr double kUnknownCost = 4.0;
 constexpr double kForbiddenCost = 1e6;
 constexpr double kCostFloor = 0.1;
-
-struct Colour {
-  BallClass ball_class;
-  cv::Vec3b srgb;  // R, G, B under white light
-};
-
-// Approximate colours of the balls (their sRGB under white light, read from manufacturers'
-// product pictures: Aramith pool and snooker sets, carom balls, whose red and yellow English
-// pool's are too); the classifier compares hues more than lightness, so a few per cent either way
-// changes little. A class may have more than one colour, the nearest counting: sets differ, and
-// pool's 4 is purple, or pink in TV sets (Aramith's TV balls, so that it is not taken for the 2
-// on camera), its 7 maroon or brown.
-const std::vector<Colour>& ColoursOf(BallSet set) {
-  static const std::vector<Colour> kPool = {
-      {PoolBall(1), {250, 195, 10}}, {PoolBall(2), {20, 50, 160}},
-      {PoolBall(3), {215, 30, 30}},  {PoolBall(4), {85, 35, 125}},  // purple
-      {PoolBall(4), {230, 80, 140}},                                // pink (TV sets)
-      {PoolBall(5), {250, 110, 10}}, {PoolBall(6), {10, 110, 60}},
-      {PoolBall(7), {125, 25, 35}},   // maroon
-      {PoolBall(7), {138, 54, 15}}};  // brown
-  static const std::vector<Colour> kSnooker = {
-      {BallClass::kRed, {200, 20, 20}},   {BallClass::kYellow, {250, 210, 10}},
-      {BallClass::kGreen, {10, 100, 50}}, {BallClass::kBrown, {110, 60, 30}},
-      {BallClass::kBlue, {10, 70, 180}},  {BallClass::kPink, {245, 150, 170}}};
-  static const std::vector<Colour> kCarom = {{BallClass::kRed, {210, 30, 30}},
-                                             {BallClass::kYellow, {250, 210, 20}}};
-  switch (set) {
-    case BallSet::kSnooker:
-      return kSnooker;
-    case BallSet::kCarom:
-    case BallSet::kBlackball:
-      return kCarom;
-    case BallSet::kPool:
-      break;
-  }
-  return kPool;
-}
-
-cv::Vec3f LabOfSrgb(const cv::Vec3b& srgb) {
-  const cv::Mat pixel(1, 1, CV_32FC3,
-                      cv::Scalar(srgb[2] / 255.0, srgb[1] / 255.0, srgb[0] / 255.0));  // BGR
-  cv::Mat lab;
-  cv::cvtColor(pixel, lab, cv::COLOR_BGR2Lab);
-  return lab.at<cv::Vec3f>(0, 0);
-}
 
 double Chroma(const cv::Vec3f& lab) { return std::hypot(lab[1], lab[2]); }
 
@@ -251,15 +203,6 @@ cv::Vec3f WhiteBalance(const std::vector<BallPixels>& balls) {
   return gain;
 }
 
-// What a ball shows: its disc's shares of white, black and coloured pixels and the coloured ones'
-// median colour, and the share of plain pixels over nearly the whole ball (kLimbRadii).
-struct DiscLook {
-  double white = 0, black = 0, plain = 0, colour = 0;
-  cv::Vec3f median{0, 0, 0};  // L*a*b*, of the coloured pixels
-  bool seen = false;          // any pixel at all
-  bool coloured = false;      // a colour read (median): the disc's, or a stripe's band beyond its cap
-};
-
 // Plain: a white surface at any shade, its chroma below kPlainSaturation of its lightness, or
 // black. Shade scales a surface's L*, a* and b* alike (each about the cube root of the light it
 // gets), so their ratio, the saturation (Fairchild 2013), is what shade leaves of a colour: a
@@ -276,8 +219,8 @@ std::ptrdiff_t PlainCount(const std::vector<cv::Vec3f>& lab) {
 
 // `disc` and `limb_ring`: the ball's pixels (L*a*b*) within kDiscRadii and from there to
 // kLimbRadii.
-DiscLook Look(const std::vector<cv::Vec3f>& disc, const std::vector<cv::Vec3f>& limb_ring) {
-  DiscLook look;
+BallLook Look(const std::vector<cv::Vec3f>& disc, const std::vector<cv::Vec3f>& limb_ring) {
+  BallLook look;
   if (disc.empty()) return look;
   look.seen = true;
   int white = 0, black = 0;
@@ -294,28 +237,28 @@ DiscLook Look(const std::vector<cv::Vec3f>& disc, const std::vector<cv::Vec3f>& 
   look.plain = static_cast<double>(PlainCount(disc) + PlainCount(limb_ring)) /
                (disc.size() + limb_ring.size());
   look.colour = coloured.size() / n;
-  look.coloured = !coloured.empty();
-  if (look.coloured) look.median = MedianColour(coloured);
+  if (!coloured.empty()) look.disc_colour = MedianColour(coloured);
   return look;
 }
 
 // A stripe seen cap on (its axis toward the camera) shows its white cap over nearly all of its
 // disc, out to about sin 60 = 0.87 of its radius for a band of +-30 degrees of latitude, and its
 // outline is fitted to the cap's edge, the sharpest; its band is then a ring just outside the
-// outline, out to about 1.15 of it. A ball without colour in its disc and with a stripe's plain
-// share takes the colour of that ring (out to kBandRadii), the cloth left out: the pixels within
-// kColourUnit of the cloth's median around the ball (kClothRing, a ring clear of the ball and of
-// its shadow), and the plain ones (the cap's blur, the shadow's grey), if they leave kBandShare of
-// the ring. A cue ball alone has only cloth and shadow around it, so nothing is read; one touching
-// a coloured ball may read that ball's colour, which costs it nothing as the cue ball (its cost
-// is in shares, not hues) and only matters against another white ball, a stripe cap on.
+// outline, out to about 1.15 of it. The colour of that ring (out to kBandRadii) is read with the
+// cloth left out: the pixels within kColourUnit of the cloth's median around the ball
+// (kClothRing, a ring clear of the ball and of its shadow), and the plain ones (the cap's blur, the
+// shadow's grey), if they leave kBandShare of the ring. A ball without colour in its disc and with
+// a stripe's plain share takes it (JudgedColour). A cue ball alone has only cloth and shadow
+// around it, so nothing is read; one touching a coloured ball may read that ball's colour, which
+// costs it nothing as the cue ball (its cost is in shares, not hues) and only matters against
+// another white ball, a stripe cap on.
 constexpr double kBandRadii = 1.25;
 constexpr double kClothRing[2] = {1.5, 2.0};
 constexpr double kBandShare = 0.15;
 
 void ReadBandBeyondCap(const cv::Mat& bgr, const BallDetection& ball, const cv::Vec3f& gain,
-                       DiscLook* look) {
-  if (!look->seen || look->colour >= kCueColour || look->plain < kStripePlain) return;
+                       BallLook* look) {
+  if (!look->seen) return;
   const auto cloth = ToLab(RingPixels(bgr, ball, kClothRing[0], kClothRing[1]), gain);
   if (cloth.empty()) return;
   const cv::Vec3f cloth_colour = MedianColour(cloth);
@@ -325,8 +268,7 @@ void ReadBandBeyondCap(const cv::Mat& bgr, const BallDetection& ball, const cv::
     if (!Plain(p) && ColourDistance(p, cloth_colour) >= kColourUnit) coloured.push_back(p);
   }
   if (coloured.empty() || coloured.size() < kBandShare * band.size()) return;
-  look->median = MedianColour(coloured);
-  look->coloured = true;
+  look->band_colour = MedianColour(coloured);
 }
 
 // What leaving a ball unnamed costs: kUnknownCost for a sure ball, less for an outline the
@@ -349,35 +291,35 @@ double Beyond(double share, double threshold, double margin) {
 }
 
 // The cost of calling a ball of this look `ball_class` of `set`: how far each of its shares is on
-// the wrong side of the class's threshold (kCueWhite, kCueColour, kBlackShare, kStripePlain), in
-// kShareMargin, plus its colour's distance from the class's colour (ColourDistance) in
-// kColourUnit.
-double Cost(const DiscLook& look, BallClass ball_class, BallSet set) {
+// the wrong side of the class's threshold (the parameters' cue_white, cue_colour, black_share,
+// stripe_plain), in kShareMargin, plus its colour's distance from the class's nearest colour
+// (ColourDistance) in kColourUnit.
+double Cost(const BallLook& look, BallClass ball_class, BallSet set, const IdentityParameters& p) {
   if (ball_class == BallClass::kCue) {
-    return Beyond(kCueWhite, look.white, kShareMargin) +
-           Beyond(look.colour, kCueColour, kShareMargin);
+    return Beyond(p.cue_white, look.white, kShareMargin) +
+           Beyond(look.colour, p.cue_colour, kShareMargin);
   }
   const bool black_ball =
       ball_class == BallClass::kBlack || (set == BallSet::kPool && ball_class == PoolBall(8));
-  if (black_ball) return Beyond(kBlackShare, look.black, kShareMargin);
+  if (black_ball) return Beyond(p.black_share, look.black, kShareMargin);
   // A coloured ball: some colour, not mostly black, its hue that of its class.
-  double cost =
-      Beyond(kCueColour, look.colour, kShareMargin) + Beyond(look.black, kBlackShare, kShareMargin);
-  int number = static_cast<int>(ball_class);
+  double cost = Beyond(p.cue_colour, look.colour, kShareMargin) +
+                Beyond(look.black, p.black_share, kShareMargin);
   if (set == BallSet::kPool) {
-    const bool stripe = number > 8;
-    cost += stripe ? Beyond(kStripePlain, look.plain, kShareMargin)
-                   : Beyond(look.plain, kStripePlain, kShareMargin);
-    if (stripe) number -= 8;
+    const bool stripe = static_cast<int>(ball_class) > 8;
+    cost += stripe ? Beyond(p.stripe_plain, look.plain, kShareMargin)
+                   : Beyond(look.plain, p.stripe_plain, kShareMargin);
   } else {
-    cost += Beyond(look.white, kCueWhite, kShareMargin);
+    cost += Beyond(look.white, p.cue_white, kShareMargin);
   }
-  const BallClass colour_class = set == BallSet::kPool ? PoolBall(number) : ball_class;
-  if (!look.coloured) return cost + kNoColourCost;
+  const std::optional<cv::Vec3f> colour = JudgedColour(look, p);
+  if (!colour) return cost + kNoColourCost;
+  const BallClass colour_class = ColourClassOf(ball_class, set);
+  const BallSet table = ColourTableOf(set);
   double distance = HUGE_VAL;  // to the nearest of the class's colours
-  for (const Colour& c : ColoursOf(set)) {
-    if (c.ball_class == colour_class) {
-      distance = std::min(distance, ColourDistance(look.median, LabOfSrgb(c.srgb)));
+  for (const ColourPrototype& c : p.colours) {
+    if (c.table == table && c.ball_class == colour_class) {
+      distance = std::min(distance, ColourDistance(*colour, c.lab));
     }
   }
   return cost + (distance < HUGE_VAL ? distance / kColourUnit : kNoColourCost);
@@ -408,18 +350,30 @@ double ClassMargin(const Eigen::MatrixXd& cost, const std::vector<BallClass>& sl
 
 }  // namespace
 
-std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<BallDetection>& balls,
-                                        BallSet set) {
+std::optional<cv::Vec3f> JudgedColour(const BallLook& look, const IdentityParameters& parameters) {
+  const bool cap_on = look.band_colour && look.colour < parameters.cue_colour &&
+                      look.plain >= parameters.stripe_plain;
+  return cap_on ? look.band_colour : look.disc_colour;
+}
+
+std::vector<BallLook> LookAtBalls(const cv::Mat& bgr, const std::vector<BallDetection>& balls,
+                                  BallSet set) {
   std::vector<BallPixels> pixels;
   for (const BallDetection& ball : balls) pixels.push_back(ReadBall(bgr, ball));
   const cv::Vec3f gain = WhiteBalance(pixels);
-  std::vector<DiscLook> looks;
+  std::vector<BallLook> looks;
   for (const BallPixels& ball : pixels) {
     looks.push_back(Look(ToLab(ball.disc, gain), ToLab(ball.limb_ring, gain)));
   }
   if (set == BallSet::kPool) {
     for (std::size_t i = 0; i < balls.size(); ++i) ReadBandBeyondCap(bgr, balls[i], gain, &looks[i]);
   }
+  return looks;
+}
+
+std::vector<BallIdentity> NameBalls(const std::vector<BallLook>& looks,
+                                    const std::vector<BallDetection>& balls, BallSet set,
+                                    const IdentityParameters& parameters) {
   // The rack holds so many of each class: one slot per ball of it, and for every ball a slot
   // "unknown" at kUnknownCost, which takes the balls beyond the rack's count (a false detection,
   // a ball of another set) and those no class fits.
@@ -432,7 +386,8 @@ std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<Ba
   Eigen::MatrixXd class_cost(n, classes.size());
   for (int i = 0; i < n; ++i) {
     for (std::size_t c = 0; c < classes.size(); ++c) {
-      class_cost(i, c) = looks[i].seen ? Cost(looks[i], classes[c].first, set) : kForbiddenCost;
+      class_cost(i, c) =
+          looks[i].seen ? Cost(looks[i], classes[c].first, set, parameters) : kForbiddenCost;
     }
     int slot = 0;
     for (std::size_t c = 0; c < classes.size(); ++c) {
@@ -453,6 +408,11 @@ std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<Ba
                      std::clamp(1.0 - (given + kCostFloor) / (other + kCostFloor), 0.0, 1.0)};
   }
   return identities;
+}
+
+std::vector<BallIdentity> IdentifyBalls(const cv::Mat& bgr, const std::vector<BallDetection>& balls,
+                                        BallSet set, const IdentityParameters& parameters) {
+  return NameBalls(LookAtBalls(bgr, balls, set), balls, set, parameters);
 }
 
 }  // namespace billiard::estimator

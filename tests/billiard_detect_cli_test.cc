@@ -272,6 +272,70 @@ TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
             2);
 }
 
+// A drawn carom table (a green cloth twice as long as wide in a wooden rail, three balls) as a
+// labelled set's frame `name` from repository `source`: its entry of labels.json.
+nlohmann::json DrawnCaromFrame(const std::string& dir, const std::string& name,
+                               const std::string& source, int shift) {
+  cv::Mat frame(400, 640, CV_8UC3, cv::Scalar(60, 60, 60));
+  cv::rectangle(frame, {50, 50}, {590, 350}, cv::Scalar(30, 60, 95), cv::FILLED);
+  cv::rectangle(frame, {80, 80}, {560, 320}, cv::Scalar(40, 130, 30), cv::FILLED);
+  const std::vector<std::pair<cv::Point, cv::Scalar>> balls = {
+      {{200 + shift, 150}, {235, 240, 240}},
+      {{320, 220 + shift}, {30, 30, 200}},
+      {{450 - shift, 180}, {20, 200, 240}}};
+  nlohmann::json centres = nlohmann::json::array();
+  for (const auto& [centre, colour] : balls) {
+    cv::circle(frame, centre, 8, colour, cv::FILLED, cv::LINE_AA);
+    centres.push_back({centre.x, centre.y});
+  }
+  EXPECT_TRUE(cv::imwrite(dir + "/" + name, frame));
+  return {{"balls", centres}, {"ball_radius_px", 8}, {"source", source + " " + name + "@1"},
+          {"kind", "carom"},  {"view", "overhead"},  {"classes", {"white", "red", "yellow"}}};
+}
+
+// `billiard bench-detect --cross-validate` on two sets of drawn frames from two repositories: a
+// fold per repository, the report written, one JSON object on stdout. Its usage errors are one
+// line each, exit 2: no set, the synthetic suite or corners asked for too, several sets without
+// it, a single source (nothing to fit on when it is left out).
+TEST(BilliardBenchDetect, CrossValidatesOneRepositoryAtATime) {
+  const ScratchDir dir;
+  for (const char* set : {"first", "second"}) {
+    std::filesystem::create_directories(dir / set);
+  }
+  const nlohmann::json first = {{"a.png", DrawnCaromFrame(dir / "first", "a.png", "one/repo", 0)},
+                                {"b.png", DrawnCaromFrame(dir / "first", "b.png", "two/repo", 9)}};
+  const nlohmann::json second = {
+      {"c.png", DrawnCaromFrame(dir / "second", "c.png", "two/repo", 20)}};
+  std::ofstream(dir / "first/labels.json") << first.dump();
+  std::ofstream(dir / "second/labels.json") << second.dump();
+  const std::string sets = " --set " + (dir / "first") + " --set " + (dir / "second");
+  const std::string args = "bench-detect --cross-validate" + sets + " --out " + (dir / "out");
+  const CommandResult r = Billiard(args);
+  ASSERT_EQ(r.status, 0) << args;
+  const auto j = OneObject(r, args);
+  EXPECT_EQ(j["frames"], 3);
+  EXPECT_EQ(j["sources"], 2);
+  EXPECT_EQ(j["folds"][0]["held_out"], "one/repo");
+  EXPECT_EQ(j["folds"][1]["frames"], 2);
+  EXPECT_EQ(j["pooled"]["set_by_hand"]["all"]["labels"], 9);
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/cross_validation_report.md"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/cross_validation_results.json"));
+  const std::string out = " --out " + (dir / "x");
+  for (const std::string& wrong :
+       {"bench-detect --cross-validate" + out,
+        "bench-detect --cross-validate --synthetic" + sets + out,
+        "bench-detect --cross-validate --corners c.json" + sets + out, "bench-detect" + sets + out,
+        "bench-detect --cross-validate --set " + (dir / "second") + out}) {
+    const CommandResult usage = Billiard(wrong, true);
+    EXPECT_EQ(usage.status, 2) << wrong << ": " << usage.out;
+    EXPECT_EQ(std::count(usage.out.begin(), usage.out.end(), '\n'), 1)
+        << wrong << ": " << usage.out;
+  }
+  EXPECT_NE(Billiard("bench-detect --cross-validate --set " + (dir / "second") + out, true)
+                .out.find("1 source"),
+            std::string::npos);
+}
+
 TEST_F(BilliardDetect, DrawsTheDetectionsOnAnOverlay) {
   const std::string overlay = ::testing::TempDir() + "/detect_overlay.png";
   std::remove(overlay.c_str());

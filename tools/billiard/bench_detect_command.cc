@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "bench/cross_validation.h"
+#include "bench/cross_validation_report.h"
 #include "bench/detection_benchmark.h"
 #include "bench/detection_suite.h"
 #include "sim/params/parameter_sets.h"
@@ -16,29 +18,68 @@ namespace billiard::cli {
 namespace {
 
 struct BenchDetectArgs {
-  std::string set, out, corners, params = params::kDefaultParameterSet;
-  bool synthetic = false, no_overlays = false;
+  std::vector<std::string> sets;
+  std::string out, corners, params = params::kDefaultParameterSet;
+  bool synthetic = false, no_overlays = false, cross_validate = false;
   std::uint32_t seed = 2026;
 };
 
+void Progress(const std::string& line) { std::cerr << "bench-detect: " << line << std::endl; }
+
+// The labelled sets of --set; UsageError naming the option when one is missing or malformed.
+std::vector<bench::LabelledSet> LoadSets(const std::vector<std::string>& directories) {
+  std::vector<bench::LabelledSet> sets;
+  for (const std::string& directory : directories) {
+    try {
+      sets.push_back({directory, bench::LoadLabelledSet(directory)});
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--set: ") + e.what());
+    }
+  }
+  return sets;
+}
+
+// --cross-validate: the constants fitted from data, left out one source at a time
+// (bench/cross_validation.h).
+void CrossValidate(const BenchDetectArgs& args) {
+  if (args.sets.empty()) throw UsageError("--cross-validate needs --set DIR (one or more)");
+  if (args.synthetic || !args.corners.empty()) {
+    throw UsageError("--cross-validate takes labelled sets alone: no --synthetic, no --corners");
+  }
+  const std::vector<bench::LabelledSet> sets = LoadSets(args.sets);
+  std::vector<bench::LabelledFrame> frames;
+  for (const auto& set : sets) frames.insert(frames.end(), set.frames.begin(), set.frames.end());
+  try {
+    bench::LeaveOneSourceOut(frames);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--cross-validate: ") + e.what());
+  }
+  RequireWritableDirectory(args.out, "--out");
+  bench::CrossValidationOptions options;
+  options.read_image = ReadImage;
+  options.progress = Progress;
+  const bench::CrossValidationResult result = bench::RunCrossValidation(sets, options);
+  bench::WriteCrossValidationReport(result, args.out);
+  Progress("wrote " + args.out + "/cross_validation_report.md (" + std::to_string(result.wall_s) +
+           " s)");
+  std::cout << bench::CrossValidationJson(result).dump() << std::endl;
+}
+
 void Run(const BenchDetectArgs& args) {
-  if (args.set.empty() == !args.synthetic) {
+  if (args.cross_validate) return CrossValidate(args);
+  if (args.sets.size() > 1) throw UsageError("give one --set DIR (several with --cross-validate)");
+  if (args.sets.empty() == !args.synthetic) {
     throw UsageError("give one of --set DIR (a labelled set) and --synthetic (the rendered suite)");
   }
   RequireWritableDirectory(args.out, "--out");
   std::vector<bench::LabelledFrame> frames;
-  std::string set = args.set;
+  const std::string set = args.synthetic ? args.out + "/synthetic" : args.sets.front();
   if (args.synthetic) {
-    set = args.out + "/synthetic";
     std::cerr << "bench-detect: rendering the synthetic suite into " << set << std::endl;
     frames = bench::RenderDetectionSuite(LoadParametersOption(args.params), args.seed);
     bench::WriteLabelledSet(frames, set);
   } else {
-    try {
-      frames = bench::LoadLabelledSet(args.set);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--set: ") + e.what());
-    }
+    frames = LoadSets(args.sets).front().frames;
     if (!args.corners.empty()) {
       try {
         bench::LoadTableCorners(args.corners, &frames);
@@ -50,9 +91,7 @@ void Run(const BenchDetectArgs& args) {
   bench::DetectionBenchmarkOptions options;
   options.read_image = ReadImage;
   if (!args.no_overlays) options.overlay_dir = args.out + "/overlays";
-  options.progress = [](const std::string& line) {
-    std::cerr << "bench-detect: " << line << std::endl;
-  };
+  options.progress = Progress;
   const bench::DetectionBenchmarkResult result = bench::RunDetectionBenchmark(set, frames, options);
   bench::WriteDetectionReport(result, args.out);
   std::cerr << "bench-detect: wrote " << args.out << "/detection_report.md (" << result.wall_s
@@ -68,7 +107,11 @@ void AddBenchDetectCommand(CLI::App& app) {
       "bench-detect",
       "Run the detector on a labelled set of frames (DIR/labels.json): recall, precision and "
       "centre error per frame and per view");
-  cmd->add_option("--set", args->set, "Directory with labels.json and its images");
+  cmd->add_option("--set", args->sets,
+                  "Directory with labels.json and its images (repeatable with --cross-validate)");
+  cmd->add_flag("--cross-validate", args->cross_validate,
+                "Fit the constants set from data on all sources but one and score the one left "
+                "out, for each source: OUT/cross_validation_report.md, JSON on stdout");
   cmd->add_flag("--synthetic", args->synthetic,
                 "Render the synthetic suite (overhead and oblique cameras, racks, five cloths) "
                 "into OUT/synthetic and run on it instead");
