@@ -187,12 +187,19 @@ TableGeometry BuildTable(const TableSpec& spec) {
   Require(PositiveFinite(spec.cushion_height), name, "cushion_height must be positive");
   Require(spec.corner.has_value() || !spec.side.has_value(), name,
           "side pockets without corner pockets");
+  if (spec.rail) {
+    Require(std::isfinite(spec.rail->height) && spec.rail->height >= spec.cushion_height, name,
+            "rail.height must be at least cushion_height");
+    Require(PositiveFinite(spec.rail->width), name, "rail.width must be positive");
+  }
 
   TableGeometry table;
   table.name = spec.name;
   table.length = spec.length;
   table.width = spec.width;
   table.cushion_height = spec.cushion_height;
+  table.rail_height = spec.rail ? spec.rail->height : spec.cushion_height;
+  table.rail_width = spec.rail ? spec.rail->width : 0.0;
   const double L = spec.length, W = spec.width;
   const Vector2d east(1, 0), north(0, 1), west(-1, 0), south(0, -1);
 
