@@ -17,25 +17,25 @@ double InsideRectangle(const table::TableGeometry& table, double overhang,
 
 // The least of the margins, named.
 BodyMargin Least(std::initializer_list<BodyMargin> margins) {
-  return *std::min_element(margins.begin(), margins.end(),
-                           [](const BodyMargin& a, const BodyMargin& b) {
-                             return a.distance < b.distance;
-                           });
+  return *std::min_element(
+      margins.begin(), margins.end(),
+      [](const BodyMargin& a, const BodyMargin& b) { return a.distance < b.distance; });
 }
 
 BodyMargin GantryMargin(const table::TableGeometry& table, const PlacedCue& cue,
                         const Robot& robot) {
   const Gantry& gantry = *robot.gantry;
   const Eigen::Vector3d carriage = cue.At(robot.bridge), butt = cue.At(cue.shape.length);
-  return Least({{InsideRectangle(table, gantry.overhang, carriage),
-                 "the carriage beyond its rectangle"},
-                {InsideRectangle(table, gantry.overhang, butt), "the butt beyond the gantry"},
-                {carriage.z() - gantry.clearance, "the carriage below its clearance"}});
+  return Least(
+      {{InsideRectangle(table, gantry.overhang, carriage), "the carriage beyond its rectangle"},
+       {InsideRectangle(table, gantry.overhang, butt), "the butt beyond the gantry"},
+       {carriage.z() - gantry.clearance, "the carriage below its clearance"}});
 }
 
 BodyMargin ArmMargin(const PlacedCue& cue, const Robot& robot) {
   const Arm& arm = *robot.arm;
-  return {arm.reach - (cue.At(robot.bridge) - arm.base).norm(), "the gripper beyond the arm's reach"};
+  return {arm.reach - (cue.At(robot.bridge) - arm.base).norm(),
+          "the gripper beyond the arm's reach"};
 }
 
 }  // namespace

@@ -37,8 +37,7 @@ TEST_F(BodyTest, APlayerHasNoBody) {
 TEST_F(BodyTest, TheCarriageAboveItsClearance) {
   robot_.gantry = Gantry{0.6, 0.05};
   for (double elevation : {0.0, 5 * kDegree, 20 * kDegree}) {
-    const BodyMargin margin =
-        BodyClearance(table_, Placed(1.27, 0.635, 0.3, elevation), robot_);
+    const BodyMargin margin = BodyClearance(table_, Placed(1.27, 0.635, 0.3, elevation), robot_);
     EXPECT_NEAR(margin.distance, kR + (kR + 0.2) * std::sin(elevation) - 0.05, 1e-15);
     EXPECT_EQ(margin.what, "the carriage below its clearance");
   }

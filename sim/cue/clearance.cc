@@ -28,9 +28,8 @@ std::string Format(double value) {
 }
 
 const table::SceneBall& CueBall(const std::vector<table::SceneBall>& balls, int cue_ball_id) {
-  const auto found = std::find_if(balls.begin(), balls.end(), [&](const table::SceneBall& b) {
-    return b.id == cue_ball_id;
-  });
+  const auto found = std::find_if(balls.begin(), balls.end(),
+                                  [&](const table::SceneBall& b) { return b.id == cue_ball_id; });
   if (found == balls.end()) {
     throw std::invalid_argument("no ball " + std::to_string(cue_ball_id) + " to strike");
   }

@@ -43,9 +43,9 @@ namespace billiard::cue {
 enum class Obstacle { kNone, kBall, kTable, kBody };
 
 struct CueClearance {
-  bool clears = false;  // the rod keeps a distance > 0 from everything
+  bool clears = false;                 // the rod keeps a distance > 0 from everything
   Obstacle nearest = Obstacle::kNone;  // what comes nearest (what blocks, when it does not clear)
-  int ball = -1;  // its id, for kBall
+  int ball = -1;                       // its id, for kBall
   // In words: "ball 3", "the cloth", "the lower rail" (table_obstacles.h), "the carriage below
   // its clearance" (body.h); empty for kNone (nothing on the table and no body).
   std::string what;

@@ -225,9 +225,9 @@ TEST_F(ClearanceTest, MirroredScenesNeedTheSameElevation) {
       }
       if (free) balls.push_back(Ball(static_cast<int>(balls.size()), x, y));
     }
-    const physics::CueStroke stroke = Stroke(2 * M_PI * unit(engine), 0.0,
-                                             0.4 * kR * (unit(engine) - 0.5),
-                                             0.4 * kR * (unit(engine) - 0.5));
+    const physics::CueStroke stroke =
+        Stroke(2 * M_PI * unit(engine), 0.0, 0.4 * kR * (unit(engine) - 0.5),
+               0.4 * kR * (unit(engine) - 0.5));
     const ClearingElevation plain = LeastClearingElevation(table_, kR, balls, 0, stroke, player);
     std::vector<table::SceneBall> across = balls, along = balls;
     for (table::SceneBall& b : across) b.state[1] = W - b.state[1];

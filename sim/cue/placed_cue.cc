@@ -8,8 +8,8 @@ namespace billiard::cue {
 
 PlacedCue PlaceCue(const Eigen::Vector2d& ball_centre, double ball_radius,
                    const physics::CueStroke& stroke, const CueShape& shape) {
-  for (double v : {ball_centre.x(), ball_centre.y(), ball_radius, stroke.heading,
-                   stroke.elevation, stroke.tip_side, stroke.tip_height}) {
+  for (double v : {ball_centre.x(), ball_centre.y(), ball_radius, stroke.heading, stroke.elevation,
+                   stroke.tip_side, stroke.tip_height}) {
     if (!std::isfinite(v)) throw std::invalid_argument("cue placement has a non-finite number");
   }
   const double offset_squared =
@@ -19,8 +19,8 @@ PlacedCue PlaceCue(const Eigen::Vector2d& ball_centre, double ball_radius,
   }
   // The stroke's frame: the axis c (forward and down), its horizontal right n and its up u.
   const Eigen::Vector3d heading(std::cos(stroke.heading), std::sin(stroke.heading), 0.0);
-  const Eigen::Vector3d axis = std::cos(stroke.elevation) * heading -
-                               std::sin(stroke.elevation) * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d axis =
+      std::cos(stroke.elevation) * heading - std::sin(stroke.elevation) * Eigen::Vector3d::UnitZ();
   const Eigen::Vector3d right = heading.cross(Eigen::Vector3d::UnitZ());
   const Eigen::Vector3d up = right.cross(axis);
 

@@ -30,8 +30,8 @@
 namespace billiard::cue {
 
 struct PlacedCue {
-  Eigen::Vector3d tip = Eigen::Vector3d::Zero();   // P, in the table frame [m]
-  Eigen::Vector3d back = Eigen::Vector3d::UnitX(); // unit, from the tip toward the butt (-c)
+  Eigen::Vector3d tip = Eigen::Vector3d::Zero();    // P, in the table frame [m]
+  Eigen::Vector3d back = Eigen::Vector3d::UnitX();  // unit, from the tip toward the butt (-c)
   CueShape shape;
   // The point of the axis `s` metres from the tip.
   Eigen::Vector3d At(double s) const { return tip + s * back; }

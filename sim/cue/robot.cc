@@ -43,11 +43,10 @@ void ValidateRanges(const Robot& robot) {
   Require(robot.elevation.min >= 0 && robot.elevation.min <= robot.elevation.max,
           "elevation_deg.min must be in [0, elevation_deg.max]");
   Require(robot.elevation.max < kRightAngle, "elevation_deg.max must be below 90");
-  Require(robot.max_tip_offset > 0 && robot.max_tip_offset < 1,
-          "max_tip_offset must be in (0, 1)");
+  Require(robot.max_tip_offset > 0 && robot.max_tip_offset < 1, "max_tip_offset must be in (0, 1)");
   Require(robot.speed.min >= 0 && robot.speed.min <= robot.speed.max,
-          "speed.min must be in [0, speed.max]");
-  Require(robot.speed.max > 0, "speed.max must be positive");
+          "speed_mps.min must be in [0, speed_mps.max]");
+  Require(robot.speed.max > 0, "speed_mps.max must be positive");
 }
 
 void ValidateBody(const Robot& robot) {

@@ -57,13 +57,20 @@ TEST(RobotTest, ValidatesEveryNumber) {
   ExpectRefused([](Robot* r) { r->bridge = 1.5; }, "bridge must be in [0, cue.length]");
   ExpectRefused([](Robot* r) { r->elevation.min = -0.1; },
                 "elevation_deg.min must be in [0, elevation_deg.max]");
-  ExpectRefused([](Robot* r) { r->elevation = {0.5, 0.4}; },
-                "elevation_deg.min must be in [0, elevation_deg.max]");
+  ExpectRefused(
+      [](Robot* r) {
+        r->elevation = {0.5, 0.4};
+      },
+      "elevation_deg.min must be in [0, elevation_deg.max]");
   ExpectRefused([](Robot* r) { r->elevation.max = M_PI / 2; },
                 "elevation_deg.max must be below 90");
   ExpectRefused([](Robot* r) { r->max_tip_offset = 1.0; }, "max_tip_offset must be in (0, 1)");
-  ExpectRefused([](Robot* r) { r->speed = {2.0, 1.0}; }, "speed.min must be in [0, speed.max]");
-  ExpectRefused([](Robot* r) { r->speed = {0.0, 0.0}; }, "speed.max must be positive");
+  ExpectRefused(
+      [](Robot* r) {
+        r->speed = {2.0, 1.0};
+      },
+      "speed_mps.min must be in [0, speed_mps.max]");
+  ExpectRefused([](Robot* r) { r->speed = {0.0, 0.0}; }, "speed_mps.max must be positive");
   ExpectRefused([](Robot* r) { r->gantry->overhang = -0.1; }, "gantry.overhang must be >= 0");
   ExpectRefused([](Robot* r) { r->gantry->clearance = -0.1; }, "gantry.clearance must be >= 0");
   ExpectRefused([&](Robot* r) { r->gantry->clearance = nan; }, "gantry: a number is not finite");

@@ -44,8 +44,8 @@ double DistanceToBall(const PlacedCue& cue, const Eigen::Vector3d& centre, doubl
   const double along = to_centre.dot(cue.back);
   const double across = (to_centre - along * cue.back).norm();
   const double taper = cue.shape.Taper();
-  const double nearest = std::clamp(along + taper * across / std::sqrt(1.0 - taper * taper), 0.0,
-                                    cue.shape.length);
+  const double nearest =
+      std::clamp(along + taper * across / std::sqrt(1.0 - taper * taper), 0.0, cue.shape.length);
   return (cue.At(nearest) - centre).norm() - cue.shape.RadiusAt(nearest) - radius;
 }
 
