@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <cstdio>
 #include <stdexcept>
 
 #include "sim/cue/body.h"
@@ -19,13 +19,6 @@ constexpr double kMillimetre = 1e-3;
 // The scan's step up the elevation range, and the bisection's resolution [rad].
 constexpr double kScanStep = 0.5 * kDegree;
 constexpr double kElevationResolution = 1e-9;
-
-std::string Format(double value) {
-  std::ostringstream s;
-  s.precision(3);
-  s << value;
-  return s.str();
-}
 
 const table::SceneBall& CueBall(const std::vector<table::SceneBall>& balls, int cue_ball_id) {
   const auto found = std::find_if(balls.begin(), balls.end(),
@@ -63,12 +56,16 @@ CueClearance ClearanceAt(double elevation, const table::TableGeometry& table, do
 }
 
 std::string NothingClears(const Robot& robot, const CueClearance& top) {
-  std::string at = top.what + (top.distance < 0 ? " is " + Format(-top.distance / kMillimetre) +
-                                                      " mm into the cue"
-                                                : " touches the cue");
-  return "nothing in the robot's elevations [" + Format(robot.elevation.min / kDegree) + ", " +
-         Format(robot.elevation.max / kDegree) + "] deg clears: at " +
-         Format(robot.elevation.max / kDegree) + " deg " + at;
+  char reason[256];
+  std::snprintf(reason, sizeof reason,
+                "nothing in the robot's elevations [%.3g, %.3g] deg clears: at %.3g deg %s ",
+                robot.elevation.min / kDegree, robot.elevation.max / kDegree,
+                robot.elevation.max / kDegree, top.what.c_str());
+  char depth[64] = "touches the cue";
+  if (top.distance < 0) {
+    std::snprintf(depth, sizeof depth, "is %.3g mm into the cue", -top.distance / kMillimetre);
+  }
+  return std::string(reason) + depth;
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #include "sim/cue/robot.h"
 
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
-#include <sstream>
 #include <stdexcept>
 
 namespace billiard::cue {
@@ -21,13 +21,6 @@ bool AllFinite(std::initializer_list<double> values) {
     if (!std::isfinite(v)) return false;
   }
   return true;
-}
-
-std::string Format(double value) {
-  std::ostringstream s;
-  s.precision(4);
-  s << value;
-  return s.str();
 }
 
 void ValidateCue(const Robot& robot) {
@@ -78,21 +71,20 @@ void ValidateRobot(const Robot& robot) {
 
 std::string OutsideRanges(const Robot& robot, const physics::CueStroke& stroke,
                           double ball_radius) {
-  if (!robot.elevation.Contains(stroke.elevation)) {
-    return "elevation " + Format(stroke.elevation / kDegree) + " deg outside the robot's [" +
-           Format(robot.elevation.min / kDegree) + ", " + Format(robot.elevation.max / kDegree) +
-           "] deg";
-  }
+  char reason[128] = "";
   const double offset = std::hypot(stroke.tip_side, stroke.tip_height) / ball_radius;
-  if (offset > robot.max_tip_offset) {
-    return "tip offset " + Format(offset) + " r beyond the robot's " +
-           Format(robot.max_tip_offset) + " r";
+  if (!robot.elevation.Contains(stroke.elevation)) {
+    std::snprintf(reason, sizeof reason, "elevation %.4g deg outside the robot's [%.4g, %.4g] deg",
+                  stroke.elevation / kDegree, robot.elevation.min / kDegree,
+                  robot.elevation.max / kDegree);
+  } else if (offset > robot.max_tip_offset) {
+    std::snprintf(reason, sizeof reason, "tip offset %.4g r beyond the robot's %.4g r", offset,
+                  robot.max_tip_offset);
+  } else if (!robot.speed.Contains(stroke.speed)) {
+    std::snprintf(reason, sizeof reason, "cue speed %.4g m/s outside the robot's [%.4g, %.4g] m/s",
+                  stroke.speed, robot.speed.min, robot.speed.max);
   }
-  if (!robot.speed.Contains(stroke.speed)) {
-    return "cue speed " + Format(stroke.speed) + " m/s outside the robot's [" +
-           Format(robot.speed.min) + ", " + Format(robot.speed.max) + "] m/s";
-  }
-  return "";
+  return reason;
 }
 
 }  // namespace billiard::cue

@@ -3,32 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/physics/golden_section.h"
+
 namespace billiard::cue {
 
 namespace {
 
 // The golden-section search stops when its bracket on the axis is this short [m].
 constexpr double kAxisResolution = 1e-10;
-
-// The least value of the convex `f` on [lo, hi] (golden-section search, Kiefer 1953), the ends
-// included: where the least is at an end, the bracket closes on it from inside.
-template <typename F>
-double LeastOnSegment(const F& f, double lo, double hi) {
-  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-  const double ends = std::min(f(lo), f(hi));
-  double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
-  double fa = f(a), fb = f(b);
-  while (hi - lo > kAxisResolution) {
-    if (fa < fb) {
-      hi = b, b = a, fb = fa;
-      a = hi - golden * (hi - lo), fa = f(a);
-    } else {
-      lo = a, a = b, fa = fb;
-      b = lo + golden * (hi - lo), fb = f(b);
-    }
-  }
-  return std::min({ends, fa, fb});
-}
 
 }  // namespace
 
@@ -50,9 +32,14 @@ double DistanceToBall(const PlacedCue& cue, const Eigen::Vector3d& centre, doubl
 }
 
 double DistanceToBox(const PlacedCue& cue, const Box& box) {
-  return LeastOnSegment(
-      [&](double s) { return SignedDistance(cue.At(s), box) - cue.shape.RadiusAt(s); }, 0.0,
-      cue.shape.length);
+  const auto apart = [&](double s) {
+    return SignedDistance(cue.At(s), box) - cue.shape.RadiusAt(s);
+  };
+  // Where the least is at an end, the bracket closes on it from inside.
+  const double least = physics::GoldenSectionMinimum(
+      apart, 0.0, cue.shape.length,
+      [](double lo, double hi) { return hi - lo <= kAxisResolution; });
+  return std::min({apart(least), apart(0.0), apart(cue.shape.length)});
 }
 
 }  // namespace billiard::cue
