@@ -12,9 +12,9 @@
 // range. What a stroke meets lies behind the cue ball, below the cue: raising the cue lifts
 // every point of the rod behind its tip (the point s from the tip by s sin(elevation), the tip
 // itself up the ball) and draws it in (by s (1 - cos(elevation))), so a ball, a rail, the cloth or
-// a gantry's limit that clears at one elevation clears at every higher one, and bisection finds
-// the least to any resolution. Not every limit is so: an arm's gripper moves on an arc as the
-// cue rises, and may leave the arm's reach. So the range is first scanned upward in steps of
+// a gantry's limit that clears at one elevation clears at the higher ones (every analytic case of
+// the tests is so), and bisection finds the least to any resolution. Not every limit is so: an
+// arm's gripper moves on an arc as the cue rises, and may leave the arm's reach. So the range is first scanned upward in steps of
 // half a degree for the first elevation that clears, then the step below it bisected to 1e-9
 // rad. A window that clears below the first clear step and is narrower than a step is missed:
 // the elevation found is then above the least, and still clears (the search only ever returns
