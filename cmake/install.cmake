@@ -25,8 +25,8 @@ set(BILLIARD_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/billiard)
 # the packages it needs besides the components before it (cmake/billiardConfig.cmake.in finds
 # them).
 set(BILLIARD_COMPONENTS physics params planner estimator lcmtypes)
-set(billiard_physics_targets physics batch table)
-set(billiard_physics_headers sim/physics sim/batch sim/table)
+set(billiard_physics_targets physics batch table cue)
+set(billiard_physics_headers sim/physics sim/batch sim/table sim/cue)
 set(billiard_params_targets params camera model_choice)
 set(billiard_params_headers sim/params sim/camera sim/model_choice)
 set(billiard_planner_targets planner pot)

@@ -89,7 +89,7 @@ cmake --install "$build" --prefix "$prefix" >"$work/install.log" || fail "cmake 
 if grep -rnE '#include "(sim|planner|estimator|lcmtypes)/' "$prefix/include"; then
   fail "installed headers include paths of the source tree (above)"
 fi
-if grep -rnE '#include <(ceres|opencv2|lcm|nlohmann)/' "$prefix"/include/billiard/sim/{physics,batch,table}; then
+if grep -rnE '#include <(ceres|opencv2|lcm|nlohmann)/' "$prefix"/include/billiard/sim/{physics,batch,table,cue}; then
   fail "the installed physics headers include more than Eigen (above)"
 fi
 

@@ -34,6 +34,15 @@ std::optional<TableSpec::PocketSpec> ReadPocket(const nlohmann::json& j, const c
   return p;
 }
 
+// The rail object, if there.
+std::optional<TableSpec::RailSpec> ReadRail(const nlohmann::json& j, const std::string& origin) {
+  if (!j.contains("rail")) return std::nullopt;
+  TableSpec::RailSpec rail;
+  internal::ReadSection(j.at("rail"), "rail", {{"height", &rail.height}, {"width", &rail.width}},
+                        origin);
+  return rail;
+}
+
 }  // namespace
 
 TableSpec ParseTableSpec(const std::string& json_text, const std::string& origin) {
@@ -42,11 +51,12 @@ TableSpec ParseTableSpec(const std::string& json_text, const std::string& origin
   internal::ReadSection(
       j, "",
       {{"length", &spec.length}, {"width", &spec.width}, {"cushion_height", &spec.cushion_height}},
-      origin, {"name", "source", "corner", "side"});
+      origin, {"name", "source", "corner", "side", "rail"});
   spec.name = internal::ReadText(j, "name", origin, origin);
   spec.source = internal::ReadText(j, "source", "", origin);
   spec.corner = ReadPocket(j, "corner", origin);
   spec.side = ReadPocket(j, "side", origin);
+  spec.rail = ReadRail(j, origin);
   try {
     table::BuildTable(spec);
   } catch (const std::invalid_argument& e) {

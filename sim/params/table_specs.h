@@ -5,7 +5,9 @@
 // and "source" (where every number comes from), the numbers "length", "width" and
 // "cushion_height" [m], and the optional objects "corner" and "side", each with the numbers
 // "mouth" [m], "jaw_angle" [deg], "jaw_radius" [m] and "capture_depth" [m]
-// (table::TableSpec). A table without pockets (carom) has neither object.
+// (table::TableSpec). A table without pockets (carom) has neither object. The optional object
+// "rail" has the numbers "height" and "width" [m] (TableSpec::RailSpec): every built-in table
+// has one; a file without one (written before rails were data) still loads.
 //
 // Module: billiard::params. Includes the physics and the table (sim/table/).
 #pragma once

@@ -22,6 +22,7 @@ TEST(TableSpecsTest, BuiltInTablesLoadAndBuild) {
     const table::TableSpec spec = LoadTableSpec(name);
     EXPECT_EQ(spec.name, name);
     EXPECT_FALSE(spec.source.empty()) << name << " must say where its numbers come from";
+    EXPECT_TRUE(spec.rail.has_value()) << name << " must give its rail";
     EXPECT_NO_THROW(table::BuildTable(spec)) << name;
   }
 }
@@ -57,6 +58,17 @@ TEST(TableSpecsTest, SizesWithinTheRules) {
     EXPECT_NEAR(spec.corner->jaw_angle, 142, 1);
     EXPECT_NEAR(spec.side->jaw_angle, 104, 1);
   }
+  // The rail: WPA's width (4-7.5 in, the cushion included) on every table, none lower than its
+  // nose, the pool rail FastFiz's 0.040005 m.
+  for (const std::string& name : TableNames()) {
+    SCOPED_TRACE(name);
+    const table::TableSpec spec = LoadTableSpec(name);
+    ASSERT_TRUE(spec.rail.has_value());
+    EXPECT_GE(spec.rail->width, 4.0 * kInch);
+    EXPECT_LE(spec.rail->width, 7.5 * kInch);
+    EXPECT_GT(spec.rail->height, spec.cushion_height);
+  }
+  EXPECT_EQ(LoadTableSpec("pool-9ft").rail->height, 0.040005);
   const table::TableSpec carom = LoadTableSpec("carom-10ft");
   EXPECT_NEAR(carom.cushion_height, 0.037, 0.001);
   EXPECT_FALSE(carom.corner || carom.side);
@@ -73,6 +85,16 @@ TEST(TableSpecsTest, ParsesAMinimalTableNamedByItsOrigin) {
   ASSERT_TRUE(spec.corner.has_value());
   EXPECT_EQ(spec.corner->capture_depth, 0.044);
   EXPECT_FALSE(spec.side.has_value());
+  EXPECT_FALSE(spec.rail.has_value()) << "a table written before rails were data still loads";
+}
+
+TEST(TableSpecsTest, ReadsTheRail) {
+  const table::TableSpec spec = ParseTableSpec(
+      R"({"length": 2, "width": 1, "cushion_height": 0.036, "rail": {"height": 0.04, "width": 0.15}})",
+      "t.json");
+  ASSERT_TRUE(spec.rail.has_value());
+  EXPECT_EQ(spec.rail->height, 0.04);
+  EXPECT_EQ(spec.rail->width, 0.15);
 }
 
 void ExpectRefused(const std::string& json, const std::string& message) {
@@ -102,6 +124,16 @@ TEST(TableSpecsTest, RefusesNamingTheKey) {
                 "t.json: name must be a string, not number");
   ExpectRefused(R"({"length": 2,)", "t.json: not valid JSON");
   ExpectRefused(R"([1, 2])", "t.json: a table specification is a JSON object");
+  ExpectRefused(R"({"length": 2, "width": 1, "cushion_height": 0.03, "rail": {"height": 0.04}})",
+                "t.json: missing number rail.width");
+  ExpectRefused(R"({"length": 2, "width": 1, "cushion_height": 0.03,
+    "rail": {"height": 0.04, "width": 0.15, "colour": 1}})",
+                "t.json: unknown key rail.colour");
+  ExpectRefused(R"({"length": 2, "width": 1, "cushion_height": 0.03, "rail": 0.04})",
+                "t.json: \"rail\" must be an object, not number");
+  ExpectRefused(R"({"length": 2, "width": 1, "cushion_height": 0.03,
+    "rail": {"height": 0.02, "width": 0.15}})",
+                "t.json: table 't.json': rail.height must be at least cushion_height");
   ExpectRefused(R"({"length": 2, "width": 1, "cushion_height": -0.03})",
                 "t.json: table 't.json': cushion_height must be positive");
 }

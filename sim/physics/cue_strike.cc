@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sim/physics/golden_section.h"
+
 namespace billiard::physics {
 
 namespace {
@@ -174,23 +176,6 @@ StrokeSolution SolveStroke(const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
   return s;
 }
 
-// Golden-section search for the minimum of a unimodal f on [lo, hi].
-double Minimise(const std::function<double(double)>& f, double lo, double hi) {
-  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
-  double fa = f(a), fb = f(b);
-  while (hi - lo > 1e-12 * hi) {
-    if (fa < fb) {
-      hi = b, b = a, fb = fa;
-      a = hi - golden * (hi - lo), fa = f(a);
-    } else {
-      lo = a, a = b, fa = fb;
-      b = lo + golden * (hi - lo), fb = f(b);
-    }
-  }
-  return 0.5 * (lo + hi);
-}
-
 }  // namespace
 
 double SquirtAngle(double tip_side, const ModelParameters& p) {
@@ -278,7 +263,8 @@ LaunchSpeedRange LaunchSpeedsFor(double spin_ratio, double side_spin, const Mode
   const double fastest = p.cue.max_speed * std::sqrt(p.cue.mass / p.ball.mass);
   double lo = range.min;
   if (lo > 0.0 && above_max(lo) > 0.0) {
-    lo = Minimise(cue_speed, lo, fastest);
+    lo = GoldenSectionMinimum(cue_speed, lo, fastest,
+                              [](double a, double b) { return b - a <= 1e-12 * b; });
     if (above_max(lo) > 0.0) return LaunchSpeedRange{0.0, -1.0};
     range.min = Bisect(above_max, range.min, lo);
   }

@@ -179,6 +179,17 @@ bool TableGeometry::InsideBoundary(const Vector2d& p, double radius) const {
   return true;
 }
 
+namespace {
+
+// A rail no lower than the cushion's nose, of some width.
+void ValidateRail(const TableSpec& spec) {
+  Require(std::isfinite(spec.rail->height) && spec.rail->height >= spec.cushion_height, spec.name,
+          "rail.height must be at least cushion_height");
+  Require(PositiveFinite(spec.rail->width), spec.name, "rail.width must be positive");
+}
+
+}  // namespace
+
 TableGeometry BuildTable(const TableSpec& spec) {
   const std::string& name = spec.name;
   Require(PositiveFinite(spec.length) && PositiveFinite(spec.width), name,
@@ -187,12 +198,15 @@ TableGeometry BuildTable(const TableSpec& spec) {
   Require(PositiveFinite(spec.cushion_height), name, "cushion_height must be positive");
   Require(spec.corner.has_value() || !spec.side.has_value(), name,
           "side pockets without corner pockets");
+  if (spec.rail) ValidateRail(spec);
 
   TableGeometry table;
   table.name = spec.name;
   table.length = spec.length;
   table.width = spec.width;
   table.cushion_height = spec.cushion_height;
+  table.rail_height = spec.rail ? spec.rail->height : spec.cushion_height;
+  table.rail_width = spec.rail ? spec.rail->width : 0.0;
   const double L = spec.length, W = spec.width;
   const Vector2d east(1, 0), north(0, 1), west(-1, 0), south(0, -1);
 

@@ -53,6 +53,16 @@ struct TableSpec {
     double capture_depth = 0;  // capture line inset from the mouth line, into the pocket [m]
   };
   std::optional<PocketSpec> corner, side;  // none for carom; side pockets need corner pockets
+  // The wooden rail the cushion is glued to: its top's height above the cloth and its width from
+  // the cushion's nose outward (the WPA's rail width, the cushion included) [m]. What a cue must
+  // pass over (sim/cue/clearance.h); the balls never meet it. Optional, so that a table written
+  // before rails were data still loads: without one the rail is taken as FastFiz takes it (a wall
+  // at the nose line; here as high as the nose).
+  struct RailSpec {
+    double height = 0;  // >= cushion_height
+    double width = 0;   // > 0
+  };
+  std::optional<RailSpec> rail;
 };
 
 // A nose line a -> b; `normal` is the unit normal pointing into the playing area (the left of
@@ -83,6 +93,9 @@ struct Pocket {
 struct TableGeometry {
   std::string name;
   double length = 0, width = 0, cushion_height = 0;
+  // The rail along every side (TableSpec::RailSpec), beyond the nose lines x = 0, x = length,
+  // y = 0, y = width; a spec without one gives the nose's height and no width.
+  double rail_height = 0, rail_width = 0;
   std::vector<CushionLine> lines;    // the rails, then the jaw faces
   std::vector<CushionPoint> points;  // the rounded noses
   std::vector<Pocket> pockets;
@@ -107,7 +120,8 @@ struct TableGeometry {
 // pockets), 4 for carom; two jaw faces and two rounded noses per pocket. Throws
 // std::invalid_argument with a one-line reason on a spec that does not make a table (sizes not
 // positive and finite, a jaw angle that opens the pocket or folds it shut, jaws that close
-// before the capture line, pockets that overlap along a cushion, side pockets without corners).
+// before the capture line, pockets that overlap along a cushion, side pockets without corners,
+// a rail lower than the cushion's nose or without width).
 TableGeometry BuildTable(const TableSpec& spec);
 
 }  // namespace billiard::table

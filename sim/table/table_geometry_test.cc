@@ -338,6 +338,26 @@ TEST(TableGeometryTest, RefusesSpecsThatMakeNoTable) {
   spec = PoolSpec();
   spec.side->capture_depth = -0.01;
   ExpectRefused(spec, "side pocket capture_depth must be >= 0");
+  spec = PoolSpec();
+  spec.rail->height = 0.9 * spec.cushion_height;  // the nose would stand above the wood
+  ExpectRefused(spec, "rail.height must be at least cushion_height");
+  spec = PoolSpec();
+  spec.rail->width = 0;
+  ExpectRefused(spec, "rail.width must be positive");
+}
+
+// The rail as given, and without one (a spec written before rails were data) a wall at the nose
+// line as high as the nose: FastFiz's rail, at our nose's height.
+TEST(TableGeometryTest, RailAsGivenOrAtTheNose) {
+  TableSpec spec = PoolSpec();
+  ASSERT_TRUE(spec.rail.has_value());
+  const TableGeometry pool = BuildTable(spec);
+  EXPECT_EQ(pool.rail_height, spec.rail->height);
+  EXPECT_EQ(pool.rail_width, spec.rail->width);
+  spec.rail.reset();
+  const TableGeometry bare = BuildTable(spec);
+  EXPECT_EQ(bare.rail_height, spec.cushion_height);
+  EXPECT_EQ(bare.rail_width, 0.0);
 }
 
 }  // namespace
