@@ -17,13 +17,10 @@ std::string CameraSource::Describe() const {
 }
 
 std::string CameraSource::Open() {
-  const bool opened = IsPipeline() ? capture_.open(device_, cv::CAP_GSTREAMER)
-                                   : capture_.open(device_, cv::CAP_V4L2) ||
-                                         capture_.open(device_, cv::CAP_GSTREAMER);
-  if (!opened) {
+  if (!capture_.open(device_, IsPipeline() ? cv::CAP_GSTREAMER : cv::CAP_V4L2)) {
     return IsPipeline() ? Describe() + " does not start (are its elements installed? "
                                        "gst-inspect-1.0 names them)"
-                        : Describe() + " does not open as a camera (V4L2, GStreamer)";
+                        : Describe() + " does not open as a V4L2 camera";
   }
   if (!IsPipeline()) AskForTheFormat();
   const double rate = capture_.get(cv::CAP_PROP_FPS);

@@ -1,7 +1,7 @@
-// Frames of a live camera through OpenCV's VideoCapture: a V4L2 device (/dev/videoN), tried
-// with the V4L2 backend first and then GStreamer's where the build has it, or a GStreamer
-// pipeline ending in appsink ("v4l2src device=/dev/video0 ! videoconvert ! appsink": any text
-// with a '!').
+// Frames of a live camera through OpenCV's VideoCapture: a V4L2 device (/dev/videoN) through
+// its V4L2 backend, or a GStreamer pipeline ending in appsink through its GStreamer backend,
+// where the build has it ("v4l2src device=/dev/video0 ! videoconvert ! appsink": any text with
+// a '!'), for a camera V4L2 does not drive or a stream over the network.
 //
 // A frame is stamped with the wall clock when the camera hands it over (grab), before it is
 // decoded (retrieve): later than its exposure by the driver's and the USB link's latency, which

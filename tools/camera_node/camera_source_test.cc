@@ -13,7 +13,7 @@ TEST(CameraSource, WhatIsNotACameraIsRefusedInOneLine) {
   QuietVideoBackends();
   CameraSource not_a_camera("/dev/null", 0, 0, 0);
   EXPECT_TRUE(not_a_camera.Live());
-  EXPECT_EQ(not_a_camera.Open(), "the camera /dev/null does not open as a camera (V4L2, GStreamer)");
+  EXPECT_EQ(not_a_camera.Open(), "the camera /dev/null does not open as a V4L2 camera");
   CameraSource broken("no_such_element ! appsink", 0, 0, 0);
   EXPECT_EQ(broken.Open(),
             "the GStreamer pipeline 'no_such_element ! appsink' does not start (are its elements "

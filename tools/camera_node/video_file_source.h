@@ -1,5 +1,5 @@
-// Frames of a video file, through OpenCV's VideoCapture (FFmpeg first, then GStreamer and the
-// other backends the build has, in OpenCV's order).
+// Frames of a video file, through OpenCV's VideoCapture with its FFmpeg backend (any backend
+// OpenCV finds, GStreamer's among them, in a build without FFmpeg).
 //
 // A frame's capture time is the time of the opening plus the frame's own time in the video
 // (CAP_PROP_POS_MSEC, its presentation time; its index over the rate where a backend gives
