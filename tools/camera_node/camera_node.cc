@@ -74,8 +74,9 @@ void CameraNode::Opened(const ReaderEvent& event) {
   state_ = SourceState::kRunning;
   health_.Set(kSourceStateCounter, static_cast<int>(state_));
   live_ = event.live;
-  const double pace =
-      options_.fps > 0 ? options_.fps : event.rate > 0 ? event.rate : kDefaultImageRate;
+  const double pace = options_.fps > 0 ? options_.fps
+                      : event.rate > 0 ? event.rate
+                                       : kDefaultImageRate;
   interval_ = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1 / pace));
   std::string line = reader_.description() + " is open";
   if (live_) {
@@ -113,8 +114,8 @@ void CameraNode::PublishWhenDue() {
 void CameraNode::Publish(const ReaderEvent& frame) {
   try {
     const image_t message =
-        messages::EncodeImage(frame.frame.image, frame.frame.utime,
-                              messages::ImageEncoding::kMjpeg, options_.jpeg_quality);
+        messages::EncodeImage(frame.frame.image, frame.frame.utime, messages::ImageEncoding::kMjpeg,
+                              options_.jpeg_quality);
     if (lcm_.publish(messages::kCameraImageChannel, &message) != 0) {
       return FrameFailed("publishing CAMERA_IMAGE failed");
     }

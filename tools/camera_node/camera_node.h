@@ -88,7 +88,7 @@ class CameraNode {
   std::string end_reason_;
   bool live_ = false;
   Clock::duration interval_ = Clock::duration::zero();  // between a file's frames
-  std::optional<ReaderEvent> held_;                      // a frame waiting for its time
+  std::optional<ReaderEvent> held_;                     // a frame waiting for its time
   std::optional<Clock::time_point> next_due_;
 };
 

@@ -19,7 +19,9 @@ using billiard::testing::SeparateOutput;
 
 const std::string kCameraNode = CAMERA_NODE_BIN;
 
-int Lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+int Lines(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
 
 std::string Video(const std::string& name) {
   const std::string path = ::testing::TempDir() + "/camera_node_command_" + name;

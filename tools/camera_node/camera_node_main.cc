@@ -4,8 +4,9 @@
 #include "tools/camera_node/camera_node_command.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"camera_node: frames of a camera, a video file or a directory of images out as "
-               "CAMERA_IMAGE"};
+  CLI::App app{
+      "camera_node: frames of a camera, a video file or a directory of images out as "
+      "CAMERA_IMAGE"};
   billiard::nodes::OneLineErrors(app, "camera_node");
   billiard::nodes::VersionFlag(app, "camera_node");
   billiard::camera_node::CameraNodeCommandLine line;

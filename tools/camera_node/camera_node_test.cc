@@ -189,8 +189,8 @@ TEST_F(CameraNodeTest, AnImageThatDoesNotDecodeIsAFailedFrameAndTheRestPlay) {
     if (k == 2) {
       testing::WriteGarbage(dir + "/2.png");
     } else {
-      ASSERT_TRUE(cv::imwrite(dir + "/" + std::to_string(k) + ".png",
-                              testing::NumberedFrame(k, kSize)));
+      ASSERT_TRUE(
+          cv::imwrite(dir + "/" + std::to_string(k) + ".png", testing::NumberedFrame(k, kSize)));
     }
   }
   Start({SourceSpec::Kind::kImages, dir}, Unpaced());

@@ -18,8 +18,9 @@ std::string CameraSource::Describe() const {
 
 std::string CameraSource::Open() {
   if (!capture_.open(device_, IsPipeline() ? cv::CAP_GSTREAMER : cv::CAP_V4L2)) {
-    return IsPipeline() ? Describe() + " does not start (are its elements installed? "
-                                       "gst-inspect-1.0 names them)"
+    return IsPipeline() ? Describe() +
+                              " does not start (are its elements installed? "
+                              "gst-inspect-1.0 names them)"
                         : Describe() + " does not open as a V4L2 camera";
   }
   if (!IsPipeline()) AskForTheFormat();

@@ -43,7 +43,8 @@ const physics::ModelParameters& Pool() {
 class TrackedOn {
  public:
   explicit TrackedOn(const camera::CameraModel& camera)
-      : estimator_(lcm_, camera, Pool(), {}, {}, [this](const std::string& l) { log.push_back(l); }) {
+      : estimator_(lcm_, camera, Pool(), {}, {},
+                   [this](const std::string& l) { log.push_back(l); }) {
     lcm_.subscribe(messages::kTableStateChannel, &TrackedOn::On, this);
   }
   lcm::LCM& lcm() { return lcm_; }

@@ -51,8 +51,7 @@ bool Stalled(const Shared& s, Clock::time_point now, Clock::duration timeout) {
   return !s.over && !s.waiting_for_room && now - s.waiting_since > timeout;
 }
 
-std::string StallReason(const Shared& s, const std::string& description,
-                        Clock::duration timeout) {
+std::string StallReason(const Shared& s, const std::string& description, Clock::duration timeout) {
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "%.1f s", std::chrono::duration<double>(timeout).count());
   return s.opened ? description + " gave no frame for " + seconds + ": it stalled"
@@ -188,10 +187,9 @@ FrameReader::~FrameReader() {
   s.stop = true;
   s.changed.notify_all();
   // A read the watchdog gave up on is not waited for again.
-  const bool finished =
-      (s.over && !s.finished)
-          ? false
-          : s.changed.wait_for(lock, options_.stall_timeout, [&] { return s.finished; });
+  const bool finished = (s.over && !s.finished) ? false
+                                                : s.changed.wait_for(lock, options_.stall_timeout,
+                                                                     [&] { return s.finished; });
   lock.unlock();
   if (finished) {
     thread_.join();

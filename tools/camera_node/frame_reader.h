@@ -56,7 +56,7 @@ struct ReaderEvent {
 
 struct ReaderOptions {
   Clock::duration stall_timeout = std::chrono::seconds(5);
-  bool loop = false;                // play the source again from its start at its end
+  bool loop = false;                  // play the source again from its start at its end
   std::size_t max_queued_frames = 2;  // read ahead of the node by at most this many
 };
 

@@ -253,8 +253,8 @@ TEST(FrameReader, ASourceThatThrowsFailsWithItsReasonOnOneLine) {
 
 TEST(FrameReader, LoopPlaysTheSourceAgainAtItsEnd) {
   using S = ScriptedSource;
-  auto source = std::make_unique<S>(std::vector<S::Step>{
-      S::Frame(1), S::Said(ReadResult::Kind::kEnd, "the script ended")});
+  auto source = std::make_unique<S>(
+      std::vector<S::Step>{S::Frame(1), S::Said(ReadResult::Kind::kEnd, "the script ended")});
   S* watched = source.get();
   FrameReader reader(std::move(source), Options(/*loop=*/true));
   std::vector<std::int64_t> utimes;

@@ -25,8 +25,8 @@ namespace billiard::camera_node {
 
 // One frame as a source delivers it.
 struct CapturedFrame {
-  cv::Mat image;            // 8UC3 BGR
-  std::int64_t utime = 0;   // capture time [us since the epoch]
+  cv::Mat image;           // 8UC3 BGR
+  std::int64_t utime = 0;  // capture time [us since the epoch]
 };
 
 // What one read of a source gives.

@@ -24,8 +24,7 @@ std::string Refusal(const SourceSpec& spec) {
 }
 
 TEST(FrameSource, PathsThatAreNotThereAreRefusedInOneLine) {
-  EXPECT_EQ(Refusal({SourceSpec::Kind::kVideo, "/no/such.avi"}),
-            "no video file at '/no/such.avi'");
+  EXPECT_EQ(Refusal({SourceSpec::Kind::kVideo, "/no/such.avi"}), "no video file at '/no/such.avi'");
   EXPECT_EQ(Refusal({SourceSpec::Kind::kVideo, ::testing::TempDir()}),
             "no video file at '" + ::testing::TempDir() + "'");
   EXPECT_EQ(Refusal({SourceSpec::Kind::kImages, "/no/such/dir"}),
@@ -44,8 +43,7 @@ TEST(FrameSource, EachKindMakesItsSource) {
   EXPECT_EQ(MakeFrameSource({SourceSpec::Kind::kImages, ::testing::TempDir()})->Describe(),
             "the images in '" + ::testing::TempDir() + "'");
   // A pipeline is GStreamer's to find or not, when it opens.
-  const auto pipeline =
-      MakeFrameSource({SourceSpec::Kind::kDevice, "no_such_element ! appsink"});
+  const auto pipeline = MakeFrameSource({SourceSpec::Kind::kDevice, "no_such_element ! appsink"});
   EXPECT_EQ(pipeline->Describe(), "the GStreamer pipeline 'no_such_element ! appsink'");
   EXPECT_TRUE(pipeline->Live());
 }

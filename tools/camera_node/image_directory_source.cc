@@ -14,8 +14,8 @@ namespace billiard::camera_node {
 namespace fs = std::filesystem;
 
 bool IsImageFile(const std::string& path) {
-  static const std::set<std::string> kExtensions = {".png", ".jpg", ".jpeg", ".bmp", ".tif",
-                                                    ".tiff", ".pgm", ".ppm", ".pnm", ".webp"};
+  static const std::set<std::string> kExtensions = {".png",  ".jpg", ".jpeg", ".bmp", ".tif",
+                                                    ".tiff", ".pgm", ".ppm",  ".pnm", ".webp"};
   std::string extension = fs::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return std::tolower(c); });

@@ -84,7 +84,8 @@ TEST(ImageDirectorySource, ADirectoryWithoutImagesIsRefused) {
 TEST(ImageDirectorySource, ASecondPassGoesOnWithTheClock) {
   const std::string dir = FreshDirectory("looped");
   for (int k = 0; k < 3; ++k) {
-    ASSERT_TRUE(cv::imwrite(dir + "/" + std::to_string(k) + ".png", testing::NumberedFrame(k, kSize)));
+    ASSERT_TRUE(
+        cv::imwrite(dir + "/" + std::to_string(k) + ".png", testing::NumberedFrame(k, kSize)));
   }
   ImageDirectorySource source(dir, 10.0);
   ASSERT_EQ(source.Open(), "");

@@ -28,9 +28,7 @@ cv::VideoCaptureAPIs FileBackend() {
 }
 
 // The backend a file was tried with, for the line that says it is no video.
-std::string BackendName() {
-  return FileBackend() == cv::CAP_ANY ? "any backend" : "FFmpeg";
-}
+std::string BackendName() { return FileBackend() == cv::CAP_ANY ? "any backend" : "FFmpeg"; }
 
 }  // namespace
 
@@ -59,8 +57,8 @@ std::int64_t VideoFileSource::CaptureUtime(long index) const {
   const double rate = rate_ > 0 ? rate_ : kDefaultImageRate;
   const double position_ms = capture_.get(cv::CAP_PROP_POS_MSEC);
   // The backend's presentation time where it gives one (0 is only the first frame's).
-  const bool positioned = std::isfinite(position_ms) && position_ms >= 0 &&
-                          (position_ms > 0 || index == 0);
+  const bool positioned =
+      std::isfinite(position_ms) && position_ms >= 0 && (position_ms > 0 || index == 0);
   const double since_origin_us = positioned ? 1e3 * position_ms : 1e6 * index / rate;
   // Strictly after the last frame, whatever the container says: the estimator ignores a
   // frame stamped as the one before it.

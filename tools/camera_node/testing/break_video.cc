@@ -76,7 +76,8 @@ TrackingScore ScoreAgainstTruth(const BreakVideo& video, const std::vector<table
     for (const auto& [id, truth] : video.truth[k]) {
       double nearest = std::numeric_limits<double>::infinity();
       for (const ball_state_t& b : state.balls) {
-        nearest = std::min(nearest, std::hypot(b.position[0] - truth.x(), b.position[1] - truth.y()));
+        nearest =
+            std::min(nearest, std::hypot(b.position[0] - truth.x(), b.position[1] - truth.y()));
       }
       ++score.ball_frames;
       if (nearest > ball_radius) {
@@ -93,9 +94,9 @@ TrackingScore ScoreAgainstTruth(const BreakVideo& video, const std::vector<table
   }
   const int tracked = score.ball_frames - score.untracked;
   score.rms_mm = tracked > 0 ? 1e3 * std::sqrt(sum_squares / tracked) : 0.0;
-  score.clear_rms_mm =
-      score.clear_ball_frames > 0 ? 1e3 * std::sqrt(clear_sum_squares / score.clear_ball_frames)
-                                  : 0.0;
+  score.clear_rms_mm = score.clear_ball_frames > 0
+                           ? 1e3 * std::sqrt(clear_sum_squares / score.clear_ball_frames)
+                           : 0.0;
   return score;
 }
 
