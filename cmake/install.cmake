@@ -115,6 +115,7 @@ set(script_dir ${PROJECT_SOURCE_DIR}/launch_scripts)
 install(PROGRAMS ${script_dir}/run_loop.sh ${script_dir}/replay.sh
         DESTINATION ${BILLIARD_DATA_DIR}/launch_scripts COMPONENT library)
 install(FILES ${script_dir}/script_support.sh ${script_dir}/lcm_network.sh
+              ${script_dir}/camera_mode.sh
         DESTINATION ${BILLIARD_DATA_DIR}/launch_scripts COMPONENT library)
 
 # The package: the config finds each asked-for component's dependencies, then its targets.
