@@ -65,7 +65,8 @@ run_camera() {
     wait "$camera_node" 2>/dev/null || true
   fi
   sleep 0.5  # the estimator's last states reach the log
-  kill -TERM "$logger" && wait "$logger" || true
+  # (A Ctrl-C at a terminal has stopped it already, with the nodes.)
+  kill -TERM "$logger" 2>/dev/null && wait "$logger" || true
   print_camera_summary "$camera_log" "$camera_err"
   $stopped && exit 130
   [ "$status" -eq 0 ] || exit 1

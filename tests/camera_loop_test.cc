@@ -70,9 +70,9 @@ class CameraLoop : public ::testing::Test {
 video::BreakVideo* CameraLoop::break_ = nullptr;
 
 TEST_F(CameraLoop, ABreaksVideoIsTrackedToWhereEveryBallIs) {
-  const SeparateOutput r = RunCommandApart(std::string("bash ") + RUN_LOOP_SCRIPT +
-                                           " --no-build --json --camera " + Path("break.avi") +
-                                           " --camera-model " + Path("camera.json"));
+  const SeparateOutput r =
+      RunCommandApart(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build --json --camera " +
+                      Path("break.avi") + " --camera-model " + Path("camera.json"));
   if (NoMulticast(r)) GTEST_SKIP() << r.err;
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -106,9 +106,9 @@ TEST_F(CameraLoop, ABreaksVideoIsTrackedToWhereEveryBallIs) {
 
 TEST_F(CameraLoop, AVideoCutShortIsOneLineAndExitsOne) {
   video::WriteCutShort(Path("break.avi"), Path("cut.avi"), 0.5);
-  const SeparateOutput r = RunCommandApart(std::string("bash ") + RUN_LOOP_SCRIPT +
-                                           " --no-build --json --camera " + Path("cut.avi") +
-                                           " --camera-model " + Path("camera.json"));
+  const SeparateOutput r =
+      RunCommandApart(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build --json --camera " +
+                      Path("cut.avi") + " --camera-model " + Path("camera.json"));
   if (NoMulticast(r)) GTEST_SKIP() << r.err;
   EXPECT_EQ(r.status, 1) << r.err;
   const std::vector<std::string> said = LinesWith(r.err, "cut short");
@@ -122,15 +122,15 @@ TEST_F(CameraLoop, AVideoCutShortIsOneLineAndExitsOne) {
 
 TEST_F(CameraLoop, AFileThatIsNoVideoIsOneLineAndExitsOne) {
   video::WriteGarbage(Path("garbage.avi"));
-  const SeparateOutput r = RunCommandApart(std::string("bash ") + RUN_LOOP_SCRIPT +
-                                           " --no-build --json --camera " + Path("garbage.avi") +
-                                           " --camera-model " + Path("camera.json"));
+  const SeparateOutput r =
+      RunCommandApart(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build --json --camera " +
+                      Path("garbage.avi") + " --camera-model " + Path("camera.json"));
   if (NoMulticast(r)) GTEST_SKIP() << r.err;
   EXPECT_EQ(r.status, 1) << r.err;
   ASSERT_EQ(LinesWith(r.err, "is not a video").size(), 1u) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["source"], "the video '" + Path("garbage.avi") +
-                             "' is not a video that OpenCV reads (FFmpeg)");
+  EXPECT_EQ(j["source"],
+            "the video '" + Path("garbage.avi") + "' is not a video that OpenCV reads (FFmpeg)");
   EXPECT_EQ(j["camera"]["published"], 0);
   EXPECT_EQ(j["camera"]["counters"]["source_state"], 3);
   EXPECT_EQ(j["tracks"]["states"], 0);

@@ -89,7 +89,8 @@ void Run(const TracksArgs& args) {
 void AddTracksCommand(CLI::App& app) {
   auto args = std::make_shared<TracksArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "tracks", "Summarise the estimator's TABLE_STATE messages of an LCM log track by track (JSON)");
+      "tracks",
+      "Summarise the estimator's TABLE_STATE messages of an LCM log track by track (JSON)");
   cmd->add_option("LOG", args->log, "LCM log (lcm-logger, run_loop.sh --log)")->required();
   cmd->callback([args] { Run(*args); });
 }

@@ -41,6 +41,9 @@ namespace billiard::camera_node {
 // The node's name in its log lines and NODE_STATUS.
 inline constexpr char kNodeName[] = "camera_node";
 
+// A source's state, as NODE_STATUS's counter source_state gives it.
+enum class SourceState { kOpening = 0, kRunning = 1, kEnded = 2, kFailed = 3 };
+
 // The longest the node waits in Work for the source.
 inline constexpr auto kMaxWait = std::chrono::milliseconds(20);
 

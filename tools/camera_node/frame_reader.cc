@@ -160,20 +160,6 @@ void ReadSource(const std::shared_ptr<Shared>& shared, const ReaderOptions& opti
 
 }  // namespace
 
-const char* SourceStateName(SourceState state) {
-  switch (state) {
-    case SourceState::kOpening:
-      return "opening";
-    case SourceState::kRunning:
-      return "running";
-    case SourceState::kEnded:
-      return "ended";
-    case SourceState::kFailed:
-      return "failed";
-  }
-  return "unknown";
-}
-
 FrameReader::FrameReader(std::unique_ptr<FrameSource> source, ReaderOptions options)
     : description_(source->Describe()),
       options_(options),

@@ -30,12 +30,6 @@ namespace billiard::camera_node {
 
 using Clock = std::chrono::steady_clock;
 
-// A source's state, as NODE_STATUS's counter source_state gives it.
-enum class SourceState { kOpening = 0, kRunning = 1, kEnded = 2, kFailed = 3 };
-
-// "opening", "running", "ended", "failed".
-const char* SourceStateName(SourceState state);
-
 // What the reader found, in the order it found it.
 struct ReaderEvent {
   enum class Kind {
