@@ -1,7 +1,8 @@
 # What `cmake --install build --prefix P` puts under P, and the CMake package, the pkg-config files
 # and the .deb made of it (docs/installing.md says how a user consumes them):
 #
-#   bin/                              billiard, planner_node, estimator_node, table_sim_node
+#   bin/                              billiard, planner_node, estimator_node, table_sim_node,
+#                                     camera_node
 #   lib/libbilliard_*.a               the libraries, static as they are built (lib/ is
 #                                     GNUInstallDirs' LIBDIR: lib/<multiarch>/ in a build
 #                                     configured with CMAKE_INSTALL_PREFIX=/usr)
@@ -97,7 +98,7 @@ install(CODE "include(\"${PROJECT_BINARY_DIR}/installed_headers.cmake\")
               include(\"${PROJECT_SOURCE_DIR}/cmake/install_headers.cmake\")"
         COMPONENT library)
 
-install(TARGETS billiard planner_node estimator_node table_sim_node
+install(TARGETS billiard planner_node estimator_node table_sim_node camera_node
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT library)
 
 set(BILLIARD_DATA_DIR ${CMAKE_INSTALL_DATADIR}/billiard)
@@ -114,6 +115,7 @@ set(script_dir ${PROJECT_SOURCE_DIR}/launch_scripts)
 install(PROGRAMS ${script_dir}/run_loop.sh ${script_dir}/replay.sh
         DESTINATION ${BILLIARD_DATA_DIR}/launch_scripts COMPONENT library)
 install(FILES ${script_dir}/script_support.sh ${script_dir}/lcm_network.sh
+              ${script_dir}/camera_mode.sh
         DESTINATION ${BILLIARD_DATA_DIR}/launch_scripts COMPONENT library)
 
 # The package: the config finds each asked-for component's dependencies, then its targets.

@@ -8,10 +8,14 @@
 #                                   [--log-frames all|none]
 #                                   [--lockstep | --realtime] [--view] [--view-port PORT]
 #                                   [--json] [--no-build] [-h | --help]
+#        launch_scripts/run_loop.sh --camera SOURCE [--camera-model FILE] [--params NAME|FILE]
+#                                   [--log FILE] [--log-frames all|none] [--view]
+#                                   [--view-port PORT] [--json] [--no-build]
 #
 # The closed loop: estimator_node, planner_node and table_sim_node over LCM, playing nine-ball
 # (the default: one rack broken and played until it is cleared), or for N shots to random
-# targets; prints the summary on stderr and, with --json, one JSON object on stdout.
+# targets; prints the summary on stderr and, with --json, one JSON object on stdout. With
+# --camera, the estimator on a real camera's frames instead, alone (below).
 #
 #   --game nine-ball|drill the game (the default without --shots or --scene): nine-ball, the
 #                          rack of --seed broken and then played; drill, a seeded nine-ball
@@ -59,6 +63,20 @@
 #                          (viewer_node): prints its address, http://127.0.0.1:PORT/, on stderr;
 #                          with --realtime the shots go at the camera's pace, to be watched
 #   --view-port PORT       the view's port on this host (default 8765; implies --view)
+#   --camera SOURCE        the estimator on the frames of SOURCE instead of the loop:
+#                          camera_node (a V4L2 camera /dev/videoN or N, a GStreamer pipeline
+#                          with a '!', a video file, or a directory of images) and
+#                          estimator_node alone, no planner and no table simulator (whose
+#                          truth would not be the real table's); runs to the end of the video
+#                          or the images (a camera until Ctrl-C) and prints the camera's and the
+#                          estimator's health and every track the estimator published: its
+#                          class, when it was seen, where it was last and how fast (--json: one
+#                          object, {"source", "camera", "estimator", "tracks"}). Exit 1 when the
+#                          source failed (a video cut short, a file that is no video, a camera
+#                          that stalled: camera_node's line says which). Not with --game,
+#                          --shots, --scene, --pot or --plant-params
+#   --camera-model FILE    with --camera: the estimator's camera model (billiard calibrate's
+#                          JSON); default: the table simulator's overhead camera at 1280x720
 #   --json                 the summary as one JSON object on stdout
 #   --no-build             run what build/ holds, without build.sh first (which builds the three
 #                          nodes and billiard alone: the tests are test.sh's)
@@ -81,7 +99,7 @@ source "$(dirname "$0")/script_support.sh"
 
 shots="" game="" racks=1 shot_limit=40 seed=1 noise="" scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true
 pots=()
-view=false view_port=8765
+view=false view_port=8765 camera="" camera_model=""
 while [ $# -gt 0 ]; do
   case "$1" in
     -h | --help) help_and_exit ;;
@@ -115,6 +133,12 @@ while [ $# -gt 0 ]; do
     --realtime) clock=--realtime; shift ;;
     --view) view=true; shift ;;
     --view-port) need_number 1 "$@"; view=true; view_port=$2; shift 2 ;;
+    # A device, a number or a pipeline is a name; a file or a directory is the caller's path.
+    --camera)
+      need_value "$@"
+      case "$2" in *'!'* | /dev/* | [0-9] | [0-9][0-9]) camera=$2 ;; *) camera=$(realpath -m -- "$2") ;; esac
+      shift 2 ;;
+    --camera-model) need_value "$@"; camera_model=$(realpath -m -- "$2"); shift 2 ;;
     --json) json=true; shift ;;
     --no-build) build=false; shift ;;
     # Added by enter_private_network when the script runs itself again in its namespace.
@@ -122,8 +146,21 @@ while [ $# -gt 0 ]; do
     *) unknown_argument "$1" ;;
   esac
 done
+if [ -n "$camera" ]; then
+  [ -z "$game$shots$scene$plant${pots[*]}" ] ||
+    usage_error "--camera runs the estimator alone: not with --game, --shots, --scene, --pot or --plant-params"
+  case "$camera" in
+    *'!'*) ;;
+    [0-9] | [0-9][0-9]) [ -e "/dev/video$camera" ] || usage_error "no camera at '/dev/video$camera'" ;;
+    *) [ -e "$camera" ] || usage_error "no camera, video or directory at '$camera'" ;;
+  esac
+  [ -z "$camera_model" ] || [ -f "$camera_model" ] ||
+    usage_error "no camera model at '$camera_model'"
+elif [ -n "$camera_model" ]; then
+  usage_error "--camera-model needs --camera"
+fi
 # Without --shots or --scene the loop plays the game this controller exists for.
-[ -z "$game" ] && [ -z "$shots" ] && [ -z "$scene" ] && game=nine-ball
+[ -z "$camera" ] && [ -z "$game" ] && [ -z "$shots" ] && [ -z "$scene" ] && game=nine-ball
 case "$game" in
   "" | nine-ball | drill) ;;
   *) usage_error "--game must be nine-ball or drill, not '$game'" ;;
@@ -158,8 +195,12 @@ cd "$(dirname "$0")/.."
 $installed && build=false
 # What the loop runs, and nothing more: the tests, fuzzers and benchmarks are test.sh's.
 $view && view_target=(--target viewer_node) || view_target=()
-$build && bash launch_scripts/build.sh --target estimator_node --target planner_node \
-  --target table_sim_node --target billiard "${view_target[@]}"
+if [ -n "$camera" ]; then
+  nodes=(--target estimator_node --target camera_node)
+else
+  nodes=(--target estimator_node --target planner_node --target table_sim_node)
+fi
+$build && bash launch_scripts/build.sh "${nodes[@]}" --target billiard "${view_target[@]}"
 
 # The view out of the private network namespace below: this host's port forwarded (socat) to a
 # Unix socket, which the namespace shares with the host, and there to the viewer's port. Started
@@ -175,6 +216,25 @@ if $view && [ -z "${in_namespace:-}" ] && unshare -n true 2>/dev/null; then
 fi
 
 source launch_scripts/lcm_network.sh
+# The viewer_node of --view, on its port; in the namespace, reached through the socket above.
+start_viewer() {
+  "$bin_dir/viewer_node" --params "$params" --port "$view_port" 2>/dev/null &
+  pids+=($!)
+  if [ -n "${VIEW_SOCKET:-}" ]; then
+    socat "UNIX-LISTEN:$VIEW_SOCKET,fork" "TCP:127.0.0.1:$view_port" 2>/dev/null &
+    pids+=($!)
+  else
+    echo "run_loop: the live view is at http://127.0.0.1:$view_port/" >&2
+  fi
+}
+if [ -n "$camera" ]; then
+  source launch_scripts/camera_mode.sh
+  enter_private_network launch_scripts/run_loop.sh --no-build --camera "$camera" \
+    ${camera_model:+--camera-model "$camera_model"} --params "$params" ${log:+--log "$log"} \
+    --log-frames "$log_frames" $($json && echo --json) $($view && echo --view-port "$view_port")
+  pids=()
+  run_camera
+fi
 playing=(--shots "$shots")
 [ -n "$game" ] && playing=(--game "$game" --racks "$racks" --shot-limit "$shot_limit")
 enter_private_network launch_scripts/run_loop.sh --no-build "${playing[@]}" --seed "$seed" \
@@ -236,18 +296,7 @@ if ! $in_process; then
   "$bin_dir/planner_node" --params "$params" "${planner_table[@]}" \
     --identify-every "$identify_every" --identify "$identify" >/dev/null 2>"$planner_err" &
   pids+=($!)
-  if $view; then
-    if [ -n "${VIEW_SOCKET:-}" ]; then  # in the namespace: on a port of its own, through the socket
-      "$bin_dir/viewer_node" --params "$params" --port "$view_port" 2>/dev/null &
-      pids+=($!)
-      socat "UNIX-LISTEN:$VIEW_SOCKET,fork" "TCP:127.0.0.1:$view_port" 2>/dev/null &
-      pids+=($!)
-    else
-      "$bin_dir/viewer_node" --params "$params" --port "$view_port" 2>/dev/null &
-      pids+=($!)
-      echo "run_loop: the live view is at http://127.0.0.1:$view_port/" >&2
-    fi
-  fi
+  $view && start_viewer
   sleep 0.5  # the nodes subscribe
 fi
 

@@ -36,7 +36,7 @@ const std::vector<Script> kScripts = {
     {"launch_scripts/test.sh", {"--no-build"}},
     {"launch_scripts/run_loop.sh",
      {"--game", "--racks", "--shot-limit", "--shots", "--seed", "--noise", "--params", "--log", "--log-frames",
-      "--lockstep", "--realtime", "--json", "--no-build"}},
+      "--lockstep", "--realtime", "--json", "--no-build", "--camera", "--camera-model"}},
     {"launch_scripts/replay.sh", {"--params", "--camera", "--json"}},
     {"launch_scripts/fault_drill.sh", {"--shots", "--no-build"}},
     {"launch_scripts/two_hosts.sh", {"--shots", "--seed", "--no-build"}},
@@ -139,6 +139,12 @@ TEST_F(Scripts, MissingOrBadValuesAndStrayArgumentsAreUsageErrors) {
       {"launch_scripts/run_loop.sh", "--racks 0"},
       {"launch_scripts/run_loop.sh", "--game drill --shots 3"},
       {"launch_scripts/run_loop.sh", "extra"},
+      {"launch_scripts/run_loop.sh", "--camera"},
+      {"launch_scripts/run_loop.sh", "--camera /no/such.avi"},
+      {"launch_scripts/run_loop.sh", "--camera 97"},
+      {"launch_scripts/run_loop.sh", "--camera /tmp --shots 3"},
+      {"launch_scripts/run_loop.sh", "--camera /tmp --camera-model /no/such.json"},
+      {"launch_scripts/run_loop.sh", "--camera-model /tmp/camera.json"},
       {"launch_scripts/replay.sh", ""},
       {"launch_scripts/fault_drill.sh", "--shots"},
       {"launch_scripts/two_hosts.sh", "--shots 0"},
@@ -178,6 +184,9 @@ const std::string kPlannerNode = PLANNER_NODE_BIN;
 const std::string kEstimatorNode = ESTIMATOR_NODE_BIN;
 const std::string kViewerNode = VIEWER_NODE_BIN;
 const std::string kTableSimNode = TABLE_SIM_NODE_BIN;
+const std::string kCameraNode = CAMERA_NODE_BIN;
+// A source camera_node finds (a directory, of no images: the node stays up, reporting it).
+const std::string kCameraSource = " --images " + ::testing::TempDir();
 
 // The subcommands `billiard --help` lists, so that a new one is held to the convention too.
 std::vector<std::string> BilliardSubcommands() {
@@ -195,8 +204,8 @@ std::vector<std::string> BilliardSubcommands() {
 }
 
 TEST(Binaries, HelpExitsZeroAndAnUnknownOptionTwo) {
-  std::vector<std::string> commands = {kBilliard, kPlannerNode, kEstimatorNode, kTableSimNode,
-                                       kViewerNode};
+  std::vector<std::string> commands = {kBilliard,    kPlannerNode, kEstimatorNode,
+                                       kTableSimNode, kViewerNode,  kCameraNode};
   const std::vector<std::string> subcommands = BilliardSubcommands();
   EXPECT_GE(subcommands.size(), 13u);
   for (const std::string& sub : subcommands) commands.push_back(kBilliard + " " + sub);
@@ -210,7 +219,8 @@ TEST(Binaries, HelpExitsZeroAndAnUnknownOptionTwo) {
 
 // --version, like --help, exits 0 and does no work: the name and the project's one version.
 TEST(Binaries, VersionPrintsTheNameAndTheProjectVersion) {
-  for (const std::string& command : {kBilliard, kPlannerNode, kEstimatorNode, kTableSimNode}) {
+  for (const std::string& command :
+       {kBilliard, kPlannerNode, kEstimatorNode, kTableSimNode, kCameraNode}) {
     const SeparateOutput r = RunBinary(command + " --version");
     EXPECT_EQ(r.status, 0) << command << ": " << r.err;
     EXPECT_EQ(r.out, fs::path(command).filename().string() + " " + PROJECT_VERSION + "\n");
@@ -243,12 +253,15 @@ TEST(Binaries, UsageErrorsExitTwo) {
   ExpectOneLine(kEstimatorNode + " --camera /no/such.json", 2);
   ExpectOneLine(kTableSimNode + " --shots 0", 2);
   ExpectOneLine(kViewerNode + " --port 0", 2);
+  ExpectOneLine(kCameraNode + " --video /no/such.avi", 2);
+  ExpectOneLine(kCameraNode + kCameraSource + " --video /no/such.avi", 2);
 }
 
 TEST(Binaries, InternalFailuresExitOne) {
   // LCM that cannot be opened (LCM itself says so in a line of its own first).
   for (const std::string& command : std::vector<std::string>{kPlannerNode, kEstimatorNode,
                                                              kTableSimNode, kViewerNode,
+                                                             kCameraNode + kCameraSource,
                                                              kBilliard + " burst"}) {
     ExpectStatus(command + " --lcm-url nosuch://", 1);
   }
@@ -269,6 +282,7 @@ TEST(Binaries, SignalsStopNodesWithZeroAndCommandsWith130) {
   EXPECT_EQ(StatusAfterSignal(kPlannerNode + " --lcm-url memq://", "TERM"), 0);
   EXPECT_EQ(StatusAfterSignal(kEstimatorNode + " --lcm-url memq://", "INT"), 0);
   EXPECT_EQ(StatusAfterSignal(kViewerNode + " --lcm-url memq:// --port 8797", "TERM"), 0);
+  EXPECT_EQ(StatusAfterSignal(kCameraNode + kCameraSource + " --lcm-url memq://", "TERM"), 0);
   // A session or a command that a signal cuts short did not finish.
   EXPECT_EQ(StatusAfterSignal(kTableSimNode + " --lcm-url memq:// --reply-timeout 30", "TERM"),
             130);

@@ -55,7 +55,7 @@ if [ "$mode" = deb ]; then
   deb=$(ls "$work"/billiard_*.deb)
   contents=$(dpkg-deb --contents "$deb" | awk '{print $6}')
   for path in ./usr/bin/billiard ./usr/bin/planner_node ./usr/bin/estimator_node \
-      ./usr/bin/table_sim_node \
+      ./usr/bin/table_sim_node ./usr/bin/camera_node \
       ./usr/include/billiard/sim/physics/simulator.h \
       ./usr/include/billiard/lcmtypes/billiard/cue_command_t.hpp \
       ./usr/include/billiard/planner/shot_planner.h \
@@ -64,7 +64,8 @@ if [ "$mode" = deb ]; then
       ./usr/lib/pkgconfig/billiard.pc ./usr/lib/libbilliard_physics.a \
       ./usr/share/billiard/params/pool.json ./usr/share/billiard/params/tables/pool-9ft.json \
       ./usr/share/billiard/lcmtypes/shot_request_t.lcm ./usr/share/java/billiard_lcmtypes.jar \
-      ./usr/share/billiard/launch_scripts/run_loop.sh; do
+      ./usr/share/billiard/launch_scripts/run_loop.sh \
+      ./usr/share/billiard/launch_scripts/camera_mode.sh; do
     grep -qxF "$path" <<<"$contents" || fail "the .deb lacks $path"
   done
   version=$("$build/bin/billiard" --version | cut -d' ' -f2)

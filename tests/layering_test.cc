@@ -75,6 +75,7 @@ const std::map<std::string, std::set<std::string>>& Layers() {
         "planner/game", "sim/rules", "planner/node", "estimator",
         "estimator/node", "bench", "planner/pot/testing", "plot"}},
       {"tools/viewer_node", {"lcmtypes", "lcmtypes/node", "sim/params", "sim/physics"}},
+      {"tools/camera_node", {"lcmtypes", "lcmtypes/node"}},
       {"tools/python", {"sim/physics", "sim/table", "sim/params", "planner", "planner/pot", "estimator"}},
       {"tests", {}},  // the cross-module tests may include anything
   };
