@@ -22,6 +22,9 @@ packages=(
   # tools/viewer_node/: its HTTP server; its test's browser and HTTP client; run_loop.sh --view's
   # forwarding of the view out of the loop's network namespace
   libcpp-httplib-dev chromium curl socat
+  # tools/camera_node/: GStreamer's base elements (videotestsrc, videoconvert, appsink), for a
+  # --device pipeline and the test that plays one
+  gstreamer1.0-plugins-base
   # plot/: billiard plot's pictures and billiard bench's chart
   libcairo2-dev
   # tools/python/: the billiard Python module (pybind11) and its pytest suite, on Debian's
