@@ -270,11 +270,13 @@ TEST(Binaries, InternalFailuresExitOne) {
   ExpectOneLine(kBilliard + " burst --lcm-url memq:// --timeout 0.3", 1);
 }
 
-// `command` started, sent `signal` half a second later, and its exit status.
+// `command` started, sent `signal` two seconds later, and its exit status. Two seconds: a node
+// links OpenCV's video backends and LCM, and on a machine running two tests at once its start
+// alone has taken more than half a second, before any handler could be installed.
 int StatusAfterSignal(const std::string& command, const std::string& signal) {
   // A background job of a non-interactive shell ignores SIGINT unless it installs a handler,
   // which is what this is to see.
-  return RunBinary(command + " & pid=$!; sleep 0.5; kill -" + signal + " $pid; wait $pid").status;
+  return RunBinary(command + " & pid=$!; sleep 2; kill -" + signal + " $pid; wait $pid").status;
 }
 
 TEST(Binaries, SignalsStopNodesWithZeroAndCommandsWith130) {

@@ -72,6 +72,9 @@ SourceSpec SourceOf(const CameraNodeCommandLine& line) {
 }
 
 int RunCameraNodeCommand(const CameraNodeCommandLine& line) {
+  // First: a signal that comes while the source opens (a camera can take seconds) stops the node
+  // as a node is stopped, not by the signal's default.
+  nodes::StopOnSignals();
   std::unique_ptr<FrameSource> source;
   try {
     source = MakeFrameSource(SourceOf(line));
@@ -81,7 +84,6 @@ int RunCameraNodeCommand(const CameraNodeCommandLine& line) {
   }
   QuietVideoBackends();
   // The node only publishes: no message loop, and no receive buffer to advise on.
-  nodes::StopOnSignals();
   lcm::LCM lcm(line.lcm_url);
   if (!lcm.good()) {
     std::cerr << kNodeName << ": cannot initialise LCM with " << nodes::DescribeUrl(line.lcm_url)
