@@ -104,5 +104,24 @@ TEST(BilliardPlay, PlaysARackAndSumsItUp) {
   if (s["cleared"]) EXPECT_TRUE(j["balls_left"] == nlohmann::json::array({0}) || j["balls_left"].empty());
 }
 
+// Seeds 1, 2, 5 and 7 once stopped mid-rack (a ball left hanging in a pocket's jaws made a scene
+// no player could be asked about): every rack now ends cleared or at the shot limit, each shot
+// recorded with its status, and the summary says how it ended.
+TEST(BilliardPlay, EveryRackEndsClearedOrAtTheShotLimit) {
+  for (const char* seed : {"1", "2", "5", "7"}) {
+    const std::string args = std::string("play --rack nine-ball --rules nine-ball --json --seed ") + seed;
+    const CommandResult r = Billiard(args);
+    ASSERT_EQ(r.status, 0) << args << ": " << r.out;
+    const nlohmann::json j = OneObject(r, args);
+    const nlohmann::json& s = j["summary"];
+    EXPECT_TRUE(s["end"] == "cleared" || s["end"] == "shot_limit") << args << ": " << s.dump();
+    EXPECT_EQ(s["cleared"], s["end"] == "cleared");
+    EXPECT_EQ(s["shots"], j["shots"].size());
+    for (const nlohmann::json& shot : j["shots"]) {
+      EXPECT_FALSE(shot["status"].get<std::string>().empty()) << shot.dump();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace billiard::testing

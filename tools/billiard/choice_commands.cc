@@ -167,6 +167,7 @@ nlohmann::json GameJson(const game::GameRecord& game) {
     j["ball_in_hand"] = s.ball_in_hand;
     j["cue_placement"] = s.cue_placement ? Point(*s.cue_placement) : nlohmann::json(nullptr);
     j["status"] = s.status;
+    j["reason"] = s.reason;
     j["ball"] = s.ball;
     j["pocket"] = s.pocket;
     j["kind"] = s.kind;
@@ -191,11 +192,57 @@ nlohmann::json GameJson(const game::GameRecord& game) {
                             {"balls_per_visit", m.visits ? double(m.balls_potted) / m.visits : 0.0},
                             {"cleared", m.cleared},
                             {"run_out", m.run_out},
+                            {"end", game::GameEndName(m.end)},
+                            {"end_reason", m.end_reason},
                             {"median_decision_us", m.median_decision_us}};
   nlohmann::json left = nlohmann::json::array();
   for (const table::SceneBall& b : game.final_balls) left.push_back(b.id);
   return {{"shots", shots}, {"summary", summary}, {"balls_left", left}};
 }
+
+namespace {
+
+// A shot as a player reads it: the call (the break; or why nothing was called, and that the
+// fallback was played), then the balls that dropped by number, "none" when none did (a count
+// of 0 reads as the cue ball).
+void PrintShot(const game::ShotRecord& r) {
+  std::cerr << "shot " << r.number << " (visit " << r.visit << "): ";
+  if (r.break_shot) {
+    std::cerr << "break";
+  } else if (r.ball >= 0) {
+    std::cerr << "ball " << r.ball << " in " << r.pocket << " (" << r.kind << ", p " << r.predicted << ")";
+  } else {
+    std::cerr << r.status << (r.reason.empty() ? "" : " (" + r.reason + ")")
+              << ": the fallback, the first legal ball hit full";
+  }
+  std::cerr << " -> potted ";
+  if (r.potted.empty()) std::cerr << "none";
+  for (std::size_t i = 0; i < r.potted.size(); ++i) std::cerr << (i ? ", " : "") << r.potted[i];
+  std::cerr << (r.foul ? ", foul: " + r.foul_reason : "") << "\n";
+}
+
+// How the rack ended, in words.
+std::string EndOf(const game::GameSummary& m, int shot_limit) {
+  switch (m.end) {
+    case game::GameEnd::kCleared: return "cleared";
+    case game::GameEnd::kShotLimit:
+      return "not cleared: the shot limit (" + std::to_string(shot_limit) + ") reached";
+    case game::GameEnd::kVisitOver: return "not cleared: the visit is over";
+    case game::GameEnd::kNoStroke: return "stopped: no stroke to play (" + m.end_reason + ")";
+  }
+  return "";
+}
+
+// Every shot, then the summary with why the rack ended, on stderr.
+void PrintGame(const game::GameRecord& game, int shot_limit) {
+  for (const game::ShotRecord& r : game.shots) PrintShot(r);
+  const game::GameSummary& m = game.summary;
+  std::cerr << "play: " << EndOf(m, shot_limit) << " in " << m.shots << " shots, " << m.visits
+            << " visits, " << m.pots << " of " << m.attempts << " attempts potted, " << m.fouls
+            << " fouls" << (m.run_out ? ", a run-out" : "") << "\n";
+}
+
+}  // namespace
 
 void AddChooseShotCommand(CLI::App& app) {
   struct Args : ChoiceArgs {
@@ -282,17 +329,7 @@ void AddPlayCommand(CLI::App& app) {
     options.ball_in_hand = args->ball_in_hand;
     batch::ThreadPool pool(args->threads);
     const game::GameRecord game = game::PlayGame(s.table, s.params, s.balls, options, pool);
-    for (const game::ShotRecord& r : game.shots) {
-      std::cerr << "shot " << r.number << " (visit " << r.visit << "): ";
-      if (r.break_shot) std::cerr << "break";
-      else if (r.ball >= 0) std::cerr << "ball " << r.ball << " in " << r.pocket << " (" << r.kind << ", p " << r.predicted << ")";
-      else std::cerr << r.status;
-      std::cerr << " -> potted " << r.potted.size() << (r.foul ? ", foul: " + r.foul_reason : "") << "\n";
-    }
-    const game::GameSummary& m = game.summary;
-    std::cerr << "play: " << (m.cleared ? "cleared" : "not cleared") << " in " << m.shots << " shots, "
-              << m.visits << " visits, " << m.pots << " of " << m.attempts << " attempts potted, "
-              << m.fouls << " fouls" << (m.run_out ? ", a run-out" : "") << "\n";
+    PrintGame(game, options.shot_limit);
     if (args->json) {
       nlohmann::json j = GameJson(game);
       j["rules"] = rules::RulesName(options.choice.rules);
