@@ -81,6 +81,13 @@ TEST(BilliardChooseShot, RefusesWithTheStatusAndReason) {
   EXPECT_EQ(Billiard("choose-shot --scene " + kScene + " --rules snooker --json").status, 2);
   EXPECT_EQ(Billiard("choose-shot --scene " + kScene + " --noise no-such-noise --json").status, 2);
   EXPECT_EQ(Billiard("play --json").status, 2);
+  EXPECT_EQ(Billiard("play --rack nine-ball --seed -1 --json").status, 2);
+  // A ball off the table is bad input (2), as in simulate, plot and plan-pot.
+  const std::string off = ::testing::TempDir() + "/off_table.json";
+  std::ofstream(off) << R"({"table": "pool-9ft", "params": "pool", "balls": [
+      {"id": 0, "state": [0.6, 0.6, 0, 0, 0, 0, 0]}, {"id": 1, "state": [3.0, 0.6, 0, 0, 0, 0, 0]}]})";
+  EXPECT_EQ(Billiard("choose-shot --scene " + off + " --json").status, 2);
+  EXPECT_EQ(Billiard("play --scene " + off + " --json").status, 2);
 }
 
 TEST(BilliardPlay, PlaysARackAndSumsItUp) {

@@ -14,6 +14,7 @@
 #include "sim/params/scene_file.h"
 #include "sim/rules/rules.h"
 #include "sim/table/rack.h"
+#include "sim/table/table_simulation.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/pot_commands.h"
 #include "tools/billiard/scene_commands.h"
@@ -45,7 +46,8 @@ void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
   cmd->add_option("--confirm-samples", args->confirm_samples,
                   "Fresh full-model executions of the chosen shot: its reported probability")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  cmd->add_option("--seed", args->seed, "Seed of the sampled noise")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the sampled noise")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--threads", args->threads, "Threads (the results do not depend on them)")
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
@@ -83,6 +85,7 @@ LoadedScene LoadSceneOption(const std::string& path) {
   LoadedScene s{LoadParametersOption(scene.params), LoadTableOption(scene.table), {}};
   try {
     s.balls = params::LaunchedBalls(scene, s.params);
+    table::ValidateScene(s.table, s.params.ball.radius, s.balls);  // bad input (2), as simulate's
   } catch (const std::invalid_argument& e) {
     throw UsageError(path + ": " + e.what());
   }
@@ -363,7 +366,8 @@ void AddBenchGameCommand(CLI::App& app) {
   cmd->add_option("--confirm-samples", o.confirm_samples,
                   "Fresh full-model executions of the chosen shot: its reported probability")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  cmd->add_option("--seed", o.seed, "The first layout's seed")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "The first layout's seed")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--threads", o.threads, "Threads")->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_option("--chunk", o.chunk, "Layouts between the report's rewrites")
       ->capture_default_str()->check(CLI::PositiveNumber);
