@@ -263,7 +263,8 @@ TEST(Binaries, UsageErrorsExitTwo) {
 TEST(Binaries, AnUnknownSubcommandIsNamedWithTheNearest) {
   const SeparateOutput near = RunBinary(kBilliard + " simulat --json");
   EXPECT_EQ(near.status, 2);
-  EXPECT_EQ(near.err, "billiard: unknown subcommand 'simulat'; did you mean 'simulate'? (see --help)\n");
+  EXPECT_EQ(near.err,
+            "billiard: unknown subcommand 'simulat'; did you mean 'simulate'? (see --help)\n");
   EXPECT_TRUE(near.out.empty());
   EXPECT_NE(RunBinary(kBilliard + " choose_shot").err.find("did you mean 'choose-shot'?"),
             std::string::npos);

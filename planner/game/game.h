@@ -8,11 +8,12 @@
 // plays on from the balls as they lie: one player alone at the table), a foul ends it with ball
 // in hand (the player places the cue ball). When nothing plans, the player's fallback (a stroke
 // that hits the first legal ball full) is played and judged like any other, so a rack goes on
-// to its end or the shot limit; the summary says which. The balls the rules put back (under nine-ball a 9
-// potted on a foul, to the foot spot or the nearest free place behind it on the long axis) go
-// back before the next shot. A ball the simulation leaves at rest with its centre past a
-// pocket's mouth line drops into that pocket (TableGeometry::OnSurface: a real one would; a
-// scene with it hanging there is not one a player can be asked about). A run-out is a rack cleared in its first visit.
+// to its end or the shot limit; the summary says which. The balls the rules put back (under
+// nine-ball a 9 potted on a foul, to the foot spot or the nearest free place behind it on the
+// long axis) go back before the next shot. A ball the simulation leaves at rest with its centre
+// past a pocket's mouth line drops into that pocket (TableGeometry::OnSurface: a real one
+// would; a scene with it hanging there is not one a player can be asked about). A run-out is a
+// rack cleared in its first visit.
 //
 // Deterministic: the execution noise of shot n is drawn from SampleSeed(seed + stream, n), its
 // own stream, apart from the player's samples (seeded SampleSeed(choice seed, n)); a seed plays
@@ -114,9 +115,8 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
                     batch::ThreadPool& pool);
 
 // Every ball of `result.rest` resting with its centre past a pocket's mouth line (the line
-// TableGeometry::OnSurface does not let a placed ball cross) moved into that pocket: an object ball into
-// `pocketed` (kept in the order of the simulation's, the hanging ones after), the cue ball a
-// scratch.
+// TableGeometry::OnSurface does not let a placed ball cross) moved into that pocket: an object
+// ball into `pocketed` (after the simulation's own), the cue ball a scratch.
 void DropHangingBalls(const table::TableGeometry& table, choice::StrokeResult* result);
 
 // The layouts of the drills and benchmarks (sim/table/rack.h), where the table simulator
