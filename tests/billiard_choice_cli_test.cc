@@ -81,6 +81,13 @@ TEST(BilliardChooseShot, RefusesWithTheStatusAndReason) {
   EXPECT_EQ(Billiard("choose-shot --scene " + kScene + " --rules snooker --json").status, 2);
   EXPECT_EQ(Billiard("choose-shot --scene " + kScene + " --noise no-such-noise --json").status, 2);
   EXPECT_EQ(Billiard("play --json").status, 2);
+  EXPECT_EQ(Billiard("play --rack nine-ball --seed -1 --json").status, 2);
+  // A ball off the table is bad input (2), as in simulate, plot and plan-pot.
+  const std::string off = ::testing::TempDir() + "/off_table.json";
+  std::ofstream(off) << R"({"table": "pool-9ft", "params": "pool", "balls": [
+      {"id": 0, "state": [0.6, 0.6, 0, 0, 0, 0, 0]}, {"id": 1, "state": [3.0, 0.6, 0, 0, 0, 0, 0]}]})";
+  EXPECT_EQ(Billiard("choose-shot --scene " + off + " --json").status, 2);
+  EXPECT_EQ(Billiard("play --scene " + off + " --json").status, 2);
 }
 
 TEST(BilliardPlay, PlaysARackAndSumsItUp) {
@@ -102,6 +109,25 @@ TEST(BilliardPlay, PlaysARackAndSumsItUp) {
   // Nine-ball: the first call is the 1, the lowest.
   EXPECT_EQ(j["shots"][0]["ball"], 1);
   if (s["cleared"]) EXPECT_TRUE(j["balls_left"] == nlohmann::json::array({0}) || j["balls_left"].empty());
+}
+
+// Seeds 1, 2, 5 and 7 once stopped mid-rack (a ball left hanging in a pocket's jaws made a scene
+// no player could be asked about): every rack now ends cleared or at the shot limit, each shot
+// recorded with its status, and the summary says how it ended.
+TEST(BilliardPlay, EveryRackEndsClearedOrAtTheShotLimit) {
+  for (const char* seed : {"1", "2", "5", "7"}) {
+    const std::string args = std::string("play --rack nine-ball --rules nine-ball --json --seed ") + seed;
+    const CommandResult r = Billiard(args);
+    ASSERT_EQ(r.status, 0) << args << ": " << r.out;
+    const nlohmann::json j = OneObject(r, args);
+    const nlohmann::json& s = j["summary"];
+    EXPECT_TRUE(s["end"] == "cleared" || s["end"] == "shot_limit") << args << ": " << s.dump();
+    EXPECT_EQ(s["cleared"], s["end"] == "cleared");
+    EXPECT_EQ(s["shots"], j["shots"].size());
+    for (const nlohmann::json& shot : j["shots"]) {
+      EXPECT_FALSE(shot["status"].get<std::string>().empty()) << shot.dump();
+    }
+  }
 }
 
 }  // namespace

@@ -103,6 +103,7 @@ TEST(BilliardPlan, BadCommandLineExitsTwoWithAOneLineReason) {
       "plan --from 0.5,0.5 --json",
       "plan --from 0.5,0.5 --to 1.5,0.8 --spin sideways --json",
       "plan --from 0.5,0.5 --to 1.5,0.8 --final-speed nan --json",
+      "plan --from 0.5,0.5 --to 1.5,0.8 --final-speed -0.3 --json",  // bad input, not a refusal
       "plan --from 0.5,0.5 --to 1.5,0.8 --slide inf --json",
       "plan --from 0.5,0.5 --to 1.5,0.8 --params no-such-set --json",
   };

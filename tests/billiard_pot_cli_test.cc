@@ -76,6 +76,13 @@ TEST(BilliardPlanPot, RefusesWithTheStatusAndReason) {
     EXPECT_TRUE(r.out.empty());
   }
   EXPECT_EQ(Billiard("plan-pot --scene /nonexistent.json --ball 1 --pocket upper_right").status, 2);
+  // A ball off the table is bad input (2), as in simulate and plot, not a plan refused (3).
+  const std::string off = ::testing::TempDir() + "/off_table.json";
+  std::ofstream(off) << R"({"table": "pool-9ft", "params": "pool", "balls": [
+      {"id": 0, "state": [0.6, 0.6, 0, 0, 0, 0, 0]}, {"id": 1, "state": [3.0, 0.6, 0, 0, 0, 0, 0]}]})";
+  const CommandResult r = Billiard("plan-pot --scene " + off + " --ball 1 --pocket upper_right", true);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("ball 1 at (3, 0.6) is off"), std::string::npos) << r.out;
 }
 
 TEST(BilliardBenchPot, WritesTheReportAndItsRows) {

@@ -60,6 +60,10 @@ TEST(BilliardRack, TheSeedDecidesTheRackAndOnlyIt) {
   const CommandResult bad = Billiard("rack straight-pool", true);
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.out.find("straight-pool"), std::string::npos) << bad.out;
+  // A negative seed is bad input, not a seed wrapped round to 2^64 - 1.
+  const CommandResult negative = Billiard("rack nine-ball --seed -1", true);
+  EXPECT_EQ(negative.status, 2);
+  EXPECT_NE(negative.out.find("--seed"), std::string::npos) << negative.out;
 }
 
 TEST(BilliardSimulateScene, RunsABreakUntilEveryBallRestsAndReportsItsEvents) {
@@ -154,6 +158,13 @@ TEST(BilliardSimulateScene, RefusesBadScenesWithTheReason) {
   }
   const CommandResult both = Billiard("simulate --scene x.json --state 0,0,0,0,0,0,0 --t-end 1");
   EXPECT_EQ(both.status, 2);
+  // The scene names its parameter set; --params beside it is refused, known set or not.
+  const std::string scene = WriteFile("one_ball.json", R"({"table":"pool-9ft","params":"pool","balls":[)" + ball0 + "]}");
+  for (const char* set : {"nosuch", "paper"}) {
+    const CommandResult params = Billiard("simulate --scene " + scene + " --params " + set, true);
+    EXPECT_EQ(params.status, 2) << set;
+    EXPECT_NE(params.out.find("--params"), std::string::npos) << params.out;
+  }
 }
 
 TEST(BilliardSimulateScene, MovesBallsByTheFiveDofModelWhereAskedOrNeeded) {

@@ -246,7 +246,8 @@ TEST(Binaries, UsageErrorsExitTwo) {
            "bench-planner --requests 1 --out " + unwritable,
            "bench-estimator --scenes 1 --balls 1 --struck 1 --out " + unwritable,
            "bench --quick --shots 0 --out " + unwritable, "burst --requests 0",
-           "burst --timeout 0"}) {
+           "burst --timeout 0", "plan --from 0.5,0.5 --to 1,0.5 --final-speed -0.3",
+           "rack nine-ball --seed -1"}) {
     ExpectOneLine(kBilliard + " " + args, 2);
   }
   ExpectOneLine(kPlannerNode + " --params /no/such.json", 2);
@@ -255,6 +256,22 @@ TEST(Binaries, UsageErrorsExitTwo) {
   ExpectOneLine(kViewerNode + " --port 0", 2);
   ExpectOneLine(kCameraNode + " --video /no/such.avi", 2);
   ExpectOneLine(kCameraNode + kCameraSource + " --video /no/such.avi", 2);
+}
+
+// A mistyped subcommand is named, with the nearest one when it is a few letters away (not a
+// guess at an unrelated word), exit 2; no subcommand at all is said so.
+TEST(Binaries, AnUnknownSubcommandIsNamedWithTheNearest) {
+  const SeparateOutput near = RunBinary(kBilliard + " simulat --json");
+  EXPECT_EQ(near.status, 2);
+  EXPECT_EQ(near.err,
+            "billiard: unknown subcommand 'simulat'; did you mean 'simulate'? (see --help)\n");
+  EXPECT_TRUE(near.out.empty());
+  EXPECT_NE(RunBinary(kBilliard + " choose_shot").err.find("did you mean 'choose-shot'?"),
+            std::string::npos);
+  const SeparateOutput far = RunBinary(kBilliard + " xyz");
+  EXPECT_EQ(far.status, 2);
+  EXPECT_EQ(far.err, "billiard: unknown subcommand 'xyz' (see --help)\n");
+  ExpectOneLine(kBilliard, 2);
 }
 
 TEST(Binaries, InternalFailuresExitOne) {

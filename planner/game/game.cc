@@ -61,6 +61,7 @@ std::optional<physics::CueStroke> PlayersStroke(const table::TableGeometry& tabl
   const choice::ChoiceResult decided =
       options.player->Decide({table, params, *balls, constraints}, choice, pool);
   rec->status = choice::ChoiceStatusName(decided.status);
+  rec->reason = decided.reason;
   rec->decision_us = decided.decision_us;
   if (decided.cue_placement) {
     rec->cue_placement = decided.cue_placement;
@@ -89,6 +90,14 @@ choice::StrokeResult Execute(const table::TableGeometry& table,
                                                       params.ball.radius,
                                                       [&] { return normal.Next(); });
   return choice::PlayToRest(table, params, balls, played, motion);
+}
+
+// The pocket whose mouth line `p` lies past, or nullptr.
+const table::Pocket* PocketPast(const table::TableGeometry& table, const Eigen::Vector2d& p) {
+  for (const table::Pocket& pocket : table.pockets) {
+    if ((p - pocket.centre).dot(pocket.inward) > 0.0) return &pocket;
+  }
+  return nullptr;
 }
 
 // What the referee sees of a shot played under `constraints`.
@@ -133,6 +142,7 @@ std::vector<int> PottedIds(const choice::StrokeResult& result) {
 }
 
 void Summarize(std::vector<double> decisions, GameSummary* sum) {
+  sum->cleared = sum->end == GameEnd::kCleared;
   sum->run_out = sum->cleared && sum->visits == 1;
   if (!decisions.empty()) {
     std::sort(decisions.begin(), decisions.end());
@@ -141,6 +151,31 @@ void Summarize(std::vector<double> decisions, GameSummary* sum) {
 }
 
 }  // namespace
+
+const char* GameEndName(GameEnd end) {
+  switch (end) {
+    case GameEnd::kCleared: return "cleared";
+    case GameEnd::kShotLimit: return "shot_limit";
+    case GameEnd::kVisitOver: return "visit_over";
+    case GameEnd::kNoStroke: return "no_stroke";
+  }
+  return "no_stroke";
+}
+
+void DropHangingBalls(const table::TableGeometry& table, choice::StrokeResult* result) {
+  std::vector<table::SceneBall> rest;
+  for (const table::SceneBall& b : result->rest) {
+    const table::Pocket* pocket = PocketPast(table, choice::Position(b));
+    if (!pocket) {
+      rest.push_back(b);
+    } else if (b.id == 0) {
+      result->scratch = true;
+    } else {
+      result->pocketed.emplace_back(b.id, pocket->name);
+    }
+  }
+  result->rest = std::move(rest);
+}
 
 GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParameters& params,
                     std::vector<table::SceneBall> balls, const GameOptions& options,
@@ -169,8 +204,13 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
       stroke = PlayersStroke(table, params, constraints, options, n, pool, &balls, &rec);
       decisions.push_back(rec.decision_us);
     }
-    if (!stroke) break;  // nothing to play: an invalid scene or an empty table
-    const choice::StrokeResult result = Execute(table, params, balls, *stroke, options, n, motion);
+    if (!stroke) {  // an invalid scene: said, not played
+      sum.end = GameEnd::kNoStroke;
+      sum.end_reason = rec.status + ": " + rec.reason;
+      break;
+    }
+    choice::StrokeResult result = Execute(table, params, balls, *stroke, options, n, motion);
+    DropHangingBalls(table, &result);
     rec.potted = PottedIds(result);
     const rules::Judgement judgement =
         ruleset.Judge(table, ShotOf(constraints, rec.break_shot, result, rec.potted));
@@ -180,12 +220,15 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
                           &balls);
     game.shots.push_back(rec);
     if (judgement.rack_over) {
-      sum.cleared = true;
+      sum.end = GameEnd::kCleared;
       break;
     }
     ball_in_hand = judgement.ball_in_hand;
     new_visit = judgement.turn_over;
-    if (new_visit && options.single_visit) break;
+    if (new_visit && options.single_visit) {
+      sum.end = GameEnd::kVisitOver;
+      break;
+    }
     if (new_visit) ++visit;
   }
   Summarize(std::move(decisions), &sum);

@@ -6,9 +6,14 @@
 //
 // A visit lasts while the shots pot legally; a shot that pots nothing ends it (the next visit
 // plays on from the balls as they lie: one player alone at the table), a foul ends it with ball
-// in hand (the player places the cue ball). The balls the rules put back (under nine-ball a 9
-// potted on a foul, to the foot spot or the nearest free place behind it on the long axis) go
-// back before the next shot. A run-out is a rack cleared in its first visit.
+// in hand (the player places the cue ball). When nothing plans, the player's fallback (a stroke
+// that hits the first legal ball full) is played and judged like any other, so a rack goes on
+// to its end or the shot limit; the summary says which. The balls the rules put back (under
+// nine-ball a 9 potted on a foul, to the foot spot or the nearest free place behind it on the
+// long axis) go back before the next shot. A ball the simulation leaves at rest with its centre
+// past a pocket's mouth line drops into that pocket (TableGeometry::OnSurface: a real one
+// would; a scene with it hanging there is not one a player can be asked about). A run-out is a
+// rack cleared in its first visit.
 //
 // Deterministic: the execution noise of shot n is drawn from SampleSeed(seed + stream, n), its
 // own stream, apart from the player's samples (seeded SampleSeed(choice seed, n)); a seed plays
@@ -25,6 +30,7 @@
 #include <vector>
 
 #include "planner/choice/choice_options.h"
+#include "planner/choice/monte_carlo.h"
 #include "planner/players/player.h"
 #include "planner/players/players.h"
 #include "sim/batch/thread_pool.h"
@@ -57,6 +63,7 @@ struct ShotRecord {
   bool ball_in_hand = false;
   std::optional<Eigen::Vector2d> cue_placement;
   std::string status;  // the choice's ChoiceStatusName
+  std::string reason;  // the choice's reason when it is not ok (why nothing planned)
   int ball = -1;       // the called ball and pocket, -1 and "" when none was called
   std::string pocket;
   std::string kind;
@@ -70,6 +77,15 @@ struct ShotRecord {
   double decision_us = 0.0;
 };
 
+// Why a game ended.
+enum class GameEnd {
+  kCleared,    // the rules say the rack is over
+  kShotLimit,  // GameOptions::shot_limit shots played
+  kVisitOver,  // GameOptions::single_visit and the first visit ended
+  kNoStroke,   // the player had no stroke to play (an invalid scene): GameSummary::end_reason
+};
+const char* GameEndName(GameEnd end);  // "cleared", "shot_limit", "visit_over", "no_stroke"
+
 struct GameSummary {
   int shots = 0;
   int attempts = 0;  // shots that called a pot (the break is none)
@@ -79,6 +95,8 @@ struct GameSummary {
   int balls_potted = 0;  // legally, the break's included
   bool cleared = false;
   bool run_out = false;
+  GameEnd end = GameEnd::kShotLimit;
+  std::string end_reason;  // with kNoStroke: the choice's status and reason
   double median_decision_us = 0.0;
   double pots_per_attempt() const { return attempts ? static_cast<double>(pots) / attempts : 0.0; }
 };
@@ -95,6 +113,11 @@ struct GameRecord {
 GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParameters& params,
                     std::vector<table::SceneBall> balls, const GameOptions& options,
                     batch::ThreadPool& pool);
+
+// Every ball of `result.rest` resting with its centre past a pocket's mouth line (the line
+// TableGeometry::OnSurface does not let a placed ball cross) moved into that pocket: an object
+// ball into `pocketed` (after the simulation's own), the cue ball a scratch.
+void DropHangingBalls(const table::TableGeometry& table, choice::StrokeResult* result);
 
 // The layouts of the drills and benchmarks (sim/table/rack.h), where the table simulator
 // places them too.

@@ -67,6 +67,7 @@ TEST_F(GameTest, ClearsAnOpenTableAndCountsWhatHappened) {
   EXPECT_EQ(potted, s.balls_potted);
   EXPECT_EQ(fouls, s.fouls);
   EXPECT_EQ(s.run_out, s.visits == 1);
+  EXPECT_EQ(s.end, GameEnd::kCleared);
 }
 
 TEST_F(GameTest, SameGameOnOneThreadOrTwo) {
@@ -144,6 +145,53 @@ TEST_F(GameTest, AFoulGivesTheNextShotBallInHand) {
   EXPECT_EQ(player->seen()[0].legal_targets, (std::vector<int>{1}));
   EXPECT_EQ(game.summary.fouls, 2);
   EXPECT_FALSE(game.summary.cleared);
+  EXPECT_EQ(game.summary.end, GameEnd::kShotLimit);
+}
+
+// The 1, the only legal ball under nine-ball, behind a wall of three: no direct pot plans. The
+// shot is recorded as no_plan with the choice's reason, the fallback (at the 1 full) is played
+// and judged (it meets the wall first: a foul), and the rack goes on from ball in hand.
+TEST_F(GameTest, WhenNothingPlansTheFallbackIsPlayedAndTheRackGoesOn) {
+  const double y = 0.5 * table_.width;
+  const std::vector<table::SceneBall> balls = {
+      table::AtRest(0, 0.6, y),        table::AtRest(1, 1.3, y),
+      table::AtRest(2, 0.9, y),        table::AtRest(3, 0.9, y - 0.06),
+      table::AtRest(4, 0.9, y + 0.06)};
+  options_.choice.rules = rules::Rules::kNineBall;
+  options_.shot_limit = 2;
+  batch::ThreadPool pool(2);
+  const GameRecord game = PlayGame(table_, params_, balls, options_, pool);
+  ASSERT_EQ(game.shots.size(), 2u);
+  const ShotRecord& first = game.shots[0];
+  EXPECT_EQ(first.status, "no_plan");
+  EXPECT_NE(first.reason.find("no pot of a legal ball plans"), std::string::npos) << first.reason;
+  EXPECT_EQ(first.ball, -1);
+  EXPECT_EQ(first.first_contact, 2);
+  EXPECT_TRUE(first.foul);
+  EXPECT_TRUE(game.shots[1].ball_in_hand);
+  EXPECT_EQ(game.summary.shots, 2);
+  EXPECT_EQ(game.summary.end, GameEnd::kShotLimit);
+}
+
+// A ball left at rest past a pocket's mouth line drops into that pocket (the cue ball: a
+// scratch); one short of the line stays.
+TEST_F(GameTest, BallsHangingPastTheMouthDrop) {
+  const table::Pocket& corner = *table_.PocketNamed("upper_right");
+  const table::Pocket& side = *table_.PocketNamed("lower_middle");
+  const Eigen::Vector2d past = corner.centre + 0.005 * corner.inward;
+  const Eigen::Vector2d short_of = corner.centre - 0.005 * corner.inward;
+  const Eigen::Vector2d cue = side.centre + 0.001 * side.inward;
+  choice::StrokeResult result;
+  result.pocketed = {{5, "lower_left"}};
+  result.rest = {table::AtRest(0, cue.x(), cue.y()), table::AtRest(3, past.x(), past.y()),
+                 table::AtRest(4, short_of.x(), short_of.y()), table::AtRest(6, 1.0, 0.6)};
+  DropHangingBalls(table_, &result);
+  EXPECT_TRUE(result.scratch);
+  const std::vector<std::pair<int, std::string>> pocketed = {{5, "lower_left"}, {3, "upper_right"}};
+  EXPECT_EQ(result.pocketed, pocketed);
+  ASSERT_EQ(result.rest.size(), 2u);
+  EXPECT_EQ(result.rest[0].id, 4);
+  EXPECT_EQ(result.rest[1].id, 6);
 }
 
 // Under nine-ball the 9 potted off the cue ball before the 1 is a foul and comes back to the

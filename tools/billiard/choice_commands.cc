@@ -14,6 +14,7 @@
 #include "sim/params/scene_file.h"
 #include "sim/rules/rules.h"
 #include "sim/table/rack.h"
+#include "sim/table/table_simulation.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/pot_commands.h"
 #include "tools/billiard/scene_commands.h"
@@ -45,7 +46,8 @@ void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
   cmd->add_option("--confirm-samples", args->confirm_samples,
                   "Fresh full-model executions of the chosen shot: its reported probability")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  cmd->add_option("--seed", args->seed, "Seed of the sampled noise")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the sampled noise")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--threads", args->threads, "Threads (the results do not depend on them)")
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
@@ -83,6 +85,7 @@ LoadedScene LoadSceneOption(const std::string& path) {
   LoadedScene s{LoadParametersOption(scene.params), LoadTableOption(scene.table), {}};
   try {
     s.balls = params::LaunchedBalls(scene, s.params);
+    table::ValidateScene(s.table, s.params.ball.radius, s.balls);  // bad input (2), as simulate's
   } catch (const std::invalid_argument& e) {
     throw UsageError(path + ": " + e.what());
   }
@@ -167,6 +170,7 @@ nlohmann::json GameJson(const game::GameRecord& game) {
     j["ball_in_hand"] = s.ball_in_hand;
     j["cue_placement"] = s.cue_placement ? Point(*s.cue_placement) : nlohmann::json(nullptr);
     j["status"] = s.status;
+    j["reason"] = s.reason;
     j["ball"] = s.ball;
     j["pocket"] = s.pocket;
     j["kind"] = s.kind;
@@ -191,11 +195,57 @@ nlohmann::json GameJson(const game::GameRecord& game) {
                             {"balls_per_visit", m.visits ? double(m.balls_potted) / m.visits : 0.0},
                             {"cleared", m.cleared},
                             {"run_out", m.run_out},
+                            {"end", game::GameEndName(m.end)},
+                            {"end_reason", m.end_reason},
                             {"median_decision_us", m.median_decision_us}};
   nlohmann::json left = nlohmann::json::array();
   for (const table::SceneBall& b : game.final_balls) left.push_back(b.id);
   return {{"shots", shots}, {"summary", summary}, {"balls_left", left}};
 }
+
+namespace {
+
+// A shot as a player reads it: the call (the break; or why nothing was called, and that the
+// fallback was played), then the balls that dropped by number, "none" when none did (a count
+// of 0 reads as the cue ball).
+void PrintShot(const game::ShotRecord& r) {
+  std::cerr << "shot " << r.number << " (visit " << r.visit << "): ";
+  if (r.break_shot) {
+    std::cerr << "break";
+  } else if (r.ball >= 0) {
+    std::cerr << "ball " << r.ball << " in " << r.pocket << " (" << r.kind << ", p " << r.predicted << ")";
+  } else {
+    std::cerr << r.status << (r.reason.empty() ? "" : " (" + r.reason + ")")
+              << ": the fallback, the first legal ball hit full";
+  }
+  std::cerr << " -> potted ";
+  if (r.potted.empty()) std::cerr << "none";
+  for (std::size_t i = 0; i < r.potted.size(); ++i) std::cerr << (i ? ", " : "") << r.potted[i];
+  std::cerr << (r.foul ? ", foul: " + r.foul_reason : "") << "\n";
+}
+
+// How the rack ended, in words.
+std::string EndOf(const game::GameSummary& m, int shot_limit) {
+  switch (m.end) {
+    case game::GameEnd::kCleared: return "cleared";
+    case game::GameEnd::kShotLimit:
+      return "not cleared: the shot limit (" + std::to_string(shot_limit) + ") reached";
+    case game::GameEnd::kVisitOver: return "not cleared: the visit is over";
+    case game::GameEnd::kNoStroke: return "stopped: no stroke to play (" + m.end_reason + ")";
+  }
+  return "";
+}
+
+// Every shot, then the summary with why the rack ended, on stderr.
+void PrintGame(const game::GameRecord& game, int shot_limit) {
+  for (const game::ShotRecord& r : game.shots) PrintShot(r);
+  const game::GameSummary& m = game.summary;
+  std::cerr << "play: " << EndOf(m, shot_limit) << " in " << m.shots << " shots, " << m.visits
+            << " visits, " << m.pots << " of " << m.attempts << " attempts potted, " << m.fouls
+            << " fouls" << (m.run_out ? ", a run-out" : "") << "\n";
+}
+
+}  // namespace
 
 void AddChooseShotCommand(CLI::App& app) {
   struct Args : ChoiceArgs {
@@ -282,17 +332,7 @@ void AddPlayCommand(CLI::App& app) {
     options.ball_in_hand = args->ball_in_hand;
     batch::ThreadPool pool(args->threads);
     const game::GameRecord game = game::PlayGame(s.table, s.params, s.balls, options, pool);
-    for (const game::ShotRecord& r : game.shots) {
-      std::cerr << "shot " << r.number << " (visit " << r.visit << "): ";
-      if (r.break_shot) std::cerr << "break";
-      else if (r.ball >= 0) std::cerr << "ball " << r.ball << " in " << r.pocket << " (" << r.kind << ", p " << r.predicted << ")";
-      else std::cerr << r.status;
-      std::cerr << " -> potted " << r.potted.size() << (r.foul ? ", foul: " + r.foul_reason : "") << "\n";
-    }
-    const game::GameSummary& m = game.summary;
-    std::cerr << "play: " << (m.cleared ? "cleared" : "not cleared") << " in " << m.shots << " shots, "
-              << m.visits << " visits, " << m.pots << " of " << m.attempts << " attempts potted, "
-              << m.fouls << " fouls" << (m.run_out ? ", a run-out" : "") << "\n";
+    PrintGame(game, options.shot_limit);
     if (args->json) {
       nlohmann::json j = GameJson(game);
       j["rules"] = rules::RulesName(options.choice.rules);
@@ -326,7 +366,8 @@ void AddBenchGameCommand(CLI::App& app) {
   cmd->add_option("--confirm-samples", o.confirm_samples,
                   "Fresh full-model executions of the chosen shot: its reported probability")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  cmd->add_option("--seed", o.seed, "The first layout's seed")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "The first layout's seed")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--threads", o.threads, "Threads")->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_option("--chunk", o.chunk, "Layouts between the report's rewrites")
       ->capture_default_str()->check(CLI::PositiveNumber);

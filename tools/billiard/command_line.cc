@@ -39,6 +39,40 @@ std::vector<double> ParseNumberList(const std::string& text, std::size_t count,
   return numbers;
 }
 
+namespace {
+
+// The edit distance between a and b, row by row of the Wagner-Fischer table.
+std::size_t EditDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substituted = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+      diagonal = row[j];
+      row[j] = std::min({substituted, row[j] + 1, row[j - 1] + 1});
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+std::string NearestName(const std::string& word, const std::vector<std::string>& names,
+                        std::size_t max_edits) {
+  std::string nearest;
+  std::size_t best = max_edits + 1;
+  for (const std::string& name : names) {
+    const std::size_t d = EditDistance(word, name);
+    if (d < best) {
+      nearest = name;
+      best = d;
+    }
+  }
+  return nearest;
+}
+
 void RequireFinite(double value, const std::string& what) {
   if (!std::isfinite(value)) throw UsageError(what + ": numbers must be finite (no NaN or inf)");
 }

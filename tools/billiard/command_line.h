@@ -38,6 +38,12 @@ std::vector<double> ParseNumberList(const std::string& text, std::size_t count,
 // Throws UsageError unless value is finite.
 void RequireFinite(double value, const std::string& what);
 
+// The name of `names` nearest `word` by edit distance (insertions, deletions and substitutions
+// of one character each; Levenshtein 1966), the first of equals; "" when none is within
+// `max_edits`. For "did you mean" after a mistyped name, and no guess at an unrelated one.
+std::string NearestName(const std::string& word, const std::vector<std::string>& names,
+                        std::size_t max_edits);
+
 // "params": the set's name, and "params_file": the file it came from (when not built in).
 void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j);
 

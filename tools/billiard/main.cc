@@ -5,6 +5,8 @@
 #include <csignal>
 #include <exception>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "lcmtypes/node/node_command_line.h"
 #include "tools/billiard/bench_command.h"
@@ -34,6 +36,30 @@ namespace {
 // not as a process killed by the signal. `billiard loop` installs handlers of its own that end
 // its session cleanly, with the same status.
 void ExitStopped(int) { _exit(130); }
+
+// A mistyped subcommand is suggested the nearest name this many edits away at most: a dropped,
+// doubled or swapped letter or two, not a guess at an unrelated word.
+constexpr std::size_t kNearEdits = 3;
+
+// The first argument when it is no option and names no subcommand (CLI11 would say only that a
+// subcommand is required), else "".
+std::string UnknownSubcommand(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return "";
+  const std::string word = argv[1];
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    if (sub->check_name(word)) return "";
+  }
+  return word;
+}
+
+// The subcommands' names, for the nearest to a mistyped one.
+std::vector<std::string> SubcommandNames(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    names.push_back(sub->get_name());
+  }
+  return names;
+}
 
 }  // namespace
 
@@ -73,6 +99,13 @@ int main(int argc, char** argv) {
   billiard::cli::AddChooseShotCommand(app);
   billiard::cli::AddPlayCommand(app);
   billiard::cli::AddBenchGameCommand(app);
+  if (const std::string word = UnknownSubcommand(app, argc, argv); !word.empty()) {
+    const std::string nearest = billiard::cli::NearestName(word, SubcommandNames(app), kNearEdits);
+    std::cerr << "billiard: unknown subcommand '" << word << "'"
+              << (nearest.empty() ? "" : "; did you mean '" + nearest + "'?") << " (see --help)"
+              << std::endl;
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -62,6 +62,8 @@ void Run(const PlanArgs& args, bool slide_given) {
   const auto from = ParseNumberList(args.from, 2, "--from X,Y");
   const auto to = ParseNumberList(args.to, 2, "--to X,Y");
   RequireFinite(args.final_speed, "--final-speed");
+  // Bad input (exit 2), not a plan refused: a ball cannot arrive at a negative speed.
+  if (args.final_speed < 0) throw UsageError("--final-speed: must be 0 or more (0: stop at the target)");
   RequireFinite(args.side_spin, "--side-spin");
   planner::ShotRequest request;
   request.from = {from[0], from[1]};

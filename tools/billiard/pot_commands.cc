@@ -10,6 +10,7 @@
 #include "planner/pot/testing/pot_layouts.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/scene_file.h"
+#include "sim/table/table_simulation.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/scene_commands.h"
 
@@ -78,6 +79,7 @@ void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
   std::vector<table::SceneBall> balls;
   try {
     balls = params::LaunchedBalls(scene, params);
+    table::ValidateScene(geometry, params.ball.radius, balls);  // bad input (2), as simulate's
   } catch (const std::invalid_argument& e) {
     throw UsageError(args.scene_path + ": " + e.what());
   }
@@ -178,7 +180,8 @@ void AddPotLayoutCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "pot-layout", "A seeded layout of balls at rest and a pot to ask of it: bench-pot's layouts, "
                     "as a scene file for simulate --scene, plan-pot and run_loop.sh");
-  cmd->add_option("--seed", args->seed, "The layout's seed")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "The layout's seed")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--table", args->table, "A table specification, built in or a file")->capture_default_str();
   cmd->add_option("--params", args->params, "The scene's parameter set (its ball radius places the balls)")
       ->capture_default_str();
@@ -244,7 +247,8 @@ void AddBenchPotCommand(CLI::App& app) {
       "bench-pot", "Seeded pots planned and checked against the table simulation: truth, coverage, "
                    "margin, throw, position, speed (JSON summary on stdout)");
   cmd->add_option("--layouts", args->options.layouts, "Seeded layouts")->capture_default_str()->check(CLI::PositiveNumber);
-  cmd->add_option("--seed", args->options.seed, "The first layout's seed")->capture_default_str();
+  cmd->add_option("--seed", args->options.seed, "The first layout's seed")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--margin-checks", args->options.margin_checks, "Plans whose margin is checked")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--position-targets", args->options.position_targets, "Cue-ball targets planned")

@@ -238,7 +238,8 @@ void AddRackCommand(CLI::App& app) {
                   "carom-10ft for three-cushion)");
   cmd->add_option("--params", args->params,
                   "Parameter set (default: pool; snooker and carom for their racks)");
-  cmd->add_option("--seed", args->seed, "Seed of the rack's order and gaps")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the rack's order and gaps")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", "The scene as JSON on stdout (the only output; accepted for symmetry)");
   cmd->callback([args, cmd] {
     table::RackKind kind;

@@ -224,7 +224,8 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--integrator", args->integrator,
                   "5-DOF models: rodas4 (stiff, default) | dopri5 (explicit baseline)")
       ->capture_default_str();
-  cmd->add_option("--params", args->params, "paper | pool | path to a JSON parameter file")
+  cmd->add_option("--params", args->params,
+                  "paper | pool | path to a JSON parameter file (not with --scene: the scene names its set)")
       ->capture_default_str();
   cmd->add_option("--tol", args->tol, "Integrator local error target [m]")->capture_default_str();
   cmd->add_option("--quadrature-tol", args->quadrature_tol,
@@ -236,7 +237,13 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_flag("--no-rest-switch", args->no_rest_switch,
                 "5-DOF models: integrate the regularized equations through the rest phase too");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
-  cmd->callback([args, cmd] { Run(*args, cmd->count("--at") > 0); });
+  cmd->callback([args, cmd] {
+    // The scene names its parameter set (its ball radius placed the balls): one source.
+    if (!args->scene.empty() && cmd->count("--params") > 0) {
+      throw UsageError("--scene takes its parameter set from the file's \"params\", not --params");
+    }
+    Run(*args, cmd->count("--at") > 0);
+  });
 }
 
 }  // namespace billiard::cli
