@@ -92,14 +92,6 @@ choice::StrokeResult Execute(const table::TableGeometry& table,
   return choice::PlayToRest(table, params, balls, played, motion);
 }
 
-// The pocket whose mouth line `p` lies past, or nullptr.
-const table::Pocket* PocketPast(const table::TableGeometry& table, const Eigen::Vector2d& p) {
-  for (const table::Pocket& pocket : table.pockets) {
-    if ((p - pocket.centre).dot(pocket.inward) > 0.0) return &pocket;
-  }
-  return nullptr;
-}
-
 // What the referee sees of a shot played under `constraints`.
 rules::Shot ShotOf(const rules::Constraints& constraints, bool break_shot,
                    const choice::StrokeResult& result, const std::vector<int>& potted) {
@@ -165,7 +157,7 @@ const char* GameEndName(GameEnd end) {
 void DropHangingBalls(const table::TableGeometry& table, choice::StrokeResult* result) {
   std::vector<table::SceneBall> rest;
   for (const table::SceneBall& b : result->rest) {
-    const table::Pocket* pocket = PocketPast(table, choice::Position(b));
+    const table::Pocket* pocket = table.PocketPastMouth(choice::Position(b));
     if (!pocket) {
       rest.push_back(b);
     } else if (b.id == 0) {

@@ -161,11 +161,14 @@ const Pocket* TableGeometry::PocketNamed(const std::string& name) const {
 }
 
 bool TableGeometry::OnSurface(const Vector2d& p, double radius) const {
-  if (!InsideBoundary(p, radius)) return false;
+  return InsideBoundary(p, radius) && !PocketPastMouth(p);
+}
+
+const Pocket* TableGeometry::PocketPastMouth(const Vector2d& p) const {
   for (const Pocket& pocket : pockets) {
-    if ((p - pocket.centre).dot(pocket.inward) > 0.0) return false;
+    if ((p - pocket.centre).dot(pocket.inward) > 0.0) return &pocket;
   }
-  return true;
+  return nullptr;
 }
 
 bool TableGeometry::InsideBoundary(const Vector2d& p, double radius) const {

@@ -112,6 +112,9 @@ struct TableGeometry {
   // hangs over the pocket: a still ball there would never reach the capture line, and a real
   // one would drop.
   bool OnSurface(const Eigen::Vector2d& p, double radius) const;
+  // The pocket whose mouth line (between its noses) the centre p lies past, or nullptr: where a
+  // ball at rest hangs over that pocket and drops.
+  const Pocket* PocketPastMouth(const Eigen::Vector2d& p) const;
   // The pocket called `name`, or nullptr.
   const Pocket* PocketNamed(const std::string& name) const;
 };

@@ -294,7 +294,10 @@ TEST(TableGeometryTest, OnSurfaceAtPlainPlaces) {
     EXPECT_FALSE(pool.OnSurface(middle - 1e-6 * pocket.inward, 0.01)) << pocket.name;
     EXPECT_TRUE(pool.OnSurface(pocket.centre - 1e-6 * pocket.inward, 0.01)) << pocket.name;
     EXPECT_FALSE(pool.OnSurface(pocket.centre + 1e-6 * pocket.inward, 0.01)) << pocket.name;
+    EXPECT_EQ(pool.PocketPastMouth(pocket.centre - 1e-6 * pocket.inward), nullptr) << pocket.name;
+    EXPECT_EQ(pool.PocketPastMouth(pocket.centre + 1e-6 * pocket.inward), &pocket) << pocket.name;
   }
+  EXPECT_EQ(pool.PocketPastMouth({0.5 * pool.length, 0.5 * pool.width}), nullptr);
   // The corner pocket's mouth runs from nose to nose, mouth / sqrt(2) from the corner along each
   // cushion (x + y = 0.0819 m at the lower left): a ball at (0.01, 0.01) is 4.4 cm past it,
   // over the pocket, though inside the playing rectangle and short of the capture line.
