@@ -64,13 +64,51 @@ run_camera() {
     kill -TERM "$camera_node" 2>/dev/null || true
     wait "$camera_node" 2>/dev/null || true
   fi
-  sleep 0.5  # the estimator's last states reach the log
+  $stopped || wait_for_the_estimator "$camera_log"
   # (A Ctrl-C at a terminal has stopped it already, with the nodes.)
   kill -TERM "$logger" 2>/dev/null && wait "$logger" || true
   print_camera_summary "$camera_log" "$camera_err"
   $stopped && exit 130
   [ "$status" -eq 0 ] || exit 1
   exit 0
+}
+
+# On a busy machine the estimator lags behind the camera: polls the log $1 until it holds a state
+# for every frame the camera published and the estimator did not refuse, or until no state has
+# come for a quiet spell (a frame lost on the way), so that the tracks end where the video does.
+wait_for_the_estimator() {
+  local poll_s=0.2 quiet_polls=15 quiet=0 seen=-1 progress
+  while progress=$(estimator_progress "$1"); do
+    local states=${progress% *} frames=${progress#* }
+    [ "$states" -ge "$frames" ] && return
+    if [ "$states" -eq "$seen" ]; then
+      quiet=$((quiet + 1))
+      [ "$quiet" -ge "$quiet_polls" ] && return
+    else
+      quiet=0 seen=$states
+    fi
+    sleep "$poll_s"
+  done
+}
+
+# "STATES FRAMES": the estimator's states in the log $1, and the frames it owes one for (the
+# camera's published, less the estimator's refusals as its last status counts them); one frame
+# more until the camera's last status, the one that says its source ended or failed, is logged.
+estimator_progress() {
+  local statuses tracks
+  statuses=$("$bin_dir/billiard" node-status "$1" 2>/dev/null) || return 1
+  tracks=$("$bin_dir/billiard" tracks "$1" 2>/dev/null) || return 1
+  python3 - "$statuses" "$tracks" <<'PY'
+import json, sys
+statuses, tracks = json.loads(sys.argv[1]), json.loads(sys.argv[2])
+def last(node):
+    found = [p for p in statuses["processes"] if p["node"] == node]
+    return found[-1] if found else {"published": 0, "dropped": 0}
+camera = last("camera_node")
+source_done = camera.get("counters", {}).get("source_state", 0) >= 2
+owed = camera["published"] - last("estimator_node")["dropped"] + (0 if source_done else 1)
+print(tracks["states"], owed)
+PY
 }
 
 # What the run saw: the camera's last line, the nodes' health, the tracks; $json adds the object.
