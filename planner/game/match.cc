@@ -83,7 +83,10 @@ bool PlayShot(const RackContext& c, int n, rules::RackState* state,
 }
 
 void Tally(const ShotRecord& rec, PlayerTally* tally) {
-  tally->fouls += rec.foul;
+  if (rec.foul) {
+    ++tally->fouls;
+    ++tally->foul_reasons[rec.foul_reason];
+  }
   if (rec.break_shot) return;
   tally->decisions_us.push_back(rec.decision_us);
   if (rec.ball < 0) return;

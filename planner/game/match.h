@@ -23,6 +23,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -61,6 +62,7 @@ struct PlayerTally {
   int safeties = 0;        // defensive strokes played (none: no player plays one yet)
   int safeties_that_worked = 0;
   int fouls = 0;
+  std::map<std::string, int> foul_reasons;  // the fouls by the rules' reason
   std::vector<double> decisions_us;  // every decision's time, in the order made
 };
 

@@ -69,8 +69,11 @@ TEST_F(MatchTest, ThreeFoulsInARowLoseTheRack) {
     }
     EXPECT_EQ(r.winner, 1 - first);
   }
-  EXPECT_EQ(match.players[0].fouls + match.players[1].fouls,
-            10 + static_cast<int>(match.racks[0].shots[0].foul + match.racks[1].shots[0].foul));
+  const int break_fouls = match.racks[0].shots[0].foul + match.racks[1].shots[0].foul;
+  EXPECT_EQ(match.players[0].fouls + match.players[1].fouls, 10 + break_fouls);
+  EXPECT_EQ(match.players[0].foul_reasons.at("no contact") +
+                match.players[1].foul_reasons.at("no contact"),
+            10);
 }
 
 // The table changes hands exactly when the rules end the visit: after a foul or a shot that

@@ -88,6 +88,7 @@ nlohmann::json PlayerJson(const game::PlayerTally& p, int racks) {
           {"safeties", p.safeties},
           {"safeties_that_worked", p.safeties_that_worked},
           {"fouls", p.fouls},
+          {"foul_reasons", p.foul_reasons},
           {"decision_us", DecisionJson(p.decisions_us)}};
 }
 
