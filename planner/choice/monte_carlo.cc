@@ -7,6 +7,7 @@
 #include "planner/choice/lookahead.h"
 #include "planner/choice/scene_balls.h"
 #include "sim/model_choice/model_choice.h"
+#include "sim/table/rail_contacts.h"
 
 namespace billiard::choice {
 
@@ -78,6 +79,7 @@ StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelP
   table::TableSimulation sim(table, params, start, sim_options);
   sim.Run(kLongestStroke);
   result.first_contact = table::FirstBallMet(sim.events(), 0);
+  result.to_rail_after_contact = table::BallsToRailAfterFirstContact(sim.events(), 0);
   for (std::size_t i = 0; i < sim.ball_count(); ++i) {
     if (sim.pocket(i)) {
       if (sim.id(i) == 0) {

@@ -55,6 +55,8 @@ struct StrokeResult {
   std::vector<std::pair<int, std::string>> pocketed;  // object balls and their pockets
   bool scratch = false;                               // the cue ball dropped
   std::vector<table::SceneBall> rest;                 // the balls left on the table, at rest
+  // The balls that met a rail after the cue ball's first contact (what a referee asks).
+  std::vector<int> to_rail_after_contact;
 };
 
 // Strikes the cue ball (id 0, at rest) of `balls` with `stroke` and simulates the table until

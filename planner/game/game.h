@@ -31,6 +31,7 @@
 
 #include "planner/choice/choice_options.h"
 #include "planner/choice/monte_carlo.h"
+#include "planner/game/table_shot.h"
 #include "planner/players/player.h"
 #include "planner/players/players.h"
 #include "sim/batch/thread_pool.h"
@@ -54,27 +55,6 @@ struct GameOptions {
   bool break_shot = false;
   double break_speed = 5.0;  // [m/s]
   bool single_visit = false;  // stop when the first visit ends (a run-out drill)
-};
-
-struct ShotRecord {
-  int number = 0;
-  int visit = 1;
-  bool break_shot = false;
-  bool ball_in_hand = false;
-  std::optional<Eigen::Vector2d> cue_placement;
-  std::string status;  // the choice's ChoiceStatusName
-  std::string reason;  // the choice's reason when it is not ok (why nothing planned)
-  int ball = -1;       // the called ball and pocket, -1 and "" when none was called
-  std::string pocket;
-  std::string kind;
-  double predicted = -1.0;  // the choice's probability, -1 when it has none
-  bool likely = false;
-  int first_contact = -1;
-  std::vector<int> potted;  // object balls dropped, in id order
-  bool called_potted = false;
-  bool foul = false;
-  std::string foul_reason;
-  double decision_us = 0.0;
 };
 
 // Why a game ended.
@@ -113,11 +93,6 @@ struct GameRecord {
 GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParameters& params,
                     std::vector<table::SceneBall> balls, const GameOptions& options,
                     batch::ThreadPool& pool);
-
-// Every ball of `result.rest` resting with its centre past a pocket's mouth line (the line
-// TableGeometry::OnSurface does not let a placed ball cross) moved into that pocket: an object
-// ball into `pocketed` (after the simulation's own), the cue ball a scratch.
-void DropHangingBalls(const table::TableGeometry& table, choice::StrokeResult* result);
 
 // The layouts of the drills and benchmarks (sim/table/rack.h), where the table simulator
 // places them too.

@@ -2,6 +2,8 @@
 // one-shot lookahead (as ChoiceOptions::lookahead says), and with ball in hand the cue ball
 // placed where it scores best (ball_in_hand.h).
 //
+// "ours-no-safety": ours without safeties; the same player as "ours" until safeties exist.
+//
 // Ours(false), "no-lookahead": the same choice scoring each pot by its probability alone, p
 // rather than p (1 + v) (the lookahead off whatever the options say, and with it position
 // play). `billiard bench-game` plays it to show what the lookahead adds.
@@ -15,13 +17,17 @@ namespace billiard::players {
 
 class Ours final : public Player {
  public:
-  explicit Ours(bool lookahead = true) : lookahead_(lookahead) {}
-  const char* Name() const override { return lookahead_ ? "ours" : "no-lookahead"; }
+  explicit Ours(bool lookahead = true) : Ours(lookahead, lookahead ? "ours" : "no-lookahead") {}
+  // `name` for the same player under another name: "ours-no-safety", the player a match with
+  // safeties is measured against (issue 48), the same as "ours" until ours plays safeties.
+  Ours(bool lookahead, const char* name) : lookahead_(lookahead), name_(name) {}
+  const char* Name() const override { return name_; }
   choice::ChoiceResult Decide(const Turn& turn, const choice::ChoiceOptions& options,
                               batch::ThreadPool& pool) const override;
 
  private:
   bool lookahead_;
+  const char* name_;
 };
 
 }  // namespace billiard::players

@@ -11,6 +11,7 @@ TEST(PlayersTest, EachNameMakesThatPlayer) {
   const std::vector<std::string> names = PlayerNames();
   EXPECT_EQ(names, (std::vector<std::string>{"ours", "no-lookahead", "easiest-looking"}));
   for (const std::string& name : names) EXPECT_EQ(MakePlayer(name)->Name(), name);
+  EXPECT_STREQ(MakePlayer(kOursNoSafety)->Name(), "ours-no-safety");
 }
 
 TEST(PlayersTest, AnUnknownNameIsRefusedWithTheKnownOnes) {
@@ -18,7 +19,7 @@ TEST(PlayersTest, AnUnknownNameIsRefusedWithTheKnownOnes) {
     MakePlayer("random");
     FAIL() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "unknown player 'random' (ours, no-lookahead, easiest-looking)");
+    EXPECT_STREQ(e.what(), "unknown player 'random' (ours, no-lookahead, easiest-looking, ours-no-safety)");
   }
 }
 

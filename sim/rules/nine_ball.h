@@ -1,18 +1,24 @@
-// Nine-ball, as the WPA Rules of Play (World Pool-Billiard Association) have it, in the part
-// judged here:
+// Nine-ball, as the WPA Rules of Play (World Pool-Billiard Association) have it:
 //  - "On each shot the first ball the cue ball contacts must be the lowest-numbered ball on the
-//    table" (Nine-Ball, Object of the Game), the break excepted: any contact is one there;
-//  - a scratch (Standard Fouls, Cue Ball Scratch), a wrong first contact (Wrong Ball First) or
-//    none is a foul, and after a foul the incoming player has the cue ball in hand anywhere on
-//    the table (here the next visit);
-//  - the 9 potted on a foul is spotted: on the foot spot, or when that is taken on the long
-//    string behind it, toward the foot rail, as near the spot as it is free (Nine-Ball,
+//    table" (Nine-Ball, Object of the Game), the break too ("the breaker must strike the one
+//    ball first", Break Shot);
+//  - a legal break pots a ball or drives at least four numbered balls to the rail (Break Shot;
+//    IllegalBreak);
+//  - after the contact a ball is pocketed or a ball (the cue ball or a numbered one) meets a
+//    rail (Standard Fouls, No Rail after Contact);
+//  - a scratch (Cue Ball Scratch), a wrong first contact (Wrong Ball First) or none is a foul,
+//    and after a foul the incoming player has the cue ball in hand anywhere on the table;
+//  - the shot after the break may be declared a push-out (Push Out): no ball need be met and no
+//    rail reached, a scratch is still a foul, a 9 potted is spotted, and the incoming player
+//    takes the table or hands it back (Judgement::opponent_may_pass; rack_state.h);
+//  - three fouls in a row without a legal shot between lose the rack (Three Consecutive Fouls;
+//    counted by rack_state.h; the warning the referee gives before the third is not modelled);
+//  - the 9 potted on a foul or a push-out is spotted: on the foot spot, or when that is taken on
+//    the long string behind it, toward the foot rail, as near the spot as it is free (Nine-Ball,
 //    Spotting Balls; General Rules, Spotting Balls);
-//  - the rack is won by pocketing the 9 on a legal shot (Object of the Game); a rack with no
-//    object ball left (one racked without the 9) is over too.
+//  - the rack is won by pocketing the 9 on a legal shot, the break's included (Object of the
+//    Game); a rack with no object ball left (one racked without the 9) is over too.
 // A stroke the cue cannot give is judged a miscue, a foul (the pocket games' fouls, ruleset.h).
-// Not judged (yet): No Rail after Contact, the push-out after the break, three successive
-// fouls, the break's own requirements.
 //
 // Module: billiard::rules.
 #pragma once
@@ -34,6 +40,11 @@ class NineBall final : public Ruleset {
   // No object ball left, or the 9 gone.
   bool RackOver(const std::vector<table::SceneBall>& balls) const override;
   Judgement Judge(const table::TableGeometry& table, const Shot& shot) const override;
+  int FoulsThatLose() const override { return kFoulsThatLose; }
+  bool PushOutAfterBreak() const override { return true; }
+
+ private:
+  static constexpr int kFoulsThatLose = 3;
 };
 
 // The foot spot of `table`: the middle of its foot half (x = 3/4 length, across the middle).

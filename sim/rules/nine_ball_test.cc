@@ -11,12 +11,13 @@ namespace {
 class NineBallTest : public ::testing::Test {
  protected:
   NineBallTest() : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {}
-  // A shot whose lowest ball on the table is `lowest`, first meeting `first`, potting `potted`
-  // and leaving `left` object balls.
+  // A shot whose lowest ball on the table is `lowest`, first meeting `first` (and driving it to
+  // a rail), potting `potted` and leaving `left` object balls.
   static Shot Played(int lowest, int first, std::vector<int> potted, int left) {
     Shot s;
     s.constraints.legal_targets = {lowest};
     s.first_contact = first;
+    if (first >= 0) s.to_rail_after_contact = {first};
     s.potted = std::move(potted);
     s.object_balls_left = left;
     return s;
@@ -66,11 +67,89 @@ TEST_F(NineBallTest, WrongBallFirstIsAFoul) {
   EXPECT_TRUE(j.ball_in_hand);
 }
 
-// On the break any first contact is one: the 3 met before the 1 is no foul.
-TEST_F(NineBallTest, TheBreakMayMeetAnyBallFirst) {
+// "The breaker must strike the one ball first": the 3 met before the 1 is a foul on the break
+// too.
+TEST_F(NineBallTest, TheBreakMustMeetTheOneFirst) {
   Shot s = Played(1, 3, {5}, 8);
   s.break_shot = true;
+  EXPECT_EQ(rules_.Judge(table_, s).foul_reason, "first contact 3, not the lowest 1");
+  s.first_contact = 1;
   EXPECT_TRUE(rules_.Judge(table_, s).legal());
+}
+
+// A legal break pots a ball or drives four numbered balls to the rail; the cue ball's own rail
+// does not count. Three numbered balls and the cue ball is a foul, with ball in hand.
+TEST_F(NineBallTest, ALegalBreakPotsOrDrivesFourBallsToTheRail) {
+  Shot s = Played(1, 1, {}, 9);
+  s.break_shot = true;
+  s.to_rail_after_contact = {2, 3, 5, 7};
+  const Judgement four = rules_.Judge(table_, s);
+  EXPECT_TRUE(four.legal());
+  EXPECT_TRUE(four.turn_over);  // nothing potted: the other player comes to the table
+  s.to_rail_after_contact = {0, 2, 3, 5};
+  const Judgement three = rules_.Judge(table_, s);
+  EXPECT_EQ(three.foul_reason, "break: no ball potted and 3 object balls to a rail, not 4");
+  EXPECT_TRUE(three.ball_in_hand);
+  s.to_rail_after_contact.clear();
+  s.potted = {6};
+  const Judgement potted = rules_.Judge(table_, s);
+  EXPECT_TRUE(potted.legal());
+  EXPECT_FALSE(potted.turn_over);
+}
+
+// The 9 potted on a legal break wins the rack.
+TEST_F(NineBallTest, TheNineOnALegalBreakWins) {
+  Shot s = Played(1, 1, {9}, 8);
+  s.break_shot = true;
+  const Judgement j = rules_.Judge(table_, s);
+  EXPECT_TRUE(j.rack_over);
+  EXPECT_TRUE(j.shooter_wins);
+  EXPECT_EQ(j.rack_reason, "9 potted legally");
+}
+
+// No Rail after Contact: the lowest met, nothing potted, no ball to a rail after; a ball to a
+// rail (the cue ball's own counts) makes the shot legal.
+TEST_F(NineBallTest, NoRailAfterContactIsAFoul) {
+  Shot s = Played(2, 2, {}, 7);
+  s.to_rail_after_contact.clear();
+  const Judgement j = rules_.Judge(table_, s);
+  EXPECT_EQ(j.foul_reason, "no rail after contact");
+  EXPECT_TRUE(j.ball_in_hand);
+  s.to_rail_after_contact = {0};
+  EXPECT_TRUE(rules_.Judge(table_, s).legal());
+  s.to_rail_after_contact.clear();
+  s.potted = {2};  // a ball potted needs no rail
+  EXPECT_TRUE(rules_.Judge(table_, s).legal());
+}
+
+// Push Out: no ball need be met and no rail reached; the table passes with the option to hand it
+// back; a 9 potted is spotted and wins nothing; a scratch is still a foul.
+TEST_F(NineBallTest, APushOutNeedsNoContactAndOffersTheTable) {
+  Shot s = Played(1, -1, {}, 8);
+  s.push_out = true;
+  s.constraints.push_out_allowed = true;
+  const Judgement j = rules_.Judge(table_, s);
+  EXPECT_TRUE(j.legal());
+  EXPECT_TRUE(j.turn_over);
+  EXPECT_TRUE(j.opponent_may_pass);
+  EXPECT_FALSE(j.ball_in_hand);
+  s.potted = {9};
+  const Judgement nine = rules_.Judge(table_, s);
+  EXPECT_FALSE(nine.rack_over);
+  ASSERT_EQ(nine.respots.size(), 1u);
+  EXPECT_EQ(nine.respots[0].ball, NineBall::kNine);
+  s.scratch = true;
+  const Judgement scratch = rules_.Judge(table_, s);
+  EXPECT_EQ(scratch.foul_reason, "scratch");
+  EXPECT_FALSE(scratch.opponent_may_pass);
+  EXPECT_TRUE(scratch.ball_in_hand);
+}
+
+// A push-out is the shot after the break's alone: declared elsewhere it is a foul.
+TEST_F(NineBallTest, APushOutNotAllowedIsAFoul) {
+  Shot s = Played(1, -1, {}, 8);
+  s.push_out = true;
+  EXPECT_EQ(rules_.Judge(table_, s).foul_reason, "push-out not allowed");
 }
 
 // Cue Ball Scratch, no contact, a miscue: fouls, called in that order of precedence (a scratch
@@ -93,6 +172,7 @@ TEST_F(NineBallTest, TheNinePottedLegallyWinsTheRack) {
   const Judgement j = rules_.Judge(table_, Played(3, 3, {9}, 5));
   EXPECT_TRUE(j.legal());
   EXPECT_TRUE(j.rack_over);
+  EXPECT_TRUE(j.shooter_wins);
   EXPECT_TRUE(j.respots.empty());
 }
 

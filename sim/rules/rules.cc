@@ -1,22 +1,28 @@
 #include "sim/rules/rules.h"
 
 #include "sim/rules/any.h"
+#include "sim/rules/eight_ball.h"
 #include "sim/rules/nine_ball.h"
 
 namespace billiard::rules {
 
 namespace {
 
-constexpr Rules kEveryRules[] = {Rules::kAny, Rules::kNineBall};
+constexpr Rules kEveryRules[] = {Rules::kAny, Rules::kNineBall, Rules::kEightBall,
+                                 Rules::kEightBallSolids, Rules::kEightBallStripes};
 
 }  // namespace
 
 const Ruleset& RulesetOf(Rules rules) {
   static const AnyBall any;
   static const NineBall nine_ball;
+  static const EightBall open(Group::kOpen), solids(Group::kSolids), stripes(Group::kStripes);
   switch (rules) {
     case Rules::kAny: return any;
     case Rules::kNineBall: return nine_ball;
+    case Rules::kEightBall: return open;
+    case Rules::kEightBallSolids: return solids;
+    case Rules::kEightBallStripes: return stripes;
   }
   return any;
 }

@@ -6,12 +6,14 @@ namespace billiard::rules {
 namespace {
 
 TEST(RulesTest, NamesRoundTrip) {
-  for (Rules rules : {Rules::kAny, Rules::kNineBall}) {
+  for (Rules rules : {Rules::kAny, Rules::kNineBall, Rules::kEightBall, Rules::kEightBallSolids,
+                      Rules::kEightBallStripes}) {
     EXPECT_EQ(ParseRules(RulesName(rules)), rules);
     EXPECT_STREQ(RulesetOf(rules).Name(), RulesName(rules));
   }
   EXPECT_STREQ(RulesName(Rules::kNineBall), "nine-ball");
   EXPECT_STREQ(RulesName(Rules::kAny), "any");
+  EXPECT_STREQ(RulesName(Rules::kEightBall), "eight-ball");
   EXPECT_FALSE(ParseRules("snooker"));
   EXPECT_FALSE(ParseRules("Nine-Ball"));
 }
@@ -23,6 +25,8 @@ TEST(RulesTest, LegalTargetsAreTheGamesOwn) {
   balls[3].id = 9;
   EXPECT_EQ(LegalTargets(Rules::kAny, balls), (std::vector<int>{2, 6, 9}));
   EXPECT_EQ(LegalTargets(Rules::kNineBall, balls), (std::vector<int>{2}));
+  EXPECT_EQ(LegalTargets(Rules::kEightBall, balls), (std::vector<int>{2, 6, 9}));
+  EXPECT_EQ(LegalTargets(Rules::kEightBallStripes, balls), (std::vector<int>{9}));
 }
 
 TEST(RulesTest, OneRulesetPerGame) {

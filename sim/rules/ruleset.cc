@@ -1,6 +1,7 @@
 #include "sim/rules/ruleset.h"
 
 #include <algorithm>
+#include <string>
 #include <utility>
 
 #include "sim/table/rack.h"
@@ -30,6 +31,27 @@ Judgement PocketGameJudgement(const Shot& shot, std::string foul_reason) {
   j.turn_over = j.foul || shot.potted.empty();
   j.ball_in_hand = j.foul;
   return j;
+}
+
+std::string NoRailAfterContact(const Shot& shot) {
+  if (shot.first_contact < 0 || !shot.potted.empty() || !shot.to_rail_after_contact.empty()) {
+    return "";
+  }
+  return "no rail after contact";
+}
+
+std::string IllegalBreak(const Shot& shot) {
+  if (!shot.potted.empty()) return "";
+  const auto railed = static_cast<int>(std::count_if(
+      shot.to_rail_after_contact.begin(), shot.to_rail_after_contact.end(),
+      [](int id) { return id > 0; }));
+  if (railed >= kBreakRailBalls) return "";
+  return "break: no ball potted and " + std::to_string(railed) + " object balls to a rail, not " +
+         std::to_string(kBreakRailBalls);
+}
+
+bool Contains(const std::vector<int>& ids, int id) {
+  return std::find(ids.begin(), ids.end(), id) != ids.end();
 }
 
 void PlaceRespotted(const table::TableGeometry& table, double radius,

@@ -7,8 +7,9 @@
 // closed loop) and the planner's games judge with the same code, and a game is a file of its
 // own (any.h, nine_ball.h; rules.h names them).
 //
-// One player is at the table: a visit lasts while its shots pot legally, and a rack over is won
-// by whoever is at the table. Nothing here plays or simulates a shot: what the shot did (its
+// A shot is judged alone here (a visit lasts while its shots pot legally); what
+// a rack between two players keeps from shot to shot (whose turn, the fouls in a row, the
+// groups) is rack_state.h's. Nothing here plays or simulates a shot: what the shot did (its
 // first contact, the balls it potted, the scratch) comes from the table simulation that played
 // it.
 //
@@ -28,6 +29,15 @@ namespace billiard::rules {
 struct Constraints {
   bool ball_in_hand = false;       // the cue ball may be placed anywhere on the table first
   std::vector<int> legal_targets;  // the object balls the cue ball may hit first, ascending
+  bool call_required = false;      // a pot counts only as called, ball and pocket (eight-ball)
+  bool push_out_allowed = false;   // the shot may be a push-out (nine-ball, after the break)
+};
+
+// A called shot: the ball and the pocket named before the stroke (a pocket's name in
+// TableGeometry), -1 and "" when none was called.
+struct Call {
+  int ball = -1;
+  std::string pocket;
 };
 
 // A shot as it was played.
@@ -37,8 +47,14 @@ struct Shot {
   bool struck = true;       // false: no stroke reached the ball (the cue refused it: a miscue)
   int first_contact = -1;   // the first ball the cue ball touched, -1 none
   std::vector<int> potted;  // the object balls that dropped
+  std::vector<std::string> pockets;  // the pocket each of `potted` dropped in, in its order
   bool scratch = false;     // the cue ball dropped
   int object_balls_left = 0;  // object balls at rest on the table after it
+  // The balls (the cue ball's id 0 among them) that met a rail after the cue ball's first
+  // contact, each once (table::BallsToRailAfterFirstContact).
+  std::vector<int> to_rail_after_contact;
+  Call call;              // the player's call, when one was made
+  bool push_out = false;  // declared a push-out (Constraints::push_out_allowed)
 };
 
 // A ball the rules put back on the table: on `spot`, or the first free place from it in the
@@ -57,6 +73,15 @@ struct Judgement {
   std::string foul_reason;
   bool turn_over = false;  // the visit ends: a foul, or nothing potted
   bool rack_over = false;
+  // With rack_over: whether the player at the table won it (false: lost it, eight-ball's 8
+  // potted early or on a foul), and why the rack ended ("9 potted legally").
+  bool shooter_wins = false;
+  std::string rack_reason;
+  // Eight-ball on an open table: the called ball potted legally, whose group the shooter takes;
+  // -1 when none.
+  int group_ball = -1;
+  // After a push-out the incoming player may take the table or hand it back (RackState).
+  bool opponent_may_pass = false;
   // The next shot: with ball in hand (after a foul), and the balls put back before it.
   bool ball_in_hand = false;
   std::vector<Respot> respots;
@@ -80,6 +105,16 @@ class Ruleset {
 
   // The judgement of `shot`, played on `table`.
   virtual Judgement Judge(const table::TableGeometry& table, const Shot& shot) const = 0;
+
+  // Whether a shot must call its ball and pocket (eight-ball).
+  virtual bool CallsShots() const { return false; }
+
+  // The fouls in a row (by one player, without a legal shot between) that lose the rack; 0:
+  // none do.
+  virtual int FoulsThatLose() const { return 0; }
+
+  // Whether the shot after the break may be a push-out (nine-ball).
+  virtual bool PushOutAfterBreak() const { return false; }
 };
 
 // The object balls of `balls` (ids > 0), ascending.
@@ -93,6 +128,21 @@ std::string PocketGameFoul(const Shot& shot);
 // found (`foul_reason`, "" when legal): a foul gives the next shot ball in hand, and the visit
 // ends on a foul or when nothing drops. Respots and the rack's end are the game's.
 Judgement PocketGameJudgement(const Shot& shot, std::string foul_reason);
+
+// No Rail after Contact (WPA Rules of Play, Standard Fouls): a shot that met a ball, potted
+// nothing and drove no ball to a rail after the contact is a foul, "no rail after contact";
+// "" otherwise.
+std::string NoRailAfterContact(const Shot& shot);
+
+// The legal break of nine-ball and eight-ball (WPA Rules of Play; FastFiz's eight-ball counts
+// rail contacts alike): a ball potted, or at least kBreakRailBalls object balls driven to a
+// rail; the foul's reason ("break: no ball potted and 2 object balls to a rail, not 4"), ""
+// when legal.
+inline constexpr int kBreakRailBalls = 4;
+std::string IllegalBreak(const Shot& shot);
+
+// Whether `ids` holds `id`.
+bool Contains(const std::vector<int>& ids, int id);
 
 // `balls` with each of `respots` placed on the table: on its spot, or the first free place
 // (table::FreeSpotFrom, at least `clearance` from every ball) in steps of `step` toward its

@@ -12,6 +12,7 @@
 #include "sim/params/table_specs.h"
 #include "sim/rules/rules.h"
 #include "sim/table/rack.h"
+#include "sim/table/rail_contacts.h"
 #include "sim/table_sim_node/session_balls.h"
 #include "sim/table_sim_node/stroke_execution.h"
 #include "sim/table_sim_node/table_sim_node.h"
@@ -176,6 +177,7 @@ GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeo
   TableOutcome outcome = OutcomeOf(sim, geometry, radius, shot.called, shot.pocket);
   shot.potted = outcome.potted;
   played.first_contact = shot.first_contact;
+  played.to_rail_after_contact = table::BallsToRailAfterFirstContact(sim.events(), kCueBall);
   played.potted = outcome.potted;
   played.scratch = outcome.scratch;
   played.object_balls_left = static_cast<int>(rules::ObjectBalls(outcome.rest).size());

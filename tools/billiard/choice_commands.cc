@@ -37,7 +37,7 @@ struct ChoiceArgs {
 };
 
 void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
-  cmd->add_option("--rules", args->rules, "any | nine-ball")->capture_default_str();
+  cmd->add_option("--rules", args->rules, "any | nine-ball | eight-ball (open; -solids, -stripes: a group taken)")->capture_default_str();
   cmd->add_option("--noise", args->noise,
                   "The execution noise: robot | computational-pool | a JSON file (sim/params/noise/)")
       ->capture_default_str();
@@ -56,7 +56,8 @@ void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
 choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
   choice::ChoiceOptions options;
   const std::optional<rules::Rules> parsed = rules::ParseRules(args.rules);
-  if (!parsed) throw UsageError("--rules: unknown rules '" + args.rules + "' (any, nine-ball)");
+  if (!parsed) throw UsageError("--rules: unknown rules '" + args.rules +
+                                "' (any, nine-ball, eight-ball, eight-ball-solids, eight-ball-stripes)");
   options.rules = *parsed;
   try {
     options.noise = params::LoadNoise(args.noise);

@@ -15,6 +15,7 @@
 #include "tools/billiard/bench_planner_command.h"
 #include "tools/billiard/burst_command.h"
 #include "tools/billiard/choice_commands.h"
+#include "tools/billiard/match_command.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/detect_command.h"
 #include "tools/billiard/edge_report_command.h"
@@ -99,6 +100,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddChooseShotCommand(app);
   billiard::cli::AddPlayCommand(app);
   billiard::cli::AddBenchGameCommand(app);
+  billiard::cli::AddMatchCommand(app);
   if (const std::string word = UnknownSubcommand(app, argc, argv); !word.empty()) {
     const std::string nearest = billiard::cli::NearestName(word, SubcommandNames(app), kNearEdits);
     std::cerr << "billiard: unknown subcommand '" << word << "'"

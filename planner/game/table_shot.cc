@@ -1,0 +1,107 @@
+#include "planner/game/table_shot.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "planner/choice/scene_balls.h"
+#include "planner/pot/pot_planner.h"
+
+namespace billiard::game {
+
+physics::CueStroke BreakStroke(const std::vector<table::SceneBall>& balls, double speed) {
+  using choice::Position;
+  const table::SceneBall* cue = nullptr;
+  for (const auto& b : balls) {
+    if (b.id == 0) cue = &b;
+  }
+  const table::SceneBall* nearest = nullptr;
+  for (const auto& b : balls) {
+    if (b.id == 0) continue;
+    if (!nearest || (Position(b) - Position(*cue)).norm() <
+                        (Position(*nearest) - Position(*cue)).norm()) {
+      nearest = &b;
+    }
+  }
+  const Eigen::Vector2d d = Position(*nearest) - Position(*cue);
+  physics::CueStroke s;
+  s.speed = speed;
+  s.heading = std::atan2(d.y(), d.x());
+  return s;
+}
+
+std::optional<physics::CueStroke> PlayerStroke(const players::Player& player,
+                                               const players::Turn& turn,
+                                               choice::ChoiceOptions options, std::uint64_t seed,
+                                               batch::ThreadPool& pool,
+                                               std::vector<table::SceneBall>* balls,
+                                               ShotRecord* rec) {
+  options.seed = seed;
+  const choice::ChoiceResult decided = player.Decide(turn, options, pool);
+  rec->status = choice::ChoiceStatusName(decided.status);
+  rec->reason = decided.reason;
+  rec->decision_us = decided.decision_us;
+  if (decided.cue_placement) {
+    rec->cue_placement = decided.cue_placement;
+    *balls = choice::WithCueBallAt(*balls, *decided.cue_placement);
+  }
+  if (const choice::Candidate* c = decided.chosen()) {
+    rec->ball = c->plan.ball;
+    rec->pocket = c->plan.pocket;
+    rec->kind = pot::ShotKindName(c->plan.kind);
+    rec->predicted = c->finalist ? c->reported().probability : -1.0;
+    rec->likely = decided.likely;
+  }
+  if (const physics::CueStroke* stroke = decided.stroke()) return *stroke;
+  return std::nullopt;
+}
+
+choice::StrokeResult ExecuteWithNoise(const table::TableGeometry& table,
+                                      const physics::ModelParameters& params,
+                                      const std::vector<table::SceneBall>& balls,
+                                      const physics::CueStroke& stroke,
+                                      const params::ExecutionNoise& noise, std::uint64_t seed,
+                                      const choice::Motion& motion) {
+  choice::NormalStream normal(seed);
+  const physics::CueStroke played =
+      params::Perturbed(stroke, noise, params.ball.radius, [&] { return normal.Next(); });
+  choice::StrokeResult result = choice::PlayToRest(table, params, balls, played, motion);
+  DropHangingBalls(table, &result);
+  return result;
+}
+
+void DropHangingBalls(const table::TableGeometry& table, choice::StrokeResult* result) {
+  std::vector<table::SceneBall> rest;
+  for (const table::SceneBall& b : result->rest) {
+    const table::Pocket* pocket = table.PocketPastMouth(choice::Position(b));
+    if (!pocket) {
+      rest.push_back(b);
+    } else if (b.id == 0) {
+      result->scratch = true;
+    } else {
+      result->pocketed.emplace_back(b.id, pocket->name);
+    }
+  }
+  result->rest = std::move(rest);
+}
+
+rules::Shot ShotOf(const rules::Constraints& constraints, const ShotRecord& rec,
+                   const choice::StrokeResult& result) {
+  std::vector<std::pair<int, std::string>> pocketed = result.pocketed;
+  std::sort(pocketed.begin(), pocketed.end());
+  rules::Shot shot;
+  shot.constraints = constraints;
+  shot.break_shot = rec.break_shot;
+  shot.struck = result.struck;
+  shot.first_contact = result.first_contact;
+  for (const auto& [id, pocket] : pocketed) {
+    shot.potted.push_back(id);
+    shot.pockets.push_back(pocket);
+  }
+  shot.scratch = result.scratch;
+  shot.object_balls_left = static_cast<int>(rules::ObjectBalls(result.rest).size());
+  shot.to_rail_after_contact = result.to_rail_after_contact;
+  shot.call = {rec.ball, rec.pocket};
+  return shot;
+}
+
+}  // namespace billiard::game

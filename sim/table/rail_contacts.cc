@@ -1,0 +1,30 @@
+#include "sim/table/rail_contacts.h"
+
+#include <algorithm>
+
+namespace billiard::table {
+
+namespace {
+
+bool IsRail(EventType type) {
+  return type == EventType::kBallCushion || type == EventType::kBallJaw;
+}
+
+}  // namespace
+
+std::vector<int> BallsToRailAfterFirstContact(const std::vector<TableEvent>& events, int id) {
+  std::vector<int> ids;
+  bool contact = false;
+  for (const TableEvent& e : events) {
+    if (!contact) {
+      contact = e.type == EventType::kBallBall && (e.ball == id || e.other == id);
+    } else if (IsRail(e.type)) {
+      ids.push_back(e.ball);
+    }
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+}  // namespace billiard::table

@@ -1,0 +1,172 @@
+#include "tools/billiard/match_command.h"
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "planner/game/match.h"
+#include "planner/game/wilson.h"
+#include "planner/players/players.h"
+#include "sim/batch/thread_pool.h"
+#include "sim/params/execution_noise.h"
+#include "sim/params/parameter_sets.h"
+#include "tools/billiard/command_line.h"
+#include "tools/billiard/scene_commands.h"
+
+namespace billiard::cli {
+
+namespace {
+
+constexpr double kMedian = 0.5;
+constexpr double kP95 = 0.95;
+
+struct MatchArgs {
+  std::string game;
+  std::string players;
+  int racks = 20;
+  std::string noise = params::kDefaultNoise;
+  std::uint64_t seed = 1;
+  int threads = batch::DefaultThreadCount();
+  int shot_limit = 200;
+  bool json = false;
+};
+
+rules::Rules GameOf(const std::string& name) {
+  if (name == "nine-ball") return rules::Rules::kNineBall;
+  if (name == "eight-ball") return rules::Rules::kEightBall;
+  throw UsageError("--game: unknown game '" + name + "' (nine-ball, eight-ball)");
+}
+
+// "A,B": the two players by name.
+std::array<std::shared_ptr<const players::Player>, 2> PlayersOf(const std::string& list) {
+  const std::size_t comma = list.find(',');
+  if (comma == std::string::npos || list.find(',', comma + 1) != std::string::npos) {
+    throw UsageError("--players: give two names, A,B (got '" + list + "')");
+  }
+  try {
+    return {players::MakePlayer(list.substr(0, comma)), players::MakePlayer(list.substr(comma + 1))};
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--players: ") + e.what());
+  }
+}
+
+game::MatchOptions OptionsOf(const MatchArgs& args) {
+  game::MatchOptions options;
+  options.game = GameOf(args.game);
+  options.players = PlayersOf(args.players);
+  try {
+    options.execution = params::LoadNoise(args.noise);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--noise: ") + e.what());
+  }
+  options.choice.noise = options.execution;
+  options.seed = args.seed;
+  options.racks = args.racks;
+  options.shot_limit = args.shot_limit;
+  return options;
+}
+
+nlohmann::json DecisionJson(const std::vector<double>& us) {
+  return {{"median", game::Quantile(us, kMedian)}, {"p95", game::Quantile(us, kP95)}};
+}
+
+nlohmann::json PlayerJson(const game::PlayerTally& p, int racks) {
+  const game::Interval interval = game::WilsonInterval(p.racks_won, racks);
+  return {{"name", p.name},
+          {"racks_won", p.racks_won},
+          {"win_rate", racks ? static_cast<double>(p.racks_won) / racks : 0.0},
+          {"interval95", {interval.lo, interval.hi}},
+          {"break_and_runs", p.break_and_runs},
+          {"pots", p.pots},
+          {"attempts", p.attempts},
+          {"safeties", p.safeties},
+          {"safeties_that_worked", p.safeties_that_worked},
+          {"fouls", p.fouls},
+          {"foul_reasons", p.foul_reasons},
+          {"decision_us", DecisionJson(p.decisions_us)}};
+}
+
+nlohmann::json MatchJson(const game::MatchRecord& match, const MatchArgs& args) {
+  const int racks = static_cast<int>(match.racks.size());
+  nlohmann::json j = {{"game", args.game}, {"racks", racks}, {"seed", args.seed},
+                      {"noise", args.noise}, {"undecided", match.undecided}};
+  std::vector<double> every;
+  for (const game::PlayerTally& p : match.players) {
+    j["players"].push_back(PlayerJson(p, racks));
+    every.insert(every.end(), p.decisions_us.begin(), p.decisions_us.end());
+  }
+  j["decision_us"] = DecisionJson(every);
+  return j;
+}
+
+// One line on stderr as each rack ends: who broke, who won and why, the score so far.
+std::string ProgressLine(const game::RackResult& r, const game::MatchRecord& so_far,
+                         const std::array<std::string, 2>& names, int racks) {
+  std::ostringstream line;
+  line << "rack " << r.rack + 1 << "/" << racks << ": " << names[r.breaker] << " broke, "
+       << (r.winner < 0 ? std::string("undecided") : names[r.winner] + " won") << " ("
+       << r.reason << ", " << r.shots.size() << " shots"
+       << (r.break_and_run ? ", break and run" : "") << "); " << names[0] << " "
+       << so_far.players[0].racks_won << " - " << so_far.players[1].racks_won << " " << names[1];
+  return line.str();
+}
+
+void Run(const MatchArgs& args) {
+  const game::MatchOptions options = OptionsOf(args);
+  const physics::ModelParameters params = LoadParametersOption(params::kDefaultParameterSet);
+  const table::TableGeometry table = LoadTableOption("pool-9ft");
+  batch::ThreadPool pool(args.threads);
+  const std::array<std::string, 2> names = {std::string(options.players[0]->Name()) + " (A)",
+                                            std::string(options.players[1]->Name()) + " (B)"};
+  game::MatchRecord so_far;
+  const game::MatchRecord match =
+      game::PlayMatch(table, params, options, pool, [&](const game::RackResult& r) {
+        if (r.winner >= 0) ++so_far.players[r.winner].racks_won;
+        std::cerr << ProgressLine(r, so_far, names, options.racks) << std::endl;
+      });
+  const nlohmann::json j = MatchJson(match, args);
+  for (const nlohmann::json& p : j["players"]) {
+    std::cerr << p["name"].get<std::string>() << ": " << p["racks_won"] << " racks won of "
+              << j["racks"] << std::setprecision(3) << " (95 % "
+              << p["interval95"][0].get<double>() << " to " << p["interval95"][1].get<double>()
+              << "), " << p["pots"] << " pots of " << p["attempts"] << " attempts, " << p["fouls"]
+              << " fouls, " << p["break_and_runs"] << " break-and-runs" << std::endl;
+  }
+  if (args.json) std::cout << j.dump() << std::endl;
+}
+
+}  // namespace
+
+void AddMatchCommand(CLI::App& app) {
+  auto args = std::make_shared<MatchArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "match",
+      "Two players, racks of nine-ball or eight-ball in simulation with the break alternating, "
+      "judged by the rules: racks won (Wilson 95 % interval), pots, fouls, decision times");
+  cmd->add_option("--game", args->game, "nine-ball | eight-ball")->required();
+  cmd->add_option("--players", args->players,
+                  "Two players, A,B (ours, ours-no-safety, no-lookahead, easiest-looking); the "
+                  "first breaks the first rack")
+      ->required();
+  cmd->add_option("--racks", args->racks, "Racks to play")->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--noise", args->noise,
+                  "The execution noise, the table's and the one the players assume: robot | "
+                  "computational-pool | a JSON file (sim/params/noise/)")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the racks, the players' samples and the noise")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", args->threads, "Threads (the results do not depend on them)")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--shot-limit", args->shot_limit, "Shots at most in a rack (then undecided)")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout (else on stderr)");
+  cmd->callback([args] { Run(*args); });
+}
+
+}  // namespace billiard::cli

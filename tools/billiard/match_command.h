@@ -1,0 +1,12 @@
+// `billiard match`: two players, racks of nine-ball or eight-ball in simulation, the break
+// alternating, judged by the rules (planner/game/match.h); each player's racks won with the
+// Wilson interval, pots, attempts, fouls and break-and-runs, and the decision times.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace billiard::cli {
+
+void AddMatchCommand(CLI::App& app);
+
+}  // namespace billiard::cli
