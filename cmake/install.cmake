@@ -2,7 +2,7 @@
 # and the .deb made of it (docs/installing.md says how a user consumes them):
 #
 #   bin/                              billiard, planner_node, estimator_node, table_sim_node,
-#                                     camera_node
+#                                     camera_node, viewer_node
 #   lib/libbilliard_*.a               the libraries, static as they are built (lib/ is
 #                                     GNUInstallDirs' LIBDIR: lib/<multiarch>/ in a build
 #                                     configured with CMAKE_INSTALL_PREFIX=/usr)
@@ -98,7 +98,7 @@ install(CODE "include(\"${PROJECT_BINARY_DIR}/installed_headers.cmake\")
               include(\"${PROJECT_SOURCE_DIR}/cmake/install_headers.cmake\")"
         COMPONENT library)
 
-install(TARGETS billiard planner_node estimator_node table_sim_node camera_node
+install(TARGETS billiard planner_node estimator_node table_sim_node camera_node viewer_node
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT library)
 
 set(BILLIARD_DATA_DIR ${CMAKE_INSTALL_DATADIR}/billiard)

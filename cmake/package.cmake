@@ -12,12 +12,12 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION devel)
 # The package's dependencies, from setup.sh's list: what the CMake package finds (Eigen, Ceres,
-# OpenCV, libjpeg-turbo, LCM and the GLib its pkg-config file needs, nlohmann-json) and
-# pkg-config, with which it finds LCM.
+# OpenCV, libjpeg-turbo, LCM and the GLib its pkg-config file needs, nlohmann-json),
+# pkg-config, with which it finds LCM, and cpp-httplib, whose library viewer_node runs with.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-    "libeigen3-dev, libceres-dev, libopencv-dev, libjpeg62-turbo-dev, liblcm-dev, libglib2.0-dev, nlohmann-json3-dev, pkg-config")
+    "libeigen3-dev, libceres-dev, libopencv-dev, libjpeg62-turbo-dev, liblcm-dev, libglib2.0-dev, nlohmann-json3-dev, pkg-config, libcpp-httplib-dev")
 # What the launch scripts and the Java message types run with: lcm-logger, python3 for the
-# loop's table, iproute2 for its network namespace, LCM's jar.
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "liblcm-bin, liblcm-java, python3, iproute2")
+# loop's table, iproute2 for its network namespace, socat for its live view out of it, LCM's jar.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "liblcm-bin, liblcm-java, python3, iproute2, socat")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "default-jre")
 include(CPack)

@@ -190,6 +190,12 @@ if [ -n "$log" ]; then
   reason=$( { : >>"$log"; } 2>&1 ) || usage_error "cannot write the log '$log': ${reason##*: }"
   $log_existed || rm -f "$log"
 fi
+# The live view's port, said before anything is built or started when something on this host
+# answers on it already (another run's view): in the namespace below every port is free, and
+# the forwarder on this host would fail out of sight.
+if $view && [ -z "${in_namespace:-}" ] && (exec 3<>"/dev/tcp/127.0.0.1/$view_port") 2>/dev/null; then
+  usage_error "--view-port $view_port: the port is in use on this host (another run's live view?); choose another"
+fi
 failures_are_internal
 cd "$(dirname "$0")/.."
 $installed && build=false

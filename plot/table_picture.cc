@@ -7,7 +7,9 @@
 #include <cmath>
 #include <map>
 
+#include "plot/ball_look.h"
 #include "plot/canvas.h"
+#include "plot/labels.h"
 
 namespace billiard::plot {
 
@@ -15,27 +17,13 @@ namespace {
 
 using Eigen::Vector2d;
 
-struct Rgb {
-  double r, g, b;
-};
-
-// Pool's colours by number (9-15 the stripes of 1-7's colours); 0 the white cue ball.
-Rgb BallColour(int id) {
-  static const std::array<Rgb, 9> kColours = {{{1.00, 1.00, 1.00},
-                                               {1.00, 0.80, 0.00},
-                                               {0.00, 0.25, 0.75},
-                                               {0.85, 0.05, 0.05},
-                                               {0.45, 0.10, 0.60},
-                                               {1.00, 0.45, 0.00},
-                                               {0.00, 0.50, 0.20},
-                                               {0.50, 0.05, 0.10},
-                                               {0.05, 0.05, 0.05}}};
-  if (id <= 0) return kColours[0];
-  return kColours[(id - 1) % 8 + 1];
-}
-
 void Source(cairo_t* cr, const Rgb& c, double alpha = 1.0) {
   cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
+}
+
+// Whether the ball moved: its path drawn, its start outlined, its key in the legend.
+bool Moved(const PictureBall& ball) {
+  return ball.path.size() >= 2 && (ball.path.back() - ball.path.front()).norm() > 0.0;
 }
 
 // The colour of an event's mark, and its name for the legend.
@@ -139,7 +127,103 @@ void DrawCue(cairo_t* cr, const TablePicture& pic, const physics::CueStroke& cue
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
 }
 
+
+// A ball as a player sees it from above: its body, a stripe's band across the middle (half the
+// ball's height), a thin black rim.
+void DrawBall(cairo_t* cr, const Vector2d& c, double r, const BallLook& look) {
+  cairo_arc(cr, c.x(), c.y(), r, 0, 2 * M_PI);
+  Source(cr, look.body);
+  cairo_fill_preserve(cr);
+  if (look.band) {
+    cairo_save(cr);
+    cairo_clip(cr);
+    cairo_rectangle(cr, c.x() - r, c.y() - 0.5 * r, 2 * r, r);
+    Source(cr, *look.band);
+    cairo_fill(cr);
+    cairo_restore(cr);
+    cairo_arc(cr, c.x(), c.y(), r, 0, 2 * M_PI);
+  }
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_width(cr, 1.0);
+  cairo_stroke(cr);
+}
+
+// A path's stroke: its ball's path colour, dashed for a stripe.
+void PathStroke(cairo_t* cr, int id) {
+  static const double kDash[] = {7.0, 4.0};
+  Source(cr, PathColour(id), 0.9);
+  cairo_set_line_width(cr, 2.0);
+  cairo_set_dash(cr, kDash, DashedPath(id) ? 2 : 0, 0.0);
+}
+
+constexpr double kLabelFontPx = 11.0;
+constexpr double kLeaderFromPx = 4.0;  // beyond the first ring's 2 px gap
+
+// The number of every ball left on the table, placed apart (PlaceLabels), white on the cloth.
+void DrawLabels(cairo_t* cr, const TablePicture& pic, double r) {
+  std::vector<LabelRequest> requests;
+  std::vector<std::string> texts;
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, kLabelFontPx);
+  for (const PictureBall& ball : pic.balls) {
+    if (ball.pocket || ball.path.empty()) continue;
+    texts.push_back(std::to_string(ball.id));
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, texts.back().c_str(), &e);
+    requests.push_back({TablePixel(pic, ball.path.back()), Vector2d(e.x_advance, kLabelFontPx)});
+  }
+  const std::vector<LabelBox> boxes = PlaceLabels(requests, r);
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_set_line_width(cr, 0.8);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    // A number pushed out of the first ring gets a line to its ball.
+    const Vector2d c = requests[i].centre;
+    const Vector2d nearest = c.cwiseMax(boxes[i].min).cwiseMin(boxes[i].max);
+    if ((nearest - c).norm() > r + kLeaderFromPx) {
+      const Vector2d from = c + r * (nearest - c).normalized();
+      cairo_move_to(cr, from.x(), from.y());
+      cairo_line_to(cr, nearest.x(), nearest.y());
+      cairo_stroke(cr);
+    }
+    // The box's bottom is the text's baseline: digits have no descent.
+    Text(cr, boxes[i].min.x(), boxes[i].max.y(), texts[i], kLabelFontPx);
+  }
+}
+
+// The key of the paths, down the right rail: a stroke of each moving ball's path style beside
+// its ball, drawn as on the table, and its number.
+void DrawPathLegend(cairo_t* cr, const TablePicture& pic, double width, double height) {
+  const std::vector<int> ids = PathLegendIds(pic);
+  if (ids.empty()) return;
+  constexpr double kRowPx = 22.0, kBallPx = 6.0;
+  const double x = width - kMarginPx + 8.0;
+  const double top = kMarginPx + 50.0;  // below the corner pocket
+  const double row = std::min(kRowPx, (height - 2 * kMarginPx - 100.0) / ids.size());
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  Text(cr, x, top - 12.0, "paths", 11.0);
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const double y = top + k * row;
+    PathStroke(cr, ids[k]);
+    cairo_move_to(cr, x, y);
+    cairo_line_to(cr, x + 16.0, y);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+    DrawBall(cr, Vector2d(x + 16.0 + kBallPx, y), kBallPx, LookOf(ids[k]));
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    Text(cr, x + 16.0 + 2 * kBallPx + 3.0, y + 4.0, std::to_string(ids[k]), 11.0);
+  }
+}
+
 }  // namespace
+
+std::vector<int> PathLegendIds(const TablePicture& picture) {
+  std::vector<int> ids;
+  for (const PictureBall& ball : picture.balls) {
+    if (Moved(ball)) ids.push_back(ball.id);
+  }
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
 
 Vector2d TablePixel(const TablePicture& picture, const Vector2d& p) {
   return {kMarginPx + kPixelsPerMetre * p.x(),
@@ -224,21 +308,20 @@ void DrawTable(const TablePicture& pic, const std::string& path) {
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   for (const PictureBall& ball : pic.balls) {
     if (ball.path.size() < 2) continue;
-    const Rgb c = ball.id == 0 ? Rgb{0.85, 0.85, 0.85} : BallColour(ball.id);
-    Source(cr, c, 0.9);
-    cairo_set_line_width(cr, 2.0);
+    PathStroke(cr, ball.id);
     for (std::size_t k = 0; k < ball.path.size(); ++k) {
       const Vector2d p = TablePixel(pic, ball.path[k]);
       k == 0 ? cairo_move_to(cr, p.x(), p.y()) : cairo_line_to(cr, p.x(), p.y());
     }
     cairo_stroke(cr);
   }
+  cairo_set_dash(cr, nullptr, 0, 0.0);
   constexpr double kDotPx = 2.2;
   for (const TrackedDots& dots : pic.tracked) {
     for (const Vector2d& sample : dots.samples) {
       const Vector2d p = TablePixel(pic, sample);
       cairo_arc(cr, p.x(), p.y(), kDotPx, 0, 2 * M_PI);
-      Source(cr, BallColour(dots.id));
+      Source(cr, LookOf(dots.id).colour());
       cairo_fill_preserve(cr);
       cairo_set_source_rgb(cr, 0, 0, 0);
       cairo_set_line_width(cr, 0.6);
@@ -259,9 +342,9 @@ void DrawTable(const TablePicture& pic, const std::string& path) {
   }
   // Where each ball started: an outline, when it moved.
   for (const PictureBall& ball : pic.balls) {
-    if (ball.path.size() < 2 || (ball.path.back() - ball.path.front()).norm() == 0.0) continue;
+    if (!Moved(ball)) continue;
     const Vector2d p = TablePixel(pic, ball.path.front());
-    Source(cr, BallColour(ball.id));
+    Source(cr, LookOf(ball.id).colour());
     cairo_set_line_width(cr, 1.5);
     cairo_arc(cr, p.x(), p.y(), r, 0, 2 * M_PI);
     cairo_stroke(cr);
@@ -272,19 +355,12 @@ void DrawTable(const TablePicture& pic, const std::string& path) {
     cairo_arc(cr, p.x(), p.y(), 3.0, 0, 2 * M_PI);
     cairo_fill(cr);
   }
-  // Where each ball ended, filled, with its number beside it.
+  // Where each ball ended, as it looks, with its number beside it, apart from the others'.
   for (const PictureBall& ball : pic.balls) {
     if (ball.pocket || ball.path.empty()) continue;
-    const Vector2d p = TablePixel(pic, ball.path.back());
-    Source(cr, BallColour(ball.id));
-    cairo_arc(cr, p.x(), p.y(), r, 0, 2 * M_PI);
-    cairo_fill_preserve(cr);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_width(cr, 1.0);
-    cairo_stroke(cr);
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    Text(cr, p.x() + r + 2, p.y() - r, std::to_string(ball.id), 11.0);
+    DrawBall(cr, TablePixel(pic, ball.path.back()), r, LookOf(ball.id));
   }
+  DrawLabels(cr, pic, r);
   if (pic.cue && !pic.balls.empty()) DrawCue(cr, pic, *pic.cue, pic.balls.front().start.head<2>());
   for (const PictureBall& ball : pic.balls) {
     if (ball.start.tail<5>().norm() > 0.0) DrawLaunch(cr, pic, ball);
@@ -306,6 +382,7 @@ void DrawTable(const TablePicture& pic, const std::string& path) {
     Text(cr, x + 8.0, y, Mark(type).name, 12.0);
     x += 120.0;
   }
+  DrawPathLegend(cr, pic, width, height);
   cairo_set_source_rgb(cr, 1, 1, 1);
   Text(cr, width - kMarginPx, 0.5 * kMarginPx,
        "black: launch; blue: roll of the spin (follow along, draw against); green: side spin", 12.0,

@@ -25,7 +25,7 @@ inline constexpr double kPixelsPerMetre = 400.0;
 inline constexpr double kMarginPx = 60.0;
 
 struct PictureBall {
-  int id = 0;                         // 0 the cue ball (white); pool colours by number
+  int id = 0;                         // 0 the cue ball; pool's look by number (ball_look.h)
   std::vector<Eigen::Vector2d> path;  // the centre in time order: front where it starts
   physics::BallState start = physics::BallState::Zero();  // its launch and spin are drawn
   std::optional<std::string> pocket;  // dropped into it: no ball at the path's end
@@ -69,7 +69,12 @@ std::vector<Eigen::Vector2d> SampledPath(double t_end, double dt, const std::vec
 // up to the end or its drop) and each event's mark.
 void AddSimulation(const table::TableSimulation& sim, double dt, TablePicture* picture);
 
-// Draws `picture` into `path` (.png or .svg). Throws std::invalid_argument for another
+// The balls whose paths the picture's key lists, down the right rail: every ball that moved,
+// by number (each drawn as it looks, beside a stroke of its path: a stripe's dashed).
+std::vector<int> PathLegendIds(const TablePicture& picture);
+
+// Draws `picture` into `path` (.png or .svg). The balls look as plot/ball_look.h says (stripes
+// as stripes), their numbers placed apart (plot/labels.h). Throws std::invalid_argument for another
 // extension, std::runtime_error when the file cannot be written.
 void DrawTable(const TablePicture& picture, const std::string& path);
 

@@ -92,6 +92,34 @@ TEST(BilliardPlot, APngPutsEveryBallWhereTheSceneDoes) {
   }
 }
 
+// Pool's set as a player knows it: the 9 a white ball with the 1's yellow as a band round its
+// middle, the 1 yellow all over; and the key of the paths down the right rail, the cue ball (the
+// one that moved) drawn there.
+TEST(BilliardPlot, AStripeIsAWhiteBallWithItsSolidsBand) {
+  nlohmann::json scene = {{"table", "pool-9ft"}, {"params", "pool"}};
+  scene["balls"] = {{{"id", 0}, {"state", {0.3, 0.9, 1.0, 0, 0, 0, 0}}},
+                    {{"id", 1}, {"state", {0.5, 0.4, 0, 0, 0, 0, 0}}},
+                    {{"id", 9}, {"state", {1.0, 0.4, 0, 0, 0, 0, 0}}}};
+  const std::string png = ::testing::TempDir() + "/plot_stripe.png";
+  const CommandResult r = Billiard("plot --scene " + Write("plot_stripe.json", scene.dump()) + " --out " + png, true);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const cv::Mat image = cv::imread(png, cv::IMREAD_COLOR);
+  ASSERT_FALSE(image.empty());
+  const double r_px = kScale * 0.028575;
+  const cv::Vec3b yellow{0, 204, 255}, white{255, 255, 255};
+  const auto at = [&](double x, double y, double dy) {
+    const cv::Point2d c = Pixel(x, y);
+    return image.at<cv::Vec3b>(cv::Point(std::lround(c.x), std::lround(c.y + dy * r_px)));
+  };
+  EXPECT_TRUE(Near(at(1.0, 0.4, 0.0), yellow)) << at(1.0, 0.4, 0.0);
+  EXPECT_TRUE(Near(at(1.0, 0.4, 0.75), white)) << at(1.0, 0.4, 0.75);
+  EXPECT_TRUE(Near(at(1.0, 0.4, -0.75), white)) << at(1.0, 0.4, -0.75);
+  EXPECT_TRUE(Near(at(0.5, 0.4, -0.75), yellow)) << at(0.5, 0.4, -0.75);
+  // The key's first row: a ball of 6 px at 8 + 16 + 6 px into the right rail, 50 px below it.
+  const cv::Point key(std::lround(image.cols - kRail + 30), std::lround(kRail + 50));
+  EXPECT_TRUE(Near(image.at<cv::Vec3b>(key), white)) << image.at<cv::Vec3b>(key);
+}
+
 TEST(BilliardPlot, AnSvgPutsEveryBallWhereTheSceneDoes) {
   const std::string scene = Scene();
   const std::string svg = ::testing::TempDir() + "/plot_scene.svg";
@@ -150,6 +178,10 @@ TEST(BilliardPlot, BadInputExitsTwoWithOneLine) {
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
   }
   EXPECT_NE(plan.out.find("refused"), std::string::npos) << plan.out;
+  // A refusal leaves no picture behind, not even an empty file.
+  const std::string none_made = ::testing::TempDir() + "/plot_not_made.png";
+  EXPECT_EQ(Billiard("plot --plan " + refused + " --out " + none_made).status, 2);
+  EXPECT_FALSE(std::ifstream(none_made).good());
 }
 
 }  // namespace

@@ -5,6 +5,11 @@
 // the PATH: that a fake ran is how a test sees work that --help or a usage error must not do.
 #include <gtest/gtest.h>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -164,6 +169,35 @@ TEST_F(Scripts, MissingOrBadValuesAndStrayArgumentsAreUsageErrors) {
   }
 }
 
+// A port on 127.0.0.1 that this test listens on, the kernel's choice (free until now), while
+// it lives.
+class ListeningPort {
+ public:
+  ListeningPort() : fd_(socket(AF_INET, SOCK_STREAM, 0)) {
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t size = sizeof(address);
+    const bool listening =
+        fd_ >= 0 && bind(fd_, reinterpret_cast<sockaddr*>(&address), size) == 0 &&
+        listen(fd_, 1) == 0 && getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &size) == 0;
+    EXPECT_TRUE(listening);
+    port_ = std::to_string(ntohs(address.sin_port));
+  }
+  ~ListeningPort() { close(fd_); }
+  const std::string& port() const { return port_; }
+
+ private:
+  int fd_;
+  std::string port_;
+};
+
+// run_loop.sh --view on a port in use on this host: said before anything is built or started.
+TEST_F(Scripts, ALiveViewOnAPortInUseIsAUsageError) {
+  const ListeningPort taken;
+  ExpectUsageError({"launch_scripts/run_loop.sh", {}}, "--view-port " + taken.port());
+}
+
 SeparateOutput RunBinary(const std::string& command) {
   return RunCommandApart(command + " </dev/null");
 }
@@ -220,11 +254,22 @@ TEST(Binaries, HelpExitsZeroAndAnUnknownOptionTwo) {
 // --version, like --help, exits 0 and does no work: the name and the project's one version.
 TEST(Binaries, VersionPrintsTheNameAndTheProjectVersion) {
   for (const std::string& command :
-       {kBilliard, kPlannerNode, kEstimatorNode, kTableSimNode, kCameraNode}) {
+       {kBilliard, kPlannerNode, kEstimatorNode, kTableSimNode, kCameraNode, kViewerNode}) {
     const SeparateOutput r = RunBinary(command + " --version");
     EXPECT_EQ(r.status, 0) << command << ": " << r.err;
     EXPECT_EQ(r.out, fs::path(command).filename().string() + " " + PROJECT_VERSION + "\n");
   }
+}
+
+// A port another program listens on: an output that cannot be made, said in one line before
+// LCM is opened (exit 2), as for a file that cannot be written.
+TEST(Binaries, AViewerOnAPortInUseIsOneLineAndExitsTwo) {
+  const ListeningPort taken;
+  const SeparateOutput r = RunBinary(kViewerNode + " --port " + taken.port());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(OneLine(r.err)) << r.err;
+  EXPECT_NE(r.err.find("127.0.0.1:" + taken.port()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("in use"), std::string::npos) << r.err;
 }
 
 TEST(Binaries, RefusalsExitThree) {

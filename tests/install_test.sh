@@ -55,7 +55,7 @@ if [ "$mode" = deb ]; then
   deb=$(ls "$work"/billiard_*.deb)
   contents=$(dpkg-deb --contents "$deb" | awk '{print $6}')
   for path in ./usr/bin/billiard ./usr/bin/planner_node ./usr/bin/estimator_node \
-      ./usr/bin/table_sim_node ./usr/bin/camera_node \
+      ./usr/bin/table_sim_node ./usr/bin/camera_node ./usr/bin/viewer_node \
       ./usr/include/billiard/sim/physics/simulator.h \
       ./usr/include/billiard/lcmtypes/billiard/cue_command_t.hpp \
       ./usr/include/billiard/planner/shot_planner.h \

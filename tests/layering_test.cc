@@ -76,7 +76,9 @@ const std::map<std::string, std::set<std::string>>& Layers() {
         "estimator/node", "bench", "planner/pot/testing", "plot"}},
       {"tools/viewer_node", {"lcmtypes", "lcmtypes/node", "sim/params", "sim/physics"}},
       {"tools/camera_node", {"lcmtypes", "lcmtypes/node"}},
-      {"tools/python", {"sim/physics", "sim/table", "sim/params", "planner", "planner/pot", "estimator"}},
+      {"tools/python",
+       {"sim/physics", "sim/table", "sim/params", "sim/batch", "sim/rules", "planner",
+        "planner/pot", "planner/choice", "planner/players", "planner/game", "estimator"}},
       {"tests", {}},  // the cross-module tests may include anything
   };
   return layers;

@@ -153,7 +153,7 @@ int Rank(PotStatus s) {
 struct Tally {
   std::optional<PotPlan> best;
   std::optional<Refusal> worst;
-  std::vector<std::string> tried;
+  std::vector<std::pair<std::string, int>> tried;  // each reason in words, and the routes it refused
   int alternatives = 0;
   std::string direct_blocked;
   bool direct_object_closed = false;
@@ -167,7 +167,16 @@ struct Tally {
     if (!worst || Rank(r.status) > Rank(worst->status)) worst = r;
     std::string label = ShotKindName(route.kind);
     if (route.rail >= 0) label += " off rail " + std::to_string(route.rail);
-    tried.push_back(label + ": " + r.reason);
+    // Routes of a kind that differ only in the stroke (a curve's elevations and sides) are
+    // refused alike: the reason is told once, with how many routes it stopped.
+    const std::string told = label + ": " + r.reason;
+    const auto same =
+        std::find_if(tried.begin(), tried.end(), [&](const auto& t) { return t.first == told; });
+    if (same == tried.end()) {
+      tried.emplace_back(told, 1);
+    } else {
+      ++same->second;
+    }
   }
 
   // A curve is for a cue ball's line that is blocked (or too thin) when no bank or kick plans,
@@ -182,8 +191,12 @@ struct Tally {
       plan.reason = "every kind tried: ";
     }
     std::string all;
-    for (const std::string& t : tried) all += (all.empty() ? "" : "; ") + t;
-    plan.reason += kinds > 1 || tried.size() > 1 ? all : (worst ? worst->reason : all);
+    for (const auto& [told, routes] : tried) {
+      all += (all.empty() ? "" : "; ") + told;
+      if (routes > 1) all += " (" + std::to_string(routes) + " routes)";
+    }
+    const bool one_route = tried.size() == 1 && tried.front().second == 1;
+    plan.reason += kinds > 1 || !one_route ? all : (worst ? worst->reason : all);
     return plan;
   }
 

@@ -76,6 +76,12 @@ table::SceneBall ParseBall(const nlohmann::json& j, const std::string& where) {
 
 SceneFile ParseScene(const std::string& json_text, const std::string& origin) {
   const nlohmann::json j = internal::ParseObject(json_text, origin, "a scene");
+  // The scene reader stays strict (a mistyped key is never ignored); a simulation's result is
+  // told apart by what only it holds, and pointed to the scene the simulation can write.
+  if (j.contains("events") && j.contains("at_rest")) {
+    throw std::invalid_argument(origin + ": a simulation's result (simulate --json), not a scene; "
+                                "simulate --scene-out writes the table at the end as a scene");
+  }
   RequireKnownKeys(j, {"table", "params", "balls"}, origin);
   SceneFile scene;
   scene.table = RequiredText(j, "table", origin);

@@ -80,6 +80,16 @@ TEST(SceneFile, RefusesMalformedScenesNamingTheFault) {
             std::string::npos);
 }
 
+// `simulate --scene --json` prints the balls with a scene's keys beside its own: refused, still
+// strict, pointing to the scene `simulate --scene-out` writes.
+TEST(SceneFile, ASimulationsResultIsToldApartFromAScene) {
+  const std::string result = R"({"table":"pool-9ft","params":"pool","model":"auto","accuracy_m":0.005,
+      "balls":[{"id":0,"state":[1,0.5,0,0,0,0,0],"pocketed":null}],"events":[],"at_rest":true})";
+  const std::string why = Refusal(result);
+  EXPECT_NE(why.find("not a scene"), std::string::npos) << why;
+  EXPECT_NE(why.find("--scene-out"), std::string::npos) << why;
+}
+
 TEST(SceneFile, AMissingFileIsRefusedWithItsPath) {
   try {
     LoadScene("/nonexistent/scene.json");

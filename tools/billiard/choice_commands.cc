@@ -7,7 +7,10 @@
 #include <string>
 
 #include "bench/game_benchmark.h"
+#include "planner/choice/monte_carlo.h"
+#include "planner/choice/scene_balls.h"
 #include "planner/players/players.h"
+#include "sim/model_choice/model_choice.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
@@ -71,6 +74,7 @@ choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
 }
 
 struct LoadedScene {
+  params::SceneFile file;  // as read: its table and parameter names
   physics::ModelParameters params;
   table::TableGeometry table;
   std::vector<table::SceneBall> balls;
@@ -83,7 +87,7 @@ LoadedScene LoadSceneOption(const std::string& path) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  LoadedScene s{LoadParametersOption(scene.params), LoadTableOption(scene.table), {}};
+  LoadedScene s{scene, LoadParametersOption(scene.params), LoadTableOption(scene.table), {}};
   try {
     s.balls = params::LaunchedBalls(scene, s.params);
     table::ValidateScene(s.table, s.params.ball.radius, s.balls);  // bad input (2), as simulate's
@@ -111,23 +115,56 @@ nlohmann::json CandidateJson(const choice::Candidate& c) {
   return j;
 }
 
+// The choice as a player reads it: the call and the stroke to play (in degrees, mm and m/s), then
+// the finalists it was chosen from. A refusal's reason is the line main() prints for exit 3.
 void PrintChoice(const choice::ChoiceResult& r) {
-  std::cerr << "choose-shot: " << choice::ChoiceStatusName(r.status);
-  if (!r.reason.empty()) std::cerr << " (" << r.reason << ")";
-  std::cerr << "\n";
-  if (r.cue_placement) {
-    std::cerr << "  cue ball in hand at " << r.cue_placement->x() << ", " << r.cue_placement->y()
-              << " m\n";
+  const choice::Candidate* chosen = r.chosen();
+  if (!chosen) {
+    if (r.fallback) {
+      std::cerr << "choose-shot: no pot plans; the fallback, the first legal ball hit full: "
+                << StrokeInWords(*r.fallback) << "\n";
+    }
+    return;
   }
+  std::cerr << "choose-shot: ball " << chosen->plan.ball << " in " << chosen->plan.pocket << " ("
+            << pot::ShotKindName(chosen->plan.kind) << "), p "
+            << Fixed(chosen->reported().probability, 2) << (r.likely ? "" : " (" + r.reason + ")")
+            << "\n";
+  if (r.cue_placement) {
+    std::cerr << "  cue ball in hand at " << Fixed(r.cue_placement->x(), 3) << ", "
+              << Fixed(r.cue_placement->y(), 3) << " m\n";
+  }
+  std::cerr << "  cue     " << StrokeInWords(chosen->plan.stroke) << "\n  finalists\n";
   for (const choice::Candidate& c : r.candidates) {
     if (!c.finalist) continue;
-    std::cerr << "  ball " << c.plan.ball << " in " << c.plan.pocket << " ("
-              << pot::ShotKindName(c.plan.kind) << "): p " << c.reported().probability << " +- "
-              << c.reported().stderr_ << ", next shot " << c.next_shot_value << ", score " << c.score
-              << "\n";
+    std::cerr << "    ball " << c.plan.ball << " in " << c.plan.pocket << " ("
+              << pot::ShotKindName(c.plan.kind) << "): p " << Fixed(c.reported().probability, 2)
+              << " +- " << Fixed(c.reported().stderr_, 2) << ", next shot "
+              << Fixed(c.next_shot_value, 2) << ", score " << Fixed(c.score, 3) << "\n";
   }
   std::cerr << "  " << r.candidates.size() << " candidates, " << r.simulations << " simulations, "
-            << r.decision_us / 1000 << " ms\n";
+            << Fixed(r.decision_us / 1000, 0) << " ms\n";
+}
+
+// The table after `r`'s stroke is played once as planned (no noise; the cue ball placed first
+// with ball in hand), to rest, written as a scene at `path`: the next shot's --scene.
+void WriteSceneAfter(const LoadedScene& s, const choice::ChoiceResult& r, const std::string& path) {
+  const std::vector<table::SceneBall> balls =
+      r.cue_placement ? choice::WithCueBallAt(s.balls, *r.cue_placement) : s.balls;
+  choice::StrokeResult played = choice::PlayToRest(s.table, s.params, balls, *r.stroke(),
+                                                   model_choice::TableMotion(s.params));
+  game::DropHangingBalls(s.table, &played);
+  std::cerr << "  played as planned: potted ";
+  if (played.pocketed.empty()) std::cerr << "none";
+  for (std::size_t i = 0; i < played.pocketed.size(); ++i) {
+    std::cerr << (i ? ", " : "") << played.pocketed[i].first << " in " << played.pocketed[i].second;
+  }
+  std::cerr << (played.scratch ? "; the cue ball dropped (ball in hand next)" : "") << "; wrote "
+            << path << "\n";
+  params::SceneFile after = s.file;
+  after.cues.clear();
+  after.balls = played.rest;
+  WriteScene(after, path, "--scene-out");
 }
 
 }  // namespace
@@ -252,6 +289,7 @@ void AddChooseShotCommand(CLI::App& app) {
   struct Args : ChoiceArgs {
     std::string scene_path;
     bool ball_in_hand = false;
+    std::string scene_out;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -262,6 +300,9 @@ void AddChooseShotCommand(CLI::App& app) {
       ->required();
   cmd->add_flag("--ball-in-hand", args->ball_in_hand,
                 "Place the cue ball first (where the choice scores best); the scene's cue ball, if any, is lifted");
+  cmd->add_option("--scene-out", args->scene_out,
+                  "Write the table after the chosen stroke is played as planned (no noise), to rest: "
+                  "the next shot's --scene");
   AddChoiceOptions(cmd, args.get());
   cmd->callback([args] {
     const LoadedScene s = LoadSceneOption(args->scene_path);
@@ -279,6 +320,9 @@ void AddChooseShotCommand(CLI::App& app) {
       std::cout << j.dump() << std::endl;
     } else {
       PrintChoice(r);
+    }
+    if (!args->scene_out.empty() && r.status == choice::ChoiceStatus::kOk) {
+      WriteSceneAfter(s, r, args->scene_out);
     }
     if (r.status != choice::ChoiceStatus::kOk) {
       throw Refused(std::string(choice::ChoiceStatusName(r.status)) + ": " + r.reason);

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 namespace billiard::cli {
@@ -83,6 +84,47 @@ nlohmann::json CueStrokeJson(const physics::CueStroke& stroke) {
           {"tip_side", stroke.tip_side},
           {"tip_height", stroke.tip_height},
           {"elevation", stroke.elevation}};
+}
+
+std::string Fixed(double value, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  const double rounded = std::round(value * scale) / scale;
+  if (rounded == 0.0) return "0";
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(decimals) << rounded;
+  return out.str();
+}
+
+namespace {
+
+constexpr double kMmPerM = 1000.0;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegPerRad = 180.0 / kPi;
+
+// "3.0 mm right", "" for the centre: one offset of the tip as the player sees it.
+std::string TipOffset(double metres, const char* positive, const char* negative) {
+  const std::string mm = Fixed(std::abs(metres) * kMmPerM, 1);
+  if (mm == "0") return "";
+  return mm + " mm " + (metres > 0.0 ? positive : negative);
+}
+
+}  // namespace
+
+std::string StrokeInWords(const physics::CueStroke& stroke) {
+  const std::string side = TipOffset(stroke.tip_side, "right", "left");
+  const std::string height = TipOffset(stroke.tip_height, "above", "below");
+  std::string tip = "tip at centre";
+  if (!side.empty() && !height.empty()) {
+    tip = "tip " + side + " and " + height + " centre";
+  } else if (!side.empty()) {
+    tip = "tip " + side + " of centre";
+  } else if (!height.empty()) {
+    tip = "tip " + height + " centre";
+  }
+  // The heading in (-180, 180], as a protractor laid along the long axis reads it.
+  const double heading = std::remainder(stroke.heading, 2.0 * kPi) * kDegPerRad;
+  return "speed " + Fixed(stroke.speed, 3) + " m/s, heading " + Fixed(heading, 2) + " deg, " +
+         tip + ", elevation " + Fixed(stroke.elevation * kDegPerRad, 1) + " deg";
 }
 
 void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j) {

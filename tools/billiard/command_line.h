@@ -51,6 +51,15 @@ void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j);
 // "elevation"}, the object a scene's "cue" reads.
 nlohmann::json CueStrokeJson(const physics::CueStroke& stroke);
 
+// `value` rounded to `decimals` places as text, and "0" where it rounds to zero: a player reads
+// "0 mm", not "-1.73472e-18 m" or "-0.000".
+std::string Fixed(double value, int decimals);
+
+// A stroke in the units a player reads: "speed 1.234 m/s, heading 45.00 deg, tip 3.0 mm right
+// and 12.0 mm below centre, elevation 0 deg" (the heading from +x counterclockwise, in
+// (-180, 180]; the tip offsets as the player sees the cue ball from behind the cue).
+std::string StrokeInWords(const physics::CueStroke& stroke);
+
 // Makes the directory `dir` of an option (as the report writers would) and checks that files can
 // be made in it; UsageError naming `option` if not. Called before a run of minutes, so that a
 // mistyped path is said at once instead of after the work.

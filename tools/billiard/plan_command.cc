@@ -42,20 +42,22 @@ nlohmann::json PlanJson(const planner::ShotPlan& plan, const physics::ModelParam
   return j;
 }
 
+// The plan as a player reads it: the stroke in degrees, mm and m/s (StrokeInWords), the launch,
+// where the ball arrives and by how much it misses, in mm.
 void PrintSummary(const planner::ShotPlan& plan, const physics::ModelParameters& params,
                   bool refined) {
+  constexpr double kMmPerM = 1000.0;
   std::cerr << "plan, " << params::ParameterSetLabel(params) << " parameters, "
             << (refined ? "refined against the 5-DOF model" : "closed-form inverse alone") << ": "
-            << planner::PlanStatusName(plan.status) << "\n  cue     " << plan.stroke.speed
-            << " m/s, heading " << plan.stroke.heading << " rad, tip side " << plan.stroke.tip_side
-            << " m, tip height " << plan.stroke.tip_height << " m, elevation "
-            << plan.stroke.elevation << " rad\n  launch  v0 = " << plan.v0.x() << ", "
-            << plan.v0.y() << " m/s, w0 = " << plan.w0.x() << ", " << plan.w0.y() << ", "
-            << plan.w0.z() << " rad/s, slide " << plan.slide_length << " m\n  arrival "
-            << plan.predicted_final.x() << ", " << plan.predicted_final.y() << " m at "
-            << plan.arrival_time << " s, miss " << plan.refined_miss_m << " m (closed form "
-            << plan.closed_form_miss_m << " m), " << plan.iterations << " iterations, "
-            << plan.solve_us << " us\n";
+            << planner::PlanStatusName(plan.status) << "\n  cue     " << StrokeInWords(plan.stroke)
+            << "\n  launch  v0 = " << Fixed(plan.v0.x(), 3) << ", " << Fixed(plan.v0.y(), 3)
+            << " m/s, w0 = " << Fixed(plan.w0.x(), 2) << ", " << Fixed(plan.w0.y(), 2) << ", "
+            << Fixed(plan.w0.z(), 2) << " rad/s, slide " << Fixed(plan.slide_length, 3)
+            << " m\n  arrival " << Fixed(plan.predicted_final.x(), 3) << ", "
+            << Fixed(plan.predicted_final.y(), 3) << " m at " << Fixed(plan.arrival_time, 3)
+            << " s, miss " << Fixed(plan.refined_miss_m * kMmPerM, 2) << " mm (closed form "
+            << Fixed(plan.closed_form_miss_m * kMmPerM, 2) << " mm), " << plan.iterations
+            << " iterations, " << Fixed(plan.solve_us, 0) << " us\n";
 }
 
 void Run(const PlanArgs& args, bool slide_given) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <fstream>
 #include <iostream>
@@ -143,10 +144,13 @@ void Run(const PlotArgs& args) {
   if (!(args.sample_dt > 0.0 && std::isfinite(args.sample_dt))) {
     throw UsageError("--sample-dt must be a positive number of seconds");
   }
-  // Said before the simulation: an output that cannot be made is a usage error.
+  // Said before the simulation: an output that cannot be made is a usage error. The file the
+  // check makes is removed again, so that a refusal below leaves nothing behind.
+  const bool existed = std::filesystem::exists(args.out);
   if (!std::ofstream(args.out, std::ios::app)) {
     throw UsageError("--out: cannot write '" + args.out + "'");
   }
+  if (!existed) std::filesystem::remove(args.out);
   const plot::TablePicture picture = args.scene.empty() ? PlanPicture(args.plan, args.sample_dt)
                                                         : ScenePicture(args.scene, args.sample_dt);
   try {

@@ -31,27 +31,19 @@ struct PlanPotArgs {
 
 nlohmann::json Point(const Eigen::Vector2d& p) { return {p.x(), p.y()}; }
 
+// The plan as a player reads it: the stroke in degrees, mm and m/s (StrokeInWords), its
+// windows, where the cue ball stops. A refusal is not printed here: its reason is the one line
+// main() prints for exit 3.
 void PrintPlan(const pot::PotPlan& plan) {
+  if (plan.status != pot::PotStatus::kOk) return;
   std::cerr << "plan-pot: ball " << plan.ball << " in " << plan.pocket << ": "
-            << pot::PotStatusName(plan.status);
-  if (plan.status != pot::PotStatus::kOk) {
-    std::cerr << " (" << plan.reason << ")\n";
-    return;
-  }
-  std::cerr << ", " << plan.why << "\n  cue     " << plan.stroke.speed << " m/s, heading "
-            << plan.stroke.heading << " rad, tip side " << plan.stroke.tip_side
-            << " m, tip height " << plan.stroke.tip_height << " m, elevation "
-            << plan.stroke.elevation << " rad\n  margin  " << plan.margin_left_deg << " deg left, "
-            << plan.margin_right_deg << " deg right; cue speed " << plan.speed_lo << " to "
-            << plan.speed_hi << " m/s; cut " << plan.cut_deg << " deg\n  cue ball stops at "
-            << plan.cue_rest.x() << ", " << plan.cue_rest.y() << " m; " << plan.simulations
-            << " simulations, " << plan.solve_us << " us\n";
-}
-
-// `scene` as a scene file at `path`, or a usage error naming `option`.
-void WriteScene(const params::SceneFile& scene, const std::string& path, const std::string& option) {
-  std::ofstream out(path);
-  if (!(out << params::SceneJson(scene) << "\n")) throw UsageError(option + ": cannot write '" + path + "'");
+            << pot::PotStatusName(plan.status) << ", " << plan.why << "\n  cue     "
+            << StrokeInWords(plan.stroke) << "\n  margin  " << Fixed(plan.margin_left_deg, 2)
+            << " deg left, " << Fixed(plan.margin_right_deg, 2) << " deg right; cue speed "
+            << Fixed(plan.speed_lo, 3) << " to " << Fixed(plan.speed_hi, 3) << " m/s; cut "
+            << Fixed(plan.cut_deg, 1) << " deg\n  cue ball stops at " << Fixed(plan.cue_rest.x(), 3)
+            << ", " << Fixed(plan.cue_rest.y(), 3) << " m; " << plan.simulations << " simulations, "
+            << Fixed(plan.solve_us, 0) << " us\n";
 }
 
 void RunPlanPot(const PlanPotArgs& args, bool radius_given) {

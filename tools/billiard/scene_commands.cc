@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "bench/scene_benchmark.h"
+#include "planner/choice/monte_carlo.h"
+#include "planner/game/game.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/scene_file.h"
@@ -95,7 +97,35 @@ void PrintSceneTable(const table::TableSimulation& sim,
   std::cerr << out.str();
 }
 
+// The table at the end of `sim` as a scene of `scene`'s table and parameters: the balls left on
+// it, a ball resting past a pocket's mouth dropped into that pocket (game::DropHangingBalls: a
+// real one would, and no tool is asked about a ball hanging there), said on stderr.
+params::SceneFile SceneAtEnd(const table::TableGeometry& geometry, const table::TableSimulation& sim,
+                             const params::SceneFile& scene) {
+  choice::StrokeResult end;
+  for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+    if (!sim.pocket(i)) end.rest.push_back({sim.id(i), sim.State(i)});
+  }
+  game::DropHangingBalls(geometry, &end);
+  for (const auto& [id, pocket] : end.pocketed) {
+    std::cerr << "simulate: ball " << id << " rests over " << pocket << "'s mouth: dropped\n";
+  }
+  if (end.scratch) std::cerr << "simulate: the cue ball rests over a pocket's mouth: dropped\n";
+  params::SceneFile out;
+  out.table = scene.table;
+  out.params = scene.params;
+  out.balls = end.rest;
+  return out;
+}
+
 }  // namespace
+
+void WriteScene(const params::SceneFile& scene, const std::string& path, const std::string& option) {
+  std::ofstream out(path);
+  if (!(out << params::SceneJson(scene) << "\n")) {
+    throw UsageError(option + ": cannot write '" + path + "'");
+  }
+}
 
 table::TableGeometry LoadTableOption(const std::string& name_or_path) {
   try {
@@ -188,6 +218,7 @@ void SimulateScene(const SceneSimulationArgs& args) {
         args.trajectory_path, sim->time(), args.sample_dt, static_cast<int>(sim->ball_count()),
         [&](double t, int k) { return sim->StateAt(k, t); }, [&](int k) { return sim->id(k); });
   }
+  if (!args.scene_out.empty()) WriteScene(SceneAtEnd(geometry, *sim, scene), args.scene_out, "--scene-out");
   nlohmann::json j;
   j["table"] = geometry.name;
   DescribeParameters(params, &j);

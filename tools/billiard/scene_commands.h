@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "sim/params/scene_file.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
 #include "sim/table/table_simulation.h"
@@ -22,6 +23,7 @@ struct SceneSimulationArgs {
   std::string cushion_model;    // mathavan-2010 | han-2005
   std::string trajectory_path;
   double sample_dt = 1e-3;
+  std::string scene_out;  // the table at the end, as a scene
   bool json = false;
 };
 
@@ -34,6 +36,10 @@ void SimulateScene(const SceneSimulationArgs& args);
 // metres); UsageError for another name.
 decltype(table::TableSimulationOptions::five_dof) SceneMotionModel(
     const std::string& model, double accuracy, const physics::ModelParameters& params);
+
+// `scene` written as a scene file at `path` (the pure scene every --scene reads), or a
+// UsageError naming `option`.
+void WriteScene(const params::SceneFile& scene, const std::string& path, const std::string& option);
 
 // The table of a scene's "table" (a name or a file); UsageError with the reason.
 table::TableGeometry LoadTableOption(const std::string& name_or_path);

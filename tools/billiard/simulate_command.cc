@@ -36,6 +36,7 @@ struct SimulateArgs {
   double quadrature_tol = physics::SimulationOptions{}.quadrature_tolerance;
   std::string trajectory_path;
   double sample_dt = 1e-3;
+  std::string scene_out;  // --scene only
   bool no_rest_switch = false;
   std::optional<double> until_speed;
   bool json = false;
@@ -55,9 +56,10 @@ void Run(const SimulateArgs& args, bool at_given) {
     }
     SimulateScene({args.scene, cue, args.t_end, args.model.empty() ? "auto" : args.model,
                    args.accuracy, args.cushion_model, args.trajectory_path, args.sample_dt,
-                   args.json});
+                   args.scene_out, args.json});
     return;
   }
+  if (!args.scene_out.empty()) throw UsageError("--scene-out goes with --scene");
   if (args.state.empty() == !cue) {
     throw UsageError("give one of --state and --cue (one ball), or --scene (a table)");
   }
@@ -232,6 +234,9 @@ void AddSimulateCommand(CLI::App& app) {
                   "Integral model: quadrature error target")
       ->capture_default_str();
   cmd->add_option("--trajectory", args->trajectory_path, "Write the sampled trajectory as CSV");
+  cmd->add_option("--scene-out", args->scene_out,
+                  "--scene: write the table at the end as a scene (the balls left on it, for "
+                  "plan-pot, choose-shot, plot and simulate --scene)");
   cmd->add_option("--sample-dt", args->sample_dt, "Trajectory sampling interval [s]")
       ->capture_default_str();
   cmd->add_flag("--no-rest-switch", args->no_rest_switch,

@@ -1,5 +1,6 @@
 // The `billiard` Python module (pybind11): simulate one ball or a table scene, strike a ball
-// with the cue, plan a shot and detect the balls of a camera frame, NumPy arrays in and out.
+// with the cue, plan a shot, choose one and play a rack (choice_functions.h), and detect the
+// balls of a camera frame, NumPy arrays in and out.
 // Bad input raises ValueError (the CLI's exit 2); an answer that is no (a refused plan, a frame
 // without a table) raises billiard.Refused (the CLI's exit 3), its message the CLI's reason.
 #include <pybind11/numpy.h>
@@ -21,50 +22,12 @@
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/simulator.h"
 #include "sim/table/table_simulation.h"
-
-namespace py = pybind11;
+#include "tools/python/choice_functions.h"
+#include "tools/python/conversions.h"
 
 namespace billiard::python {
 
 namespace {
-
-using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-// A Python exception type of the module's own: the answer is no.
-py::object& RefusedType() {
-  static py::object type;
-  return type;
-}
-
-[[noreturn]] void Refuse(const std::string& reason) {
-  PyErr_SetString(RefusedType().ptr(), reason.c_str());
-  throw py::error_already_set();
-}
-
-std::vector<double> Numbers(const Array& a, std::size_t n, const std::string& what) {
-  if (static_cast<std::size_t>(a.size()) != n || a.ndim() != 1) {
-    throw py::value_error(what + " must be " + std::to_string(n) + " numbers");
-  }
-  std::vector<double> v(a.data(), a.data() + n);
-  for (double x : v) {
-    if (!std::isfinite(x)) throw py::value_error(what + " has a number that is not finite");
-  }
-  return v;
-}
-
-physics::ModelParameters Params(const std::string& name_or_path) {
-  try {
-    return params::LoadParameters(name_or_path);
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(e.what());
-  }
-}
-
-Array StateArray(const physics::BallState& s) {
-  Array out(7);
-  std::copy(s.data(), s.data() + 7, out.mutable_data());
-  return out;
-}
 
 py::dict Simulate(const Array& state, double t_end, const std::string& model,
                   const std::string& params_name, std::optional<double> sample_dt) {
@@ -116,24 +79,6 @@ Array Strike(double speed, double heading, double tip_side, double tip_height, d
   }
 }
 
-// The balls of an N x 7 array of states, ids 0..N-1 unless given.
-std::vector<table::SceneBall> SceneBalls(const Array& states, const std::optional<std::vector<int>>& ids) {
-  if (states.ndim() != 2 || states.shape(1) != 7) {
-    throw py::value_error("states must be an N x 7 array of [X, Y, vx, vy, wx, wy, wz]");
-  }
-  const std::size_t n = states.shape(0);
-  if (ids && ids->size() != n) throw py::value_error("ids must name every ball (N of them)");
-  std::vector<table::SceneBall> balls;
-  auto a = states.unchecked<2>();
-  for (std::size_t i = 0; i < n; ++i) {
-    table::SceneBall b;
-    b.id = ids ? (*ids)[i] : static_cast<int>(i);
-    for (int j = 0; j < 7; ++j) b.state[j] = a(i, j);
-    balls.push_back(b);
-  }
-  return balls;
-}
-
 py::dict SimulateScene(const Array& states, std::optional<std::vector<int>> ids,
                        const std::string& table_name, const std::string& params_name,
                        std::optional<double> t_end) {
@@ -179,16 +124,6 @@ py::dict SimulateScene(const Array& states, std::optional<std::vector<int>> ids,
   return out;
 }
 
-py::dict CueJson(const physics::CueStroke& stroke) {
-  py::dict cue;
-  cue["speed"] = stroke.speed;
-  cue["heading"] = stroke.heading;
-  cue["tip_side"] = stroke.tip_side;
-  cue["tip_height"] = stroke.tip_height;
-  cue["elevation"] = stroke.elevation;
-  return cue;
-}
-
 py::dict Plan(const Array& from, const Array& to, double final_speed, const std::string& spin,
               double side_spin, const std::string& params_name) {
   const auto a = Numbers(from, 2, "from [X, Y]"), b = Numbers(to, 2, "to [X, Y]");
@@ -231,13 +166,7 @@ py::dict PlanPot(const Array& states, std::optional<std::vector<int>> ids, int b
     const auto t = Numbers(*cue_to, 2, "cue_to [X, Y]");
     request.cue_target = pot::CueTarget{{t[0], t[1]}, cue_radius};
   }
-  table::TableGeometry geometry;
-  try {
-    geometry = table::BuildTable(params::LoadTableSpec(table_name));
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(e.what());
-  }
-  const pot::PotPlan plan = pot::PlanPot(geometry, Params(params_name), SceneBalls(states, ids), request);
+  const pot::PotPlan plan = pot::PlanPot(Table(table_name), Params(params_name), SceneBalls(states, ids), request);
   if (plan.status != pot::PotStatus::kOk) {
     Refuse(std::string(pot::PotStatusName(plan.status)) + ": " + plan.reason);
   }
@@ -333,6 +262,7 @@ PYBIND11_MODULE(billiard, m) {
         "The stroke that pots `ball` in `pocket` from a scene (N x 7 states, id 0 the cue ball), "
         "planned against the whole-table simulation: 'kind', 'why', 'v0', 'w0', 'cue', "
         "'margin_deg', 'speed_window', 'cue_rest', 'paths'; raises Refused");
+  AddChoiceFunctions(m);
   m.def("detect", &Detect, arg("image"), arg("ball_set") = "pool",
         "The balls of a BGR (H x W x 3) or grey frame: 'balls' (N x 4: u, v, radius_px, score) "
         "and 'classes'; raises Refused when the frame shows no table");

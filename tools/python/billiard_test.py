@@ -98,6 +98,65 @@ def test_a_pot_agrees_with_plan_pot_and_a_refusal_is_an_exception():
         billiard.plan_pot(states, ids=ids, ball=1, kind="sideways")
 
 
+def test_the_documented_one_liner_runs_whatever_python3_is_first_on_path(tmp_path):
+    """build/python/python3 is the interpreter the module was built for: a python3 first on PATH
+    that cannot import it (here one that fails at once) is not the one that runs."""
+    launcher = Path(billiard.__file__).parent / "python3"
+    (tmp_path / "python3").write_text("#!/bin/sh\necho 'the wrong python3' >&2\nexit 9\n")
+    (tmp_path / "python3").chmod(0o755)
+    env = {"PATH": f"{tmp_path}:{os.environ['PATH']}"}
+    out = subprocess.run([str(launcher), "-c", "import billiard; print(billiard.simulate("
+                          "[0, 0, 1, 0, 0, 35, 0], 8.0)['state'][0])"],
+                         env=env, check=True, capture_output=True, text=True)
+    assert float(out.stdout) == billiard.simulate([0, 0, 1, 0, 0, 35, 0], 8.0)["state"][0]
+
+
+NINE_BALL = SOURCE / "tests" / "data" / "nine_ball_layout.json"
+
+
+def scene_arrays(path):
+    scene = json.loads(path.read_text())
+    return np.array([b["state"] for b in scene["balls"]]), [b["id"] for b in scene["balls"]]
+
+
+def test_choose_shot_agrees_with_the_cli_to_the_bit():
+    states, ids = scene_arrays(NINE_BALL)
+    r = billiard.choose_shot(states, ids=ids, rules="nine-ball", samples=16, threads=2)
+    j = cli("choose-shot", "--scene", str(NINE_BALL), "--rules", "nine-ball", "--samples", "16")
+    for key in ("ball", "pocket", "kind", "cue", "margin_deg", "success_probability",
+                "probability_stderr", "samples", "next_shot_value", "score"):
+        assert r["choice"][key] == j["choice"][key], key
+    assert r["choice"]["v0"].tolist() == j["choice"]["v0"]
+    assert r["likely"] == j["likely"] and r["candidates"] == len(j["candidates"])
+    assert r["cue_placement"] is None
+    placed = billiard.choose_shot(states, ids=ids, rules="nine-ball", samples=16, ball_in_hand=True)
+    j = cli("choose-shot", "--scene", str(NINE_BALL), "--rules", "nine-ball", "--samples", "16",
+            "--ball-in-hand")
+    assert placed["cue_placement"].tolist() == j["cue_placement"]
+    with pytest.raises(billiard.Refused, match="no_target"):
+        billiard.choose_shot(np.array([[1.0, 0.6, 0, 0, 0, 0, 0]]))
+    with pytest.raises(ValueError):
+        billiard.choose_shot(states, ids=ids, rules="snooker")
+
+
+def test_play_agrees_with_the_cli_shot_by_shot():
+    r = billiard.play(rack="nine-ball", seed=3, samples=16, shot_limit=4)
+    j = cli("play", "--rack", "nine-ball", "--seed", "3", "--samples", "16", "--shot-limit", "4")
+    assert len(r["shots"]) == len(j["shots"]) == r["summary"]["shots"]
+    for mine, theirs in zip(r["shots"], j["shots"]):
+        for key, value in mine.items():
+            got = value.tolist() if isinstance(value, np.ndarray) else value
+            assert got == theirs[key], key
+    for key, value in r["summary"].items():
+        assert value == j["summary"][key], key
+    assert r["balls_left"] == j["balls_left"]
+    assert r["shots"][0]["break"]
+    with pytest.raises(ValueError):
+        billiard.play()
+    with pytest.raises(ValueError):
+        billiard.play(rack="eight-ball")
+
+
 def read_png_rgb(path):
     """An 8-bit RGB, non-interlaced PNG (the test frame's format) as an H x W x 3 array."""
     data = path.read_bytes()
