@@ -209,8 +209,8 @@ def output_matches(expected, actual):
 BUILD_OUTPUTS = ("bin", "python", "lcmtypes")
 
 
-def make_sandbox(source, build, data):
-    """A temporary directory standing for the repository root, beside ../shared/data."""
+def make_sandbox(source, build, data, python):
+    """A temporary directory standing for the repository root, beside ../shared/data; HOME."""
     top = tempfile.mkdtemp(prefix="doc_test_")
     root = os.path.join(top, "repo")
     os.mkdir(root)
@@ -223,6 +223,9 @@ def make_sandbox(source, build, data):
         built = os.path.join(build, output)
         for name in os.listdir(built) if os.path.isdir(built) else []:
             os.symlink(os.path.join(built, name), os.path.join(root, "build", output, name))
+    if python:  # python3: the interpreter the build's module was built for
+        os.makedirs(os.path.join(root, "build", "interpreter"))
+        os.symlink(python, os.path.join(root, "build", "interpreter", "python3"))
     if data and os.path.isdir(data):
         os.mkdir(os.path.join(top, "shared"))
         os.symlink(os.path.abspath(data), os.path.join(top, "shared", "data"))
@@ -242,8 +245,9 @@ def stop_on_sigterm():
 def run_script(script, root, build, timeout):
     """(exit code or None on timeout, output): the script in its own process group, every
     process it left behind (a node sent to the background) ended with it."""
-    env = dict(os.environ, DOC_TEST_BUILD=build,
-               PATH=os.path.join(root, "build", "bin") + os.pathsep + os.environ["PATH"])
+    path = [os.path.join(root, "build", "bin"), os.path.join(root, "build", "interpreter")]
+    env = dict(os.environ, DOC_TEST_BUILD=build, HOME=os.path.dirname(root),
+               PATH=os.pathsep.join(path + [os.environ["PATH"]]))
     with open(os.path.join(root, ".doc_test_output"), "w+b") as log:
         process = subprocess.Popen(["bash", "-c", "set -e -o pipefail\n" + script], cwd=root,
                                    env=env, stdin=subprocess.DEVNULL, stdout=log,
@@ -297,7 +301,7 @@ def check_block(block, root, build, previous_output):
     return None, output
 
 
-def run_file(path, source, build, data):
+def run_file(path, source, build, data, python=None):
     """Runs every command block of one Markdown file; prints each and the counts; True if all
     passed."""
     name = os.path.relpath(path, source)
@@ -308,7 +312,7 @@ def run_file(path, source, build, data):
             raise DocError(f"{name}: {error}")
     have_data = bool(data) and os.path.isdir(data)
     counts = {"run": 0, "compared": 0, "skipped": 0, "expected to fail": 0, "failed": 0}
-    top, root = make_sandbox(source, build, data)
+    top, root = make_sandbox(source, build, data, python)
     previous_output, ok = None, True
     try:
         for block in blocks:
@@ -360,6 +364,8 @@ def main():
     parser.add_argument("--source", help="the repository root")
     parser.add_argument("--build", help="the build directory (its bin/ first on PATH)")
     parser.add_argument("--data", help="the test data (default SOURCE/../shared/data)")
+    parser.add_argument("--python", help="python3 in a block: the interpreter of the build's "
+                        "Python module (CMake's Python3_EXECUTABLE)")
     parser.add_argument("--self-test", action="store_true", help="check the parser and matcher")
     parser.add_argument("files", nargs="*")
     args = parser.parse_args()
@@ -372,7 +378,7 @@ def main():
     data = args.data or os.environ.get("BILLIARD_TEST_DATA") or os.path.join(source, "..", "shared", "data")
     stop_on_sigterm()
     try:
-        results = [run_file(os.path.abspath(f), source, build, os.path.abspath(data))
+        results = [run_file(os.path.abspath(f), source, build, os.path.abspath(data), args.python)
                    for f in args.files]
     except DocError as error:
         print(f"doc_test: {error}", file=sys.stderr)
