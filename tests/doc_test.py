@@ -54,6 +54,7 @@ class Block:
         self.timeout = DEFAULT_TIMEOUT_S
         self.is_output = False      # compared with the output of the command block before it
         self.seconds = 0.0          # how long it ran
+        self.compared = 0           # the quoted outputs compared (a console block's, an output block)
         for marker in markers:
             self.read_marker(marker)
 
@@ -283,6 +284,7 @@ def check_block(block, root, build, previous_output):
     if block.is_output:
         if previous_output is None:
             return "an output block with no command block run before it", None
+        block.compared = 1
         return (None if output_matches(block.text.splitlines(), previous_output.splitlines())
                 else "the output differs from the doc's:\n" + previous_output), None
     script, quoted = block_script(block)
@@ -293,10 +295,11 @@ def check_block(block, root, build, previous_output):
         return f"still running after {block.timeout} s (a doc-test: timeout N marker?)", output
     if code != 0:
         return f"exit {code}:\n{output}", output
-    if quoted:
-        printed = output.split(SEPARATOR)
-        for number, (expected, actual) in enumerate(zip(quoted, printed), 1):
-            if expected and not output_matches(expected, actual.splitlines()):
+    printed = output.split(SEPARATOR)
+    for number, (expected, actual) in enumerate(zip(quoted or [], printed), 1):
+        if expected:
+            block.compared += 1
+            if not output_matches(expected, actual.splitlines()):
                 return f"command {number}'s output differs from the doc's:\n{actual}", output
     return None, output
 
@@ -329,8 +332,7 @@ def run_file(path, source, build, data, python=None):
             if block.is_command():
                 previous_output = output
                 counts["run"] += 1
-            else:
-                counts["compared"] += 1
+            counts["compared"] += block.compared
             ok &= report(name, block, failure, counts)
     finally:
         shutil.rmtree(top, ignore_errors=True)

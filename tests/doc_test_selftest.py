@@ -93,7 +93,7 @@ def check_verdicts():
     try:
         ok, printed = run_document(DOCUMENT, source, build)
         check(ok, "a document that runs passes:\n" + printed)
-        check("2 run, 1 compared, 1 skipped" in printed, "the counts:\n" + printed)
+        check("2 run, 2 compared, 1 skipped" in printed, "the counts:\n" + printed)
         check(not os.path.exists(os.path.join(source, "greeting.txt")), "the tree left alone")
         for broken in (DOCUMENT.replace("0.25 s", "0.5 s", 1),       # a stale figure
                        DOCUMENT.replace("false   # exit 1", "true   # exit 1"),
