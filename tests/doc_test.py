@@ -69,7 +69,7 @@ class Block:
             parts = re.fullmatch(QUOTED + r"\s+" + QUOTED + r"\s+\((.+)\)", rest.strip())
             if not parts:
                 raise DocError(f"line {self.line}: replace \"OLD\" \"NEW\" (reason), not '{rest}'")
-            old, new = (bytes(p, "utf-8").decode("unicode_escape") for p in parts.group(1, 2))
+            old, new = (p.replace('\\"', '"') for p in parts.group(1, 2))
             self.replacements.append((old, new, parts.group(3)))
         elif word == "timeout" and rest.strip().isdigit():
             self.timeout = int(rest)
