@@ -73,7 +73,7 @@ const std::map<std::string, std::set<std::string>>& Layers() {
         "sim/contact_fit", "sim/shot_fit", "sim/camera", "sim/render", "sim/table_sim_node",
         "lcmtypes", "lcmtypes/node", "planner", "planner/pot", "planner/choice", "planner/players",
         "planner/game", "sim/rules", "planner/node", "estimator",
-        "estimator/node", "bench", "planner/pot/testing", "plot"}},
+        "estimator/node", "bench", "planner/pot/testing", "plot", "tools/camera_node"}},
       {"tools/viewer_node", {"lcmtypes", "lcmtypes/node", "sim/params", "sim/physics"}},
       {"tools/camera_node", {"lcmtypes", "lcmtypes/node"}},
       {"tools/python",

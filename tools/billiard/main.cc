@@ -29,6 +29,7 @@
 #include "tools/billiard/replay_command.h"
 #include "tools/billiard/scene_commands.h"
 #include "tools/billiard/simulate_command.h"
+#include "tools/billiard/render_break_command.h"
 #include "tools/billiard/tracks_command.h"
 
 namespace {
@@ -87,6 +88,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddBurstCommand(app);
   billiard::cli::AddNodeStatusCommand(app);
   billiard::cli::AddTracksCommand(app);
+  billiard::cli::AddRenderBreakCommand(app);
   billiard::cli::AddEdgeReportCommand(app);
   billiard::cli::AddDetectCommand(app);
   billiard::cli::AddCalibrateCommand(app);
