@@ -23,6 +23,7 @@
 #include "lcmtypes/image_codec.h"
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
+#include "tools/billiard/ball_options.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/image_files.h"
 
@@ -68,16 +69,10 @@ void WarnIfTheBallRadiusDisagrees(double predicted_px, const cv::Mat& image) {
 }
 
 struct DetectArgs {
-  std::string image, calib, params = params::kDefaultParameterSet, overlay, ball_set;
+  std::string image, calib, params = params::kDefaultParameterSet, overlay, ball_set, ball_model;
   double ball_radius_px = 0;
   bool json = false;
 };
-
-estimator::BallSet BallSetOption(const std::string& name, const physics::ModelParameters& params) {
-  if (name.empty()) return estimator::BallSetOf(params.name);
-  if (const auto set = estimator::BallSetNamed(name)) return *set;
-  throw UsageError("--ball-set: '" + name + "' is none of " + estimator::kBallSetNames);
-}
 
 nlohmann::json Points(const std::array<Eigen::Vector2d, 4>& corners) {
   nlohmann::json list = nlohmann::json::array();
@@ -116,6 +111,7 @@ void RunDetect(const DetectArgs& args) {
   if (args.ball_radius_px < 0) throw UsageError("--ball-radius-px: must be positive");
   estimator::DetectorOptions options;
   options.ball_set = BallSetOption(args.ball_set, params);
+  if (!args.ball_model.empty()) UseBallModel(args.ball_model, args.ball_set, &options);
   const cv::Mat image = ReadImage(args.image);
   if (camera) RequireCalibrationOfThisSize(*camera, image, args.calib);
 
@@ -270,6 +266,9 @@ void AddDetectCommand(CLI::App& app) {
   cmd->add_option("--ball-set", args->ball_set,
                   "pool | snooker | carom | blackball (English pool's reds and yellows): the balls' "
                   "classes (default: --params' set)");
+  cmd->add_option("--ball-model", args->ball_model,
+                  "This rig's look of its balls (billiard learn-balls): names the balls by it "
+                  "instead of the hand-set colours; its ball set unless --ball-set");
   cmd->add_option("--overlay", args->overlay,
                   "Also write the frame with the table and the detections drawn on it (PNG or "
                   "JPEG)");

@@ -1,0 +1,33 @@
+#include "tools/billiard/ball_options.h"
+
+#include <stdexcept>
+
+#include "estimator/ball_model.h"
+#include "tools/billiard/command_line.h"
+
+namespace billiard::cli {
+
+estimator::BallSet BallSetOption(const std::string& name, const physics::ModelParameters& params) {
+  if (name.empty()) return estimator::BallSetOf(params.name);
+  if (const auto set = estimator::BallSetNamed(name)) return *set;
+  throw UsageError("--ball-set: '" + name + "' is none of " + estimator::kBallSetNames);
+}
+
+void UseBallModel(const std::string& path, const std::string& ball_set_option,
+                  estimator::DetectorOptions* options) {
+  estimator::BallModel model;
+  try {
+    model = estimator::LoadBallModel(path);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--ball-model: ") + e.what());
+  }
+  if (!ball_set_option.empty() && estimator::BallSetNamed(ball_set_option) != model.set) {
+    throw UsageError("--ball-model: '" + path + "' is a model of " +
+                     estimator::BallSetName(model.set) + " balls, --ball-set says " +
+                     ball_set_option);
+  }
+  options->ball_set = model.set;
+  options->identity = model.identity;
+}
+
+}  // namespace billiard::cli
