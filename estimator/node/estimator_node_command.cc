@@ -38,7 +38,12 @@ estimator::EstimatorOptions WithBallModel(const std::string& path,
                                           const physics::ModelParameters& params) {
   estimator::EstimatorOptions options;
   if (path.empty()) return options;
-  const estimator::BallModel model = estimator::LoadBallModel(path);
+  estimator::BallModel model;
+  try {
+    model = estimator::LoadBallModel(path);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--ball-model: ") + e.what());
+  }
   if (model.set != estimator::BallSetOf(params.name)) {
     throw std::invalid_argument("--ball-model: '" + path + "' is a model of " +
                                 estimator::BallSetName(model.set) + " balls, --params " +

@@ -23,7 +23,7 @@
 #include "lcmtypes/image_codec.h"
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
-#include "tools/billiard/ball_options.h"
+#include "tools/billiard/detect_options.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/image_files.h"
 
@@ -35,19 +35,6 @@ std::string Pixels(double px) {
   std::ostringstream text;
   text << std::fixed << std::setprecision(1) << px << " px";
   return text.str();
-}
-
-std::string ImageSize(int width, int height) {
-  return std::to_string(width) + "x" + std::to_string(height);
-}
-
-// A calibration maps the pixels of its own camera's frames: of another image size, it is another
-// camera's (or the frame was scaled), and every position it gave would be wrong.
-void RequireCalibrationOfThisSize(const camera::CameraModel& camera, const cv::Mat& image,
-                                  const std::string& calib) {
-  if (camera.width == image.cols && camera.height == image.rows) return;
-  throw UsageError("--calib: '" + calib + "' calibrates " + ImageSize(camera.width, camera.height) +
-                   " frames, the image is " + ImageSize(image.cols, image.rows));
 }
 
 // Says on stderr when the ball radius the calibration and --params predict is not that of the
@@ -99,16 +86,8 @@ nlohmann::json TableJson(const estimator::TableRegion& table,
 
 void RunDetect(const DetectArgs& args) {
   const physics::ModelParameters params = LoadParametersOption(args.params);
-  std::optional<camera::CameraModel> camera;
-  if (!args.calib.empty()) {
-    try {
-      camera = camera::LoadCameraModel(args.calib);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--calib: ") + e.what());
-    }
-  }
-  RequireFinite(args.ball_radius_px, "--ball-radius-px");
-  if (args.ball_radius_px < 0) throw UsageError("--ball-radius-px: must be positive");
+  const std::optional<camera::CameraModel> camera = CalibrationOption(args.calib);
+  RequireBallRadiusOption(args.ball_radius_px);
   estimator::DetectorOptions options;
   options.ball_set = BallSetOption(args.ball_set, params);
   if (!args.ball_model.empty()) UseBallModel(args.ball_model, args.ball_set, &options);

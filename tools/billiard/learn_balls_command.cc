@@ -16,7 +16,7 @@
 #include "estimator/ball_model.h"
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
-#include "tools/billiard/ball_options.h"
+#include "tools/billiard/detect_options.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/image_files.h"
 
@@ -114,18 +114,11 @@ int NamedRight(const std::vector<estimator::BallLook>& looks,
 void RunLearnBalls(const LearnBallsArgs& args) {
   const physics::ModelParameters params = LoadParametersOption(args.params);
   const estimator::BallSet set = BallSetOption(args.ball_set, params);
-  std::optional<camera::CameraModel> camera;
-  if (!args.calib.empty()) {
-    try {
-      camera = camera::LoadCameraModel(args.calib);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--calib: ") + e.what());
-    }
-  }
-  RequireFinite(args.ball_radius_px, "--ball-radius-px");
-  if (args.ball_radius_px < 0) throw UsageError("--ball-radius-px: must be positive");
+  const std::optional<camera::CameraModel> camera = CalibrationOption(args.calib);
+  RequireBallRadiusOption(args.ball_radius_px);
   const auto placed = ReadPlacedBalls(args.balls, set, camera, params.ball.radius);
   const cv::Mat image = ReadImage(args.image);
+  if (camera) RequireCalibrationOfThisSize(*camera, image, args.calib);
 
   estimator::DetectorOptions options;
   options.ball_set = set;

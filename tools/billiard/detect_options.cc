@@ -1,4 +1,4 @@
-#include "tools/billiard/ball_options.h"
+#include "tools/billiard/detect_options.h"
 
 #include <stdexcept>
 
@@ -6,6 +6,35 @@
 #include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
+
+namespace {
+
+std::string ImageSize(int width, int height) {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+}  // namespace
+
+std::optional<camera::CameraModel> CalibrationOption(const std::string& path) {
+  if (path.empty()) return std::nullopt;
+  try {
+    return camera::LoadCameraModel(path);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--calib: ") + e.what());
+  }
+}
+
+void RequireCalibrationOfThisSize(const camera::CameraModel& camera, const cv::Mat& image,
+                                  const std::string& calib) {
+  if (camera.width == image.cols && camera.height == image.rows) return;
+  throw UsageError("--calib: '" + calib + "' calibrates " + ImageSize(camera.width, camera.height) +
+                   " frames, the image is " + ImageSize(image.cols, image.rows));
+}
+
+void RequireBallRadiusOption(double radius_px) {
+  RequireFinite(radius_px, "--ball-radius-px");
+  if (radius_px < 0) throw UsageError("--ball-radius-px: must be positive");
+}
 
 estimator::BallSet BallSetOption(const std::string& name, const physics::ModelParameters& params) {
   if (name.empty()) return estimator::BallSetOf(params.name);
