@@ -56,8 +56,7 @@ BallClass ClassOfPoolBall(int id) { return id == 0 ? BallClass::kCue : PoolBall(
 // (Rodrigues' rotation), which leaves grey grey, so that no white balance sees it, and shifts
 // every hue: a camera whose colour response is not the sRGB the hand-set colours are read in.
 cv::Matx33f HueTurn() {
-  const double a = kHueTurn;
-  const double c = std::cos(a), s = std::sin(a), k = (1 - c) / 3, q = s / std::sqrt(3.0);
+  const double c = std::cos(kHueTurn), s = std::sin(kHueTurn), k = (1 - c) / 3, q = s / std::sqrt(3.0);
   return cv::Matx33f(c + k, k - q, k + q,
                      k + q, c + k, k - q,
                      k - q, k + q, c + k);

@@ -47,8 +47,9 @@ estimator::EstimatorOptions WithBallModel(const std::string& path,
   if (model.set != estimator::BallSetOf(params.name)) {
     throw std::invalid_argument("--ball-model: '" + path + "' is a model of " +
                                 estimator::BallSetName(model.set) + " balls, --params " +
-                                params.name + "'s are " +
-                                estimator::BallSetName(estimator::BallSetOf(params.name)));
+                                params.name + " has " +
+                                estimator::BallSetName(estimator::BallSetOf(params.name)) +
+                                " balls");
   }
   options.detector.identity = model.identity;
   return options;
