@@ -87,4 +87,25 @@ std::string BallClassName(BallClass ball_class) {
   return std::to_string(static_cast<int>(ball_class));  // pool's numbers
 }
 
+std::optional<BallClass> BallClassNamed(const std::string& name, BallSet set) {
+  for (const BallClass c : ClassesIn(set)) {
+    if (BallClassName(c) == name) return c;
+  }
+  return std::nullopt;
+}
+
+std::string BallSetName(BallSet set) {
+  switch (set) {
+    case BallSet::kPool:
+      return "pool";
+    case BallSet::kSnooker:
+      return "snooker";
+    case BallSet::kCarom:
+      return "carom";
+    case BallSet::kBlackball:
+      return "blackball";
+  }
+  return "pool";
+}
+
 }  // namespace billiard::estimator

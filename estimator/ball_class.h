@@ -50,4 +50,10 @@ int CountIn(BallSet set, BallClass ball_class);
 // "cue", "1".."15", "red", "yellow", ... or "unknown".
 std::string BallClassName(BallClass ball_class);
 
+// The class of `set` whose BallClassName is `name`, or none.
+std::optional<BallClass> BallClassNamed(const std::string& name, BallSet set);
+
+// "pool", "snooker", "carom" or "blackball": the name BallSetNamed reads.
+std::string BallSetName(BallSet set);
+
 }  // namespace billiard::estimator

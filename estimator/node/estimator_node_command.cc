@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "estimator/ball_model.h"
 #include "estimator/node/estimator_node.h"
 #include "lcmtypes/node/node_loop.h"
 #include "sim/camera/camera_model.h"
@@ -19,28 +20,63 @@ void AddEstimatorNodeOptions(CLI::App& app, EstimatorNodeCommandLine* line) {
   app.add_option("--camera", line->camera,
                  "Camera model JSON (billiard calibrate); default: the overhead camera of the "
                  "table simulator at --width x --height");
+  app.add_option("--ball-model", line->ball_model,
+                 "The rig's look of its balls (billiard learn-balls): names the balls by it "
+                 "instead of the hand-set colours");
   app.add_option("--width", line->width, "Image width without --camera [px]")
       ->capture_default_str();
   app.add_option("--height", line->height, "Image height without --camera [px]")
       ->capture_default_str();
 }
 
+namespace {
+
+// The detector's identity from a --ball-model file: its colours and shares, for the parameters'
+// ball set (which the estimator names the balls of); std::invalid_argument for a model of
+// another set.
+estimator::EstimatorOptions WithBallModel(const std::string& path,
+                                          const physics::ModelParameters& params) {
+  estimator::EstimatorOptions options;
+  if (path.empty()) return options;
+  estimator::BallModel model;
+  try {
+    model = estimator::LoadBallModel(path);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--ball-model: ") + e.what());
+  }
+  if (model.set != estimator::BallSetOf(params.name)) {
+    throw std::invalid_argument("--ball-model: '" + path + "' is a model of " +
+                                estimator::BallSetName(model.set) + " balls, --params " +
+                                params.name + " has " +
+                                estimator::BallSetName(estimator::BallSetOf(params.name)) +
+                                " balls");
+  }
+  options.detector.identity = model.identity;
+  return options;
+}
+
+}  // namespace
+
 int RunEstimatorNodeCommand(const EstimatorNodeCommandLine& line) {
   physics::ModelParameters params;
   camera::CameraModel camera;
+  estimator::EstimatorOptions options;
   try {
     params = params::LoadParameters(line.params);
     camera = line.camera.empty()
                  ? camera::CameraModel::Overhead(params.table, line.width, line.height)
                  : camera::LoadCameraModel(line.camera);
+    options = WithBallModel(line.ball_model, params);
   } catch (const std::invalid_argument& e) {
     std::cerr << "estimator_node: " << e.what() << std::endl;
     return 2;
   }
   return nodes::RunNodeUntilStopped("estimator_node", line.lcm_url, [&](lcm::LCM& lcm) {
-    auto node = std::make_shared<EstimatorNode>(lcm, camera, params);
+    auto node = std::make_shared<EstimatorNode>(lcm, camera, params, options);
     std::cerr << "estimator_node: " << params::ParameterSetLabel(params) << " parameters, "
-              << camera.width << "x" << camera.height << " camera, LCM "
+              << camera.width << "x" << camera.height << " camera, "
+              << (line.ball_model.empty() ? "hand-set" : "'" + line.ball_model + "'")
+              << " ball colours, LCM "
               << nodes::DescribeUrl(line.lcm_url) << std::endl;
     return [node] { return node->Work(); };
   });

@@ -1,11 +1,17 @@
 // The estimator node in-process over memq://: rendered frames in every encoding become
-// TABLE_STATE; bad frames are dropped with a reason and the node goes on.
+// TABLE_STATE; bad frames are dropped with a reason and the node goes on; a ball model of other
+// balls stops its command line.
 #include "estimator/node/estimator_node.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
+#include <string>
 #include <vector>
 
+#include "estimator/ball_model.h"
+#include "estimator/node/estimator_node_command.h"
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
 #include "lcmtypes/testing/damaged_jpeg.h"
@@ -205,6 +211,23 @@ TEST_F(EstimatorNodeTest, AMovedViewIsSaidInTheStatus) {
     said = said || line.find("view has moved") != std::string::npos;
   }
   EXPECT_TRUE(said);
+}
+
+// A ball model that does not load, or is of other balls than --params', stops the node before
+// it starts (2), as a camera file that does not load does.
+TEST(EstimatorNodeCommand, ABallModelOfOtherBallsOrNoneIsAUsageError) {
+  estimator::BallModel snooker;
+  snooker.set = estimator::BallSet::kSnooker;
+  snooker.identity = estimator::HandSetIdentity();
+  const std::string path = ::testing::TempDir() + "snooker_balls.json";
+  std::ofstream(path) << estimator::BallModelJson(snooker);
+  EstimatorNodeCommandLine line;
+  line.params = "pool";
+  for (const std::string& model : {path, path + ".missing"}) {
+    line.ball_model = model;
+    EXPECT_EQ(RunEstimatorNodeCommand(line), 2) << model;
+  }
+  std::remove(path.c_str());
 }
 
 }  // namespace

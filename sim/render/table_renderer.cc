@@ -16,6 +16,12 @@ float Luma(const Eigen::Vector3f& bgr) {
 
 Eigen::Vector3f ToVector(const cv::Vec3b& c) { return {float(c[0]), float(c[1]), float(c[2])}; }
 
+// The light's gain per channel (RenderOptions::light_colour), B, G, R.
+Eigen::Vector3f LightGain(const RenderOptions& options) {
+  const cv::Vec3f& c = options.light_colour;
+  return {c[0], c[1], c[2]};
+}
+
 std::uint64_t SplitMix64(std::uint64_t x) {
   x += 0x9E3779B97F4A7C15ull;
   x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -97,6 +103,11 @@ TableRenderer::TableRenderer(const camera::CameraModel& camera,
     throw std::invalid_argument(
         "TableRenderer: need subframes >= 1, exposure >= 0 and noise sigma >= 0");
   }
+  for (int c = 0; c < 3; ++c) {
+    if (!(options.light_colour[c] >= 0) || !std::isfinite(options.light_colour[c])) {
+      throw std::invalid_argument("TableRenderer: the light's colour must be finite, >= 0");
+    }
+  }
   if (!(centre_.z() > options.cushion_height)) {
     throw std::invalid_argument("TableRenderer: the camera must be above the cushions");
   }
@@ -123,10 +134,11 @@ TableRenderer::TableRenderer(const camera::CameraModel& camera,
   const double cushion_out = options.cushion_width, rail_out = cushion_out + options.rail_width;
   // How far (x, y) lies outside the playing surface (Chebyshev distance; 0 inside).
   const auto outside = [&](double x, double y) { return std::max({-x, x - L, -y, y - W, 0.0}); };
+  const Eigen::Vector3f light = LightGain(options);
   const auto lambert = [&](const cv::Vec3b& albedo, const Eigen::Vector3d& normal) {
     const double lit = options.ambient +
                        (1 - options.ambient) * std::max(0.0, normal.dot(options_.light_direction));
-    return Eigen::Vector3f(ToVector(albedo) * static_cast<float>(lit));
+    return Eigen::Vector3f(ToVector(albedo).cwiseProduct(light) * static_cast<float>(lit));
   };
   const auto table_colour = [&](const Eigen::Vector3d& d) -> Eigen::Vector3f {
     if (d.z() >= 0) return lambert(options.floor, Eigen::Vector3d::UnitZ());
@@ -318,6 +330,7 @@ void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
   const double highlight_from =
       std::pow(0.5 / (255.0 * std::max(options_.specular, 1e-12)), 1.0 / options_.shininess);
   const Eigen::Vector3f stripe_cap = ToVector(PoolBallColour(0));  // ivory, as the cue ball
+  const Eigen::Vector3f light_gain = LightGain(options_);
   std::vector<Hit> hits;
   hits.reserve(k_balls);
   for (int v = region.box.y; v < region.box.y + region.box.height; ++v) {
@@ -379,7 +392,8 @@ void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
                                       : 0.0f;
           const bool cap = region.striped[hit.ball] && std::abs(normal.y()) > kStripeHalfWidth;
           const Eigen::Vector3f ball = ((cap ? stripe_cap : region.albedo[hit.ball]) * lambert +
-                                        Eigen::Vector3f::Constant(highlight)) *
+                                        Eigen::Vector3f::Constant(highlight))
+                                           .cwiseProduct(light_gain) *
                                        vignette;
           colour = hit.coverage * ball + (1 - hit.coverage) * colour;
         }

@@ -24,8 +24,9 @@
 //  - The contact shadow is centred under the ball on the cloth, not at the ball's image.
 //
 // Shading: Lambertian under a directional light (ambient + diffuse, with ambient + diffuse = 1
-// so a surface facing the light shows its colour), a white specular highlight (Blinn-Phong),
-// radial vignetting (1 - vignetting rho^2, rho the distance from the image centre relative to the
+// so a surface facing the light shows its colour), a specular highlight of the light's colour
+// (Blinn-Phong), the light's colour and strength a gain per channel on all of it, radial
+// vignetting (1 - vignetting rho^2, rho the distance from the image centre relative to the
 // corner), and a soft contact shadow on the cloth around each ball.
 //
 // Motion blur: the frame at time t is the mean of `subframes` renderings at times spread evenly
@@ -76,6 +77,11 @@ struct RenderOptions {
   double shininess = 60.0;                         // Blinn-Phong exponent
   double vignetting = 0.12;                        // darkening at the image corners
   double shadow = 0.45;  // darkening of the cloth at the contact, gone at 1.5 radii
+  // The light's colour and strength as a gain per channel (B, G, R) on everything it lights, the
+  // highlight included: {1, 1, 1} is the white light the colours above are given under; a
+  // tungsten bulb's warm light is about {0.55, 0.8, 1} of a daylight lamp's, a dimmer one all
+  // three lower. A camera's white balance set for another light scales the channels the same way.
+  cv::Vec3f light_colour{1, 1, 1};
 };
 
 // One ball of a frame: its number (pool: 0 the cue ball, 1-15), colour (B, G, R) and where its
@@ -109,7 +115,8 @@ inline constexpr double kStripeHalfWidth = 0.3;
 class TableRenderer {
  public:
   // Precomputes the rays and the background. Throws std::invalid_argument on a camera without
-  // pixels, a ball radius or table size that is not positive, or subframes < 1.
+  // pixels, a ball radius or table size that is not positive, subframes < 1, or a light's colour
+  // that is negative or not finite.
   TableRenderer(const camera::CameraModel& camera, const physics::ModelParameters& params,
                 const RenderOptions& options = {});
 

@@ -240,6 +240,37 @@ TEST(TableRenderer, GrayFramesAreTheLumaOfColourFrames) {
   EXPECT_LE(cv::norm(frame, expected, cv::NORM_INF), 1.0);
 }
 
+// A light of another colour or strength scales each channel of everything it lights, balls,
+// highlights and cloth alike: the frame is the white light's times the gain, to a grey level of
+// rounding twice (the background's and the frame's: shadows darken the rounded background),
+// wherever the white light's is not clipped.
+TEST(TableRenderer, ALightOfAnotherColourScalesEveryChannel) {
+  const physics::ModelParameters p = Pool();
+  RenderOptions o;
+  o.noise_sigma = 0;
+  o.exposure_s = 0;
+  const std::vector<RenderBall> balls = {RenderBall::AtRest(0, PoolBallColour(0), {0.5, 0.5}),
+                                         RenderBall::AtRest(3, PoolBallColour(3), {1.5, 0.7})};
+  const cv::Mat white = TableRenderer(Straight(640, 360), p, o).Render(balls, 0.0);
+  o.light_colour = {0.55f, 0.8f, 1.0f};  // a tungsten bulb's
+  const cv::Mat warm = TableRenderer(Straight(640, 360), p, o).Render(balls, 0.0);
+  int compared = 0;
+  for (int v = 0; v < white.rows; ++v) {
+    for (int u = 0; u < white.cols; ++u) {
+      for (int c = 0; c < 3; ++c) {
+        const int w = white.at<cv::Vec3b>(v, u)[c];
+        if (w == 255) continue;
+        ++compared;
+        ASSERT_NEAR(warm.at<cv::Vec3b>(v, u)[c], o.light_colour[c] * w, 1.5)
+            << u << ", " << v << " channel " << c;
+      }
+    }
+  }
+  EXPECT_GT(compared, 0.99 * 3 * white.total());
+  o.light_colour = {1.0f, -0.1f, 1.0f};
+  EXPECT_THROW(TableRenderer(Straight(64, 36), p, o), std::invalid_argument);
+}
+
 TEST(TableRenderer, NoiseIsReproducibleFromTheSeedAndHasTheAskedSigma) {
   const physics::ModelParameters p = Pool();
   RenderOptions o;

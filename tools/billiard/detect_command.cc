@@ -23,6 +23,7 @@
 #include "lcmtypes/image_codec.h"
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
+#include "tools/billiard/detect_options.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/image_files.h"
 
@@ -34,19 +35,6 @@ std::string Pixels(double px) {
   std::ostringstream text;
   text << std::fixed << std::setprecision(1) << px << " px";
   return text.str();
-}
-
-std::string ImageSize(int width, int height) {
-  return std::to_string(width) + "x" + std::to_string(height);
-}
-
-// A calibration maps the pixels of its own camera's frames: of another image size, it is another
-// camera's (or the frame was scaled), and every position it gave would be wrong.
-void RequireCalibrationOfThisSize(const camera::CameraModel& camera, const cv::Mat& image,
-                                  const std::string& calib) {
-  if (camera.width == image.cols && camera.height == image.rows) return;
-  throw UsageError("--calib: '" + calib + "' calibrates " + ImageSize(camera.width, camera.height) +
-                   " frames, the image is " + ImageSize(image.cols, image.rows));
 }
 
 // Says on stderr when the ball radius the calibration and --params predict is not that of the
@@ -68,16 +56,10 @@ void WarnIfTheBallRadiusDisagrees(double predicted_px, const cv::Mat& image) {
 }
 
 struct DetectArgs {
-  std::string image, calib, params = params::kDefaultParameterSet, overlay, ball_set;
+  std::string image, calib, params = params::kDefaultParameterSet, overlay, ball_set, ball_model;
   double ball_radius_px = 0;
   bool json = false;
 };
-
-estimator::BallSet BallSetOption(const std::string& name, const physics::ModelParameters& params) {
-  if (name.empty()) return estimator::BallSetOf(params.name);
-  if (const auto set = estimator::BallSetNamed(name)) return *set;
-  throw UsageError("--ball-set: '" + name + "' is none of " + estimator::kBallSetNames);
-}
 
 nlohmann::json Points(const std::array<Eigen::Vector2d, 4>& corners) {
   nlohmann::json list = nlohmann::json::array();
@@ -104,18 +86,11 @@ nlohmann::json TableJson(const estimator::TableRegion& table,
 
 void RunDetect(const DetectArgs& args) {
   const physics::ModelParameters params = LoadParametersOption(args.params);
-  std::optional<camera::CameraModel> camera;
-  if (!args.calib.empty()) {
-    try {
-      camera = camera::LoadCameraModel(args.calib);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--calib: ") + e.what());
-    }
-  }
-  RequireFinite(args.ball_radius_px, "--ball-radius-px");
-  if (args.ball_radius_px < 0) throw UsageError("--ball-radius-px: must be positive");
+  const std::optional<camera::CameraModel> camera = CalibrationOption(args.calib);
+  RequireBallRadiusOption(args.ball_radius_px);
   estimator::DetectorOptions options;
   options.ball_set = BallSetOption(args.ball_set, params);
+  if (!args.ball_model.empty()) UseBallModel(args.ball_model, args.ball_set, &options);
   const cv::Mat image = ReadImage(args.image);
   if (camera) RequireCalibrationOfThisSize(*camera, image, args.calib);
 
@@ -270,6 +245,9 @@ void AddDetectCommand(CLI::App& app) {
   cmd->add_option("--ball-set", args->ball_set,
                   "pool | snooker | carom | blackball (English pool's reds and yellows): the balls' "
                   "classes (default: --params' set)");
+  cmd->add_option("--ball-model", args->ball_model,
+                  "This rig's look of its balls (billiard learn-balls): names the balls by it "
+                  "instead of the hand-set colours; its ball set unless --ball-set");
   cmd->add_option("--overlay", args->overlay,
                   "Also write the frame with the table and the detections drawn on it (PNG or "
                   "JPEG)");

@@ -21,6 +21,7 @@
 #include "tools/billiard/edge_report_command.h"
 #include "tools/billiard/fit_contact_command.h"
 #include "tools/billiard/fit_shots_command.h"
+#include "tools/billiard/learn_balls_command.h"
 #include "tools/billiard/loop_command.h"
 #include "tools/billiard/node_status_command.h"
 #include "tools/billiard/plan_command.h"
@@ -92,6 +93,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddEdgeReportCommand(app);
   billiard::cli::AddDetectCommand(app);
   billiard::cli::AddCalibrateCommand(app);
+  billiard::cli::AddLearnBallsCommand(app);
   billiard::cli::AddBenchDetectCommand(app);
   billiard::cli::AddRackCommand(app);
   billiard::cli::AddBenchScenesCommand(app);
