@@ -111,6 +111,11 @@ nlohmann::json CandidateJson(const choice::Candidate& c) {
   return j;
 }
 
+nlohmann::json SafetyJson(const choice::SafetyStroke& s) {
+  return {{"target", s.target}, {"stroke", CueStrokeJson(s.stroke)}, {"win", s.win},
+          {"foul_rate", s.foul_rate}, {"samples", s.samples}};
+}
+
 void PrintChoice(const choice::ChoiceResult& r) {
   std::cerr << "choose-shot: " << choice::ChoiceStatusName(r.status);
   if (!r.reason.empty()) std::cerr << " (" << r.reason << ")";
@@ -125,6 +130,10 @@ void PrintChoice(const choice::ChoiceResult& r) {
               << pot::ShotKindName(c.plan.kind) << "): p " << c.reported().probability << " +- "
               << c.reported().stderr_ << ", next shot " << c.next_shot_value << ", score " << c.score
               << "\n";
+  }
+  if (r.safety) {
+    std::cerr << "  safety on ball " << r.safety->target << " at " << r.safety->stroke.speed
+              << " m/s: win " << r.safety->win << " against " << r.attempt_win << "\n";
   }
   std::cerr << "  " << r.candidates.size() << " candidates, " << r.simulations << " simulations, "
             << r.decision_us / 1000 << " ms\n";
@@ -156,6 +165,9 @@ nlohmann::json ChoiceJson(const choice::ChoiceResult& r) {
   for (const choice::Candidate& c : r.candidates) j["candidates"].push_back(CandidateJson(c));
   j["cue_placement"] = r.cue_placement ? Point(*r.cue_placement) : nlohmann::json(nullptr);
   if (r.fallback) j["fallback"] = CueStrokeJson(*r.fallback);
+  j["plays_safe"] = r.safety.has_value();
+  j["safety"] = r.safety ? SafetyJson(*r.safety) : nlohmann::json(nullptr);
+  j["attempt_win"] = r.attempt_win >= 0 ? nlohmann::json(r.attempt_win) : nlohmann::json(nullptr);
   j["simulations"] = r.simulations;
   j["decision_us"] = r.decision_us;
   return j;
@@ -177,6 +189,7 @@ nlohmann::json GameJson(const game::GameRecord& game) {
     j["kind"] = s.kind;
     j["predicted"] = s.predicted;
     j["likely"] = s.likely;
+    j["safety"] = s.safety;
     j["first_contact"] = s.first_contact;
     j["potted"] = s.potted;
     j["called_potted"] = s.called_potted;
@@ -280,7 +293,7 @@ void AddChooseShotCommand(CLI::App& app) {
     } else {
       PrintChoice(r);
     }
-    if (r.status != choice::ChoiceStatus::kOk) {
+    if (r.status != choice::ChoiceStatus::kOk && !r.safety) {
       throw Refused(std::string(choice::ChoiceStatusName(r.status)) + ": " + r.reason);
     }
   });
