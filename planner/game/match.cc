@@ -95,19 +95,6 @@ void Tally(const ShotRecord& rec, PlayerTally* tally) {
   tally->pots += rec.called_potted;
 }
 
-// Whether the safety shots[i] worked: the opponent's first shot after it fouled or had no
-// attempt above kSafetyWorkedBelow (no call, or a called pot of that probability or less); with
-// no shot of the opponent after it, whether its player won the rack.
-bool SafetyWorked(const RackResult& rack, std::size_t i) {
-  const int player = rack.shots[i].player;
-  for (std::size_t j = i + 1; j < rack.shots.size(); ++j) {
-    const ShotRecord& next = rack.shots[j];
-    if (next.player == player) continue;
-    return next.foul || next.ball < 0 || next.predicted <= kSafetyWorkedBelow;
-  }
-  return rack.winner == player;
-}
-
 }  // namespace
 
 RackResult PlayRack(const table::TableGeometry& table, const physics::ModelParameters& params,
@@ -164,6 +151,16 @@ MatchRecord PlayMatch(const table::TableGeometry& table, const physics::ModelPar
     match.racks.push_back(std::move(r));
   }
   return match;
+}
+
+bool SafetyWorked(const RackResult& rack, std::size_t i) {
+  const int player = rack.shots[i].player;
+  for (std::size_t j = i + 1; j < rack.shots.size(); ++j) {
+    const ShotRecord& next = rack.shots[j];
+    if (next.player == player) continue;
+    return next.foul || next.ball < 0 || next.predicted <= kSafetyWorkedBelow;
+  }
+  return rack.winner == player;
 }
 
 double Quantile(std::vector<double> values, double q) {

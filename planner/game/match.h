@@ -97,6 +97,11 @@ MatchRecord PlayMatch(const table::TableGeometry& table, const physics::ModelPar
                       const MatchOptions& options, batch::ThreadPool& pool,
                       const std::function<void(const RackResult&)>& progress = {});
 
+// Whether shot i of `rack`, a safety, worked: the opponent's first shot after it fouled or had
+// no attempt above kSafetyWorkedBelow (no call, or a called pot of that probability or less);
+// with no shot of the opponent after it, whether its player won the rack.
+bool SafetyWorked(const RackResult& rack, std::size_t i);
+
 // The value at fraction q (0 to 1) of `values` by nearest rank; 0 when empty.
 double Quantile(std::vector<double> values, double q);
 
