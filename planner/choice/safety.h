@@ -78,12 +78,14 @@ std::vector<SafetyCandidate> SafetyStrokes(double radius, const std::vector<tabl
 // the other group; else the same.
 rules::Rules OpponentRules(rules::Rules rules);
 
-// Our chance of winning the rack after `result`, a stroke played from `before` under
-// options.rules, by the model above. `call`: the attempt's ball and pocket, nothing for a safety.
+// An attempt's call: its ball and pocket.
 struct Call {
   int ball = -1;
   std::string pocket;
 };
+
+// Our chance of winning the rack after `result`, a stroke played from `before` under
+// options.rules, by the model above. `call`: the attempt's, nothing for a safety.
 double WinChance(const table::TableGeometry& table, double radius,
                  const std::vector<table::SceneBall>& before, const StrokeResult& result,
                  const std::optional<Call>& call, const ChoiceOptions& options);
