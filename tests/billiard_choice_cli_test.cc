@@ -44,6 +44,24 @@ TEST(BilliardChooseShot, PrintsTheChoiceUnderNineBallRules) {
   EXPECT_LE(c["next_shot_value"].get<double>(), 1.0);
 }
 
+// A long cut under the tournaments' noise whose miss leaves the 1 open: it plays safe and says
+// why, the safety's chance of winning above the attempt's; the nine-ball layout's pot it plays.
+TEST(BilliardChooseShot, PlaysSafeWhenThatWinsMoreRacksAndSaysWhy) {
+  const std::string scene = std::string(PROJECT_SOURCE_DIR) + "/tests/data/nine_ball_safety.json";
+  const std::string args = "choose-shot --scene " + scene + kFew +
+                           " --rules nine-ball --noise computational-pool --json";
+  const CommandResult r = Billiard(args);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json j = OneObject(r, args);
+  EXPECT_EQ(j["plays_safe"], true);
+  EXPECT_EQ(j["safety"]["target"], 1);
+  EXPECT_GT(j["safety"]["win"].get<double>(), j["attempt_win"].get<double>());
+  EXPECT_NE(j["reason"].get<std::string>().find("playing safe on ball 1"), std::string::npos);
+  const nlohmann::json pot = Choose("--rules nine-ball");
+  EXPECT_EQ(pot["plays_safe"], false);
+  EXPECT_TRUE(pot["safety"].is_null());
+}
+
 TEST(BilliardChooseShot, SameChoiceWhateverTheThreads) {
   nlohmann::json one = Choose("--rules nine-ball --threads 1");
   nlohmann::json two = Choose("--rules nine-ball --threads 2");

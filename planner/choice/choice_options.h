@@ -36,6 +36,14 @@ struct ChoiceOptions {
   int position_plans = 3;
   double position_radius = 0.15;  // [m]
   int placements = 3;             // ball in hand: the places chosen among (ball_in_hand.h)
+  // Safeties (safety.h), weighed only when the best pot's reported probability is below
+  // safety_below (or nothing plans): each candidate screened safety_screen_samples times on
+  // the closed form, the best safety_finalists and the attempt safety_samples times on the full
+  // model.
+  double safety_below = 0.6;
+  int safety_screen_samples = 8;
+  int safety_finalists = 3;
+  int safety_samples = 48;
   std::vector<pot::ShotKind> kinds = {pot::ShotKind::kDirect, pot::ShotKind::kBank,
                                       pot::ShotKind::kKick, pot::ShotKind::kCurve};
   pot::PotOptions pot;

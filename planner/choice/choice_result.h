@@ -27,6 +27,15 @@ enum class ChoiceStatus {
 };
 const char* ChoiceStatusName(ChoiceStatus status);  // "ok", "invalid", "no_target", "no_plan"
 
+// A defensive stroke (safety.h), played instead of the chosen pot: it calls nothing.
+struct SafetyStroke {
+  int target = -1;  // the legal ball it hits first
+  physics::CueStroke stroke;
+  double win = 0.0;              // its estimated chance of winning the rack
+  double foul_rate = 0.0;        // of its full-model executions
+  int samples = 0;               // its full-model executions
+};
+
 struct ChoiceResult {
   ChoiceStatus status = ChoiceStatus::kInvalid;
   std::string reason;            // why not, when not ok; when ok and !likely, that no shot is
@@ -36,13 +45,17 @@ struct ChoiceResult {
   // With kNoPlan: a stroke that at least hits the first legal target full in the face
   // (ghost-ball aim at the ball's centre, 2 m/s), so that a loop has something to play.
   std::optional<physics::CueStroke> fallback;
+  // Set when a safety was weighed against the best attempt (safety.h) and won: the stroke played.
+  std::optional<SafetyStroke> safety;
+  double attempt_win = -1.0;  // the best attempt's chance of winning the rack; -1 when not weighed
   double decision_us = 0.0;
   int simulations = 0;  // table simulations, plans and executions
 
   const Candidate* chosen() const { return candidates.empty() ? nullptr : &candidates.front(); }
-  // The stroke to play: the chosen pot's, else the fallback; nullptr when there is none (an
-  // invalid scene, an empty table).
+  // The stroke to play: the safety's when one was chosen, else the chosen pot's, else the
+  // fallback; nullptr when there is none (an invalid scene, an empty table).
   const physics::CueStroke* stroke() const {
+    if (safety) return &safety->stroke;
     if (chosen()) return &chosen()->plan.stroke;
     return fallback ? &*fallback : nullptr;
   }

@@ -89,6 +89,7 @@ void Tally(const ShotRecord& rec, PlayerTally* tally) {
   }
   if (rec.break_shot) return;
   tally->decisions_us.push_back(rec.decision_us);
+  tally->safeties += rec.safety;
   if (rec.ball < 0) return;
   ++tally->attempts;
   tally->pots += rec.called_potted;
@@ -125,6 +126,11 @@ RackResult PlayRack(const table::TableGeometry& table, const physics::ModelParam
         std::all_of(result.shots.begin(), result.shots.end(),
                     [&](const ShotRecord& s) { return s.player == result.breaker; });
   }
+  for (std::size_t i = 0; i < result.shots.size(); ++i) {
+    if (result.shots[i].safety) {
+      (*tallies)[result.shots[i].player].safeties_that_worked += SafetyWorked(result, i);
+    }
+  }
   return result;
 }
 
@@ -145,6 +151,16 @@ MatchRecord PlayMatch(const table::TableGeometry& table, const physics::ModelPar
     match.racks.push_back(std::move(r));
   }
   return match;
+}
+
+bool SafetyWorked(const RackResult& rack, std::size_t i) {
+  const int player = rack.shots[i].player;
+  for (std::size_t j = i + 1; j < rack.shots.size(); ++j) {
+    const ShotRecord& next = rack.shots[j];
+    if (next.player == player) continue;
+    return next.foul || next.ball < 0 || next.predicted <= kSafetyWorkedBelow;
+  }
+  return rack.winner == player;
 }
 
 double Quantile(std::vector<double> values, double q) {

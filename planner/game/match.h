@@ -39,6 +39,9 @@
 
 namespace billiard::game {
 
+// A safety worked when the opponent's next shot was no attempt above this probability.
+inline constexpr double kSafetyWorkedBelow = 0.5;
+
 struct MatchOptions {
   rules::Rules game = rules::Rules::kNineBall;  // kNineBall or kEightBall
   std::array<std::shared_ptr<const players::Player>, 2> players;
@@ -59,7 +62,10 @@ struct PlayerTally {
   int break_and_runs = 0;  // racks it broke and won with the other player never at the table
   int attempts = 0;        // shots calling a pot (the break is none)
   int pots = 0;            // of those, the called ball potted legally in the called pocket
-  int safeties = 0;        // defensive strokes played (none: no player plays one yet)
+  int safeties = 0;        // defensive strokes played (planner/choice/safety.h)
+  // Of those, the ones after which the opponent's next shot fouled or had no attempt above
+  // kSafetyWorkedBelow (its own reported probability); a rack won before the opponent shot
+  // again counts too.
   int safeties_that_worked = 0;
   int fouls = 0;
   std::map<std::string, int> foul_reasons;  // the fouls by the rules' reason
@@ -90,6 +96,11 @@ RackResult PlayRack(const table::TableGeometry& table, const physics::ModelParam
 MatchRecord PlayMatch(const table::TableGeometry& table, const physics::ModelParameters& params,
                       const MatchOptions& options, batch::ThreadPool& pool,
                       const std::function<void(const RackResult&)>& progress = {});
+
+// Whether shot i of `rack`, a safety, worked: the opponent's first shot after it fouled or had
+// no attempt above kSafetyWorkedBelow (no call, or a called pot of that probability or less);
+// with no shot of the opponent after it, whether its player won the rack.
+bool SafetyWorked(const RackResult& rack, std::size_t i);
 
 // The value at fraction q (0 to 1) of `values` by nearest rank; 0 when empty.
 double Quantile(std::vector<double> values, double q);

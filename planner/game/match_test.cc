@@ -142,9 +142,39 @@ TEST_F(MatchTest, IdenticalWhateverTheThreads) {
     EXPECT_EQ(x.pocket, y.pocket);
     EXPECT_EQ(x.potted, y.potted);
     EXPECT_EQ(x.predicted, y.predicted);
+    EXPECT_EQ(x.safety, y.safety);
     EXPECT_EQ(x.cue_placement.has_value(), y.cue_placement.has_value());
   }
   EXPECT_EQ(a.racks[0].winner, b.racks[0].winner);
+}
+
+// A shot of `player`: a safety, a foul, an attempt of probability `predicted` (-1: no call).
+ShotRecord Shot(int player, bool safety, bool foul, double predicted) {
+  ShotRecord s;
+  s.player = player;
+  s.safety = safety;
+  s.foul = foul;
+  s.predicted = predicted;
+  s.ball = predicted < 0 ? -1 : 1;
+  return s;
+}
+
+// A safety worked when the opponent's next shot fouled or attempted nothing above 50 %, the
+// shooter's own shots after it (a pot on the safety kept the table) passed over.
+TEST(SafetyWorkedTest, JudgedOnTheOpponentsNextShot) {
+  RackResult rack;
+  rack.winner = 1;
+  rack.shots = {Shot(0, true, false, -1), Shot(1, false, false, 0.8),   // an easy shot left
+                Shot(1, true, false, -1), Shot(0, false, false, 0.4),   // a hard one left
+                Shot(0, true, false, -1), Shot(1, false, true, 0.9),    // they fouled
+                Shot(1, true, false, -1), Shot(1, false, false, 0.9),   // kept the table ...
+                Shot(0, false, false, 0.5),                             // ... then 50 %
+                Shot(0, true, false, -1)};                              // the rack's last shot
+  EXPECT_FALSE(SafetyWorked(rack, 0));
+  EXPECT_TRUE(SafetyWorked(rack, 2));
+  EXPECT_TRUE(SafetyWorked(rack, 4));
+  EXPECT_TRUE(SafetyWorked(rack, 6));
+  EXPECT_FALSE(SafetyWorked(rack, 9));  // no reply, and player 0 lost the rack
 }
 
 TEST(QuantileTest, NearestRank) {

@@ -44,12 +44,13 @@ std::optional<physics::CueStroke> PlayerStroke(const players::Player& player,
     rec->cue_placement = decided.cue_placement;
     *balls = choice::WithCueBallAt(*balls, *decided.cue_placement);
   }
-  if (const choice::Candidate* c = decided.chosen()) {
+  rec->safety = decided.safety.has_value();
+  rec->likely = decided.likely;
+  if (const choice::Candidate* c = decided.chosen(); c && !rec->safety) {
     rec->ball = c->plan.ball;
     rec->pocket = c->plan.pocket;
     rec->kind = pot::ShotKindName(c->plan.kind);
     rec->predicted = c->finalist ? c->reported().probability : -1.0;
-    rec->likely = decided.likely;
   }
   if (const physics::CueStroke* stroke = decided.stroke()) return *stroke;
   return std::nullopt;

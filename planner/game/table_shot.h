@@ -45,6 +45,7 @@ struct ShotRecord {
   std::string pocket;
   std::string kind;
   double predicted = -1.0;  // the choice's probability, -1 when it has none
+  bool safety = false;      // a safety played (planner/choice/safety.h): no call
   bool likely = false;
   int first_contact = -1;
   std::vector<int> potted;  // object balls dropped, in id order

@@ -55,8 +55,9 @@ choice::ChoiceOptions ChoiceOptionsFor(const shot_request_t& q, const PlannerNod
   return options;
 }
 
-// The choice into `c`: the pot chosen with its confirmed probability, or the fallback stroke;
-// the cue ball's placement with ball in hand; refused as the choice refused.
+// The choice into `c`: the pot chosen with its confirmed probability, or the safety's or the
+// fallback's stroke (no call); the cue ball's placement with ball in hand; refused as the choice
+// refused.
 cue_command_t WriteChoice(const choice::ChoiceResult& result,
                           const std::unordered_map<int, int32_t>& message_id, cue_command_t c) {
   switch (result.status) {
@@ -73,14 +74,15 @@ cue_command_t WriteChoice(const choice::ChoiceResult& result,
     c.start[0] = c.cue_placement[0] = result.cue_placement->x();
     c.start[1] = c.cue_placement[1] = result.cue_placement->y();
   }
-  if (const choice::Candidate* chosen = result.chosen()) {
+  // A safety calls nothing: its stroke is written as the fallback's is.
+  if (const choice::Candidate* chosen = result.safety ? nullptr : result.chosen()) {
     WritePot(chosen->plan, message_id, &c);
     c.object_ball_id = message_id.at(chosen->plan.ball);
     c.pocket = chosen->plan.pocket;
     c.success_probability = chosen->reported().probability;
     c.probability_stderr = chosen->reported().stderr_;
-  } else {  // kNoPlan: the fallback, which at least hits the first legal ball
-    const physics::CueStroke& s = *result.fallback;
+  } else {  // a safety, or kNoPlan's fallback, which at least hits the first legal ball
+    const physics::CueStroke& s = *result.stroke();
     c.cue_speed = s.speed;
     c.heading = s.heading;
     c.tip_side = s.tip_side;

@@ -1,6 +1,9 @@
 #include "planner/players/ours_player.h"
 
+#include <chrono>
+
 #include "planner/choice/ball_in_hand.h"
+#include "planner/choice/safety.h"
 #include "planner/choice/shot_choice.h"
 
 namespace billiard::players {
@@ -19,10 +22,15 @@ choice::ChoiceResult Choose(const Turn& turn, const choice::ChoiceOptions& optio
 
 choice::ChoiceResult Ours::Decide(const Turn& turn, const choice::ChoiceOptions& options,
                                   batch::ThreadPool& pool) const {
-  if (lookahead_) return Choose(turn, options, pool);
-  choice::ChoiceOptions without = options;
-  without.lookahead = false;
-  return Choose(turn, without, pool);
+  const auto start = std::chrono::steady_clock::now();
+  choice::ChoiceOptions played = options;
+  played.lookahead = lookahead_ && options.lookahead;
+  choice::ChoiceResult result = Choose(turn, played, pool);
+  if (safeties_ && !turn.constraints.ball_in_hand) {
+    choice::ConsiderSafety(turn.table, turn.params, turn.balls, played, pool, &result);
+    result.decision_us = choice::MicrosecondsSince(start);
+  }
+  return result;
 }
 
 }  // namespace billiard::players

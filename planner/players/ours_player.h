@@ -2,7 +2,11 @@
 // one-shot lookahead (as ChoiceOptions::lookahead says), and with ball in hand the cue ball
 // placed where it scores best (ball_in_hand.h).
 //
-// "ours-no-safety": ours without safeties; the same player as "ours" until safeties exist.
+// With safeties ("ours"): when the best pot's probability is below
+// ChoiceOptions::safety_below, or nothing plans, the best safety weighed against it on the
+// chance of winning the rack (planner/choice/safety.h), and played when that is the higher;
+// not with ball in hand (a placement is chosen for a pot). "ours-no-safety": the same player
+// without safeties, the round-3 chooser a match measures them against (issue 48).
 //
 // Ours(false), "no-lookahead": the same choice scoring each pot by its probability alone, p
 // rather than p (1 + v) (the lookahead off whatever the options say, and with it position
@@ -17,16 +21,19 @@ namespace billiard::players {
 
 class Ours final : public Player {
  public:
-  explicit Ours(bool lookahead = true) : Ours(lookahead, lookahead ? "ours" : "no-lookahead") {}
-  // `name` for the same player under another name: "ours-no-safety", the player a match with
-  // safeties is measured against (issue 48), the same as "ours" until ours plays safeties.
-  Ours(bool lookahead, const char* name) : lookahead_(lookahead), name_(name) {}
+  // "ours" with the lookahead and safeties; "no-lookahead" without either.
+  explicit Ours(bool lookahead = true)
+      : Ours(lookahead, lookahead, lookahead ? "ours" : "no-lookahead") {}
+  // The player named `name`, with or without the lookahead and safeties ("ours-no-safety").
+  Ours(bool lookahead, bool safeties, const char* name)
+      : lookahead_(lookahead), safeties_(safeties), name_(name) {}
   const char* Name() const override { return name_; }
   choice::ChoiceResult Decide(const Turn& turn, const choice::ChoiceOptions& options,
                               batch::ThreadPool& pool) const override;
 
  private:
   bool lookahead_;
+  bool safeties_;
   const char* name_;
 };
 

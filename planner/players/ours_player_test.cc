@@ -5,6 +5,7 @@
 #include "planner/choice/ball_in_hand.h"
 #include "planner/choice/shot_choice.h"
 #include "planner/choice/testing/choice_test.h"
+#include "planner/players/players.h"
 #include "sim/rules/rules.h"
 
 namespace billiard::players {
@@ -46,6 +47,27 @@ TEST_F(OursTest, WithoutTheLookaheadScoresByTheProbabilityAlone) {
   }
   options.lookahead = false;
   ExpectSameChoice(r, choice::ChooseShot(table_, params_, balls, options, pool));
+}
+
+// With the pot unlikely (a long cut under the tournaments' noise, a miss leaving the 1 in the
+// open) ours plays safe; ours-no-safety, the same player without safeties, plays the pot.
+TEST_F(OursTest, OursPlaysSafeWhereOursNoSafetyAttempts) {
+  const double l = table_.length, w = table_.width;
+  const std::vector<table::SceneBall> balls = {
+      table::AtRest(0, 0.6, w / 2), table::AtRest(1, l - 0.6, w / 2), table::AtRest(9, l - 0.4, 0.3)};
+  choice::ChoiceOptions options = QuickChoice();
+  options.rules = rules::Rules::kNineBall;
+  options.noise = params::LoadNoise("computational-pool");
+  options.safety_screen_samples = 4;
+  options.safety_samples = 16;
+  const Turn turn{table_, params_, balls, {false, rules::LegalTargets(options.rules, balls)}};
+  batch::ThreadPool pool(2);
+  const choice::ChoiceResult safe = MakePlayer("ours")->Decide(turn, options, pool);
+  ASSERT_TRUE(safe.safety) << safe.reason;
+  EXPECT_EQ(safe.stroke(), &safe.safety->stroke);
+  const choice::ChoiceResult attempt = MakePlayer(kOursNoSafety)->Decide(turn, options, pool);
+  EXPECT_FALSE(attempt.safety);
+  ExpectSameChoice(attempt, choice::ChooseShot(table_, params_, balls, options, pool));
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ std::vector<std::string> PlayerNames() {
 
 std::unique_ptr<Player> MakePlayer(const std::string& name) {
   if (name == Ours().Name()) return std::make_unique<Ours>();
-  if (name == kOursNoSafety) return std::make_unique<Ours>(true, kOursNoSafety);
+  if (name == kOursNoSafety) return std::make_unique<Ours>(true, false, kOursNoSafety);
   if (name == Ours(false).Name()) return std::make_unique<Ours>(false);
   if (name == EasiestLooking().Name()) return std::make_unique<EasiestLooking>();
   std::string known;

@@ -14,8 +14,8 @@ namespace billiard::players {
 // "ours", "no-lookahead", "easiest-looking", in that order: the players, each once.
 std::vector<std::string> PlayerNames();
 
-// The name "ours" also goes by in a match against a player with safeties: the same player until
-// ours plays safeties (issue 48). MakePlayer makes it; PlayerNames does not list it twice.
+// "ours" without safeties (issue 48's baseline for them): MakePlayer makes it; PlayerNames
+// lists the three kinds of player.
 inline constexpr char kOursNoSafety[] = "ours-no-safety";
 
 // The player named `name` (one of PlayerNames, or kOursNoSafety); throws std::invalid_argument naming it and the known ones otherwise.

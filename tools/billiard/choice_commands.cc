@@ -115,26 +115,38 @@ nlohmann::json CandidateJson(const choice::Candidate& c) {
   return j;
 }
 
+nlohmann::json SafetyJson(const choice::SafetyStroke& s) {
+  return {{"target", s.target}, {"stroke", CueStrokeJson(s.stroke)}, {"win", s.win},
+          {"foul_rate", s.foul_rate}, {"samples", s.samples}};
+}
+
 // The choice as a player reads it: the call and the stroke to play (in degrees, mm and m/s), then
 // the finalists it was chosen from. A refusal's reason is the line main() prints for exit 3.
 void PrintChoice(const choice::ChoiceResult& r) {
   const choice::Candidate* chosen = r.chosen();
-  if (!chosen) {
+  if (r.safety) {
+    std::cerr << "choose-shot: safety on ball " << r.safety->target
+              << ", chance of winning the rack " << Fixed(r.safety->win, 2) << " against "
+              << Fixed(r.attempt_win, 2) << " attempting (" << r.reason << ")\n"
+              << "  cue     " << StrokeInWords(r.safety->stroke) << "\n";
+  } else if (chosen) {
+    std::cerr << "choose-shot: ball " << chosen->plan.ball << " in " << chosen->plan.pocket
+              << " (" << pot::ShotKindName(chosen->plan.kind) << "), p "
+              << Fixed(chosen->reported().probability, 2)
+              << (r.likely ? "" : " (" + r.reason + ")") << "\n";
+    if (r.cue_placement) {
+      std::cerr << "  cue ball in hand at " << Fixed(r.cue_placement->x(), 3) << ", "
+                << Fixed(r.cue_placement->y(), 3) << " m\n";
+    }
+    std::cerr << "  cue     " << StrokeInWords(chosen->plan.stroke) << "\n";
+  } else {
     if (r.fallback) {
       std::cerr << "choose-shot: no pot plans; the fallback, the first legal ball hit full: "
                 << StrokeInWords(*r.fallback) << "\n";
     }
     return;
   }
-  std::cerr << "choose-shot: ball " << chosen->plan.ball << " in " << chosen->plan.pocket << " ("
-            << pot::ShotKindName(chosen->plan.kind) << "), p "
-            << Fixed(chosen->reported().probability, 2) << (r.likely ? "" : " (" + r.reason + ")")
-            << "\n";
-  if (r.cue_placement) {
-    std::cerr << "  cue ball in hand at " << Fixed(r.cue_placement->x(), 3) << ", "
-              << Fixed(r.cue_placement->y(), 3) << " m\n";
-  }
-  std::cerr << "  cue     " << StrokeInWords(chosen->plan.stroke) << "\n  finalists\n";
+  std::cerr << "  finalists\n";
   for (const choice::Candidate& c : r.candidates) {
     if (!c.finalist) continue;
     std::cerr << "    ball " << c.plan.ball << " in " << c.plan.pocket << " ("
@@ -193,6 +205,9 @@ nlohmann::json ChoiceJson(const choice::ChoiceResult& r) {
   for (const choice::Candidate& c : r.candidates) j["candidates"].push_back(CandidateJson(c));
   j["cue_placement"] = r.cue_placement ? Point(*r.cue_placement) : nlohmann::json(nullptr);
   if (r.fallback) j["fallback"] = CueStrokeJson(*r.fallback);
+  j["plays_safe"] = r.safety.has_value();
+  j["safety"] = r.safety ? SafetyJson(*r.safety) : nlohmann::json(nullptr);
+  j["attempt_win"] = r.attempt_win >= 0 ? nlohmann::json(r.attempt_win) : nlohmann::json(nullptr);
   j["simulations"] = r.simulations;
   j["decision_us"] = r.decision_us;
   return j;
@@ -214,6 +229,7 @@ nlohmann::json GameJson(const game::GameRecord& game) {
     j["kind"] = s.kind;
     j["predicted"] = s.predicted;
     j["likely"] = s.likely;
+    j["safety"] = s.safety;
     j["first_contact"] = s.first_contact;
     j["potted"] = s.potted;
     j["called_potted"] = s.called_potted;
@@ -321,10 +337,10 @@ void AddChooseShotCommand(CLI::App& app) {
     } else {
       PrintChoice(r);
     }
-    if (!args->scene_out.empty() && r.status == choice::ChoiceStatus::kOk) {
+    if (!args->scene_out.empty() && (r.status == choice::ChoiceStatus::kOk || r.safety)) {
       WriteSceneAfter(s, r, args->scene_out);
     }
-    if (r.status != choice::ChoiceStatus::kOk) {
+    if (r.status != choice::ChoiceStatus::kOk && !r.safety) {
       throw Refused(std::string(choice::ChoiceStatusName(r.status)) + ": " + r.reason);
     }
   });

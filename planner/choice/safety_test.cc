@@ -1,0 +1,152 @@
+#include "planner/choice/safety.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "planner/choice/shot_choice.h"
+#include "planner/choice/testing/choice_test.h"
+
+namespace billiard::choice {
+namespace {
+
+class SafetyTest : public testing::ChoiceTest {
+ protected:
+  // A quick nine-ball choice under the tournaments' noise, its safety search small.
+  static ChoiceOptions NineBall() {
+    ChoiceOptions options = QuickChoice();
+    options.rules = Rules::kNineBall;
+    options.noise = params::LoadNoise("computational-pool");
+    options.safety_screen_samples = 4;
+    options.safety_finalists = 2;
+    options.safety_samples = 16;
+    return options;
+  }
+  // The choice of `balls`, weighed against a safety.
+  ChoiceResult Decide(const std::vector<table::SceneBall>& balls, const ChoiceOptions& options,
+                      int threads) const {
+    batch::ThreadPool pool(threads);
+    ChoiceResult r = ChooseShot(table_, params_, balls, options, pool);
+    ConsiderSafety(table_, params_, balls, options, pool, &r);
+    return r;
+  }
+  // The 1 at the far end across the table's width from the cue ball, the 9 beside its corner:
+  // a long cut the noise makes unlikely, whose miss leaves the 1 in the open.
+  std::vector<table::SceneBall> LongCut() const {
+    const double l = table_.length, w = table_.width;
+    return {table::AtRest(0, 0.6, w / 2), table::AtRest(1, l - 0.6, w / 2),
+            table::AtRest(9, l - 0.4, 0.3)};
+  }
+  // The 1 a short roll from the corner pocket straight ahead, the 9 at the other end.
+  std::vector<table::SceneBall> Sitter() const {
+    const double l = table_.length, w = table_.width;
+    return {table::AtRest(0, l - 0.5, 0.3), table::AtRest(1, l - 0.3, 0.3),
+            table::AtRest(9, 0.4, w - 0.4)};
+  }
+  // A stroke that hit ball `first` and left `rest`.
+  static StrokeResult Hit(int first, std::vector<table::SceneBall> rest) {
+    StrokeResult r;
+    r.struck = true;
+    r.first_contact = first;
+    r.rest = std::move(rest);
+    return r;
+  }
+};
+
+// The rules' fouls: a wrong first ball, a scratch, no ball to a rail or a pocket after contact.
+TEST_F(SafetyTest, FoulsAsTheRulesSay) {
+  const auto balls = LongCut();
+  StrokeResult r = Hit(1, balls);
+  EXPECT_TRUE(Fouls(balls, r, Rules::kNineBall));  // no rail after contact
+  r.to_rail_after_contact = {1};
+  EXPECT_FALSE(Fouls(balls, r, Rules::kNineBall));
+  r.first_contact = 9;
+  EXPECT_TRUE(Fouls(balls, r, Rules::kNineBall));  // the 9 before the 1
+  EXPECT_FALSE(Fouls(balls, r, Rules::kAny));
+  r.first_contact = 1;
+  r.scratch = true;
+  EXPECT_TRUE(Fouls(balls, r, Rules::kNineBall));
+  r = Hit(1, balls);
+  r.pocketed = {{1, "upper_right"}};
+  EXPECT_FALSE(Fouls(balls, r, Rules::kNineBall));  // a pot needs no rail
+}
+
+// The scale's known ends: a foul that drops the 9 hands the opponent the rack (0); a legal
+// nine-ball pot of the 9 wins it (1); under eight-ball an uncalled 8 loses it (0).
+TEST_F(SafetyTest, WinChanceAtTheEndsOfTheRack) {
+  const auto balls = LongCut();
+  const std::vector<table::SceneBall> without_nine(balls.begin(), balls.begin() + 2);
+  StrokeResult r = Hit(1, without_nine);
+  r.pocketed = {{9, "lower_right"}};
+  const ChoiceOptions nine = NineBall();
+  EXPECT_EQ(WinChance(table_, params_.ball.radius, balls, r, std::nullopt, nine), 1.0);
+  r.scratch = true;
+  EXPECT_EQ(WinChance(table_, params_.ball.radius, balls, r, std::nullopt, nine), 0.0);
+  ChoiceOptions eight = nine;
+  eight.rules = Rules::kEightBallSolids;
+  std::vector<table::SceneBall> eight_balls = balls;
+  eight_balls[2].id = 8;
+  r = Hit(1, {eight_balls[0], eight_balls[1]});
+  r.pocketed = {{8, "lower_right"}};
+  EXPECT_EQ(WinChance(table_, params_.ball.radius, eight_balls, r, std::nullopt, eight), 0.0);
+  EXPECT_EQ(OpponentRules(Rules::kEightBallSolids), Rules::kEightBallStripes);
+  EXPECT_EQ(OpponentRules(Rules::kNineBall), Rules::kNineBall);
+}
+
+// Every candidate heads into the legal ball (its line passes within a ball's width of the
+// centre), on the grid of thicknesses and speeds; under eight-ball only the nearest targets.
+TEST_F(SafetyTest, CandidatesHitTheLegalBall) {
+  const auto balls = LongCut();
+  const double r = params_.ball.radius;
+  const std::vector<SafetyCandidate> nine = SafetyStrokes(r, balls, Rules::kNineBall);
+  ASSERT_EQ(nine.size(), 28u);
+  const double d = table_.length - 1.2;  // the 1 straight along +x from the cue ball
+  for (const SafetyCandidate& c : nine) {
+    EXPECT_EQ(c.target, 1);
+    EXPECT_LT(std::abs(std::sin(c.stroke.heading)) * d, 2 * r);
+    EXPECT_GT(std::cos(c.stroke.heading), 0);
+  }
+  const std::vector<SafetyCandidate> any = SafetyStrokes(r, balls, Rules::kAny);
+  EXPECT_EQ(any.size(), 28u * kSafetyTargets);
+}
+
+// A long cut the noise makes unlikely, its miss leaving the 1 in the open: a safety is played,
+// hitting the 1 and seldom fouling, and it wins more racks than the attempt by the estimate.
+TEST_F(SafetyTest, UnlikelyPotPlaysSafe) {
+  const ChoiceResult r = Decide(LongCut(), NineBall(), 2);
+  ASSERT_EQ(r.status, ChoiceStatus::kOk);
+  ASSERT_LT(r.chosen()->reported().probability, NineBall().safety_below);
+  ASSERT_TRUE(r.safety);
+  EXPECT_EQ(r.safety->target, 1);
+  EXPECT_LT(r.safety->foul_rate, 0.25);
+  EXPECT_GT(r.safety->win, r.attempt_win);
+  EXPECT_EQ(r.stroke(), &r.safety->stroke);
+  EXPECT_NE(r.reason.find("playing safe"), std::string::npos);
+}
+
+// A sitter: with the search forced the attempt still wins on the scale; by default no search.
+TEST_F(SafetyTest, SitterIsAttempted) {
+  ChoiceOptions forced = NineBall();
+  forced.safety_below = 2.0;
+  const ChoiceResult searched = Decide(Sitter(), forced, 2);
+  ASSERT_EQ(searched.status, ChoiceStatus::kOk);
+  EXPECT_FALSE(searched.safety);
+  EXPECT_GT(searched.attempt_win, 0.9);
+  const ChoiceResult plain = Decide(Sitter(), NineBall(), 2);
+  EXPECT_FALSE(plain.safety);
+  EXPECT_EQ(plain.attempt_win, -1.0);  // not weighed: the pot is likely
+}
+
+// The same verdict on one thread as on three.
+TEST_F(SafetyTest, SameVerdictWhateverTheThreads) {
+  const ChoiceResult one = Decide(LongCut(), NineBall(), 1);
+  const ChoiceResult three = Decide(LongCut(), NineBall(), 3);
+  ASSERT_TRUE(one.safety && three.safety);
+  EXPECT_EQ(one.safety->stroke.heading, three.safety->stroke.heading);
+  EXPECT_EQ(one.safety->stroke.speed, three.safety->stroke.speed);
+  EXPECT_EQ(one.safety->win, three.safety->win);
+  EXPECT_EQ(one.attempt_win, three.attempt_win);
+}
+
+}  // namespace
+}  // namespace billiard::choice
