@@ -32,6 +32,7 @@ struct BenchBreakArgs {
   int samples = 400;
   std::uint64_t seed = 1;
   int threads = batch::DefaultThreadCount();
+  std::vector<double> given;  // --break: offset, aim, speed, tip
   bool search = false;
   int search_samples = 200;
   int rounds = 2;
@@ -76,6 +77,12 @@ void Report(const std::string& name, const nlohmann::json& j) {
             << " of " << j["samples"].get<int>() << " racks" << std::endl;
 }
 
+// --break's four numbers as a break.
+game::Break BreakOf(const std::vector<double>& v) {
+  for (double x : v) RequireFinite(x, "--break");
+  return {v[0], v[1], v[2], v[3]};
+}
+
 void Run(const BenchBreakArgs& args) {
   const rules::Rules game = GameOf(args.game);
   params::ExecutionNoise noise;
@@ -95,6 +102,7 @@ void Run(const BenchBreakArgs& args) {
   const game::BreakSetting setting{table, params, game, noise, model_choice::TableMotion(params)};
   batch::ThreadPool pool(args.threads);
   game::Break optimised = game::StoredBreak(game);
+  if (!args.given.empty()) optimised = BreakOf(args.given);
   nlohmann::json j = {
       {"game", args.game}, {"noise", args.noise}, {"robot", robot.name}, {"seed", args.seed}};
   if (args.search) {
@@ -103,7 +111,8 @@ void Run(const BenchBreakArgs& args) {
     options.samples = args.search_samples;
     options.rounds = args.rounds;
     options.seed = args.seed + kSearchSeedOffset;
-    const game::BreakSearchResult found = game::SearchBreak(setting, game::Break{}, options, pool);
+    const game::BreakSearchResult found =
+        game::SearchBreak(setting, args.given.empty() ? game::Break{} : optimised, options, pool);
     optimised = found.best;
     j["search"] = {{"candidates", found.candidates},
                    {"samples", options.samples},
@@ -116,7 +125,10 @@ void Run(const BenchBreakArgs& args) {
   j["today"] = BreakJson(game::Break{}, rates[0]);
   j["optimised"] = BreakJson(optimised, rates[1]);
   Report("today's break", j["today"]);
-  Report(args.search ? "searched break" : "stored break", j["optimised"]);
+  Report(args.search          ? "searched break"
+         : args.given.empty() ? "stored break"
+                              : "given break",
+         j["optimised"]);
   if (args.json) std::cout << j.dump() << std::endl;
 }
 
@@ -143,6 +155,12 @@ void AddBenchBreakCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Threads (the results do not depend on them)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--break", args->given,
+                  "A break to measure instead of the stored one (with --search, the search's "
+                  "start): the cue ball's offset from the long axis [m], the aim [ball "
+                  "radii], the speed [m/s], the tip height [ball radii]")
+      ->expected(4)
+      ->delimiter(',');
   cmd->add_flag("--search", args->search,
                 "Search the break again (on racks seeded apart from the measured ones)");
   cmd->add_option("--search-samples", args->search_samples, "Racks each candidate is played on")
