@@ -16,6 +16,7 @@
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
 #include "tools/billiard/command_line.h"
+#include "tools/billiard/match_command.h"
 #include "tools/billiard/scene_commands.h"
 
 namespace billiard::cli {
@@ -38,12 +39,6 @@ struct BenchBreakArgs {
   int rounds = 2;
   bool json = false;
 };
-
-rules::Rules GameOf(const std::string& name) {
-  if (name == "nine-ball") return rules::Rules::kNineBall;
-  if (name == "eight-ball") return rules::Rules::kEightBall;
-  throw UsageError("--game: unknown game '" + name + "' (nine-ball, eight-ball)");
-}
 
 nlohmann::json RateJson(int count, int samples) {
   const game::Interval i = game::WilsonInterval(count, samples);
