@@ -10,18 +10,18 @@
 // The objective is P(the breaker keeps the table) - P(scratch). Only a legal break with a pot
 // keeps the table (WPA Rules of Play, Break Shot; the computational pool's eight-ball the same):
 // a legal break that pots nothing hands the opponent the balls where they lie, and a scratch (a
-// foul, as is an illegal break) hands them ball in hand anywhere, which to a player potting 90 %
-// from ball in hand (docs/match.md) is close to the rack. So a kept table scores 1, a dry break
-// 0 and a scratch -1; at an equal score the lower scratch rate wins. Maximising the kept rate
-// alone finds breaks that keep it more often at the price of three times the scratches.
+// foul, as is an illegal break) hands them ball in hand anywhere, which to a player who pots
+// most shots from ball in hand is close to the rack. So a kept table scores 1, a dry break 0 and
+// a scratch -1; at an equal score the lower scratch rate wins. The kept rate alone would rank a
+// break that pots one rack more in a hundred and scratches five more above it.
 //
 // The search: a coordinate search on grids (each parameter in turn swept over its grid with the
 // others held, the best kept; `rounds` passes), every candidate scored on the same seeded racks
 // and noise draws (common random numbers: candidates differ by their strokes, not their luck).
-// CueCard's break was optimised offline the same way, by noisy simulation over its parameters
+// CueCard, winner of the 2008 Computer Olympiad, credits its win in part to an optimised break
 // (Archibald, Altman and Shoham 2009, "Analysis of a winning computational billiards player",
-// IJCAI); this is a small version of that search, run once per game and noise and kept as data
-// (`StoredBreak`), since a search of 50 candidates on 200 racks takes minutes on two cores.
+// IJCAI); this is a search of that kind, run once per game and noise and kept as data
+// (`StoredBreak`), since 60 candidates on 200 racks take minutes on two cores.
 //
 // Sample s of a run seeded `seed` is rack s of a match seeded `seed` (match.h): its rack seeded
 // SampleSeed(seed, s), its noise drawn as that rack's first shot's, so a break's figures here are
