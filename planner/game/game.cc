@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "planner/choice/monte_carlo.h"
+#include "planner/choice/scene_balls.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/rules/rules.h"
 
@@ -76,7 +77,8 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
     if (options.break_shot && n == 0 && !ball_in_hand) {
       rec.break_shot = true;
       rec.status = "break";
-      stroke = BreakStroke(balls, options.break_speed);
+      stroke = SetUpBreak(table, params.ball.radius, options.opening, &balls);
+      rec.cue_placement = choice::Position(balls.front());
     } else {
       stroke = PlayerStroke(*options.player, {table, params, balls, constraints}, options.choice,
                             choice::SampleSeed(options.choice.seed, static_cast<std::uint64_t>(n)),

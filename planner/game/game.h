@@ -31,6 +31,7 @@
 
 #include "planner/choice/choice_options.h"
 #include "planner/choice/monte_carlo.h"
+#include "planner/game/break_search.h"
 #include "planner/game/table_shot.h"
 #include "planner/players/player.h"
 #include "planner/players/players.h"
@@ -50,10 +51,10 @@ struct GameOptions {
   std::uint64_t seed = 1;
   int shot_limit = 40;
   bool ball_in_hand = false;  // the first shot with ball in hand (a drill, or after a break foul)
-  // The opening break instead: the cue ball from where it is, rolling at the nearest ball at
-  // break_speed (the table simulator's break).
+  // The opening break instead (a nine-ball rack's): the cue ball placed on the head string and
+  // struck as `opening` says (break_search.h).
   bool break_shot = false;
-  double break_speed = 5.0;  // [m/s]
+  Break opening = StoredBreak(rules::Rules::kNineBall);
   bool single_visit = false;  // stop when the first visit ends (a run-out drill)
 };
 

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "planner/choice/monte_carlo.h"
+#include "planner/choice/scene_balls.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/rules/rack_state.h"
 #include "sim/table/rack.h"
@@ -23,11 +24,6 @@ struct RackContext {
   std::uint64_t seed;  // the rack's
 };
 
-table::RackKind RackOf(rules::Rules game) {
-  return game == rules::Rules::kEightBall ? table::RackKind::kEightBall
-                                          : table::RackKind::kNineBall;
-}
-
 // Whether `shot` potted its called ball in the called pocket.
 bool CalledBallPotted(const rules::Shot& shot) {
   for (std::size_t i = 0; i < shot.potted.size(); ++i) {
@@ -45,7 +41,11 @@ std::optional<physics::CueStroke> StrokeOf(const RackContext& c, int n,
   if (state.shots == 0) {
     rec->break_shot = true;
     rec->status = "break";
-    return BreakStroke(*balls, c.options.break_speed);
+    const physics::CueStroke stroke =
+        SetUpBreak(c.table, c.params.ball.radius,
+                   c.options.opening.value_or(StoredBreak(c.options.game)), balls);
+    rec->cue_placement = choice::Position(balls->front());
+    return stroke;
   }
   choice::ChoiceOptions choice = c.options.choice;
   choice.rules = state.rules[state.shooter];
@@ -106,7 +106,7 @@ RackResult PlayRack(const table::TableGeometry& table, const physics::ModelParam
   result.rack = rack;
   result.breaker = rack % 2;
   std::vector<table::SceneBall> balls =
-      table::Rack(RackOf(options.game), table, params.ball.radius, c.seed);
+      table::Rack(RackKindOf(options.game), table, params.ball.radius, c.seed);
   rules::RackState state = rules::NewRack(options.game, result.breaker);
   result.reason = "shot limit";
   for (int n = 0; n < options.shot_limit && !state.over; ++n) {

@@ -6,8 +6,9 @@
 // its shot (rules::NextConstraints) and decides, and under eight-ball its chosen pot's ball and
 // pocket are its call.
 //
-// The break is the game's (BreakStroke: the cue ball from the head spot rolling at the apex at
-// break_speed), whoever breaks; the players decide every other shot. A scratch leaves the cue
+// The break is the game's (MatchOptions::opening, else the optimised StoredBreak of
+// break_search.h: the cue ball placed on the head string, struck within the robot's ranges),
+// whoever breaks; the players decide every other shot. A scratch leaves the cue
 // ball off the table and the next player places it (ball in hand anywhere). Push-outs are in
 // the rules but no player declares one yet. A rack not over after shot_limit shots is
 // undecided (won by neither).
@@ -25,10 +26,12 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "planner/choice/choice_options.h"
+#include "planner/game/break_search.h"
 #include "planner/game/table_shot.h"
 #include "planner/players/player.h"
 #include "sim/batch/thread_pool.h"
@@ -51,8 +54,8 @@ struct MatchOptions {
   params::ExecutionNoise execution = params::LoadNoise(params::kDefaultNoise);  // the table's
   std::uint64_t seed = 1;
   int racks = 1;
-  int shot_limit = 200;      // per rack
-  double break_speed = 5.0;  // [m/s]
+  int shot_limit = 200;  // per rack
+  std::optional<Break> opening;  // the break; none: the game's StoredBreak
 };
 
 // What a player did over the match.

@@ -1,33 +1,11 @@
 #include "planner/game/table_shot.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "planner/choice/scene_balls.h"
 #include "planner/pot/pot_planner.h"
 
 namespace billiard::game {
-
-physics::CueStroke BreakStroke(const std::vector<table::SceneBall>& balls, double speed) {
-  using choice::Position;
-  const table::SceneBall* cue = nullptr;
-  for (const auto& b : balls) {
-    if (b.id == 0) cue = &b;
-  }
-  const table::SceneBall* nearest = nullptr;
-  for (const auto& b : balls) {
-    if (b.id == 0) continue;
-    if (!nearest || (Position(b) - Position(*cue)).norm() <
-                        (Position(*nearest) - Position(*cue)).norm()) {
-      nearest = &b;
-    }
-  }
-  const Eigen::Vector2d d = Position(*nearest) - Position(*cue);
-  physics::CueStroke s;
-  s.speed = speed;
-  s.heading = std::atan2(d.y(), d.x());
-  return s;
-}
 
 std::optional<physics::CueStroke> PlayerStroke(const players::Player& player,
                                                const players::Turn& turn,

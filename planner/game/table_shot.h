@@ -1,6 +1,6 @@
-// One shot on the table, the steps a rack played alone (game.h) and a match (match.h) share:
-// the break's stroke, the player's decision (its call recorded, the cue ball placed when in
-// hand), the stroke executed with the table's noise and played to rest (balls hanging past a
+// One shot on the table, the steps a rack played alone (game.h), a match (match.h) and the
+// break's search (break_search.h) share: the player's decision (its call recorded, the cue
+// ball placed when in hand), the stroke executed with the table's noise and played to rest (balls hanging past a
 // pocket's mouth dropped), and what the referee is shown of it (rules::Shot).
 //
 // Module: billiard::game.
@@ -54,9 +54,6 @@ struct ShotRecord {
   std::string foul_reason;
   double decision_us = 0.0;
 };
-
-// The break: the cue ball rolling at the ball nearest it at `speed`.
-physics::CueStroke BreakStroke(const std::vector<table::SceneBall>& balls, double speed);
 
 // `player`'s stroke for the shot `turn` shows, its samples seeded `seed`: the cue ball placed
 // first (in `balls`) when the player says where, the decision and the call recorded in `rec`;

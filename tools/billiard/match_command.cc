@@ -37,12 +37,6 @@ struct MatchArgs {
   bool json = false;
 };
 
-rules::Rules GameOf(const std::string& name) {
-  if (name == "nine-ball") return rules::Rules::kNineBall;
-  if (name == "eight-ball") return rules::Rules::kEightBall;
-  throw UsageError("--game: unknown game '" + name + "' (nine-ball, eight-ball)");
-}
-
 // "A,B": the two players by name.
 std::array<std::shared_ptr<const players::Player>, 2> PlayersOf(const std::string& list) {
   const std::size_t comma = list.find(',');
@@ -142,6 +136,12 @@ void Run(const MatchArgs& args) {
 }
 
 }  // namespace
+
+rules::Rules GameOf(const std::string& name) {
+  if (name == "nine-ball") return rules::Rules::kNineBall;
+  if (name == "eight-ball") return rules::Rules::kEightBall;
+  throw UsageError("--game: unknown game '" + name + "' (nine-ball, eight-ball)");
+}
 
 void AddMatchCommand(CLI::App& app) {
   auto args = std::make_shared<MatchArgs>();

@@ -4,8 +4,14 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <string>
+
+#include "sim/rules/rules.h"
 
 namespace billiard::cli {
+
+// A --game option's game: "nine-ball" or "eight-ball"; UsageError otherwise.
+rules::Rules GameOf(const std::string& name);
 
 void AddMatchCommand(CLI::App& app);
 

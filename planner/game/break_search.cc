@@ -1,0 +1,180 @@
+#include "planner/game/break_search.h"
+
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+#include "planner/choice/scene_balls.h"
+#include "planner/game/table_shot.h"
+#include "sim/rules/rack_state.h"
+
+namespace billiard::game {
+
+namespace {
+
+// The head string lies a quarter of the table's length from the head cushion.
+constexpr double kHeadString = 0.25;
+// The search's grids: the fraction of the half head string the cue ball ranges over, the aim's
+// reach (fractions of a radius), the slowest break tried [m/s], and the steps of each.
+constexpr double kOffsetReach = 0.7;
+constexpr double kAimReach = 0.5;
+constexpr double kMinSearchSpeed = 4.0;
+constexpr int kOffsetSteps = 9;
+constexpr int kAimSteps = 9;
+constexpr int kSpeedSteps = 5;
+constexpr int kTipSteps = 9;
+
+// What one break did on one rack.
+struct BreakOutcome {
+  bool legal = false;
+  bool potted = false;
+  bool scratch = false;
+};
+
+// `steps` values evenly from lo to hi.
+std::vector<double> Grid(double lo, double hi, int steps) {
+  std::vector<double> v;
+  for (int i = 0; i < steps; ++i) v.push_back(lo + (hi - lo) * i / (steps - 1));
+  return v;
+}
+
+// The object ball nearest the head string: the rack's apex.
+const table::SceneBall& Apex(const std::vector<table::SceneBall>& balls) {
+  const table::SceneBall* apex = nullptr;
+  for (const auto& b : balls) {
+    if (b.id != 0 && (!apex || b.state.x() < apex->state.x())) apex = &b;
+  }
+  if (!apex) throw std::invalid_argument("break: no object ball to break");
+  return *apex;
+}
+
+// Break `b` on rack `sample` of `seed`, judged as the rack's first shot.
+BreakOutcome PlayBreak(const BreakSetting& s, const Break& b, std::uint64_t seed,
+                       std::size_t sample) {
+  const std::uint64_t rack_seed = choice::SampleSeed(seed, sample);
+  std::vector<table::SceneBall> balls =
+      table::Rack(RackKindOf(s.game), s.table, s.params.ball.radius, rack_seed);
+  const physics::CueStroke stroke = SetUpBreak(s.table, s.params.ball.radius, b, &balls);
+  const choice::StrokeResult result =
+      ExecuteWithNoise(s.table, s.params, balls, stroke, s.noise,
+                       choice::SampleSeed(rack_seed + kExecutionStream, 0), s.motion);
+  rules::RackState state = rules::NewRack(s.game, 0);
+  ShotRecord rec;
+  rec.break_shot = true;
+  const rules::Shot shot = ShotOf(rules::NextConstraints(state, balls), rec, result);
+  const rules::Judgement judgement = rules::Referee(s.table, shot, &state);
+  return {!judgement.foul, !shot.potted.empty(), result.scratch};
+}
+
+// Whether `a` breaks better than `b` (on as many racks): a higher objective, or as high
+// scratching less.
+bool Better(const BreakRates& a, const BreakRates& b) {
+  if (a.kept - a.scratches != b.kept - b.scratches)
+    return a.kept - a.scratches > b.kept - b.scratches;
+  return a.scratches < b.scratches;
+}
+
+// One parameter of Break, its grid and where it is kept.
+struct Axis {
+  std::vector<double> grid;
+  std::function<double&(Break&)> field;
+};
+
+std::vector<Axis> AxesOf(const BreakSetting& s, const BreakRanges& r) {
+  const double half_string = 0.5 * s.table.width - s.params.ball.radius;
+  const double offset = kOffsetReach * half_string;
+  return {{Grid(-offset, offset, kOffsetSteps), [](Break& b) -> double& { return b.cue_offset; }},
+          {Grid(-kAimReach, kAimReach, kAimSteps), [](Break& b) -> double& { return b.aim; }},
+          {Grid(std::min(kMinSearchSpeed, r.max_speed), r.max_speed, kSpeedSteps),
+           [](Break& b) -> double& { return b.speed; }},
+          {Grid(-r.max_tip_offset, r.max_tip_offset, kTipSteps),
+           [](Break& b) -> double& { return b.tip_height; }}};
+}
+
+}  // namespace
+
+table::RackKind RackKindOf(rules::Rules game) {
+  return game == rules::Rules::kNineBall ? table::RackKind::kNineBall : table::RackKind::kEightBall;
+}
+
+physics::CueStroke SetUpBreak(const table::TableGeometry& table, double ball_radius, const Break& b,
+                              std::vector<table::SceneBall>* balls) {
+  const Eigen::Vector2d cue(kHeadString * table.length, 0.5 * table.width + b.cue_offset);
+  *balls = choice::WithCueBallAt(*balls, cue);
+  const Eigen::Vector2d line = choice::Position(Apex(*balls)) - cue;
+  const Eigen::Vector2d across(-line.y(), line.x());
+  const Eigen::Vector2d aim = line + b.aim * ball_radius * across.normalized();
+  physics::CueStroke stroke;
+  stroke.speed = b.speed;
+  stroke.heading = std::atan2(aim.y(), aim.x());
+  stroke.tip_height = b.tip_height * ball_radius;
+  return stroke;
+}
+
+std::vector<BreakRates> EvaluateBreaks(const BreakSetting& setting,
+                                       const std::vector<Break>& breaks, int samples,
+                                       std::uint64_t seed, batch::ThreadPool& pool) {
+  const std::size_t n = static_cast<std::size_t>(samples);
+  const auto outcomes = pool.Map(breaks.size() * n, [&](std::size_t job) {
+    return PlayBreak(setting, breaks[job / n], seed, job % n);
+  });
+  std::vector<BreakRates> rates(breaks.size());
+  for (std::size_t job = 0; job < outcomes.size(); ++job) {
+    BreakRates& r = rates[job / n];
+    ++r.samples;
+    if (!outcomes[job].ok()) continue;  // a throw: a break that did nothing
+    const BreakOutcome& o = *outcomes[job].value;
+    r.legal += o.legal;
+    r.potted += o.potted;
+    r.kept += o.legal && o.potted;
+    r.scratches += o.scratch;
+  }
+  return rates;
+}
+
+BreakSearchResult SearchBreak(const BreakSetting& setting, const Break& start,
+                              const BreakSearchOptions& options, batch::ThreadPool& pool) {
+  BreakSearchResult result;
+  result.best = start;
+  result.rates = EvaluateBreaks(setting, {start}, options.samples, options.seed, pool)[0];
+  result.candidates = 1;
+  for (int round = 0; round < options.rounds; ++round) {
+    for (const Axis& axis : AxesOf(setting, options.ranges)) {
+      std::vector<Break> line;
+      for (double v : axis.grid) {
+        Break b = result.best;
+        axis.field(b) = v;
+        line.push_back(b);
+      }
+      const std::vector<BreakRates> rates =
+          EvaluateBreaks(setting, line, options.samples, options.seed, pool);
+      result.candidates += static_cast<int>(line.size());
+      for (std::size_t i = 0; i < line.size(); ++i) {
+        if (Better(rates[i], result.rates)) {
+          result.best = line[i];
+          result.rates = rates[i];
+        }
+      }
+    }
+  }
+  return result;
+}
+
+Break StoredBreak(rules::Rules game) {
+  // billiard bench-break --game G --search --samples 400 (docs/match.md, "The break").
+  switch (game) {
+    case rules::Rules::kNineBall:
+      // From the head string 0.318 m off the axis, full on the 1 at the gantry's 8 m/s,
+      // centre ball: the nine-ball search's best on its racks, and on a validation set of 400
+      // racks (seed 5000) ahead of the same break with a quarter radius of follow (which
+      // scratches less and pots less).
+      return {-0.318373125, 0.0, 8.0, 0.0};
+    case rules::Rules::kEightBall:
+      // From 0.424 m off the axis, a quarter radius right of full on the apex, 8 m/s.
+      return {0.42449750000000004, 0.25, 8.0, 0.0};
+    default:
+      return Break{};
+  }
+}
+
+}  // namespace billiard::game

@@ -1,0 +1,71 @@
+// `billiard bench-break` as a user runs it: the documented JSON, the counts nesting and the
+// rates matching them, the same figures whatever --threads, exit 2 for a bad command line.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/support/billiard_command.h"
+
+namespace billiard::testing {
+namespace {
+
+const std::string kBench = "bench-break --samples 12 --json";
+
+nlohmann::json Bench(const std::string& options) {
+  const std::string args = kBench + " " + options;
+  const CommandResult r = Billiard(args);
+  EXPECT_EQ(r.status, 0) << args << ": " << r.out;
+  return OneObject(r, args);
+}
+
+TEST(BilliardBenchBreak, PrintsTheDocumentedRates) {
+  for (const char* game : {"nine-ball", "eight-ball"}) {
+    const nlohmann::json j = Bench(std::string("--game ") + game);
+    EXPECT_EQ(j["game"], game);
+    EXPECT_EQ(j["noise"], "computational-pool");
+    for (const char* which : {"today", "optimised"}) {
+      const nlohmann::json& b = j[which];
+      ASSERT_EQ(b["samples"], 12) << b;
+      for (const char* key : {"legal", "potted", "legal_and_potted", "scratch"}) {
+        const nlohmann::json& rate = b[key];
+        EXPECT_DOUBLE_EQ(rate["rate"].get<double>(), rate["count"].get<int>() / 12.0) << key;
+        EXPECT_LE(rate["interval95"][0].get<double>(), rate["rate"].get<double>()) << key;
+        EXPECT_GE(rate["interval95"][1].get<double>(), rate["rate"].get<double>()) << key;
+      }
+      EXPECT_LE(b["legal_and_potted"]["count"], b["legal"]["count"]);
+      EXPECT_LE(b["legal_and_potted"]["count"], b["potted"]["count"]);
+    }
+    EXPECT_EQ(j["today"]["speed_mps"], 5.0);  // the head spot's roll at 5 m/s
+  }
+}
+
+// A given break is measured as given: the stored break's own numbers give its figures, and a
+// roll at 1 m/s keeps the table on none of the racks.
+TEST(BilliardBenchBreak, AGivenBreakIsMeasuredAsGiven) {
+  const nlohmann::json stored = Bench("--game eight-ball")["optimised"];
+  const std::string numbers = stored["cue_offset_m"].dump() + "," + stored["aim_radii"].dump() +
+                              "," + stored["speed_mps"].dump() + "," +
+                              stored["tip_height_radii"].dump();
+  EXPECT_EQ(Bench("--game eight-ball --break=" + numbers)["optimised"], stored);
+  const nlohmann::json soft =
+      Bench("--game eight-ball --break=" + stored["cue_offset_m"].dump() + ",0,1,0")["optimised"];
+  EXPECT_EQ(soft["speed_mps"], 1.0);
+  EXPECT_EQ(soft["legal_and_potted"]["count"], 0);
+}
+
+TEST(BilliardBenchBreak, TheSameFiguresWhateverTheThreads) {
+  EXPECT_EQ(Bench("--game nine-ball --threads 1"), Bench("--game nine-ball --threads 2"));
+}
+
+TEST(BilliardBenchBreak, ABadCommandLineExitsTwo) {
+  for (const char* args :
+       {"bench-break --game snooker", "bench-break",
+        "bench-break --game nine-ball --noise /no/such.json",
+        "bench-break --game nine-ball --robot nobody", "bench-break --game nine-ball --samples 0",
+        "bench-break --game nine-ball --break=1,2"}) {
+    EXPECT_EQ(Billiard(args).status, 2) << args;
+  }
+}
+
+}  // namespace
+}  // namespace billiard::testing

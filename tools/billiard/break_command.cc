@@ -1,0 +1,171 @@
+#include "tools/billiard/break_command.h"
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "planner/game/break_search.h"
+#include "planner/game/wilson.h"
+#include "sim/batch/thread_pool.h"
+#include "sim/model_choice/model_choice.h"
+#include "sim/params/execution_noise.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
+#include "tools/billiard/command_line.h"
+#include "tools/billiard/match_command.h"
+#include "tools/billiard/scene_commands.h"
+
+namespace billiard::cli {
+
+namespace {
+
+// The search's racks are seeded apart from the measured ones, so that the figures are held out.
+constexpr std::uint64_t kSearchSeedOffset = 1000003;
+
+struct BenchBreakArgs {
+  std::string game;
+  std::string noise = "computational-pool";
+  std::string robot = params::kDefaultRobot;
+  int samples = 400;
+  std::uint64_t seed = 1;
+  int threads = batch::DefaultThreadCount();
+  std::vector<double> given;  // --break: offset, aim, speed, tip
+  bool search = false;
+  int search_samples = 200;
+  int rounds = 2;
+  bool json = false;
+};
+
+nlohmann::json RateJson(int count, int samples) {
+  const game::Interval i = game::WilsonInterval(count, samples);
+  return {{"count", count},
+          {"rate", samples ? static_cast<double>(count) / samples : 0.0},
+          {"interval95", {i.lo, i.hi}}};
+}
+
+nlohmann::json BreakJson(const game::Break& b, const game::BreakRates& r) {
+  return {{"cue_offset_m", b.cue_offset},
+          {"aim_radii", b.aim},
+          {"speed_mps", b.speed},
+          {"tip_height_radii", b.tip_height},
+          {"samples", r.samples},
+          {"legal", RateJson(r.legal, r.samples)},
+          {"potted", RateJson(r.potted, r.samples)},
+          {"legal_and_potted", RateJson(r.kept, r.samples)},
+          {"scratch", RateJson(r.scratches, r.samples)}};
+}
+
+// One line on stderr: the break and its rates.
+void Report(const std::string& name, const nlohmann::json& j) {
+  const auto rate = [&](const char* key) { return j[key]["rate"].get<double>(); };
+  const nlohmann::json& kept = j["legal_and_potted"]["interval95"];
+  std::cerr << std::setprecision(3) << name << ": cue ball " << j["cue_offset_m"].get<double>()
+            << " m off the axis, aim " << j["aim_radii"].get<double>() << " R, "
+            << j["speed_mps"].get<double>() << " m/s, tip " << j["tip_height_radii"].get<double>()
+            << " R: legal and potted " << rate("legal_and_potted") << " (95 % "
+            << kept[0].get<double>() << " to " << kept[1].get<double>() << "), legal "
+            << rate("legal") << ", potted " << rate("potted") << ", scratch " << rate("scratch")
+            << " of " << j["samples"].get<int>() << " racks" << std::endl;
+}
+
+// --break's four numbers as a break.
+game::Break BreakOf(const std::vector<double>& v) {
+  for (double x : v) RequireFinite(x, "--break");
+  return {v[0], v[1], v[2], v[3]};
+}
+
+void Run(const BenchBreakArgs& args) {
+  const rules::Rules game = GameOf(args.game);
+  params::ExecutionNoise noise;
+  cue::Robot robot;
+  try {
+    noise = params::LoadNoise(args.noise);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--noise: ") + e.what());
+  }
+  try {
+    robot = params::LoadRobot(args.robot);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--robot: ") + e.what());
+  }
+  const physics::ModelParameters params = LoadParametersOption(params::kDefaultParameterSet);
+  const table::TableGeometry table = LoadTableOption("pool-9ft");
+  const game::BreakSetting setting{table, params, game, noise, model_choice::TableMotion(params)};
+  batch::ThreadPool pool(args.threads);
+  game::Break optimised = game::StoredBreak(game);
+  if (!args.given.empty()) optimised = BreakOf(args.given);
+  nlohmann::json j = {
+      {"game", args.game}, {"noise", args.noise}, {"robot", robot.name}, {"seed", args.seed}};
+  if (args.search) {
+    game::BreakSearchOptions options;
+    options.ranges = {robot.speed.max, robot.max_tip_offset};
+    options.samples = args.search_samples;
+    options.rounds = args.rounds;
+    options.seed = args.seed + kSearchSeedOffset;
+    const game::BreakSearchResult found =
+        game::SearchBreak(setting, args.given.empty() ? game::Break{} : optimised, options, pool);
+    optimised = found.best;
+    j["search"] = {{"candidates", found.candidates},
+                   {"samples", options.samples},
+                   {"seed", options.seed},
+                   {"rounds", options.rounds},
+                   {"objective", found.rates.objective()}};
+  }
+  const std::vector<game::BreakRates> rates =
+      game::EvaluateBreaks(setting, {game::Break{}, optimised}, args.samples, args.seed, pool);
+  j["today"] = BreakJson(game::Break{}, rates[0]);
+  j["optimised"] = BreakJson(optimised, rates[1]);
+  Report("today's break", j["today"]);
+  Report(args.search          ? "searched break"
+         : args.given.empty() ? "stored break"
+                              : "given break",
+         j["optimised"]);
+  if (args.json) std::cout << j.dump() << std::endl;
+}
+
+}  // namespace
+
+void AddBenchBreakCommand(CLI::App& app) {
+  auto args = std::make_shared<BenchBreakArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench-break",
+      "The break on seeded racks with the table's noise: legal, potted and scratch rates (Wilson "
+      "95 % intervals) of today's break and the optimised one (--search: search it again)");
+  cmd->add_option("--game", args->game, "nine-ball | eight-ball")->required();
+  cmd->add_option("--noise", args->noise,
+                  "The execution noise: robot | computational-pool | a JSON file")
+      ->capture_default_str();
+  cmd->add_option("--robot", args->robot, "The robot whose ranges bound the search")
+      ->capture_default_str();
+  cmd->add_option("--samples", args->samples, "Racks each break is measured on")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", args->seed, "Seed of the measured racks and noise")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", args->threads, "Threads (the results do not depend on them)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--break", args->given,
+                  "A break to measure instead of the stored one (with --search, the search's "
+                  "start): the cue ball's offset from the long axis [m], the aim [ball "
+                  "radii], the speed [m/s], the tip height [ball radii]")
+      ->expected(4)
+      ->delimiter(',');
+  cmd->add_flag("--search", args->search,
+                "Search the break again (on racks seeded apart from the measured ones)");
+  cmd->add_option("--search-samples", args->search_samples, "Racks each candidate is played on")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--rounds", args->rounds, "The search's passes over the parameters")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
+  cmd->callback([args] { Run(*args); });
+}
+
+}  // namespace billiard::cli
