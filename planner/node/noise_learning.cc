@@ -48,6 +48,7 @@ bool NoiseLearner::Learn(const std::vector<shot_fit::TrackedShot>& shots,
     }
     residuals_.push_back(
         shot_fit::ResidualOf(stroke->second, shot.balls[shot.cue].position[0], launch, p));
+    launch_shots_.push_back(seen_);
   }
   if (residuals_.size() == before || residuals_.size() < kMinNoiseShots) return false;
   shot_fit::NoiseFitOptions options;

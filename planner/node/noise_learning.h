@@ -50,6 +50,9 @@ class NoiseLearner {
   std::size_t shots_seen() const { return seen_; }
   const std::map<std::string, int>& unmeasured() const { return unmeasured_; }
   std::size_t launches() const { return residuals_.size(); }
+  // The index, among the shots given to Learn, of the shot each launch was measured on: the
+  // fit's `used` are indices of launches.
+  const std::vector<std::size_t>& launch_shots() const { return launch_shots_; }
 
   // The latest fit in one line: each spread, its interval, the shots used.
   std::string Describe() const;
@@ -58,6 +61,7 @@ class NoiseLearner {
   params::ExecutionNoise prior_, noise_;
   std::map<std::int64_t, physics::CueStroke> strokes_;  // by the command's utime
   std::vector<shot_fit::LaunchResidual> residuals_;
+  std::vector<std::size_t> launch_shots_;
   std::optional<shot_fit::NoiseFit> fit_;
   std::size_t seen_ = 0;
   std::map<std::string, int> unmeasured_;

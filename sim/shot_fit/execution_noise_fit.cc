@@ -1,6 +1,7 @@
 #include "sim/shot_fit/execution_noise_fit.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -17,8 +18,9 @@ constexpr double kZ95 = 1.959963984540054;
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxRejectionRounds = 10;
 
-// A spin the frames did not see weighs nothing: its variance is this [log speed^2].
-constexpr double kUnseen = 1e6;
+// A spin the frames did not see weighs nothing: its variance is this per unit variance of a
+// tracked coordinate [1/m^2] (at the floor of 1e-5 m, still 1e4 of log speed squared).
+constexpr double kUnseen = 1e14;
 
 // The residual's coordinates of a launch velocity and the velocity it rolls on: log speed,
 // direction, log rolling speed.
@@ -44,14 +46,15 @@ struct Components {
   Eigen::Vector3d r;
 };
 
-Components ComponentsOf(const LaunchResidual& s, const NoiseFitOptions& o) {
+Components ComponentsOf(const LaunchResidual& s, double position_variance,
+                        const NoiseFitOptions& o) {
   Components c;
   const auto outer = [&](int k) { return s.jacobian.col(k) * s.jacobian.col(k).transpose(); };
   c.g[0] = outer(0);
   c.g[1] = outer(1);
   c.g[2] = outer(2) + outer(3);
   const double absolute = o.speed_absolute / s.cue_speed;
-  c.fixed = s.measurement + absolute * absolute * c.g[0];
+  c.fixed = position_variance * s.measurement + absolute * absolute * c.g[0];
   c.r = s.residual;
   return c;
 }
@@ -194,7 +197,9 @@ LaunchResidual ResidualOf(const physics::CueStroke& commanded, const Eigen::Vect
   g.block<1, 2>(0, 0) = v.transpose() / v.squaredNorm();
   g.block<1, 2>(1, 0) = Eigen::Vector2d(-v.y(), v.x()).transpose() / v.squaredNorm();
   g.block<1, 2>(2, 2) = u.transpose() / u.squaredNorm();
-  out.measurement = g * launch.joint_covariance * g.transpose();
+  out.measurement = g * launch.joint_covariance * g.transpose() / launch.variance;
+  out.squares = launch.squares;
+  out.dof = launch.dof;
   const auto unseen = [&](int k) {
     out.measurement.row(k).setZero();
     out.measurement.col(k).setZero();
@@ -210,8 +215,15 @@ NoiseFit FitExecutionNoise(const std::vector<LaunchResidual>& shots, const Noise
     throw std::invalid_argument("the noise needs at least 3 shots, not " +
                                 std::to_string(shots.size()));
   }
+  double squares = 0.0, dof = 0.0;
+  for (const LaunchResidual& s : shots) {
+    squares += s.squares;
+    dof += s.dof;
+  }
+  const double floor = o.position_sd_floor * o.position_sd_floor;
+  const double variance = std::max(floor, dof > 0.0 ? squares / dof : floor);
   std::vector<Components> all;
-  for (const LaunchResidual& s : shots) all.push_back(ComponentsOf(s, o));
+  for (const LaunchResidual& s : shots) all.push_back(ComponentsOf(s, variance, o));
   std::vector<std::size_t> used(all.size());
   for (std::size_t i = 0; i < used.size(); ++i) used[i] = i;
   NoiseFit fit = FitOn(all, used, o);
@@ -230,6 +242,7 @@ NoiseFit FitExecutionNoise(const std::vector<LaunchResidual>& shots, const Noise
     fit = FitOn(all, inliers, o);
   }
   fit.rejected = all.size() - fit.used.size();
+  fit.position_sd = std::sqrt(variance);
   return fit;
 }
 

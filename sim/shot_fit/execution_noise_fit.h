@@ -14,7 +14,9 @@
 //     r = mu + J e + m,    Cov(r) = C = J diag(s_v^2, s_h^2, s_t^2, s_t^2) J^T + M + F,
 //
 // J the launch's derivatives with respect to e at the commanded stroke (central differences
-// through StrikeBall), M the tracking's covariance of the residual (the launch fit's, mapped),
+// through StrikeBall), M the tracking's covariance of the residual (the launch fit's, mapped,
+// with the tracks' error per coordinate pooled over every shot's fit: a few frames cannot
+// estimate it alone, and a guess of it would be subtracted from the spreads as it stands),
 // F what is held known (an absolute speed spread, the prior's), mu a constant bias (a robot's
 // calibration, or the tracking's lag: not noise, reported apart). The variances theta =
 // (s_v^2, s_h^2, s_t^2) are the maximum of the Gaussian likelihood over the shots, found by
@@ -63,7 +65,10 @@ struct LaunchResidual {
   Eigen::Vector3d residual = Eigen::Vector3d::Zero();
   // d residual / d (speed fraction, heading [rad], tip side [m], tip height [m]).
   Eigen::Matrix<double, 3, 4> jacobian = Eigen::Matrix<double, 3, 4>::Zero();
-  Eigen::Matrix3d measurement = Eigen::Matrix3d::Zero();  // the tracking's covariance
+  // The tracking's covariance of the residual per unit variance of a tracked coordinate, and
+  // the launch fit's residual sum of squares and degrees of freedom.
+  Eigen::Matrix3d measurement = Eigen::Matrix3d::Zero();
+  double squares = 0.0, dof = 0.0;
   double cue_speed = 0.0;                                 // commanded [m/s]
 };
 
@@ -84,6 +89,9 @@ inline constexpr double kIdentifiableRelativeSd = 0.5;
 
 struct NoiseFitOptions {
   double tip_prior = 0.5e-3;          // [m], held where not identified
+  // The tracks' error per coordinate is pooled over the shots' launch fits (their residual sums
+  // of squares over their degrees of freedom), at least this [m].
+  double position_sd_floor = 1e-5;
   bool fit_tip = true;                // false: the tip's spread held at tip_prior, not fitted
   double speed_absolute = 0.0;        // a known absolute cue-speed spread [m/s]
   double outlier_chi2 = 16.27;        // chi-square(3) at 99.9 %
@@ -101,6 +109,7 @@ struct NoiseFit {
   Eigen::Vector3d bias = Eigen::Vector3d::Zero();  // mu, in the residual's coordinates
   std::vector<std::size_t> used;                   // indices of the residuals fitted
   std::size_t rejected = 0;                        // left out as outliers
+  double position_sd = 0.0;  // the tracks' error per coordinate, pooled over the shots [m]
   int iterations = 0;
 };
 

@@ -235,6 +235,9 @@ void FitPass(const Stretch& s, const Predicted& predicted, bool free_slide,
   const double dof = static_cast<double>(j.rows() - j.cols());
   const double sd2 = std::max(options.position_sd * options.position_sd,
                               dof > 0.0 ? squares / dof : 0.0);
+  out.squares = squares;
+  out.dof = dof;
+  out.variance = sd2;
   const Eigen::MatrixXd covariance = sd2 * (j.transpose() * j).inverse();
   // (v, v + T a) from (v, a).
   Eigen::MatrixXd to_rolling = Eigen::MatrixXd::Zero(4, covariance.cols() - 3);

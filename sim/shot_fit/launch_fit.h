@@ -71,6 +71,10 @@ struct MeasuredLaunch {
   double strike_time = 0.0;  // t_s on the shot's clock [s]
   int samples = 0;           // moving samples fitted
   double rms = 0.0;          // of the fit's residuals [m]
+  // The fit's residual sum of squares [m^2] and its degrees of freedom, and the variance per
+  // coordinate the covariances assumed: a fit over many shots pools the first two into the
+  // tracks' error (execution_noise_fit.h).
+  double squares = 0.0, dof = 0.0, variance = 0.0;
 };
 
 // The launch of `shot`'s struck ball (shot.cue), which `commanded` was meant to give, on a table
