@@ -4,7 +4,7 @@
 #                                   [--scene break|seeded|FILE]
 #                                   [--pot K:P ...] [--params NAME|FILE] [--log FILE]
 #                                   [--plant-params NAME|FILE] [--identify-every N]
-#                                   [--identify LIST]
+#                                   [--identify LIST] [--plant-noise NAME|FILE] [--learn-noise]
 #                                   [--log-frames all|none]
 #                                   [--lockstep | --realtime] [--view] [--view-port PORT]
 #                                   [--json] [--no-build] [-h | --help]
@@ -55,6 +55,12 @@
 #                          never); the summary shows each fit after the shots
 #   --identify LIST        the constants the planner identifies (default mu,rolling; see
 #                          planner_node --identify)
+#   --plant-noise NAME|FILE  the robot executes its strokes with this noise (a name of
+#                          sim/params/noise/ or a JSON file of its format) instead of --noise's,
+#                          while the planner keeps choosing for the noise it was told of
+#   --learn-noise          the planner measures its own strokes' noise from the launches the
+#                          estimator tracks and chooses for it (planner_node --learn-noise); the
+#                          summary shows the noise learned, with its intervals
 #   --log FILE             record every message with lcm-logger into FILE
 #   --log-frames all|none  with --log: record the CAMERA_IMAGE frames or not (default all)
 #   --lockstep             wait for the estimator's state of each frame: deterministic (default)
@@ -97,7 +103,7 @@
 set -euo pipefail
 source "$(dirname "$0")/script_support.sh"
 
-shots="" game="" racks=1 shot_limit=40 seed=1 noise="" scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true
+shots="" game="" racks=1 shot_limit=40 seed=1 noise="" scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true plant_noise="" learn_noise=()
 pots=()
 view=false view_port=8765 camera="" camera_model=""
 while [ $# -gt 0 ]; do
@@ -128,6 +134,11 @@ while [ $# -gt 0 ]; do
       shift 2 ;;
     --identify-every) need_number 0 "$@"; identify_every=$2; shift 2 ;;
     --identify) need_value "$@"; identify=$2; shift 2 ;;
+    --plant-noise)
+      need_value "$@"
+      case "$2" in */* | *.json) plant_noise=$(realpath -m -- "$2") ;; *) plant_noise=$2 ;; esac
+      shift 2 ;;
+    --learn-noise) learn_noise=(--learn-noise); shift ;;
     --log-frames) need_value "$@"; log_frames=$2; shift 2 ;;
     --lockstep) clock=--lockstep; shift ;;
     --realtime) clock=--realtime; shift ;;
@@ -244,7 +255,7 @@ fi
 playing=(--shots "$shots")
 [ -n "$game" ] && playing=(--game "$game" --racks "$racks" --shot-limit "$shot_limit")
 enter_private_network launch_scripts/run_loop.sh --no-build "${playing[@]}" --seed "$seed" \
-  --noise "$noise" --params "$params" ${plant:+--plant-params "$plant"} --identify-every "$identify_every" --identify "$identify" ${scene:+--scene "$scene"} "${pots[@]}" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
+  --noise "$noise" --params "$params" ${plant:+--plant-params "$plant"} ${plant_noise:+--plant-noise "$plant_noise"} "${learn_noise[@]}" --identify-every "$identify_every" --identify "$identify" ${scene:+--scene "$scene"} "${pots[@]}" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
 # Without a namespace, separate processes only where multicast reaches back over loopback;
 # otherwise one process on LCM's in-memory provider.
 in_process=false
@@ -300,7 +311,7 @@ if ! $in_process; then
   "$bin_dir/estimator_node" --params "$params" 2>/dev/null &
   pids+=($!)
   "$bin_dir/planner_node" --params "$params" "${planner_table[@]}" \
-    --identify-every "$identify_every" --identify "$identify" >/dev/null 2>"$planner_err" &
+    --identify-every "$identify_every" --identify "$identify" "${learn_noise[@]}" >/dev/null 2>"$planner_err" &
   pids+=($!)
   $view && start_viewer
   sleep 0.5  # the nodes subscribe
@@ -311,12 +322,12 @@ sim_clock=""
 # A fit between shots takes seconds; the simulator waits for its answer that long.
 identifying=()
 [ "$identify_every" -gt 0 ] && identifying=(--reply-timeout 120)
-$in_process && identifying+=(--identify-every "$identify_every")
+$in_process && identifying+=(--identify-every "$identify_every" "${learn_noise[@]}")
 # In the background, so that a signal reaches the trap at once and the cleanup stops it too.
 session=("$bin_dir/table_sim_node")
 $in_process && session=("$bin_dir/billiard" loop)
 "${session[@]}" --params "$params" ${plant:+--plant-params "$plant"} "${identifying[@]}" "${playing[@]}" --seed "$seed" --noise "$noise" \
-  ${scene:+--scene "$scene"} "${pots[@]}" $sim_clock >"$summary_file" &
+  ${plant_noise:+--plant-noise "$plant_noise"} ${scene:+--scene "$scene"} "${pots[@]}" $sim_clock >"$summary_file" &
 pids+=($!)
 status=0
 wait $! || status=$?
@@ -391,6 +402,8 @@ if not pots and not game:
           f"mean {1e3*s['mean_miss_m']:.2f} +- {1e3*s['stddev_miss_m']:.2f} mm, {s['wall_s']:.1f} s")
 if "plant" in s:
     print(f"the table played {s['plant']}; the nodes ran their own parameters")
+if "plant_noise" in s:
+    print(f"the robot executed with the noise {s['plant_noise']}; the planner was not told")
 if "scene" in s:
     scene, tracking = s["scene"], s["scene"]["tracking"]
     pocketed = [f"{b['id']} ({b['pocketed']})" for b in scene["balls"] if b["pocketed"]]
@@ -407,8 +420,10 @@ if "scene" in s:
           f"{tracking['unnamed_ball_frames']} unnamed, {tracking['named_at_end']} of "
           f"{len(tracking['balls'])} balls named right at the end")
 PY
-# The planner's online identifications, each after the shots it was fitted to.
+# The planner's online identifications, each after the shots it was fitted to, and the noise it
+# learned last.
 grep -h "identif" "$planner_err" >&2 || true
+grep -h "learned noise" "$planner_err" | tail -n 1 >&2 || true
 if [ -n "$log_failure" ]; then
   echo "run_loop: the log '$log' is not a record of the run: $log_failure" >&2
   exit 1

@@ -1,5 +1,5 @@
-// `billiard fit-shots` and `billiard identify` as a user runs them: their JSON, the set and the
-// shots they write, their refusals.
+// `billiard fit-shots`, `billiard identify` and `billiard identify-noise` as a user runs them:
+// their JSON, the set and the shots they write, their refusals.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -153,6 +153,22 @@ TEST(BilliardIdentify, CutsTheShotsFromTheTracksOrTheTruth) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.out.find("--tracks must be estimator or truth"), std::string::npos) << bad.out;
   EXPECT_EQ(bad.out.find('\n'), bad.out.size() - 1) << bad.out;
+}
+
+// identify-noise measures the one shot's launch, and refuses (exit 2, one line) to learn a noise
+// from fewer than ten, an unknown prior, or tracks it does not know.
+TEST(BilliardIdentifyNoise, RefusesWhatItCannotLearnFrom) {
+  const std::string log = LoopLog();
+  const CommandResult few = Billiard("identify-noise " + log + " --json", true);
+  EXPECT_EQ(few.status, 2);
+  EXPECT_NE(few.out.find("1 launches measured of 1 shots, 10 needed"), std::string::npos)
+      << few.out;
+  EXPECT_EQ(few.out.find('\n'), few.out.size() - 1) << few.out;
+  const CommandResult prior = Billiard("identify-noise " + log + " --prior no-such-noise", true);
+  EXPECT_EQ(prior.status, 2);
+  EXPECT_NE(prior.out.find("--prior"), std::string::npos) << prior.out;
+  const CommandResult tracks = Billiard("identify-noise " + log + " --tracks camera", true);
+  EXPECT_EQ(tracks.status, 2);
 }
 
 }  // namespace

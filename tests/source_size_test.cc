@@ -35,7 +35,6 @@ const std::map<std::string, std::string>& LongFiles() {
       {"estimator/table_finder.cc", "the cloth's region, its sides and the cushion noses"},
       {"estimator/ball_detector.cc", "the scale, the outlines' votes and their refinement"},
       {"bench/detection_benchmark.cc", "the matching, the figures per view and the report"},
-      {"tools/billiard/fit_shots_command.cc", "the command line, the shots' reading and the report"},
   };
   return files;
 }

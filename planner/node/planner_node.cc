@@ -64,7 +64,8 @@ PlannerNode::PlannerNode(lcm::LCM& lcm, physics::ModelParameters params, Planner
         std::cerr << "planner_node: " << line << std::endl;
       })),
       health_("planner_node", log_),
-      player_(players::MakePlayer(options_.player)) {
+      player_(players::MakePlayer(options_.player)),
+      noise_learner_(options_.choice.noise) {
   health_.SetParameters(params::ParameterSetLabel(params_), params::ParameterHash(params_));
   table_state_subscription_ =
       lcm_.subscribe(messages::kTableStateChannel, &PlannerNode::OnTableState, this);
@@ -104,7 +105,9 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   }
   if (q.mode == shot_request_t::MODE_CHOOSE) {
     if (!choice_pool_) choice_pool_ = std::make_unique<batch::ThreadPool>(options_.choice_threads);
-    return AnswerChoice(q, state, *latest_table_, table_, params_, options_, *player_,
+    PlannerNodeOptions options = options_;
+    options.choice.noise = noise_learner_.noise();
+    return AnswerChoice(q, state, *latest_table_, table_, params_, options, *player_,
                         *choice_pool_, std::move(c));
   }
   return AnswerToPoint(q, state, params_, options_.planner, std::move(c));
@@ -196,7 +199,7 @@ void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string
       last_of_class_[b.ball_class] =
           Named(seen, shot_request_t::BALL_BY_CLASS, b.ball_class, 0.0f)->ball_id;
     }
-    if (options_.identify_every > 0) {
+    if (RecordsShots()) {
       std::vector<shot_fit::TrackSample> tracks;
       for (const ball_state_t& b : state.balls)
         tracks.push_back({b.ball_id, {b.position[0], b.position[1]}});
@@ -273,7 +276,6 @@ void PlannerNode::Publish(const cue_command_t& command,
 
 void PlannerNode::IdentifyIfDue() {
   if (options_.identify_every <= 0) return;
-  shots_.Finish();
   const std::vector<shot_fit::TrackedShot>& all = shots_.shots();
   if (all.size() < identified_shots_ + static_cast<std::size_t>(options_.identify_every)) return;
   identified_shots_ = all.size();
@@ -308,18 +310,39 @@ void PlannerNode::IdentifyIfDue() {
   }
 }
 
+void PlannerNode::LearnNoiseIfDue() {
+  if (!options_.learn_noise) return;
+  try {
+    if (!noise_learner_.Learn(shots_.shots(), shots_.strike_utimes(), params_)) return;
+    const shot_fit::NoiseFit& fit = *noise_learner_.fit();
+    constexpr double kMicroDegree = 3.14159265358979323846 / 180.0 * 1e-6;
+    health_.Set("learned_noise_launches", static_cast<std::int64_t>(fit.used.size()));
+    health_.Set("learned_heading_udeg", std::llround(fit.heading.value / kMicroDegree));
+    health_.Set("learned_speed_ppm", std::llround(1e6 * fit.speed.value));
+    health_.Set("learned_tip_um", std::llround(1e6 * fit.tip.value));
+    health_.Count("noise_learned");
+    log_(noise_learner_.Describe());
+  } catch (const std::exception& e) {
+    health_.Count("noise_learning_failed");
+    log_(std::string("noise learning failed, choosing on with the noise so far: ") + e.what());
+  }
+}
+
 bool PlannerNode::Work() {
   try {
     if (!waiting_.empty()) {
       Waiting w = std::move(waiting_.front());
       waiting_.pop_front();
       health_.SetQueueDepth(static_cast<int>(waiting_.size()));
+      if (RecordsShots()) shots_.Finish();  // the balls are at rest by the next request
       IdentifyIfDue();
+      LearnNoiseIfDue();
       const cue_command_t command = Answer(w.request);
       Publish(command, w.arrived);
-      if (options_.identify_every > 0 && command.status == cue_command_t::STATUS_OK) {
+      if (RecordsShots() && command.status == cue_command_t::STATUS_OK) {
         shots_.Strike(command.utime, command.ball_id);
       }
+      if (options_.learn_noise) noise_learner_.Commanded(command);
       log_(Describe(command));
       answered_.push_back({std::move(w.bytes), StateUtime(w.request), command});
       if (answered_.size() > kRememberedAnswers) answered_.pop_front();

@@ -42,6 +42,11 @@
 // (a late or reordered message), unless the publisher has started a new clock (message_clock.h):
 // then what the node knew of the old one is forgotten.
 //
+// Noise learning (PlannerNodeOptions::learn_noise): the same shots, each launch measured against
+// its stroke before the next plan (noise_learning.h); the choice plans for the noise learned,
+// which is logged and on NODE_STATUS (learned_noise_launches, learned_heading_udeg,
+// learned_speed_ppm, learned_tip_um).
+//
 // Online identification (PlannerNodeOptions::identify_every): the node cuts its own shots as
 // `billiard identify` cuts a log (sim/shot_fit/shot_recorder.h): each ok answer a strike of its
 // ball, the table states the shot's samples, the shot closed when the next request is planned
@@ -70,6 +75,7 @@
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/node/message_clock.h"
 #include "lcmtypes/node/node_health.h"
+#include "planner/node/noise_learning.h"
 #include "planner/node/planner_node_options.h"
 #include "planner/players/player.h"
 #include "sim/batch/thread_pool.h"
@@ -127,9 +133,13 @@ class PlannerNode {
     int8_t status;
     std::string reason;
   };
-  // Closes the shot in progress and, when identify_every more have closed since the last fit,
-  // fits the constants to the latest shots and plans with them.
+  // Whether the node cuts its own shots (for identification or noise learning).
+  bool RecordsShots() const { return options_.identify_every > 0 || options_.learn_noise; }
+  // When identify_every more shots have closed since the last fit, fits the constants to the
+  // latest shots and plans with them.
   void IdentifyIfDue();
+  // With learn_noise, measures the shots closed since the last time and fits the noise again.
+  void LearnNoiseIfDue();
 
   std::optional<Unfit> UnfitToPlanFrom(const shot_request_t& q, const ball_state_t& s) const;
 
@@ -171,6 +181,7 @@ class PlannerNode {
   std::unique_ptr<batch::ThreadPool> fit_pool_;
   mutable std::unique_ptr<batch::ThreadPool> choice_pool_;  // made at the first choice
   std::unique_ptr<players::Player> player_;                 // who chooses (options_.player)
+  NoiseLearner noise_learner_;                              // options_.learn_noise
   static constexpr double kLongestShot = 60.0;              // [s]
   static constexpr double kShotThinning = 0.002;            // [m], as the real recordings
   lcm::Subscription* table_state_subscription_ = nullptr;

@@ -41,6 +41,9 @@ void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line) {
                  "Identify the table online: every N shots, fit --identify to the node's own "
                  "tracked shots and plan with them (0: never)")
       ->capture_default_str();
+  app.add_flag("--learn-noise", options.learn_noise,
+               "Learn the robot's execution noise from the launches of its own strokes and "
+               "choose shots for it (from 10 measured launches on)");
   app.add_option("--identify", line->identify,
                  "The constants the online fit identifies: mu,rolling,spin,cushion,"
                  "cushion_friction,ball_ball")

@@ -35,6 +35,10 @@ struct PlannerNodeOptions {
   int identify_every = 0;
   std::vector<shot_fit::Constant> identify = {shot_fit::Constant::kMu,
                                               shot_fit::Constant::kRolling};
+  // Learn the robot's execution noise from its own strokes (noise_learning.h): every shot's
+  // launch measured from the tracks before the next plan, and from kMinNoiseShots of them on,
+  // MODE_CHOOSE plans for the noise learned instead of choice.noise (the prior).
+  bool learn_noise = false;
   // MODE_CHOOSE: the choice's samples, noise (the robot's, the table simulator's own) and seed;
   // its rules and pot options are the request's and `pot`.
   choice::ChoiceOptions choice;

@@ -72,6 +72,7 @@ void ShotRecorder::Finish() {
   }
   open.shot.id = std::to_string(shots_.size() + 1);
   shots_.push_back(std::move(open.shot));
+  strike_utimes_.push_back(open.strike_utime);
 }
 
 }  // namespace billiard::shot_fit

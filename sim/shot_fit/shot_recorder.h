@@ -53,6 +53,9 @@ class ShotRecorder {
 
   // The shots closed so far, in the order of their strikes; ids "1", "2", ... in that order.
   const std::vector<TrackedShot>& shots() const { return shots_; }
+  // Per shot, the utime of the strike that started it [us]: the commanded stroke it played
+  // (execution_noise_fit.h pairs them).
+  const std::vector<std::int64_t>& strike_utimes() const { return strike_utimes_; }
   // Strikes that started no shot, and shots dropped for having no sample after the strike.
   int skipped() const { return skipped_; }
 
@@ -72,6 +75,7 @@ class ShotRecorder {
   std::optional<Open> open_;
   std::optional<std::int64_t> last_strike_;
   std::vector<TrackedShot> shots_;
+  std::vector<std::int64_t> strike_utimes_;
   int skipped_ = 0;
 };
 

@@ -19,6 +19,7 @@ TEST(ShotRecorder, CutsStrikesAndStatesIntoShots) {
   recorder.Finish();
   ASSERT_EQ(recorder.shots().size(), 1u);
   EXPECT_EQ(recorder.skipped(), 1);
+  EXPECT_EQ(recorder.strike_utimes(), (std::vector<std::int64_t>{1020000}));
   const TrackedShot& shot = recorder.shots()[0];
   ASSERT_EQ(shot.balls.size(), 2u);
   EXPECT_EQ(shot.cue, 0u);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "lcmtypes/node/node_loop.h"
+#include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
 
 namespace billiard::table_sim_node {
@@ -68,6 +69,10 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
                  "Execution noise of the robot: on (sim/params/noise/robot.json) or off")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  app.add_option("--plant-noise", line->plant_noise,
+                 "The robot executes with this noise (a name or a JSON file of "
+                 "sim/params/noise/'s format) instead of --noise's, one the planner is not told "
+                 "of: a controller can be seen measuring its own noise");
   app.add_option("--camera-rate", options.camera_rate, "Frames per second")->capture_default_str();
   app.add_flag("--realtime", line->realtime, "Real time instead of lockstep");
   app.add_option("--drop-frames", faults.drop_frames,
@@ -127,6 +132,13 @@ TableSimOptions SessionOptions(const SessionCommandLine& line) {
   }
   options.lockstep = !line.realtime;
   if (line.noise == "on") options.noise = RobotExecutionNoise();
+  if (!line.plant_noise.empty()) {
+    try {
+      options.noise = params::LoadNoise(line.plant_noise);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--plant-noise: ") + e.what());
+    }
+  }
   return options;
 }
 
@@ -186,6 +198,7 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
   if (scene) summary["scene"] = SceneSummary(*scene, options.scene);
   if (games) summary["game"] = GameSummary(*games, options.game);
   if (options.plant) summary["plant"] = params::ParameterSetLabel(*options.plant);
+  if (!line.plant_noise.empty()) summary["plant_noise"] = options.noise.name;
   std::cout << summary.dump() << std::endl;
   return 0;
 }

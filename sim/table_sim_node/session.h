@@ -25,6 +25,9 @@ struct SessionCommandLine {
   std::string params = params::kDefaultParameterSet;
   std::string plant_params;  // --plant-params: the table's own physics; empty: `params`
   std::string noise = "off";  // "on": the robot's execution noise, RobotExecutionNoise()
+  // --plant-noise: the noise the robot executes with when it differs from the one the planner
+  // is told of (a name or a JSON file, sim/params/execution_noise.h); empty: `noise`'s.
+  std::string plant_noise;
   bool realtime = false;
   std::vector<std::string> pots;  // --pot K:P, in order
   TableSimOptions options;

@@ -25,6 +25,7 @@
 #include "sim/shot_fit/shot_fit.h"
 #include "sim/shot_fit/shot_recorder.h"
 #include "tools/billiard/command_line.h"
+#include "tools/billiard/logged_shots.h"
 #include "plot/table_picture.h"
 
 namespace billiard::cli {
@@ -344,84 +345,6 @@ struct IdentifyArgs {
   int threads = batch::DefaultThreadCount(), rounds = 1;
   bool json = false;
 };
-
-// The shots of a recorded loop, cut by shot_fit::ShotRecorder: each commanded strike
-// (CUE_COMMAND, status ok) the start of one, the estimator's TABLE_STATE tracks its samples.
-// With `truth`, the samples are the table simulator's TABLE_TRUTH instead, the struck ball the
-// true one nearest the struck track: the same shots without the estimator, which tells what
-// the tracking adds to the constants' error from what the fit does.
-struct LoggedShots {
-  std::vector<shot_fit::TrackedShot> shots;
-  long events = 0, states = 0, strikes = 0, refused = 0, undecodable = 0;
-  int skipped = 0;  // strikes that started no shot (ShotRecorder::skipped)
-};
-
-std::vector<shot_fit::TrackSample> Samples(const table_state_t& state) {
-  std::vector<shot_fit::TrackSample> tracks;
-  for (const ball_state_t& b : state.balls)
-    tracks.push_back({b.ball_id, {b.position[0], b.position[1]}});
-  return tracks;
-}
-
-// The ball of `to` nearest track `track` of `from`; `track` itself when `from` has no such track
-// or `to` no ball.
-std::int32_t NearestBall(const std::vector<shot_fit::TrackSample>& from, std::int32_t track,
-                         const std::vector<shot_fit::TrackSample>& to) {
-  const auto struck = std::find_if(from.begin(), from.end(),
-                                   [&](const shot_fit::TrackSample& s) { return s.track == track; });
-  if (struck == from.end() || to.empty()) return track;
-  const auto nearest = std::min_element(
-      to.begin(), to.end(), [&](const shot_fit::TrackSample& a, const shot_fit::TrackSample& b) {
-        return (a.position - struck->position).squaredNorm() <
-               (b.position - struck->position).squaredNorm();
-      });
-  return nearest->track;
-}
-
-LoggedShots ReadLoggedShots(const std::string& path, bool truth) {
-  lcm::LogFile log(path, "r");
-  if (!log.good()) throw UsageError("cannot read LCM log '" + path + "'");
-  shot_fit::ShotRecorder recorder;
-  LoggedShots out;
-  std::vector<shot_fit::TrackSample> estimated, true_balls;  // the latest of each
-  const std::string samples_channel =
-      truth ? messages::kTableTruthChannel : messages::kTableStateChannel;
-  for (const lcm::LogEvent* e; (e = log.readNextEvent()); ++out.events) {
-    const auto size = static_cast<std::size_t>(e->datalen);
-    if (e->channel == messages::kTableStateChannel || e->channel == messages::kTableTruthChannel) {
-      table_state_t state;
-      if (!messages::DecodeChecked(e->data, size, state).empty()) {
-        ++out.undecodable;
-        continue;
-      }
-      (e->channel == messages::kTableStateChannel ? estimated : true_balls) = Samples(state);
-      if (e->channel != samples_channel) continue;
-      ++out.states;
-      recorder.State(state.utime, truth ? true_balls : estimated);
-    } else if (e->channel == messages::kCueCommandChannel) {
-      cue_command_t command;
-      if (!messages::DecodeChecked(e->data, size, command).empty()) {
-        ++out.undecodable;
-      } else if (command.status != cue_command_t::STATUS_OK) {
-        ++out.refused;
-      } else {
-        ++out.strikes;
-        recorder.Strike(command.utime, truth ? NearestBall(estimated, command.ball_id, true_balls)
-                                             : command.ball_id);
-      }
-    }
-  }
-  recorder.Finish();
-  if (out.events == 0) throw UsageError("'" + path + "' is empty or not an LCM log");
-  out.shots = recorder.shots();
-  out.skipped = recorder.skipped();
-  if (out.shots.empty()) {
-    throw UsageError("'" + path + "' holds no commanded strike followed by " +
-                     (truth ? "the simulator's truth" : "the estimator's tracks") + " (" + std::to_string(out.strikes) + " strikes, " +
-                     std::to_string(out.states) + " table states): nothing to identify from");
-  }
-  return out;
-}
 
 void RunIdentify(const IdentifyArgs& args) {
   if (args.threads < 1) throw UsageError("--threads must be >= 1");

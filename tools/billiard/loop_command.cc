@@ -18,13 +18,15 @@ namespace {
 // The estimator and the planner on the session's LCM: handling a frame publishes the estimator's
 // state, handling a request the planner's command, inside the simulator's waits. The planner
 // pots on the scene file's table (the default table for the break and the shots) and identifies
-// the table every `identify_every` shots (0: never).
+// the table every `identify_every` shots (0: never), and learns its noise with `learn_noise`.
 std::function<bool()> EstimatorAndPlanner(lcm::LCM& lcm, const physics::ModelParameters& params,
                                           const camera::CameraModel& camera,
-                                          const std::string& scene, int identify_every) {
+                                          const std::string& scene, int identify_every,
+                                          bool learn_noise) {
   auto estimator = std::make_shared<estimator_node::EstimatorNode>(lcm, camera, params);
   planner_node::PlannerNodeOptions options;
   options.identify_every = identify_every;
+  options.learn_noise = learn_noise;
   if (!scene.empty() && scene != "break") {
     try {
       options.table = table::BuildTable(params::LoadTableSpec(params::LoadScene(scene).table));
@@ -54,11 +56,17 @@ void AddLoopCommand(CLI::App& app) {
                   "N shots from its own tracked shots (0: never)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  cmd->callback([line, identify_every] {
+  auto learn_noise = std::make_shared<bool>(false);
+  cmd->add_flag("--learn-noise", *learn_noise,
+                "The planner learns the robot's execution noise from its own strokes and "
+                "chooses for it (planner_node --learn-noise)");
+  cmd->callback([line, identify_every, learn_noise] {
     line->lcm_url = "memq://";
-    const auto nodes = [line, identify_every](lcm::LCM& lcm, const physics::ModelParameters& params,
-                              const camera::CameraModel& camera) {
-      return EstimatorAndPlanner(lcm, params, camera, line->options.scene, *identify_every);
+    const auto nodes = [line, identify_every, learn_noise](
+                           lcm::LCM& lcm, const physics::ModelParameters& params,
+                           const camera::CameraModel& camera) {
+      return EstimatorAndPlanner(lcm, params, camera, line->options.scene, *identify_every,
+                                 *learn_noise);
     };
     const int status = table_sim_node::RunSessionCommand("billiard loop", *line, nodes);
     if (status != 0) throw ExitStatus(status);

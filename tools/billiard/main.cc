@@ -22,6 +22,7 @@
 #include "tools/billiard/edge_report_command.h"
 #include "tools/billiard/fit_contact_command.h"
 #include "tools/billiard/fit_shots_command.h"
+#include "tools/billiard/identify_noise_command.h"
 #include "tools/billiard/learn_balls_command.h"
 #include "tools/billiard/loop_command.h"
 #include "tools/billiard/node_status_command.h"
@@ -80,6 +81,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddFitContactCommand(app);
   billiard::cli::AddFitShotsCommand(app);
   billiard::cli::AddIdentifyCommand(app);
+  billiard::cli::AddIdentifyNoiseCommand(app);
   billiard::cli::AddBenchShotFitCommand(app);
   billiard::cli::AddBenchCommand(app);
   billiard::cli::AddPlanCommand(app);

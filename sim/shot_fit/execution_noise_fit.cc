@@ -1,0 +1,249 @@
+#include "sim/shot_fit/execution_noise_fit.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "sim/physics/closed_form.h"
+
+namespace billiard::shot_fit {
+
+namespace {
+
+// Central-difference steps of the stroke's errors: a millionth of the speed, a microradian, a
+// micrometre; the launch is smooth in each far beyond them.
+constexpr double kFractionStep = 1e-6, kHeadingStep = 1e-6, kTipStep = 1e-6;
+constexpr double kZ95 = 1.959963984540054;
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kMaxRejectionRounds = 10;
+
+// A spin the frames did not see weighs nothing: its variance is this per unit variance of a
+// tracked coordinate [1/m^2] (at the floor of 1e-5 m, still 1e4 of log speed squared).
+constexpr double kUnseen = 1e14;
+
+// The residual's coordinates of a launch velocity and the velocity it rolls on: log speed,
+// direction, log rolling speed.
+Eigen::Vector3d Coordinates(const Eigen::Vector2d& v, const Eigen::Vector2d& rolling) {
+  return {std::log(v.norm()), std::atan2(v.y(), v.x()), std::log(rolling.norm())};
+}
+
+double Wrapped(double angle) { return std::remainder(angle, 2.0 * kPi); }
+
+Eigen::Vector3d LaunchOf(const physics::CueStroke& stroke, const Eigen::Vector2d& start,
+                         const physics::ModelParameters& p) {
+  const physics::BallState launch = physics::StrikeBall(stroke, start, p);
+  const physics::ClosedFormTrajectory path(physics::ClosedFormParameters::From(p), launch);
+  return Coordinates(launch.segment<2>(physics::kVx),
+                     path.slide_end_state().segment<2>(physics::kVx));
+}
+
+// The variance components of one shot: what each free spread's variance multiplies, and what is
+// known.
+struct Components {
+  Eigen::Matrix3d g[3];  // speed fraction, heading, tip (side and height)
+  Eigen::Matrix3d fixed;
+  Eigen::Vector3d r;
+};
+
+Components ComponentsOf(const LaunchResidual& s, double position_variance,
+                        const NoiseFitOptions& o) {
+  Components c;
+  const auto outer = [&](int k) { return s.jacobian.col(k) * s.jacobian.col(k).transpose(); };
+  c.g[0] = outer(0);
+  c.g[1] = outer(1);
+  c.g[2] = outer(2) + outer(3);
+  const double absolute = o.speed_absolute / s.cue_speed;
+  c.fixed = position_variance * s.measurement + absolute * absolute * c.g[0];
+  c.r = s.residual;
+  return c;
+}
+
+// Fisher scoring for the variances theta of `free` components (the others held at theta's
+// values), the bias by generalised least squares at each step.
+struct Scoring {
+  Eigen::Vector3d theta;
+  Eigen::Vector3d bias = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
+  int iterations = 0;
+};
+
+Eigen::Matrix3d CovarianceOf(const Components& c, const Eigen::Vector3d& theta) {
+  return c.fixed + theta[0] * c.g[0] + theta[1] * c.g[1] + theta[2] * c.g[2];
+}
+
+Eigen::Vector3d Bias(const std::vector<Components>& shots, const Eigen::Vector3d& theta) {
+  Eigen::Matrix3d weight = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+  for (const Components& c : shots) {
+    const Eigen::Matrix3d w = CovarianceOf(c, theta).inverse();
+    weight += w;
+    weighted += w * c.r;
+  }
+  return weight.ldlt().solve(weighted);
+}
+
+void Score(const std::vector<Components>& shots, int free, Scoring& s, Eigen::Vector3d* score) {
+  score->setZero();
+  s.information.setZero();
+  for (const Components& c : shots) {
+    const Eigen::Matrix3d w = CovarianceOf(c, s.theta).inverse();
+    const Eigen::Vector3d e = w * (c.r - s.bias);
+    for (int j = 0; j < free; ++j) {
+      const Eigen::Matrix3d wg = w * c.g[j];
+      (*score)[j] += 0.5 * (e.dot(c.g[j] * e) - wg.trace());
+      for (int k = 0; k < free; ++k) s.information(j, k) += 0.5 * (wg * w * c.g[k]).trace();
+    }
+  }
+}
+
+Scoring FisherScoring(const std::vector<Components>& shots, Eigen::Vector3d theta, int free,
+                      const NoiseFitOptions& o) {
+  Scoring s;
+  s.theta = theta;
+  for (; s.iterations < o.max_iterations; ++s.iterations) {
+    s.bias = Bias(shots, s.theta);
+    Eigen::Vector3d score;
+    Score(shots, free, s, &score);
+    const Eigen::VectorXd step =
+        s.information.topLeftCorner(free, free).ldlt().solve(score.head(free));
+    double change = 0.0;
+    for (int j = 0; j < free; ++j) {
+      const double next = std::max(0.0, s.theta[j] + step[j]);
+      change = std::max(change, std::abs(next - s.theta[j]) / std::max(next, 1e-300));
+      s.theta[j] = next;
+    }
+    if (change < o.tolerance) break;
+  }
+  s.bias = Bias(shots, s.theta);
+  Eigen::Vector3d score;
+  Score(shots, free, s, &score);
+  return s;
+}
+
+// The spread of variance `theta` with standard error `sd_theta`.
+Spread SpreadOf(double theta, double sd_theta) {
+  Spread s;
+  s.identified = true;
+  s.value = std::sqrt(theta);
+  if (theta > 0.0) {
+    s.sd = sd_theta / (2.0 * s.value);
+    const double factor = std::exp(kZ95 * s.sd / s.value);
+    s.lower = s.value / factor;
+    s.upper = s.value * factor;
+  } else {
+    s.sd = std::sqrt(sd_theta);
+    s.upper = std::sqrt(kZ95 * sd_theta);
+  }
+  return s;
+}
+
+// The fit on `used`: the tip free, then held at its prior where it is not identified.
+NoiseFit FitOn(const std::vector<Components>& all, const std::vector<std::size_t>& used,
+               const NoiseFitOptions& o) {
+  std::vector<Components> shots;
+  for (std::size_t i : used) shots.push_back(all[i]);
+  const Eigen::Vector3d start(o.speed_start * o.speed_start, o.heading_start * o.heading_start,
+                              o.tip_prior * o.tip_prior);
+  Scoring s = FisherScoring(shots, start, 3, o);
+  Eigen::Matrix3d covariance = s.information.inverse();
+  const double tip_relative_sd = std::sqrt(covariance(2, 2)) / (2.0 * s.theta[2]);
+  const bool tip_identified = o.fit_tip && covariance.allFinite() && s.theta[2] > 0.0 &&
+                              tip_relative_sd <= kIdentifiableRelativeSd;
+  if (!tip_identified) {
+    Eigen::Vector3d held = s.theta;
+    held[2] = start[2];
+    s = FisherScoring(shots, held, 2, o);
+    covariance.setZero();
+    covariance.topLeftCorner(2, 2) = s.information.topLeftCorner(2, 2).inverse();
+  }
+  NoiseFit fit;
+  fit.speed = SpreadOf(s.theta[0], std::sqrt(covariance(0, 0)));
+  fit.heading = SpreadOf(s.theta[1], std::sqrt(covariance(1, 1)));
+  fit.tip = tip_identified ? SpreadOf(s.theta[2], std::sqrt(covariance(2, 2))) : Spread{};
+  if (!tip_identified) fit.tip.value = fit.tip.lower = fit.tip.upper = o.tip_prior;
+  fit.bias = s.bias;
+  fit.used = used;
+  fit.iterations = s.iterations;
+  return fit;
+}
+
+}  // namespace
+
+LaunchResidual ResidualOf(const physics::CueStroke& commanded, const Eigen::Vector2d& start,
+                          const MeasuredLaunch& launch, const physics::ModelParameters& p) {
+  LaunchResidual out;
+  out.cue_speed = commanded.speed;
+  const Eigen::Vector3d measured = Coordinates(launch.velocity, launch.rolling);
+  const Eigen::Vector3d predicted = LaunchOf(commanded, start, p);
+  out.residual = measured - predicted;
+  out.residual[1] = Wrapped(out.residual[1]);
+  const auto difference = [&](int k, double step) {
+    physics::CueStroke up = commanded, down = commanded;
+    double* up_field[] = {&up.speed, &up.heading, &up.tip_side, &up.tip_height};
+    double* down_field[] = {&down.speed, &down.heading, &down.tip_side, &down.tip_height};
+    const double h = k == 0 ? step * commanded.speed : step;  // a fraction of the speed
+    *up_field[k] += h;
+    *down_field[k] -= h;
+    Eigen::Vector3d d = LaunchOf(up, start, p) - LaunchOf(down, start, p);
+    d[1] = Wrapped(d[1]);
+    return Eigen::Vector3d(d / (2.0 * step));
+  };
+  const double steps[] = {kFractionStep, kHeadingStep, kTipStep, kTipStep};
+  for (int k = 0; k < 4; ++k) out.jacobian.col(k) = difference(k, steps[k]);
+  // The coordinates' derivatives with respect to (v, rolling).
+  const Eigen::Vector2d v = launch.velocity, u = launch.rolling;
+  Eigen::Matrix<double, 3, 4> g = Eigen::Matrix<double, 3, 4>::Zero();
+  g.block<1, 2>(0, 0) = v.transpose() / v.squaredNorm();
+  g.block<1, 2>(1, 0) = Eigen::Vector2d(-v.y(), v.x()).transpose() / v.squaredNorm();
+  g.block<1, 2>(2, 2) = u.transpose() / u.squaredNorm();
+  out.measurement = g * launch.joint_covariance * g.transpose() / launch.variance;
+  out.squares = launch.squares;
+  out.dof = launch.dof;
+  const auto unseen = [&](int k) {
+    out.measurement.row(k).setZero();
+    out.measurement.col(k).setZero();
+    out.measurement(k, k) = kUnseen;
+  };
+  if (!launch.launch_seen) unseen(0);
+  if (!launch.rolling_seen) unseen(2);
+  return out;
+}
+
+NoiseFit FitExecutionNoise(const std::vector<LaunchResidual>& shots, const NoiseFitOptions& o) {
+  if (shots.size() < 3) {
+    throw std::invalid_argument("the noise needs at least 3 shots, not " +
+                                std::to_string(shots.size()));
+  }
+  double squares = 0.0, dof = 0.0;
+  for (const LaunchResidual& s : shots) {
+    squares += s.squares;
+    dof += s.dof;
+  }
+  const double floor = o.position_sd_floor * o.position_sd_floor;
+  const double variance = std::max(floor, dof > 0.0 ? squares / dof : floor);
+  std::vector<Components> all;
+  for (const LaunchResidual& s : shots) all.push_back(ComponentsOf(s, variance, o));
+  std::vector<std::size_t> used(all.size());
+  for (std::size_t i = 0; i < used.size(); ++i) used[i] = i;
+  NoiseFit fit = FitOn(all, used, o);
+  for (int round = 0; round < kMaxRejectionRounds; ++round) {
+    const Eigen::Vector3d theta(fit.speed.value * fit.speed.value,
+                                fit.heading.value * fit.heading.value,
+                                fit.tip.value * fit.tip.value);
+    std::vector<std::size_t> inliers;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      const Eigen::Vector3d e = all[i].r - fit.bias;
+      if (e.dot(CovarianceOf(all[i], theta).ldlt().solve(e)) <= o.outlier_chi2) {
+        inliers.push_back(i);
+      }
+    }
+    if (inliers == fit.used || inliers.size() < 3) break;
+    fit = FitOn(all, inliers, o);
+  }
+  fit.rejected = all.size() - fit.used.size();
+  fit.position_sd = std::sqrt(variance);
+  return fit;
+}
+
+}  // namespace billiard::shot_fit
