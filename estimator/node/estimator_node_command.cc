@@ -17,8 +17,9 @@ void AddEstimatorNodeOptions(CLI::App& app, EstimatorNodeCommandLine* line) {
   app.add_option("--params", line->params, "paper | pool | path to a JSON parameter file")
       ->capture_default_str();
   app.add_option("--camera", line->camera,
-                 "Camera model JSON (billiard calibrate); default: the overhead camera of the "
-                 "table simulator at --width x --height");
+                 "Camera model JSON (billiard calibrate): the rig's calibration, whose table the "
+                 "balls are looked for on (never looked for itself); default: the overhead camera "
+                 "of the table simulator at --width x --height, the table found in the frames");
   app.add_option("--width", line->width, "Image width without --camera [px]")
       ->capture_default_str();
   app.add_option("--height", line->height, "Image height without --camera [px]")
@@ -38,7 +39,10 @@ int RunEstimatorNodeCommand(const EstimatorNodeCommandLine& line) {
     return 2;
   }
   return nodes::RunNodeUntilStopped("estimator_node", line.lcm_url, [&](lcm::LCM& lcm) {
-    auto node = std::make_shared<EstimatorNode>(lcm, camera, params);
+    estimator::EstimatorOptions options;
+    // A camera file is the rig's calibration: its table is used, never looked for.
+    options.table_from_camera = !line.camera.empty();
+    auto node = std::make_shared<EstimatorNode>(lcm, camera, params, options);
     std::cerr << "estimator_node: " << params::ParameterSetLabel(params) << " parameters, "
               << camera.width << "x" << camera.height << " camera, LCM "
               << nodes::DescribeUrl(line.lcm_url) << std::endl;

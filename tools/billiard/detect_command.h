@@ -9,10 +9,4 @@ namespace billiard::cli {
 // ball radius is not the frame's, and a frame without balls, are said so on stderr.
 void AddDetectCommand(CLI::App& app);
 
-// `billiard calibrate`: the camera's pose over the table from the four corner markers
-// (estimator/table_calibration.h), written as a camera JSON file for `detect --calib`; refused
-// (exit 3, nothing written) when the frame does not show the four markers or the pose reprojects
-// them beyond --max-reprojection-px.
-void AddCalibrateCommand(CLI::App& app);
-
 }  // namespace billiard::cli

@@ -14,6 +14,7 @@
 #include "tools/billiard/bench_estimator_command.h"
 #include "tools/billiard/bench_planner_command.h"
 #include "tools/billiard/burst_command.h"
+#include "tools/billiard/calibrate_command.h"
 #include "tools/billiard/choice_commands.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/detect_command.h"
