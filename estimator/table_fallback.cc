@@ -46,12 +46,12 @@ void SetInverseDepth(TableRegion* region) {
   region->inverse_depth = w / w.dot(region->Centre().homogeneous());
 }
 
-// The rectangle of the table grown by `out` [m] on every side at height z, through the camera.
-std::array<Eigen::Vector2d, 4> Projected(const CalibratedTable& c, double out) {
+// The playing surface's corners at the noses' height, through the camera.
+std::array<Eigen::Vector2d, 4> Projected(const CalibratedTable& c) {
   const double l = c.table.length, w = c.table.width, z = c.nose_height;
   const std::array<Eigen::Vector3d, 4> corners = {
-      Eigen::Vector3d(-out, -out, z), Eigen::Vector3d(l + out, -out, z),
-      Eigen::Vector3d(l + out, w + out, z), Eigen::Vector3d(-out, w + out, z)};
+      Eigen::Vector3d(0, 0, z), Eigen::Vector3d(l, 0, z), Eigen::Vector3d(l, w, z),
+      Eigen::Vector3d(0, w, z)};
   std::array<Eigen::Vector2d, 4> pixels;
   for (int i = 0; i < 4; ++i) pixels[i] = c.camera.Project(corners[i]);
   return pixels;
@@ -125,8 +125,8 @@ void ReadCloth(const cv::Mat& bgr, TableRegion* region) {
 TableRegion TableSeenBy(const CalibratedTable& calibrated, const cv::Mat& bgr) {
   TableRegion region;
   region.origin = TableOrigin::kCalibrated;
-  region.corners = Projected(calibrated, 0.0);
-  region.cloth_corners = Projected(calibrated, kCushionWidth);
+  region.corners = Projected(calibrated);
+  region.cloth_corners = region.corners;
   region.image_from_table = HomographyThrough(region.corners);
   SetInverseDepth(&region);
   region.depth_ratio = DepthRatio(calibrated);

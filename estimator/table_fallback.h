@@ -22,9 +22,6 @@ namespace billiard::estimator {
 // The height of a cushion's nose over the ball's diameter: the WPA's equipment specifications
 // (2001) put it at 62.5 % to 64.5 %; the middle.
 inline constexpr double kNoseHeightOverBallDiameter = 0.635;
-// How far out from the nose the cushion's top reaches [m]: a cushion's rubber and its cloth,
-// about 2 inches (the cloth's outline a camera sees around the playing surface).
-inline constexpr double kCushionWidth = 0.05;
 
 // The height of the cushions' noses above the cloth [m], for balls of `ball_radius` [m]: where the
 // corners of the playing surface a camera sees are (the noses' lines meet there).
@@ -40,9 +37,11 @@ struct CalibratedTable {
 };
 
 // The table a calibrated camera sees in a BGR frame of its size: the playing surface's corners
-// (at the noses' height) and the cloth's (kCushionWidth out) projected, the homography, depth and
-// view they imply, origin kCalibrated; the cloth's masks and colour from FindTable where it finds
-// the cloth, else the projected surface itself and the median colour on it.
+// projected at the noses' height, the homography, depth and view they imply, origin kCalibrated;
+// the cloth's masks and colour from FindTable where it finds the cloth, else the projected surface
+// itself and the median colour on it. Its cloth's outline is the playing surface's: no ball's
+// centre lies beyond the noses (a found table's cloth may include the cushions' tops, where a
+// calibration puts a rail's diamonds and a pocket's liner off the table, as they are).
 TableRegion TableSeenBy(const CalibratedTable& calibrated, const cv::Mat& bgr);
 
 // The cloth alone (TableSearch::cloth) as a table region seen from overhead: its corners the
