@@ -1,5 +1,6 @@
 #include "estimator/table_pose.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Cholesky>
@@ -134,6 +135,17 @@ SideLines SidesSeen(const std::array<Eigen::Vector2d, 4>& pixels,
   return sides;
 }
 
+// The largest over the smallest depth of the table's corners from the camera.
+double DepthRatio(const std::array<Eigen::Vector3d, 4>& corners, const camera::CameraModel& camera) {
+  double nearest = HUGE_VAL, farthest = 0;
+  for (const auto& c : corners) {
+    const double depth = (camera.rotation * c + camera.translation).z();
+    nearest = std::min(nearest, depth);
+    farthest = std::max(farthest, depth);
+  }
+  return farthest / nearest;
+}
+
 camera::CameraModel WithFocal(const cv::Size& size, double focal) {
   camera::CameraModel c;
   c.fx = c.fy = focal;
@@ -182,15 +194,18 @@ std::optional<CalibrationResult> CalibrateFromCorners(const TableCornerPixels& c
                                                       const physics::TableParameters& table,
                                                       double nose_height,
                                                       const camera::CameraModel& intrinsics) {
-  // A first pose with every corner on the cloth, its focal length from the grid unless given.
+  // A first pose with every corner on the cloth, its focal length the guess's unless given; in an
+  // oblique view, the grid's that fits best.
   const auto on_cloth = TablePointsOf(corners, table, 0.0);
   std::optional<CalibrationResult> first = PoseFromPoints(on_cloth, corners.pixels, size, intrinsics);
-  if (!(intrinsics.fx > 0)) {
-    const double guess_rms = first ? first->rms_reprojection_px : HUGE_VAL;
+  const bool fit_focal = !(intrinsics.fx > 0) && first &&
+                         DepthRatio(on_cloth, first->camera) > kOverheadDepthRatio;
+  if (fit_focal) {
+    const double guess_rms = first->rms_reprojection_px;
     for (double f = kMinFocal; f <= kMaxFocal; f *= std::pow(2.0, 1.0 / kFocalSteps)) {
       const auto fit = PoseFromPoints(on_cloth, corners.pixels, size, WithFocal(size, f * size.width));
       if (fit && fit->rms_reprojection_px < guess_rms - kFocalTiePx &&
-          (!first || fit->rms_reprojection_px < first->rms_reprojection_px)) {
+          fit->rms_reprojection_px < first->rms_reprojection_px) {
         first = fit;
       }
     }
@@ -199,8 +214,7 @@ std::optional<CalibrationResult> CalibrateFromCorners(const TableCornerPixels& c
   // Then each side at the height the camera sees it at, the pose (and focal length) refined.
   const SideLines sides = SidesSeen(corners.pixels, on_cloth, first->camera, nose_height);
   CalibrationResult result = *first;
-  result.rms_reprojection_px =
-      RefinePose(sides, /*fit_focal=*/!(intrinsics.fx > 0), &result.camera);
+  result.rms_reprojection_px = RefinePose(sides, fit_focal, &result.camera);
   return result;
 }
 

@@ -21,9 +21,9 @@
 // Four points give the pose's six unknowns two equations to spare; unless a focal length is
 // given, one of them fits it (Zhang 2000: a rectangle's homography fixes the focal length of an
 // oblique view): the focal length whose pose reprojects the corners best, over a geometric grid
-// of focal lengths, then refined with the pose. An overhead view fits every focal length about
-// alike (its height changes, not its map of the cloth), and starts from the guess of the image
-// width. The fit's error is the RMS distance of the sides' ends from their lines [px].
+// of focal lengths, then refined with the pose. An overhead view (its corners' depths within
+// kOverheadDepthRatio) fits every focal length about alike (its height changes, not its map of
+// the cloth), and keeps the guess of the image width. The fit's error is the RMS distance of the sides' ends from their lines [px].
 #pragma once
 
 #include <Eigen/Core>
