@@ -62,7 +62,8 @@ FrameRuns RunFrame(const LabelledFrame& frame, const cv::Mat& image,
     runs.looks.push_back(
         estimator::LookAtBalls(detector.SearchedFrame(image), runs.balls.back(), options.ball_set));
     runs.failure = detector.failure();
-    runs.table_view = detector.table() ? estimator::TableViewName(detector.table()->view) : "";
+    runs.table_view =
+        detector.knows_table() ? estimator::TableViewName(detector.table()->view) : "";
   }
   return runs;
 }

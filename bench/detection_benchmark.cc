@@ -367,7 +367,7 @@ DetectionBenchmarkResult RunDetectionBenchmark(const std::string& set,
     score.first_frame_ms = first_ms;
     score.next_frame_ms = Median(next_ms);
     score.failure = detector.failure();
-    score.table = detector.table();
+    if (detector.knows_table()) score.table = detector.table();
     score.table_view = score.table ? estimator::TableViewName(score.table->view) : "";
     score.view = !frame.view.empty() ? frame.view : score.table_view;
     score.table_labelled = frame.corners.has_value();

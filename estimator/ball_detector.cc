@@ -12,6 +12,7 @@
 #include "estimator/lab_image.h"
 #include "estimator/local_cloth.h"
 #include "estimator/not_cloth.h"
+#include "estimator/table_fallback.h"
 
 namespace billiard::estimator {
 
@@ -206,12 +207,11 @@ std::vector<BallDetection> OnCloth(const cv::Mat& bgr, const TableRegion& table,
 }
 
 // The outline's band for OutlineAgreement: kOutlineBandPx either side of the cloth's outline at
-// the table search's resolution (the frame's longer side at most kOutlineSearchSize pixels).
+// the table search's resolution (the frame's longer side at most kTableSearchSize pixels).
 constexpr int kOutlineBandPx = 3;
-constexpr double kOutlineSearchSize = 400.0;
 
 int OutlineFactor(const cv::Size& size) {
-  return static_cast<int>(std::ceil(std::max(size.width, size.height) / kOutlineSearchSize));
+  return static_cast<int>(std::ceil(std::max(size.width, size.height) / kTableSearchSize));
 }
 
 // The gradient magnitude of a frame's grey levels at the table search's resolution.
@@ -356,17 +356,19 @@ BallDetector::BallDetector(DetectorOptions options) : options_(options) {
 
 bool BallDetector::LearnTable(const cv::Mat& image) {
   const cv::Mat bgr = AsBgr(image);
+  std::optional<TableRegion> table = LookForTable(bgr);
+  const auto a_table = [](const std::optional<TableRegion>& t) {
+    return t && t->origin != TableOrigin::kClothOnly;
+  };
+  if (!a_table(table) && a_table(table_) && bgr.size() == frame_size_) {
+    return false;  // the table learnt before stands: an arm across a side does not unlearn it
+  }
   frame_size_ = bgr.size();
-  table_.reset();
+  table_ = std::move(table);
   scale_.reset();
   cloth_ = {};
   smoothing_px_ = 0;
-  TableSearch search = FindTable(bgr);
-  if (!search.table) {
-    failure_ = search.reason;
-    return false;
-  }
-  table_ = std::move(search.table);
+  if (!table_) return false;
   cloth_ = LearnClothModel(bgr, *table_);
   unsmoothed_edge_noise_ = cloth_.edge_noise;
   smoothing_px_ = cloth_.edge_noise > kNoisyEdges ? kNoiseSmoothingPx : 0.0;
@@ -388,8 +390,17 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
                          static_cast<int>(std::lround((c.y() + 0.5) / factor - 0.5)));
   }
   cv::polylines(outline_band_, outline, true, 255, 2 * kOutlineBandPx + 1);
+  return failure_.empty();
+}
+
+std::optional<TableRegion> BallDetector::LookForTable(const cv::Mat& bgr) {
   failure_.clear();
-  return true;
+  if (options_.calibrated) return TableSeenBy(*options_.calibrated, bgr);
+  TableSearch search = FindTable(bgr);
+  failure_ = search.reason;
+  if (search.table) return search.table;
+  if (search.cloth) return ClothOnly(*search.cloth);
+  return std::nullopt;
 }
 
 double BallDetector::OutlineAgreement(const cv::Mat& image) const {
@@ -415,7 +426,11 @@ double BallDetector::OutlineAgreement(const cv::Mat& image) const {
 
 std::vector<BallDetection> BallDetector::Detect(const cv::Mat& image) {
   const cv::Mat raw = AsBgr(image);
-  if ((raw.size() != frame_size_ || !table_) && !LearnTable(raw)) return {};
+  // A frame whose table was not found is looked at again: this one may show it.
+  if (raw.size() != frame_size_ || !table_ || table_->origin == TableOrigin::kClothOnly) {
+    LearnTable(raw);
+  }
+  if (!table_) return {};
   const cv::Mat bgr = Smoothed(raw);
   const bool settling = !scale_settled_;
   std::vector<BallDetection> balls =

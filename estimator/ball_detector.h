@@ -41,6 +41,7 @@
 #include "estimator/ball_scale.h"
 #include "estimator/cloth_model.h"
 #include "estimator/identity_parameters.h"
+#include "estimator/table_fallback.h"
 #include "estimator/table_finder.h"
 #include "sim/camera/camera_model.h"
 
@@ -66,6 +67,9 @@ struct DetectorOptions {
   // The balls' set, for their classes, and the colours and shares they are told apart by.
   BallSet ball_set = BallSet::kPool;
   IdentityParameters identity = HandSetIdentity();
+  // A calibrated camera and its table: the table is where the camera puts it, never looked for
+  // (table_fallback.h).
+  std::optional<CalibratedTable> calibrated;
   // The ball's radius over the playing surface's width, for a first scale where nothing on the
   // table is the size and shape of a ball (an empty table, a rack): pool balls on a 9-ft table.
   double ball_to_table_width = 0.028575 / 1.27;
@@ -80,13 +84,18 @@ class BallDetector {
   explicit BallDetector(DetectorOptions options = {});
 
   // Learns the table, its cloth and the balls' scale from a BGR (CV_8UC3) or grey (CV_8UC1)
-  // frame; false, failure() saying why, when no table is found. The table and its lights do not
-  // change between frames, so this runs once, on Detect's first frame (and again when the frame
-  // size changes, or when asked).
+  // frame: the calibrated camera's table (DetectorOptions::calibrated), else the table found in
+  // the frame. False, failure() saying why, when no table is found; then a table learnt before
+  // from a frame of this size is kept (an arm across a side, a player leaning over the table:
+  // the rig has not moved), else the cloth alone is the region looked at (table_fallback.h's
+  // ClothOnly; none when no cloth is found either). The table and its lights do not change
+  // between frames, so this runs once, on Detect's first frame (and again when the frame size
+  // changes, while only the cloth is known, or when asked).
   bool LearnTable(const cv::Mat& image);
 
-  // Every ball in a frame, best score first, identified. Empty when no table is found
-  // (failure() says why) or no ball is there.
+  // Every ball in a frame, best score first, identified. Where no table is found, the balls on
+  // the cloth (table()->origin kClothOnly; failure() says why no table); empty when no cloth is
+  // found either or no ball is there.
   std::vector<BallDetection> Detect(const cv::Mat& image);
 
   // The ball near `predicted` (within about one radius of `radius_px`), for a tracker. Before a
@@ -115,13 +124,16 @@ class BallDetector {
   double OutlineAgreement(const cv::Mat& image) const;
 
   const DetectorOptions& options() const { return options_; }
+  // The region the balls are looked for in: the table, or the cloth alone (its origin says).
   const std::optional<TableRegion>& table() const { return table_; }
+  // Whether the table is known (found or calibrated), not the cloth alone.
+  bool knows_table() const { return table_ && table_->origin != TableOrigin::kClothOnly; }
   const std::optional<BallScale>& scale() const { return scale_; }
   const ClothModel& cloth() const { return cloth_; }
   // The ball radius at the table's centre [px] (the option, or the measure); 0 before one is
   // learnt.
   double radius_px() const { return scale_ ? scale_->radius_at_centre : 0.0; }
-  // Why the last LearnTable found no table; empty when it found one.
+  // Why the last LearnTable found no table; empty when it found one or had a calibration.
   const std::string& failure() const { return failure_; }
 
  private:
@@ -136,6 +148,9 @@ class BallDetector {
   // A larger scale than the measured one, where it makes clearly more balls sure (the top of
   // ball_detector.cc), with the balls found at it.
   void TryLargerScales(const cv::Mat& bgr, std::vector<BallDetection>* balls);
+  // The calibrated camera's table, the table found, or the cloth alone; failure_ says why no
+  // table was found.
+  std::optional<TableRegion> LookForTable(const cv::Mat& bgr);
   // The frame as the balls are looked for in it: smoothed a little if the camera is noisy.
   cv::Mat Smoothed(const cv::Mat& bgr) const;
 

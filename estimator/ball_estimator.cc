@@ -10,13 +10,18 @@ namespace {
 // met share theirs about evenly (0.5); a few frames of detections name a ball above 0.99.
 constexpr double kIdentityInDoubt = 0.9;
 
-// The detector looks for the camera's balls: of their size, and of their set's classes.
-DetectorOptions ForTheBalls(DetectorOptions options, const camera::CameraModel& camera,
+// The detector looks for the camera's balls: of their size, and of their set's classes; on the
+// camera's table when it is the rig's calibration.
+DetectorOptions ForTheBalls(const EstimatorOptions& estimator, const camera::CameraModel& camera,
                             const physics::ModelParameters& params) {
+  DetectorOptions options = estimator.detector;
   if (options.ball_radius_px <= 0.0) {
     options.ball_radius_px = ExpectedRadiusPx(camera, params.ball.radius);
   }
   options.ball_set = BallSetOf(params.name);
+  if (estimator.table_from_camera) {
+    options.calibrated = CalibratedTable{camera, params.table, NoseHeight(params.ball.radius)};
+  }
   return options;
 }
 
@@ -40,7 +45,7 @@ BallEstimator::BallEstimator(const camera::CameraModel& camera,
     : camera_(camera),
       params_(params),
       options_(options),
-      detector_(ForTheBalls(options.detector, camera, params)),
+      detector_(ForTheBalls(options, camera, params)),
       tracker_(params, ForTheBalls(options.tracker, params)) {}
 
 Eigen::Vector2d BallEstimator::ToTable(const Eigen::Vector2d& pixel) const {

@@ -8,11 +8,14 @@
 // published track's identity is in doubt, as after two balls met and shared theirs
 // (ball_tracker.h): the next full detection may be a second away.
 //
-// A fixed camera's table is learnt once, on its first frame, and kept. Each full detection first
+// A fixed camera's table is learnt once, on its first frame (or given by its calibration:
+// EstimatorOptions::table_from_camera), and kept. Each full detection first
 // checks that the view has not moved (BallDetector::OutlineAgreement below kMovedAgreement: the
 // rails and pockets are no longer where they were); if it has, the table is learnt again from
 // that frame and the move counted (views_moved()): the camera model, calibrated for the old view,
-// is then stale, which the node says in NODE_STATUS.
+// is then stale, which the node says in NODE_STATUS. A frame whose table is not found keeps the
+// one learnt before; before any is, the balls on the cloth are still found
+// (BallDetector::LearnTable).
 #pragma once
 
 #include <Eigen/Core>
@@ -33,6 +36,11 @@ inline constexpr double kMovedAgreement = 0.5;
 
 struct EstimatorOptions {
   DetectorOptions detector;
+  // Whether the camera is this rig's calibration (`billiard calibrate`): its table is the one the
+  // balls are looked for on, never looked for itself (table_fallback.h), so that a frame with an
+  // arm across the table is read like any other. Otherwise the table is found on the first frame
+  // (and kept where a later frame's is not found).
+  bool table_from_camera = false;
   TrackerOptions tracker;
   int full_detect_every = 30;  // frames
 };

@@ -136,35 +136,35 @@ std::optional<std::array<Eigen::Vector2d, 4>> FindCornerMarkers(const cv::Mat& i
   return markers;
 }
 
-std::optional<CalibrationResult> CalibrateTable(const cv::Mat& image, const MarkerLayout& layout,
+std::optional<CalibrationResult> PoseFromPoints(const std::array<Eigen::Vector3d, 4>& table_points,
+                                                const std::array<Eigen::Vector2d, 4>& pixels,
+                                                const cv::Size& size,
                                                 const camera::CameraModel& intrinsics) {
-  const auto markers = FindCornerMarkers(image);
-  if (!markers) return std::nullopt;
   CalibrationResult result;
-  result.markers = *markers;
+  result.points = pixels;
   camera::CameraModel& camera = result.camera;
   camera = intrinsics;
-  camera.width = image.cols;
-  camera.height = image.rows;
+  camera.width = size.width;
+  camera.height = size.height;
   if (!(intrinsics.fx > 0)) {
-    camera.fx = camera.fy = image.cols;
-    camera.cx = 0.5 * (image.cols - 1);
-    camera.cy = 0.5 * (image.rows - 1);
+    camera.fx = camera.fy = size.width;
+    camera.cx = 0.5 * (size.width - 1);
+    camera.cy = 0.5 * (size.height - 1);
     camera.distortion = {};
   }
   const cv::Matx33d k(camera.fx, 0, camera.cx, 0, camera.fy, camera.cy, 0, 0, 1);
   const std::vector<double> distortion(camera.distortion.begin(), camera.distortion.end());
   std::vector<cv::Point3d> object;
-  std::vector<cv::Point2d> pixels;
+  std::vector<cv::Point2d> image;
   for (int i = 0; i < 4; ++i) {
-    object.emplace_back(layout.centres[i].x(), layout.centres[i].y(), layout.centres[i].z());
-    pixels.emplace_back(result.markers[i].x(), result.markers[i].y());
+    object.emplace_back(table_points[i].x(), table_points[i].y(), table_points[i].z());
+    image.emplace_back(pixels[i].x(), pixels[i].y());
   }
   cv::Vec3d rvec, tvec;
-  if (!cv::solvePnP(object, pixels, k, distortion, rvec, tvec, false, cv::SOLVEPNP_IPPE)) {
+  if (!cv::solvePnP(object, image, k, distortion, rvec, tvec, false, cv::SOLVEPNP_IPPE)) {
     return std::nullopt;
   }
-  cv::solvePnPRefineLM(object, pixels, k, distortion, rvec, tvec);
+  cv::solvePnPRefineLM(object, image, k, distortion, rvec, tvec);
   cv::Matx33d r;
   cv::Rodrigues(rvec, r);
   for (int i = 0; i < 3; ++i) {
@@ -172,11 +172,16 @@ std::optional<CalibrationResult> CalibrateTable(const cv::Mat& image, const Mark
     camera.translation(i) = tvec[i];
   }
   double sum = 0;
-  for (int i = 0; i < 4; ++i) {
-    sum += (camera.Project(layout.centres[i]) - result.markers[i]).squaredNorm();
-  }
+  for (int i = 0; i < 4; ++i) sum += (camera.Project(table_points[i]) - pixels[i]).squaredNorm();
   result.rms_reprojection_px = std::sqrt(sum / 4);
   return result;
+}
+
+std::optional<CalibrationResult> CalibrateTable(const cv::Mat& image, const MarkerLayout& layout,
+                                                const camera::CameraModel& intrinsics) {
+  const auto markers = FindCornerMarkers(image);
+  if (!markers) return std::nullopt;
+  return PoseFromPoints(layout.centres, *markers, image.size(), intrinsics);
 }
 
 std::optional<MarkerLayout> MarkersOnTableSeen(const cv::Mat& image,

@@ -58,9 +58,20 @@ std::optional<std::array<Eigen::Vector2d, 4>> FindCornerMarkers(const cv::Mat& i
 
 struct CalibrationResult {
   camera::CameraModel camera;
-  std::array<Eigen::Vector2d, 4> markers;  // found centres [px]
-  double rms_reprojection_px = 0;          // of the marker centres
+  // The points the pose is fitted to [px]: the markers' centres found, or the table's corners
+  // (table_pose.h).
+  std::array<Eigen::Vector2d, 4> points;
+  double rms_reprojection_px = 0;  // of those points
 };
+
+// The camera whose pose puts `table_points` [m] at `pixels`: cv::solvePnP (IPPE for the planar
+// points, then Levenberg-Marquardt) with `intrinsics` (their focal length, principal point and
+// distortion), or where its focal length is zero a guess of the image width (a 53 degree
+// horizontal field of view) and the image centre. None when OpenCV finds no pose.
+std::optional<CalibrationResult> PoseFromPoints(const std::array<Eigen::Vector3d, 4>& table_points,
+                                                const std::array<Eigen::Vector2d, 4>& pixels,
+                                                const cv::Size& size,
+                                                const camera::CameraModel& intrinsics = {});
 
 // The camera over the table. `intrinsics` supplies the image size, focal lengths, principal
 // point and distortion (its pose is ignored); when its focal length is zero, a guess of the

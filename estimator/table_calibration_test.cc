@@ -82,8 +82,8 @@ TEST(TableCalibration, RecoversAKnownCameraFromRenderedMarkers) {
     ASSERT_TRUE(result.has_value()) << (inverted ? "inverted" : "normal");
     for (int i = 0; i < 4; ++i) {
       marker_error =
-          std::max(marker_error, (result->markers[i] - truth.Project(layout.centres[i])).norm());
-      EXPECT_LT((result->markers[i] - truth.Project(layout.centres[i])).norm(), 0.5)
+          std::max(marker_error, (result->points[i] - truth.Project(layout.centres[i])).norm());
+      EXPECT_LT((result->points[i] - truth.Project(layout.centres[i])).norm(), 0.5)
           << "marker " << i << (inverted ? " (inverted)" : "");
     }
     EXPECT_LT(result->rms_reprojection_px, 0.5);

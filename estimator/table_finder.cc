@@ -15,8 +15,6 @@ namespace billiard::estimator {
 
 namespace {
 
-// The search resolution: the frame's longer side reduced to at most this many pixels.
-constexpr double kSearchSize = 400.0;
 // The cloth colour's mode: a histogram of L* in bins of kLightnessBin and a*, b* in bins of
 // kChromaBin, each pixel weighted by 1 - d^2 (d: its offset from the image centre over half the
 // image's width and height), so that a cloth filling the middle wins over a floor filling the
@@ -467,6 +465,18 @@ const char* TableViewName(TableView view) {
   return view == TableView::kOverhead ? "overhead" : "oblique";
 }
 
+const char* TableOriginName(TableOrigin origin) {
+  switch (origin) {
+    case TableOrigin::kFound:
+      return "found";
+    case TableOrigin::kCalibrated:
+      return "calibration";
+    case TableOrigin::kClothOnly:
+      return "cloth only";
+  }
+  return "found";
+}
+
 namespace {
 
 bool InsideQuadrilateral(const std::array<Eigen::Vector2d, 4>& corners,
@@ -539,9 +549,9 @@ cv::Rect TableRegion::Bounds() const {
 }
 
 TableSearch FindTable(const cv::Mat& bgr) {
-  if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame"};
+  if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame", std::nullopt};
   // An integer reduction: OpenCV's area averaging is much faster by whole factors.
-  const int factor = static_cast<int>(std::ceil(std::max(bgr.cols, bgr.rows) / kSearchSize));
+  const int factor = static_cast<int>(std::ceil(std::max(bgr.cols, bgr.rows) / kTableSearchSize));
   const double scale = 1.0 / factor;
   cv::Mat small;
   cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
@@ -550,15 +560,19 @@ TableSearch FindTable(const cv::Mat& bgr) {
   table.cloth_colour = ClothColour(small);
   const cv::Vec3f cloth_lab = LabOfBgr(table.cloth_colour);
   if (cloth_lab[0] > kMaxClothLightness && std::hypot(cloth_lab[1], cloth_lab[2]) < kMinClothChroma) {
-    return {std::nullopt, "no table: what fills the frame's middle is white, not a cloth"};
+    return {std::nullopt, "no table: what fills the frame's middle is white, not a cloth",
+            std::nullopt};
   }
   table.cloth = LargestCentralRegion(ClothLike(small, table.cloth_colour));
   if (cv::countNonZero(table.cloth) < kMinClothFraction * small.total()) {
     return {std::nullopt, "no table: no evenly coloured cloth covers " +
                               std::to_string(static_cast<int>(100 * kMinClothFraction)) +
-                              " % of the frame"};
+                              " % of the frame",
+            std::nullopt};
   }
   table.surface = FillHoles(table.cloth);
+  // Past here the cloth is found: a frame without its table still has it (TableSearch::cloth).
+  const TableRegion cloth = table;
 
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours(table.surface.clone(), contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
@@ -574,7 +588,7 @@ TableSearch FindTable(const cv::Mat& bgr) {
     if (polygon.size() <= 4) break;
   }
   if (polygon.size() != 4) {
-    return {std::nullopt, "no table: the cloth's outline is not a quadrilateral"};
+    return {std::nullopt, "no table: the cloth's outline is not a quadrilateral", cloth};
   }
   std::array<std::vector<Line>, 4> stretches;
   std::array<Line, 4> sides;
@@ -582,7 +596,7 @@ TableSearch FindTable(const cv::Mat& bgr) {
   for (int i = 0; i < 4; ++i) {
     stretches[i] = FitSides(outline, polygon[i], polygon[(i + 1) % 4], perimeter);
     if (stretches[i].empty()) {
-      return {std::nullopt, "no table: a side of the cloth is not straight"};
+      return {std::nullopt, "no table: a side of the cloth is not straight", cloth};
     }
     for (Line& stretch : stretches[i]) {
       stretch.coefficients.z() /= scale;  // to full-resolution pixels
@@ -592,7 +606,7 @@ TableSearch FindTable(const cv::Mat& bgr) {
     lines[i] = sides[i].coefficients;
   }
   if (!Intersections(lines, &table.cloth_corners)) {
-    return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
+    return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet", cloth};
   }
   const bool long_first = LongSideFirst(table.cloth_corners, bgr.size());
   const std::array<Eigen::Vector3d, 4> rough_lines = lines;
@@ -621,7 +635,7 @@ TableSearch FindTable(const cv::Mat& bgr) {
     }
     table.side_fit_rms_px = std::sqrt(squares / std::max(1, points));
     if (!Intersections(lines, &table.cloth_corners)) {
-      return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet"};
+      return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet", cloth};
     }
     std::array<int, 4> nose_places;
     lines = CushionNoses(bgr, table.cloth_corners, long_first, &nose_places);
@@ -633,14 +647,14 @@ TableSearch FindTable(const cv::Mat& bgr) {
     }
   }
   if (!Intersections(lines, &table.corners)) {
-    return {std::nullopt, "no table: two neighbouring cushions do not meet"};
+    return {std::nullopt, "no table: two neighbouring cushions do not meet", cloth};
   }
   table.image_from_table = ImageFromTable(table.corners, long_first);
   const Eigen::Vector3d inverse_depth = table.image_from_table.inverse().row(2).transpose();
   table.inverse_depth = inverse_depth / inverse_depth.dot(table.Centre().homogeneous());
   table.depth_ratio = DepthRatio(table.corners);
   if (!(table.depth_ratio > 0)) {
-    return {std::nullopt, "no table: the cloth's corners are not those of a plane in view"};
+    return {std::nullopt, "no table: the cloth's corners are not those of a plane in view", cloth};
   }
   table.view =
       table.depth_ratio <= kOverheadDepthRatio ? TableView::kOverhead : TableView::kOblique;
@@ -650,9 +664,9 @@ TableSearch FindTable(const cv::Mat& bgr) {
     char ratio[32];
     std::snprintf(ratio, sizeof ratio, "%.2f", aspect);
     return {std::nullopt, std::string("no table: the surface found is ") + ratio +
-                              " times as long as it is wide, not a table's 2"};
+                              " times as long as it is wide, not a table's 2", cloth};
   }
-  return {table, ""};
+  return {table, "", std::nullopt};
 }
 
 }  // namespace billiard::estimator

@@ -55,6 +55,15 @@ inline constexpr double kOverheadDepthRatio = 1.2;
 enum class TableView { kOverhead, kOblique };
 const char* TableViewName(TableView view);
 
+// Where a table region comes from: its sides found in the frame (FindTable), a calibrated camera
+// (table_fallback.h's TableSeenBy: nothing looked for), or the cloth alone where no table was
+// found (table_fallback.h's ClothOnly: the balls on it, in image coordinates only).
+enum class TableOrigin { kFound, kCalibrated, kClothOnly };
+const char* TableOriginName(TableOrigin origin);
+
+// The table search's resolution: the frame's longer side reduced to at most this many pixels.
+inline constexpr double kTableSearchSize = 400.0;
+
 // How far in from the cloth's outline the cushions' noses are looked for, in table widths.
 inline constexpr double kMaxCushionWidth = 0.12;
 
@@ -75,6 +84,7 @@ struct TableRegion {
   // (u, v) is inverse_depth.dot((u, v, 1)) / depth at the centre.
   Eigen::Vector3d inverse_depth = Eigen::Vector3d::UnitZ();
   TableView view = TableView::kOverhead;
+  TableOrigin origin = TableOrigin::kFound;
   // The largest over the smallest depth of the four corners.
   double depth_ratio = 1.0;
   // The cloth [255 where cloth] and the playing surface (the cloth with its holes filled) at
@@ -109,10 +119,14 @@ struct TableRegion {
   cv::Rect Bounds() const;
 };
 
-// A table found, or the one-line reason why none was.
+// A table found, or the one-line reason why none was; then, where the cloth was found but not
+// its table (its outline not a quadrilateral, a side not straight, the corners not a plane's, the
+// proportions not a table's: part of the table out of frame, a wide-angle lens, an arm across
+// it), the cloth: `cloth` holds its masks, their scale and its colour, and no geometry.
 struct TableSearch {
   std::optional<TableRegion> table;
   std::string reason;
+  std::optional<TableRegion> cloth;
 };
 
 // The table in a BGR (CV_8UC3) frame. About 5 ms at 1280x720: the frame is searched at about 400

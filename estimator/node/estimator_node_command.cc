@@ -18,8 +18,9 @@ void AddEstimatorNodeOptions(CLI::App& app, EstimatorNodeCommandLine* line) {
   app.add_option("--params", line->params, "paper | pool | path to a JSON parameter file")
       ->capture_default_str();
   app.add_option("--camera", line->camera,
-                 "Camera model JSON (billiard calibrate); default: the overhead camera of the "
-                 "table simulator at --width x --height");
+                 "Camera model JSON (billiard calibrate): the rig's calibration, whose table the "
+                 "balls are looked for on (never looked for itself); default: the overhead camera "
+                 "of the table simulator at --width x --height, the table found in the frames");
   app.add_option("--ball-model", line->ball_model,
                  "The rig's look of its balls (billiard learn-balls): names the balls by it "
                  "instead of the hand-set colours");
@@ -67,6 +68,8 @@ int RunEstimatorNodeCommand(const EstimatorNodeCommandLine& line) {
                  ? camera::CameraModel::Overhead(params.table, line.width, line.height)
                  : camera::LoadCameraModel(line.camera);
     options = WithBallModel(line.ball_model, params);
+    // A camera file is the rig's calibration: its table is used, never looked for.
+    options.table_from_camera = !line.camera.empty();
   } catch (const std::invalid_argument& e) {
     std::cerr << "estimator_node: " << e.what() << std::endl;
     return 2;

@@ -15,6 +15,7 @@
 #include "tools/billiard/bench_planner_command.h"
 #include "tools/billiard/break_command.h"
 #include "tools/billiard/burst_command.h"
+#include "tools/billiard/calibrate_command.h"
 #include "tools/billiard/choice_commands.h"
 #include "tools/billiard/match_command.h"
 #include "tools/billiard/command_line.h"

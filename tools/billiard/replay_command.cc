@@ -209,7 +209,10 @@ void Run(const ReplayArgs& args) {
   // next, which is the order the lockstep run had.
   lcm::LCM lcm("memq://");
   const auto quiet = [](const std::string&) {};
-  estimator_node::EstimatorNode estimator(lcm, camera, params, {}, {}, quiet);
+  // A camera file is the rig's calibration, whose table the node used (estimator_node --camera).
+  estimator::EstimatorOptions options;
+  options.table_from_camera = !args.camera.empty();
+  estimator_node::EstimatorNode estimator(lcm, camera, params, options, {}, quiet);
   planner_node::PlannerNode planner(lcm, params, {}, quiet);
   Outputs out;
   lcm.subscribe(messages::kTableStateChannel, &Outputs::OnState, &out);

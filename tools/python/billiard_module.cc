@@ -211,7 +211,8 @@ py::dict Detect(const py::array_t<std::uint8_t, py::array::c_style | py::array::
   options.ball_set = *set;
   estimator::BallDetector detector(options);
   const auto balls = detector.Detect(frame);
-  if (!detector.failure().empty()) Refuse(detector.failure());
+  // No cloth either: refused. No table but its cloth: the balls on it, and why no table.
+  if (!detector.table()) Refuse(detector.failure());
   Array found({balls.size(), std::size_t{4}});
   auto f = found.mutable_unchecked<2>();
   py::list classes;
@@ -225,6 +226,7 @@ py::dict Detect(const py::array_t<std::uint8_t, py::array::c_style | py::array::
   py::dict out;
   out["balls"] = found;
   out["classes"] = classes;
+  out["no_table"] = detector.knows_table() ? py::object(py::none()) : py::str(detector.failure());
   return out;
 }
 
