@@ -8,6 +8,7 @@
 
 #include "lcmtypes/node/node_loop.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 
 namespace billiard::table_sim_node {
 
@@ -68,6 +69,10 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
                  "Execution noise of the robot: on (sim/params/noise/robot.json) or off")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  app.add_option("--robot", line->robot,
+                 "The robot that plays the strokes: gantry | player | FILE (sim/params/robots/); a "
+                 "stroke its cue cannot make is refused, counted cue_blocked in NODE_STATUS")
+      ->capture_default_str();
   app.add_option("--camera-rate", options.camera_rate, "Frames per second")->capture_default_str();
   app.add_flag("--realtime", line->realtime, "Real time instead of lockstep");
   app.add_option("--drop-frames", faults.drop_frames,
@@ -127,6 +132,11 @@ TableSimOptions SessionOptions(const SessionCommandLine& line) {
   }
   options.lockstep = !line.realtime;
   if (line.noise == "on") options.noise = RobotExecutionNoise();
+  try {
+    options.robot = params::LoadRobot(line.robot);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--robot: ") + e.what());
+  }
   return options;
 }
 

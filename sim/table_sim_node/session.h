@@ -11,6 +11,7 @@
 
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/physics/parameters.h"
 #include "sim/table_sim_node/session_summary.h"
 #include "sim/table_sim_node/table_sim_node.h"
@@ -25,6 +26,7 @@ struct SessionCommandLine {
   std::string params = params::kDefaultParameterSet;
   std::string plant_params;  // --plant-params: the table's own physics; empty: `params`
   std::string noise = "off";  // "on": the robot's execution noise, RobotExecutionNoise()
+  std::string robot = params::kDefaultRobot;  // --robot: the robot that plays the strokes
   bool realtime = false;
   std::vector<std::string> pots;  // --pot K:P, in order
   TableSimOptions options;

@@ -310,8 +310,16 @@ table::TableSimulation TableSimNode::PlayOut(const table::TableGeometry& geometr
                                              const std::vector<table::SceneBall>& balls,
                                              const cue_command_t& command,
                                              const table::TableSimulationOptions& motion) {
+  cue_command_t played = command;
+  if (command.status == cue_command_t::STATUS_OK && options_.robot) {
+    const std::string why = Unmakeable(*options_.robot, geometry, params_.ball.radius, balls, Commanded(command));
+    if (!why.empty()) {
+      health_.Refused("cue_blocked", "CUE_COMMAND " + std::to_string(command.request_id) + ": " + why);
+      played.status = cue_command_t::STATUS_CUE_BLOCKED;  // the robot does not strike
+    }
+  }
   table::TableSimulation sim =
-      PlayedToRest(geometry, plant_, execution_.Struck(balls, command, plant_), motion);
+      PlayedToRest(geometry, plant_, execution_.Struck(balls, played, plant_), motion);
   const double t_strike = time_;
   const double frame_dt = 1.0 / options_.camera_rate;
   const double last_event = sim.events().empty() ? 0.0 : sim.events().back().time;

@@ -11,6 +11,7 @@
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/params/scene_file.h"
 #include "sim/rules/rules.h"
 #include "sim/table/rack.h"
@@ -33,6 +34,7 @@ struct ChoiceArgs {
   int confirm_samples = 256;
   std::uint64_t seed = 1;
   int threads = batch::DefaultThreadCount();
+  std::string robot = params::kDefaultRobot;
   bool json = false;
 };
 
@@ -50,6 +52,7 @@ void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--threads", args->threads, "Threads (the results do not depend on them)")
       ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--robot", args->robot, kRobotHelp)->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
 }
 
@@ -66,6 +69,7 @@ choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
   options.samples = args.samples;
   options.confirm_samples = args.confirm_samples;
   options.seed = args.seed;
+  options.pot.robot = LoadRobotOption(args.robot);
   return options;
 }
 
@@ -347,6 +351,7 @@ void AddPlayCommand(CLI::App& app) {
 void AddBenchGameCommand(CLI::App& app) {
   struct Args {
     bench::GameBenchmarkOptions options;
+    std::string robot = params::kDefaultRobot;
     std::string out;
   };
   auto args = std::make_shared<Args>();
@@ -371,10 +376,13 @@ void AddBenchGameCommand(CLI::App& app) {
   cmd->add_option("--threads", o.threads, "Threads")->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_option("--chunk", o.chunk, "Layouts between the report's rewrites")
       ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--robot", args->robot, std::string(kRobotHelp) + "; none: the level cue, unchecked")
+      ->capture_default_str();
   cmd->add_option("--out", args->out, "Write game_report.md, game_reliability.png and game_results.json here");
   cmd->callback([args] {
     if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
     bench::GameBenchmarkOptions options = args->options;
+    options.robot = LoadRobotOrNone(args->robot);
     options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
     // The report rewritten after each chunk: a run stopped early leaves its largest whole part.
     const std::string out = args->out;
