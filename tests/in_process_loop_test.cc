@@ -17,6 +17,7 @@
 #include "lcmtypes/version.h"
 #include "planner/node/planner_node.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/table_sim_node/session.h"
 #include "sim/table_sim_node/table_sim_node.h"
 #include "tests/support/quoted_figures.h"
@@ -67,6 +68,37 @@ TEST(InProcessLoop, ASessionRestartingTheClockSoonAfterTheLastIsServed) {
     }
   }
   EXPECT_EQ(estimator.health().counter("clock_reset"), 1);
+}
+
+// The table simulator's robot refuses a stroke its cue cannot make, as FastFiz does, and says so
+// in NODE_STATUS: the ball a millimetre off the lower rail, every target up the table, the point
+// planner's stroke level, and a robot that cannot raise its cue: the cue lies across the rail.
+TEST(InProcessLoop, TheSimulatorsRobotRefusesAStrokeItsCueCannotMakeAndCountsIt) {
+  lcm::LCM lcm("memq://");
+  const physics::ModelParameters params = params::LoadParameters("pool");
+  const camera::CameraModel camera = table_sim_node::SessionCamera(params.table);
+  estimator_node::EstimatorNode estimator(lcm, camera, params, {}, {}, Quiet);
+  planner_node::PlannerNode planner(lcm, params, {}, Quiet);
+  table_sim_node::TableSimOptions options;
+  options.shots = 1;
+  options.reply_timeout = 3.0;
+  options.start = {0.5 * params.table.length, params.ball.radius + 1e-3};
+  options.target_margin = 0.4;
+  options.min_distance = 0.15;
+  options.robot = params::LoadRobot("gantry");
+  options.robot->elevation.max = 0.0;
+  table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
+  node.RunAlongside([&] {
+    estimator.Work();
+    return planner.Work();
+  });
+  const std::vector<table_sim_node::ShotResult> shots = node.Run();
+  ASSERT_EQ(shots.size(), 1u);
+  EXPECT_EQ(shots[0].status, "cue_blocked") << shots[0].reason;  // the planner's ok, refused
+  EXPECT_EQ(node.health().counter("cue_blocked"), 1);
+  EXPECT_NE(node.health().last_error().find("lower rail"), std::string::npos) << node.health().last_error();
+  // The ball was not struck: it rests where it started.
+  EXPECT_NEAR(shots[0].final_point.y(), options.start.y(), 1e-9);
 }
 
 // Started by hand with different sets, the nodes would plan and track one ball while the
