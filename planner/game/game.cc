@@ -73,8 +73,12 @@ std::optional<physics::CueStroke> PlayersStroke(const table::TableGeometry& tabl
     rec->kind = pot::ShotKindName(c->plan.kind);
     rec->predicted = c->finalist ? c->reported().probability : -1.0;
     rec->likely = decided.likely;
+    rec->clearance = c->plan.clearance;
   }
-  if (const physics::CueStroke* stroke = decided.stroke()) return *stroke;
+  if (const physics::CueStroke* stroke = decided.stroke()) {
+    rec->stroke = *stroke;
+    return *stroke;
+  }
   return std::nullopt;
 }
 
@@ -192,6 +196,7 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
       rec.break_shot = true;
       rec.status = "break";
       stroke = BreakStroke(balls, options.break_speed);
+      rec.stroke = stroke;
     } else {
       stroke = PlayersStroke(table, params, constraints, options, n, pool, &balls, &rec);
       decisions.push_back(rec.decision_us);

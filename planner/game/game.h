@@ -69,6 +69,10 @@ struct ShotRecord {
   std::string kind;
   double predicted = -1.0;  // the choice's probability, -1 when it has none
   bool likely = false;
+  // The stroke commanded (the break's, the chosen pot's or the fallback), none when there was
+  // none; its cue's clearance where the robot's was checked (pot::PotPlan::clearance).
+  std::optional<physics::CueStroke> stroke;
+  std::optional<cue::CueClearance> clearance;
   int first_contact = -1;
   std::vector<int> potted;  // object balls dropped, in id order
   bool called_potted = false;

@@ -180,6 +180,8 @@ nlohmann::json GameJson(const game::GameRecord& game) {
     j["kind"] = s.kind;
     j["predicted"] = s.predicted;
     j["likely"] = s.likely;
+    j["cue"] = s.stroke ? CueStrokeJson(*s.stroke) : nlohmann::json(nullptr);
+    if (s.stroke && s.clearance) j["cue"]["clearance"] = ClearanceJson(*s.clearance);
     j["first_contact"] = s.first_contact;
     j["potted"] = s.potted;
     j["called_potted"] = s.called_potted;
