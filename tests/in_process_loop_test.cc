@@ -27,6 +27,24 @@ namespace {
 
 void Quiet(const std::string&) {}
 
+// The nodes on memq:// with the pool set: the simulator's camera, the estimator, the planner.
+struct Nodes {
+  lcm::LCM lcm{"memq://"};
+  physics::ModelParameters params = params::LoadParameters("pool");
+  camera::CameraModel camera = table_sim_node::SessionCamera(params.table);
+  estimator_node::EstimatorNode estimator{lcm, camera, params, {}, {}, Quiet};
+  planner_node::PlannerNode planner{lcm, params, {}, Quiet};
+};
+
+// The estimator and the planner run inside the simulator's waits, as `billiard loop` runs them.
+void WithTheNodes(table_sim_node::TableSimNode& node, estimator_node::EstimatorNode& estimator,
+                  planner_node::PlannerNode& planner) {
+  node.RunAlongside([&] {
+    estimator.Work();
+    return planner.Work();
+  });
+}
+
 struct LatestTruth {
   std::int64_t utime = -1;
   void On(const lcm::ReceiveBuffer*, const std::string&, const table_state_t* m) {
@@ -54,10 +72,7 @@ TEST(InProcessLoop, ASessionRestartingTheClockSoonAfterTheLastIsServed) {
   options.min_distance = 0.15;
   for (int session = 0; session < 2; ++session) {
     table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
-    node.RunAlongside([&] {
-      estimator.Work();
-      return planner.Work();
-    });
+    WithTheNodes(node, estimator, planner);
     const std::vector<table_sim_node::ShotResult> shots = node.Run();
     ASSERT_EQ(shots.size(), 1u);
     EXPECT_EQ(shots[0].status, "ok") << shots[0].reason;
@@ -74,24 +89,16 @@ TEST(InProcessLoop, ASessionRestartingTheClockSoonAfterTheLastIsServed) {
 // in NODE_STATUS: the ball a millimetre off the lower rail, every target up the table, the point
 // planner's stroke level, and a robot that cannot raise its cue: the cue lies across the rail.
 TEST(InProcessLoop, TheSimulatorsRobotRefusesAStrokeItsCueCannotMakeAndCountsIt) {
-  lcm::LCM lcm("memq://");
-  const physics::ModelParameters params = params::LoadParameters("pool");
-  const camera::CameraModel camera = table_sim_node::SessionCamera(params.table);
-  estimator_node::EstimatorNode estimator(lcm, camera, params, {}, {}, Quiet);
-  planner_node::PlannerNode planner(lcm, params, {}, Quiet);
+  Nodes n;
   table_sim_node::TableSimOptions options;
-  options.shots = 1;
-  options.reply_timeout = 3.0;
-  options.start = {0.5 * params.table.length, params.ball.radius + 1e-3};
-  options.target_margin = 0.4;
-  options.min_distance = 0.15;
   options.robot = params::LoadRobot("gantry");
   options.robot->elevation.max = 0.0;
-  table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
-  node.RunAlongside([&] {
-    estimator.Work();
-    return planner.Work();
-  });
+  options.start = {0.5 * n.params.table.length, n.params.ball.radius + 1e-3};
+  options.shots = 1;
+  options.target_margin = 0.4;
+  options.reply_timeout = 3.0;
+  table_sim_node::TableSimNode node(n.lcm, n.params, n.camera, options, Quiet);
+  WithTheNodes(node, n.estimator, n.planner);
   const std::vector<table_sim_node::ShotResult> shots = node.Run();
   ASSERT_EQ(shots.size(), 1u);
   EXPECT_EQ(shots[0].status, "cue_blocked") << shots[0].reason;  // the planner's ok, refused
@@ -122,10 +129,7 @@ TEST(InProcessLoop, NoiseLeavesTheTargetsAsTheyWere) {
     options.min_distance = 0.15;
     if (noise) options.noise = table_sim_node::RobotExecutionNoise();
     table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
-    node.RunAlongside([&] {
-      estimator.Work();
-      return planner.Work();
-    });
+    WithTheNodes(node, estimator, planner);
     runs.push_back(node.Run());
     ASSERT_EQ(runs.back().size(), 2u);
   }
@@ -147,10 +151,7 @@ TEST(InProcessLoop, ASessionIsRefusedWhileTheNodesRunOtherPhysics) {
   table_sim_node::TableSimOptions options;
   options.shots = 1;
   table_sim_node::TableSimNode node(lcm, pool, camera, options, Quiet);
-  node.RunAlongside([&] {
-    estimator.Work();
-    return planner.Work();
-  });
+  WithTheNodes(node, estimator, planner);
   try {
     node.Run();
     FAIL() << "a session with a planner on the paper set ran";
@@ -207,10 +208,7 @@ table_sim_node::SceneResult Break(std::uint64_t seed) {
   options.scene = "break";
   options.seed = seed;
   table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
-  node.RunAlongside([&] {
-    estimator.Work();
-    return planner.Work();
-  });
+  WithTheNodes(node, estimator, planner);
   return node.RunScene();
 }
 
