@@ -278,11 +278,10 @@ std::vector<ShotResult> TableSimNode::Run() {
     result.status = messages::CueCommandStatusName(command.status);
     result.reason = command.reason;
     result.plan_ms = 1e-3 * command.solve_us;
-    if (RobotRefuses(shots_table, alone, command)) {
-      result.status = messages::CueCommandStatusName(cue_command_t::STATUS_CUE_BLOCKED);
-      result.reason = health_.last_error();
-    }
-    if (result.status != messages::CueCommandStatusName(cue_command_t::STATUS_OK)) {
+    // The point planner cannot raise its cue yet (its elevation is the spin's, StrokeFor): a
+    // stroke the robot cannot make is said and counted, and played all the same.
+    RobotRefuses(shots_table, alone, command, false);
+    if (command.status != cue_command_t::STATUS_OK) {
       result.final_point = rest;
       result.miss_m = (rest - result.target).norm();
       log_("shot " + std::to_string(shot) + " refused: " + result.status + ", " + result.reason);
@@ -316,12 +315,13 @@ std::vector<ShotResult> TableSimNode::Run() {
 }
 
 bool TableSimNode::RobotRefuses(const table::TableGeometry& geometry, const std::vector<table::SceneBall>& balls,
-                                const cue_command_t& command) {
+                                const cue_command_t& command, bool refuse) {
   if (command.status != cue_command_t::STATUS_OK || !options_.robot) return false;
   const std::string why = Unmakeable(*options_.robot, geometry, params_.ball.radius, balls, Commanded(command));
   if (why.empty()) return false;
-  health_.Refused("cue_blocked", "CUE_COMMAND " + std::to_string(command.request_id) + ": " + why);
-  return true;
+  health_.Refused(refuse ? "cue_blocked" : "cue_blocked_played",
+                  "CUE_COMMAND " + std::to_string(command.request_id) + ": " + why + (refuse ? "" : ", played"));
+  return refuse;
 }
 
 table::TableSimulation TableSimNode::PlayOut(const table::TableGeometry& geometry,

@@ -280,9 +280,10 @@ class TableSimNode {
   std::optional<std::int32_t> NearestTrack(const Eigen::Vector2d& at) const;
   // Whether options.robot refuses `command` on `balls` (a stroke its cue cannot make on
   // `geometry`, stroke_execution.h's Unmakeable): counted cue_blocked, the reason logged and the
-  // last error of NODE_STATUS.
+  // last error of NODE_STATUS. With `refuse` false (the shots session, whose point planner cannot
+  // raise its cue yet) it is said and counted cue_blocked_played, and not refused.
   bool RobotRefuses(const table::TableGeometry& geometry, const std::vector<table::SceneBall>& balls,
-                    const cue_command_t& command);
+                    const cue_command_t& command, bool refuse = true);
   // Strikes the cue ball of `balls` as `command` says (with the noise; not at all when it is a
   // refusal or the robot refuses it, options.robot), simulates the table to rest with `motion` and shows it to the camera frame by
   // frame; returns the simulation.
