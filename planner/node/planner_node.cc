@@ -338,8 +338,8 @@ void PlannerNode::AnswerOldest(const std::string& not_at_rest) {
   health_.SetQueueDepth(static_cast<int>(waiting_.size()));
   IdentifyIfDue();
   std::ostringstream never;
-  never << "the table did not come to rest within " << options_.max_rest_wait << " s: "
-        << not_at_rest;
+  never << "the table did not come to rest within " << options_.max_rest_wait
+        << " s: " << not_at_rest;
   const cue_command_t command =
       not_at_rest.empty()
           ? Answer(w.request)

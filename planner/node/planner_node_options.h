@@ -18,10 +18,10 @@ namespace billiard::planner_node {
 struct PlannerNodeOptions {
   planner::PlannerOptions planner;
   // A ball faster than this [m/s] is still moving: a plan from where it is now would start from
-  // the wrong place. The default is at least ten times the estimator's velocity error on balls at rest
-  // (0.55 mm/s on rendered frames, 4-5 mm/s on simulated detections with 0.4 mm noise;
-  // estimator/README.md) and below any ball that will roll on for more than a few millimetres
-  // (a ball rolling at 0.05 m/s stops within v^2 / (2 g mu_roll), about 13 mm at mu_roll 0.01).
+  // the wrong place. The default is at least ten times the estimator's velocity error on balls
+  // at rest (0.55 mm/s on rendered frames, 4-5 mm/s on simulated detections with 0.4 mm noise;
+  // estimator/README.md) and below any ball that will roll on for more than a few millimetres (a
+  // ball rolling at 0.05 m/s stops within v^2 / (2 g mu_roll), about 13 mm at mu_roll 0.01).
   double max_ball_speed = 0.05;
   // A request is answered only when the table is at rest: every ball of this many table states in
   // a row under max_ball_speed, so that a speed passing through zero (a ball stopping against a
