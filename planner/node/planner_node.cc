@@ -337,13 +337,13 @@ void PlannerNode::AnswerOldest(const std::string& not_at_rest) {
   waiting_.pop_front();
   health_.SetQueueDepth(static_cast<int>(waiting_.size()));
   IdentifyIfDue();
-  std::ostringstream never;
-  never << "the table did not come to rest within " << options_.max_rest_wait
-        << " s: " << not_at_rest;
-  const cue_command_t command =
-      not_at_rest.empty()
-          ? Answer(w.request)
-          : Refusal(ReplyTo(w.request), cue_command_t::STATUS_NOT_AT_REST, never.str());
+  const auto never_at_rest = [&] {
+    std::ostringstream reason;
+    reason << "the table did not come to rest within " << options_.max_rest_wait
+           << " s: " << not_at_rest;
+    return Refusal(ReplyTo(w.request), cue_command_t::STATUS_NOT_AT_REST, reason.str());
+  };
+  const cue_command_t command = not_at_rest.empty() ? Answer(w.request) : never_at_rest();
   Publish(command, w.arrived);
   if (options_.identify_every > 0 && command.status == cue_command_t::STATUS_OK) {
     shots_.Strike(command.utime, command.ball_id);
