@@ -314,7 +314,8 @@ TEST(PlannerNodeBinary, BadStartExitsNonZeroWithAOneLineReason) {
       << bad_url.out;
   // A table that does not load, and one of another size than the parameter set's.
   for (const char* args : {" --params no-such-set", " --max-ball-speed nan", " --frobnicate",
-                           " --table no-such-table", " --table snooker-12ft"}) {
+                           " --table no-such-table", " --table snooker-12ft", " --rest-states 0",
+                           " --max-rest-wait -1"}) {
     const auto r = billiard::testing::RunCommand(PLANNER_NODE_BIN + std::string(args), true);
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << ": " << r.out;
