@@ -24,7 +24,8 @@ inline constexpr char kRealtimeClockSetting[] = "realtime_clock";
 
 // "ok", "invalid", "off_table", "unreachable", "not_converged", "no_ball_state", "stale_state",
 // "busy", and the pot's "no_such_ball", "no_such_pocket", "blocked", "too_thin", "no_stroke",
-// "target_unreachable" (cue_command_t's STATUS_*, the pot's words as planner/pot names them);
+// "target_unreachable" (cue_command_t's STATUS_*, the pot's words as planner/pot names them),
+// "not_at_rest" (the table never came to rest while the request waited);
 // "status N" for a value the message does not define.
 std::string CueCommandStatusName(std::int8_t status);
 

@@ -11,10 +11,13 @@
 #include <vector>
 
 #include "estimator/node/estimator_node.h"
+#include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/shot_request_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/names.h"
 #include "lcmtypes/node/node_health.h"
 #include "lcmtypes/version.h"
+#include "planner/node/command_writing.h"
 #include "planner/node/planner_node.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
@@ -106,6 +109,53 @@ TEST(InProcessLoop, TheSimulatorsRobotSaysWhichStrokeItsCueCannotMakeAndCountsIt
   EXPECT_EQ(shots[0].status, "ok") << shots[0].reason;
   EXPECT_EQ(node.health().counter("cue_blocked_played"), 1);
   EXPECT_NE(node.health().last_error().find("lower rail"), std::string::npos) << node.health().last_error();
+}
+
+// A planner that never sees the table at rest (its answer to every request after its wait),
+// announcing itself as the planner node does: the game asks again, and a shot still refused is
+// played by nobody, so it is neither a shot nor a visit.
+struct NeverAtRestPlanner {
+  NeverAtRestPlanner(lcm::LCM& l, const physics::ModelParameters& params) : lcm(&l) {
+    health.SetParameters(params::ParameterSetLabel(params), params::ParameterHash(params));
+    lcm->subscribe(messages::kShotRequestChannel, &NeverAtRestPlanner::On, this);
+  }
+  lcm::LCM* lcm;
+  nodes::NodeHealth health{"planner_node", Quiet};
+  int answered = 0;
+  void On(const lcm::ReceiveBuffer*, const std::string&, const shot_request_t* q) {
+    cue_command_t c = planner_node::ReplyTo(*q);
+    c.status = cue_command_t::STATUS_NOT_AT_REST;
+    c.reason = "the table did not come to rest within 2 s: ball 3 is moving (4.0341 m/s)";
+    lcm->publish(messages::kCueCommandChannel, &c);
+    ++answered;
+  }
+};
+
+TEST(InProcessLoop, AShotTheTableNeverRestedForIsNeitherAShotNorAVisit) {
+  lcm::LCM lcm("memq://");
+  const physics::ModelParameters params = params::LoadParameters("pool");
+  const camera::CameraModel camera = table_sim_node::SessionCamera(params.table);
+  estimator_node::EstimatorNode estimator(lcm, camera, params, {}, {}, Quiet);
+  NeverAtRestPlanner planner(lcm, params);
+  table_sim_node::TableSimOptions options;
+  options.game = "drill";
+  options.shot_limit = 2;
+  options.max_retries = 1;
+  options.reply_timeout = 3.0;
+  table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
+  node.RunAlongside([&] {
+    planner.health.PublishIfDue(lcm);
+    return estimator.Work();
+  });
+  const std::vector<table_sim_node::GameResult> racks = node.RunGame();
+  ASSERT_EQ(racks.size(), 1u);
+  EXPECT_TRUE(racks[0].shots.empty());
+  EXPECT_EQ(racks[0].visits, 0);
+  EXPECT_FALSE(racks[0].cleared);
+  // Each of the two attempts asked, refused, asked again once, refused again.
+  EXPECT_EQ(planner.answered, 4);
+  EXPECT_EQ(node.health().counter("shot_retried"), 2);
+  EXPECT_EQ(node.health().counter("shot_not_at_rest"), 2);
 }
 
 // Started by hand with different sets, the nodes would plan and track one ball while the

@@ -105,7 +105,7 @@ cue_command_t AnswerChoice(const shot_request_t& q, const ball_state_t& cue,
   std::unordered_map<int, int32_t> message_id;
   std::string moving;
   auto balls = ChoiceScene(latest, cue, table, params, options, &message_id, &moving);
-  if (!balls) return Refusal(c, cue_command_t::STATUS_INVALID, moving);
+  if (!balls) return Refusal(c, cue_command_t::STATUS_NOT_AT_REST, moving);
   const choice::ChoiceOptions choosing = ChoiceOptionsFor(q, options);
   choice::ChoiceResult result;
   try {

@@ -1,6 +1,7 @@
 #include "planner/node/planner_node.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include "planner/node/command_writing.h"
 #include "planner/node/named_ball.h"
 #include "planner/node/pot_request.h"
+#include "planner/node/scene_at_rest.h"
 #include "planner/node/to_point_request.h"
 #include "sim/params/parameter_sets.h"
 
@@ -64,6 +66,7 @@ PlannerNode::PlannerNode(lcm::LCM& lcm, physics::ModelParameters params, Planner
         std::cerr << "planner_node: " << line << std::endl;
       })),
       health_("planner_node", log_),
+      states_at_rest_(options_.rest_states),
       player_(players::MakePlayer(options_.player)),
       noise_learner_(options_.choice.noise) {
   health_.SetParameters(params::ParameterSetLabel(params_), params::ParameterHash(params_));
@@ -133,12 +136,8 @@ std::optional<PlannerNode::Unfit> PlannerNode::UnfitToPlanFrom(const shot_reques
            << options_.max_state_age << " s)";
     return Unfit{cue_command_t::STATUS_STALE_STATE, reason.str()};
   }
-  const double speed = std::hypot(s.velocity[0], s.velocity[1]);
-  if (speed > options_.max_ball_speed) {
-    std::ostringstream reason;
-    reason << "ball " << q.ball_id << " is moving (" << speed << " m/s, more than "
-           << options_.max_ball_speed << " m/s)";
-    return Unfit{cue_command_t::STATUS_INVALID, reason.str()};
+  if (std::string why = Moving(s, options_.max_ball_speed); !why.empty()) {
+    return Unfit{cue_command_t::STATUS_NOT_AT_REST, std::move(why)};
   }
   return std::nullopt;
 }
@@ -188,6 +187,7 @@ void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string
              ": the balls known so far are forgotten");
         balls_.clear();
         latest_table_.reset();
+        states_at_rest_ = options_.rest_states;
         last_of_class_.clear();
         answered_.clear();
         break;
@@ -205,6 +205,7 @@ void PlannerNode::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string
         tracks.push_back({b.ball_id, {b.position[0], b.position[1]}});
       shots_.State(state.utime, tracks);
     }
+    NoteMotion(state);
     latest_table_ = std::move(state);
     while (balls_.size() > kMaxRememberedBalls) {
       balls_.erase(std::min_element(balls_.begin(), balls_.end(), [](const auto& a, const auto& b) {
@@ -328,29 +329,72 @@ void PlannerNode::LearnNoiseIfDue() {
   }
 }
 
+void PlannerNode::NoteMotion(const table_state_t& state) {
+  if (std::string moving = MovingBall(state, options_.max_ball_speed); !moving.empty()) {
+    last_motion_ = std::move(moving);
+    states_at_rest_ = 0;
+  } else if (states_at_rest_ < options_.rest_states) {
+    ++states_at_rest_;
+  }
+}
+
+std::string PlannerNode::TableNotAtRest() const {
+  if (!latest_table_ || states_at_rest_ >= options_.rest_states) return "";
+  if (states_at_rest_ == 0) return last_motion_;
+  return "the table at rest for " + std::to_string(states_at_rest_) + " of " +
+         std::to_string(options_.rest_states) + " states (" + last_motion_ + " before)";
+}
+
+bool PlannerNode::WaitedForRestTooLong(const Waiting& w) const {
+  const double in_states = 1e-6 * static_cast<double>(latest_table_->utime - w.request.utime);
+  const double on_clock =
+      std::chrono::duration<double>(nodes::NodeHealth::Clock::now() - w.arrived).count();
+  return std::max(in_states, on_clock) >= options_.max_rest_wait;
+}
+
+void PlannerNode::AnswerOldest(const std::string& not_at_rest) {
+  Waiting w = std::move(waiting_.front());
+  waiting_.pop_front();
+  health_.SetQueueDepth(static_cast<int>(waiting_.size()));
+  if (RecordsShots()) shots_.Finish();  // the balls are at rest by the next request
+  IdentifyIfDue();
+  LearnNoiseIfDue();
+  const auto never_at_rest = [&] {
+    std::ostringstream reason;
+    reason << "the table did not come to rest within " << options_.max_rest_wait
+           << " s: " << not_at_rest;
+    return Refusal(ReplyTo(w.request), cue_command_t::STATUS_NOT_AT_REST, reason.str());
+  };
+  const cue_command_t command = not_at_rest.empty() ? Answer(w.request) : never_at_rest();
+  Publish(command, w.arrived);
+  if (RecordsShots() && command.status == cue_command_t::STATUS_OK) {
+    shots_.Strike(command.utime, command.ball_id);
+  }
+  if (options_.learn_noise) noise_learner_.Commanded(command);
+  log_(Describe(command));
+  answered_.push_back({std::move(w.bytes), StateUtime(w.request), command});
+  if (answered_.size() > kRememberedAnswers) answered_.pop_front();
+  if (refusing_busy_ && waiting_.empty()) {
+    refusing_busy_ = false;
+    log_("queue empty again: " + std::to_string(health_.counter("busy")) +
+         " requests answered busy so far");
+  }
+}
+
 bool PlannerNode::Work() {
+  bool more = false;
   try {
     if (!waiting_.empty()) {
-      Waiting w = std::move(waiting_.front());
-      waiting_.pop_front();
-      health_.SetQueueDepth(static_cast<int>(waiting_.size()));
-      if (RecordsShots()) shots_.Finish();  // the balls are at rest by the next request
-      IdentifyIfDue();
-      LearnNoiseIfDue();
-      const cue_command_t command = Answer(w.request);
-      Publish(command, w.arrived);
-      if (RecordsShots() && command.status == cue_command_t::STATUS_OK) {
-        shots_.Strike(command.utime, command.ball_id);
+      const std::string not_at_rest = TableNotAtRest();
+      const bool hold = !not_at_rest.empty() && !WaitedForRestTooLong(waiting_.front());
+      if (hold && !holding_) {
+        health_.Count("held_for_rest");
+        log_("request " + std::to_string(waiting_.front().request.request_id) +
+             " held until the table is at rest: " + not_at_rest);
       }
-      if (options_.learn_noise) noise_learner_.Commanded(command);
-      log_(Describe(command));
-      answered_.push_back({std::move(w.bytes), StateUtime(w.request), command});
-      if (answered_.size() > kRememberedAnswers) answered_.pop_front();
-      if (refusing_busy_ && waiting_.empty()) {
-        refusing_busy_ = false;
-        log_("queue empty again: " + std::to_string(health_.counter("busy")) +
-             " requests answered busy so far");
-      }
+      holding_ = hold;
+      if (!hold) AnswerOldest(not_at_rest);
+      more = !waiting_.empty() && TableNotAtRest().empty();
     }
     health_.PublishIfDue(lcm_);
   } catch (const std::exception& e) {
@@ -358,7 +402,7 @@ bool PlannerNode::Work() {
   } catch (...) {
     health_.Dropped("work: unknown exception");
   }
-  return !waiting_.empty();
+  return more;
 }
 
 }  // namespace billiard::planner_node

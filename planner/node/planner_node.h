@@ -16,7 +16,9 @@
 // Refusals (status != STATUS_OK, the reason in words, the stroke fields zero; the plan fields say
 // what the planner measured, zero when it did not run):
 //   STATUS_INVALID        a request that fails messages::Check (an unknown spin value, a
-//                         non-finite number, ...), a ball moving faster than max_ball_speed
+//                         non-finite number, ...)
+//   STATUS_NOT_AT_REST    the table did not come to rest within max_rest_wait (below), or the
+//                         ball's own latest state moving
 //   STATUS_NO_BALL_STATE  no table state received has that ball_id
 //   STATUS_STALE_STATE    the ball's latest state and the request are further apart in time than
 //                         max_state_age: the estimator may have stopped and the ball moved since,
@@ -28,10 +30,18 @@
 //   STATUS_NO_SUCH_BALL   a pot's object ball is not in the latest table state (by id, or by
 //                         class at kMinClassConfidence), or is the struck ball; a choice's
 //                         table state has no object ball
-//   STATUS_INVALID        also a pot among balls that overlap or lie off the table, or with any
-//                         of them moving faster than max_ball_speed
+//   STATUS_INVALID        also a pot among balls that overlap or lie off the table
 //   the others            PlanShot's status (shot_planner.h) or PlanPot's (no_such_pocket,
 //                         blocked, too_thin, no_stroke, target_unreachable; pot_planner.h)
+//
+// The table at rest: a request is planned only when every ball of the latest rest_states table
+// states is slower than max_ball_speed (PlannerNodeOptions; a table never seen moving is at rest).
+// Until then the oldest request is held, unanswered, and the others wait behind it: a loop whose
+// estimator lags behind its frames (a busy machine) asks while the states still show the last
+// shot's balls rolling, and the states at rest come soon after. A request held max_rest_wait (in
+// the states' time past its own, or on the node's clock since it arrived, when the states stop)
+// is refused STATUS_NOT_AT_REST with the ball still moving: the one answer that depends on the
+// clock, and only when the states stop coming.
 //
 // Requests wait in a bounded queue and are planned one at a time by Work(), so a burst of them
 // costs bounded memory and each gets an answer: planned, or refused busy at once. A request
@@ -108,8 +118,8 @@ class PlannerNode {
   cue_command_t Answer(const shot_request_t& request) const;
 
   // Plans the oldest waiting request and publishes its answer, and NODE_STATUS when due. Returns
-  // whether more requests wait. The node's main loop calls it between messages
-  // (nodes::HandleUntilStopped).
+  // whether more requests can be planned now (false while the oldest is held for the table to
+  // come to rest). The node's main loop calls it between messages (nodes::HandleUntilStopped).
   bool Work();
 
   // The node's counters; TakeStatus() on it starts a new latency period.
@@ -143,6 +153,17 @@ class PlannerNode {
 
   std::optional<Unfit> UnfitToPlanFrom(const shot_request_t& q, const ball_state_t& s) const;
 
+  // Why the table is not at rest yet (a ball of the latest state moving, or at rest for fewer
+  // than rest_states states); empty when it is, or when no state has come.
+  std::string TableNotAtRest() const;
+  // Whether `w`, held for the table, has waited max_rest_wait: in the table states' time past
+  // its request's, or on the node's clock since it arrived.
+  bool WaitedForRestTooLong(const Waiting& w) const;
+  // Answers the oldest waiting request: planned, or refused not_at_rest for `not_at_rest`.
+  void AnswerOldest(const std::string& not_at_rest);
+  // Counts the table state `state` toward the table at rest (states_at_rest_, last_motion_).
+  void NoteMotion(const table_state_t& state);
+
   // The balls a request's balls are looked for among: a pot's, the latest table state's; a
   // point request's, the latest state of every ball.
   std::vector<const ball_state_t*> Candidates(const shot_request_t& q) const;
@@ -169,6 +190,11 @@ class PlannerNode {
   nodes::NodeHealth health_;
   std::unordered_map<int32_t, ball_state_t> balls_;
   std::optional<table_state_t> latest_table_;
+  // Table states in a row with every ball at rest (counted up to rest_states, which a table never
+  // seen moving starts at), and the latest moving ball seen, for the reason.
+  int states_at_rest_;
+  std::string last_motion_;
+  bool holding_ = false;  // the oldest request is held for the table (logged once)
   // The ball each class was last given to (the surest of it in the latest table state naming
   // one): a choice's cue ball when the estimator names none for a while.
   std::map<int8_t, int32_t> last_of_class_;

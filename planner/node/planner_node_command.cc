@@ -24,6 +24,14 @@ void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line) {
   app.add_option("--max-ball-speed", options.max_ball_speed,
                  "Refuse to plan for a ball faster than this [m/s]")
       ->capture_default_str();
+  app.add_option("--rest-states", options.rest_states,
+                 "Answer a request only when the table has been at rest (every ball under "
+                 "--max-ball-speed) for this many table states in a row")
+      ->capture_default_str();
+  app.add_option("--max-rest-wait", options.max_rest_wait,
+                 "Hold a request at most this long for the table to come to rest, then refuse it "
+                 "not_at_rest [s]")
+      ->capture_default_str();
   app.add_option("--max-state-age", options.max_state_age,
                  "Refuse to plan from a ball state further than this from the request in time [s]")
       ->capture_default_str();
@@ -60,6 +68,10 @@ PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line,
   PlannerNodeOptions options = line.options;
   if (!(std::isfinite(options.max_ball_speed) && options.max_ball_speed >= 0.0)) {
     throw std::invalid_argument("--max-ball-speed must be a finite speed >= 0");
+  }
+  if (options.rest_states < 1) throw std::invalid_argument("--rest-states must be at least 1");
+  if (!(std::isfinite(options.max_rest_wait) && options.max_rest_wait >= 0.0)) {
+    throw std::invalid_argument("--max-rest-wait must be a finite time >= 0");
   }
   if (!(std::isfinite(options.max_state_age) && options.max_state_age > 0.0)) {
     throw std::invalid_argument("--max-state-age must be a finite time > 0");

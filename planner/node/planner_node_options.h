@@ -18,9 +18,22 @@ namespace billiard::planner_node {
 struct PlannerNodeOptions {
   planner::PlannerOptions planner;
   // A ball faster than this [m/s] is still moving: a plan from where it is now would start from
-  // the wrong place, so the request is refused. The default is above an estimator's noise on a
-  // ball at rest and below any ball that will roll on for more than a few millimetres.
+  // the wrong place. The default is at least ten times the estimator's velocity error on balls
+  // at rest (0.55 mm/s on rendered frames, 4-5 mm/s on simulated detections with 0.4 mm noise;
+  // estimator/README.md) and below any ball that will roll on for more than a few millimetres (a
+  // ball rolling at 0.05 m/s stops within v^2 / (2 g mu_roll), about 13 mm at mu_roll 0.01).
   double max_ball_speed = 0.05;
+  // A request is answered only when the table is at rest: every ball of this many table states in
+  // a row under max_ball_speed, so that a speed passing through zero (a ball stopping against a
+  // cushion, a filter's estimate at a collision) is not taken for rest; a table never seen moving
+  // is at rest. Three states are 25-50 ms at the camera's 60-120 Hz.
+  int rest_states = 3;
+  // The longest a request waits for the table to come to rest [s], in the table states' time past
+  // the request's utime or on the node's clock since it arrived (when the states stop coming);
+  // then it is refused STATUS_NOT_AT_REST with the ball still moving. Longer than a busy
+  // estimator's lag behind the frames, shorter than the table simulator's reply timeout (10 s),
+  // so that its retry, which shows the table at rest again, comes first.
+  double max_rest_wait = 2.0;
   // The most a ball's state and a request may be apart in time [s] (their utimes).
   double max_state_age = 1.0;
   // Requests waiting to be planned; more are answered STATUS_BUSY.

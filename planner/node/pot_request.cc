@@ -83,7 +83,7 @@ cue_command_t AnswerPot(const shot_request_t& q, const ball_state_t& cue,
   std::unordered_map<int, int32_t> message_id;
   std::string moving;
   const auto balls = PotScene(latest, cue, options.max_ball_speed, &message_id, &moving);
-  if (!balls) return Refusal(c, cue_command_t::STATUS_INVALID, moving);
+  if (!balls) return Refusal(c, cue_command_t::STATUS_NOT_AT_REST, moving);
   for (const auto& [scene_id, id] : message_id) {
     if (id == object->ball_id) request.ball = scene_id;
   }

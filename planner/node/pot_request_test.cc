@@ -202,13 +202,27 @@ TEST_F(PlannerNodePotTest, TouchingBallsSeenOverlappingAreSettledApart) {
   EXPECT_NE(answer->reason.find("overlap"), std::string::npos) << answer->reason;
 }
 
-TEST_F(PlannerNodePotTest, APotAmongMovingBallsIsRefused) {
+// A pot asked for while the balls still roll is held until the table rests, and planned from
+// where they came to rest (the object ball's path starts there).
+TEST_F(PlannerNodePotTest, APotWaitsForTheBallsToComeToRest) {
   PublishTable({Classed(kCueTrack, 1.0, 0.45, ball_state_t::CLASS_CUE, 0.9f),
-                Classed(kObject, 0.5, 0.3, 5, 0.9f), Ball(7, 2.0, 1.0, 0.4, 0.0)});
-  const auto answer = Ask(Pot(1, kObject, "lower_left"));
+                Classed(kObject, 0.45, 0.28, 5, 0.9f), Ball(7, 2.0, 1.0, 0.4, 0.0)});
+  EXPECT_FALSE(Ask(Pot(1, kObject, "lower_left"))) << "answered while ball 7 rolls";
+  for (int64_t utime : {1'000'010, 1'000'020, 1'000'030}) {
+    EXPECT_FALSE(AnswerTo(1));
+    PublishTable({Classed(kCueTrack, 1.0, 0.45, ball_state_t::CLASS_CUE, 0.9f),
+                  Classed(kObject, 0.5, 0.3, 5, 0.9f), Ball(7, 2.1, 1.0)},
+                 utime);
+    RunNode();
+  }
+  const auto answer = AnswerTo(1);
   ASSERT_TRUE(answer);
-  EXPECT_EQ(Status(*answer), kInvalid);
-  EXPECT_NE(answer->reason.find("ball 7 is moving"), std::string::npos) << answer->reason;
+  ASSERT_EQ(Status(*answer), kOk) << answer->reason;
+  const ball_path_t* object = PathOf(*answer, kObject);
+  ASSERT_NE(object, nullptr);
+  ASSERT_GT(object->num_points, 0);
+  EXPECT_DOUBLE_EQ(object->points[0][0], 0.5);
+  EXPECT_DOUBLE_EQ(object->points[0][1], 0.3);
 }
 
 TEST_F(PlannerNodePotTest, ThePotDoesNotDependOnTheOrderOfTheTableStatesBalls) {

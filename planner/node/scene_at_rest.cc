@@ -3,10 +3,27 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "sim/physics/ball_state.h"
 
 namespace billiard::planner_node {
+
+std::string Moving(const ball_state_t& ball, double max_ball_speed) {
+  const double speed = std::hypot(ball.velocity[0], ball.velocity[1]);
+  if (speed <= max_ball_speed) return "";
+  std::ostringstream reason;
+  reason << "ball " << ball.ball_id << " is moving (" << speed << " m/s, more than "
+         << max_ball_speed << " m/s)";
+  return reason.str();
+}
+
+std::string MovingBall(const table_state_t& state, double max_ball_speed) {
+  for (const ball_state_t& b : state.balls) {
+    if (std::string why = Moving(b, max_ball_speed); !why.empty()) return why;
+  }
+  return "";
+}
 
 std::optional<std::vector<table::SceneBall>> SceneAtRest(
     const table_state_t& state, double max_ball_speed, int32_t cue_track,
@@ -14,12 +31,8 @@ std::optional<std::vector<table::SceneBall>> SceneAtRest(
     std::string* moving) {
   std::vector<table::SceneBall> balls;
   for (const ball_state_t& b : state.balls) {
-    const double speed = std::hypot(b.velocity[0], b.velocity[1]);
-    if (speed > max_ball_speed) {
-      std::ostringstream reason;
-      reason << "ball " << b.ball_id << " is moving (" << speed << " m/s, more than "
-             << max_ball_speed << " m/s)";
-      *moving = reason.str();
+    if (std::string why = Moving(b, max_ball_speed); !why.empty()) {
+      *moving = std::move(why);
       return std::nullopt;
     }
     const int id = b.ball_id == cue_track ? 0 : scene_id(b.ball_id);

@@ -10,10 +10,18 @@
 #include <unordered_map>
 #include <vector>
 
+#include "lcmtypes/billiard/ball_state_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "sim/table/scene.h"
 
 namespace billiard::planner_node {
+
+// Why `ball` is no start for a plan, "ball 3 is moving (0.4 m/s, more than 0.05 m/s)", when it is
+// faster than `max_ball_speed` [m/s]; empty when it is at rest.
+std::string Moving(const ball_state_t& ball, double max_ball_speed);
+
+// The first ball of `state` that Moving names, empty when every ball is at rest.
+std::string MovingBall(const table_state_t& state, double max_ball_speed);
 
 // The balls of `state` at rest, sorted by id, so that the plan does not depend on the
 // publisher's order: the one of `cue_track` id 0 and the others by `scene_id` (their message ids

@@ -207,24 +207,29 @@ GameResult TableSimNode::PlayRack(int rack, const table::TableGeometry& geometry
        std::to_string(game.seed) + ")");
   // The new layout shown until the estimator has forgotten the last one's balls.
   for (int k = 0; k < kNewLayoutSettles; ++k) ShowAtRest(balls);
-  bool ball_in_hand = drill, new_visit = true, rack_over = false;
+  bool ball_in_hand = drill, rack_over = false;
   int visit = 1;
+  // shot_limit bounds the attempts: a request the planner held past its wait for the table to
+  // rest (its retries too) played nothing, so it is neither a shot nor a visit.
   for (int n = 0; n < options_.shot_limit; ++n) {
-    if (new_visit) game.visits = visit;
     GameShot shot;
-    shot.number = n + 1;
+    shot.number = static_cast<int>(game.shots.size()) + 1;
     shot.visit = visit;
-    shot.break_shot = !drill && n == 0;
+    shot.break_shot = !drill && game.shots.empty();
     shot.ball_in_hand = ball_in_hand;
     shot = PlayGameShot((*id)++, shot, geometry, balls, &rack_over);
+    if (shot.status == messages::CueCommandStatusName(cue_command_t::STATUS_NOT_AT_REST)) {
+      health_.Count("shot_not_at_rest");
+      continue;
+    }
+    game.visits = visit;
     game.shots.push_back(shot);
     if (rack_over) {
       game.cleared = true;
       break;
     }
     ball_in_hand = shot.foul;
-    new_visit = shot.foul || shot.potted.empty();
-    if (new_visit) ++visit;
+    if (shot.foul || shot.potted.empty()) ++visit;
   }
   log_("rack " + std::to_string(rack) + (game.cleared ? " cleared" : " not cleared") + " in " +
        std::to_string(game.shots.size()) + " shots, " + std::to_string(game.visits) + " visits");

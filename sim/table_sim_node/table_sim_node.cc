@@ -238,7 +238,8 @@ cue_command_t TableSimNode::Request(int shot, const std::vector<table::SceneBall
     const int8_t status = command_->status;
     const bool time_cures = status == cue_command_t::STATUS_NO_BALL_STATE ||
                             status == cue_command_t::STATUS_STALE_STATE ||
-                            status == cue_command_t::STATUS_BUSY;
+                            status == cue_command_t::STATUS_BUSY ||
+                            status == cue_command_t::STATUS_NOT_AT_REST;
     if (!time_cures || result.retries == options_.max_retries) return *command_;
     ++result.retries;
     health_.Count("shot_retried");

@@ -13,8 +13,9 @@
 //
 // Faults: the loop goes on when a node restarts. A frame or a request that gets no answer within
 // retry_interval is sent again (the planner answers a repeated request from memory), and a
-// refusal that time can cure (no state of the ball yet, a stale state, a busy planner) is retried
-// after the ball has been shown again. Fault injection makes the link to the nodes lossy on
+// refusal that time can cure (no state of the ball yet, a stale state, a busy planner, a table
+// the planner never saw at rest) is retried after the ball has been shown again; in a game, a
+// shot still refused not_at_rest played nothing and is neither a shot nor a visit. Fault injection makes the link to the nodes lossy on
 // purpose: frames dropped, reordered or sent twice, requests sent twice, from a seeded generator
 // of its own (the shots stay the same).
 //

@@ -96,8 +96,13 @@ class PlannerNodeTest : public ::testing::Test {
   std::optional<cue_command_t> Ask(const shot_request_t& request) {
     EXPECT_EQ(lcm_.publish(messages::kShotRequestChannel, &request), 0);
     RunNode();
+    return AnswerTo(request.request_id);
+  }
+
+  // The latest answer published to request `id`, nullopt if there is none (yet).
+  std::optional<cue_command_t> AnswerTo(int64_t id) const {
     for (auto c = commands_.rbegin(); c != commands_.rend(); ++c) {
-      if (c->request_id == request.request_id) return *c;
+      if (c->request_id == id) return *c;
     }
     return std::nullopt;
   }
