@@ -67,7 +67,9 @@
 #   --realtime             pace the frames by the wall clock
 #   --view                 a live view of the table in a browser while the loop runs
 #                          (viewer_node): prints its address, http://127.0.0.1:PORT/, on stderr;
-#                          with --realtime the shots go at the camera's pace, to be watched
+#                          with --realtime the shots go at the camera's pace, to be watched;
+#                          run from a terminal, the view keeps the last table after the run
+#                          until Ctrl-C (from a script it closes with the run)
 #   --view-port PORT       the view's port on this host (default 8765; implies --view)
 #   --camera SOURCE        the estimator on the frames of SOURCE instead of the loop:
 #                          camera_node (a V4L2 camera /dev/videoN or N, a GStreamer pipeline
@@ -235,7 +237,7 @@ fi
 source launch_scripts/lcm_network.sh
 # The viewer_node of --view, on its port; in the namespace, reached through the socket above.
 start_viewer() {
-  "$bin_dir/viewer_node" --params "$params" --port "$view_port" 2>/dev/null &
+  "$bin_dir/viewer_node" --params "$params" "${planner_table[@]}" --port "$view_port" 2>/dev/null &
   pids+=($!)
   if [ -n "${VIEW_SOCKET:-}" ]; then
     socat "UNIX-LISTEN:$VIEW_SOCKET,fork" "TCP:127.0.0.1:$view_port" 2>/dev/null &
@@ -427,4 +429,13 @@ grep -h "learned noise" "$planner_err" | tail -n 1 >&2 || true
 if [ -n "$log_failure" ]; then
   echo "run_loop: the log '$log' is not a record of the run: $log_failure" >&2
   exit 1
+fi
+# The live view keeps the last table for a player at a terminal until Ctrl-C (the run's outcome
+# is already printed, and its status 0); a script's run closes it at once.
+if $view && [ -t 0 ] && ! $in_process; then
+  echo "run_loop: the run is over; the live view keeps its last table at" \
+       "http://127.0.0.1:$view_port/ until Ctrl-C" >&2
+  # Ctrl-C closes the view: neither the cut sleep nor a node already gone is the run's failure.
+  trap 'set +eE; trap - ERR; exit 0' INT TERM
+  while :; do sleep 1 || true; done
 fi

@@ -9,11 +9,19 @@ namespace billiard::viewer {
 
 namespace {
 
+// A ball's path grows by a point once it is this far from the last: a few points a ball
+// diameter, a still ball one point.
+constexpr double kPathStepM = 0.002;
+// The most points a path keeps (10 m of travel at kPathStepM): a view left running for hours
+// holds no more.
+constexpr std::size_t kMaxPathPoints = 5000;
+
 nlohmann::json BallsJson(const table_state_t& m, bool with_uncertainty) {
   nlohmann::json balls = nlohmann::json::array();
   for (const ball_state_t& b : m.balls) {
-    nlohmann::json j = {{"id", b.ball_id}, {"x", b.position[0]}, {"y", b.position[1]},
-                        {"class", b.ball_class}};
+    const int number = BallNumber(b.ball_class);
+    nlohmann::json j = {{"id", b.ball_id},       {"number", number},     {"x", b.position[0]},
+                        {"y", b.position[1]},    {"class", b.ball_class}, {"look", LookJson(number)}};
     // The position's standard deviations: the covariance is of the 7-state, row-major.
     if (with_uncertainty) {
       j["sx"] = std::sqrt(std::max(b.covariance[0], 0.0));
@@ -27,14 +35,16 @@ nlohmann::json BallsJson(const table_state_t& m, bool with_uncertainty) {
 
 }  // namespace
 
-ViewState::ViewState(lcm::LCM& lcm, const physics::ModelParameters& params) {
-  state_ = {{"table", {{"length", params.table.length}, {"width", params.table.width}}},
+ViewState::ViewState(lcm::LCM& lcm, const physics::ModelParameters& params,
+                     const table::TableGeometry& table) {
+  state_ = {{"table", TableJson(table)},
             {"ball_radius", params.ball.radius},
             {"scale_px_per_m", kPixelsPerMetre},
             {"margin_px", kMarginPx},
             {"estimate", nullptr},
             {"truth", nullptr},
             {"plan", nullptr},
+            {"strokes", 0},
             {"nodes", nlohmann::json::object()}};
   lcm.subscribe(messages::kTableStateChannel, &ViewState::OnTableState, this);
   lcm.subscribe(messages::kTableTruthChannel, &ViewState::OnTableState, this);
@@ -49,27 +59,39 @@ void ViewState::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& 
   const bool truth = channel == messages::kTableTruthChannel;
   std::lock_guard<std::mutex> lock(mutex_);
   state_[truth ? "truth" : "estimate"] = BallsJson(m, !truth);
+  if (!truth) {
+    number_of_track_.clear();
+    for (const ball_state_t& b : m.balls) number_of_track_[b.ball_id] = BallNumber(b.ball_class);
+  }
+  // The paths from the truth where a simulator publishes it, else (a camera) from the estimate.
+  if (truth && !truth_seen_) paths_.clear();
+  truth_seen_ = truth_seen_ || truth;
+  if (truth == truth_seen_) ExtendPaths(m);
 }
 
+void ViewState::ExtendPaths(const table_state_t& m) {
+  for (const ball_state_t& b : m.balls) {
+    const int number = BallNumber(b.ball_class);
+    if (number < 0) continue;
+    std::vector<Eigen::Vector2d>& path = paths_[number];
+    const Eigen::Vector2d p(b.position[0], b.position[1]);
+    if (path.size() < kMaxPathPoints && (path.empty() || (p - path.back()).norm() >= kPathStepM)) {
+      path.push_back(p);
+    }
+  }
+}
+
+// A stroke the planner sends for a new request starts a shot: the paths drawn from then on are
+// that shot's. A request the session sent again is answered again, and is the same shot.
 void ViewState::OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string&) {
   cue_command_t m;
   if (!messages::DecodeChecked(rbuf->data, rbuf->data_size, m).empty()) return;
-  const auto points = [](const std::vector<std::vector<double>>& path) {
-    nlohmann::json out = nlohmann::json::array();
-    for (const auto& p : path) out.push_back({p[0], p[1]});
-    return out;
-  };
-  nlohmann::json ball_paths = nlohmann::json::array();
-  for (const ball_path_t& b : m.ball_paths) {
-    ball_paths.push_back({{"ball_id", b.ball_id}, {"points", points(b.points)}});
-  }
   std::lock_guard<std::mutex> lock(mutex_);
-  state_["plan"] = {{"utime", m.utime},
-                    {"ball_id", m.ball_id},
-                    {"status", m.status},
-                    {"path", points(m.path)},
-                    {"ball_paths", ball_paths},
-                    {"predicted_final", {m.predicted_final[0], m.predicted_final[1]}}};
+  state_["plan"] = PlanJson(m, number_of_track_);
+  if (m.status != cue_command_t::STATUS_OK || m.request_id == last_stroke_request_) return;
+  last_stroke_request_ = m.request_id;
+  state_["strokes"] = state_["strokes"].get<int>() + 1;
+  paths_.clear();  // the next frame, still at rest, starts each path where its ball stands
 }
 
 void ViewState::OnNodeStatus(const lcm::ReceiveBuffer* rbuf, const std::string&) {
@@ -85,7 +107,16 @@ void ViewState::OnNodeStatus(const lcm::ReceiveBuffer* rbuf, const std::string&)
 
 nlohmann::json ViewState::Json() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return state_;
+  nlohmann::json state = state_;
+  nlohmann::json paths = nlohmann::json::array();
+  for (const auto& [number, points] : paths_) {
+    if (points.size() < 2) continue;  // a ball that has not moved
+    nlohmann::json xy = nlohmann::json::array();
+    for (const Eigen::Vector2d& p : points) xy.push_back({p.x(), p.y()});
+    paths.push_back({{"number", number}, {"look", LookJson(number)}, {"points", xy}});
+  }
+  state["paths"] = paths;
+  return state;
 }
 
 }  // namespace billiard::viewer

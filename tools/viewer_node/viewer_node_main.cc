@@ -1,6 +1,6 @@
-// build/bin/viewer_node [--lcm-url URL] [--params SET] [--host ADDRESS] [--port N] [--version]
+// build/bin/viewer_node [--lcm-url URL] [--params SET] [--table NAME|FILE] [--host ADDRESS]
+//                       [--port N] [--version]
 #include <CLI/CLI.hpp>
-#include <httplib.h>
 #include <atomic>
 #include <chrono>
 
@@ -11,7 +11,10 @@
 #include "lcmtypes/node/node_command_line.h"
 #include "lcmtypes/node/node_loop.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
 #include "tools/viewer_node/viewer_node.h"
+// After Eigen (in viewer_node.h): httplib's <resolv.h> defines _res, a name Eigen's headers use.
+#include <httplib.h>
 
 namespace {
 
@@ -19,8 +22,9 @@ namespace {
 // request it cannot parse with 400), and no file is ever served. The state is `*view`'s, made
 // once LCM is open (until then no request is served: the server listens after).
 void ServeTwoPages(httplib::Server* server, std::unique_ptr<billiard::viewer::ViewState>* view) {
-  server->Get("/", [](const httplib::Request&, httplib::Response& res) {
-    res.set_content(billiard::viewer::PageHtml(), "text/html; charset=utf-8");
+  server->Get("/", [view](const httplib::Request&, httplib::Response& res) {
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(billiard::viewer::PageHtml((*view)->Json()), "text/html; charset=utf-8");
   });
   server->Get("/state.json", [view](const httplib::Request&, httplib::Response& res) {
     res.set_header("Cache-Control", "no-store");
@@ -41,17 +45,23 @@ int main(int argc, char** argv) {
   CLI::App app("viewer_node: a live view of the table in a web browser, from LCM");
   billiard::nodes::OneLineErrors(app, "viewer_node");
   billiard::nodes::VersionFlag(app, "viewer_node");
-  std::string lcm_url, params_name = "pool", host = "127.0.0.1";
+  std::string lcm_url, params_name = "pool", table_name = "pool-9ft", host = "127.0.0.1";
   int port = 8765;
   app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL, else LCM's default)");
   app.add_option("--params", params_name, "Parameter set (its table's size)")->capture_default_str();
+  app.add_option("--table", table_name,
+                 "The table drawn (its cushions and pockets): a built-in table or a table file, "
+                 "the planner's --table")
+      ->capture_default_str();
   app.add_option("--host", host, "Address to listen on (127.0.0.1: this host alone)")
       ->capture_default_str();
   app.add_option("--port", port, "TCP port")->capture_default_str()->check(CLI::Range(1, 65535));
   if (auto status = billiard::nodes::ParseCommandLine(app, argc, argv)) return *status;
   billiard::physics::ModelParameters params;
+  billiard::table::TableGeometry table;
   try {
     params = billiard::params::LoadParameters(params_name);
+    table = billiard::table::BuildTable(billiard::params::LoadTableSpec(table_name));
   } catch (const std::invalid_argument& e) {
     std::cerr << "viewer_node: " << e.what() << std::endl;
     return 2;
@@ -72,7 +82,7 @@ int main(int argc, char** argv) {
   std::atomic<bool> listening_ended{false};
   const int status = billiard::nodes::RunNodeUntilStopped(
       "viewer_node", lcm_url, [&](lcm::LCM& lcm) -> std::function<bool()> {
-        view = std::make_unique<billiard::viewer::ViewState>(lcm, params);
+        view = std::make_unique<billiard::viewer::ViewState>(lcm, params, table);
         std::cerr << "viewer_node: http://" << host << ":" << port << "/" << std::endl;
         serving = std::make_unique<std::thread>([&] {
           server.listen_after_bind();
