@@ -362,11 +362,14 @@ if game:
     for k, rack in enumerate(game["racks"]):
         print(f"rack {k} (seed {rack['seed']}): {'cleared' if rack['cleared'] else 'not cleared'} in "
               f"{len(rack['shots'])} shots, {rack['visits']} visit(s){', a run-out' if rack['run_out'] else ''}")
+        print("  (call: the ball and pocket called, or none for a safety or the fallback; p: the chance the "
+              "choice gave it; potted: the balls that dropped, * when the called one did; ms: the "
+              "decision's time; est mm: the estimator's position error at the decision, rms)")
         print(f"{'shot':>4} {'visit':>5} {'call':>18} {'p':>5} {'potted':>10} {'foul':>24} {'ms':>6} {'est mm':>6}")
         for shot in rack["shots"]:
             c = shot.get("called")
             call = ("break" if shot["break"] else f"{c['ball']} {c['pocket']}" if c else
-                    "fallback" if shot["status"] == "ok" else shot["status"])
+                    "none" if shot["status"] == "ok" else shot["status"])
             p = f"{c['predicted']:.2f}" if c else ""
             potted = ",".join(str(b) for b in shot["potted"]) + (" *" if shot["called_potted"] else "")
             hand = " (in hand)" if shot["ball_in_hand"] else ""
@@ -374,7 +377,8 @@ if game:
                   f"{shot.get('foul_reason', ''):>24} {shot['decision_ms']:6.0f} "
                   f"{shot['estimator']['position_rms_mm']:6.2f}")
     g = game["summary"]
-    print(f"{g['cleared']} of {g['racks']} racks cleared, {g['run_outs']} run-outs; "
+    print(f"{g['cleared']} of {g['racks']} racks cleared, {g['run_outs']} run-outs (racks cleared in "
+          f"one visit, the break's); "
           f"{g['pots']} of {g['attempts']} attempts potted ({100 * g['pots_per_attempt']:.0f} %), "
           f"{g['balls_per_visit']:.2f} balls per visit, {g['fouls']} fouls; decision "
           f"{g['median_decision_ms']:.0f} ms median ({g['max_decision_ms']:.0f} max); the estimator "

@@ -80,13 +80,16 @@ TEST(BilliardSceneChain, EachScenesOutputIsTheNextOnesScene) {
   ASSERT_EQ(chosen["status"], "ok");
   const nlohmann::json next_scene = ReadJson(next);
   ExpectPureScene(next_scene, next);
-  // ... which is what simulate --scene makes of the chosen stroke from the same table.
+  // ... which is what simulate --scene makes of the stroke played (the chosen pot's, or the
+  // safety's where it plays safe) from the same table.
+  const bool safe = chosen["plays_safe"].get<bool>();
+  const nlohmann::json& played = safe ? chosen["safety"]["stroke"] : chosen["choice"]["cue"];
   const std::string struck = Temp("struck.json");
-  std::ofstream(struck) << Struck(end_scene, chosen["choice"]["cue"]).dump();
+  std::ofstream(struck) << Struck(end_scene, played).dump();
   const nlohmann::json replayed = JsonOf("simulate --scene " + struck + " --json");
   EXPECT_EQ(next_scene["balls"], BallsLeft(replayed));
   // The called ball went down (a pot the choice rated at p >= 0.5 is played as planned).
-  if (chosen["choice"]["success_probability"].get<double>() >= 0.5) {
+  if (!safe && chosen["choice"]["success_probability"].get<double>() >= 0.5) {
     for (const nlohmann::json& b : next_scene["balls"]) EXPECT_NE(b["id"], chosen["choice"]["ball"]);
   }
 

@@ -34,9 +34,10 @@ void Record(const choice::StrokeResult& result, const rules::Judgement& judgemen
   }
 }
 
-void Summarize(std::vector<double> decisions, GameSummary* sum) {
+void Summarize(std::vector<double> decisions, const std::vector<ShotRecord>& shots,
+               GameSummary* sum) {
   sum->cleared = sum->end == GameEnd::kCleared;
-  sum->run_out = sum->cleared && sum->visits == 1;
+  sum->run_out = rules::RunOut(sum->cleared, sum->visits, rules::FirstVisitAfterBreak(shots));
   if (!decisions.empty()) {
     std::sort(decisions.begin(), decisions.end());
     sum->median_decision_us = decisions[decisions.size() / 2];
@@ -114,7 +115,7 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
     }
     if (new_visit) ++visit;
   }
-  Summarize(std::move(decisions), &sum);
+  Summarize(std::move(decisions), game.shots, &sum);
   game.final_balls = balls;
   return game;
 }

@@ -50,6 +50,10 @@ std::string IllegalBreak(const Shot& shot) {
          std::to_string(kBreakRailBalls);
 }
 
+bool RunOut(bool cleared, int visits, int first_visit_after_break) {
+  return cleared && visits == std::max(1, first_visit_after_break);
+}
+
 bool Contains(const std::vector<int>& ids, int id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
 }

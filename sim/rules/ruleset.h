@@ -141,6 +141,23 @@ std::string NoRailAfterContact(const Shot& shot);
 inline constexpr int kBreakRailBalls = 4;
 std::string IllegalBreak(const Shot& shot);
 
+// Whether a rack was run out: cleared in one turn at the table from the first shot after the
+// break, the breaker's where the break kept the table (the break and the rest in one visit), the
+// incoming player's where a dry or fouled break gave it up. `cleared` in `visits` visits, the
+// first shot after the break in visit `first_visit_after_break` (0 when the break ended the
+// rack, which is a run-out of one shot).
+bool RunOut(bool cleared, int visits, int first_visit_after_break);
+
+// The visit of the first of `shots` (records with `break_shot` and `visit`, as the games and the
+// table simulator keep them) after the break, the first shot's where nobody broke; 0 when none.
+template <class ShotRecords>
+int FirstVisitAfterBreak(const ShotRecords& shots) {
+  for (const auto& shot : shots) {
+    if (!shot.break_shot) return shot.visit;
+  }
+  return 0;
+}
+
 // Whether `ids` holds `id`.
 bool Contains(const std::vector<int>& ids, int id);
 

@@ -81,5 +81,17 @@ TEST_F(RespotTest, BehindItsSpotWhenTaken) {
   EXPECT_TRUE(table::FreePlace(table_, radius_, {balls.front()}, at, clearance));
 }
 
+// A run-out is one turn at the table from the first shot after the break: the breaker's, or
+// after a dry break the incoming player's; a rack that needed a further visit, or was not
+// cleared, is none.
+TEST(RulesetTest, ARunOutIsOneTurnFromTheFirstShotAfterTheBreak) {
+  EXPECT_TRUE(RunOut(true, 1, 1));    // break and run
+  EXPECT_TRUE(RunOut(true, 2, 2));    // a dry break, then cleared by the next visit
+  EXPECT_TRUE(RunOut(true, 1, 0));    // the 9 on the break
+  EXPECT_FALSE(RunOut(true, 2, 1));   // the breaker missed after the break; a second visit
+  EXPECT_FALSE(RunOut(true, 3, 2));   // a dry break, a miss, then cleared
+  EXPECT_FALSE(RunOut(false, 1, 1));  // never cleared
+}
+
 }  // namespace
 }  // namespace billiard::rules

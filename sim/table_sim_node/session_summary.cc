@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/rules/ruleset.h"
+
 namespace billiard::table_sim_node {
 
 namespace {
@@ -42,12 +44,16 @@ nlohmann::json GameShotJson(const GameShot& s) {
   return shot;
 }
 
+bool RackRunOut(const GameResult& game) {
+  return rules::RunOut(game.cleared, game.visits, rules::FirstVisitAfterBreak(game.shots));
+}
+
 // One rack: its shots and counts, added to `totals`.
 nlohmann::json RackJson(const GameResult& game, GameTotals* totals) {
   nlohmann::json rack = {{"seed", game.seed},
                          {"cleared", game.cleared},
                          {"visits", game.visits},
-                         {"run_out", game.cleared && game.visits == 1}};
+                         {"run_out", RackRunOut(game)}};
   int rack_attempts = 0, rack_pots = 0, rack_fouls = 0, rack_balls = 0;
   for (const GameShot& s : game.shots) {
     if (s.called >= 0) {
@@ -71,7 +77,7 @@ nlohmann::json RackJson(const GameResult& game, GameTotals* totals) {
   rack["fouls"] = rack_fouls;
   rack["balls_potted"] = rack_balls;
   totals->cleared += game.cleared;
-  totals->run_outs += game.cleared && game.visits == 1;
+  totals->run_outs += RackRunOut(game);
   totals->shots += static_cast<int>(game.shots.size());
   totals->attempts += rack_attempts;
   totals->pots += rack_pots;

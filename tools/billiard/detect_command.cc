@@ -161,6 +161,34 @@ estimator::DetectorOptions OptionsFor(const DetectArgs& args, const physics::Mod
   return options;
 }
 
+// What `detect` found (`j`, its JSON) as a person reads it: the table and how it was had, then a
+// line a ball: its class and sureness, where it is in the image and, calibrated, on the table.
+void PrintDetections(const nlohmann::json& j, const std::string& image) {
+  constexpr double kUsPerMs = 1000.0;
+  std::cerr << "detect: " << j["balls"].size() << " balls in " << image << " (radius "
+            << Fixed(j["radius_px"].get<double>(), 1) << " px, "
+            << Fixed(j["detect_us"].get<double>() / kUsPerMs, 0) << " ms)\n";
+  const nlohmann::json& table = j["table"];
+  if (table.is_null()) {
+    std::cerr << "  table   not found (" << j["no_table"].get<std::string>()
+              << "): the balls on the cloth, in image coordinates only\n";
+  } else {
+    std::cerr << "  table   " << table["view"].get<std::string>() << " view ("
+              << table["from"].get<std::string>() << "), its sides fitted to "
+              << Fixed(table["side_fit_rms_px"].get<double>(), 1) << " px RMS\n";
+  }
+  for (const nlohmann::json& b : j["balls"]) {
+    std::cerr << "  " << b["class"].get<std::string>() << " ("
+              << Fixed(b["class_confidence"].get<double>(), 2) << ") at "
+              << Fixed(b["u"].get<double>(), 1) << ", " << Fixed(b["v"].get<double>(), 1) << " px";
+    if (b.contains("x")) {
+      std::cerr << " = " << Fixed(b["x"].get<double>(), 3) << ", " << Fixed(b["y"].get<double>(), 3)
+                << " m";
+    }
+    std::cerr << ", score " << Fixed(b["score"].get<double>(), 2) << "\n";
+  }
+}
+
 void RunDetect(const DetectArgs& args) {
   const physics::ModelParameters params = LoadParametersOption(args.params);
   const std::optional<camera::CameraModel> camera = CalibrationOption(args.calib);
@@ -202,9 +230,7 @@ void RunDetect(const DetectArgs& args) {
   if (args.json) {
     std::cout << j.dump() << std::endl;
   } else {
-    std::cerr << balls.size() << " balls in " << args.image << " (radius " << detector.radius_px()
-              << " px, " << us << " us); table " << table.dump() << "\n";
-    for (const auto& b : list) std::cerr << "  " << b.dump() << "\n";
+    PrintDetections(j, args.image);
   }
 }
 
