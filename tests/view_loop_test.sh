@@ -33,11 +33,13 @@ echo "view_loop_test: the view answered during the loop and closed with it"
 
 # From a terminal (script(1)'s pseudo-terminal), the view keeps the last table after the run and
 # closes at Ctrl-C (SIGINT to the terminal's foreground process group), the run's status 0.
-# (Started &, a non-interactive shell would hand it SIGINT ignored, which no trap can undo.)
+# (Started &, a non-interactive shell would hand it SIGINT ignored, which no trap can undo. The
+# command is exec'd: where SHELL is sh, script(1)'s `sh -c` would otherwise stay as the parent
+# and die of the Ctrl-C itself, status 130, as it did in CI.)
 command -v script >/dev/null || { echo "view_loop_test: no script(1) for a terminal" >&2; exit 77; }
 out=$(mktemp)
 trap 'rm -f "$err" "$out"' EXIT
-env --default-signal=INT script -qfec "bash '$repo/launch_scripts/run_loop.sh' --no-build --shots 1 --view-port $port" \
+env --default-signal=INT script -qfec "exec bash '$repo/launch_scripts/run_loop.sh' --no-build --shots 1 --view-port $port" \
   /dev/null </dev/null >"$out" 2>&1 &
 terminal=$!
 for _ in $(seq 150); do grep -q "the run is over" "$out" && break; sleep 0.2; done
