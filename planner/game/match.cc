@@ -6,6 +6,7 @@
 
 #include "planner/choice/monte_carlo.h"
 #include "planner/choice/scene_balls.h"
+#include "planner/game/match_summary.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/rules/rack_state.h"
 #include "sim/table/rack.h"
@@ -140,13 +141,11 @@ MatchRecord PlayMatch(const table::TableGeometry& table, const physics::ModelPar
   MatchRecord match;
   for (int p = 0; p < 2; ++p) match.players[p].name = options.players[p]->Name();
   for (int rack = 0; rack < options.racks; ++rack) {
-    RackResult r = PlayRack(table, params, rack, options, pool, &match.players);
-    if (r.winner < 0) {
-      ++match.undecided;
-    } else {
-      ++match.players[r.winner].racks_won;
-      match.players[r.winner].break_and_runs += r.break_and_run;
-    }
+    RackFigures figures;
+    RackResult r = PlayRack(table, params, rack, options, pool, &figures.players);
+    figures.winner = r.winner;
+    figures.break_and_run = r.break_and_run;
+    AddRack(figures, &match);
     if (progress) progress(r);
     match.racks.push_back(std::move(r));
   }
