@@ -57,7 +57,8 @@ def chunks(racks, racks_per_task):
 def play_racks(client, game, players, racks, seed=1, noise="robot", shot_limit=200,
                racks_per_task=RACKS_PER_TASK, progress=None):
     """The records of racks 0..racks-1 of the match, played as tasks on `client`'s cluster and
-    returned in rack order. `progress(done, racks)` is told as each task ends."""
+    returned in rack order. `progress(done, racks, workers)` is told as each task ends: the
+    racks done so far and the addresses of the workers that hold the task's records."""
     if racks < 1 or racks_per_task < 1:
         raise ValueError("racks and racks_per_task must be >= 1")
     billiard.match_summary([], game, players, seed, noise)  # the names checked before any task
@@ -69,7 +70,7 @@ def play_racks(client, game, players, racks, seed=1, noise="robot", shot_limit=2
         done = 0
         for future in distributed.as_completed(futures):
             done += len(future.result())
-            progress(done, racks)
+            progress(done, racks, client.who_has(future).get(future.key, ()))
     return [record for chunk in client.gather(futures) for record in chunk]
 
 
@@ -155,7 +156,8 @@ def main(argv=None):
         summary = play_match(
             _client(args, stack), args.game, args.players, args.racks, args.seed, args.noise,
             args.shot_limit, args.racks_per_task,
-            progress=lambda done, racks: print(f"racks {done}/{racks}", file=sys.stderr))
+            progress=lambda done, racks, workers: print(
+                f"racks {done}/{racks} ({', '.join(workers)})", file=sys.stderr))
     for p in summary["players"]:
         print(f"{p['name']}: {p['racks_won']} racks won of {summary['racks']}, {p['pots']} pots "
               f"of {p['attempts']} attempts, {p['fouls']} fouls", file=sys.stderr)

@@ -39,12 +39,12 @@ def test_nine_ball_on_two_workers_is_the_one_process_match(client):
     told = []
     summary = billiard_dask.play_match(client, "nine-ball", CHEAP, racks=6, seed=7,
                                        noise="computational-pool",
-                                       progress=lambda done, racks: told.append((done, racks)))
+                                       progress=lambda done, racks, workers: told.append((done, racks, len(workers))))
     truth = billiard_match("nine-ball", CHEAP, 6, 7, "computational-pool")
     assert billiard_dask.without_clock(summary) == billiard_dask.without_clock(truth)
     assert summary["racks"] == 6
     assert sum(p["attempts"] for p in summary["players"]) > 0
-    assert told[-1] == (6, 6) and len(told) == 6
+    assert told[-1] == (6, 6, 1) and len(told) == 6
     assert set(summary["decision_us"]) == {"median", "p95"}
 
 
