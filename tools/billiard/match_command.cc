@@ -34,33 +34,22 @@ struct MatchArgs {
   bool json = false;
 };
 
-// "A,B": the two players by name.
-std::array<std::shared_ptr<const players::Player>, 2> PlayersOf(const std::string& list) {
+// "A,B": the two players' names.
+std::array<std::string, 2> PlayerNames(const std::string& list) {
   const std::size_t comma = list.find(',');
   if (comma == std::string::npos || list.find(',', comma + 1) != std::string::npos) {
     throw UsageError("--players: give two names, A,B (got '" + list + "')");
   }
-  try {
-    return {players::MakePlayer(list.substr(0, comma)), players::MakePlayer(list.substr(comma + 1))};
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--players: ") + e.what());
-  }
+  return {list.substr(0, comma), list.substr(comma + 1)};
 }
 
 game::MatchOptions OptionsOf(const MatchArgs& args) {
-  game::MatchOptions options;
-  options.game = GameOf(args.game);
-  options.players = PlayersOf(args.players);
   try {
-    options.execution = params::LoadNoise(args.noise);
+    return game::OptionsOf({args.game, PlayerNames(args.players), args.noise, args.seed,
+                            args.racks, args.shot_limit});
   } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--noise: ") + e.what());
+    throw UsageError(std::string("--") + e.what());  // "--game: ...", as the option is named
   }
-  options.choice.noise = options.execution;
-  options.seed = args.seed;
-  options.racks = args.racks;
-  options.shot_limit = args.shot_limit;
-  return options;
 }
 
 // One line on stderr as each rack ends: who broke, who won and why, the score so far.

@@ -5,18 +5,15 @@
 #include <array>
 #include <cstdint>
 #include <map>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "planner/game/match.h"
 #include "planner/game/match_summary.h"
-#include "planner/players/players.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
-#include "sim/rules/rules.h"
 #include "tools/python/conversions.h"
 
 namespace billiard::python {
@@ -35,40 +32,17 @@ struct MatchArgs {
   int shot_limit = 200;
 };
 
-rules::Rules GameOf(const std::string& name) {
-  const std::optional<rules::Rules> game = rules::ParseRules(name);
-  if (!game || *game == rules::Rules::kAny) {
-    throw py::value_error("game: unknown game '" + name + "' (nine-ball, eight-ball)");
-  }
-  return *game;
-}
-
-std::array<std::shared_ptr<const players::Player>, 2> PlayersOf(
-    const std::vector<std::string>& names) {
-  if (names.size() != 2) throw py::value_error("players: give two names, [A, B]");
-  try {
-    return {players::MakePlayer(names[0]), players::MakePlayer(names[1])};
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(std::string("players: ") + e.what());
-  }
-}
-
-// The match's options as `billiard match` makes them: the table's noise is the one the players
-// assume.
+// The match's options as `billiard match` makes them; ValueError naming the argument at fault.
 game::MatchOptions OptionsOf(const MatchArgs& args) {
-  game::MatchOptions options;
-  options.game = GameOf(args.game);
-  options.players = PlayersOf(args.players);
-  try {
-    options.execution = params::LoadNoise(args.noise);
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(std::string("noise: ") + e.what());
-  }
+  if (args.players.size() != 2) throw py::value_error("players: give two names, [A, B]");
   if (args.shot_limit < 1) throw py::value_error("shot_limit must be >= 1");
-  options.choice.noise = options.execution;
-  options.seed = args.seed;
-  options.shot_limit = args.shot_limit;
-  return options;
+  try {
+    // One rack: play_rack plays a rack by its index, whatever the match's length.
+    return game::OptionsOf({args.game, {args.players[0], args.players[1]}, args.noise, args.seed,
+                            /*racks=*/1, args.shot_limit});
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(e.what());
+  }
 }
 
 py::dict TallyDict(const game::PlayerTally& t) {
