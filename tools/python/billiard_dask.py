@@ -16,7 +16,7 @@ The workers import this module and `billiard`: start them with the interpreter t
 built for and the module on its path, `build/python/python3 -m distributed.cli.dask_worker
 SCHEDULER` (or `dask-worker` with PYTHONPATH=build/python), on every host. A task plays
 `racks_per_task` consecutive racks, each on one thread (a worker process per core plays as
-many racks at once as there are cores); the chunks are fixed by the rack count and
+many racks at once as there are cores); the runs are fixed by the rack count and
 `racks_per_task` alone, and the records are gathered in rack order.
 
 From the command line, as `billiard match` with a scheduler's address (or --local N workers):
@@ -35,9 +35,12 @@ import sys
 
 import billiard
 
-# A task's racks by default: one. A rack plays for tenths of a second to tens of seconds, a
-# task costs Dask a few milliseconds, and the smallest tasks balance the workers best.
-RACKS_PER_TASK = 1
+# A task's racks by default: racks // MIN_TASKS, 1 to MAX_RACKS_PER_TASK. A task costs Dask
+# milliseconds of its own (measured on a loaded 2-core machine: 400 racks of 0.05 s CPU each
+# took 124 s in tasks of 8 and 164 s in tasks of 1, docs/python.md), so runs amortise it; at least MIN_TASKS tasks
+# keep a cluster's workers evenly busy to the end of a match of racks of seconds.
+MAX_RACKS_PER_TASK = 8
+MIN_TASKS = 32
 # How long the command line waits for --workers workers to join the scheduler.
 WORKERS_TIMEOUT_S = 60
 
@@ -48,6 +51,11 @@ def play_racks_here(game, players, racks, seed, noise, shot_limit):
                                shot_limit=shot_limit, threads=1) for rack in racks]
 
 
+def default_racks_per_task(racks):
+    """A task's racks when not given: fixed by the match's rack count alone."""
+    return min(MAX_RACKS_PER_TASK, max(1, racks // MIN_TASKS))
+
+
 def chunks(racks, racks_per_task):
     """Racks 0..racks-1 in runs of racks_per_task (the last shorter), in order."""
     return [range(first, min(first + racks_per_task, racks))
@@ -55,10 +63,13 @@ def chunks(racks, racks_per_task):
 
 
 def play_racks(client, game, players, racks, seed=1, noise="robot", shot_limit=200,
-               racks_per_task=RACKS_PER_TASK, progress=None):
+               racks_per_task=None, progress=None):
     """The records of racks 0..racks-1 of the match, played as tasks on `client`'s cluster and
-    returned in rack order. `progress(done, racks, workers)` is told as each task ends: the
-    racks done so far and the addresses of the workers that hold the task's records."""
+    returned in rack order, `racks_per_task` racks a task (default_racks_per_task when None).
+    `progress(done, racks, workers)` is told as each task ends: the racks done so far and the
+    addresses of the workers that hold the task's records."""
+    if racks_per_task is None:
+        racks_per_task = default_racks_per_task(racks)
     if racks < 1 or racks_per_task < 1:
         raise ValueError("racks and racks_per_task must be >= 1")
     billiard.match_summary([], game, players, seed, noise)  # the names checked before any task
@@ -75,7 +86,7 @@ def play_racks(client, game, players, racks, seed=1, noise="robot", shot_limit=2
 
 
 def play_match(client, game, players, racks, seed=1, noise="robot", shot_limit=200,
-               racks_per_task=RACKS_PER_TASK, progress=None):
+               racks_per_task=None, progress=None):
     """The match as `billiard match --json` prints it, its racks played on `client`'s cluster."""
     records = play_racks(client, game, players, racks, seed, noise, shot_limit, racks_per_task,
                          progress)
@@ -124,7 +135,8 @@ def _arguments(argv):
     parser.add_argument("--noise", default="robot")
     parser.add_argument("--seed", type=_whole(0), default=1)
     parser.add_argument("--shot-limit", type=_whole(1), default=200)
-    parser.add_argument("--racks-per-task", type=_whole(1), default=RACKS_PER_TASK)
+    parser.add_argument("--racks-per-task", type=_whole(1),
+                        help="racks a task (default: racks // 32, 1 to 8)")
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
     args = parser.parse_args(argv)
     args.players = args.players.split(",")

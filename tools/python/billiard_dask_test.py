@@ -58,6 +58,12 @@ def test_eight_ball_in_chunks_of_three_is_the_one_process_match(client):
     assert billiard_dask.without_clock(summary) == billiard_dask.without_clock(truth)
 
 
+def test_the_tasks_racks_depend_on_the_rack_count_alone():
+    assert billiard_dask.chunks(5, 3) == [range(0, 3), range(3, 5)]
+    assert [billiard_dask.default_racks_per_task(n) for n in (1, 20, 64, 100, 400, 4000)] == \
+        [1, 1, 2, 3, 8, 8]
+
+
 def test_a_rack_is_a_function_of_the_seed_and_its_index():
     alone = billiard.play_rack("nine-ball", CHEAP, 3, seed=7, threads=2)
     again = billiard.play_rack("nine-ball", CHEAP, 3, seed=7, threads=1)
