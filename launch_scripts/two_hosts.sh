@@ -17,7 +17,7 @@
 #   --seed S      seed of the targets, or of the match (default 1)
 #   --dask RACKS  a match of RACKS racks on Dask, not the loop
 #   --no-build    run what build/ holds, without build.sh first
-#   -h, --help  this text
+#   -h, --help    this text
 #
 # It needs root and `ip netns`; without them it prints {"skipped": "<why>"} and exits 0.
 set -euo pipefail
