@@ -165,8 +165,13 @@ def main(argv=None):
         print(f"billiard_dask: {e}", file=sys.stderr)
         return 2
     with contextlib.ExitStack() as stack:
+        try:
+            client = _client(args, stack)
+        except (OSError, TimeoutError) as e:  # no scheduler there, or too few workers in time
+            print(f"billiard_dask: no cluster to play on: {e}", file=sys.stderr)
+            return 1
         summary = play_match(
-            _client(args, stack), args.game, args.players, args.racks, args.seed, args.noise,
+            client, args.game, args.players, args.racks, args.seed, args.noise,
             args.shot_limit, args.racks_per_task,
             progress=lambda done, racks, workers: print(
                 f"racks {done}/{racks} ({', '.join(workers)})", file=sys.stderr))

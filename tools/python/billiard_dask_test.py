@@ -101,13 +101,22 @@ def test_bad_input_is_a_value_error():
 
 
 def test_the_command_line_refuses_bad_input_in_one_line():
-    env = dict(os.environ)
     run = subprocess.run([sys.executable, "-m", "billiard_dask", "--local", "2", "--game",
-                          "snooker", "--players", "ours,ours"],
-                         capture_output=True, text=True, env=env)
+                          "snooker", "--players", "ours,ours"], capture_output=True, text=True)
     assert run.returncode == 2
     assert run.stderr.strip().splitlines() == [
         "billiard_dask: game: unknown game 'snooker' (nine-ball, eight-ball)"]
     run = subprocess.run([sys.executable, "-m", "billiard_dask", "--local", "0", "--game",
                           "nine-ball", "--players", "ours,ours"], capture_output=True, text=True)
     assert run.returncode == 2 and len(run.stderr.strip().splitlines()) == 1
+
+
+def test_no_scheduler_is_a_one_line_failure():
+    env = dict(os.environ, DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT="2s")
+    run = subprocess.run([sys.executable, "-m", "billiard_dask", "--scheduler", "tcp://127.0.0.1:1",
+                          "--game", "nine-ball", "--players", "ours,ours"],
+                         capture_output=True, text=True, env=env)
+    assert run.returncode == 1
+    assert run.stderr.strip().splitlines() == [
+        "billiard_dask: no cluster to play on: Timed out trying to connect to tcp://127.0.0.1:1 "
+        "after 2 s"]
