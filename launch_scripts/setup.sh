@@ -28,8 +28,8 @@ packages=(
   # plot/: billiard plot's pictures and billiard bench's chart
   libcairo2-dev
   # tools/python/: the billiard Python module (pybind11) and its pytest suite, on Debian's
-  # python3 with Debian's NumPy
-  pybind11-dev python3-dev python3-numpy python3-pytest
+  # python3 with Debian's NumPy; Dask's distributed for billiard_dask.py's matches on a cluster
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed
   # bench/peer_solvers.h: the solvers `billiard bench` measures ours against (Boost.Odeint,
   # header-only; SUNDIALS CVODE)
   libboost-dev libsundials-dev

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 #include "planner/choice/monte_carlo.h"
 #include "planner/choice/scene_balls.h"
+#include "planner/game/match_summary.h"
+#include "planner/players/players.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/rules/rack_state.h"
 #include "sim/table/rack.h"
@@ -97,6 +100,31 @@ void Tally(const ShotRecord& rec, PlayerTally* tally) {
 
 }  // namespace
 
+MatchOptions OptionsOf(const MatchNames& names) {
+  MatchOptions options;
+  const std::optional<rules::Rules> game = rules::ParseRules(names.game);
+  if (!game || *game == rules::Rules::kAny) {
+    throw std::invalid_argument("game: unknown game '" + names.game + "' (nine-ball, eight-ball)");
+  }
+  options.game = *game;
+  try {
+    options.players = {players::MakePlayer(names.players[0]),
+                       players::MakePlayer(names.players[1])};
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("players: ") + e.what());
+  }
+  try {
+    options.execution = params::LoadNoise(names.noise);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("noise: ") + e.what());
+  }
+  options.choice.noise = options.execution;
+  options.seed = names.seed;
+  options.racks = names.racks;
+  options.shot_limit = names.shot_limit;
+  return options;
+}
+
 RackResult PlayRack(const table::TableGeometry& table, const physics::ModelParameters& params,
                     int rack, const MatchOptions& options, batch::ThreadPool& pool,
                     std::array<PlayerTally, 2>* tallies) {
@@ -140,13 +168,11 @@ MatchRecord PlayMatch(const table::TableGeometry& table, const physics::ModelPar
   MatchRecord match;
   for (int p = 0; p < 2; ++p) match.players[p].name = options.players[p]->Name();
   for (int rack = 0; rack < options.racks; ++rack) {
-    RackResult r = PlayRack(table, params, rack, options, pool, &match.players);
-    if (r.winner < 0) {
-      ++match.undecided;
-    } else {
-      ++match.players[r.winner].racks_won;
-      match.players[r.winner].break_and_runs += r.break_and_run;
-    }
+    RackFigures figures;
+    RackResult r = PlayRack(table, params, rack, options, pool, &figures.players);
+    figures.winner = r.winner;
+    figures.break_and_run = r.break_and_run;
+    AddRack(figures, &match);
     if (progress) progress(r);
     match.racks.push_back(std::move(r));
   }

@@ -58,6 +58,20 @@ struct MatchOptions {
   std::optional<Break> opening;  // the break; none: the game's StoredBreak
 };
 
+// A match by name, as `billiard match`'s options and the Python module's arguments give it.
+struct MatchNames {
+  std::string game;                    // "nine-ball" or "eight-ball"
+  std::array<std::string, 2> players;  // planner/players/players.h's names
+  std::string noise;                   // params::LoadNoise's name or file
+  std::uint64_t seed = 1;
+  int racks = 1;
+  int shot_limit = 200;
+};
+
+// The options `names` names, the table's noise also the one the players assume; throws
+// std::invalid_argument beginning with the field at fault ("game: ", "players: ", "noise: ").
+MatchOptions OptionsOf(const MatchNames& names);
+
 // What a player did over the match.
 struct PlayerTally {
   std::string name;

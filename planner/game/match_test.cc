@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "planner/players/players.h"
 #include "sim/params/parameter_sets.h"
@@ -175,6 +177,34 @@ TEST(SafetyWorkedTest, JudgedOnTheOpponentsNextShot) {
   EXPECT_TRUE(SafetyWorked(rack, 4));
   EXPECT_TRUE(SafetyWorked(rack, 6));
   EXPECT_FALSE(SafetyWorked(rack, 9));  // no reply, and player 0 lost the rack
+}
+
+// A match by name: the table's noise is the one the players assume, and a bad name is refused
+// with the field at fault first.
+TEST(OptionsOfTest, NamesTheFieldAtFault) {
+  const MatchOptions options =
+      OptionsOf({"eight-ball", {"ours", "easiest-looking"}, "computational-pool", 9, 12, 30});
+  EXPECT_EQ(options.game, rules::Rules::kEightBall);
+  EXPECT_STREQ(options.players[1]->Name(), "easiest-looking");
+  EXPECT_EQ(options.execution.name, "computational-pool");
+  EXPECT_EQ(options.execution.heading, params::LoadNoise("computational-pool").heading);
+  EXPECT_EQ(options.choice.noise.name, options.execution.name);
+  EXPECT_EQ(options.choice.noise.heading, options.execution.heading);
+  EXPECT_EQ(options.seed, 9u);
+  EXPECT_EQ(options.racks, 12);
+  EXPECT_EQ(options.shot_limit, 30);
+  const auto refusal = [](const MatchNames& names) {
+    try {
+      OptionsOf(names);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what()).substr(0, std::string(e.what()).find(':'));
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal({"snooker", {"ours", "ours"}, "robot"}), "game");
+  EXPECT_EQ(refusal({"any", {"ours", "ours"}, "robot"}), "game");
+  EXPECT_EQ(refusal({"nine-ball", {"ours", "nobody"}, "robot"}), "players");
+  EXPECT_EQ(refusal({"nine-ball", {"ours", "ours"}, "/no/such.json"}), "noise");
 }
 
 TEST(QuantileTest, NearestRank) {

@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "planner/game/match.h"
-#include "planner/game/wilson.h"
+#include "planner/game/match_summary.h"
 #include "planner/players/players.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
@@ -22,9 +22,6 @@
 namespace billiard::cli {
 
 namespace {
-
-constexpr double kMedian = 0.5;
-constexpr double kP95 = 0.95;
 
 struct MatchArgs {
   std::string game;
@@ -37,66 +34,22 @@ struct MatchArgs {
   bool json = false;
 };
 
-// "A,B": the two players by name.
-std::array<std::shared_ptr<const players::Player>, 2> PlayersOf(const std::string& list) {
+// "A,B": the two players' names.
+std::array<std::string, 2> PlayerNames(const std::string& list) {
   const std::size_t comma = list.find(',');
   if (comma == std::string::npos || list.find(',', comma + 1) != std::string::npos) {
     throw UsageError("--players: give two names, A,B (got '" + list + "')");
   }
-  try {
-    return {players::MakePlayer(list.substr(0, comma)), players::MakePlayer(list.substr(comma + 1))};
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--players: ") + e.what());
-  }
+  return {list.substr(0, comma), list.substr(comma + 1)};
 }
 
 game::MatchOptions OptionsOf(const MatchArgs& args) {
-  game::MatchOptions options;
-  options.game = GameOf(args.game);
-  options.players = PlayersOf(args.players);
   try {
-    options.execution = params::LoadNoise(args.noise);
+    return game::OptionsOf({args.game, PlayerNames(args.players), args.noise, args.seed,
+                            args.racks, args.shot_limit});
   } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--noise: ") + e.what());
+    throw UsageError(std::string("--") + e.what());  // "--game: ...", as the option is named
   }
-  options.choice.noise = options.execution;
-  options.seed = args.seed;
-  options.racks = args.racks;
-  options.shot_limit = args.shot_limit;
-  return options;
-}
-
-nlohmann::json DecisionJson(const std::vector<double>& us) {
-  return {{"median", game::Quantile(us, kMedian)}, {"p95", game::Quantile(us, kP95)}};
-}
-
-nlohmann::json PlayerJson(const game::PlayerTally& p, int racks) {
-  const game::Interval interval = game::WilsonInterval(p.racks_won, racks);
-  return {{"name", p.name},
-          {"racks_won", p.racks_won},
-          {"win_rate", racks ? static_cast<double>(p.racks_won) / racks : 0.0},
-          {"interval95", {interval.lo, interval.hi}},
-          {"break_and_runs", p.break_and_runs},
-          {"pots", p.pots},
-          {"attempts", p.attempts},
-          {"safeties", p.safeties},
-          {"safeties_that_worked", p.safeties_that_worked},
-          {"fouls", p.fouls},
-          {"foul_reasons", p.foul_reasons},
-          {"decision_us", DecisionJson(p.decisions_us)}};
-}
-
-nlohmann::json MatchJson(const game::MatchRecord& match, const MatchArgs& args) {
-  const int racks = static_cast<int>(match.racks.size());
-  nlohmann::json j = {{"game", args.game}, {"racks", racks}, {"seed", args.seed},
-                      {"noise", args.noise}, {"undecided", match.undecided}};
-  std::vector<double> every;
-  for (const game::PlayerTally& p : match.players) {
-    j["players"].push_back(PlayerJson(p, racks));
-    every.insert(every.end(), p.decisions_us.begin(), p.decisions_us.end());
-  }
-  j["decision_us"] = DecisionJson(every);
-  return j;
 }
 
 // One line on stderr as each rack ends: who broke, who won and why, the score so far.
@@ -124,7 +77,7 @@ void Run(const MatchArgs& args) {
         if (r.winner >= 0) ++so_far.players[r.winner].racks_won;
         std::cerr << ProgressLine(r, so_far, names, options.racks) << std::endl;
       });
-  const nlohmann::json j = MatchJson(match, args);
+  const nlohmann::json j = game::MatchJson(match, {args.game, args.noise, args.seed});
   for (const nlohmann::json& p : j["players"]) {
     std::cerr << p["name"].get<std::string>() << ": " << p["racks_won"] << " racks won of "
               << j["racks"] << std::setprecision(3) << " (95 % "

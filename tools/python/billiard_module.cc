@@ -1,6 +1,6 @@
 // The `billiard` Python module (pybind11): simulate one ball or a table scene, strike a ball
-// with the cue, plan a shot, choose one and play a rack (choice_functions.h), and detect the
-// balls of a camera frame, NumPy arrays in and out.
+// with the cue, plan a shot, choose one and play a rack (choice_functions.h), play a match rack
+// by rack (match_functions.h), and detect the balls of a camera frame, NumPy arrays in and out.
 // Bad input raises ValueError (the CLI's exit 2); an answer that is no (a refused plan, a frame
 // without a table) raises billiard.Refused (the CLI's exit 3), its message the CLI's reason.
 #include <pybind11/numpy.h>
@@ -24,6 +24,7 @@
 #include "sim/table/table_simulation.h"
 #include "tools/python/choice_functions.h"
 #include "tools/python/conversions.h"
+#include "tools/python/match_functions.h"
 
 namespace billiard::python {
 
@@ -265,6 +266,7 @@ PYBIND11_MODULE(billiard, m) {
         "planned against the whole-table simulation: 'kind', 'why', 'v0', 'w0', 'cue', "
         "'margin_deg', 'speed_window', 'cue_rest', 'paths'; raises Refused");
   AddChoiceFunctions(m);
+  AddMatchFunctions(m);
   m.def("detect", &Detect, arg("image"), arg("ball_set") = "pool",
         "The balls of a BGR (H x W x 3) or grey frame: 'balls' (N x 4: u, v, radius_px, score) "
         "and 'classes'; raises Refused when the frame shows no table");

@@ -1,0 +1,70 @@
+#include "planner/game/match_summary.h"
+
+#include <vector>
+
+#include "planner/game/wilson.h"
+
+namespace billiard::game {
+
+namespace {
+
+constexpr double kMedian = 0.5;
+constexpr double kP95 = 0.95;
+
+void AddTally(const PlayerTally& rack, PlayerTally* total) {
+  total->attempts += rack.attempts;
+  total->pots += rack.pots;
+  total->safeties += rack.safeties;
+  total->safeties_that_worked += rack.safeties_that_worked;
+  total->fouls += rack.fouls;
+  for (const auto& [reason, count] : rack.foul_reasons) total->foul_reasons[reason] += count;
+  total->decisions_us.insert(total->decisions_us.end(), rack.decisions_us.begin(),
+                             rack.decisions_us.end());
+}
+
+nlohmann::json DecisionJson(const std::vector<double>& us) {
+  return {{"median", Quantile(us, kMedian)}, {"p95", Quantile(us, kP95)}};
+}
+
+nlohmann::json PlayerJson(const PlayerTally& p, int racks) {
+  const Interval interval = WilsonInterval(p.racks_won, racks);
+  return {{"name", p.name},
+          {"racks_won", p.racks_won},
+          {"win_rate", racks ? static_cast<double>(p.racks_won) / racks : 0.0},
+          {"interval95", {interval.lo, interval.hi}},
+          {"break_and_runs", p.break_and_runs},
+          {"pots", p.pots},
+          {"attempts", p.attempts},
+          {"safeties", p.safeties},
+          {"safeties_that_worked", p.safeties_that_worked},
+          {"fouls", p.fouls},
+          {"foul_reasons", p.foul_reasons},
+          {"decision_us", DecisionJson(p.decisions_us)}};
+}
+
+}  // namespace
+
+void AddRack(const RackFigures& rack, MatchRecord* match) {
+  for (int p = 0; p < 2; ++p) AddTally(rack.players[p], &match->players[p]);
+  if (rack.winner < 0) {
+    ++match->undecided;
+    return;
+  }
+  ++match->players[rack.winner].racks_won;
+  match->players[rack.winner].break_and_runs += rack.break_and_run;
+}
+
+nlohmann::json MatchJson(const MatchRecord& match, const MatchLabels& labels) {
+  const int racks = match.players[0].racks_won + match.players[1].racks_won + match.undecided;
+  nlohmann::json j = {{"game", labels.game}, {"racks", racks}, {"seed", labels.seed},
+                      {"noise", labels.noise}, {"undecided", match.undecided}};
+  std::vector<double> every;
+  for (const PlayerTally& p : match.players) {
+    j["players"].push_back(PlayerJson(p, racks));
+    every.insert(every.end(), p.decisions_us.begin(), p.decisions_us.end());
+  }
+  j["decision_us"] = DecisionJson(every);
+  return j;
+}
+
+}  // namespace billiard::game
