@@ -121,18 +121,26 @@ cv::Mat DrawOccluders(const camera::CameraModel& camera, const std::vector<Capsu
   return mask;
 }
 
-double CoveredShare(const cv::Mat& mask, const Eigen::Vector2d& centre_px, double radius_px) {
-  double covered = 0, count = 0;
-  const int u0 = static_cast<int>(std::floor(centre_px.x() - radius_px));
-  const int v0 = static_cast<int>(std::floor(centre_px.y() - radius_px));
-  for (int v = v0; v <= v0 + 2 * radius_px + 1; ++v) {
-    for (int u = u0; u <= u0 + 2 * radius_px + 1; ++u) {
-      if ((Eigen::Vector2d(u, v) - centre_px).norm() > radius_px) continue;
+double VisibleShare(const camera::CameraModel& camera, const std::vector<OccludedBall>& balls,
+                    std::size_t index, const cv::Mat& mask) {
+  const OccludedBall& ball = balls.at(index);
+  const Eigen::Vector3d origin = camera.Centre();
+  const Eigen::Vector2d centre = camera.Project(ball.centre);
+  // The disc's radius on a pinhole, widened: a sphere off the axis images as a larger ellipse.
+  const double reach = 1.5 * camera.fx * ball.radius / (ball.centre - origin).norm() + 2.0;
+  double seen = 0, count = 0;
+  for (int v = static_cast<int>(centre.y() - reach); v <= centre.y() + reach; ++v) {
+    for (int u = static_cast<int>(centre.x() - reach); u <= centre.x() + reach; ++u) {
+      const Eigen::Vector3d d = camera.Ray({u, v});
+      const double own = NearestBall(origin, d, {ball});
+      if (!std::isfinite(own)) continue;
       ++count;
-      if (u >= 0 && v >= 0 && u < mask.cols && v < mask.rows) covered += mask.at<uchar>(v, u);
+      const bool in_frame = u >= 0 && v >= 0 && u < mask.cols && v < mask.rows;
+      if (!in_frame || NearestBall(origin, d, balls) < own) continue;
+      seen += 1.0 - mask.at<uchar>(v, u) / 255.0;
     }
   }
-  return count > 0 ? covered / (255.0 * count) : 0.0;
+  return count > 0 ? seen / count : 0.0;
 }
 
 }  // namespace billiard::render

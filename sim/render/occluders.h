@@ -41,8 +41,10 @@ cv::Mat DrawOccluders(const camera::CameraModel& camera, const std::vector<Capsu
                       const std::vector<OccludedBall>& balls,
                       const Eigen::Vector3d& light_direction, double ambient, cv::Mat* frame);
 
-// The share of a ball's image (its disc of `radius_px` around `centre_px`) that `mask` covers
-// (DrawOccluders' mask), from 0 to 1.
-double CoveredShare(const cv::Mat& mask, const Eigen::Vector2d& centre_px, double radius_px);
+// The share of ball `index`'s image that the camera sees: of the pixels whose ray meets it, those
+// where it is the nearest of `balls` and `mask` (DrawOccluders') does not cover it, from 0 to 1.
+// The cushions are not counted (a ball behind the near cushion is seen).
+double VisibleShare(const camera::CameraModel& camera, const std::vector<OccludedBall>& balls,
+                    std::size_t index, const cv::Mat& mask);
 
 }  // namespace billiard::render
