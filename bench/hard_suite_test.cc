@@ -66,5 +66,27 @@ TEST(HardSuite, ASidesErrorIsItsLargestDistanceFromTheFoundLine) {
   EXPECT_LT(moved[2], 0.05);
 }
 
+// Issue 45's acceptance where it is met today (docs/benchmarks/detection/hard_suite_report.md):
+// every side within 2 px with an arm or a player across the table, with a third of it out of
+// frame at one end, and from 20 and 30 degrees; recall 98 % or more from 30 degrees. Not yet met,
+// so not held: the turned camera (4 of 6), the barrel lens (25 px: the finder fits straight
+// sides), 15 degrees (4 of 6) and recall from 15 and 20 degrees (86 and 92 %).
+TEST(HardSuite, TheTableIsFoundWhereItIsNotWhole) {
+  DetectionBenchmarkOptions options;
+  options.read_image = [](const std::string&) -> cv::Mat { throw std::logic_error("rendered"); };
+  const HardSuiteResult result = RunHardSuite(Suite(), options);
+  std::map<std::string, std::vector<const FrameScore*>> by_case;
+  for (std::size_t i = 0; i < result.conditions.size(); ++i) {
+    const std::string& c = result.conditions[i];
+    by_case[c].push_back(&result.detection.frames[i]);
+    if (c == "arm" || c == "player" || c == "out-of-frame end" || c == "elevation 20" ||
+        c == "elevation 30") {
+      EXPECT_TRUE(SidesWithin(result, i)) << result.detection.frames[i].file;
+    }
+  }
+  EXPECT_GE(Total(by_case["elevation 30"]).recall, 0.98);
+  EXPECT_GE(Total(by_case["elevation 45"]).recall, 0.98);
+}
+
 }  // namespace
 }  // namespace billiard::bench
