@@ -12,10 +12,11 @@
 //     one arm reaching in;
 //   - out-of-frame end: the overhead camera moved along the table by a third of its length, so
 //     that a third of the table is out of the frame at one end;
-//   - out-of-frame turned: the camera moved across the table by a third of its width and turned
-//     by 12 degrees about its axis, so that a long side and two corners leave the frame;
+//   - out-of-frame turned: the camera moved across the table by 0.45 of its width and turned by
+//     12 degrees about its axis, so that a long side and two corners leave the frame (a third of
+//     the table);
 //   - lens k1=-0.3: the overhead camera with barrel distortion k1 = -0.3 (OpenCV's model, the
-//     renderer's lens), the table filling the frame: the cushions' noses bow by some 25 px;
+//     renderer's lens), the table filling the frame: its sides bow by some 26 px;
 //   - elevation 15, 20, 30, 45: a camera beside the long side looking at the table's middle from
 //     that many degrees above the cloth, as far as it needs to be to have the table in its frame.
 // Occlusion is geometric (render/occluders.h): a ball is hidden, and its label ignored as a real
