@@ -26,17 +26,6 @@ constexpr int kScatteredBalls = 16;
 // A touching pair's gap, and the least gap between other balls [m].
 constexpr double kTouchingGap = 0.0002, kLeastGap = 0.002;
 
-struct Cloth {
-  const char* name;
-  cv::Vec3b bed, cushion;  // BGR
-};
-
-// The renderer's green, a broadcast blue, navy, burgundy and grey; the cushion a little darker.
-const Cloth kCloths[] = {{"green", {60, 110, 30}, {48, 88, 24}},
-                         {"blue", {200, 140, 40}, {165, 115, 32}},
-                         {"navy", {90, 45, 25}, {72, 36, 20}},
-                         {"burgundy", {45, 30, 140}, {36, 24, 112}},
-                         {"grey", {175, 175, 170}, {140, 140, 136}}};
 
 struct View {
   const char* name;
@@ -92,66 +81,88 @@ std::vector<Eigen::Vector2d> Scattered(const physics::TableParameters& table, do
   return placed;
 }
 
-// The label of a frame: each ball's projected centre and radius. A ball whose centre projects
-// outside the frame (an end view's near balls, below its bottom edge) is less than half in view:
-// ignored, as the real sets' hidden balls are, neither a miss nor a false detection.
-LabelledFrame Label(const std::string& name, const View& view,
-                    const std::vector<Eigen::Vector2d>& balls, double r) {
+}  // namespace
+
+const std::vector<SuiteCloth>& SuiteCloths() {
+  // The renderer's green, a broadcast blue, navy, burgundy and grey; the cushion a little darker.
+  static const std::vector<SuiteCloth> cloths = {{"green", {60, 110, 30}, {48, 88, 24}},
+                                                 {"blue", {200, 140, 40}, {165, 115, 32}},
+                                                 {"navy", {90, 45, 25}, {72, 36, 20}},
+                                                 {"burgundy", {45, 30, 140}, {36, 24, 112}},
+                                                 {"grey", {175, 175, 170}, {140, 140, 136}}};
+  return cloths;
+}
+
+std::vector<Eigen::Vector2d> SceneBalls(const physics::ModelParameters& params, bool rack,
+                                        std::uint32_t rack_seed, std::mt19937* rng) {
+  if (!rack) return Scattered(params.table, params.ball.radius, *rng);
+  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(kSuiteTable));
+  std::vector<Eigen::Vector2d> balls;
+  for (const auto& b : table::Rack(table::RackKind::kEightBall, geometry, params.ball.radius,
+                                   rack_seed)) {
+    balls.push_back(b.state.head<2>());
+  }
+  return balls;
+}
+
+std::vector<render::RenderBall> PoolBalls(const std::vector<Eigen::Vector2d>& balls) {
+  std::vector<render::RenderBall> shown;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const int id = static_cast<int>(i % 16);
+    shown.push_back(render::RenderBall::AtRest(id, render::PoolBallColour(id), balls[i]));
+  }
+  return shown;
+}
+
+render::RenderOptions SuiteRenderOptions(const SuiteCloth& cloth, std::uint64_t seed) {
+  render::RenderOptions options;
+  options.cloth = cloth.bed;
+  options.cushion = cloth.cushion;
+  options.exposure_s = 0.0;
+  options.noise_sigma = 2.0;
+  options.seed = seed;
+  return options;
+}
+
+LabelledFrame LabelBalls(const std::string& name, const camera::CameraModel& camera,
+                         bool overhead, const std::vector<Eigen::Vector2d>& balls, double r,
+                         const std::vector<bool>& hidden) {
   LabelledFrame frame;
   frame.file = name + ".png";
-  frame.view = view.overhead ? "overhead" : "oblique";
-  frame.source = "billiard bench-detect --synthetic (sim/render)";
+  frame.view = overhead ? "overhead" : "oblique";
+  frame.source = "billiard bench-detect (sim/render)";
   std::vector<double> radii;
-  for (const auto& b : balls) {
-    const Eigen::Vector3d centre(b.x(), b.y(), r);
-    const Eigen::Vector2d pixel = view.camera.Project(centre);
-    const double depth = (view.camera.rotation * centre + view.camera.translation).z();
-    const bool in_view = pixel.x() >= 0 && pixel.y() >= 0 && pixel.x() < view.camera.width &&
-                         pixel.y() < view.camera.height;
-    (in_view ? frame.balls : frame.ignored).push_back(pixel);
-    radii.push_back(view.camera.fx * r / depth);
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const Eigen::Vector3d centre(balls[i].x(), balls[i].y(), r);
+    const Eigen::Vector2d pixel = camera.Project(centre);
+    const double depth = (camera.rotation * centre + camera.translation).z();
+    const bool in_view = pixel.x() >= 0 && pixel.y() >= 0 && pixel.x() < camera.width &&
+                         pixel.y() < camera.height;
+    const bool ignored = !in_view || (i < hidden.size() && hidden[i]);
+    (ignored ? frame.ignored : frame.balls).push_back(pixel);
+    radii.push_back(camera.fx * r / depth);
   }
   std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
   frame.radius_px = radii[radii.size() / 2];
   return frame;
 }
 
-}  // namespace
-
 std::vector<LabelledFrame> RenderDetectionSuite(const physics::ModelParameters& params,
                                                 std::uint32_t seed) {
-  const double r = params.ball.radius;
-  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(kSuiteTable));
   std::vector<LabelledFrame> frames;
   std::mt19937 rng(seed);
   int scene = 0;
-  for (const Cloth& cloth : kCloths) {
+  for (const SuiteCloth& cloth : SuiteCloths()) {
     for (const View& view : Views(params.table)) {
       for (const bool rack : {false, true}) {
-        std::vector<Eigen::Vector2d> balls;
-        if (rack) {
-          for (const auto& b : table::Rack(table::RackKind::kEightBall, geometry, r, seed + scene)) {
-            balls.push_back(b.state.head<2>());
-          }
-        } else {
-          balls = Scattered(params.table, r, rng);
-        }
-        render::RenderOptions options;
-        options.cloth = cloth.bed;
-        options.cushion = cloth.cushion;
-        options.exposure_s = 0.0;
-        options.noise_sigma = 2.0;
-        options.seed = seed + scene;
-        const render::TableRenderer renderer(view.camera, params, options);
-        std::vector<render::RenderBall> shown;
-        for (std::size_t i = 0; i < balls.size(); ++i) {
-          const int id = static_cast<int>(i % 16);
-          shown.push_back(render::RenderBall::AtRest(id, render::PoolBallColour(id), balls[i]));
-        }
-        LabelledFrame frame =
-            Label(std::string(cloth.name) + "-" + view.name + (rack ? "-rack" : "-scattered"), view,
-                  balls, r);
-        frame.image = renderer.Render(shown, 0.0);
+        const std::vector<Eigen::Vector2d> balls = SceneBalls(params, rack, seed + scene, &rng);
+        const render::TableRenderer renderer(view.camera, params,
+                                             SuiteRenderOptions(cloth, seed + scene));
+        LabelledFrame frame = LabelBalls(
+            std::string(cloth.name) + "-" + view.name + (rack ? "-rack" : "-scattered"),
+            view.camera, view.overhead, balls, params.ball.radius);
+        frame.source = "billiard bench-detect --synthetic (sim/render)";
+        frame.image = renderer.Render(PoolBalls(balls), 0.0);
         frames.push_back(std::move(frame));
         ++scene;
       }
@@ -168,9 +179,11 @@ void WriteLabelledSet(const std::vector<LabelledFrame>& frames, const std::strin
   for (const LabelledFrame& f : frames) {
     const std::string path = directory + "/" + f.file;
     if (!cv::imwrite(path, f.image)) throw std::runtime_error("cannot write '" + path + "'");
-    nlohmann::json balls = nlohmann::json::array();
+    nlohmann::json balls = nlohmann::json::array(), ignored = nlohmann::json::array();
     for (const auto& b : f.balls) balls.push_back({b.x(), b.y()});
+    for (const auto& b : f.ignored) ignored.push_back({b.x(), b.y()});
     labels[f.file] = {{"balls", balls},
+                      {"ignore", ignored},
                       {"ball_radius_px", f.radius_px},
                       {"view", f.view},
                       {"source", f.source}};

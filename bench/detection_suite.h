@@ -17,10 +17,13 @@
 #pragma once
 
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "bench/detection_benchmark.h"
+#include "sim/camera/camera_model.h"
 #include "sim/physics/parameters.h"
+#include "sim/render/table_renderer.h"
 
 namespace billiard::bench {
 
@@ -28,6 +31,30 @@ namespace billiard::bench {
 // the frame).
 std::vector<LabelledFrame> RenderDetectionSuite(const physics::ModelParameters& params,
                                                 std::uint32_t seed = 2026);
+
+// The suite's cloths: the bed's and the cushion's colours (BGR).
+struct SuiteCloth {
+  const char* name;
+  cv::Vec3b bed, cushion;
+};
+const std::vector<SuiteCloth>& SuiteCloths();
+
+// A scene's balls on the table [m]: scattered (16, as above, drawn from `rng`) or the eight-ball
+// rack (drawn from `rack_seed`) with the cue ball at the head string.
+std::vector<Eigen::Vector2d> SceneBalls(const physics::ModelParameters& params, bool rack,
+                                        std::uint32_t rack_seed, std::mt19937* rng);
+
+// The pool set at rest at `balls` (ball i numbered i mod 16).
+std::vector<render::RenderBall> PoolBalls(const std::vector<Eigen::Vector2d>& balls);
+
+// The suite's renderer options on `cloth`: an instant, sensor noise of 2 gray levels from `seed`.
+render::RenderOptions SuiteRenderOptions(const SuiteCloth& cloth, std::uint64_t seed);
+
+// The label of a frame `name`.png: each ball's projected centre, ignored where it projects
+// outside the frame or `hidden` says so; the median of the balls' radii [px].
+LabelledFrame LabelBalls(const std::string& name, const camera::CameraModel& camera,
+                         bool overhead, const std::vector<Eigen::Vector2d>& balls, double r,
+                         const std::vector<bool>& hidden = {});
 
 // Writes the frames as PNG files and their labels.json into `directory` (created if missing):
 // a set `billiard bench-detect --set` reads like a real one.

@@ -8,31 +8,13 @@
 #include <random>
 #include <vector>
 
-#include "estimator/lab_image.h"
+#include "estimator/table_cloth.h"
 #include "estimator/table_edges.h"
 
 namespace billiard::estimator {
 
 namespace {
 
-// The cloth colour's mode: a histogram of L* in bins of kLightnessBin and a*, b* in bins of
-// kChromaBin, each pixel weighted by 1 - d^2 (d: its offset from the image centre over half the
-// image's width and height), so that a cloth filling the middle wins over a floor filling the
-// edges.
-constexpr int kLightnessBins = 10;
-constexpr double kLightnessBin = 10.0;
-constexpr int kChromaBins = 64;
-constexpr double kChromaBin = 4.0;
-// A pixel is cloth when its chromaticity (b, g over b + g + r) is within kChromaSpreads robust
-// spreads of the cloth's (but never less than kMinChromaTolerance: a clean synthetic cloth), its
-// brightness within [kMinBrightness, kMaxBrightness] of the cloth's (shadows, vignetting, a
-// light), and it is not on an edge stronger than kMaxRelativeGradient (Sobel magnitude over
-// brightness): the barrier of the cushion's nose and the rail, which a floor of the cloth's
-// colour beyond them would otherwise join.
-constexpr double kChromaSpreads = 4.0;
-constexpr double kMinChromaTolerance = 0.02;
-constexpr double kMinBrightness = 0.4, kMaxBrightness = 1.7;
-constexpr double kMaxRelativeGradient = 0.8;
 // The cloth must cover this fraction of the frame at least.
 constexpr double kMinClothFraction = 0.04;
 // The outline's sides: the hull is reduced to four vertices with a tolerance growing from
@@ -69,153 +51,15 @@ constexpr double kFocalAgreement = 1.3;
 // light reads L* 76).
 constexpr double kOverheadAspectTolerance = 1.25;
 constexpr double kMaxClothLightness = 85.0, kMinClothChroma = 10.0;
+// A side of the cloth's outline whose both ends are within kFrameEdgePx (search px) of the same
+// edge of the frame is that edge: the table goes on beyond it.
+constexpr double kFrameEdgePx = 2.0;
 
 struct Line {
   Eigen::Vector3d coefficients;  // a x + b y + c = 0, (a, b) unit
   double rms = 0;
   int points = 0;
 };
-
-// The histogram bin of an 8-bit L*a*b* colour (lab_image.h).
-int HistogramBin(const cv::Vec3b& lab) {
-  const int l = std::min(kLightnessBins - 1,
-                         static_cast<int>(lab[0] * LabImage::kLightnessUnit / kLightnessBin));
-  const int a = std::min(kChromaBins - 1, static_cast<int>(lab[1] / kChromaBin));
-  const int b = std::min(kChromaBins - 1, static_cast<int>(lab[2] / kChromaBin));
-  return (l * kChromaBins + a) * kChromaBins + b;
-}
-
-// The cloth's colour (BGR): the mean of the pixels in the mode of the centre-weighted L*a*b*
-// histogram (the bins next to the fullest neighbourhood of bins).
-cv::Vec3f ClothColour(const cv::Mat& small) {
-  const cv::Mat lab = LabImage(small).pixels();
-  std::vector<float> histogram(kLightnessBins * kChromaBins * kChromaBins, 0.0f);
-  const double half_w = 0.5 * small.cols, half_h = 0.5 * small.rows;
-  for (int y = 0; y < lab.rows; ++y) {
-    const auto* row = lab.ptr<cv::Vec3b>(y);
-    const double dy = (y - half_h) / half_h;
-    for (int x = 0; x < lab.cols; ++x) {
-      const double dx = (x - half_w) / half_w;
-      const double weight = 1.0 - (dx * dx + dy * dy);  // 0 from the middle of each edge out
-      if (weight > 0) histogram[HistogramBin(row[x])] += static_cast<float>(weight);
-    }
-  }
-  int best_l = 0, best_a = 0, best_b = 0;
-  float best = -1;
-  for (int l = 0; l < kLightnessBins; ++l) {
-    for (int a = 1; a + 1 < kChromaBins; ++a) {
-      for (int b = 1; b + 1 < kChromaBins; ++b) {
-        float sum = 0;
-        for (int dl = std::max(0, l - 1); dl <= std::min(kLightnessBins - 1, l + 1); ++dl) {
-          for (int da = -1; da <= 1; ++da) {
-            for (int db = -1; db <= 1; ++db) {
-              sum += histogram[(dl * kChromaBins + a + da) * kChromaBins + b + db];
-            }
-          }
-        }
-        if (sum > best) {
-          best = sum;
-          best_l = l;
-          best_a = a;
-          best_b = b;
-        }
-      }
-    }
-  }
-  cv::Vec3d sum(0, 0, 0);
-  double count = 0;
-  for (int y = 0; y < lab.rows; ++y) {
-    const auto* row = lab.ptr<cv::Vec3b>(y);
-    const auto* colour = small.ptr<cv::Vec3b>(y);
-    for (int x = 0; x < lab.cols; ++x) {
-      const int bin = HistogramBin(row[x]);
-      const int l = bin / (kChromaBins * kChromaBins), a = (bin / kChromaBins) % kChromaBins,
-                b = bin % kChromaBins;
-      if (std::abs(l - best_l) <= 1 && std::abs(a - best_a) <= 1 && std::abs(b - best_b) <= 1) {
-        sum += cv::Vec3d(colour[x][0], colour[x][1], colour[x][2]);
-        ++count;
-      }
-    }
-  }
-  return cv::Vec3f(sum / std::max(1.0, count));
-}
-
-// The CIE L*a*b* of a BGR colour (0..255 a channel).
-cv::Vec3f LabOfBgr(const cv::Vec3f& bgr) {
-  const cv::Mat pixel(1, 1, CV_32FC3, cv::Scalar(bgr[0] / 255.0, bgr[1] / 255.0, bgr[2] / 255.0));
-  cv::Mat lab;
-  cv::cvtColor(pixel, lab, cv::COLOR_BGR2Lab);
-  return lab.at<cv::Vec3f>(0, 0);
-}
-
-// Pixels of about the cloth's chromaticity and brightness, off strong edges.
-cv::Mat ClothLike(const cv::Mat& small, const cv::Vec3f& cloth) {
-  const double cloth_sum = cloth[0] + cloth[1] + cloth[2];
-  const double cb = cloth[0] / cloth_sum, cg = cloth[1] / cloth_sum;
-  cv::Mat distance(small.size(), CV_32F), brightness(small.size(), CV_32F);
-  for (int y = 0; y < small.rows; ++y) {
-    const auto* in = small.ptr<cv::Vec3b>(y);
-    auto* d = distance.ptr<float>(y);
-    auto* s = brightness.ptr<float>(y);
-    for (int x = 0; x < small.cols; ++x) {
-      const double sum = in[x][0] + in[x][1] + in[x][2] + 1e-3;
-      d[x] = static_cast<float>(std::hypot(in[x][0] / sum - cb, in[x][1] / sum - cg));
-      s[x] = static_cast<float>(sum / cloth_sum);
-    }
-  }
-  // The spread of the chromaticity among the cloth-like pixels of the frame's middle.
-  std::vector<float> near;
-  for (int y = small.rows / 4; y < 3 * small.rows / 4; ++y) {
-    for (int x = small.cols / 4; x < 3 * small.cols / 4; ++x) {
-      const float d = distance.at<float>(y, x);
-      if (d < 0.05f && std::abs(brightness.at<float>(y, x) - 1.0f) < 0.3f) near.push_back(d);
-    }
-  }
-  double tolerance = kMinChromaTolerance;
-  if (!near.empty()) {
-    std::nth_element(near.begin(), near.begin() + near.size() / 2, near.end());
-    tolerance = std::max(tolerance, kChromaSpreads * near[near.size() / 2]);
-  }
-  cv::Mat grey, gx, gy, magnitude, grey_f;
-  cv::cvtColor(small, grey, cv::COLOR_BGR2GRAY);
-  grey.convertTo(grey_f, CV_32F);
-  cv::Sobel(grey_f, gx, CV_32F, 1, 0);
-  cv::Sobel(grey_f, gy, CV_32F, 0, 1);
-  cv::magnitude(gx, gy, magnitude);
-  const cv::Mat relative = magnitude / (grey_f + 10.0f);
-  cv::Mat cloth_like = (distance < tolerance) & (brightness > kMinBrightness) &
-                       (brightness < kMaxBrightness) & (relative < kMaxRelativeGradient);
-  cv::morphologyEx(cloth_like, cloth_like, cv::MORPH_OPEN,
-                   cv::getStructuringElement(cv::MORPH_ELLIPSE, {3, 3}));
-  return cloth_like;
-}
-
-// The cloth-like region that is largest once weighted by how central it is.
-cv::Mat LargestCentralRegion(const cv::Mat& cloth_like) {
-  cv::Mat labels, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(cloth_like, labels, stats, centroids, 4);
-  int best = 0;
-  double best_score = 0;
-  for (int i = 1; i < n; ++i) {
-    const double dx = centroids.at<double>(i, 0) / cloth_like.cols - 0.5;
-    const double dy = centroids.at<double>(i, 1) / cloth_like.rows - 0.5;
-    const double score =
-        stats.at<int>(i, cv::CC_STAT_AREA) * std::max(0.1, 1.0 - 2.0 * (dx * dx + dy * dy));
-    if (score > best_score) {
-      best_score = score;
-      best = i;
-    }
-  }
-  if (best == 0) return cv::Mat::zeros(cloth_like.size(), CV_8U);
-  return labels == best;
-}
-
-cv::Mat FillHoles(const cv::Mat& region) {
-  cv::Mat padded(region.rows + 2, region.cols + 2, CV_8U, cv::Scalar(0));
-  region.copyTo(padded(cv::Rect(1, 1, region.cols, region.rows)));
-  cv::floodFill(padded, cv::Point(0, 0), 128);
-  return padded(cv::Rect(1, 1, region.cols, region.rows)) != 128;
-}
 
 // The lines through the outline points near the side from `a` to `b`, best supported first: RANSAC
 // (seeded, so that a frame always gives the same table) then least squares over its inliers, then
@@ -459,94 +303,75 @@ std::array<Eigen::Vector3d, 4> CushionNoses(const cv::Mat& bgr,
   return lines;
 }
 
+// The side of the cloth's outline (corners k to k + 1) that runs along an edge of the frame, or -1.
+int SideAlongFrameEdge(const std::array<Eigen::Vector2d, 4>& corners, const cv::Size& size,
+                       double tolerance_px) {
+  const auto on_edge = [&](const Eigen::Vector2d& p, int edge) {
+    const double distance[4] = {p.x(), p.y(), size.width - 1 - p.x(), size.height - 1 - p.y()};
+    return std::abs(distance[edge]) < tolerance_px;
+  };
+  for (int k = 0; k < 4; ++k) {
+    for (int edge = 0; edge < 4; ++edge) {
+      if (on_edge(corners[k], edge) && on_edge(corners[(k + 1) % 4], edge)) return k;
+    }
+  }
+  return -1;
+}
+
+// The corners of the unseen side `k` placed on its neighbouring sides so that the table has its
+// proportions: the sides beside it as long as kTableAspect times, or 1 / kTableAspect of, the side
+// opposite (whichever is the shortest that does not cut them shorter than they are seen). From
+// overhead the image keeps the table's proportions nearly; the corners moved are out of the frame.
+void PlaceUnseenSide(int k, std::array<Eigen::Vector2d, 4>* corners) {
+  auto& c = *corners;
+  const Eigen::Vector2d& a = c[(k + 2) % 4];  // the opposite side, from a to b
+  const Eigen::Vector2d& b = c[(k + 3) % 4];
+  const double opposite = (b - a).norm();
+  const double seen = std::max((c[(k + 1) % 4] - a).norm(), (c[k] - b).norm());
+  double length = HUGE_VAL;
+  for (const double candidate : {kTableAspect * opposite, opposite / kTableAspect}) {
+    if (candidate >= seen) length = std::min(length, candidate);
+  }
+  if (!std::isfinite(length)) return;
+  c[(k + 1) % 4] = a + length * (c[(k + 1) % 4] - a).normalized();
+  c[k] = b + length * (c[k] - b).normalized();
+}
+
+// Whether the cloth's colour is white, not a cloth's (a sheet of paper, a wall).
+bool IsWhite(const cv::Vec3f& cloth_colour) {
+  const cv::Vec3f lab = LabOfBgr(cloth_colour);
+  return lab[0] > kMaxClothLightness && std::hypot(lab[1], lab[2]) < kMinClothChroma;
+}
+
+// The cloth in the reduced frame (its colour and region into `table`): the region of the frame's
+// dominant colour; where that region surrounds the table (SurroundsTheTable: the floor around a
+// table seen from a low camera), the region of the dominant colour of the rest of the frame, if
+// it is a cloth. "" or the reason there is none.
+std::string FindCloth(const cv::Mat& small, TableRegion* table) {
+  table->cloth_colour = DominantClothColour(small);
+  if (IsWhite(table->cloth_colour)) {
+    return "no table: what fills the frame's middle is white, not a cloth";
+  }
+  const double least = kMinClothFraction * static_cast<double>(small.total());
+  const cv::Mat first_like = ClothLike(small, table->cloth_colour);
+  table->cloth = LargestCentralRegion(first_like);
+  if (SurroundsTheTable(table->cloth, kMinClothFraction)) {
+    const cv::Vec3f inner_colour = DominantClothColour(small, first_like);
+    const cv::Mat inner = LargestCentralRegion(ClothLike(small, inner_colour));
+    if (!IsWhite(inner_colour) && cv::countNonZero(inner) >= least &&
+        !SurroundsTheTable(inner, kMinClothFraction)) {
+      table->cloth_colour = inner_colour;
+      table->cloth = inner;
+    }
+  }
+  if (cv::countNonZero(table->cloth) < least) {
+    return "no table: no evenly coloured cloth covers " +
+           std::to_string(static_cast<int>(100 * kMinClothFraction)) + " % of the frame";
+  }
+  return "";
+}
+
 }  // namespace
-
-const char* TableViewName(TableView view) {
-  return view == TableView::kOverhead ? "overhead" : "oblique";
-}
-
-const char* TableOriginName(TableOrigin origin) {
-  switch (origin) {
-    case TableOrigin::kFound:
-      return "found";
-    case TableOrigin::kCalibrated:
-      return "calibration";
-    case TableOrigin::kClothOnly:
-      return "cloth only";
-  }
-  return "found";
-}
-
-namespace {
-
-bool InsideQuadrilateral(const std::array<Eigen::Vector2d, 4>& corners,
-                         const Eigen::Vector2d& pixel, double margin_px) {
-  for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector2d a = corners[i], b = corners[(i + 1) % 4];
-    const Eigen::Vector2d edge = (b - a).normalized();
-    const Eigen::Vector2d inward(-edge.y(), edge.x());
-    const double sign = inward.dot(corners[(i + 2) % 4] - a) > 0 ? 1.0 : -1.0;
-    if (sign * inward.dot(pixel - a) < margin_px) return false;
-  }
-  return true;
-}
-
-}  // namespace
-
-bool TableRegion::Contains(const Eigen::Vector2d& pixel, double margin_px) const {
-  return InsideQuadrilateral(corners, pixel, margin_px);
-}
-
-bool TableRegion::InsideCloth(const Eigen::Vector2d& pixel, double margin_px) const {
-  return InsideQuadrilateral(cloth_corners, pixel, margin_px);
-}
-
-std::array<Eigen::Vector2d, 8> TableRegion::PocketPlaces() const {
-  std::array<Eigen::Vector2d, 8> places;
-  const double a = kTableAspect;
-  const std::array<Eigen::Vector2d, 8> table = {
-      {{0, 0}, {a / 2, 0}, {a, 0}, {a, 0.5}, {a, 1}, {a / 2, 1}, {0, 1}, {0, 0.5}}};
-  for (int i = 0; i < 8; ++i) {
-    places[i] = (image_from_table * table[i].homogeneous()).hnormalized();
-  }
-  return places;
-}
-
-double TableRegion::InverseDepthAt(const Eigen::Vector2d& pixel) const {
-  return inverse_depth.dot(pixel.homogeneous());
-}
-
-Eigen::Vector2d TableRegion::TableAt(const Eigen::Vector2d& pixel) const {
-  return (image_from_table.inverse() * pixel.homogeneous()).hnormalized();
-}
-
-double TableRegion::PixelsPerWidthAt(const Eigen::Vector2d& pixel) const {
-  const Eigen::Vector3d q = TableAt(pixel).homogeneous();
-  const Eigen::Matrix3d& h = image_from_table;
-  const Eigen::Vector3d p = h * q;
-  Eigen::Matrix2d jacobian;
-  for (int j = 0; j < 2; ++j) {
-    jacobian(0, j) = (h(0, j) - p.x() / p.z() * h(2, j)) / p.z();
-    jacobian(1, j) = (h(1, j) - p.y() / p.z() * h(2, j)) / p.z();
-  }
-  return Eigen::JacobiSVD<Eigen::Matrix2d>(jacobian).singularValues()(0);
-}
-
-double TableRegion::TableDistancePx(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
-  return (TableAt(a) - TableAt(b)).norm() * PixelsPerWidthAt(0.5 * (a + b));
-}
-
-Eigen::Vector2d TableRegion::Centre() const {
-  return (image_from_table * Eigen::Vector3d(0.5 * kTableAspect, 0.5, 1.0)).hnormalized();
-}
-
-cv::Rect TableRegion::Bounds() const {
-  std::vector<cv::Point2f> points;
-  for (const auto& c : cloth_corners) {
-    points.emplace_back(static_cast<float>(c.x()), static_cast<float>(c.y()));
-  }
-  return cv::boundingRect(points);
-}
 
 TableSearch FindTable(const cv::Mat& bgr) {
   if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame", std::nullopt};
@@ -557,19 +382,8 @@ TableSearch FindTable(const cv::Mat& bgr) {
   cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
   TableRegion table;
   table.mask_scale = scale;
-  table.cloth_colour = ClothColour(small);
-  const cv::Vec3f cloth_lab = LabOfBgr(table.cloth_colour);
-  if (cloth_lab[0] > kMaxClothLightness && std::hypot(cloth_lab[1], cloth_lab[2]) < kMinClothChroma) {
-    return {std::nullopt, "no table: what fills the frame's middle is white, not a cloth",
-            std::nullopt};
-  }
-  table.cloth = LargestCentralRegion(ClothLike(small, table.cloth_colour));
-  if (cv::countNonZero(table.cloth) < kMinClothFraction * small.total()) {
-    return {std::nullopt, "no table: no evenly coloured cloth covers " +
-                              std::to_string(static_cast<int>(100 * kMinClothFraction)) +
-                              " % of the frame",
-            std::nullopt};
-  }
+  const std::string no_cloth = FindCloth(small, &table);
+  if (!no_cloth.empty()) return {std::nullopt, no_cloth, std::nullopt};
   table.surface = FillHoles(table.cloth);
   // Past here the cloth is found: a frame without its table still has it (TableSearch::cloth).
   const TableRegion cloth = table;
@@ -608,7 +422,7 @@ TableSearch FindTable(const cv::Mat& bgr) {
   if (!Intersections(lines, &table.cloth_corners)) {
     return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet", cloth};
   }
-  const bool long_first = LongSideFirst(table.cloth_corners, bgr.size());
+  bool long_first = LongSideFirst(table.cloth_corners, bgr.size());
   const std::array<Eigen::Vector3d, 4> rough_lines = lines;
   // A stretch of a side's outline other than its best supported is the cloth's side only when the
   // cushion's nose found inside it runs along most of the side too (kOtherStretchNose): the
@@ -648,6 +462,11 @@ TableSearch FindTable(const cv::Mat& bgr) {
   }
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet", cloth};
+  }
+  table.unseen_side = SideAlongFrameEdge(table.cloth_corners, bgr.size(), kFrameEdgePx / scale);
+  if (table.unseen_side >= 0 && DepthRatio(table.corners) <= kOverheadDepthRatio) {
+    PlaceUnseenSide(table.unseen_side, &table.corners);
+    long_first = LongSideFirst(table.corners, bgr.size());
   }
   table.image_from_table = ImageFromTable(table.corners, long_first);
   const Eigen::Vector3d inverse_depth = table.image_from_table.inverse().row(2).transpose();

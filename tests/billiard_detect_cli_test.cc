@@ -266,6 +266,9 @@ TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   // Neither a set nor the synthetic suite, or both: a usage error.
   EXPECT_EQ(Billiard("bench-detect --out " + (out / "x"), true).status, 2);
   EXPECT_EQ(Billiard("bench-detect --set /nonexistent --out " + (out / "x"), true).status, 2);
+  // The hard suite renders its own frames: with a set, a usage error.
+  EXPECT_EQ(Billiard("bench-detect --hard-suite --set " + set + " --out " + (out / "x"), true).status,
+            2);
   EXPECT_EQ(Billiard("bench-detect --set " + set + " --corners /nonexistent --out " + (out / "x"),
                      true)
                 .status,

@@ -32,7 +32,6 @@ constexpr const char* kTopFolders[] = {"sim", "planner", "estimator", "lcmtypes"
 const std::map<std::string, std::string>& LongFiles() {
   static const std::map<std::string, std::string> files = {
       {"sim/table/table_simulation.cc", "the event loop, the held contacts' bookkeeping and each event's application"},
-      {"estimator/table_finder.cc", "the cloth's region, its sides and the cushion noses"},
       {"estimator/ball_detector.cc", "the scale, the outlines' votes and their refinement"},
       {"bench/detection_benchmark.cc", "the matching, the figures per view and the report"},
   };

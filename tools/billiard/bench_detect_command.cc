@@ -9,6 +9,7 @@
 #include "bench/cross_validation_report.h"
 #include "bench/detection_benchmark.h"
 #include "bench/detection_suite.h"
+#include "bench/hard_suite_report.h"
 #include "sim/params/parameter_sets.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/image_files.h"
@@ -20,7 +21,7 @@ namespace {
 struct BenchDetectArgs {
   std::vector<std::string> sets;
   std::string out, corners, params = params::kDefaultParameterSet;
-  bool synthetic = false, no_overlays = false, cross_validate = false;
+  bool synthetic = false, hard_suite = false, no_overlays = false, cross_validate = false;
   std::uint32_t seed = 2026;
 };
 
@@ -65,8 +66,32 @@ void CrossValidate(const BenchDetectArgs& args) {
   std::cout << bench::CrossValidationJson(result).dump() << std::endl;
 }
 
+// --hard-suite: the rendered hard cases with their truth (bench/hard_suite.h).
+void HardSuite(const BenchDetectArgs& args) {
+  if (!args.sets.empty() || args.synthetic || !args.corners.empty()) {
+    throw UsageError("--hard-suite renders its own frames: no --set, --synthetic or --corners");
+  }
+  RequireWritableDirectory(args.out, "--out");
+  const std::string set = args.out + "/hard";
+  Progress("rendering the hard suite into " + set);
+  const std::vector<bench::HardFrame> frames =
+      bench::RenderHardSuite(LoadParametersOption(args.params), args.seed);
+  std::vector<bench::LabelledFrame> labelled;
+  for (const auto& f : frames) labelled.push_back(f.frame);
+  bench::WriteLabelledSet(labelled, set);
+  bench::DetectionBenchmarkOptions options;
+  options.read_image = ReadImage;
+  if (!args.no_overlays) options.overlay_dir = args.out + "/overlays";
+  options.progress = Progress;
+  const bench::HardSuiteResult result = bench::RunHardSuite(frames, options);
+  bench::WriteHardSuiteReport(result, args.out);
+  Progress("wrote " + args.out + "/hard_suite_report.md");
+  std::cout << bench::HardSuiteJson(result).dump() << std::endl;
+}
+
 void Run(const BenchDetectArgs& args) {
   if (args.cross_validate) return CrossValidate(args);
+  if (args.hard_suite) return HardSuite(args);
   if (args.sets.size() > 1) throw UsageError("give one --set DIR (several with --cross-validate)");
   if (args.sets.empty() == !args.synthetic) {
     throw UsageError("give one of --set DIR (a labelled set) and --synthetic (the rendered suite)");
@@ -115,12 +140,16 @@ void AddBenchDetectCommand(CLI::App& app) {
   cmd->add_flag("--synthetic", args->synthetic,
                 "Render the synthetic suite (overhead and oblique cameras, racks, five cloths) "
                 "into OUT/synthetic and run on it instead");
+  cmd->add_flag("--hard-suite", args->hard_suite,
+                "Render the hard suite (an arm, a player, a third out of frame, barrel lens "
+                "k1 = -0.3, elevations 15-45 degrees) into OUT/hard and score each side of the "
+                "table against its truth: OUT/hard_suite_report.md");
   cmd->add_option("--corners", args->corners,
                   "The playing surface's corners of the set's frames (JSON, as "
                   "estimator/testing/real_table_corners.json): whether each table was found");
-  cmd->add_option("--params", args->params, "The balls and table of --synthetic")
+  cmd->add_option("--params", args->params, "The balls and table of --synthetic and --hard-suite")
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of --synthetic")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of --synthetic and --hard-suite")->capture_default_str();
   cmd->add_option("--out", args->out,
                   "Directory for detection_report.md, detection_results.json and overlays/")
       ->required();

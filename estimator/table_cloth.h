@@ -1,0 +1,36 @@
+// The cloth of a table camera's frame (table_finder.h's first step): its colour, the pixels of
+// about that colour, and the region they make. Split from the table finder, which fits the
+// table's sides to the region's outline.
+//
+// The cloth's colour is the mode of the frame's colours in CIE L*a*b*, weighted towards the image
+// centre; its pixels are those of about its chromaticity (b, g over b + g + r: vignetting and
+// mixed lights change the brightness much more than it) and brightness, off strong edges.
+#pragma once
+
+#include <opencv2/core.hpp>
+
+namespace billiard::estimator {
+
+// The cloth's colour (BGR) in a reduced BGR frame: the mean of the pixels in the mode of the
+// centre-weighted L*a*b* histogram, the pixels of `ignored` (8UC1, nonzero; or empty) left out.
+cv::Vec3f DominantClothColour(const cv::Mat& small, const cv::Mat& ignored = cv::Mat());
+
+// The CIE L*a*b* of a BGR colour (0..255 a channel).
+cv::Vec3f LabOfBgr(const cv::Vec3f& bgr);
+
+// Pixels of about the cloth's chromaticity and brightness, off strong edges [255 where cloth].
+cv::Mat ClothLike(const cv::Mat& small, const cv::Vec3f& cloth);
+
+// The cloth-like region that is largest once weighted by how central it is [255 in it].
+cv::Mat LargestCentralRegion(const cv::Mat& cloth_like);
+
+// The region with its holes (balls, chalk, hands on the cloth) filled.
+cv::Mat FillHoles(const cv::Mat& region);
+
+// Whether a region surrounds the table rather than being its cloth (a floor or a wall around a
+// table seen from a low camera): it reaches three or four edges of the frame, and the frame's
+// centre, where a table camera looks, is beside it or in a hole of it at least `least_hole` of the
+// frame large. A cloth holds the centre, or has only its balls for holes there.
+bool SurroundsTheTable(const cv::Mat& region, double least_hole);
+
+}  // namespace billiard::estimator
