@@ -1,5 +1,6 @@
 #include "tools/billiard/train_identity_command.h"
 
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -42,6 +43,10 @@ std::map<estimator::BallSet, std::pair<int, int>> NamedRight(
 void RunTrainIdentity(const TrainIdentityArgs& args) {
   if (args.frames < 1) throw UsageError("--frames: must be at least 1");
   if (args.trees < 1) throw UsageError("--trees: must be at least 1");
+  // Said before the minutes of rendering, not after them.
+  if (!std::ofstream(args.out, std::ios::app)) {
+    throw UsageError("--out: cannot write '" + args.out + "'");
+  }
   bench::IdentityTrainingOptions training;
   training.frames_per_set = args.frames;
   training.seed = args.seed;
