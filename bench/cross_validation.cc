@@ -239,6 +239,7 @@ CrossValidationResult RunCrossValidation(const std::vector<LabelledSet>& sets,
   FittedConstants by_hand;
   by_hand.min_score = estimator::DetectorOptions().min_score;
   by_hand.identity.parameters = estimator::HandSetIdentity();
+  by_hand.identity.parameters.classifier = options.classifier;
   IndexOf(options.min_scores, by_hand.min_score);
   std::vector<LabelledFrame> frames;
   for (const LabelledSet& set : sets) {
@@ -251,11 +252,13 @@ CrossValidationResult RunCrossValidation(const std::vector<LabelledSet>& sets,
   std::vector<int> every(frames.size());
   for (std::size_t i = 0; i < frames.size(); ++i) every[i] = static_cast<int>(i);
   result.fitted_on_all = FitConstants(frames, runs, options.min_scores, every, sources);
+  result.fitted_on_all.identity.parameters.classifier = options.classifier;
   options.progress("fitted on every source: " + Described(result.fitted_on_all));
   for (const Fold& fold : folds) {
     FoldResult r;
     r.fold = fold;
     r.fitted = FitConstants(frames, runs, options.min_scores, fold.training, sources);
+    r.fitted.identity.parameters.classifier = options.classifier;
     r.held_out = ScoreAll(frames, runs, options.min_scores, fold.held_out, r.fitted);
     r.fitted_on_all =
         ScoreAll(frames, runs, options.min_scores, fold.held_out, result.fitted_on_all);

@@ -21,6 +21,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,10 @@ struct CrossValidationOptions {
   // Reads an image file (BGR); throws std::invalid_argument with the reason when it cannot.
   std::function<cv::Mat(const std::string&)> read_image;
   std::function<void(const std::string&)> progress = [](const std::string&) {};
+  // The identity classifier every protocol names the balls with (`--identity model`): fitted on
+  // rendered balls alone, it is the same in every fold, and only the rules' parameters it
+  // replaces are fitted; none, the rules' colours and shares.
+  std::shared_ptr<const estimator::IdentityClassifier> classifier;
 };
 
 // A labelled set: its directory (its frames' files are relative to it) and its frames.

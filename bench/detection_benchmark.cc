@@ -355,6 +355,7 @@ DetectionBenchmarkResult RunDetectionBenchmark(const std::string& set,
         frame.image.empty() ? options.read_image(set + "/" + frame.file) : frame.image;
     estimator::DetectorOptions detector_options;
     detector_options.ball_set = BallSetFor(frame);
+    detector_options.identity.classifier = options.classifier;
     estimator::BallDetector detector(detector_options);
     std::vector<estimator::BallDetection> balls;
     const double first_ms = MillisecondsOf([&] { balls = detector.Detect(image); });

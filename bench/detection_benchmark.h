@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <functional>
+#include <memory>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
@@ -113,6 +114,8 @@ struct DetectionBenchmarkOptions {
   // Where to write an overlay per frame ("" for none).
   std::string overlay_dir;
   std::function<void(const std::string&)> progress = [](const std::string&) {};
+  // The detector's identity classifier (`--identity model`); none, its rules.
+  std::shared_ptr<const estimator::IdentityClassifier> classifier;
 };
 
 struct DetectionBenchmarkResult {

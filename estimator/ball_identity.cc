@@ -7,6 +7,9 @@
 #include <stdexcept>
 
 #include "estimator/assignment.h"
+#include "estimator/ball_pixels.h"
+#include "estimator/ball_features.h"
+#include "estimator/identity_classifier.h"
 
 namespace billiard::estimator {
 
@@ -20,21 +23,17 @@ constexpr double kDiscRadii = 0.75;
 // shade, outside kDiscRadii; a solid shows its colour there too (the cloth beyond the outline's
 // blur is coloured, or dark and saturated in the ball's shadow).
 constexpr double kLimbRadii = 0.9;
-// A pixel is grey when its chroma (sqrt(a*^2 + b*^2)) is below kGreyChroma; grey and at least
-// kWhiteLightness (after the exposure is set, below) it is white, grey and at most
-// kBlackLightness black.
-constexpr double kGreyChroma = 16.0;
-constexpr double kWhiteLightness = 65.0, kBlackLightness = 30.0;
 // The white balance's reference: among the balls whose median L* is at least kBrightBalls of the
 // brightest's, the least coloured, if its median chroma is below kMaxCueChroma; its brighter half
 // is made grey of lightness kCueLightness.
 constexpr double kBrightBalls = 0.8;
 constexpr double kMaxCueChroma = 40.0;
 constexpr double kCueLightness = 90.0;
+// A frame without a cue ball is balanced on its balls' white and grey where it shows at least
+// kMinWhitePixels of them (WhitePixelsMean).
+constexpr std::size_t kMinWhitePixels = 12;
 // A channel at kClippedLevel (of 1) or more is clipped.
 constexpr float kClippedLevel = 250.0f / 255.0f;
-// A pixel is plain (Plain) when its chroma is below kPlainSaturation of its L*.
-constexpr double kPlainSaturation = 0.3;
 // The shares of a ball's disc that make it the cue ball, a black ball or a stripe are parameters
 // (identity_parameters.h); a stripe's plain share is read within kLimbRadii (its white caps, lit or
 // in shade, facing the camera or at the limb).
@@ -55,7 +54,6 @@ constexpr double kUnknownCost = 4.0;
 constexpr double kForbiddenCost = 1e6;
 constexpr double kCostFloor = 0.1;
 
-double Chroma(const cv::Vec3f& lab) { return std::hypot(lab[1], lab[2]); }
 
 // How different a ball's colour is from a reference, hue first: the hue angle's difference
 // (CIE LCh) as an arc at the mean chroma, plus the chroma's and lightness's differences weighted
@@ -85,25 +83,6 @@ cv::Vec3f MedianColour(const std::vector<cv::Vec3f>& lab) {
   return median;
 }
 
-// Calls visit(pixel, distance) for each of a ball's pixels (BGR, 0..1) within `radii` of its
-// fitted radius, with its distance from the centre in pixels.
-template <typename Visit>
-void ForEachPixelWithin(const cv::Mat& bgr, const BallDetection& ball, double radii, Visit visit) {
-  const double reach = radii * ball.radius_px;
-  const int x0 = std::max(0, static_cast<int>(std::floor(ball.pixel.x() - reach)));
-  const int x1 = std::min(bgr.cols - 1, static_cast<int>(std::ceil(ball.pixel.x() + reach)));
-  const int y0 = std::max(0, static_cast<int>(std::floor(ball.pixel.y() - reach)));
-  const int y1 = std::min(bgr.rows - 1, static_cast<int>(std::ceil(ball.pixel.y() + reach)));
-  for (int y = y0; y <= y1; ++y) {
-    const auto* row = bgr.ptr<cv::Vec3b>(y);
-    for (int x = x0; x <= x1; ++x) {
-      const double r = std::hypot(x - ball.pixel.x(), y - ball.pixel.y());
-      if (r > reach) continue;
-      visit(cv::Vec3f(row[x][0] / 255.0f, row[x][1] / 255.0f, row[x][2] / 255.0f), r);
-    }
-  }
-}
-
 // A ball's pixels (BGR, 0..1) from `inner` to `outer` of its fitted radius.
 std::vector<cv::Vec3f> RingPixels(const cv::Mat& bgr, const BallDetection& ball, double inner,
                                   double outer) {
@@ -130,24 +109,39 @@ BallPixels ReadBall(const cv::Mat& bgr, const BallDetection& ball) {
   return pixels;
 }
 
-std::vector<cv::Vec3f> ToLab(const std::vector<cv::Vec3f>& bgr, const cv::Vec3f& gain) {
-  if (bgr.empty()) return {};
-  cv::Mat pixels(static_cast<int>(bgr.size()), 1, CV_32FC3);
-  for (std::size_t i = 0; i < bgr.size(); ++i) {
-    const cv::Vec3f& p = bgr[i];
-    pixels.at<cv::Vec3f>(static_cast<int>(i)) =
-        cv::Vec3f(std::min(1.0f, p[0] * gain[0]), std::min(1.0f, p[1] * gain[1]),
-                  std::min(1.0f, p[2] * gain[2]));
+// A frame without a cue ball still shows white and grey: the caps of its stripes, the circles of
+// its numbers, the highlights of its glossy balls. Their mean colour (BGR) is the light's: the
+// pixels of every ball that are bright (kWhiteLightness) and not clipped, of chroma below
+// kMaxCueChroma (as a tinted light leaves a white), the less saturated half of them; none when
+// fewer than kMinWhitePixels.
+std::optional<cv::Vec3d> WhitePixelsMean(const std::vector<BallPixels>& balls,
+                                         const std::vector<std::vector<cv::Vec3f>>& labs) {
+  std::vector<std::pair<double, cv::Vec3f>> candidates;  // (saturation, BGR)
+  for (std::size_t b = 0; b < balls.size(); ++b) {
+    for (std::size_t i = 0; i < balls[b].disc.size(); ++i) {
+      const cv::Vec3f& p = balls[b].disc[i];
+      const cv::Vec3f& lab = labs[b][i];
+      if (lab[0] < kWhiteLightness || Chroma(lab) > kMaxCueChroma ||
+          std::max({p[0], p[1], p[2]}) >= kClippedLevel) {
+        continue;
+      }
+      candidates.push_back({Chroma(lab) / lab[0], p});
+    }
   }
-  cv::Mat lab;
-  cv::cvtColor(pixels, lab, cv::COLOR_BGR2Lab);
-  return std::vector<cv::Vec3f>(lab.begin<cv::Vec3f>(), lab.end<cv::Vec3f>());
+  if (candidates.size() < 2 * kMinWhitePixels) return std::nullopt;
+  const auto half = candidates.begin() + candidates.size() / 2;
+  std::nth_element(candidates.begin(), half, candidates.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  cv::Vec3d mean(0, 0, 0);
+  for (auto it = candidates.begin(); it != half; ++it) mean += cv::Vec3d(it->second);
+  return mean / static_cast<double>(half - candidates.begin());
 }
 
 // The per-channel gains that make the frame's cue ball grey at kCueLightness, or, without one,
-// that bring its brightest ball pixels there. The cue ball is the least coloured of the bright
-// balls (those whose median L* is within kBrightBalls of the brightest ball's): under a tinted
-// light it takes the light's colour, but less of it than any coloured ball has.
+// its other balls' white and grey (WhitePixelsMean), else that bring its brightest ball pixels
+// there. The cue ball is the least coloured of the bright balls (those whose median L* is within
+// kBrightBalls of the brightest ball's): under a tinted light it takes the light's colour, but
+// less of it than any coloured ball has.
 cv::Vec3f WhiteBalance(const std::vector<BallPixels>& balls) {
   std::vector<std::vector<cv::Vec3f>> labs;
   std::vector<double> lightness, chroma;
@@ -195,22 +189,15 @@ cv::Vec3f WhiteBalance(const std::vector<BallPixels>& balls) {
   const float level = grey.at<cv::Vec3f>(0, 0)[0];
   cv::Vec3f gain;
   for (int c = 0; c < 3; ++c) gain[c] = static_cast<float>(level / std::max(1e-3, mean[c]));
-  if (cue < 0) {
-    // Without a white reference, the brightness only: the colours' balance is the camera's.
-    const float g = (gain[0] + gain[1] + gain[2]) / 3;
-    gain = {g, g, g};
+  if (cue >= 0) return gain;
+  // Without a cue ball, the white and grey the other balls show (a stripe's caps, the numbers'
+  // circles, the highlights, which are the light's colour: Lee 1986), else the brightness only.
+  if (const auto white = WhitePixelsMean(balls, labs)) {
+    for (int c = 0; c < 3; ++c) gain[c] = static_cast<float>(level / std::max(1e-3, (*white)[c]));
+    return gain;
   }
-  return gain;
-}
-
-// Plain: a white surface at any shade, its chroma below kPlainSaturation of its lightness, or
-// black. Shade scales a surface's L*, a* and b* alike (each about the cube root of the light it
-// gets), so their ratio, the saturation (Fairchild 2013), is what shade leaves of a colour: a
-// stripe's white cap turned away from the light is dark grey, not black and not white, and an
-// ivory cap or a cue ball under warm light is pale but far less saturated than any coloured ball.
-bool Plain(const cv::Vec3f& lab) {
-  const double chroma = Chroma(lab);
-  return chroma < kPlainSaturation * lab[0] || (chroma < kGreyChroma && lab[0] <= kBlackLightness);
+  const float g = (gain[0] + gain[1] + gain[2]) / 3;
+  return {g, g, g};
 }
 
 std::ptrdiff_t PlainCount(const std::vector<cv::Vec3f>& lab) {
@@ -325,6 +312,17 @@ double Cost(const BallLook& look, BallClass ball_class, BallSet set, const Ident
   return cost + (distance < HUGE_VAL ? distance / kColourUnit : kNoColourCost);
 }
 
+// The cost of each class of ClassesIn(set) for a ball of this look: the parameters' classifier's
+// where it knows the set, else Cost's; kForbiddenCost each for a ball not in the frame.
+std::vector<double> ClassCosts(const BallLook& look, BallSet set, const IdentityParameters& p) {
+  const std::vector<BallClass> classes = ClassesIn(set);
+  if (!look.seen) return std::vector<double>(classes.size(), kForbiddenCost);
+  if (p.classifier && p.classifier->Knows(set)) return p.classifier->ClassCosts(look.features, set);
+  std::vector<double> costs;
+  for (const BallClass c : classes) costs.push_back(Cost(look, c, set, p));
+  return costs;
+}
+
 double TotalCost(const Eigen::MatrixXd& cost, const std::vector<int>& assigned) {
   double total = 0;
   for (int i = 0; i < cost.rows(); ++i) {
@@ -362,8 +360,9 @@ std::vector<BallLook> LookAtBalls(const cv::Mat& bgr, const std::vector<BallDete
   for (const BallDetection& ball : balls) pixels.push_back(ReadBall(bgr, ball));
   const cv::Vec3f gain = WhiteBalance(pixels);
   std::vector<BallLook> looks;
-  for (const BallPixels& ball : pixels) {
-    looks.push_back(Look(ToLab(ball.disc, gain), ToLab(ball.limb_ring, gain)));
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    looks.push_back(Look(ToLab(pixels[i].disc, gain), ToLab(pixels[i].limb_ring, gain)));
+    looks.back().features = BallFeatures(bgr, balls[i], gain);
   }
   if (set == BallSet::kPool) {
     for (std::size_t i = 0; i < balls.size(); ++i) ReadBandBeyondCap(bgr, balls[i], gain, &looks[i]);
@@ -383,15 +382,11 @@ std::vector<BallIdentity> NameBalls(const std::vector<BallLook>& looks,
   const int n = static_cast<int>(balls.size());
   const int known = static_cast<int>(slots.size());
   Eigen::MatrixXd cost(n, known + n);
-  Eigen::MatrixXd class_cost(n, classes.size());
   for (int i = 0; i < n; ++i) {
-    for (std::size_t c = 0; c < classes.size(); ++c) {
-      class_cost(i, c) =
-          looks[i].seen ? Cost(looks[i], classes[c].first, set, parameters) : kForbiddenCost;
-    }
+    const std::vector<double> class_cost = ClassCosts(looks[i], set, parameters);
     int slot = 0;
     for (std::size_t c = 0; c < classes.size(); ++c) {
-      for (int k = 0; k < classes[c].second; ++k) cost(i, slot++) = class_cost(i, c);
+      for (int k = 0; k < classes[c].second; ++k) cost(i, slot++) = class_cost[c];
     }
     const double unknown = UnknownCost(balls[i]);
     for (int j = 0; j < n; ++j) cost(i, known + j) = looks[i].seen ? unknown : 0.0;

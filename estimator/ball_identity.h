@@ -61,6 +61,8 @@ struct BallLook {
   // A pool ball's: the median colour of the ring just outside its outline, the cloth left out,
   // where enough of it is coloured (a stripe seen cap on shows its band there).
   std::optional<cv::Vec3f> band_colour;
+  // The descriptor a learnt classifier reads (ball_features.h), under the same white balance.
+  std::vector<float> features;
 };
 
 // What each ball of a BGR frame shows, in the order of `balls`; the ring beyond the outline is
@@ -73,7 +75,8 @@ std::vector<BallLook> LookAtBalls(const cv::Mat& bgr, const std::vector<BallDete
 std::optional<cv::Vec3f> JudgedColour(const BallLook& look, const IdentityParameters& parameters);
 
 // The identity of each ball from its look (`looks` parallel to `balls`, whose scores say how much
-// leaving each unnamed costs), all at once with the rack's count of each class.
+// leaving each unnamed costs), all at once with the rack's count of each class; each class's cost
+// the parameters' classifier's where it knows the set, else the rules'.
 std::vector<BallIdentity> NameBalls(const std::vector<BallLook>& looks,
                                     const std::vector<BallDetection>& balls, BallSet set,
                                     const IdentityParameters& parameters);

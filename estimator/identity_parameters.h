@@ -7,12 +7,15 @@
 // not fitted on (issue 45).
 #pragma once
 
+#include <memory>
 #include <opencv2/core.hpp>
 #include <vector>
 
 #include "estimator/ball_class.h"
 
 namespace billiard::estimator {
+
+class IdentityClassifier;  // identity_classifier.h
 
 // A colour a class of ball may have: its CIE L*a*b* under white light (after a frame's white
 // balance), in the colour table of `table`: kPool (the solids 1-7, whose stripes 9-15 share their
@@ -42,6 +45,9 @@ struct IdentityParameters {
   double cue_white = 0.6, cue_colour = 0.2;
   double black_share = 0.5;
   double stripe_plain = 0.3;
+  // A learnt classifier (identity_classifier.h): where it knows the ball set, its costs replace
+  // the shares' and colours' above (`--identity model`); none, the rules decide (`rules`).
+  std::shared_ptr<const IdentityClassifier> classifier;
 };
 
 // The parameters set by hand: the colours of Aramith's pool and snooker sets and of carom balls

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "estimator/ball_model.h"
+#include "estimator/identity_classifier.h"
 #include "estimator/node/estimator_node.h"
 #include "lcmtypes/node/node_loop.h"
 #include "sim/camera/camera_model.h"
@@ -24,6 +25,10 @@ void AddEstimatorNodeOptions(CLI::App& app, EstimatorNodeCommandLine* line) {
   app.add_option("--ball-model", line->ball_model,
                  "The rig's look of its balls (billiard learn-balls): names the balls by it "
                  "instead of the hand-set colours");
+  app.add_option("--identity", line->identity,
+                 "rules | model: name the balls by the colours and shares, or by the classifier "
+                 "fitted on rendered balls (billiard train-identity)")
+      ->capture_default_str();
   app.add_option("--width", line->width, "Image width without --camera [px]")
       ->capture_default_str();
   app.add_option("--height", line->height, "Image height without --camera [px]")
@@ -68,6 +73,12 @@ int RunEstimatorNodeCommand(const EstimatorNodeCommandLine& line) {
                  ? camera::CameraModel::Overhead(params.table, line.width, line.height)
                  : camera::LoadCameraModel(line.camera);
     options = WithBallModel(line.ball_model, params);
+    if (line.identity != "rules" && line.identity != "model") {
+      throw std::invalid_argument("--identity: '" + line.identity + "' is none of rules, model");
+    }
+    if (line.identity == "model") {
+      options.detector.identity.classifier = estimator::BuiltinIdentityClassifier();
+    }
     // A camera file is the rig's calibration: its table is used, never looked for.
     options.table_from_camera = !line.camera.empty();
   } catch (const std::invalid_argument& e) {
@@ -79,7 +90,7 @@ int RunEstimatorNodeCommand(const EstimatorNodeCommandLine& line) {
     std::cerr << "estimator_node: " << params::ParameterSetLabel(params) << " parameters, "
               << camera.width << "x" << camera.height << " camera, "
               << (line.ball_model.empty() ? "hand-set" : "'" + line.ball_model + "'")
-              << " ball colours, LCM "
+              << " ball colours, identity by " << line.identity << ", LCM "
               << nodes::DescribeUrl(line.lcm_url) << std::endl;
     return [node] { return node->Work(); };
   });

@@ -14,6 +14,7 @@ struct EstimatorNodeCommandLine {
   std::string params = params::kDefaultParameterSet;
   std::string camera;  // a camera model JSON file (billiard calibrate); empty: the overhead one
   std::string ball_model;  // the rig's look of its balls (billiard learn-balls); empty: hand-set
+  std::string identity = "rules";  // "model": the built-in classifier (identity_classifier.h)
   int width = 1280, height = 720;  // of the overhead camera's frames [px]
 };
 

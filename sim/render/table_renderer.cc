@@ -83,6 +83,7 @@ struct TableRenderer::Region {
   double pixel_angle = 0;               // between neighbouring pixels' rays near the balls [rad]
   std::vector<Eigen::Vector3f> albedo;  // per ball
   std::vector<bool> striped;            // per ball
+  std::vector<Eigen::Vector3d> axis, spot;  // per ball (RenderBall's)
   std::vector<Sample> samples;          // subframe-major: samples[s * balls + k]
   int balls() const { return static_cast<int>(albedo.size()); }
 };
@@ -278,6 +279,8 @@ void TableRenderer::Render(const std::vector<RenderBall>& balls, double t, cv::M
     for (const Placed* p : groups[g]) {
       region.albedo.push_back(ToVector(balls[p->ball].colour));
       region.striped.push_back(balls[p->ball].striped);
+      region.axis.push_back(balls[p->ball].axis);
+      region.spot.push_back(balls[p->ball].spot);
       if (p->moves) region.subframes = n;
     }
     for (int s = 0; s < region.subframes; ++s) {
@@ -320,6 +323,19 @@ TableRenderer::CushionCover TableRenderer::CoverAt(const Eigen::Vector3d& d,
   return {distance, share};
 }
 
+// The colour of ball `k`'s surface where its normal is `normal`: a number's circle and figure
+// around either end of its spot, a stripe's ivory cap beyond its band, else its colour.
+const Eigen::Vector3f& TableRenderer::SurfaceColour(const Region& region, int k,
+                                                    const Eigen::Vector3d& normal,
+                                                    const Eigen::Vector3f& ivory,
+                                                    const Eigen::Vector3f& figure) {
+  const double to_spot = std::abs(normal.dot(region.spot[k]));
+  if (to_spot > std::cos(kFigureRadius)) return figure;
+  if (to_spot > std::cos(kSpotRadius)) return ivory;
+  const bool cap = region.striped[k] && std::abs(normal.dot(region.axis[k])) > kStripeHalfWidth;
+  return cap ? ivory : region.albedo[k];
+}
+
 void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
   const double r = radius_, r2 = r * r;
   const double shadow_reach2 = kShadowReach * kShadowReach * r2;
@@ -330,6 +346,7 @@ void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
   const double highlight_from =
       std::pow(0.5 / (255.0 * std::max(options_.specular, 1e-12)), 1.0 / options_.shininess);
   const Eigen::Vector3f stripe_cap = ToVector(PoolBallColour(0));  // ivory, as the cue ball
+  const Eigen::Vector3f figure = ToVector(PoolBallColour(8));      // a number's black
   const Eigen::Vector3f light_gain = LightGain(options_);
   std::vector<Hit> hits;
   hits.reserve(k_balls);
@@ -390,8 +407,9 @@ void TableRenderer::RenderRegion(const Region& region, cv::Mat* frame) const {
                                       ? static_cast<float>(255.0 * options_.specular *
                                                            std::pow(half, options_.shininess))
                                       : 0.0f;
-          const bool cap = region.striped[hit.ball] && std::abs(normal.y()) > kStripeHalfWidth;
-          const Eigen::Vector3f ball = ((cap ? stripe_cap : region.albedo[hit.ball]) * lambert +
+          const Eigen::Vector3f& albedo =
+              SurfaceColour(region, hit.ball, normal, stripe_cap, figure);
+          const Eigen::Vector3f ball = (albedo * lambert +
                                         Eigen::Vector3f::Constant(highlight))
                                            .cwiseProduct(light_gain) *
                                        vignette;

@@ -91,9 +91,15 @@ struct RenderBall {
   cv::Vec3b colour;
   std::function<Eigen::Vector2d(double t)> position;
   // A stripe (pool's 9-15): `colour` on a band around the ball, ivory caps either side of it
-  // (where the surface's normal is more than kStripeHalfWidth along the table's y axis). The
-  // renderer has no ball orientation: the band lies along x whatever the ball does.
+  // (where the surface's normal is more than kStripeHalfWidth along `axis`). The orientation is
+  // fixed as the ball moves (the renderer does not roll it): by default the band lies along x.
   bool striped = false;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitY();  // unit, table frame
+  // A pool ball's number: an ivory circle kSpotRadius (an angle at the ball's centre) around
+  // both ends of `spot` (unit, table frame; on a stripe it should lie on the band), its figure a
+  // dark disc kFigureRadius across in its middle (a figure's strokes cover about a quarter of its
+  // circle). None when zero, as the cue ball.
+  Eigen::Vector3d spot = Eigen::Vector3d::Zero();
 
   static RenderBall AtRest(int id, const cv::Vec3b& colour, const Eigen::Vector2d& xy);
   // Follows a simulated trajectory (held alive by the ball).
@@ -111,6 +117,9 @@ inline bool PoolBallStriped(int id) { return id >= 9 && id <= 15; }
 // middle three quarters of the disc, which the estimator reads a ball's colours from
 // (estimator/ball_identity.cc), where 60 degrees would leave 22 %, too little to tell a stripe.
 inline constexpr double kStripeHalfWidth = 0.3;
+// A number's circle, about 17 mm across on a 57 mm ball (asin(8.5 / 28.6)), and its figure.
+inline constexpr double kSpotRadius = 0.30;
+inline constexpr double kFigureRadius = 0.15;
 
 class TableRenderer {
  public:
@@ -133,6 +142,10 @@ class TableRenderer {
  private:
   struct Region;
   void RenderRegion(const Region& region, cv::Mat* frame) const;
+  static const Eigen::Vector3f& SurfaceColour(const Region& region, int k,
+                                              const Eigen::Vector3d& normal,
+                                              const Eigen::Vector3f& ivory,
+                                              const Eigen::Vector3f& figure);
   // What the cushions and the rail hide along a ray `d`: what lies beyond `distance` along it
   // (where the ray comes down to the cushions' height), `share` of it (0 where the ray comes down
   // onto the playing surface, 1 onto a cushion, a pixel's ramp between). A camera beyond the rail

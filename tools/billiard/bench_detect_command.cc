@@ -11,6 +11,7 @@
 #include "bench/detection_suite.h"
 #include "bench/hard_suite_report.h"
 #include "sim/params/parameter_sets.h"
+#include "tools/billiard/detect_options.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/image_files.h"
 
@@ -21,6 +22,7 @@ namespace {
 struct BenchDetectArgs {
   std::vector<std::string> sets;
   std::string out, corners, params = params::kDefaultParameterSet;
+  std::string identity = "rules", identity_model;
   bool synthetic = false, hard_suite = false, no_overlays = false, cross_validate = false;
   std::uint32_t seed = 2026;
 };
@@ -59,6 +61,7 @@ void CrossValidate(const BenchDetectArgs& args) {
   bench::CrossValidationOptions options;
   options.read_image = ReadImage;
   options.progress = Progress;
+  options.classifier = IdentityOption(args.identity, args.identity_model);
   const bench::CrossValidationResult result = bench::RunCrossValidation(sets, options);
   bench::WriteCrossValidationReport(result, args.out);
   Progress("wrote " + args.out + "/cross_validation_report.md (" + std::to_string(result.wall_s) +
@@ -115,6 +118,7 @@ void Run(const BenchDetectArgs& args) {
   }
   bench::DetectionBenchmarkOptions options;
   options.read_image = ReadImage;
+  options.classifier = IdentityOption(args.identity, args.identity_model);
   if (!args.no_overlays) options.overlay_dir = args.out + "/overlays";
   options.progress = Progress;
   const bench::DetectionBenchmarkResult result = bench::RunDetectionBenchmark(set, frames, options);
@@ -154,6 +158,7 @@ void AddBenchDetectCommand(CLI::App& app) {
                   "Directory for detection_report.md, detection_results.json and overlays/")
       ->required();
   cmd->add_flag("--no-overlays", args->no_overlays, "Do not draw an overlay per frame");
+  AddIdentityOptions(cmd, &args->identity, &args->identity_model);
   cmd->callback([args] { Run(*args); });
 }
 

@@ -62,6 +62,7 @@ void WarnIfTheBallRadiusDisagrees(double predicted_px, const cv::Mat& image) {
 
 struct DetectArgs {
   std::string image, calib, params = params::kDefaultParameterSet, overlay, ball_set, ball_model;
+  std::string identity = "rules", identity_model;
   std::string scene_out;
   std::string table = "pool-9ft";
   double ball_radius_px = 0;
@@ -152,6 +153,7 @@ estimator::DetectorOptions OptionsFor(const DetectArgs& args, const physics::Mod
   estimator::DetectorOptions options;
   options.ball_set = BallSetOption(args.ball_set, params);
   if (!args.ball_model.empty()) UseBallModel(args.ball_model, args.ball_set, &options);
+  options.identity.classifier = IdentityOption(args.identity, args.identity_model);
   options.ball_radius_px = args.ball_radius_px;
   if (!camera) return options;
   RequireCalibrationOfThisSize(*camera, image, args.calib);
@@ -261,6 +263,7 @@ void AddDetectCommand(CLI::App& app) {
   cmd->add_option("--ball-model", args->ball_model,
                   "This rig's look of its balls (billiard learn-balls): names the balls by it "
                   "instead of the hand-set colours; its ball set unless --ball-set");
+  AddIdentityOptions(cmd, &args->identity, &args->identity_model);
   cmd->add_option("--overlay", args->overlay,
                   "Also write the frame with the table and the detections drawn on it (PNG or "
                   "JPEG)");

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "estimator/ball_model.h"
+#include "estimator/identity_classifier.h"
 #include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
@@ -57,6 +58,34 @@ void UseBallModel(const std::string& path, const std::string& ball_set_option,
   }
   options->ball_set = model.set;
   options->identity = model.identity;
+}
+
+std::shared_ptr<const estimator::IdentityClassifier> IdentityOption(const std::string& mode,
+                                                                    const std::string& model_path) {
+  if (mode == "rules") {
+    if (!model_path.empty()) throw UsageError("--identity-model needs --identity model");
+    return nullptr;
+  }
+  if (mode != "model") {
+    throw UsageError("--identity: '" + mode + "' is none of " + kIdentityModes);
+  }
+  if (model_path.empty()) return estimator::BuiltinIdentityClassifier();
+  try {
+    return std::make_shared<const estimator::IdentityClassifier>(
+        estimator::IdentityClassifier::Load(model_path));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--identity-model: ") + e.what());
+  }
+}
+
+void AddIdentityOptions(CLI::App* command, std::string* mode, std::string* model_path) {
+  command
+      ->add_option("--identity", *mode,
+                   "rules | model: name the balls by the hand-set colours and shares, or by the "
+                   "classifier fitted on rendered balls (billiard train-identity)")
+      ->capture_default_str();
+  command->add_option("--identity-model", *model_path,
+                      "The classifier's file for --identity model (default: the built-in one)");
 }
 
 }  // namespace billiard::cli

@@ -3,7 +3,9 @@
 // balls the frame holds (--ball-set) and how they look (--ball-model, estimator/ball_model.h).
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <opencv2/core.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -36,5 +38,15 @@ estimator::BallSet BallSetOption(const std::string& name, const physics::ModelPa
 // model, or a --ball-set (`ball_set_option`, empty when not given) that names another set.
 void UseBallModel(const std::string& path, const std::string& ball_set_option,
                   estimator::DetectorOptions* options);
+
+// The classifier of an --identity option (`mode`): none for "rules" (the colours and shares
+// decide), for "model" the file of --identity-model (`model_path`) or, where it is empty, the
+// built-in one (estimator/identity_classifier.h). UsageError for another mode, or a file that is
+// not a model.
+inline constexpr const char* kIdentityModes = "rules, model";
+std::shared_ptr<const estimator::IdentityClassifier> IdentityOption(const std::string& mode,
+                                                                    const std::string& model_path);
+// Adds --identity and --identity-model to `command`, read into `mode` and `model_path`.
+void AddIdentityOptions(CLI::App* command, std::string* mode, std::string* model_path);
 
 }  // namespace billiard::cli

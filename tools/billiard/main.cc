@@ -35,6 +35,7 @@
 #include "tools/billiard/simulate_command.h"
 #include "tools/billiard/render_break_command.h"
 #include "tools/billiard/tracks_command.h"
+#include "tools/billiard/train_identity_command.h"
 
 namespace {
 
@@ -98,6 +99,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddDetectCommand(app);
   billiard::cli::AddCalibrateCommand(app);
   billiard::cli::AddLearnBallsCommand(app);
+  billiard::cli::AddTrainIdentityCommand(app);
   billiard::cli::AddBenchDetectCommand(app);
   billiard::cli::AddRackCommand(app);
   billiard::cli::AddBenchScenesCommand(app);
