@@ -28,6 +28,18 @@ int NumberInSet(int id) { return (id - 1) % 15 + 1; }
 
 }  // namespace
 
+BallLook SnookerLookOf(SnookerBall ball) {
+  // Red, yellow, green, brown, blue, pink, black: the colours' order in SnookerBall.
+  static const std::array<Rgb, 7> kColours = {{{0.85, 0.00, 0.00},
+                                               {1.00, 0.85, 0.10},
+                                               {0.00, 0.55, 0.25},
+                                               {0.45, 0.25, 0.08},
+                                               {0.05, 0.30, 0.85},
+                                               {1.00, 0.55, 0.70},
+                                               {0.05, 0.05, 0.05}}};
+  return {kColours[static_cast<std::size_t>(ball)], std::nullopt};
+}
+
 BallLook LookOf(int id) {
   if (id <= 0) return {kWhite, std::nullopt};
   const int number = NumberInSet(id);

@@ -42,5 +42,19 @@ TEST(BallLook, TheSetRepeatsPastFifteen) {
   EXPECT_EQ(*LookOf(24).band, *LookOf(9).band);
 }
 
+// Snooker's seven colours are plain balls, each its own colour, none the cue ball's white.
+TEST(BallLook, SnookerBallsArePlainAndApart) {
+  const SnookerBall all[] = {SnookerBall::kRed,  SnookerBall::kYellow, SnookerBall::kGreen,
+                             SnookerBall::kBrown, SnookerBall::kBlue, SnookerBall::kPink,
+                             SnookerBall::kBlack};
+  for (SnookerBall a : all) {
+    EXPECT_FALSE(SnookerLookOf(a).band);
+    EXPECT_FALSE(SnookerLookOf(a).body == kWhite);
+    for (SnookerBall b : all) {
+      if (a != b) EXPECT_FALSE(SnookerLookOf(a).body == SnookerLookOf(b).body);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace billiard::plot

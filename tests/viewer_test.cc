@@ -7,19 +7,29 @@
 // table's geometry has them, in the page's documented frame (tools/viewer_node/viewer_node.h);
 // the chosen stroke's pot chance on the status line. The screenshot's pixels: the cloth, and the
 // 9 a stripe (yellow band, white cap) beside a solid. Hostile requests get an error status and
-// nothing else. The screenshot is the README's (docs/pictures/viewer.png).
+// nothing else. The screenshot is the README's (docs/pictures/viewer.png). A snooker table's
+// balls, in their colours, in a page the viewer serves.
 #include <cairo.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "lcmtypes/billiard/ball_state_t.hpp"
+#include "lcmtypes/names.h"
+#include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 #include "tests/support/run_command.h"
+#include "tools/viewer_node/viewer_node.h"
 
 namespace {
 
@@ -83,6 +93,15 @@ bool Near(unsigned rgb, unsigned want, int tolerance) {
     }
   }
   return true;
+}
+
+// What the page says it drew (<script id="drawn">), null when the page has no record.
+nlohmann::json Drawn(const std::string& dom) {
+  std::smatch m;
+  if (!std::regex_search(dom, m, std::regex("<script type=\"application/json\" id=\"drawn\">([^<]*)</script>"))) {
+    return nullptr;
+  }
+  return nlohmann::json::parse(m[1].str());
 }
 
 nlohmann::json DrawnBall(const nlohmann::json& balls, int number) {
@@ -171,16 +190,87 @@ TEST(Viewer, ChromiumDrawsTheNumberedBallsPocketsStrokeAndPaths) {
                                                std::string(BIN_DIR));
   ASSERT_EQ(r.status, 0) << r.out;
   const std::string dom = Slurp(dir + "/dom.html");
-  std::smatch m;
-  ASSERT_TRUE(std::regex_search(
-      dom, m, std::regex("<script type=\"application/json\" id=\"drawn\">([^<]*)</script>")))
-      << dom;
-  const nlohmann::json drawn = nlohmann::json::parse(m[1].str());
+  const nlohmann::json drawn = Drawn(dom);
+  ASSERT_FALSE(drawn.is_null()) << dom;
   const nlohmann::json summary = nlohmann::json::parse(Slurp(dir + "/summary.json"));
   ExpectTheBallsLeft(drawn, summary);
   ExpectPocketsStrokeAndPaths(drawn, dom, summary);
   ExpectClothAndStripes(drawn, dir + "/viewer.png");
   ExpectErrorsForHostileRequests(dir);
+}
+
+// Snooker in its colours: a table state of snooker's classes (the estimator's) drawn by the page
+// PageHtml serves, in headless Chromium. Each ball's pixel, beside its middle and at it, is
+// nearest to its colour's CSS named colour of the eight a snooker set has (the truth: the names
+// the World Snooker rules give the balls), so the colours are told apart, none is the grey of a
+// ball not told, and no number is drawn on them.
+const char* NearestNamedColour(unsigned rgb) {
+  static const std::pair<const char*, unsigned> kNamed[] = {
+      {"white", 0xffffff}, {"red", 0xff0000},  {"yellow", 0xffff00}, {"green", 0x008000},
+      {"brown", 0xa52a2a}, {"blue", 0x0000ff}, {"pink", 0xffc0cb},   {"black", 0x000000},
+      {"grey", 0x9a9a9a}};
+  const auto distance = [rgb](unsigned c) {
+    double sum = 0;
+    for (int shift : {0, 8, 16}) sum += std::pow(double((rgb >> shift) & 0xff) - double((c >> shift) & 0xff), 2);
+    return sum;
+  };
+  const auto* best = std::min_element(std::begin(kNamed), std::end(kNamed), [&](const auto& a, const auto& b) {
+    return distance(a.second) < distance(b.second);
+  });
+  return best->first;
+}
+
+TEST(Viewer, ChromiumDrawsSnookerInItsColours) {
+  using billiard::ball_state_t;
+  if (std::system("command -v chromium >/dev/null 2>&1") != 0) GTEST_SKIP() << "no chromium";
+  lcm::LCM lcm("memq://");
+  const auto table = billiard::table::BuildTable(billiard::params::LoadTableSpec("snooker-12ft"));
+  billiard::viewer::ViewState view(lcm, billiard::params::LoadParameters("snooker"), table);
+  // The cue ball, two reds and the six colours, in a row across the table.
+  const std::vector<std::pair<int, std::string>> balls = {
+      {ball_state_t::CLASS_CUE, "white"},   {ball_state_t::CLASS_RED, "red"},
+      {ball_state_t::CLASS_RED, "red"},     {ball_state_t::CLASS_YELLOW, "yellow"},
+      {ball_state_t::CLASS_GREEN, "green"}, {ball_state_t::CLASS_BROWN, "brown"},
+      {ball_state_t::CLASS_BLUE, "blue"},   {ball_state_t::CLASS_PINK, "pink"},
+      {ball_state_t::CLASS_BLACK, "black"}};
+  billiard::table_state_t state{};
+  state.utime = 1'000'000;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    ball_state_t b{};
+    b.utime = state.utime;
+    b.ball_id = static_cast<int>(i);
+    b.ball_class = static_cast<int8_t>(balls[i].first);
+    b.class_confidence = 1.0f;
+    b.position[0] = 0.4 + 0.35 * static_cast<double>(i);
+    b.position[1] = 0.9;
+    state.balls.push_back(b);
+  }
+  state.num_balls = static_cast<int>(state.balls.size());
+  lcm.publish(billiard::messages::kTableStateChannel, &state);
+  while (lcm.handleTimeout(0) > 0) {
+  }
+  const std::string dir = ::testing::TempDir() + "/viewer_snooker";
+  ASSERT_EQ(std::system(("mkdir -p " + dir).c_str()), 0);
+  std::ofstream(dir + "/page.html") << billiard::viewer::PageHtml(view.Json());
+  const std::string browser = "chromium --headless --no-sandbox --disable-gpu --force-device-scale-factor=1 ";
+  const auto r = billiard::testing::RunCommand(
+      browser + "--dump-dom file://" + dir + "/page.html > " + dir + "/dom.html 2>/dev/null && " +
+      browser + "--hide-scrollbars --window-size=1600,900 --screenshot=" + dir + "/snooker.png file://" +
+      dir + "/page.html >/dev/null 2>&1");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::string dom = Slurp(dir + "/dom.html");
+  const nlohmann::json drawn = Drawn(dom);
+  ASSERT_FALSE(drawn.is_null()) << dom;
+  ASSERT_EQ(drawn["estimate"].size(), balls.size()) << drawn;
+  const Screenshot shot(dir + "/snooker.png");
+  ASSERT_TRUE(shot.Ok());
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const nlohmann::json& b = drawn["estimate"][i];
+    EXPECT_EQ(b["id"], static_cast<int>(i));
+    const double u = b["u"], v = b["v"];  // a snooker ball's radius is 10.5 px
+    EXPECT_STREQ(NearestNamedColour(shot.At(u + 6, v)), balls[i].second.c_str()) << i;
+    EXPECT_STREQ(NearestNamedColour(shot.At(u, v)), balls[i].second.c_str()) << i << ": a label";
+  }
 }
 
 }  // namespace

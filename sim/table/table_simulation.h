@@ -34,6 +34,7 @@
 #include "sim/table/ball_motion.h"
 #include "sim/table/cushion_impact.h"
 #include "sim/table/scene.h"
+#include "sim/table/scene_validation.h"
 #include "sim/table/table_geometry.h"
 
 namespace billiard::table {
@@ -117,6 +118,9 @@ class TableSimulation {
     bool resume = false;
   };
 
+  // A 5-DOF motion, or a held one, runs until the ball rests or this long, then starts again.
+  static constexpr double kFiveDofHorizon = 60.0;  // [s]
+
   const MotionSegment& Current(std::size_t i) const { return balls_[i].segments.back(); }
   bool Active(std::size_t i) const { return !balls_[i].pocket; }
   std::size_t PairIndex(std::size_t i, std::size_t j) const;
@@ -159,19 +163,5 @@ class TableSimulation {
 std::optional<physics::SimulationOptions> FiveDofWhereNeeded(
     const physics::BallState& state, const physics::ModelParameters& params,
     const physics::SimulationOptions& options);
-
-// Refuses, with a one-line reason naming the ball, a scene with a non-finite number, an id below
-// 0 or repeated, a ball off the playing surface (TableGeometry::OnSurface) or two balls
-// overlapping by more than a nanometre.
-void ValidateScene(const TableGeometry& table, double radius, const std::vector<SceneBall>& balls);
-
-// A scene as a camera sees it, made one ValidateScene accepts: balls that overlap each other by
-// at most `max_overlap` [m] (touching balls, measured a fraction of a millimetre apart) are
-// pushed apart along their line of centres, each by half, and a ball at most `max_overlap` into
-// a cushion or over a pocket's mouth is moved toward the middle of the table until it is on the
-// surface; velocities and spins are kept. Throws std::invalid_argument, as ValidateScene does,
-// for a scene that needs more than that.
-std::vector<SceneBall> SettledScene(const TableGeometry& table, double radius,
-                                    std::vector<SceneBall> balls, double max_overlap);
 
 }  // namespace billiard::table

@@ -259,15 +259,18 @@ nlohmann::json GameJson(const game::GameRecord& game) {
 
 namespace {
 
-// A shot as a player reads it: the call (the break; or why nothing was called, and that the
-// fallback was played), then the balls that dropped by number, "none" when none did (a count
-// of 0 reads as the cue ball).
+// A shot as a player reads it: the call (the break; a safety and why; or why nothing was
+// called, and that the fallback was played), then the balls that dropped by number, "none" when
+// none did (a count of 0 reads as the cue ball).
 void PrintShot(const game::ShotRecord& r) {
   std::cerr << "shot " << r.number << " (visit " << r.visit << "): ";
   if (r.break_shot) {
     std::cerr << "break";
   } else if (r.ball >= 0) {
     std::cerr << "ball " << r.ball << " in " << r.pocket << " (" << r.kind << ", p " << r.predicted << ")";
+  } else if (r.safety) {
+    // No pot planned (no_plan) or one judged worse: the reason weighs the safety against it.
+    std::cerr << "safety" << (r.status == "ok" ? "" : " (" + r.status + ")") << ": " << r.reason;
   } else {
     std::cerr << r.status << (r.reason.empty() ? "" : " (" + r.reason + ")")
               << ": the fallback, the first legal ball hit full";

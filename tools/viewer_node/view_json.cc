@@ -2,6 +2,8 @@
 // geometry, a cue command's stroke in a player's units.
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "lcmtypes/billiard/ball_state_t.hpp"
 #include "lcmtypes/billiard/shot_request_t.hpp"
@@ -31,10 +33,17 @@ nlohmann::json Point(const Eigen::Vector2d& p) { return {p.x(), p.y()}; }
 
 double Shown(double value, double tiny) { return std::abs(value) < tiny ? 0.0 : value; }
 
-// The number of the ball the message calls `id`, -1 when no estimate named it.
-int NumberOf(int id, const std::map<int, int>& number_of) {
-  const auto it = number_of.find(id);
-  return it == number_of.end() ? -1 : it->second;
+// The class of the ball the message calls `id`, unknown when no estimate named it.
+int ClassOf(int id, const std::map<int, int>& class_of) {
+  const auto it = class_of.find(id);
+  return it == class_of.end() ? ball_state_t::CLASS_UNKNOWN : it->second;
+}
+
+// Snooker's colour of class `ball_class`, if it is one (ball_state_t's CLASS_RED to CLASS_BLACK
+// in plot::SnookerBall's order).
+std::optional<plot::SnookerBall> SnookerBallOf(int ball_class) {
+  if (ball_class < ball_state_t::CLASS_RED || ball_class > ball_state_t::CLASS_BLACK) return std::nullopt;
+  return static_cast<plot::SnookerBall>(ball_class - ball_state_t::CLASS_RED);
 }
 
 nlohmann::json Points(const std::vector<std::vector<double>>& path) {
@@ -51,7 +60,27 @@ int BallNumber(int ball_class) {
   return -1;
 }
 
-nlohmann::json LookJson(int number) {
+std::string BallName(int ball_class) {
+  static const char* const kSnookerNames[] = {"red", "yellow", "green", "brown", "blue", "pink", "black"};
+  if (const std::optional<plot::SnookerBall> snooker = SnookerBallOf(ball_class)) {
+    return kSnookerNames[static_cast<int>(*snooker)];
+  }
+  const int number = BallNumber(ball_class);
+  return number == 0 ? "cue ball" : number < 0 ? "?" : std::to_string(number);
+}
+
+std::string BallLabel(int ball_class) {
+  const int number = BallNumber(ball_class);
+  if (number == 0 || SnookerBallOf(ball_class)) return "";
+  return number < 0 ? "?" : std::to_string(number);
+}
+
+nlohmann::json LookJson(int ball_class) {
+  if (const std::optional<plot::SnookerBall> snooker = SnookerBallOf(ball_class)) {
+    const std::string colour = Css(plot::SnookerLookOf(*snooker).body);
+    return {{"body", colour}, {"band", nullptr}, {"path", colour}, {"dashed", false}};
+  }
+  const int number = BallNumber(ball_class);
   if (number < 0) return {{"body", "#9a9a9a"}, {"band", nullptr}, {"path", "#9a9a9a"},
                           {"dashed", false}};
   const plot::BallLook look = plot::LookOf(number);
@@ -76,18 +105,22 @@ nlohmann::json TableJson(const table::TableGeometry& table) {
           {"outline", outline}, {"cushions", cushions}, {"pockets", pockets}};
 }
 
-nlohmann::json PlanJson(const cue_command_t& m, const std::map<int, int>& number_of) {
+nlohmann::json PlanJson(const cue_command_t& m, const std::map<int, int>& class_of) {
   nlohmann::json ball_paths = nlohmann::json::array();
   for (const ball_path_t& b : m.ball_paths) {
-    const int number = NumberOf(b.ball_id, number_of);
-    ball_paths.push_back({{"number", number}, {"look", LookJson(number)}, {"points", Points(b.points)}});
+    const int ball_class = ClassOf(b.ball_id, class_of);
+    ball_paths.push_back({{"number", BallNumber(ball_class)},
+                          {"look", LookJson(ball_class)},
+                          {"points", Points(b.points)}});
   }
+  const int object_class = ClassOf(m.object_ball_id, class_of);
   const bool pot = m.mode != shot_request_t::MODE_TO_POINT && m.object_ball_id >= 0;
   return {{"utime", m.utime},
           {"status", m.status},
           {"reason", m.reason},
           {"choice", m.mode == shot_request_t::MODE_CHOOSE},
-          {"object_ball", pot ? nlohmann::json(NumberOf(m.object_ball_id, number_of)) : nullptr},
+          {"object_ball", pot ? nlohmann::json(BallNumber(object_class)) : nullptr},
+          {"object_name", pot ? nlohmann::json(BallName(object_class)) : nullptr},
           {"pocket", m.pocket},
           {"cue_speed_m_s", m.cue_speed},
           {"heading_deg", Shown(kDegreesPerRadian * m.heading, kTinyDegrees)},

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+#include <string>
 
 #include "lcmtypes/billiard/ball_state_t.hpp"
 #include "lcmtypes/billiard/shot_request_t.hpp"
@@ -28,8 +30,36 @@ TEST(LookJson, StripesAreStripes) {
   EXPECT_TRUE(nine["dashed"].get<bool>());
   EXPECT_FALSE(one["dashed"].get<bool>());
   EXPECT_EQ(eight["body"], "#0d0d0d");
-  EXPECT_EQ(LookJson(0)["body"], "#ffffff");
-  EXPECT_NE(LookJson(-1)["body"], LookJson(0)["body"]);  // a ball not told is not the cue ball
+  EXPECT_EQ(LookJson(ball_state_t::CLASS_CUE)["body"], "#ffffff");
+  // A ball not told is not the cue ball.
+  EXPECT_NE(LookJson(ball_state_t::CLASS_UNKNOWN)["body"], LookJson(ball_state_t::CLASS_CUE)["body"]);
+}
+
+// Snooker's balls by their colours: seven looks apart from each other, from the cue ball's and
+// from a ball not told; plain, their paths solid; named as a snooker player names them, and no
+// number drawn on them.
+TEST(LookJson, SnookerBallsInTheirColours) {
+  std::set<std::string> bodies = {LookJson(ball_state_t::CLASS_CUE)["body"],
+                                  LookJson(ball_state_t::CLASS_UNKNOWN)["body"]};
+  const std::string names[] = {"red", "yellow", "green", "brown", "blue", "pink", "black"};
+  for (int c = ball_state_t::CLASS_RED; c <= ball_state_t::CLASS_BLACK; ++c) {
+    const nlohmann::json look = LookJson(c);
+    EXPECT_TRUE(bodies.insert(look["body"].get<std::string>()).second) << c << " " << look;
+    EXPECT_TRUE(look["band"].is_null());
+    EXPECT_FALSE(look["dashed"].get<bool>());
+    EXPECT_EQ(look["path"], look["body"]);
+    EXPECT_EQ(BallName(c), names[c - ball_state_t::CLASS_RED]);
+    EXPECT_EQ(BallLabel(c), "");
+  }
+}
+
+// Pool's balls carry their numbers; the cue ball none; a ball not told a "?".
+TEST(BallLabel, NumbersOnPoolsBallsOnly) {
+  EXPECT_EQ(BallLabel(9), "9");
+  EXPECT_EQ(BallName(9), "9");
+  EXPECT_EQ(BallLabel(ball_state_t::CLASS_CUE), "");
+  EXPECT_EQ(BallName(ball_state_t::CLASS_CUE), "cue ball");
+  EXPECT_EQ(BallLabel(ball_state_t::CLASS_UNKNOWN), "?");
 }
 
 // The WPA 9 ft table: 6 pockets, the corners' at the playing surface's corners (within a mouth),
@@ -69,14 +99,23 @@ cue_command_t Choice() {
 
 // The stroke in a player's units, the balls by their numbers.
 TEST(PlanJson, StrokeInDegreesMillimetresAndNumbers) {
-  const nlohmann::json j = PlanJson(Choice(), {{0, 0}, {4, 9}});
+  const nlohmann::json j = PlanJson(Choice(), {{0, ball_state_t::CLASS_CUE}, {4, 9}});
   EXPECT_EQ(j["object_ball"], 9);
+  EXPECT_EQ(j["object_name"], "9");
   EXPECT_DOUBLE_EQ(j["heading_deg"].get<double>(), 90.0);
   EXPECT_EQ(j["tip_side_mm"].get<double>(), 0.0);
   EXPECT_DOUBLE_EQ(j["tip_height_mm"].get<double>(), 12.0);
   EXPECT_DOUBLE_EQ(j["probability"].get<double>(), 0.8);
   EXPECT_EQ(j["ball_paths"][0]["number"], 9);
   EXPECT_EQ(j["ball_paths"][0]["points"].size(), 2u);
+}
+
+// A snooker pot named by its colour, its paths in that colour.
+TEST(PlanJson, SnookerBallByItsColour) {
+  const nlohmann::json j = PlanJson(Choice(), {{4, ball_state_t::CLASS_PINK}});
+  EXPECT_EQ(j["object_ball"], -1);
+  EXPECT_EQ(j["object_name"], "pink");
+  EXPECT_EQ(j["ball_paths"][0]["look"], LookJson(ball_state_t::CLASS_PINK));
 }
 
 // A ball the estimate has not named is -1; a pot the planner was told (not chose) has no chance.

@@ -19,9 +19,13 @@ constexpr std::size_t kMaxPathPoints = 5000;
 nlohmann::json BallsJson(const table_state_t& m, bool with_uncertainty) {
   nlohmann::json balls = nlohmann::json::array();
   for (const ball_state_t& b : m.balls) {
-    const int number = BallNumber(b.ball_class);
-    nlohmann::json j = {{"id", b.ball_id},       {"number", number},     {"x", b.position[0]},
-                        {"y", b.position[1]},    {"class", b.ball_class}, {"look", LookJson(number)}};
+    nlohmann::json j = {{"id", b.ball_id},
+                        {"number", BallNumber(b.ball_class)},
+                        {"label", BallLabel(b.ball_class)},
+                        {"x", b.position[0]},
+                        {"y", b.position[1]},
+                        {"class", b.ball_class},
+                        {"look", LookJson(b.ball_class)}};
     // The position's standard deviations: the covariance is of the 7-state, row-major.
     if (with_uncertainty) {
       j["sx"] = std::sqrt(std::max(b.covariance[0], 0.0));
@@ -60,8 +64,8 @@ void ViewState::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& 
   std::lock_guard<std::mutex> lock(mutex_);
   state_[truth ? "truth" : "estimate"] = BallsJson(m, !truth);
   if (!truth) {
-    number_of_track_.clear();
-    for (const ball_state_t& b : m.balls) number_of_track_[b.ball_id] = BallNumber(b.ball_class);
+    class_of_track_.clear();
+    for (const ball_state_t& b : m.balls) class_of_track_[b.ball_id] = b.ball_class;
   }
   // The paths from the truth where a simulator publishes it, else (a camera) from the estimate.
   if (truth && !truth_seen_) paths_.clear();
@@ -71,9 +75,9 @@ void ViewState::OnTableState(const lcm::ReceiveBuffer* rbuf, const std::string& 
 
 void ViewState::ExtendPaths(const table_state_t& m) {
   for (const ball_state_t& b : m.balls) {
-    const int number = BallNumber(b.ball_class);
-    if (number < 0) continue;
-    std::vector<Eigen::Vector2d>& path = paths_[number];
+    if (b.ball_class == ball_state_t::CLASS_UNKNOWN) continue;
+    const bool red = b.ball_class == ball_state_t::CLASS_RED;
+    std::vector<Eigen::Vector2d>& path = paths_[{b.ball_class, red ? b.ball_id : -1}];
     const Eigen::Vector2d p(b.position[0], b.position[1]);
     if (path.size() < kMaxPathPoints && (path.empty() || (p - path.back()).norm() >= kPathStepM)) {
       path.push_back(p);
@@ -87,7 +91,7 @@ void ViewState::OnCueCommand(const lcm::ReceiveBuffer* rbuf, const std::string&)
   cue_command_t m;
   if (!messages::DecodeChecked(rbuf->data, rbuf->data_size, m).empty()) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  state_["plan"] = PlanJson(m, number_of_track_);
+  state_["plan"] = PlanJson(m, class_of_track_);
   if (m.status != cue_command_t::STATUS_OK || m.request_id == last_stroke_request_) return;
   last_stroke_request_ = m.request_id;
   state_["strokes"] = state_["strokes"].get<int>() + 1;
@@ -109,11 +113,12 @@ nlohmann::json ViewState::Json() const {
   std::lock_guard<std::mutex> lock(mutex_);
   nlohmann::json state = state_;
   nlohmann::json paths = nlohmann::json::array();
-  for (const auto& [number, points] : paths_) {
+  for (const auto& [ball, points] : paths_) {
     if (points.size() < 2) continue;  // a ball that has not moved
     nlohmann::json xy = nlohmann::json::array();
     for (const Eigen::Vector2d& p : points) xy.push_back({p.x(), p.y()});
-    paths.push_back({{"number", number}, {"look", LookJson(number)}, {"points", xy}});
+    const int ball_class = ball.first;
+    paths.push_back({{"number", BallNumber(ball_class)}, {"look", LookJson(ball_class)}, {"points", xy}});
   }
   state["paths"] = paths;
   return state;

@@ -6,8 +6,8 @@
 // it listens on 127.0.0.1 unless told.
 //
 // Each ball is drawn by its number (the class the estimator or the simulator gives it, not the
-// estimator's track id) in the standard pool colours, stripes as stripes (plot/ball_look.h, the
-// same table billiard plot draws with); the table with its cushions and pockets is the one the
+// estimator's track id) in the standard pool colours, stripes as stripes, or snooker's by their
+// colours (plot/ball_look.h, the same table billiard plot draws with); the table with its cushions and pockets is the one the
 // planner plans on (sim/table/), and the paths the balls took since the last stroke are kept.
 // The state is never cleared: when the loop ends the page keeps its last table.
 //
@@ -21,6 +21,7 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lcmtypes/billiard/cue_command_t.hpp"
@@ -44,13 +45,23 @@ int BallNumber(int ball_class);
 // pocket's centre and radius (half its capture line), in table coordinates [m].
 nlohmann::json TableJson(const table::TableGeometry& table);
 
-// One ball as the page draws it: its number, its look ("body" and, for a stripe, "band", as CSS
-// colours; "path" the colour of its path and "dashed" whether that path is dashed).
-nlohmann::json LookJson(int number);
+// What a player calls a ball of class `ball_class`: pool's number ("9"), "cue ball", a snooker
+// colour ("red", "pink"), "?" for a ball not told.
+std::string BallName(int ball_class);
 
-// The stroke of a cue command in a player's units (degrees, mm, m/s), its pot and probability;
-// `number_of` maps the message's ball ids (the estimator's track ids) to ball numbers.
-nlohmann::json PlanJson(const cue_command_t& m, const std::map<int, int>& number_of);
+// The text on a ball of class `ball_class` as the page draws it: pool's number, "?" for a ball
+// not told, nothing on the cue ball and on snooker's (told by their colours).
+std::string BallLabel(int ball_class);
+
+// A ball of class `ball_class` as the page draws it, its look: "body" and, for a stripe, "band",
+// as CSS colours; "path" the colour of its path and "dashed" whether that path is dashed. Pool's
+// numbers in pool's colours, snooker's colours in theirs, a ball not told grey.
+nlohmann::json LookJson(int ball_class);
+
+// The stroke of a cue command in a player's units (degrees, mm, m/s), its pot (the object ball's
+// number, or -1, and its name) and probability; `class_of` maps the message's ball ids (the
+// estimator's track ids) to their classes.
+nlohmann::json PlanJson(const cue_command_t& m, const std::map<int, int>& class_of);
 
 // What the page draws, from LCM; thread-safe (LCM's thread writes, the server's read).
 class ViewState {
@@ -68,10 +79,12 @@ class ViewState {
 
   mutable std::mutex mutex_;
   nlohmann::json state_;
-  std::map<int, int> number_of_track_;  // the estimator's track id -> ball number, latest
+  std::map<int, int> class_of_track_;  // the estimator's track id -> ball class, latest
   int64_t last_stroke_request_ = -1;    // the request of the last stroke that started a shot
   bool truth_seen_ = false;             // paths from the truth once it is heard, else estimates
-  std::map<int, std::vector<Eigen::Vector2d>> paths_;  // ball number -> centres since the stroke
+  // (ball class, the ball's id for a red, else -1: the reds are alike) -> centres since the
+  // stroke.
+  std::map<std::pair<int, int>, std::vector<Eigen::Vector2d>> paths_;
 };
 
 // The page (HTML and its script) with `state` (ViewState::Json()) drawn at once, before the

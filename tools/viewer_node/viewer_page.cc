@@ -48,8 +48,8 @@ function drawTable(s, px, drawn) {
     drawn.pockets.push({name: p.name, u: u, v: v});
   }
 }
-// A ball as a player knows it: its colour, a stripe's band across white, its number on a white
-// spot (none on the cue ball; "?" on a ball not told yet).
+// A ball as a player knows it: its colour, a stripe's band across white, its label on a white
+// spot (pool's number; "?" on a ball not told yet; none on the cue ball and snooker's).
 function drawBall(b, u, v, r) {
   ctx.save(); ctx.beginPath(); ctx.arc(u, v, r, 0, 2 * Math.PI); ctx.clip();
   ctx.fillStyle = b.look.body; ctx.fillRect(u - r, v - r, 2 * r, 2 * r);
@@ -57,11 +57,11 @@ function drawBall(b, u, v, r) {
   ctx.restore();
   ctx.strokeStyle = "#000000"; ctx.lineWidth = 0.7;
   ctx.beginPath(); ctx.arc(u, v, r, 0, 2 * Math.PI); ctx.stroke();
-  if (b.number === 0) return;
+  if (!b.label) return;
   ctx.fillStyle = "#ffffff"; ctx.beginPath(); ctx.arc(u, v, 0.5 * r, 0, 2 * Math.PI); ctx.fill();
   ctx.fillStyle = "#000000"; ctx.font = "bold 9px sans-serif";
   ctx.textAlign = "center"; ctx.textBaseline = "middle";
-  ctx.fillText(b.number < 0 ? "?" : String(b.number), u, v + 0.5);
+  ctx.fillText(b.label, u, v + 0.5);
 }
 function drawBalls(s, px, drawn) {
   const k = s.scale_px_per_m, r = s.ball_radius * k;
@@ -85,7 +85,7 @@ function drawBalls(s, px, drawn) {
 }
 function strokeText(p) {
   if (p.status !== 0) return `<span class="error">planner: ${escape(p.reason)}</span>`;
-  const pot = p.object_ball === null ? "safe stroke" : `${p.object_ball} in ${p.pocket.replace("_", " ")}`;
+  const pot = p.object_ball === null ? "safe stroke" : `${escape(p.object_name)} in ${p.pocket.replace("_", " ")}`;
   const chance = p.probability === null ? "" :
     `, pot chance ${(100 * p.probability).toFixed(0)} ± ${(100 * p.probability_stderr).toFixed(0)} %`;
   return `${pot}: ${p.cue_speed_m_s.toFixed(2)} m/s at ${p.heading_deg.toFixed(1)}°, tip ` +
