@@ -40,7 +40,8 @@ struct ChoiceOptions {
   // position_places places by it; false: the next shot valued in closed form (EasyPotEstimate).
   bool second_level = true;
   int second_level_states = 3;   // clusters of outcomes valued per finalist
-  int next_samples = 8;          // closed-form executions of each next-shot plan
+  int next_plans = 2;            // the next shot's plans screened: the widest heading windows
+  int next_samples = 16;         // closed-form executions of each next-shot plan screened
   double cluster_radius = 0.1;   // [m] every ball of a cluster's tables within it of another's
   int position_places = 3;
   std::vector<pot::ShotKind> next_kinds = {pot::ShotKind::kDirect};  // the next shot's kinds

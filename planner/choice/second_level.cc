@@ -15,6 +15,12 @@ namespace {
 // The second level's seed stream, apart from the first level's and the confirmation's samples.
 constexpr std::uint64_t kSecondLevelStream = 0x6e6578742073686full;
 
+// The plan with the wider heading window (its narrower side) first: the more forgiving pot.
+bool WiderWindow(const pot::PotPlan& a, const pot::PotPlan& b) {
+  return std::min(a.margin_left_deg, a.margin_right_deg) >
+         std::min(b.margin_left_deg, b.margin_right_deg);
+}
+
 // Whether `a` and `b` hold the same balls (in the same order, as the table leaves them), each
 // within `radius` of its place in the other.
 bool SameTable(const std::vector<table::SceneBall>& a, const std::vector<table::SceneBall>& b,
@@ -95,13 +101,13 @@ NextShotValue PlanNextShot(const table::TableGeometry& table,
   ChoiceOptions next = options;
   next.kinds = options.next_kinds;
   next.seed = options.seed + kSecondLevelStream;
-  const std::vector<pot::PotPlan> plans = PlanCandidates(table, params, balls, next, pool);
+  std::vector<pot::PotPlan> plans = PlanCandidates(table, params, balls, next, pool);
   NextShotValue result;
+  for (const pot::PotPlan& plan : plans) result.simulations += plan.simulations;
+  std::stable_sort(plans.begin(), plans.end(), WiderWindow);
+  if (static_cast<int>(plans.size()) > options.next_plans) plans.resize(options.next_plans);
   std::vector<const pot::PotPlan*> pointers;
-  for (const pot::PotPlan& plan : plans) {
-    result.simulations += plan.simulations;
-    pointers.push_back(&plan);
-  }
+  for (const pot::PotPlan& plan : plans) pointers.push_back(&plan);
   const std::vector<Execution> executions =
       ExecuteAll(table, params, balls, pointers, options.next_samples, next, {}, false, pool);
   result.simulations += static_cast<int>(executions.size());

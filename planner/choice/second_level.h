@@ -17,7 +17,8 @@
 //     variant leaving the same table are planned once (the cache);
 //  2. each finalist's `second_level_states` largest clusters are valued (PlanNextShot): every
 //     legal target x pocket x kind of options.next_kinds planned by pot::PlanPot
-//     (PlanCandidates), each plan screened `next_samples` times on the closed form (the
+//     (PlanCandidates), the `next_plans` of widest heading window (the narrower side; the
+//     screening's tie-break) each screened `next_samples` times on the closed form (the
 //     screening of step 2, its own seed stream), the value the best legal-pot rate; 1 when the
 //     rack is over, 0 when nothing plans;
 //  3. every potting execution takes the value of its cluster when that was valued, else of the
@@ -27,7 +28,10 @@
 // Position play uses the same valuation to choose where to send the cue ball (BestPlaceForNext).
 //
 // Budget (decision median 1 s, p95 4 s on two cores): the finalists (4) alone, a few clusters
-// each (3), direct next pots screened 8 times, so some 12 next-shot plannings a choice.
+// each (3), direct next pots, the 2 most forgiving screened 16 times (the planning costs more
+// than the screening): at most 12 next-shot plannings a choice, and 384 closed-form executions.
+// Fewer plans, more samples: the value is the best of noisy rates, biased up the more there are,
+// and in steps of 1/next_samples.
 //
 // Deterministic: the clusters are formed in execution order, the plans and executions of
 // PlanCandidates and ExecuteAll are stored by index and the next shot's noise drawn from
@@ -57,7 +61,7 @@ struct NextShotValue {
 
 // The next shot from `balls` planned and screened (step 2 above): 1 when the rack is over under
 // options.rules, 0 without a cue ball or when nothing plans, else the best screened legal-pot
-// rate of the plans.
+// rate of the plans screened.
 NextShotValue PlanNextShot(const table::TableGeometry& table,
                            const physics::ModelParameters& params,
                            const std::vector<table::SceneBall>& balls, const ChoiceOptions& options,
