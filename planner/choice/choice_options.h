@@ -35,6 +35,16 @@ struct ChoiceOptions {
   // ball sent within position_radius of the place the next shot looks easiest from.
   int position_plans = 3;
   double position_radius = 0.15;  // [m]
+  // The lookahead's second level (second_level.h): the next shot planned (PlanPot, screened) on
+  // the clusters of each finalist's outcomes, and position play's target chosen among the first
+  // position_places places by it; false: the next shot valued in closed form (EasyPotEstimate).
+  bool second_level = true;
+  int second_level_states = 3;   // clusters of outcomes valued per finalist
+  int next_plans = 2;            // the next shot's plans screened: the widest heading windows
+  int next_samples = 16;         // closed-form executions of each next-shot plan screened
+  double cluster_radius = 0.1;   // [m] every ball of a cluster's tables within it of another's
+  int position_places = 3;
+  std::vector<pot::ShotKind> next_kinds = {pot::ShotKind::kDirect};  // the next shot's kinds
   int placements = 3;             // ball in hand: the places chosen among (ball_in_hand.h)
   // Safeties (safety.h), weighed only when the best pot's reported probability is below
   // safety_below (or nothing plans): each candidate screened safety_screen_samples times on

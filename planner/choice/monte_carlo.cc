@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "planner/choice/lookahead.h"
 #include "planner/choice/scene_balls.h"
@@ -23,12 +24,13 @@ Execution Execute(const table::TableGeometry& table, const physics::ModelParamet
   NormalStream normal(SampleSeed(options.seed, sample));
   const physics::CueStroke stroke = params::Perturbed(plan.stroke, options.noise,
                                                       params.ball.radius, [&] { return normal.Next(); });
-  const StrokeResult result = PlayToRest(table, params, balls, stroke, motion);
+  StrokeResult result = PlayToRest(table, params, balls, stroke, motion);
   Execution e;
   e.potted = LegalPot(result, plan.ball, plan.pocket);
   if (e.potted && value_next) {
     e.next_value = BestNextShotValue(table, params.ball.radius, result.rest, options.rules,
                                      options.noise);
+    e.rest = std::move(result.rest);
   }
   return e;
 }

@@ -82,10 +82,12 @@ struct PotProbability {
 PotProbability Binomial(int successes, int samples);
 
 // One noisy execution of a stroke: whether it potted legally and, if it did and the lookahead
-// was asked, the value of the best next shot on the table it left (BestNextShotValue).
+// was asked, the value of the best next shot on the table it left (BestNextShotValue) and that
+// table (second_level.h plans the next shot on it).
 struct Execution {
   bool potted = false;
   double next_value = 0.0;
+  std::vector<table::SceneBall> rest;  // the table a pot left, for the second level
 };
 
 // The legal-pot rate of `executions`, all of one stroke.

@@ -112,7 +112,8 @@ TEST(BinomialTest, ProbabilityAndStandardError) {
   EXPECT_DOUBLE_EQ(p.probability, 0.25);
   EXPECT_DOUBLE_EQ(p.stderr_, std::sqrt(0.25 * 0.75 / 48));
   EXPECT_EQ(Binomial(0, 0).probability, 0.0);  // no samples: nothing known
-  const std::vector<Execution> executions = {{true, 0.5}, {false, 0}, {true, 0.1}, {false, 0}};
+  const std::vector<Execution> executions = {
+      {true, 0.5, {}}, {false, 0, {}}, {true, 0.1, {}}, {false, 0, {}}};
   EXPECT_DOUBLE_EQ(PotRateOf(executions).probability, 0.5);
 }
 

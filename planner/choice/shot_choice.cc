@@ -9,6 +9,7 @@
 #include "planner/choice/monte_carlo.h"
 #include "planner/choice/position_play.h"
 #include "planner/choice/screening.h"
+#include "planner/choice/second_level.h"
 #include "sim/model_choice/model_choice.h"
 
 namespace billiard::choice {
@@ -54,8 +55,9 @@ void ScreenCandidates(const table::TableGeometry& table, const physics::ModelPar
   std::stable_sort(candidates.begin(), candidates.end(), ScreenedBetter);
 }
 
-// Steps 3 and 4: the finalists on the full model, with the lookahead, scored; the finalists
-// first by score, the others after them in screening order.
+// Steps 3 and 4: the finalists on the full model, with the lookahead (its next shot planned by
+// the second level, or in closed form without it), scored; the finalists first by score, the
+// others after them in screening order.
 void PlayFinalists(const table::TableGeometry& table, const physics::ModelParameters& params,
                    const std::vector<table::SceneBall>& balls, const ChoiceOptions& options,
                    batch::ThreadPool& pool, ChoiceResult* result) {
@@ -68,10 +70,16 @@ void PlayFinalists(const table::TableGeometry& table, const physics::ModelParame
       ExecuteAll(table, params, balls, PlansOf(candidates, finalists), options.samples, options,
                  model_choice::TableMotion(params), options.lookahead, pool);
   result->simulations += static_cast<int>(full.size());
+  SecondLevel planned;
+  if (options.lookahead && options.second_level) {
+    planned = PlanNextShots(table, params, full, finalists.size(), options.samples, options, pool);
+    result->simulations += planned.simulations;
+  }
   for (std::size_t f = 0; f < finalists.size(); ++f) {
     Candidate& c = candidates[finalists[f]];
     c.finalist = true;
-    const Tally tally = TallyOf(full, f, options.samples);
+    Tally tally = TallyOf(full, f, options.samples);
+    if (!planned.next_shot_values.empty()) tally.next_shot_value = planned.next_shot_values[f];
     c.full = tally.pots;
     c.next_shot_value = tally.next_shot_value;
     c.score = Score(tally, options.lookahead);

@@ -25,6 +25,7 @@ choice::ChoiceResult Ours::Decide(const Turn& turn, const choice::ChoiceOptions&
   const auto start = std::chrono::steady_clock::now();
   choice::ChoiceOptions played = options;
   played.lookahead = lookahead_ && options.lookahead;
+  played.second_level = two_level_ && options.second_level;
   choice::ChoiceResult result = Choose(turn, played, pool);
   if (safeties_ && !turn.constraints.ball_in_hand) {
     choice::ConsiderSafety(turn.table, turn.params, turn.balls, played, pool, &result);

@@ -8,6 +8,10 @@
 // not with ball in hand (a placement is chosen for a pot). "ours-no-safety": the same player
 // without safeties, the round-3 chooser a match measures them against (issue 48).
 //
+// Two levels: the lookahead's next shot planned on the outcomes (planner/choice/second_level.h)
+// and position play aimed where it is best. "ours-one-level": "ours" with the next shot valued
+// in closed form instead (the chooser before the second level), kept to measure what it adds.
+//
 // Ours(false), "no-lookahead": the same choice scoring each pot by its probability alone, p
 // rather than p (1 + v) (the lookahead off whatever the options say, and with it position
 // play). `billiard bench-game` plays it to show what the lookahead adds.
@@ -24,9 +28,10 @@ class Ours final : public Player {
   // "ours" with the lookahead and safeties; "no-lookahead" without either.
   explicit Ours(bool lookahead = true)
       : Ours(lookahead, lookahead, lookahead ? "ours" : "no-lookahead") {}
-  // The player named `name`, with or without the lookahead and safeties ("ours-no-safety").
-  Ours(bool lookahead, bool safeties, const char* name)
-      : lookahead_(lookahead), safeties_(safeties), name_(name) {}
+  // The player named `name`, with or without the lookahead and safeties ("ours-no-safety"),
+  // its lookahead's next shot planned (the second level) or in closed form ("ours-one-level").
+  Ours(bool lookahead, bool safeties, const char* name, bool two_level = true)
+      : lookahead_(lookahead), safeties_(safeties), two_level_(two_level), name_(name) {}
   const char* Name() const override { return name_; }
   choice::ChoiceResult Decide(const Turn& turn, const choice::ChoiceOptions& options,
                               batch::ThreadPool& pool) const override;
@@ -34,6 +39,7 @@ class Ours final : public Player {
  private:
   bool lookahead_;
   bool safeties_;
+  bool two_level_;
   const char* name_;
 };
 

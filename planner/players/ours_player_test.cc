@@ -49,6 +49,19 @@ TEST_F(OursTest, WithoutTheLookaheadScoresByTheProbabilityAlone) {
   ExpectSameChoice(r, choice::ChooseShot(table_, params_, balls, options, pool));
 }
 
+// ours-one-level is the choice with the next shot valued in closed form (no second level),
+// whatever the options say (the pot here likely enough that no safety is weighed).
+TEST_F(OursTest, OneLevelValuesTheNextShotInClosedForm) {
+  const auto balls = TwoBalls();
+  choice::ChoiceOptions options = QuickChoice();
+  ASSERT_TRUE(options.second_level);
+  Turn turn{table_, params_, balls, {false, rules::LegalTargets(options.rules, balls)}};
+  batch::ThreadPool pool(2);
+  const choice::ChoiceResult one_level = MakePlayer(kOursOneLevel)->Decide(turn, options, pool);
+  options.second_level = false;
+  ExpectSameChoice(one_level, choice::ChooseShot(table_, params_, balls, options, pool));
+}
+
 // With the pot unlikely (a long cut under the tournaments' noise, a miss leaving the 1 in the
 // open) ours plays safe; ours-no-safety, the same player without safeties, plays the pot.
 TEST_F(OursTest, OursPlaysSafeWhereOursNoSafetyAttempts) {

@@ -17,8 +17,10 @@ std::vector<std::string> PlayerNames();
 // "ours" without safeties (issue 48's baseline for them): MakePlayer makes it; PlayerNames
 // lists the three kinds of player.
 inline constexpr char kOursNoSafety[] = "ours-no-safety";
+// "ours" with the one-level lookahead (the next shot in closed form): the two levels' baseline.
+inline constexpr char kOursOneLevel[] = "ours-one-level";
 
-// The player named `name` (one of PlayerNames, or kOursNoSafety); throws std::invalid_argument naming it and the known ones otherwise.
+// The player named `name` (one of PlayerNames, kOursNoSafety or kOursOneLevel); throws std::invalid_argument naming it and the known ones otherwise.
 std::unique_ptr<Player> MakePlayer(const std::string& name);
 
 }  // namespace billiard::players

@@ -12,6 +12,7 @@ TEST(PlayersTest, EachNameMakesThatPlayer) {
   EXPECT_EQ(names, (std::vector<std::string>{"ours", "no-lookahead", "easiest-looking"}));
   for (const std::string& name : names) EXPECT_EQ(MakePlayer(name)->Name(), name);
   EXPECT_STREQ(MakePlayer(kOursNoSafety)->Name(), "ours-no-safety");
+  EXPECT_STREQ(MakePlayer(kOursOneLevel)->Name(), "ours-one-level");
 }
 
 TEST(PlayersTest, AnUnknownNameIsRefusedWithTheKnownOnes) {
@@ -19,7 +20,8 @@ TEST(PlayersTest, AnUnknownNameIsRefusedWithTheKnownOnes) {
     MakePlayer("random");
     FAIL() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "unknown player 'random' (ours, no-lookahead, easiest-looking, ours-no-safety)");
+    EXPECT_STREQ(e.what(), "unknown player 'random' (ours, no-lookahead, easiest-looking, ours-no-safety, "
+                 "ours-one-level)");
   }
 }
 

@@ -36,6 +36,7 @@ struct ChoiceArgs {
   int confirm_samples = 256;
   std::uint64_t seed = 1;
   int threads = batch::DefaultThreadCount();
+  bool one_level = false;
   bool json = false;
 };
 
@@ -53,6 +54,8 @@ void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--threads", args->threads, "Threads (the results do not depend on them)")
       ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_flag("--one-level", args->one_level,
+                "The lookahead's next shot valued in closed form, not planned (no second level)");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
 }
 
@@ -70,6 +73,7 @@ choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
   options.samples = args.samples;
   options.confirm_samples = args.confirm_samples;
   options.seed = args.seed;
+  options.second_level = !args.one_level;
   return options;
 }
 
