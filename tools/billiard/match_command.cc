@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "planner/game/match.h"
-#include "planner/game/wilson.h"
+#include "sim/batch/wilson.h"
 #include "planner/players/players.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
@@ -71,7 +71,7 @@ nlohmann::json DecisionJson(const std::vector<double>& us) {
 }
 
 nlohmann::json PlayerJson(const game::PlayerTally& p, int racks) {
-  const game::Interval interval = game::WilsonInterval(p.racks_won, racks);
+  const batch::Interval interval = batch::WilsonInterval(p.racks_won, racks);
   return {{"name", p.name},
           {"racks_won", p.racks_won},
           {"win_rate", racks ? static_cast<double>(p.racks_won) / racks : 0.0},
