@@ -3,11 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/batch/wilson.h"
 #include "sim/rules/ruleset.h"
 
 namespace billiard::table_sim_node {
 
 namespace {
+
+// A match's player over its racks (billiard match's PlayerTally, what the loop sees of it).
+struct PlayerTotals {
+  int racks_won = 0, break_and_runs = 0, attempts = 0, pots = 0, safeties = 0, fouls = 0;
+};
 
 // The game's totals over its racks, and what its decisions saw.
 struct GameTotals {
@@ -37,6 +43,7 @@ nlohmann::json GameShotJson(const GameShot& s) {
   if (!s.reason.empty()) shot["reason"] = s.reason;
   if (s.foul) shot["foul_reason"] = s.foul_reason;
   if (s.cue_placement) shot["cue_placement"] = {s.cue_placement->x(), s.cue_placement->y()};
+  if (s.safety) shot["safety"] = true;
   if (s.called >= 0) {
     shot["called"] = {
         {"ball", s.called}, {"pocket", s.pocket}, {"kind", s.kind}, {"predicted", s.predicted}};
@@ -46,6 +53,50 @@ nlohmann::json GameShotJson(const GameShot& s) {
 
 bool RackRunOut(const GameResult& game) {
   return rules::RunOut(game.cleared, game.visits, rules::FirstVisitAfterBreak(game.shots));
+}
+
+// A match's rack: who broke, who won and why, each shot's player, all added to the players'.
+void AddMatchRack(const GameResult& game, const std::vector<std::string>& players,
+                  nlohmann::json* rack, std::vector<PlayerTotals>* totals) {
+  (*rack)["breaker"] = players[game.breaker];
+  (*rack)["winner"] = game.winner < 0 ? nlohmann::json() : nlohmann::json(players[game.winner]);
+  (*rack)["reason"] = game.reason;
+  (*rack)["break_and_run"] = game.break_and_run;
+  if (game.winner >= 0) {
+    ++(*totals)[game.winner].racks_won;
+    (*totals)[game.winner].break_and_runs += game.break_and_run;
+  }
+  for (std::size_t i = 0; i < game.shots.size(); ++i) {
+    const GameShot& s = game.shots[i];
+    (*rack)["shots"][i]["player"] = players[s.player];
+    PlayerTotals& p = (*totals)[s.player];
+    p.fouls += s.foul;
+    p.safeties += s.safety;
+    if (s.called >= 0) {
+      ++p.attempts;
+      p.pots += s.called_potted;
+    }
+  }
+}
+
+// Each player of a match as `billiard match --json` lists it.
+nlohmann::json PlayersJson(const std::vector<std::string>& players,
+                           const std::vector<PlayerTotals>& totals, int racks) {
+  nlohmann::json j = nlohmann::json::array();
+  for (std::size_t k = 0; k < players.size(); ++k) {
+    const PlayerTotals& p = totals[k];
+    const batch::Interval interval = batch::WilsonInterval(p.racks_won, racks);
+    j.push_back({{"name", players[k]},
+                 {"racks_won", p.racks_won},
+                 {"win_rate", racks ? static_cast<double>(p.racks_won) / racks : 0.0},
+                 {"interval95", {interval.lo, interval.hi}},
+                 {"break_and_runs", p.break_and_runs},
+                 {"pots", p.pots},
+                 {"attempts", p.attempts},
+                 {"safeties", p.safeties},
+                 {"fouls", p.fouls}});
+  }
+  return j;
 }
 
 // One rack: its shots and counts, added to `totals`.
@@ -206,11 +257,20 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
   return j;
 }
 
-nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind) {
+nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind,
+                           const std::vector<std::string>& players) {
   nlohmann::json j = {{"kind", kind}};
   GameTotals totals;
-  for (const GameResult& game : games) j["racks"].push_back(RackJson(game, &totals));
+  std::vector<PlayerTotals> player_totals(players.size());
+  for (const GameResult& game : games) {
+    nlohmann::json rack = RackJson(game, &totals);
+    if (!players.empty()) AddMatchRack(game, players, &rack, &player_totals);
+    j["racks"].push_back(std::move(rack));
+  }
   j["summary"] = TotalsJson(totals, games.size());
+  if (!players.empty()) {
+    j["players"] = PlayersJson(players, player_totals, static_cast<int>(games.size()));
+  }
   return j;
 }
 
