@@ -258,7 +258,11 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
 }
 
 nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind,
-                           const std::vector<std::string>& players) {
+                           std::vector<std::string> players) {
+  // A player against itself: the two told apart as billiard match's progress tells them.
+  if (players.size() == 2 && players[0] == players[1]) {
+    players = {players[0] + " (A)", players[1] + " (B)"};
+  }
   nlohmann::json j = {{"kind", kind}};
   GameTotals totals;
   std::vector<PlayerTotals> player_totals(players.size());

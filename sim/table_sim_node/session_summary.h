@@ -27,9 +27,9 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
 // also says who played each shot and whether it was a safety, each rack's breaker, winner and
 // why it ended, and "players": each player's racks won, win rate with its Wilson 95 % interval
 // (sim/batch/wilson.h), break-and-runs, pots, attempts, safeties and fouls, as `billiard match`
-// gives them.
+// gives them; a player against itself named "ours (A)" and "ours (B)".
 nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind,
-                           const std::vector<std::string>& players = {});
+                           std::vector<std::string> players = {});
 
 // What a whole-table session adds (the summary's "scene"): the events, where every ball ended
 // (and the pocket it dropped into), how the estimator tracked each ball (RMS and largest error,

@@ -173,6 +173,9 @@ TEST(GameSummary, AMatchTalliesEachPlayerAsBilliardMatchDoes) {
   const double z2 = 1.959963984540054 * 1.959963984540054;
   EXPECT_EQ(b["interval95"][0], 0.0);
   EXPECT_NEAR(b["interval95"][1].get<double>(), z2 / (2 + z2), 1e-12);
+  const nlohmann::json itself = GameSummary({first}, "eight-ball", {"ours", "ours"});
+  EXPECT_EQ(itself["players"][1]["name"], "ours (B)");
+  EXPECT_EQ(itself["racks"][0]["winner"], "ours (A)");
   // Alone (no players), a game's summary has none of this.
   EXPECT_FALSE(GameSummary({first}, "nine-ball").contains("players"));
   EXPECT_FALSE(GameSummary({first}, "nine-ball")["racks"][0].contains("breaker"));
