@@ -4,6 +4,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "lcmtypes/names.h"
 #include "planner/game/break_search.h"
 #include "planner/node/command_writing.h"
 #include "planner/node/scene_at_rest.h"
@@ -11,18 +12,7 @@
 namespace billiard::planner_node {
 
 rules::Rules RulesOf(const shot_request_t& q) {
-  switch (q.rules) {
-    case shot_request_t::RULES_NINE_BALL:
-      return rules::Rules::kNineBall;
-    case shot_request_t::RULES_EIGHT_BALL:
-      return rules::Rules::kEightBall;
-    case shot_request_t::RULES_EIGHT_BALL_SOLIDS:
-      return rules::Rules::kEightBallSolids;
-    case shot_request_t::RULES_EIGHT_BALL_STRIPES:
-      return rules::Rules::kEightBallStripes;
-    default:
-      return rules::Rules::kAny;
-  }
+  return rules::ParseRules(messages::ShotRulesName(q.rules)).value_or(rules::Rules::kAny);
 }
 
 cue_command_t AnswerBreak(const shot_request_t& q, const ball_state_t& cue,
@@ -46,12 +36,7 @@ cue_command_t AnswerBreak(const shot_request_t& q, const ball_state_t& cue,
   c.has_cue_placement = 1;
   c.start[0] = c.cue_placement[0] = placed.state[physics::kX];
   c.start[1] = c.cue_placement[1] = placed.state[physics::kY];
-  c.cue_speed = stroke.speed;
-  c.heading = stroke.heading;
-  c.tip_side = stroke.tip_side;
-  c.tip_height = stroke.tip_height;
-  c.elevation = stroke.elevation;
-  c.status = cue_command_t::STATUS_OK;
+  WriteStroke(stroke, &c);
   return Sendable(c);
 }
 

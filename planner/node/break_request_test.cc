@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "lcmtypes/names.h"
 #include "planner/node/planner_node.h"
 #include "planner/node/testing/node_harness.h"
 #include "sim/physics/ball_state.h"
@@ -67,6 +68,19 @@ TEST_F(BreakRequestTest, NineBallsBreakPlacesTheCueBallOnTheHeadStringAndHitsThe
   EXPECT_NEAR(c.heading, std::atan2(line.y(), line.x()), 1e-12);
   EXPECT_GT(c.cue_speed, 5.0);
   EXPECT_EQ(c.safety, 0);
+}
+
+// Every ruleset goes out by its name's code and comes back as itself.
+TEST(RulesOf, EveryRulesetRoundTripsThroughTheRequest) {
+  for (rules::Rules r : {rules::Rules::kAny, rules::Rules::kNineBall, rules::Rules::kEightBall,
+                         rules::Rules::kEightBallSolids, rules::Rules::kEightBallStripes}) {
+    shot_request_t q{};
+    q.rules = messages::ShotRulesCode(rules::RulesName(r));
+    EXPECT_GE(q.rules, 0) << rules::RulesName(r);
+    EXPECT_EQ(RulesOf(q), r) << rules::RulesName(r);
+  }
+  EXPECT_EQ(messages::ShotRulesCode("snooker"), -1);
+  EXPECT_EQ(messages::ShotRulesName(5), "");
 }
 
 TEST_F(BreakRequestTest, EachGameBreaksItsOwnWay) {

@@ -83,13 +83,7 @@ cue_command_t WriteChoice(const choice::ChoiceResult& result,
     c.success_probability = chosen->reported().probability;
     c.probability_stderr = chosen->reported().stderr_;
   } else {  // a safety, or kNoPlan's fallback, which at least hits the first legal ball
-    const physics::CueStroke& s = *result.stroke();
-    c.cue_speed = s.speed;
-    c.heading = s.heading;
-    c.tip_side = s.tip_side;
-    c.tip_height = s.tip_height;
-    c.elevation = s.elevation;
-    c.status = cue_command_t::STATUS_OK;
+    WriteStroke(*result.stroke(), &c);
   }
   c.solve_us = result.decision_us;
   c.iterations = result.simulations;

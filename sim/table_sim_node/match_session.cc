@@ -22,20 +22,7 @@ namespace {
 constexpr char kUnknownPlayer[] = "unknown player";
 
 // A ruleset as the request names it (shot_request_t::RULES_*).
-int8_t RulesCode(rules::Rules r) {
-  switch (r) {
-    case rules::Rules::kNineBall:
-      return shot_request_t::RULES_NINE_BALL;
-    case rules::Rules::kEightBall:
-      return shot_request_t::RULES_EIGHT_BALL;
-    case rules::Rules::kEightBallSolids:
-      return shot_request_t::RULES_EIGHT_BALL_SOLIDS;
-    case rules::Rules::kEightBallStripes:
-      return shot_request_t::RULES_EIGHT_BALL_STRIPES;
-    default:
-      return shot_request_t::RULES_ANY;
-  }
-}
+int8_t RulesCode(rules::Rules r) { return messages::ShotRulesCode(rules::RulesName(r)); }
 
 // What shot `shot` of the rack `state` is asks the planner: the game's break, or the shooter's
 // choice under its own ruleset (its group's, under eight-ball), decided by `player`.

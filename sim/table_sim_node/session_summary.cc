@@ -10,11 +10,6 @@ namespace billiard::table_sim_node {
 
 namespace {
 
-// A match's player over its racks (billiard match's PlayerTally, what the loop sees of it).
-struct PlayerTotals {
-  int racks_won = 0, break_and_runs = 0, attempts = 0, pots = 0, safeties = 0, fouls = 0;
-};
-
 // The game's totals over its racks, and what its decisions saw.
 struct GameTotals {
   int cleared = 0, run_outs = 0, shots = 0, attempts = 0, pots = 0, fouls = 0, visits = 0,
@@ -57,7 +52,7 @@ bool RackRunOut(const GameResult& game) {
 
 // A match's rack: who broke, who won and why, each shot's player, all added to the players'.
 void AddMatchRack(const GameResult& game, const std::vector<std::string>& players,
-                  nlohmann::json* rack, std::vector<PlayerTotals>* totals) {
+                  nlohmann::json* rack, std::vector<MatchPlayerCounts>* totals) {
   (*rack)["breaker"] = players[game.breaker];
   (*rack)["winner"] = game.winner < 0 ? nlohmann::json() : nlohmann::json(players[game.winner]);
   (*rack)["reason"] = game.reason;
@@ -69,7 +64,7 @@ void AddMatchRack(const GameResult& game, const std::vector<std::string>& player
   for (std::size_t i = 0; i < game.shots.size(); ++i) {
     const GameShot& s = game.shots[i];
     (*rack)["shots"][i]["player"] = players[s.player];
-    PlayerTotals& p = (*totals)[s.player];
+    MatchPlayerCounts& p = (*totals)[s.player];
     p.fouls += s.foul;
     p.safeties += s.safety;
     if (s.called >= 0) {
@@ -77,26 +72,6 @@ void AddMatchRack(const GameResult& game, const std::vector<std::string>& player
       p.pots += s.called_potted;
     }
   }
-}
-
-// Each player of a match as `billiard match --json` lists it.
-nlohmann::json PlayersJson(const std::vector<std::string>& players,
-                           const std::vector<PlayerTotals>& totals, int racks) {
-  nlohmann::json j = nlohmann::json::array();
-  for (std::size_t k = 0; k < players.size(); ++k) {
-    const PlayerTotals& p = totals[k];
-    const batch::Interval interval = batch::WilsonInterval(p.racks_won, racks);
-    j.push_back({{"name", players[k]},
-                 {"racks_won", p.racks_won},
-                 {"win_rate", racks ? static_cast<double>(p.racks_won) / racks : 0.0},
-                 {"interval95", {interval.lo, interval.hi}},
-                 {"break_and_runs", p.break_and_runs},
-                 {"pots", p.pots},
-                 {"attempts", p.attempts},
-                 {"safeties", p.safeties},
-                 {"fouls", p.fouls}});
-  }
-  return j;
 }
 
 // One rack: its shots and counts, added to `totals`.
@@ -257,6 +232,20 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
   return j;
 }
 
+nlohmann::json MatchPlayerJson(const std::string& name, const MatchPlayerCounts& counts,
+                               int racks) {
+  const batch::Interval interval = batch::WilsonInterval(counts.racks_won, racks);
+  return {{"name", name},
+          {"racks_won", counts.racks_won},
+          {"win_rate", racks ? static_cast<double>(counts.racks_won) / racks : 0.0},
+          {"interval95", {interval.lo, interval.hi}},
+          {"break_and_runs", counts.break_and_runs},
+          {"pots", counts.pots},
+          {"attempts", counts.attempts},
+          {"safeties", counts.safeties},
+          {"fouls", counts.fouls}};
+}
+
 nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind,
                            std::vector<std::string> players) {
   // A player against itself: the two told apart as billiard match's progress tells them.
@@ -265,15 +254,16 @@ nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::stri
   }
   nlohmann::json j = {{"kind", kind}};
   GameTotals totals;
-  std::vector<PlayerTotals> player_totals(players.size());
+  std::vector<MatchPlayerCounts> player_totals(players.size());
   for (const GameResult& game : games) {
     nlohmann::json rack = RackJson(game, &totals);
     if (!players.empty()) AddMatchRack(game, players, &rack, &player_totals);
     j["racks"].push_back(std::move(rack));
   }
   j["summary"] = TotalsJson(totals, games.size());
-  if (!players.empty()) {
-    j["players"] = PlayersJson(players, player_totals, static_cast<int>(games.size()));
+  for (std::size_t k = 0; k < players.size(); ++k) {
+    j["players"].push_back(
+        MatchPlayerJson(players[k], player_totals[k], static_cast<int>(games.size())));
   }
   return j;
 }

@@ -31,6 +31,17 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
 nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind,
                            std::vector<std::string> players = {});
 
+// A match's player over its racks: what `billiard match` and the loop's match count alike.
+struct MatchPlayerCounts {
+  int racks_won = 0, break_and_runs = 0, attempts = 0, pots = 0, safeties = 0, fouls = 0;
+};
+
+// A match's player as `billiard match --json` and the loop's summary list it: {"name",
+// "racks_won", "win_rate", "interval95": [lo, hi] (Wilson's, sim/batch/wilson.h),
+// "break_and_runs", "pots", "attempts", "safeties", "fouls"}, of `racks` racks.
+nlohmann::json MatchPlayerJson(const std::string& name, const MatchPlayerCounts& counts,
+                               int racks);
+
 // What a whole-table session adds (the summary's "scene"): the events, where every ball ended
 // (and the pocket it dropped into), how the estimator tracked each ball (RMS and largest error,
 // frames without a track, swaps of tracks between balls), and with pots, "pots": each one's ball

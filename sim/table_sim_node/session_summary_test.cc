@@ -156,20 +156,17 @@ TEST(GameSummary, AMatchTalliesEachPlayerAsBilliardMatchDoes) {
   EXPECT_EQ(j["racks"][1]["reason"], "shot limit");
   EXPECT_EQ(j["racks"][1]["shots"][1]["player"], "easiest-looking");
   EXPECT_EQ(j["racks"][1]["shots"][2]["safety"], true);
-  const nlohmann::json& a = j["players"][0];
+  const nlohmann::json tallies[2] = {
+      {{"name", "ours"}, {"racks_won", 1}, {"win_rate", 0.5}, {"break_and_runs", 1},
+       {"attempts", 1}, {"pots", 1}, {"safeties", 1}, {"fouls", 0}},
+      {{"name", "easiest-looking"}, {"racks_won", 0}, {"win_rate", 0.0}, {"break_and_runs", 0},
+       {"attempts", 1}, {"pots", 0}, {"safeties", 0}, {"fouls", 1}}};
+  for (int k = 0; k < 2; ++k) {
+    for (const auto& [key, value] : tallies[k].items()) {
+      EXPECT_EQ(j["players"][k][key], value) << k << " " << key;
+    }
+  }
   const nlohmann::json& b = j["players"][1];
-  EXPECT_EQ(a["name"], "ours");
-  EXPECT_EQ(a["racks_won"], 1);
-  EXPECT_EQ(a["win_rate"], 0.5);
-  EXPECT_EQ(a["break_and_runs"], 1);
-  EXPECT_EQ(a["attempts"], 1);
-  EXPECT_EQ(a["pots"], 1);
-  EXPECT_EQ(a["safeties"], 1);
-  EXPECT_EQ(a["fouls"], 0);
-  EXPECT_EQ(b["racks_won"], 0);
-  EXPECT_EQ(b["attempts"], 1);
-  EXPECT_EQ(b["pots"], 0);
-  EXPECT_EQ(b["fouls"], 1);
   const double z2 = 1.959963984540054 * 1.959963984540054;
   EXPECT_EQ(b["interval95"][0], 0.0);
   EXPECT_NEAR(b["interval95"][1].get<double>(), z2 / (2 + z2), 1e-12);

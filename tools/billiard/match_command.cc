@@ -11,11 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include "planner/game/match.h"
-#include "sim/batch/wilson.h"
 #include "planner/players/players.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/table_sim_node/session_summary.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/scene_commands.h"
 
@@ -71,19 +71,13 @@ nlohmann::json DecisionJson(const std::vector<double>& us) {
 }
 
 nlohmann::json PlayerJson(const game::PlayerTally& p, int racks) {
-  const batch::Interval interval = batch::WilsonInterval(p.racks_won, racks);
-  return {{"name", p.name},
-          {"racks_won", p.racks_won},
-          {"win_rate", racks ? static_cast<double>(p.racks_won) / racks : 0.0},
-          {"interval95", {interval.lo, interval.hi}},
-          {"break_and_runs", p.break_and_runs},
-          {"pots", p.pots},
-          {"attempts", p.attempts},
-          {"safeties", p.safeties},
-          {"safeties_that_worked", p.safeties_that_worked},
-          {"fouls", p.fouls},
-          {"foul_reasons", p.foul_reasons},
-          {"decision_us", DecisionJson(p.decisions_us)}};
+  // The loop's match lists its players the same way (run_loop.sh --players).
+  nlohmann::json j = table_sim_node::MatchPlayerJson(
+      p.name, {p.racks_won, p.break_and_runs, p.attempts, p.pots, p.safeties, p.fouls}, racks);
+  j["safeties_that_worked"] = p.safeties_that_worked;
+  j["foul_reasons"] = p.foul_reasons;
+  j["decision_us"] = DecisionJson(p.decisions_us);
+  return j;
 }
 
 nlohmann::json MatchJson(const game::MatchRecord& match, const MatchArgs& args) {
