@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# usage: launch_scripts/run_loop.sh [--game nine-ball|drill] [--racks N] [--shot-limit N]
+# usage: launch_scripts/run_loop.sh [--game nine-ball|eight-ball|drill] [--players A,B]
+#                                   [--racks N] [--shot-limit N]
 #                                   [--shots N] [--seed S] [--noise on|off]
 #                                   [--scene break|seeded|FILE]
 #                                   [--pot K:P ...] [--params NAME|FILE] [--log FILE]
@@ -25,6 +26,16 @@
 #                          until the table is clear or the shot limit; prints every shot and the
 #                          summary (pots per attempt, run-outs, balls per visit, fouls, decision
 #                          time, the estimator's position error at each decision)
+#   --game eight-ball      a match of eight-ball (the computational pool's rules: groups, called
+#                          pots, the 8 last), ours against ours without --players
+#   --players A,B          --game nine-ball or eight-ball: a match between two players (ours,
+#                          ours-no-safety, no-lookahead, easiest-looking), the planner answering
+#                          for both (each request names the player at the table); the table
+#                          simulator referees (sim/rules: a miss or a foul hands the table over,
+#                          three fouls in a row lose a nine-ball rack), rack k broken by A when k
+#                          is even, by B when odd, with the game's stored break (billiard match's);
+#                          prints who played each shot and each player's racks won (with the
+#                          Wilson 95 % interval), break-and-runs, pots, attempts, safeties, fouls
 #   --racks N              --game: racks played, of seeds S, S + 1, ... (default 1)
 #   --shot-limit N         --game: the most shots of a rack (default 40)
 #   --shots N              N shots to random targets instead of a game (default 20)
@@ -105,7 +116,7 @@
 set -euo pipefail
 source "$(dirname "$0")/script_support.sh"
 
-shots="" game="" racks=1 shot_limit=40 seed=1 noise="" scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true plant_noise="" learn_noise=()
+shots="" game="" players="" racks=1 shot_limit=40 seed=1 noise="" scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true plant_noise="" learn_noise=()
 pots=()
 view=false view_port=8765 camera="" camera_model=""
 while [ $# -gt 0 ]; do
@@ -113,6 +124,7 @@ while [ $# -gt 0 ]; do
     -h | --help) help_and_exit ;;
     --shots) need_number 1 "$@"; shots=$2; shift 2 ;;
     --game) need_value "$@"; game=$2; shift 2 ;;
+    --players) need_value "$@"; players=$2; shift 2 ;;
     --racks) need_number 1 "$@"; racks=$2; shift 2 ;;
     --shot-limit) need_number 1 "$@"; shot_limit=$2; shift 2 ;;
     --seed) need_number 0 "$@"; seed=$2; shift 2 ;;
@@ -175,9 +187,12 @@ fi
 # Without --shots or --scene the loop plays the game this controller exists for.
 [ -z "$camera" ] && [ -z "$game" ] && [ -z "$shots" ] && [ -z "$scene" ] && game=nine-ball
 case "$game" in
-  "" | nine-ball | drill) ;;
-  *) usage_error "--game must be nine-ball or drill, not '$game'" ;;
+  "" | nine-ball | eight-ball | drill) ;;
+  *) usage_error "--game must be nine-ball, eight-ball or drill, not '$game'" ;;
 esac
+if [ -n "$players" ] && [ "$game" != nine-ball ] && [ "$game" != eight-ball ]; then
+  usage_error "--players plays a match: with --game nine-ball or eight-ball"
+fi
 if [ -n "$game" ] && { [ -n "$shots" ] || [ -n "$scene" ]; }; then
   usage_error "--game plays racks: not with --shots or --scene"
 fi
@@ -255,7 +270,7 @@ if [ -n "$camera" ]; then
   run_camera
 fi
 playing=(--shots "$shots")
-[ -n "$game" ] && playing=(--game "$game" --racks "$racks" --shot-limit "$shot_limit")
+[ -n "$game" ] && playing=(--game "$game" ${players:+--players "$players"} --racks "$racks" --shot-limit "$shot_limit")
 enter_private_network launch_scripts/run_loop.sh --no-build "${playing[@]}" --seed "$seed" \
   --noise "$noise" --params "$params" ${plant:+--plant-params "$plant"} ${plant_noise:+--plant-noise "$plant_noise"} "${learn_noise[@]}" --identify-every "$identify_every" --identify "$identify" ${scene:+--scene "$scene"} "${pots[@]}" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")
 # Without a namespace, separate processes only where multicast reaches back over loopback;
@@ -359,21 +374,31 @@ s = json.load(open(sys.argv[1]))
 pots = s.get("scene", {}).get("pots", [])
 game = s.get("game")
 if game:
+    match = "players" in game
     for k, rack in enumerate(game["racks"]):
-        print(f"rack {k} (seed {rack['seed']}): {'cleared' if rack['cleared'] else 'not cleared'} in "
-              f"{len(rack['shots'])} shots, {rack['visits']} visit(s){', a run-out' if rack['run_out'] else ''}")
-        print("  (call: the ball and pocket called, or none for a safety or the fallback; p: the chance the "
+        if match:
+            won = f"{rack['winner']} wins ({rack['reason']})" if rack["winner"] else f"undecided ({rack['reason']})"
+            print(f"rack {k} (seed {rack['seed']}): {rack['breaker']} breaks; {won} in "
+                  f"{len(rack['shots'])} shots, {rack['visits']} visit(s)"
+                  f"{', a break-and-run' if rack['break_and_run'] else ''}")
+        else:
+            print(f"rack {k} (seed {rack['seed']}): {'cleared' if rack['cleared'] else 'not cleared'} in "
+                  f"{len(rack['shots'])} shots, {rack['visits']} visit(s){', a run-out' if rack['run_out'] else ''}")
+        print("  (" + ("player: who shot; " if match else "") +
+              "call: the ball and pocket called, or none for a safety or the fallback; p: the chance the "
               "choice gave it; potted: the balls that dropped, * when the called one did; ms: the "
               "decision's time; est mm: the estimator's position error at the decision, rms)")
-        print(f"{'shot':>4} {'visit':>5} {'call':>18} {'p':>5} {'potted':>10} {'foul':>24} {'ms':>6} {'est mm':>6}")
+        who = f" {'player':>16}" if match else ""
+        print(f"{'shot':>4} {'visit':>5}{who} {'call':>18} {'p':>5} {'potted':>10} {'foul':>24} {'ms':>6} {'est mm':>6}")
         for shot in rack["shots"]:
             c = shot.get("called")
             call = ("break" if shot["break"] else f"{c['ball']} {c['pocket']}" if c else
-                    "none" if shot["status"] == "ok" else shot["status"])
+                    "safety" if shot.get("safety") else "none" if shot["status"] == "ok" else shot["status"])
             p = f"{c['predicted']:.2f}" if c else ""
             potted = ",".join(str(b) for b in shot["potted"]) + (" *" if shot["called_potted"] else "")
             hand = " (in hand)" if shot["ball_in_hand"] else ""
-            print(f"{shot['number']:>4} {shot['visit']:>5} {call + hand:>18} {p:>5} {potted:>10} "
+            who = f" {shot['player']:>16}" if match else ""
+            print(f"{shot['number']:>4} {shot['visit']:>5}{who} {call + hand:>18} {p:>5} {potted:>10} "
                   f"{shot.get('foul_reason', ''):>24} {shot['decision_ms']:6.0f} "
                   f"{shot['estimator']['position_rms_mm']:6.2f}")
     g = game["summary"]
@@ -384,6 +409,11 @@ if game:
           f"{g['median_decision_ms']:.0f} ms median ({g['max_decision_ms']:.0f} max); the estimator "
           f"{g['median_position_rms_mm']:.2f} mm rms median at the decisions ({g['max_position_error_mm']:.2f} "
           f"max), {g['misidentified_ball_decisions']} balls misidentified in {g['decisions']} decisions")
+    for p in game.get("players", []):
+        lo, hi = p["interval95"]
+        print(f"{p['name']}: {p['racks_won']} racks won of {g['racks']} ({100 * p['win_rate']:.0f} %, "
+              f"95 % {lo:.2f} to {hi:.2f}), {p['break_and_runs']} break-and-runs, {p['pots']} pots "
+              f"of {p['attempts']} attempts, {p['safeties']} safeties, {p['fouls']} fouls")
 if not pots and not game:
     print(f"{'shot':>4} {'target':>16} {'final':>16} {'miss mm':>9} {'plan ms':>8}  status")
 for i, shot in enumerate([] if pots or game else s["shots"]):

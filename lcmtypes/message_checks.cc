@@ -241,8 +241,8 @@ std::string CheckPotRequest(const shot_request_t& m) {
 
 // A choice: known rules, ball in hand a flag.
 std::string CheckChoiceRequest(const shot_request_t& m) {
-  if (m.rules != shot_request_t::RULES_ANY && m.rules != shot_request_t::RULES_NINE_BALL) {
-    return "unknown rules " + std::to_string(m.rules) + " (0-1, see shot_request_t)";
+  if (m.rules < shot_request_t::RULES_ANY || m.rules > shot_request_t::RULES_EIGHT_BALL_STRIPES) {
+    return "unknown rules " + std::to_string(m.rules) + " (0-4, see shot_request_t)";
   }
   if (m.ball_in_hand != 0 && m.ball_in_hand != 1) {
     return "ball_in_hand is " + std::to_string(m.ball_in_hand) + ", not 0 or 1";
@@ -266,9 +266,11 @@ std::string CheckPotCommand(const cue_command_t& m) {
     return command + " has has_cue_placement " + std::to_string(m.has_cue_placement) +
            ", not 0 or 1";
   }
-  if (m.mode != shot_request_t::MODE_TO_POINT && m.mode != shot_request_t::MODE_POT &&
-      m.mode != shot_request_t::MODE_CHOOSE) {
+  if (m.mode < shot_request_t::MODE_TO_POINT || m.mode > shot_request_t::MODE_BREAK) {
     return command + " has an unknown mode " + std::to_string(m.mode);
+  }
+  if (m.safety != 0 && m.safety != 1) {
+    return command + " has safety " + std::to_string(m.safety) + ", not 0 or 1";
   }
   if (!KnownPotKind(m.kind)) return command + " has an unknown kind " + std::to_string(m.kind);
   // A decoded message has its counts by construction; one about to be sent must have them too,
@@ -365,8 +367,13 @@ std::string Check(const shot_request_t& m) {
   }
   if (m.mode == shot_request_t::MODE_POT) return CheckPotRequest(m);
   if (m.mode == shot_request_t::MODE_CHOOSE) return CheckChoiceRequest(m);
-  if (m.mode != shot_request_t::MODE_TO_POINT) {
-    return "unknown mode " + std::to_string(m.mode) + " (0-2, see shot_request_t)";
+  // A break is a game's: nine-ball's or eight-ball's rack.
+  if (m.mode == shot_request_t::MODE_BREAK && m.rules != shot_request_t::RULES_NINE_BALL &&
+      m.rules != shot_request_t::RULES_EIGHT_BALL) {
+    return "a break under rules " + std::to_string(m.rules) + " (nine-ball 1 or eight-ball 2)";
+  }
+  if (m.mode < shot_request_t::MODE_TO_POINT || m.mode > shot_request_t::MODE_BREAK) {
+    return "unknown mode " + std::to_string(m.mode) + " (0-3, see shot_request_t)";
   }
   return {};
 }

@@ -169,21 +169,22 @@ TEST(MessageChecks, CountsThatLieAreRefusedBeforeAnythingIsAllocated) {
   cue_command_t out;
   EXPECT_NE(Decode(command.data(), command.size(), out).find("num_path_points"), std::string::npos);
   command = Encode(Command());
-  const std::size_t reason_length = command.size() - 5;  // an empty reason: length 1, then NUL
+  // An empty reason (length 1, then NUL), then the safety flag's byte.
+  const std::size_t reason_length = command.size() - 6;
   for (std::uint32_t length : {0u, 0xffffffffu, 2u, 1000u}) {
     PutInt32(command, reason_length, length);
     EXPECT_NE(Decode(command.data(), command.size(), out).find("reason"), std::string::npos)
         << length;
   }
   PutInt32(command, reason_length, 1);
-  command.back() = 'x';  // not terminated
+  command[command.size() - 2] = 'x';  // not terminated
   EXPECT_NE(Decode(command.data(), command.size(), out).find("not terminated"), std::string::npos);
 
   // A pot's ball paths: their count, and each path's, after the pocket. Two paths of a cue
   // command with an empty reason end 2 (points) x 16 + 8, 3 x 16 + 8, 33 (a choice's
-  // probability, its error and the cue placement), 1 (status) and 5 bytes (reason) before the
-  // end.
-  const std::size_t pot_tail = 2 * 16 + 8 + 3 * 16 + 8 + 33 + 1 + 5;
+  // probability, its error and the cue placement), 1 (status), 5 (reason) and 1 byte (safety)
+  // before the end.
+  const std::size_t pot_tail = 2 * 16 + 8 + 3 * 16 + 8 + 33 + 1 + 5 + 1;
   const std::size_t ball_paths = Encode(PotCommand()).size() - pot_tail - 4;
   for (std::uint32_t count : {0xffffffffu, 65u, 0x40000000u}) {
     command = Encode(PotCommand());
@@ -324,7 +325,18 @@ TEST(MessageChecks, PotRequestMeaning) {
   EXPECT_NE(refused([](shot_request_t& m) { m.cue_radius = kNaN; }), "");
   EXPECT_NE(refused([](shot_request_t& m) { m.cue_radius = -0.1; }), "");
   EXPECT_NE(refused([](shot_request_t& m) { m.has_cue_target = 2; }), "");
-  EXPECT_NE(refused([](shot_request_t& m) { m.mode = 3; }).find("mode"), std::string::npos);
+  EXPECT_NE(refused([](shot_request_t& m) { m.mode = 4; }).find("mode"), std::string::npos);
+  // A break is nine-ball's or eight-ball's.
+  EXPECT_EQ(refused([](shot_request_t& m) {
+              m.mode = shot_request_t::MODE_BREAK;
+              m.rules = shot_request_t::RULES_EIGHT_BALL;
+            }),
+            "");
+  EXPECT_NE(refused([](shot_request_t& m) {
+              m.mode = shot_request_t::MODE_BREAK;
+              m.rules = shot_request_t::RULES_EIGHT_BALL_SOLIDS;
+            }).find("break"),
+            std::string::npos);
   // A choice: rules and ball in hand known, the pot's fields unread.
   EXPECT_EQ(refused([](shot_request_t& m) {
               m.mode = shot_request_t::MODE_CHOOSE;
@@ -333,9 +345,15 @@ TEST(MessageChecks, PotRequestMeaning) {
               m.pocket = "";
             }),
             "");
+  EXPECT_EQ(refused([](shot_request_t& m) {
+              m.mode = shot_request_t::MODE_CHOOSE;
+              m.rules = shot_request_t::RULES_EIGHT_BALL_STRIPES;
+              m.player = "easiest-looking";
+            }),
+            "");
   EXPECT_NE(refused([](shot_request_t& m) {
               m.mode = shot_request_t::MODE_CHOOSE;
-              m.rules = 2;
+              m.rules = 5;
             }).find("rules"),
             std::string::npos);
   EXPECT_NE(refused([](shot_request_t& m) {
@@ -435,7 +453,8 @@ TEST(MessageChecks, PotCommandMeaning) {
               m.num_ball_paths = static_cast<int32_t>(m.ball_paths.size());
             }),
             "");
-  EXPECT_NE(refused([](cue_command_t& m) { m.mode = 3; }).find("mode"), std::string::npos);
+  EXPECT_NE(refused([](cue_command_t& m) { m.mode = 4; }).find("mode"), std::string::npos);
+  EXPECT_NE(refused([](cue_command_t& m) { m.safety = 2; }).find("safety"), std::string::npos);
   // An ok pot says which kind it is, and its windows are windows.
   EXPECT_NE(refused([](cue_command_t& m) { m.kind = shot_request_t::KIND_ANY; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.margin_deg[0] = -0.1; }), "");

@@ -1,5 +1,7 @@
 #include "lcmtypes/names.h"
 
+#include <iterator>
+
 #include "lcmtypes/billiard/cue_command_t.hpp"
 #include "lcmtypes/billiard/shot_request_t.hpp"
 
@@ -55,6 +57,26 @@ std::string PotKindName(std::int8_t kind) {
       return "curve";
   }
   return "kind " + std::to_string(kind);
+}
+
+namespace {
+
+// The rulesets by their RULES_* constant, in its order.
+constexpr const char* kShotRules[] = {"any", "nine-ball", "eight-ball", "eight-ball-solids",
+                                      "eight-ball-stripes"};
+static_assert(shot_request_t::RULES_EIGHT_BALL_STRIPES + 1 == std::size(kShotRules));
+
+}  // namespace
+
+std::string ShotRulesName(std::int8_t rules) {
+  return rules >= 0 && rules < static_cast<int>(std::size(kShotRules)) ? kShotRules[rules] : "";
+}
+
+std::int8_t ShotRulesCode(const std::string& name) {
+  for (std::size_t code = 0; code < std::size(kShotRules); ++code) {
+    if (name == kShotRules[code]) return static_cast<std::int8_t>(code);
+  }
+  return -1;
 }
 
 }  // namespace billiard::messages

@@ -33,4 +33,10 @@ std::string CueCommandStatusName(std::int8_t status);
 // "kind N" for a value the message does not define.
 std::string PotKindName(std::int8_t kind);
 
+// "any", "nine-ball", "eight-ball", "eight-ball-solids", "eight-ball-stripes" (shot_request_t's
+// RULES_*, as sim/rules names the rulesets); "" for a value the message does not define.
+std::string ShotRulesName(std::int8_t rules);
+// The RULES_* constant of one of those names, -1 for any other.
+std::int8_t ShotRulesCode(const std::string& name);
+
 }  // namespace billiard::messages

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "planner/game/wilson.h"
+#include "sim/rules/match_standing.h"
 
 namespace billiard::game {
 
@@ -27,19 +27,12 @@ nlohmann::json DecisionJson(const std::vector<double>& us) {
 }
 
 nlohmann::json PlayerJson(const PlayerTally& p, int racks) {
-  const Interval interval = WilsonInterval(p.racks_won, racks);
-  return {{"name", p.name},
-          {"racks_won", p.racks_won},
-          {"win_rate", racks ? static_cast<double>(p.racks_won) / racks : 0.0},
-          {"interval95", {interval.lo, interval.hi}},
-          {"break_and_runs", p.break_and_runs},
-          {"pots", p.pots},
-          {"attempts", p.attempts},
-          {"safeties", p.safeties},
-          {"safeties_that_worked", p.safeties_that_worked},
-          {"fouls", p.fouls},
-          {"foul_reasons", p.foul_reasons},
-          {"decision_us", DecisionJson(p.decisions_us)}};
+  nlohmann::json j = rules::MatchPlayerJson(
+      p.name, {p.racks_won, p.break_and_runs, p.attempts, p.pots, p.safeties, p.fouls}, racks);
+  j["safeties_that_worked"] = p.safeties_that_worked;
+  j["foul_reasons"] = p.foul_reasons;
+  j["decision_us"] = DecisionJson(p.decisions_us);
+  return j;
 }
 
 }  // namespace

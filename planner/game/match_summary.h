@@ -7,8 +7,10 @@
 // add up with AddRack to the figures of one process playing them in order, as PlayMatch does
 // with the same AddRack: one summing code for both.
 //
-// A player's win rate carries the Wilson (1927) score interval (wilson.h); the decision times
-// their median and 95th percentile by nearest rank (Quantile), each player's and everyone's.
+// Each player is listed by rules::MatchPlayerJson (sim/rules/match_standing.h: the win rate with
+// its Wilson (1927) interval), as the loop's match lists them, with what only a simulated match
+// knows beside: the safeties that worked, the fouls by reason, and the decision times' median and
+// 95th percentile by nearest rank (Quantile), each player's and everyone's.
 //
 // Module: billiard::game.
 #pragma once

@@ -6,7 +6,7 @@
 #include <numeric>
 #include <vector>
 
-#include "planner/game/wilson.h"
+#include "sim/batch/wilson.h"
 #include "planner/players/players.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
@@ -69,7 +69,7 @@ TEST(MatchJsonTest, RatesIntervalsAndDecisionTimes) {
   EXPECT_EQ(j["undecided"], 1);
   EXPECT_EQ(j["players"][0]["name"], "ours");
   EXPECT_DOUBLE_EQ(j["players"][0]["win_rate"].get<double>(), 0.7);
-  const Interval wilson = WilsonInterval(7, 10);
+  const batch::Interval wilson = batch::WilsonInterval(7, 10);
   EXPECT_DOUBLE_EQ(j["players"][0]["interval95"][0].get<double>(), wilson.lo);
   EXPECT_DOUBLE_EQ(j["players"][0]["interval95"][1].get<double>(), wilson.hi);
   EXPECT_DOUBLE_EQ(j["decision_us"]["median"].get<double>(), 50.0);

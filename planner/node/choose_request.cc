@@ -11,6 +11,7 @@
 
 #include "planner/choice/monte_carlo.h"
 #include "planner/node/ball_numbers.h"
+#include "planner/node/break_request.h"
 #include "planner/node/command_writing.h"
 #include "planner/node/scene_at_rest.h"
 #include "sim/rules/rules.h"
@@ -48,8 +49,7 @@ std::optional<std::vector<table::SceneBall>> ChoiceScene(
 // The choice's options for `q`: its rules, its samples seeded by its id, the node's pot options.
 choice::ChoiceOptions ChoiceOptionsFor(const shot_request_t& q, const PlannerNodeOptions& node) {
   choice::ChoiceOptions options = node.choice;
-  options.rules =
-      q.rules == shot_request_t::RULES_NINE_BALL ? rules::Rules::kNineBall : rules::Rules::kAny;
+  options.rules = RulesOf(q);
   options.seed = choice::SampleSeed(node.choice.seed, static_cast<std::uint64_t>(q.request_id));
   options.pot = node.pot;
   return options;
@@ -74,7 +74,8 @@ cue_command_t WriteChoice(const choice::ChoiceResult& result,
     c.start[0] = c.cue_placement[0] = result.cue_placement->x();
     c.start[1] = c.cue_placement[1] = result.cue_placement->y();
   }
-  // A safety calls nothing: its stroke is written as the fallback's is.
+  // A safety calls nothing: its stroke is written as the fallback's is, and said to be one.
+  c.safety = result.safety ? 1 : 0;
   if (const choice::Candidate* chosen = result.safety ? nullptr : result.chosen()) {
     WritePot(chosen->plan, message_id, &c);
     c.object_ball_id = message_id.at(chosen->plan.ball);
@@ -82,13 +83,7 @@ cue_command_t WriteChoice(const choice::ChoiceResult& result,
     c.success_probability = chosen->reported().probability;
     c.probability_stderr = chosen->reported().stderr_;
   } else {  // a safety, or kNoPlan's fallback, which at least hits the first legal ball
-    const physics::CueStroke& s = *result.stroke();
-    c.cue_speed = s.speed;
-    c.heading = s.heading;
-    c.tip_side = s.tip_side;
-    c.tip_height = s.tip_height;
-    c.elevation = s.elevation;
-    c.status = cue_command_t::STATUS_OK;
+    WriteStroke(*result.stroke(), &c);
   }
   c.solve_us = result.decision_us;
   c.iterations = result.simulations;

@@ -92,6 +92,15 @@ void WritePot(const pot::PotPlan& plan, const std::unordered_map<int, int32_t>& 
   c->num_ball_paths = static_cast<int32_t>(c->ball_paths.size());
 }
 
+void WriteStroke(const physics::CueStroke& stroke, cue_command_t* c) {
+  c->cue_speed = stroke.speed;
+  c->heading = stroke.heading;
+  c->tip_side = stroke.tip_side;
+  c->tip_height = stroke.tip_height;
+  c->elevation = stroke.elevation;
+  c->status = cue_command_t::STATUS_OK;
+}
+
 cue_command_t Sendable(const cue_command_t& c) {
   const std::string why = messages::Check(c);
   if (why.empty()) return c;

@@ -12,6 +12,7 @@
 #include "lcmtypes/billiard/shot_request_t.hpp"
 #include "planner/pot/pot_planner.h"
 #include "planner/shot_planner.h"
+#include "sim/physics/cue_strike.h"
 
 namespace billiard::planner_node {
 
@@ -32,6 +33,10 @@ void WritePlan(const planner::ShotPlan& plan, cue_command_t* c);
 // the scene's ids). The stroke, like a point plan's, only with an ok plan.
 void WritePot(const pot::PotPlan& plan, const std::unordered_map<int, int32_t>& message_id,
               cue_command_t* c);
+
+// A stroke decided without a plan to write (a safety, a choice's fallback, a break) into the
+// command, which it makes ok.
+void WriteStroke(const physics::CueStroke& stroke, cue_command_t* c);
 
 // What goes out must pass the receiver's checks, or the answer is lost: a refusal keeps its
 // status without the measurements, and an ok that fails them is no ok.

@@ -7,10 +7,12 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 
 #include "lcmtypes/message_checks.h"
 #include "lcmtypes/names.h"
+#include "planner/node/break_request.h"
 #include "planner/node/choose_request.h"
 #include "planner/players/players.h"
 #include "planner/node/command_writing.h"
@@ -34,6 +36,7 @@ std::string Describe(const cue_command_t& c) {
   if (c.mode == shot_request_t::MODE_CHOOSE) {
     line << ", chose ball " << c.object_ball_id << " in " << c.pocket << " at p "
          << c.success_probability;
+    if (c.safety) line << " (a safety)";
     if (c.has_cue_placement) {
       line << ", the cue ball placed at (" << c.cue_placement[0] << ", " << c.cue_placement[1]
            << ")";
@@ -106,19 +109,35 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   if (q.mode == shot_request_t::MODE_POT) {
     return AnswerPot(q, state, *latest_table_, table_, params_, options_, std::move(c));
   }
+  if (q.mode == shot_request_t::MODE_BREAK) {
+    return AnswerBreak(q, state, *latest_table_, table_, params_, options_, std::move(c));
+  }
   if (q.mode == shot_request_t::MODE_CHOOSE) {
+    const players::Player* player = nullptr;
+    try {
+      player = &PlayerFor(q);
+    } catch (const std::invalid_argument& e) {  // MakePlayer's: the name and the known ones
+      return Refusal(c, cue_command_t::STATUS_INVALID, e.what());
+    }
     if (!choice_pool_) choice_pool_ = std::make_unique<batch::ThreadPool>(options_.choice_threads);
     PlannerNodeOptions options = options_;
     options.choice.noise = noise_learner_.noise();
-    return AnswerChoice(q, state, *latest_table_, table_, params_, options, *player_,
+    return AnswerChoice(q, state, *latest_table_, table_, params_, options, *player,
                         *choice_pool_, std::move(c));
   }
   return AnswerToPoint(q, state, params_, options_.planner, std::move(c));
 }
 
+const players::Player& PlannerNode::PlayerFor(const shot_request_t& q) const {
+  if (q.player.empty()) return *player_;
+  auto made = players_.find(q.player);
+  if (made == players_.end()) made = players_.emplace(q.player, players::MakePlayer(q.player)).first;
+  return *made->second;
+}
+
 std::vector<const ball_state_t*> PlannerNode::Candidates(const shot_request_t& q) const {
   std::vector<const ball_state_t*> balls;
-  if (q.mode == shot_request_t::MODE_POT || q.mode == shot_request_t::MODE_CHOOSE) {
+  if (q.mode != shot_request_t::MODE_TO_POINT) {
     if (latest_table_) balls = BallsOf(*latest_table_);
   } else {
     for (const auto& [id, b] : balls_) balls.push_back(&b);
@@ -150,7 +169,9 @@ const ball_state_t* PlannerNode::BallFor(const shot_request_t& q) const {
   if (latest_table_) seen = BallsOf(*latest_table_);
   // A choice is made on a whole rack, which has one cue ball: the likeliest, however unsure, or
   // when the estimator names none now, the ball it named the cue ball last.
-  if (q.mode != shot_request_t::MODE_CHOOSE) return Named(seen, q.ball_id, q.ball_class);
+  if (q.mode != shot_request_t::MODE_CHOOSE && q.mode != shot_request_t::MODE_BREAK) {
+    return Named(seen, q.ball_id, q.ball_class);
+  }
   if (const ball_state_t* likeliest = Named(seen, q.ball_id, q.ball_class, 0.0f)) return likeliest;
   const auto last = last_of_class_.find(q.ball_class);
   if (last == last_of_class_.end()) return nullptr;

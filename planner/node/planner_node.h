@@ -1,6 +1,8 @@
 // The planner node: answers every SHOT_REQUEST with a CUE_COMMAND planned from the latest
 // TABLE_STATE: one ball to a point (MODE_TO_POINT, to_point_request.h), a pot (MODE_POT,
-// pot_request.h) or the pot it chooses to play (MODE_CHOOSE, choose_request.h). This is its
+// pot_request.h), the pot it chooses to play (MODE_CHOOSE, choose_request.h; the player the
+// request names decides, each made once and kept) or a game's break (MODE_BREAK,
+// break_request.h). This is its
 // message loop: the table states kept, the requests queued and answered, the ball each names
 // (named_ball.h), a repeated request answered from memory, its health on NODE_STATUS.
 //
@@ -164,8 +166,13 @@ class PlannerNode {
   // Counts the table state `state` toward the table at rest (states_at_rest_, last_motion_).
   void NoteMotion(const table_state_t& state);
 
-  // The balls a request's balls are looked for among: a pot's, the latest table state's; a
-  // point request's, the latest state of every ball.
+  // Who decides a MODE_CHOOSE request: the player it names (made by name at its first request
+  // and kept, players::MakePlayer), the node's own (options_.player) when it names none; throws
+  // std::invalid_argument for a name no player has.
+  const players::Player& PlayerFor(const shot_request_t& q) const;
+
+  // The balls a request's balls are looked for among: a pot's, a choice's or a break's, the
+  // latest table state's; a point request's, the latest state of every ball.
   std::vector<const ball_state_t*> Candidates(const shot_request_t& q) const;
 
   // Raw handlers: the node decodes the payload itself so that a failure is logged its way.
@@ -207,6 +214,8 @@ class PlannerNode {
   std::unique_ptr<batch::ThreadPool> fit_pool_;
   mutable std::unique_ptr<batch::ThreadPool> choice_pool_;  // made at the first choice
   std::unique_ptr<players::Player> player_;                 // who chooses (options_.player)
+  // The players requests named (a match's two), by name, made at their first request.
+  mutable std::map<std::string, std::unique_ptr<players::Player>> players_;
   NoiseLearner noise_learner_;                              // options_.learn_noise
   static constexpr double kLongestShot = 60.0;              // [s]
   static constexpr double kShotThinning = 0.002;            // [m], as the real recordings

@@ -21,10 +21,6 @@ namespace billiard::table_sim_node {
 
 namespace {
 
-// A new rack's layout is shown this many settle times before its first shot: longer than the
-// estimator coasts the last rack's tracks (estimator::TrackerOptions::max_coast).
-constexpr int kNewLayoutSettles = 4;
-
 // The called ball: the truth ball nearest the track the planner named, `called` where the
 // estimate has no such track.
 int CalledBall(const table_state_t& estimate, std::int32_t track_id,
@@ -59,10 +55,12 @@ std::vector<table::SceneBall> WithCueBallPlaced(const table::TableGeometry& geom
 }
 
 // What the table did with a game shot: the balls left at rest, the object balls dropped
-// (ascending), whether the cue ball dropped, and whether the ball `called` dropped in `pocket`.
+// (ascending) and the pocket of each, whether the cue ball dropped, and whether the ball
+// `called` dropped in `pocket`.
 struct TableOutcome {
   std::vector<table::SceneBall> rest;
   std::vector<int> potted;
+  std::vector<std::string> pockets;
   bool scratch = false;
   bool called_potted = false;
 };
@@ -70,6 +68,7 @@ struct TableOutcome {
 TableOutcome OutcomeOf(const table::TableSimulation& sim, const table::TableGeometry& geometry,
                        double radius, int called, const std::string& called_pocket) {
   TableOutcome outcome;
+  std::vector<std::pair<int, std::string>> dropped;
   for (std::size_t i = 0; i < sim.ball_count(); ++i) {
     std::optional<std::string> pocket = sim.pocket(i);
     // A ball come to rest over a pocket's mouth hangs there in the model, where a real one
@@ -81,11 +80,15 @@ TableOutcome OutcomeOf(const table::TableSimulation& sim, const table::TableGeom
     } else if (sim.id(i) == kCueBall) {
       outcome.scratch = true;
     } else {
-      outcome.potted.push_back(sim.id(i));
+      dropped.emplace_back(sim.id(i), *pocket);
       if (sim.id(i) == called && *pocket == called_pocket) outcome.called_potted = true;
     }
   }
-  std::sort(outcome.potted.begin(), outcome.potted.end());
+  std::sort(dropped.begin(), dropped.end());
+  for (const auto& [ball, pocket] : dropped) {
+    outcome.potted.push_back(ball);
+    outcome.pockets.push_back(pocket);
+  }
   return outcome;
 }
 
@@ -131,23 +134,33 @@ void TableSimNode::ScoreEstimate(const std::vector<table::SceneBall>& balls, Gam
   if (tracked > 0) shot.position_rms_mm = 1e3 * std::sqrt(sum / tracked);
 }
 
-cue_command_t TableSimNode::RequestGameShot(int id, const GameShot& shot,
-                                            const std::vector<table::SceneBall>& balls) {
-  ShotResult asked;
-  if (shot.break_shot) return RequestBreak(id, balls, asked);
+shot_request_t ChoiceRequest(int8_t rules, const GameShot& shot, const std::string& player) {
   shot_request_t ask{};
   ask.ball_id = shot_request_t::BALL_BY_CLASS;
   ask.ball_class = ball_state_t::CLASS_CUE;
   ask.mode = shot_request_t::MODE_CHOOSE;
-  ask.rules = shot_request_t::RULES_NINE_BALL;
+  ask.rules = rules;
   ask.ball_in_hand = shot.ball_in_hand ? 1 : 0;
+  ask.player = player;
+  return ask;
+}
+
+cue_command_t TableSimNode::RequestGameShot(int id, const GameShot& shot,
+                                            const shot_request_t& ask,
+                                            const std::vector<table::SceneBall>& balls) {
+  ShotResult asked;
+  if (shot.break_shot && ask.mode != shot_request_t::MODE_BREAK) {
+    return RequestBreak(id, balls, asked);
+  }
   return Request(id, balls, Find(balls, kCueBall)->state.head<2>(), ask, asked);
 }
 
-GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeometry& geometry,
+GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const shot_request_t& ask,
+                                    const rules::Constraints& constraints, const Judge& judge,
+                                    const table::TableGeometry& geometry,
                                     std::vector<table::SceneBall>& balls, bool* rack_over) {
   const double radius = params_.ball.radius;
-  const cue_command_t command = RequestGameShot(id, shot, balls);
+  const cue_command_t command = RequestGameShot(id, shot, ask, balls);
   ScoreEstimate(balls, shot);
   shot.status = messages::CueCommandStatusName(command.status);
   shot.reason = command.reason;
@@ -162,10 +175,11 @@ GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeo
     shot.kind = messages::PotKindName(command.kind);
     shot.predicted = command.success_probability;
   }
-  const rules::Ruleset& nine_ball = rules::RulesetOf(rules::Rules::kNineBall);
+  shot.safety = command.safety != 0;
   rules::Shot played;
-  played.constraints = {shot.ball_in_hand, nine_ball.LegalTargets(balls)};
+  played.constraints = constraints;
   played.break_shot = shot.break_shot;
+  played.call = {shot.called, shot.pocket};
   if (command.has_cue_placement) {
     Eigen::Vector2d placed;
     balls = WithCueBallPlaced(geometry, radius, balls,
@@ -179,9 +193,10 @@ GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const table::TableGeo
   played.first_contact = shot.first_contact;
   played.to_rail_after_contact = table::BallsToRailAfterFirstContact(sim.events(), kCueBall);
   played.potted = outcome.potted;
+  played.pockets = outcome.pockets;
   played.scratch = outcome.scratch;
   played.object_balls_left = static_cast<int>(rules::ObjectBalls(outcome.rest).size());
-  const rules::Judgement judged = nine_ball.Judge(geometry, played);
+  const rules::Judgement judged = judge(played);
   shot.foul = judged.foul;
   shot.foul_reason = judged.foul_reason;
   shot.called_potted = outcome.called_potted && judged.legal();
@@ -209,6 +224,10 @@ GameResult TableSimNode::PlayRack(int rack, const table::TableGeometry& geometry
   for (int k = 0; k < kNewLayoutSettles; ++k) ShowAtRest(balls);
   bool ball_in_hand = drill, rack_over = false;
   int visit = 1;
+  // Alone at the table, every shot judged by nine-ball's ruleset: the visit's end is the next
+  // one's start, and nobody's fouls in a row end the rack.
+  const rules::Ruleset& nine_ball = rules::RulesetOf(rules::Rules::kNineBall);
+  const Judge judge = [&](const rules::Shot& s) { return nine_ball.Judge(geometry, s); };
   // shot_limit bounds the attempts: a request the planner held past its wait for the table to
   // rest (its retries too) played nothing, so it is neither a shot nor a visit.
   for (int n = 0; n < options_.shot_limit; ++n) {
@@ -217,7 +236,9 @@ GameResult TableSimNode::PlayRack(int rack, const table::TableGeometry& geometry
     shot.visit = visit;
     shot.break_shot = !drill && game.shots.empty();
     shot.ball_in_hand = ball_in_hand;
-    shot = PlayGameShot((*id)++, shot, geometry, balls, &rack_over);
+    shot = PlayGameShot((*id)++, shot, ChoiceRequest(shot_request_t::RULES_NINE_BALL, shot, ""),
+                        {ball_in_hand, nine_ball.LegalTargets(balls)}, judge, geometry, balls,
+                        &rack_over);
     if (shot.status == messages::CueCommandStatusName(cue_command_t::STATUS_NOT_AT_REST)) {
       health_.Count("shot_not_at_rest");
       continue;
@@ -243,7 +264,10 @@ std::vector<GameResult> TableSimNode::RunGame() {
   health_.Publish(lcm_);
   std::vector<GameResult> games;
   int id = 0;  // request ids, unique over the session
-  for (int rack = 0; rack < options_.racks; ++rack) games.push_back(PlayRack(rack, geometry, &id));
+  for (int rack = 0; rack < options_.racks; ++rack) {
+    games.push_back(options_.players.empty() ? PlayRack(rack, geometry, &id)
+                                             : PlayMatchRack(rack, geometry, &id));
+  }
   health_.PublishIfDue(lcm_);
   return games;
 }

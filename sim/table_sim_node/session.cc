@@ -33,6 +33,16 @@ PotShot ParsePot(const std::string& text) {
   return pot;
 }
 
+// "A,B": a match's two players by name (the planner knows them, or refuses them).
+std::vector<std::string> ParsePlayers(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  if (comma == 0 || comma == std::string::npos || comma + 1 == text.size() ||
+      text.find(',', comma + 1) != std::string::npos) {
+    throw std::invalid_argument("--players '" + text + "' is not two names, A,B");
+  }
+  return {text.substr(0, comma), text.substr(comma + 1)};
+}
+
 // The table's own set of --plant-params: the same table and balls as the nodes', which the camera
 // and the estimator are made for; only the physics may differ.
 physics::ModelParameters PlantParameters(const std::string& name_or_path,
@@ -98,10 +108,15 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
                  "--scene: the cue ball's speed where it meets the first ball [m/s]")
       ->capture_default_str();
   app.add_option("--game", options.game,
-                 "A game instead: nine-ball (the rack of --seed broken, then played) or drill "
-                 "(a seeded nine-ball layout from ball in hand), under nine-ball rules, the "
+                 "A game instead: nine-ball (the rack of --seed broken, then played), eight-ball "
+                 "(a match, --players) or drill (a seeded nine-ball layout from ball in hand), the "
                  "planner choosing every shot")
-      ->check(CLI::IsMember({"nine-ball", "drill"}));
+      ->check(CLI::IsMember({"nine-ball", "eight-ball", "drill"}));
+  app.add_option("--players", line->players,
+                 "--game nine-ball or eight-ball: a match between two players, A,B (ours, "
+                 "ours-no-safety, no-lookahead, easiest-looking), the planner answering for "
+                 "both; A breaks the first rack (eight-ball without it: ours,ours)")
+      ->type_name("A,B");
   app.add_option("--racks", options.racks, "--game: racks played, seeds --seed, --seed + 1, ...")
       ->capture_default_str();
   app.add_option("--shot-limit", options.shot_limit, "--game: the most shots of a rack")
@@ -127,6 +142,11 @@ TableSimOptions SessionOptions(const SessionCommandLine& line) {
     throw std::invalid_argument("the fault probabilities add up to more than 1");
   }
   for (const std::string& pot : line.pots) options.pots.push_back(ParsePot(pot));
+  if (!line.players.empty()) options.players = ParsePlayers(line.players);
+  if (options.game == "eight-ball" && options.players.empty()) options.players = {"ours", "ours"};
+  if (!options.players.empty() && options.game != "nine-ball" && options.game != "eight-ball") {
+    throw std::invalid_argument("--players plays a match: with --game nine-ball or eight-ball");
+  }
   if (!options.pots.empty() && options.scene.empty()) {
     throw std::invalid_argument("--pot needs a --scene to pot in");
   }
@@ -187,6 +207,8 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
     }
   } catch (const PeerMismatch& e) {
     return fail(e.what(), 3);
+  } catch (const UnknownPlayer& e) {
+    return fail("--players: the planner " + std::string(e.what()), 2);
   } catch (const std::invalid_argument& e) {  // a scene that does not load or fit
     return fail(e.what(), options.scene.empty() ? 1 : 2);
   } catch (const std::exception& e) {
@@ -196,7 +218,7 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json summary = SessionSummary(shots, node.health().TakeStatus(), wall_s);
   if (scene) summary["scene"] = SceneSummary(*scene, options.scene);
-  if (games) summary["game"] = GameSummary(*games, options.game);
+  if (games) summary["game"] = GameSummary(*games, options.game, options.players);
   if (options.plant) summary["plant"] = params::ParameterSetLabel(*options.plant);
   if (!line.plant_noise.empty()) summary["plant_noise"] = options.noise.name;
   std::cout << summary.dump() << std::endl;

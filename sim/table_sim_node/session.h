@@ -30,6 +30,7 @@ struct SessionCommandLine {
   std::string plant_noise;
   bool realtime = false;
   std::vector<std::string> pots;  // --pot K:P, in order
+  std::string players;            // --players A,B
   TableSimOptions options;
 };
 
@@ -42,7 +43,8 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line);
 
 // The options of a parsed command line; throws std::invalid_argument with a one-line reason when
 // they do not make a session (non-positive counts or rates, fault probabilities above 1, a --pot
-// that is not K:P with K a ball id, or one without --scene).
+// that is not K:P with K a ball id, or one without --scene, --players that are not two names or
+// without a game of two players). Eight-ball without --players is ours against ours.
 TableSimOptions SessionOptions(const SessionCommandLine& line);
 
 // The simulated overhead camera of `table`.
@@ -55,7 +57,8 @@ using InProcessNodes = std::function<std::function<bool()>(
 
 // Runs the session of a parsed command line and prints its summary (SessionSummary) as one JSON
 // object on stdout. Returns the exit status: 0; 1 when LCM fails or a node does not answer in
-// time; 2 for options that make no session (the reason on stderr, prefixed by `name`); 3 when
+// time; 2 for options that make no session (the reason on stderr, prefixed by `name`; also a
+// match's player the planner does not know); 3 when
 // the estimator or the planner runs other physics or another version (the session refused); 130 when stopped by
 // SIGINT or SIGTERM. With options.scene, the whole-table session (RunScene), its summary under
 // "scene"; a scene that does not load or fit is exit 2.

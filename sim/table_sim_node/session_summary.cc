@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/rules/match_standing.h"
 #include "sim/rules/ruleset.h"
 
 namespace billiard::table_sim_node {
@@ -37,6 +38,7 @@ nlohmann::json GameShotJson(const GameShot& s) {
   if (!s.reason.empty()) shot["reason"] = s.reason;
   if (s.foul) shot["foul_reason"] = s.foul_reason;
   if (s.cue_placement) shot["cue_placement"] = {s.cue_placement->x(), s.cue_placement->y()};
+  if (s.safety) shot["safety"] = true;
   if (s.called >= 0) {
     shot["called"] = {
         {"ball", s.called}, {"pocket", s.pocket}, {"kind", s.kind}, {"predicted", s.predicted}};
@@ -46,6 +48,30 @@ nlohmann::json GameShotJson(const GameShot& s) {
 
 bool RackRunOut(const GameResult& game) {
   return rules::RunOut(game.cleared, game.visits, rules::FirstVisitAfterBreak(game.shots));
+}
+
+// A match's rack: who broke, who won and why, each shot's player, all added to the players'.
+void AddMatchRack(const GameResult& game, const std::vector<std::string>& players,
+                  nlohmann::json* rack, std::vector<rules::MatchPlayerCounts>* totals) {
+  (*rack)["breaker"] = players[game.breaker];
+  (*rack)["winner"] = game.winner < 0 ? nlohmann::json() : nlohmann::json(players[game.winner]);
+  (*rack)["reason"] = game.reason;
+  (*rack)["break_and_run"] = game.break_and_run;
+  if (game.winner >= 0) {
+    ++(*totals)[game.winner].racks_won;
+    (*totals)[game.winner].break_and_runs += game.break_and_run;
+  }
+  for (std::size_t i = 0; i < game.shots.size(); ++i) {
+    const GameShot& s = game.shots[i];
+    (*rack)["shots"][i]["player"] = players[s.player];
+    rules::MatchPlayerCounts& p = (*totals)[s.player];
+    p.fouls += s.foul;
+    p.safeties += s.safety;
+    if (s.called >= 0) {
+      ++p.attempts;
+      p.pots += s.called_potted;
+    }
+  }
 }
 
 // One rack: its shots and counts, added to `totals`.
@@ -206,11 +232,25 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
   return j;
 }
 
-nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind) {
+nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind,
+                           std::vector<std::string> players) {
+  // A player against itself: the two told apart as billiard match's progress tells them.
+  if (players.size() == 2 && players[0] == players[1]) {
+    players = {players[0] + " (A)", players[1] + " (B)"};
+  }
   nlohmann::json j = {{"kind", kind}};
   GameTotals totals;
-  for (const GameResult& game : games) j["racks"].push_back(RackJson(game, &totals));
+  std::vector<rules::MatchPlayerCounts> player_totals(players.size());
+  for (const GameResult& game : games) {
+    nlohmann::json rack = RackJson(game, &totals);
+    if (!players.empty()) AddMatchRack(game, players, &rack, &player_totals);
+    j["racks"].push_back(std::move(rack));
+  }
   j["summary"] = TotalsJson(totals, games.size());
+  for (std::size_t k = 0; k < players.size(); ++k) {
+    j["players"].push_back(
+        rules::MatchPlayerJson(players[k], player_totals[k], static_cast<int>(games.size())));
+  }
   return j;
 }
 

@@ -23,8 +23,13 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
 // the decision time and the estimator's error on the table it was made from) and totals, and
 // "summary": racks cleared, run-outs (cleared in one visit), pots per attempt, fouls, balls per
 // visit, the median and largest decision time, the estimator's median RMS and largest position
-// error at the decisions and the balls it misidentified there.
-nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind);
+// error at the decisions and the balls it misidentified there. A match's (two `players` by name)
+// also says who played each shot and whether it was a safety, each rack's breaker, winner and
+// why it ended, and "players": each player's racks won, win rate with its Wilson 95 % interval
+// (sim/rules/match_standing.h), break-and-runs, pots, attempts, safeties and fouls, as `billiard match`
+// gives them; a player against itself named "ours (A)" and "ours (B)".
+nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::string& kind,
+                           std::vector<std::string> players = {});
 
 // What a whole-table session adds (the summary's "scene"): the events, where every ball ended
 // (and the pocket it dropped into), how the estimator tracked each ball (RMS and largest error,

@@ -117,6 +117,67 @@ TEST(GameSummary, TheRacksTotalsAndTheDecisions) {
   EXPECT_EQ(s["misidentified_ball_decisions"], 1);
 }
 
+// A match of two racks: A breaks the first and runs it out (a break-and-run), B breaks the
+// second, fouls, and A plays a safety, then the shot limit. Each player's tally is its own shots';
+// the win rate's interval is Wilson's, whose bounds at 0 and n of n are closed forms:
+// [0, z^2 / (n + z^2)] and [n / (n + z^2), 1].
+TEST(GameSummary, AMatchTalliesEachPlayerAsBilliardMatchDoes) {
+  GameResult first;
+  first.cleared = true;
+  first.winner = 0;
+  first.reason = "9 potted legally";
+  first.break_and_run = true;
+  GameShot brk = Decision(0.0, 1.0);
+  brk.break_shot = true;
+  brk.potted = {3};
+  GameShot nine = Decision(20.0, 1.0);
+  nine.called = 9;
+  nine.called_potted = true;
+  first.shots = {brk, nine};
+
+  GameResult second;
+  second.breaker = 1;
+  second.reason = "shot limit";
+  GameShot dry = brk;
+  dry.player = 1;
+  dry.potted.clear();
+  GameShot foul = Decision(30.0, 1.0);
+  foul.player = 1;
+  foul.called = 1;
+  foul.foul = true;
+  GameShot safety = Decision(40.0, 1.0);
+  safety.safety = true;
+  second.shots = {dry, foul, safety};
+
+  const nlohmann::json j = GameSummary({first, second}, "nine-ball", {"ours", "easiest-looking"});
+  EXPECT_EQ(j["racks"][0]["breaker"], "ours");
+  EXPECT_EQ(j["racks"][0]["winner"], "ours");
+  EXPECT_TRUE(j["racks"][1]["winner"].is_null());
+  EXPECT_EQ(j["racks"][1]["reason"], "shot limit");
+  EXPECT_EQ(j["racks"][1]["shots"][1]["player"], "easiest-looking");
+  EXPECT_EQ(j["racks"][1]["shots"][2]["safety"], true);
+  const nlohmann::json tallies[2] = {
+      {{"name", "ours"}, {"racks_won", 1}, {"win_rate", 0.5}, {"break_and_runs", 1},
+       {"attempts", 1}, {"pots", 1}, {"safeties", 1}, {"fouls", 0}},
+      {{"name", "easiest-looking"}, {"racks_won", 0}, {"win_rate", 0.0}, {"break_and_runs", 0},
+       {"attempts", 1}, {"pots", 0}, {"safeties", 0}, {"fouls", 1}}};
+  for (int k = 0; k < 2; ++k) {
+    for (const auto& [key, value] : tallies[k].items()) {
+      EXPECT_EQ(j["players"][k][key], value) << k << " " << key;
+    }
+  }
+  const nlohmann::json& b = j["players"][1];
+  const double z2 = 1.959963984540054 * 1.959963984540054;
+  EXPECT_EQ(b["interval95"][0], 0.0);
+  EXPECT_NEAR(b["interval95"][1].get<double>(), z2 / (2 + z2), 1e-12);
+  const nlohmann::json itself = GameSummary({first}, "eight-ball", {"ours", "ours"});
+  EXPECT_EQ(itself["players"][1]["name"], "ours (B)");
+  EXPECT_EQ(itself["racks"][0]["winner"], "ours (A)");
+  // Alone (no players), a game's summary has none of this.
+  EXPECT_FALSE(GameSummary({first}, "nine-ball").contains("players"));
+  EXPECT_FALSE(GameSummary({first}, "nine-ball")["racks"][0].contains("breaker"));
+}
+
 // Per ball, the RMS error over its tracked frames; over all balls, the RMS over every frame,
 // not the mean of the balls' RMS.
 TEST(SceneSummary, TheTrackingErrorOverEveryFrame) {

@@ -23,11 +23,12 @@
 // go out on NODE_STATUS (node_health.h), the first before the first frame with the clock among
 // them (messages::kRealtimeClockSetting), so that a log of the session says how it was clocked.
 //
-// The class is implemented in three files, by the sessions it runs: table_sim_node.cc (the link
+// The class is implemented in four files, by the sessions it runs: table_sim_node.cc (the link
 // to the nodes, the frames, the requests, the shots to random targets), scene_session.cc
-// (RunScene) and game_session.cc (RunGame). What a frame shows is truth_frame.h's, how a command
-// is executed stroke_execution.h's, and a game shot's judgement the rules' (sim/rules/nine_ball.h,
-// the ruleset the planner's own games are judged by).
+// (RunScene), game_session.cc (RunGame) and match_session.cc (a match's racks). What a frame
+// shows is truth_frame.h's, how a command is executed stroke_execution.h's, and a game shot's
+// judgement the rules' (sim/rules/: nine-ball's and eight-ball's, the rulesets the planner's own
+// games and matches are judged by).
 #pragma once
 
 #include <Eigen/Core>
@@ -53,6 +54,7 @@
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
 #include "sim/render/table_renderer.h"
+#include "sim/rules/ruleset.h"
 #include "sim/table/scene.h"
 #include "sim/table/table_geometry.h"
 #include "sim/table/table_simulation.h"
@@ -74,6 +76,15 @@ struct FaultInjection {
 
 // The table of the "break" scene and of the games.
 inline constexpr char kBreakTable[] = "pool-9ft";
+
+// A game's new rack is shown this many settle times before its first shot: longer than the
+// estimator coasts the last rack's tracks (estimator::TrackerOptions::max_coast).
+inline constexpr int kNewLayoutSettles = 4;
+
+// A match's player by a name the planner knows no player by: the session's bad input.
+struct UnknownPlayer : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
 
 // A pot to play in a whole-table session: ball `ball` (the truth's id) into pocket `pocket`.
 struct PotShot {
@@ -114,6 +125,13 @@ struct TableSimOptions {
   std::string game;
   int racks = 1;
   int shot_limit = 40;
+  // A match instead of one controller playing alone (RunGame's nine-ball or eight-ball): two
+  // players by name (planner/players/players.h), each MODE_CHOOSE request naming whose turn it
+  // is, the racks refereed by sim/rules' RackState (a miss or a foul hands the table to the
+  // other, rack k broken by player k % 2 with the game's stored break, asked of the planner as
+  // shot_request_t::MODE_BREAK). Empty: the controller alone as before; eight-ball is always a
+  // match (SessionOptions makes it ours against ours).
+  std::vector<std::string> players;
   // The table's own physics when it differs from the nodes' (--plant-params): the session checks
   // the nodes against the parameter set it is given and plays the balls with this one (of the
   // same table and balls), so that a controller can be seen learning a table it does not know.
@@ -181,6 +199,7 @@ struct SceneResult {
 struct GameShot {
   int number = 0;  // from 1 in its rack
   int visit = 1;
+  int player = 0;  // in a match, who shot it (0 or 1, TableSimOptions::players)
   bool break_shot = false;
   bool ball_in_hand = false;
   std::optional<Eigen::Vector2d> cue_placement;  // where the cue ball was placed
@@ -190,6 +209,7 @@ struct GameShot {
   std::string pocket;
   std::string kind;
   double predicted = -1.0;  // the planner's probability of a legal pot, -1 without one
+  bool safety = false;      // the planner played a safety (cue_command_t::safety)
   int first_contact = -1;
   std::vector<int> potted;  // object balls dropped, ascending
   bool called_potted = false;
@@ -207,9 +227,23 @@ struct GameShot {
 struct GameResult {
   std::uint32_t seed = 0;  // of the rack or layout
   std::vector<GameShot> shots;
-  bool cleared = false;  // the 9 potted legally, or no object ball left
+  bool cleared = false;  // the 9 potted legally, or no object ball left; a match's: decided
   int visits = 0;
+  // A match's: who broke, who won (-1 undecided: the shot limit) and why, and whether the
+  // breaker won with the other never at the table.
+  int breaker = 0;
+  int winner = -1;
+  std::string reason;
+  bool break_and_run = false;
 };
+
+// The referee of a game shot as played: its judgement (and, in a match, the rack advanced).
+using Judge = std::function<rules::Judgement(const rules::Shot&)>;
+
+// The request of game shot `shot`: the cue ball by class, the planner's choice
+// (shot_request_t::MODE_CHOOSE) under `rules` (shot_request_t::RULES_*) with ball in hand as
+// `shot` says, decided by `player` ("": the planner's own).
+shot_request_t ChoiceRequest(int8_t rules, const GameShot& shot, const std::string& player);
 
 // The estimator or the planner runs with other physics than the simulator, or is another version
 // of the project: a session would plan and track one ball and simulate another.
@@ -297,18 +331,24 @@ class TableSimNode {
   // of the planner as request `id` (a point request: the cue ball's centre at contact).
   cue_command_t RequestBreak(int id, const std::vector<table::SceneBall>& balls,
                              ShotResult& result);
-  // Rack `rack` of options.game played until it is cleared or the shot limit, its requests
-  // numbered from *id on.
+  // Rack `rack` of options.game played alone until it is cleared or the shot limit, its
+  // requests numbered from *id on.
   GameResult PlayRack(int rack, const table::TableGeometry& geometry, int* id);
-  // Asks the planner for game shot `shot` (request `id`): the break, or its choice under
-  // nine-ball rules (with ball in hand after a foul).
-  cue_command_t RequestGameShot(int id, const GameShot& shot,
+  // Rack `rack` of a match (options.players; match_session.cc) played until the rules end it
+  // or the shot limit, its requests numbered from *id on.
+  GameResult PlayMatchRack(int rack, const table::TableGeometry& geometry, int* id);
+  // Asks the planner for game shot `shot` (request `id`) as `ask` says (a choice, or a match's
+  // break); a break alone is the old point request (RequestBreak).
+  cue_command_t RequestGameShot(int id, const GameShot& shot, const shot_request_t& ask,
                                 const std::vector<table::SceneBall>& balls);
-  // Plays shot `shot` of a game on `balls` (at rest; the cue ball on the table) and judges it
-  // under nine-ball rules (sim/rules/nine_ball.h); `balls` become those left, the cue ball back
-  // in the kitchen after a scratch and the 9 on its spot after a foul that dropped it;
-  // *rack_over whether the rules end the rack there.
-  GameShot PlayGameShot(int id, GameShot shot, const table::TableGeometry& geometry,
+  // Plays shot `shot` of a game on `balls` (at rest; the cue ball on the table), asked as `ask`
+  // says, under `constraints`, and judges it with `judge`; `balls` become those left, the cue
+  // ball back in the kitchen after a scratch and the balls the rules put back on their spots;
+  // *rack_over whether the rules end the rack there. A refused shot plays nothing and is not
+  // judged.
+  GameShot PlayGameShot(int id, GameShot shot, const shot_request_t& ask,
+                        const rules::Constraints& constraints, const Judge& judge,
+                        const table::TableGeometry& geometry,
                         std::vector<table::SceneBall>& balls, bool* rack_over);
   // The estimator's latest state against the truth `balls`, into `shot`.
   void ScoreEstimate(const std::vector<table::SceneBall>& balls, GameShot& shot) const;

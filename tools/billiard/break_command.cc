@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "planner/game/break_search.h"
-#include "planner/game/wilson.h"
+#include "sim/batch/wilson.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/execution_noise.h"
@@ -41,7 +41,7 @@ struct BenchBreakArgs {
 };
 
 nlohmann::json RateJson(int count, int samples) {
-  const game::Interval i = game::WilsonInterval(count, samples);
+  const batch::Interval i = batch::WilsonInterval(count, samples);
   return {{"count", count},
           {"rate", samples ? static_cast<double>(count) / samples : 0.0},
           {"interval95", {i.lo, i.hi}}};

@@ -1,9 +1,9 @@
-#include "planner/game/wilson.h"
+#include "sim/batch/wilson.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace billiard::game {
+namespace billiard::batch {
 
 Interval WilsonInterval(int successes, int trials, double z) {
   if (trials <= 0) return {};
@@ -18,4 +18,4 @@ Interval WilsonInterval(int successes, int trials, double z) {
           successes == trials ? 1.0 : std::min(1.0, centre + half)};
 }
 
-}  // namespace billiard::game
+}  // namespace billiard::batch

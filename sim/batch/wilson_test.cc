@@ -1,10 +1,10 @@
-#include "planner/game/wilson.h"
+#include "sim/batch/wilson.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace billiard::game {
+namespace billiard::batch {
 namespace {
 
 // Newcombe (1998, Statistics in Medicine 17: 857-872), table I, method 3 (the Wilson score
@@ -39,4 +39,4 @@ TEST(WilsonTest, NoTrialsIsTheWholeRange) {
 }
 
 }  // namespace
-}  // namespace billiard::game
+}  // namespace billiard::batch

@@ -5,10 +5,10 @@
 // Unlike the normal (Wald) interval it stays inside [0, 1] and keeps its coverage near 0 and 1
 // and for small n (Brown, Cai and DasGupta 2001), which a match of a few racks is.
 //
-// Module: billiard::game.
+// Module: billiard::batch.
 #pragma once
 
-namespace billiard::game {
+namespace billiard::batch {
 
 // The normal quantile of a two-sided 95 % interval.
 inline constexpr double kZ95 = 1.959963984540054;
@@ -21,4 +21,4 @@ struct Interval {
 // The Wilson interval of `successes` in `trials` at `z`; [0, 1] when there are no trials.
 Interval WilsonInterval(int successes, int trials, double z = kZ95);
 
-}  // namespace billiard::game
+}  // namespace billiard::batch
