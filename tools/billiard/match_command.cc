@@ -66,39 +66,6 @@ game::MatchOptions OptionsOf(const MatchArgs& args) {
   return options;
 }
 
-nlohmann::json DecisionJson(const std::vector<double>& us) {
-  return {{"median", game::Quantile(us, kMedian)}, {"p95", game::Quantile(us, kP95)}};
-}
-
-nlohmann::json PlayerJson(const game::PlayerTally& p, int racks) {
-  const game::Interval interval = game::WilsonInterval(p.racks_won, racks);
-  return {{"name", p.name},
-          {"racks_won", p.racks_won},
-          {"win_rate", racks ? static_cast<double>(p.racks_won) / racks : 0.0},
-          {"interval95", {interval.lo, interval.hi}},
-          {"break_and_runs", p.break_and_runs},
-          {"pots", p.pots},
-          {"attempts", p.attempts},
-          {"safeties", p.safeties},
-          {"safeties_that_worked", p.safeties_that_worked},
-          {"fouls", p.fouls},
-          {"foul_reasons", p.foul_reasons},
-          {"decision_us", DecisionJson(p.decisions_us)}};
-}
-
-nlohmann::json MatchJson(const game::MatchRecord& match, const MatchArgs& args) {
-  const int racks = static_cast<int>(match.racks.size());
-  nlohmann::json j = {{"game", args.game}, {"racks", racks}, {"seed", args.seed},
-                      {"noise", args.noise}, {"undecided", match.undecided}};
-  std::vector<double> every;
-  for (const game::PlayerTally& p : match.players) {
-    j["players"].push_back(PlayerJson(p, racks));
-    every.insert(every.end(), p.decisions_us.begin(), p.decisions_us.end());
-  }
-  j["decision_us"] = DecisionJson(every);
-  return j;
-}
-
 // One line on stderr as each rack ends: who broke, who won and why, the score so far.
 std::string ProgressLine(const game::RackResult& r, const game::MatchRecord& so_far,
                          const std::array<std::string, 2>& names, int racks) {
@@ -124,7 +91,7 @@ void Run(const MatchArgs& args) {
         if (r.winner >= 0) ++so_far.players[r.winner].racks_won;
         std::cerr << ProgressLine(r, so_far, names, options.racks) << std::endl;
       });
-  const nlohmann::json j = MatchJson(match, args);
+  const nlohmann::json j = MatchJson(match, args.game, args.seed, args.noise);
   for (const nlohmann::json& p : j["players"]) {
     std::cerr << p["name"].get<std::string>() << ": " << p["racks_won"] << " racks won of "
               << j["racks"] << std::setprecision(3) << " (95 % "
@@ -136,6 +103,40 @@ void Run(const MatchArgs& args) {
 }
 
 }  // namespace
+
+nlohmann::json DecisionJson(const std::vector<double>& us) {
+  return {{"median", game::Quantile(us, kMedian)}, {"p95", game::Quantile(us, kP95)}};
+}
+
+nlohmann::json PlayerJson(const game::PlayerTally& p, int racks) {
+  const game::Interval interval = game::WilsonInterval(p.racks_won, racks);
+  return {{"name", p.name},
+          {"racks_won", p.racks_won},
+          {"win_rate", racks ? static_cast<double>(p.racks_won) / racks : 0.0},
+          {"interval95", {interval.lo, interval.hi}},
+          {"break_and_runs", p.break_and_runs},
+          {"pots", p.pots},
+          {"attempts", p.attempts},
+          {"safeties", p.safeties},
+          {"safeties_that_worked", p.safeties_that_worked},
+          {"fouls", p.fouls},
+          {"foul_reasons", p.foul_reasons},
+          {"decision_us", DecisionJson(p.decisions_us)}};
+}
+
+nlohmann::json MatchJson(const game::MatchRecord& match, const std::string& game,
+                         std::uint64_t seed, const std::string& noise) {
+  const int racks = static_cast<int>(match.racks.size());
+  nlohmann::json j = {{"game", game}, {"racks", racks}, {"seed", seed},
+                      {"noise", noise}, {"undecided", match.undecided}};
+  std::vector<double> every;
+  for (const game::PlayerTally& p : match.players) {
+    j["players"].push_back(PlayerJson(p, racks));
+    every.insert(every.end(), p.decisions_us.begin(), p.decisions_us.end());
+  }
+  j["decision_us"] = DecisionJson(every);
+  return j;
+}
 
 rules::Rules GameOf(const std::string& name) {
   if (name == "nine-ball") return rules::Rules::kNineBall;

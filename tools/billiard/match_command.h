@@ -4,14 +4,28 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
+#include "planner/game/match.h"
 #include "sim/rules/rules.h"
 
 namespace billiard::cli {
 
 // A --game option's game: "nine-ball" or "eight-ball"; UsageError otherwise.
 rules::Rules GameOf(const std::string& name);
+
+// A set of decision times [us]: {"median", "p95"} (nearest rank).
+nlohmann::json DecisionJson(const std::vector<double>& us);
+
+// A player's tally over `racks` racks as `billiard match --json` prints it.
+nlohmann::json PlayerJson(const game::PlayerTally& p, int racks);
+
+// `billiard match --json`'s object for `match`, played at `game`, `seed` and `noise`.
+nlohmann::json MatchJson(const game::MatchRecord& match, const std::string& game,
+                         std::uint64_t seed, const std::string& noise);
 
 void AddMatchCommand(CLI::App& app);
 
