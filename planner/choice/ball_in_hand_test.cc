@@ -29,8 +29,9 @@ TEST_F(BallInHandTest, PlacesTheCueBallForALikelyPot) {
   EXPECT_EQ(r.chosen()->plan.ball, 1);
   EXPECT_GT(r.chosen()->reported().probability, 0.9);
   EXPECT_TRUE(r.likely);
-  // Only the placement played is confirmed.
-  EXPECT_EQ(r.chosen()->confirmed.samples, options.confirm_samples);
+  // Only the placement played is confirmed (to its precision: a likely pot needs fewer).
+  EXPECT_GE(r.chosen()->confirmed.samples, options.confirm_round);
+  EXPECT_LE(r.chosen()->confirmed.samples, options.confirm_samples);
 }
 
 // A cue ball already on the table is lifted: where it lay does not block its own placement,

@@ -27,6 +27,14 @@ struct ChoiceOptions {
   // probability reported (a binomial standard error of at most 0.5 / sqrt(n), 0.03 at 256).
   // 0: report the finalists' own (biased) estimate.
   int confirm_samples = 256;
+  // Sequential Monte Carlo (race.h): the finalists raced in rounds of race_round executions,
+  // one stopping when its score's upper bound (race_z standard errors) is below the leader's
+  // lower bound; the confirmation in rounds of confirm_round, stopping once the standard error
+  // of its probability is confirm_stderr or less (at most confirm_samples).
+  int race_round = 16;
+  double race_z = 2.58;  // two-sided 99 % for each comparison
+  int confirm_round = 32;
+  double confirm_stderr = 0.03;
   std::uint64_t seed = 1;
   bool lookahead = true;  // score p (1 + v); false: p alone
   // Below this probability the choice says that no shot is likely.

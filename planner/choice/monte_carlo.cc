@@ -128,10 +128,19 @@ std::vector<Execution> ExecuteAll(const table::TableGeometry& table,
                                   const std::vector<const pot::PotPlan*>& plans, int samples,
                                   const ChoiceOptions& options, const Motion& motion,
                                   bool value_next, batch::ThreadPool& pool) {
-  const std::size_t n = plans.size() * static_cast<std::size_t>(samples);
+  return ExecuteRange(table, params, balls, plans, 0, samples, options, motion, value_next, pool);
+}
+
+std::vector<Execution> ExecuteRange(const table::TableGeometry& table,
+                                    const physics::ModelParameters& params,
+                                    const std::vector<table::SceneBall>& balls,
+                                    const std::vector<const pot::PotPlan*>& plans, int first,
+                                    int count, const ChoiceOptions& options, const Motion& motion,
+                                    bool value_next, batch::ThreadPool& pool) {
+  const std::size_t n = plans.size() * static_cast<std::size_t>(count);
   auto results = pool.Map(n, [&](std::size_t job) {
-    return Execute(table, params, balls, *plans[job / samples], options, motion, job % samples,
-                   value_next);
+    return Execute(table, params, balls, *plans[job / count], options, motion,
+                   first + job % count, value_next);
   });
   std::vector<Execution> executions(n);
   for (std::size_t i = 0; i < n; ++i) {

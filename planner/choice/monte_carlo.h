@@ -104,6 +104,16 @@ std::vector<Execution> ExecuteAll(const table::TableGeometry& table,
                                   const ChoiceOptions& options, const Motion& motion,
                                   bool value_next, batch::ThreadPool& pool);
 
+// Executions [first, first + count) of each of `plans`, as ExecuteAll's (plan k's execution
+// first + s at k count + s): a sequential estimate adds samples in rounds, each sample the same
+// whichever round plays it.
+std::vector<Execution> ExecuteRange(const table::TableGeometry& table,
+                                    const physics::ModelParameters& params,
+                                    const std::vector<table::SceneBall>& balls,
+                                    const std::vector<const pot::PotPlan*>& plans, int first,
+                                    int count, const ChoiceOptions& options, const Motion& motion,
+                                    bool value_next, batch::ThreadPool& pool);
+
 // `plan`'s stroke executed `samples` times with `noise` (execution s seeded SampleSeed(seed, s))
 // on the full model the table runs, on `pool`'s threads.
 PotProbability EstimatePotProbability(const table::TableGeometry& table,

@@ -8,6 +8,7 @@
 #include "planner/choice/candidates.h"
 #include "planner/choice/monte_carlo.h"
 #include "planner/choice/position_play.h"
+#include "planner/choice/race.h"
 #include "planner/choice/screening.h"
 #include "planner/choice/second_level.h"
 #include "sim/model_choice/model_choice.h"
@@ -55,9 +56,30 @@ void ScreenCandidates(const table::TableGeometry& table, const physics::ModelPar
   std::stable_sort(candidates.begin(), candidates.end(), ScreenedBetter);
 }
 
-// Steps 3 and 4: the finalists on the full model, with the lookahead (its next shot planned by
-// the second level, or in closed form without it), scored; the finalists first by score, the
-// others after them in screening order.
+// The second level (second_level.h) on the samples every finalist played: a finalist the race
+// stopped played fewer, and each is valued on the same samples' outcomes. The race itself
+// stopped finalists on the closed-form lookahead, which costs nothing per sample.
+SecondLevel PlanSecondLevel(const table::TableGeometry& table,
+                            const physics::ModelParameters& params,
+                            const std::vector<std::vector<Execution>>& runs,
+                            const ChoiceOptions& options, batch::ThreadPool& pool,
+                            ChoiceResult* result) {
+  if (!options.lookahead || !options.second_level || runs.empty()) return {};
+  std::size_t common = runs.front().size();
+  for (const std::vector<Execution>& run : runs) common = std::min(common, run.size());
+  std::vector<Execution> shared;
+  for (const std::vector<Execution>& run : runs) {
+    shared.insert(shared.end(), run.begin(), run.begin() + common);
+  }
+  SecondLevel planned = PlanNextShots(table, params, shared, runs.size(),
+                                      static_cast<int>(common), options, pool);
+  result->simulations += planned.simulations;
+  return planned;
+}
+
+// Steps 3 and 4: the finalists raced on the full model (race.h), with the lookahead (its next
+// shot planned by the second level, or in closed form without it), scored; the finalists first,
+// the others after them in screening order.
 void PlayFinalists(const table::TableGeometry& table, const physics::ModelParameters& params,
                    const std::vector<table::SceneBall>& balls, const ChoiceOptions& options,
                    batch::ThreadPool& pool, ChoiceResult* result) {
@@ -66,27 +88,28 @@ void PlayFinalists(const table::TableGeometry& table, const physics::ModelParame
   for (std::size_t i = 0; i < candidates.size() && static_cast<int>(i) < options.finalists; ++i) {
     finalists.push_back(i);
   }
-  const std::vector<Execution> full =
-      ExecuteAll(table, params, balls, PlansOf(candidates, finalists), options.samples, options,
-                 model_choice::TableMotion(params), options.lookahead, pool);
-  result->simulations += static_cast<int>(full.size());
-  SecondLevel planned;
-  if (options.lookahead && options.second_level) {
-    planned = PlanNextShots(table, params, full, finalists.size(), options.samples, options, pool);
-    result->simulations += planned.simulations;
-  }
+  const std::vector<std::vector<Execution>> runs =
+      RaceFinalists(table, params, balls, PlansOf(candidates, finalists), options,
+                    model_choice::TableMotion(params), pool);
+  const SecondLevel planned = PlanSecondLevel(table, params, runs, options, pool, result);
   for (std::size_t f = 0; f < finalists.size(); ++f) {
     Candidate& c = candidates[finalists[f]];
     c.finalist = true;
-    Tally tally = TallyOf(full, f, options.samples);
+    const int samples = static_cast<int>(runs[f].size());
+    result->simulations += samples;
+    Tally tally = TallyOf(runs[f], 0, samples);
     if (!planned.next_shot_values.empty()) tally.next_shot_value = planned.next_shot_values[f];
     c.full = tally.pots;
     c.next_shot_value = tally.next_shot_value;
     c.score = Score(tally, options.lookahead);
   }
+  // Those that ran the race furthest first (the one left, or those that ran it to the end),
+  // then by score.
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     if (a.finalist != b.finalist) return a.finalist;
-    return a.finalist && a.score > b.score;
+    if (!a.finalist) return false;
+    if (a.full.samples != b.full.samples) return a.full.samples > b.full.samples;
+    return a.score > b.score;
   });
 }
 
@@ -118,10 +141,9 @@ void Confirm(const table::TableGeometry& table, const physics::ModelParameters& 
   if (options.confirm_samples > 0) {
     ChoiceOptions fresh = options;
     fresh.seed = options.seed + kConfirmStream;
-    chosen.confirmed = PotRateOf(ExecuteAll(table, params, balls, {&chosen.plan},
-                                            options.confirm_samples, fresh,
-                                            model_choice::TableMotion(params), false, pool));
-    result->simulations += options.confirm_samples;
+    chosen.confirmed = ConfirmToPrecision(table, params, balls, chosen.plan, fresh,
+                                          model_choice::TableMotion(params), pool);
+    result->simulations += chosen.confirmed.samples;
   }
   result->likely = chosen.reported().probability >= options.likely;
   if (!result->likely) {

@@ -9,15 +9,17 @@
 //     motion (Jaroukh 2019, exact for the level-cue paths most pots are, and cheap), and the
 //     best few planned again with position play (the cue ball sent to where the next shot looks
 //     easiest) and screened too;
-//  3. the finalists (the few best screened) with many noisy executions on the full model the
-//     table runs (model_choice::TableMotion): the probability of a legal pot (the object ball
+//  3. the finalists (the few best screened) raced with noisy executions on the full model the
+//     table runs (model_choice::TableMotion; race.h: a finalist stops once more samples could
+//     not make it the choice): the probability of a legal pot (the object ball
 //     in the called pocket, the cue ball's first contact that ball, no scratch) and its
 //     standard error, and, over the executions that pot, the value of the best next shot on the
 //     table each leaves (EasyPotEstimate, a closed-form estimate: no planning inside a sample);
 //  4. the score: the expected number of balls over this shot and the next, p (1 + v), or p alone
 //     without the lookahead. The best scored is the choice;
 //  5. the chosen shot's probability estimated again from fresh executions (a seed stream of its
-//     own, ChoiceOptions::confirm_samples of them): the finalists' estimates chose it, so the
+//     own, until its standard error is ChoiceOptions::confirm_stderr, at most confirm_samples
+//     of them): the finalists' estimates chose it, so the
 //     best of them is biased up (the maximum of noisy estimates: a winner's curse), and the
 //     reported probability must not come from the samples that selected. When that probability
 //     is below ChoiceOptions::likely the choice says that no shot is likely and still plays it.
@@ -27,7 +29,7 @@
 // squirt and the cushions' impacts.
 //
 // Each step is a file: candidates.h (1), screening.h and position_play.h (2), monte_carlo.h
-// (the executions of 2, 3 and 5), lookahead.h (the next shot's value); ball_in_hand.h places
+// (the executions of 2, 3 and 5), race.h (how many of 3 and 5), lookahead.h (the next shot's value); ball_in_hand.h places
 // the cue ball first and easiest_looking.h is the baseline without any of it.
 //
 // Deterministic: execution s of every candidate draws its noise from a generator seeded by

@@ -30,7 +30,8 @@ TEST_F(ShotChoiceTest, ReportedProbabilityIsTheConfirmationsAndUnbiased) {
     const ChoiceResult r = ChooseShot(table_, params_, balls, options, pool);
     ASSERT_EQ(r.status, ChoiceStatus::kOk) << r.reason;
     const Candidate& c = *r.chosen();
-    EXPECT_EQ(c.confirmed.samples, options.confirm_samples);
+    EXPECT_GT(c.confirmed.samples, 0);
+    EXPECT_LE(c.confirmed.samples, options.confirm_samples);
     EXPECT_EQ(&c.reported(), &c.confirmed);
     const PotProbability truth = EstimatePotProbability(table_, params_, balls, c.plan, options.noise,
                                                         truth_samples, 1000 + seed, pool);
@@ -90,8 +91,9 @@ TEST_F(ShotChoiceTest, SameChoiceOnOneThreadOrTwo) {
   }
 }
 
-// The named steps' contract: the finalists first, best scored first, each with its full-model
-// estimate and score p (1 + v); the others after them; the chosen alone confirmed.
+// The named steps' contract: the finalists first (those that ran the race furthest, then best
+// scored), each with its full-model estimate and score p (1 + v); the others after them; the
+// chosen alone confirmed.
 TEST_F(ShotChoiceTest, FinalistsFirstByScoreAndOnlyTheChosenConfirmed) {
   const auto balls = TwoBalls();
   ChoiceOptions options = QuickChoice();
@@ -103,11 +105,16 @@ TEST_F(ShotChoiceTest, FinalistsFirstByScoreAndOnlyTheChosenConfirmed) {
   for (std::size_t i = 0; i < r.candidates.size(); ++i) {
     const Candidate& c = r.candidates[i];
     EXPECT_EQ(c.finalist, static_cast<int>(i) < options.finalists) << i;
-    EXPECT_EQ(c.confirmed.samples, i == 0 ? options.confirm_samples : 0) << i;
+    EXPECT_EQ(c.confirmed.samples > 0, i == 0) << i;
+    EXPECT_LE(c.confirmed.samples, options.confirm_samples) << i;
     if (!c.finalist) continue;
-    EXPECT_EQ(c.full.samples, options.samples);
+    EXPECT_GT(c.full.samples, 0) << i;
+    EXPECT_LE(c.full.samples, options.samples) << i;
     EXPECT_DOUBLE_EQ(c.score, c.full.probability * (1 + c.next_shot_value));
-    if (i > 0) EXPECT_GE(r.candidates[i - 1].score, c.score);
+    if (i == 0) continue;
+    const Candidate& before = r.candidates[i - 1];
+    EXPECT_GE(before.full.samples, c.full.samples) << i;
+    if (before.full.samples == c.full.samples) EXPECT_GE(before.score, c.score) << i;
   }
   EXPECT_EQ(r.likely, r.chosen()->reported().probability >= options.likely);
   EXPECT_GT(r.simulations, 0);

@@ -7,13 +7,21 @@
 // the break that keeps the table most often, within the robot's ranges (`BreakRanges`: its
 // cue speed and tip offset, sim/params/robots/).
 //
-// The objective is P(the breaker keeps the table) - P(scratch). Only a legal break with a pot
-// keeps the table (WPA Rules of Play, Break Shot; the computational pool's eight-ball the same):
-// a legal break that pots nothing hands the opponent the balls where they lie, and a scratch (a
+// The objective: the most tables kept with few scratches. Only a legal break with a pot keeps
+// the table (WPA Rules of Play, Break Shot; the computational pool's eight-ball the same): a
+// legal break that pots nothing hands the opponent the balls where they lie, and a scratch (a
 // foul, as is an illegal break) hands them ball in hand anywhere, which to a player who pots
-// most shots from ball in hand is close to the rack. So a kept table scores 1, a dry break 0 and
-// a scratch -1; at an equal score the lower scratch rate wins. The kept rate alone would rank a
-// break that pots one rack more in a hundred and scratches five more above it.
+// most shots from ball in hand is close to the rack. Breaking harder from the side pots more and
+// scratches more, so the search maximises P(kept) subject to the scratch rate's upper Wilson
+// (1927) bound, one-sided at `scratch_z` (1: 84 %), being `max_scratch` (5 %, issue 48's) or
+// less: a break that only looks safe on the search's racks is not feasible. (At 95 %, 300 racks
+// would demand 8 scratches or fewer, 2.7 %, where the breaks that pot half the racks lie near
+// 4.5 %.) The search ranks breaks by the kept rate less ten times the bound's excess over
+// `max_scratch` (a penalty: feasible breaks by their kept rate alone, infeasible ones walked
+// toward the feasible keeping their pots), at equal scratching less. Feasible() says whether
+// the break found keeps the bound.
+// The earlier objective, P(kept) - P(scratch), priced a scratch at one kept table and let the
+// nine-ball break scratch 7.5 %.
 //
 // The search: a coordinate search on grids (each parameter in turn swept over its grid with the
 // others held, the best kept; `rounds` passes), every candidate scored on the same seeded racks
@@ -21,7 +29,8 @@
 // CueCard, winner of the 2008 Computer Olympiad, credits its win in part to an optimised break
 // (Archibald, Altman and Shoham 2009, "Analysis of a winning computational billiards player",
 // IJCAI); this is a search of that kind, run once per game and noise and kept as data
-// (`StoredBreak`), since 60 candidates on 200 racks take minutes on two cores.
+// (`StoredBreak`, with the figures it found them by, which a test plays again), since 60
+// candidates on 300 racks take minutes on two cores.
 //
 // Sample s of a run seeded `seed` is rack s of a match seeded `seed` (match.h): its rack seeded
 // SampleSeed(seed, s), its noise drawn as that rack's first shot's, so a break's figures here are
@@ -80,10 +89,6 @@ struct BreakRates {
   int potted = 0;     // an object ball dropped, legal or not
   int kept = 0;       // legal and an object ball dropped: the breaker stays at the table
   int scratches = 0;  // the cue ball dropped
-  // The search's objective: the kept rate less the scratch rate (the header's).
-  double objective() const {
-    return samples ? static_cast<double>(kept - scratches) / samples : 0.0;
-  }
 };
 
 // What the search plays on: the game (nine-ball or eight-ball), its rack, the table's noise.
@@ -108,7 +113,18 @@ struct BreakSearchOptions {
   int samples = 200;  // racks each candidate is played on
   int rounds = 2;     // passes over the parameters
   std::uint64_t seed = 1;
+  double max_scratch = 0.05;  // the scratch rate's bound a feasible break keeps within
+  double scratch_z = 1.0;  // the normal quantile of the one-sided bound (84 %)
 };
+
+// The upper Wilson bound of `r`'s scratch rate at `z`.
+double ScratchBound(const BreakRates& r, double z);
+
+// Whether `r`'s scratch bound is options.max_scratch or less.
+bool Feasible(const BreakRates& r, const BreakSearchOptions& options);
+
+// Whether `a` breaks better than `b` (on the same racks), as the header ranks them.
+bool BreaksBetter(const BreakRates& a, const BreakRates& b, const BreakSearchOptions& options);
 
 struct BreakSearchResult {
   Break best;
@@ -122,9 +138,22 @@ struct BreakSearchResult {
 BreakSearchResult SearchBreak(const BreakSetting& setting, const Break& start,
                               const BreakSearchOptions& options, batch::ThreadPool& pool);
 
-// The break SearchBreak found for `game` under the computational pool's noise on the gantry
-// robot's ranges, kept as data (docs/match.md gives the command that finds it again); the
-// default Break for any other game.
+// A break SearchBreak found, and what it found it by: its racks (samples from seed) and counts.
+struct StoredSearch {
+  Break found;
+  BreakSearchOptions options;  // ranges, samples, rounds, seed and the scratch bound
+  Break start;                 // where the coordinate search started
+  int kept = 0;                // on the search's racks
+  int scratches = 0;
+  bool bounded = true;  // found by the bounded search above (false: by an earlier objective)
+};
+
+// The search that found `game`'s break under the computational pool's noise on the gantry
+// robot's ranges (docs/match.md gives the command that runs it again); for any other game the
+// default Break, found by no search (samples 0).
+StoredSearch StoredBreakSearch(rules::Rules game);
+
+// StoredBreakSearch(game).found.
 Break StoredBreak(rules::Rules game);
 
 }  // namespace billiard::game

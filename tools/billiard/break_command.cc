@@ -37,6 +37,8 @@ struct BenchBreakArgs {
   bool search = false;
   int search_samples = 200;
   int rounds = 2;
+  double max_scratch = 0.05;
+  double scratch_z = 1.0;
   bool json = false;
 };
 
@@ -106,6 +108,8 @@ void Run(const BenchBreakArgs& args) {
     options.samples = args.search_samples;
     options.rounds = args.rounds;
     options.seed = args.seed + kSearchSeedOffset;
+    options.max_scratch = args.max_scratch;
+    options.scratch_z = args.scratch_z;
     const game::BreakSearchResult found =
         game::SearchBreak(setting, args.given.empty() ? game::Break{} : optimised, options, pool);
     optimised = found.best;
@@ -113,7 +117,12 @@ void Run(const BenchBreakArgs& args) {
                    {"samples", options.samples},
                    {"seed", options.seed},
                    {"rounds", options.rounds},
-                   {"objective", found.rates.objective()}};
+                   {"max_scratch", options.max_scratch},
+                   {"scratch_z", options.scratch_z},
+                   {"kept", found.rates.kept},
+                   {"scratches", found.rates.scratches},
+                   {"scratch_bound", game::ScratchBound(found.rates, options.scratch_z)},
+                   {"feasible", game::Feasible(found.rates, options)}};
   }
   const std::vector<game::BreakRates> rates =
       game::EvaluateBreaks(setting, {game::Break{}, optimised}, args.samples, args.seed, pool);
@@ -164,6 +173,14 @@ void AddBenchBreakCommand(CLI::App& app) {
   cmd->add_option("--rounds", args->rounds, "The search's passes over the parameters")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-scratch", args->max_scratch,
+                  "The search: the scratch rate's upper bound a break must keep within")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--scratch-z", args->scratch_z,
+                  "The search: the normal quantile of that one-sided Wilson bound (1: 84 %)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { Run(*args); });
 }

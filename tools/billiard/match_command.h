@@ -4,8 +4,12 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
+#include "planner/game/match.h"
 #include "sim/rules/rules.h"
 
 namespace billiard::cli {
