@@ -443,7 +443,8 @@ TEST(MessageChecks, PotCommandMeaning) {
   // A refused pot: its status and reason, no stroke.
   for (const int8_t status :
        {cue_command_t::STATUS_NO_SUCH_BALL, cue_command_t::STATUS_BLOCKED,
-        cue_command_t::STATUS_TARGET_UNREACHABLE, cue_command_t::STATUS_NOT_AT_REST}) {
+        cue_command_t::STATUS_TARGET_UNREACHABLE, cue_command_t::STATUS_CUE_BLOCKED,
+        cue_command_t::STATUS_NOT_AT_REST}) {
     EXPECT_EQ(refused([&](cue_command_t& m) {
                 m.status = status;
                 m.cue_speed = 0.0;

@@ -38,6 +38,8 @@ int8_t ToMessageStatus(pot::PotStatus status) {
       return cue_command_t::STATUS_NO_STROKE;
     case pot::PotStatus::kTargetUnreachable:
       return cue_command_t::STATUS_TARGET_UNREACHABLE;
+    case pot::PotStatus::kCueBlocked:
+      return cue_command_t::STATUS_CUE_BLOCKED;
   }
   return cue_command_t::STATUS_INVALID;
 }

@@ -1,5 +1,6 @@
 #include "tools/billiard/plan_command.h"
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -7,6 +8,9 @@
 
 #include "planner/shot_planner.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
+#include "sim/table/scene.h"
+#include "tools/billiard/scene_commands.h"
 #include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
@@ -21,8 +25,23 @@ struct PlanArgs {
   double side_spin = 0.0;
   std::string params = params::kDefaultParameterSet;
   bool no_refine = false;
+  std::string robot = params::kDefaultRobot;
+  std::string table = "pool-9ft";
   bool json = false;
 };
+
+// The plan's stroke against the robot's cue, the ball alone on `table_name` (of the parameter
+// set's size): the elevation is the one the spin asks for (StrokeFor), not raised, so a stroke
+// the cue cannot make there is refused (cue_blocked) rather than played another way.
+cue::CueClearance CueOf(const planner::ShotPlan& plan, const Eigen::Vector2d& from, const physics::ModelParameters& params,
+                        const std::string& table_name, const cue::Robot& robot) {
+  const table::TableGeometry table = LoadTableOption(table_name);
+  if (std::abs(table.length - params.table.length) > 1e-9 || std::abs(table.width - params.table.width) > 1e-9) {
+    throw UsageError("--table " + table_name + " is not the size of the parameter set's table");
+  }
+  return cue::Clearance(table, params.ball.radius, {table::AtRest(0, from.x(), from.y())}, 0,
+                        plan.stroke, robot);
+}
 
 nlohmann::json PlanJson(const planner::ShotPlan& plan, const physics::ModelParameters& params) {
   nlohmann::json j;
@@ -86,17 +105,30 @@ void Run(const PlanArgs& args, bool slide_given) {
   planner::PlannerOptions options;
   options.refine = !args.no_refine;
 
+  const cue::Robot robot = LoadRobotOption(args.robot);
   const planner::ShotPlan plan = planner::PlanShot(request, params, options);
+  std::optional<cue::CueClearance> clearance;
+  if (plan.status == planner::PlanStatus::kOk) clearance = CueOf(plan, request.from, params, args.table, robot);
+  const bool blocked = clearance && !clearance->clears;
+  const std::string blocked_reason =
+      blocked ? "the " + robot.name + "'s cue meets " + clearance->what + " at the elevation the spin asks for" : "";
   if (args.json) {
     // The request's ends too, so that the plan alone can be drawn (`billiard plot --plan`).
     nlohmann::json j = PlanJson(plan, params);
     j["from"] = from;
     j["to"] = to;
+    j["robot"] = robot.name;
+    if (clearance) j["cue"]["clearance"] = ClearanceJson(*clearance);
+    if (blocked) {
+      j["status"] = "cue_blocked";
+      j["reason"] = blocked_reason;
+    }
     std::cout << j.dump() << std::endl;
   }
   if (plan.status != planner::PlanStatus::kOk) {
     throw Refused(planner::PlanStatusName(plan.status) + ": " + plan.reason);
   }
+  if (blocked) throw Refused("cue_blocked: " + blocked_reason);
   if (!args.json) PrintSummary(plan, params, options.refine);
 }
 
@@ -122,6 +154,12 @@ void AddPlanCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--no-refine", args->no_refine,
                 "The closed-form inverse alone (its miss is still measured with the 5-DOF model)");
+  cmd->add_option("--robot", args->robot,
+                  "The robot whose cue plays the stroke: gantry | player | FILE (sim/params/robots/); a "
+                  "stroke its cue cannot make from --from is refused cue_blocked")
+      ->capture_default_str();
+  cmd->add_option("--table", args->table, "The table the cue is checked on (the parameter set's size)")
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args, slide] { Run(*args, slide->count() > 0); });
 }
