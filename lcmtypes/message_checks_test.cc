@@ -372,7 +372,7 @@ TEST(MessageChecks, CueCommandMeaning) {
     edit(m);
     return Check(m);
   };
-  EXPECT_NE(refused([](cue_command_t& m) { m.status = 15; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.status = cue_command_t::STATUS_CUE_BLOCKED + 1; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.status = -1; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.heading = kNaN; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.path[1][0] = kNaN; }), "");

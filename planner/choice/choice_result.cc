@@ -6,7 +6,7 @@
 #include <variant>
 
 #include "planner/choice/scene_balls.h"
-#include "planner/pot/cue_elevation.h"
+#include "sim/cue/stroke_limits.h"
 #include "sim/table/table_simulation.h"
 
 namespace billiard::choice {
@@ -79,7 +79,7 @@ void NoPlan(const table::TableGeometry& table, double ball_radius,
   const int target = rules::LegalTargets(rules, balls).front();
   physics::CueStroke fallback = FallbackStroke(*FindBall(balls, 0), *FindBall(balls, target));
   if (robot) {
-    const std::variant<double, std::string> e = pot::ElevationFor(table, ball_radius, balls, fallback, *robot);
+    const std::variant<double, std::string> e = cue::ElevationFor(table, ball_radius, balls, 0, fallback, *robot);
     if (const std::string* why = std::get_if<std::string>(&e)) {
       result->reason += "; the fallback toward ball " + std::to_string(target) + " is cue_blocked: " + *why;
       return;

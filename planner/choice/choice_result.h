@@ -75,7 +75,7 @@ std::optional<ChoiceResult> Unplayable(const table::TableGeometry& table,
 
 // `result` made a kNoPlan for `reason`: its fallback hits the first legal target of `balls`
 // (under `rules`) full in the face from the cue ball, at the elevation `robot`'s cue needs
-// (pot::ElevationFor); none, and the reason said, when its cue clears at no elevation. Without a
+// (cue::ElevationFor); none, and the reason said, when its cue clears at no elevation. Without a
 // robot, level.
 void NoPlan(const table::TableGeometry& table, double ball_radius,
             const std::vector<table::SceneBall>& balls, rules::Rules rules,

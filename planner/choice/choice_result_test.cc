@@ -54,7 +54,7 @@ TEST_F(ChoiceResultTest, TheFallbackHitsTheFirstLegalTargetFullInTheFace) {
 }
 
 // With a robot the fallback is raised as a pot is: off the rail the gantry's cue clears it at
-// the elevation pot::ElevationFor finds; a robot that cannot raise its cue so far has none.
+// the elevation cue::ElevationFor finds; a robot that cannot raise its cue so far has none.
 TEST_F(ChoiceResultTest, TheFallbackIsRaisedForTheRobotsCueOrThereIsNone) {
   const double r0 = params_.ball.radius;
   const std::vector<table::SceneBall> balls = {table::AtRest(0, 1, r0 + 1e-3), table::AtRest(1, 1, 0.9)};

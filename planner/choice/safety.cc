@@ -10,7 +10,7 @@
 #include "planner/choice/lookahead.h"
 #include "planner/choice/placements.h"
 #include "planner/choice/scene_balls.h"
-#include "planner/pot/cue_elevation.h"
+#include "sim/cue/stroke_limits.h"
 #include "sim/model_choice/model_choice.h"
 
 namespace billiard::choice {
@@ -183,10 +183,10 @@ std::vector<SafetyCandidate> MakeableByCue(const table::TableGeometry& table,
   std::vector<SafetyCandidate> makeable;
   for (SafetyCandidate& c : candidates) {
     const std::variant<double, std::string> elevation =
-        pot::ElevationFor(table, params.ball.radius, balls, c.stroke, *robot);
+        cue::ElevationFor(table, params.ball.radius, balls, 0, c.stroke, *robot);
     if (!std::holds_alternative<double>(elevation)) continue;
     c.stroke.elevation = std::get<double>(elevation);
-    if (pot::HopHeight(c.stroke, cue_ball, params) > pot::kMaxHop) continue;
+    if (cue::HopHeight(c.stroke, cue_ball, params) > cue::kMaxHop) continue;
     makeable.push_back(c);
   }
   return makeable;

@@ -86,8 +86,10 @@ std::variant<PotPlan, Refusal> PlanRoute(SearchContext& search, const Route& rou
   // the aim, the pace and the truth are found at it.
   const std::variant<double, Refusal> elevation = NeededElevation(search, shape, first_heading);
   if (const Refusal* blocked = std::get_if<Refusal>(&elevation)) return *blocked;
-  if (std::get<double>(elevation) != shape.elevation) {
-    shape.elevation = std::get<double>(elevation);
+  shape.elevation = std::get<double>(elevation);
+  // Its first pace within what keeps the ball on the cloth at that elevation (TopCueSpeed).
+  shape.speed = std::min(shape.speed, TopCueSpeed(search, shape, first_heading));
+  if (shape.elevation != route.elevation || shape.speed != kFirstCueSpeed) {
     first_heading = FirstHeading(search, route, shape, ghost);
   }
   if (route.kind == ShotKind::kCurve) {

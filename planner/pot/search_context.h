@@ -53,6 +53,9 @@ std::size_t IndexOf(const table::TableSimulation& sim, int id);
 // An angle in words: "1.23 deg".
 std::string Degrees(double radians);
 
+// A speed in words: "0.3 m/s", "1.23 m/s".
+std::string MetresPerSecond(double speed);
+
 // A stroke's free parts, the heading left to the aim.
 struct StrokeShape {
   double speed = 0.0, tip_side = 0.0, tip_height = 0.0, elevation = 0.0;
