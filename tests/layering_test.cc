@@ -78,7 +78,7 @@ const std::map<std::string, std::set<std::string>>& Layers() {
        {"lcmtypes", "lcmtypes/node", "sim/params", "sim/physics", "sim/table", "plot"}},
       {"tools/camera_node", {"lcmtypes", "lcmtypes/node"}},
       {"tools/python",
-       {"sim/physics", "sim/table", "sim/params", "sim/batch", "sim/rules", "planner",
+       {"sim/physics", "sim/table", "sim/cue", "sim/params", "sim/batch", "sim/rules", "planner",
         "planner/pot", "planner/choice", "planner/players", "planner/game", "estimator"}},
       {"tests", {}},  // the cross-module tests may include anything
   };

@@ -113,7 +113,7 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
     return AnswerChoice(q, state, *latest_table_, table_, params_, options, *player_,
                         *choice_pool_, std::move(c));
   }
-  return AnswerToPoint(q, state, params_, options_.planner, std::move(c));
+  return AnswerToPoint(q, state, Candidates(q), table_, params_, options_, std::move(c));
 }
 
 std::vector<const ball_state_t*> PlannerNode::Candidates(const shot_request_t& q) const {

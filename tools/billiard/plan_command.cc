@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "planner/cue_planning.h"
 #include "planner/shot_planner.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
@@ -30,17 +31,15 @@ struct PlanArgs {
   bool json = false;
 };
 
-// The plan's stroke against the robot's cue, the ball alone on `table_name` (of the parameter
-// set's size): the elevation is the one the spin asks for (StrokeFor), not raised, so a stroke
-// the cue cannot make there is refused (cue_blocked) rather than played another way.
-cue::CueClearance CueOf(const planner::ShotPlan& plan, const Eigen::Vector2d& from, const physics::ModelParameters& params,
-                        const std::string& table_name, const cue::Robot& robot) {
+// Where the robot's cue is checked: `table_name` (of the parameter set's size), the ball alone
+// on it (the point planner knows no other balls).
+planner::CueSetting CueSettingOf(const std::string& robot_name, const std::string& table_name,
+                                 const physics::ModelParameters& params) {
   const table::TableGeometry table = LoadTableOption(table_name);
   if (std::abs(table.length - params.table.length) > 1e-9 || std::abs(table.width - params.table.width) > 1e-9) {
     throw UsageError("--table " + table_name + " is not the size of the parameter set's table");
   }
-  return cue::Clearance(table, params.ball.radius, {table::AtRest(0, from.x(), from.y())}, 0,
-                        plan.stroke, robot);
+  return planner::CueSetting{LoadRobotOption(robot_name), table, {}};
 }
 
 nlohmann::json PlanJson(const planner::ShotPlan& plan, const physics::ModelParameters& params) {
@@ -105,30 +104,20 @@ void Run(const PlanArgs& args, bool slide_given) {
   planner::PlannerOptions options;
   options.refine = !args.no_refine;
 
-  const cue::Robot robot = LoadRobotOption(args.robot);
-  const planner::ShotPlan plan = planner::PlanShot(request, params, options);
-  std::optional<cue::CueClearance> clearance;
-  if (plan.status == planner::PlanStatus::kOk) clearance = CueOf(plan, request.from, params, args.table, robot);
-  const bool blocked = clearance && !clearance->clears;
-  const std::string blocked_reason =
-      blocked ? "the " + robot.name + "'s cue meets " + clearance->what + " at the elevation the spin asks for" : "";
+  const planner::CueSetting setting = CueSettingOf(args.robot, args.table, params);
+  const planner::ShotPlan plan = planner::PlanShotForRobot(request, params, options, setting);
   if (args.json) {
     // The request's ends too, so that the plan alone can be drawn (`billiard plot --plan`).
     nlohmann::json j = PlanJson(plan, params);
     j["from"] = from;
     j["to"] = to;
-    j["robot"] = robot.name;
-    if (clearance) j["cue"]["clearance"] = ClearanceJson(*clearance);
-    if (blocked) {
-      j["status"] = "cue_blocked";
-      j["reason"] = blocked_reason;
-    }
+    j["robot"] = setting.robot.name;
+    if (plan.clearance) j["cue"]["clearance"] = ClearanceJson(*plan.clearance);
     std::cout << j.dump() << std::endl;
   }
   if (plan.status != planner::PlanStatus::kOk) {
     throw Refused(planner::PlanStatusName(plan.status) + ": " + plan.reason);
   }
-  if (blocked) throw Refused("cue_blocked: " + blocked_reason);
   if (!args.json) PrintSummary(plan, params, options.refine);
 }
 
@@ -155,8 +144,8 @@ void AddPlanCommand(CLI::App& app) {
   cmd->add_flag("--no-refine", args->no_refine,
                 "The closed-form inverse alone (its miss is still measured with the 5-DOF model)");
   cmd->add_option("--robot", args->robot,
-                  "The robot whose cue plays the stroke: gantry | player | FILE (sim/params/robots/); a "
-                  "stroke its cue cannot make from --from is refused cue_blocked")
+                  "The robot whose cue plays the stroke: gantry | player | FILE (sim/params/robots/); the "
+                  "stroke is played at the elevation its cue needs, refused cue_blocked where none clears")
       ->capture_default_str();
   cmd->add_option("--table", args->table, "The table the cue is checked on (the parameter set's size)")
       ->capture_default_str();

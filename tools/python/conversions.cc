@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/params/table_specs.h"
 
 namespace billiard::python {
@@ -42,6 +43,14 @@ table::TableGeometry Table(const std::string& name_or_path) {
     return table::BuildTable(params::LoadTableSpec(name_or_path));
   } catch (const std::invalid_argument& e) {
     throw py::value_error(e.what());
+  }
+}
+
+cue::Robot Robot(const std::string& name_or_path) {
+  try {
+    return params::LoadRobot(name_or_path);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("robot: ") + e.what());
   }
 }
 

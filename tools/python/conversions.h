@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/cue/robot.h"
 #include "sim/physics/ball_state.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
@@ -35,6 +36,9 @@ std::vector<double> Numbers(const Array& a, std::size_t n, const std::string& wh
 // A parameter set and a table by name or file; ValueError with the reason.
 physics::ModelParameters Params(const std::string& name_or_path);
 table::TableGeometry Table(const std::string& name_or_path);
+// The robot of a `robot` argument (params::LoadRobot: gantry, player or a file), as the CLI's
+// --robot; ValueError when it does not load.
+cue::Robot Robot(const std::string& name_or_path);
 
 // A ball's state as a 7-array [X, Y, vx, vy, wx, wy, wz].
 Array StateArray(const physics::BallState& s);
