@@ -150,7 +150,7 @@ py::dict Plan(const Array& from, const Array& to, double final_speed, const std:
   py::dict out;
   out["v0"] = Array(2, plan.v0.data());
   out["w0"] = Array(3, plan.w0.data());
-  out["cue"] = CueJson(plan.stroke);
+  out["cue"] = CueJson(plan.stroke, plan.clearance);
   out["predicted_final"] = Array(2, plan.predicted_final.data());
   out["arrival_time"] = plan.arrival_time;
   out["refined_miss_m"] = plan.refined_miss_m;
@@ -183,7 +183,7 @@ py::dict PlanPot(const Array& states, std::optional<std::vector<int>> ids, int b
   out["why"] = plan.why;
   out["v0"] = Array(2, plan.v0.data());
   out["w0"] = Array(3, plan.w0.data());
-  out["cue"] = CueJson(plan.stroke);
+  out["cue"] = CueJson(plan.stroke, plan.clearance);
   out["cut_deg"] = plan.cut_deg;
   out["margin_deg"] = std::vector<double>{plan.margin_left_deg, plan.margin_right_deg};
   out["speed_window"] = std::vector<double>{plan.speed_lo, plan.speed_hi};
@@ -265,13 +265,13 @@ PYBIND11_MODULE(billiard, m) {
         "by event, the closed form between events: 'ids', final 'states', 'pocketed', 'events'");
   m.def("plan", &Plan, arg("from_"), arg("to"), arg("final_speed") = 0.0,
         arg("spin") = "natural", arg("side_spin") = 0.0, arg("params") = "pool",
-        arg("robot") = params::kDefaultRobot, arg("table") = "pool-9ft",
+        arg("robot") = billiard::params::kDefaultRobot, arg("table") = "pool-9ft",
         "The launch and cue stroke that send a ball from `from_` to `to`, at the elevation the "
         "robot's cue needs on the table; raises Refused");
   m.def("plan_pot", &PlanPot, arg("states"), arg("ids") = py::none(), arg("ball") = 1,
         arg("pocket") = "upper_right", arg("kind") = "any", arg("cue_to") = py::none(),
         arg("cue_radius") = 0.0, arg("table") = "pool-9ft", arg("params") = "pool",
-        arg("robot") = params::kDefaultRobot,
+        arg("robot") = billiard::params::kDefaultRobot,
         "The stroke that pots `ball` in `pocket` from a scene (N x 7 states, id 0 the cue ball), "
         "planned against the whole-table simulation: 'kind', 'why', 'v0', 'w0', 'cue', "
         "'margin_deg', 'speed_window', 'cue_rest', 'paths'; raises Refused");

@@ -61,7 +61,7 @@ py::dict ChosenDict(const choice::Candidate& c) {
   d["ball"] = c.plan.ball;
   d["pocket"] = c.plan.pocket;
   d["kind"] = pot::ShotKindName(c.plan.kind);
-  d["cue"] = CueJson(c.plan.stroke);
+  d["cue"] = CueJson(c.plan.stroke, c.plan.clearance);
   d["v0"] = Array(2, c.plan.v0.data());
   d["w0"] = Array(3, c.plan.w0.data());
   d["cut_deg"] = c.plan.cut_deg;

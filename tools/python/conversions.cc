@@ -78,13 +78,22 @@ std::vector<table::SceneBall> SceneBalls(const Array& states, const std::optiona
   return balls;
 }
 
-py::dict CueJson(const physics::CueStroke& stroke) {
+py::dict CueJson(const physics::CueStroke& stroke, const std::optional<cue::CueClearance>& clearance) {
   py::dict cue;
   cue["speed"] = stroke.speed;
   cue["heading"] = stroke.heading;
   cue["tip_side"] = stroke.tip_side;
   cue["tip_height"] = stroke.tip_height;
   cue["elevation"] = stroke.elevation;
+  if (clearance) {
+    // As the CLI writes it (ClearanceJson): no distance when nothing is near.
+    py::dict c;
+    c["clears"] = clearance->clears;
+    c["nearest"] = clearance->what;
+    if (clearance->nearest == cue::Obstacle::kBall) c["ball"] = clearance->ball;
+    c["distance"] = std::isfinite(clearance->distance) ? py::object(py::float_(clearance->distance)) : py::none();
+    cue["clearance"] = c;
+  }
   return cue;
 }
 

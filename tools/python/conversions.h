@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/cue/clearance.h"
 #include "sim/cue/robot.h"
 #include "sim/physics/ball_state.h"
 #include "sim/physics/cue_strike.h"
@@ -46,7 +47,9 @@ Array StateArray(const physics::BallState& s);
 // The balls of an N x 7 array of states, ids 0..N-1 unless given.
 std::vector<table::SceneBall> SceneBalls(const Array& states, const std::optional<std::vector<int>>& ids);
 
-// A stroke as the CLI's JSON has it: {"speed", "heading", "tip_side", "tip_height", "elevation"}.
-py::dict CueJson(const physics::CueStroke& stroke);
+// A stroke as the CLI's JSON has it: {"speed", "heading", "tip_side", "tip_height", "elevation"},
+// and "clearance" ({"clears", "nearest", "ball" for a ball, "distance"}) where the robot's cue was
+// checked.
+py::dict CueJson(const physics::CueStroke& stroke, const std::optional<cue::CueClearance>& clearance = std::nullopt);
 
 }  // namespace billiard::python
