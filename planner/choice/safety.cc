@@ -186,7 +186,8 @@ std::vector<SafetyCandidate> MakeableByCue(const table::TableGeometry& table,
         cue::ElevationFor(table, params.ball.radius, balls, 0, c.stroke, *robot);
     if (!std::holds_alternative<double>(elevation)) continue;
     c.stroke.elevation = std::get<double>(elevation);
-    if (cue::HopHeight(c.stroke, cue_ball, params) > cue::kMaxHop) continue;
+    // Slowed to the fastest pace that keeps the ball on the cloth: the screening plays it so.
+    c.stroke.speed = std::min(c.stroke.speed, cue::HopFreeSpeed(c.stroke, cue_ball, params));
     makeable.push_back(c);
   }
   return makeable;

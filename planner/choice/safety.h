@@ -75,9 +75,10 @@ std::vector<SafetyCandidate> SafetyStrokes(double radius, const std::vector<tabl
                                            rules::Rules rules);
 
 // `candidates` as `robot`'s cue can make them: each raised to the elevation its cue needs
-// (cue::ElevationFor, the pots' margin included), and dropped where no elevation in the robot's
-// range clears or where that elevation would hop the ball off the cloth (cue::kMaxHop), as a
-// pot would be refused. Without a robot, the candidates as they are (level).
+// (cue::ElevationFor, the pots' margin included) and slowed where that elevation would hop the
+// ball off the cloth at its pace (to cue::HopFreeSpeed, as the pots' pace is held), dropped where
+// no elevation in the robot's range clears, as a pot would be refused. Without a robot, the
+// candidates as they are (level).
 std::vector<SafetyCandidate> MakeableByCue(const table::TableGeometry& table,
                                            const physics::ModelParameters& params,
                                            const std::vector<table::SceneBall>& balls,
