@@ -93,6 +93,7 @@ choice::ChoiceOptions BaseChoice(const GameBenchmarkOptions& options,
   c.noise = noise;
   c.samples = options.samples;
   c.confirm_samples = options.confirm_samples;
+  c.pot.robot = options.robot;
   return c;
 }
 
@@ -261,6 +262,15 @@ GameBenchmarkResult RunGameBenchmark(
   return result;
 }
 
+namespace {
+
+// The robot the choices plan for, in words.
+std::string RobotName(const GameBenchmarkOptions& options) {
+  return options.robot ? options.robot->name : "none (level cue, unchecked)";
+}
+
+}  // namespace
+
 nlohmann::json GameSummaryJson(const GameBenchmarkResult& r) {
   nlohmann::json j;
   int executions = 0, potted = 0;
@@ -321,6 +331,7 @@ nlohmann::json GameSummaryJson(const GameBenchmarkResult& r) {
   j["layouts"] = r.policies.empty() ? 0 : r.policies.front().games;
   j["layouts_requested"] = r.options.layouts;
   j["seed"] = r.options.seed;
+  j["robot"] = RobotName(r.options);
   return j;
 }
 
@@ -339,9 +350,11 @@ void WriteGameReport(const GameBenchmarkResult& r, const std::string& dir) {
       << "From `nice billiard bench-game --out docs/benchmarks --layouts " << r.options.layouts
       << " --calibration-layouts " << r.options.calibration_layouts << " --executions "
       << r.options.executions << " --confirm-samples " << r.options.confirm_samples
-      << " --seed " << r.options.seed << " --threads " << r.options.threads
+      << " --seed " << r.options.seed << " --threads " << r.options.threads << " --robot "
+      << (r.options.robot ? r.options.robot->name : "none")
       << "` (seeded nine-ball layouts on pool-9ft, bench/game_benchmark.h). The numbers are this "
-      << "run's, on a 2-core machine shared with other work.";
+      << "run's, on a 2-core machine shared with other work. Robot: " << RobotName(r.options)
+      << " (every stroke at the elevation its cue needs, planner/pot/cue_elevation.h).";
   if (layouts < r.options.layouts) {
     out << " **The run was stopped after " << layouts << " of the " << r.options.layouts
         << " layouts asked for** (each chunk of " << r.options.chunk

@@ -19,6 +19,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <optional>
 #include <vector>
 
 #include "planner/game/game.h"
@@ -35,6 +36,8 @@ struct GameBenchmarkOptions {
   int threads = 2;
   int shot_limit = 12;  // of a drill's one visit (nine balls and some fouls to spare)
   int chunk = 10;  // layouts between checkpoints
+  // The robot whose cue plays every choice's strokes (PotOptions::robot); none: the level cue.
+  std::optional<cue::Robot> robot;
   std::function<void(const std::string&)> progress = [](const std::string&) {};
 };
 

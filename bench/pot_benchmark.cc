@@ -110,6 +110,8 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
   }
   PotBenchmarkResult result;
   result.options = options;
+  pot::PotOptions plan_options;
+  plan_options.robot = options.robot;
   int margins = 0;
   for (int i = 0; i < options.layouts; ++i) {
     const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(i);
@@ -124,7 +126,7 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
                                                          layout.request.ball, layout.request.pocket,
                                                          pot::testing::kClearCutDeg);
     const double cpu_start = ThreadCpuUs();
-    run.plan = pot::PlanPot(t.geometry, t.p, layout.balls, layout.request);
+    run.plan = pot::PlanPot(t.geometry, t.p, layout.balls, layout.request, plan_options);
     run.cpu_us = ThreadCpuUs() - cpu_start;
     if (run.plan.status == pot::PotStatus::kOk) {
       const Check c = Simulate(t, layout.balls, PlannedLaunch(layout.balls, run.plan), run.plan.ball, run.plan.pocket);
@@ -165,7 +167,7 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
       pr.target = k + radius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
     } while (!pool.geometry.OnSurface(pr.target, pool.p.ball.radius));
     layout.request.cue_target = pot::CueTarget{pr.target, 0.0};
-    pr.plan = pot::PlanPot(pool.geometry, pool.p, layout.balls, layout.request);
+    pr.plan = pot::PlanPot(pool.geometry, pool.p, layout.balls, layout.request, plan_options);
     if (pr.plan.status == pot::PotStatus::kOk) {
       const Check c = Simulate(pool, layout.balls, PlannedLaunch(layout.balls, pr.plan), pr.plan.ball, pr.plan.pocket);
       pr.legal = c.legal;
@@ -177,6 +179,28 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
+
+namespace {
+
+// The cue's share: the robot, the elevation every ok plan is played at, the pots refused because
+// its cue clears at no elevation (cue_blocked) or would lift the ball off the cloth.
+nlohmann::json CueSummary(const PotBenchmarkResult& r) {
+  std::vector<double> elevations;
+  int blocked = 0, lifted = 0, elevated = 0;
+  for (const PotRun& run : r.runs) {
+    blocked += run.plan.status == pot::PotStatus::kCueBlocked;
+    lifted += run.plan.reason.find("lift the ball off the cloth") != std::string::npos;
+    if (run.plan.status != pot::PotStatus::kOk) continue;
+    elevations.push_back(run.plan.stroke.elevation * 180.0 / M_PI);
+    elevated += run.plan.stroke.elevation > 0.0;
+  }
+  return {{"robot", r.options.robot ? r.options.robot->name : "none (level cue, unchecked)"},
+          {"cue_blocked", blocked}, {"lifts_ball", lifted}, {"elevated", elevated},
+          {"elevation_deg", {{"median", Quantile(elevations, 0.5)}, {"p90", Quantile(elevations, 0.9)},
+                             {"max", elevations.empty() ? 0.0 : *std::max_element(elevations.begin(), elevations.end())}}}};
+}
+
+}  // namespace
 
 nlohmann::json PotSummaryJson(const PotBenchmarkResult& r) {
   int ok = 0, verified = 0, clear = 0, clear_ok = 0, blocked_ok = 0;
@@ -243,6 +267,7 @@ nlohmann::json PotSummaryJson(const PotBenchmarkResult& r) {
                    {"all_median", Quantile(all_us, 0.5)}, {"all_p95", Quantile(all_us, 0.95)}};
   j["cpu_us"] = {{"pool_median", Quantile(pool_cpu, 0.5)}, {"pool_p95", Quantile(pool_cpu, 0.95)},
                  {"pool_direct_median", Quantile(direct_cpu, 0.5)}, {"pool_direct_p95", Quantile(direct_cpu, 0.95)}};
+  j["cue"] = CueSummary(r);
   j["wall_s"] = r.wall_s;
   return j;
 }
@@ -300,6 +325,15 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
       out << "- seed " << run.seed << " (" << run.table << "): " << run.verify_failure << "\n";
     }
   }
+  const nlohmann::json& cue = s["cue"];
+  out << "\n## The cue\n\nRobot: " << cue["robot"].get<std::string>() << ". The ok plans' cue elevation "
+      << "(the least that clears plus 1 deg, planner/pot/cue_elevation.h): median "
+      << Fixed(cue["elevation_deg"]["median"].get<double>(), 2) << " deg, p90 "
+      << Fixed(cue["elevation_deg"]["p90"].get<double>(), 2) << " deg, max "
+      << Fixed(cue["elevation_deg"]["max"].get<double>(), 2) << " deg; " << cue["elevated"].get<int>() << " of "
+      << s["ok"].get<int>() << " above level. Refused: " << cue["cue_blocked"].get<int>()
+      << " cue_blocked (the cue clears at no elevation), " << cue["lifts_ball"].get<int>()
+      << " whose cue would lift the ball off the cloth (the reason of the best route tried).\n";
   out << "\n## Coverage\n\n"
       << "Of the " << s["coverage"]["straight_clear"].get<int>() << " pots whose straight ghost-ball "
       << "line is clear (no ball within a ball's width of either line, the object ball's line clear of the "

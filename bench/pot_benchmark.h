@@ -30,6 +30,8 @@ struct PotBenchmarkOptions {
   int position_targets = 100;
   // Every snooker_every-th layout is on the snooker table (the rest pool-9ft).
   int snooker_every = 5;
+  // The robot whose cue plays the plans (PotOptions::robot); none: the level cue, unchecked.
+  std::optional<cue::Robot> robot;
   std::function<void(const std::string&)> progress = [](const std::string&) {};
 };
 

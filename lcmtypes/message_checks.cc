@@ -381,7 +381,7 @@ std::string Check(const shot_request_t& m) {
 std::string Check(const cue_command_t& m) {
   if (std::string why = Utime(m.utime, "command"); !why.empty()) return why;
   if (m.request_id < 0) return "negative request_id " + std::to_string(m.request_id);
-  if (m.status < cue_command_t::STATUS_OK || m.status > cue_command_t::STATUS_NOT_AT_REST) {
+  if (m.status < cue_command_t::STATUS_OK || m.status > cue_command_t::STATUS_CUE_BLOCKED) {
     return "unknown status " + std::to_string(m.status);
   }
   const double stroke[] = {m.cue_speed, m.heading, m.tip_side, m.tip_height, m.elevation};

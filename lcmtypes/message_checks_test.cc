@@ -390,7 +390,7 @@ TEST(MessageChecks, CueCommandMeaning) {
     edit(m);
     return Check(m);
   };
-  EXPECT_NE(refused([](cue_command_t& m) { m.status = 15; }), "");
+  EXPECT_NE(refused([](cue_command_t& m) { m.status = cue_command_t::STATUS_CUE_BLOCKED + 1; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.status = -1; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.heading = kNaN; }), "");
   EXPECT_NE(refused([](cue_command_t& m) { m.path[1][0] = kNaN; }), "");
@@ -462,7 +462,8 @@ TEST(MessageChecks, PotCommandMeaning) {
   // A refused pot: its status and reason, no stroke.
   for (const int8_t status :
        {cue_command_t::STATUS_NO_SUCH_BALL, cue_command_t::STATUS_BLOCKED,
-        cue_command_t::STATUS_TARGET_UNREACHABLE, cue_command_t::STATUS_NOT_AT_REST}) {
+        cue_command_t::STATUS_TARGET_UNREACHABLE, cue_command_t::STATUS_CUE_BLOCKED,
+        cue_command_t::STATUS_NOT_AT_REST}) {
     EXPECT_EQ(refused([&](cue_command_t& m) {
                 m.status = status;
                 m.cue_speed = 0.0;

@@ -37,6 +37,8 @@ std::string CueCommandStatusName(std::int8_t status) {
       return "no_stroke";
     case cue_command_t::STATUS_TARGET_UNREACHABLE:
       return "target_unreachable";
+    case cue_command_t::STATUS_CUE_BLOCKED:
+      return "cue_blocked";
     case cue_command_t::STATUS_NOT_AT_REST:
       return "not_at_rest";
   }

@@ -61,7 +61,7 @@ void Conclude(Shot& shot, const double launch[2], bool arrived, ShotPlan* plan) 
       return;
     }
   }
-  const physics::StrokeSolution stroke = physics::StrokeFor(plan->v0, plan->w0, shot.params());
+  const physics::StrokeSolution stroke = physics::StrokeFor(plan->v0, plan->w0, shot.params(), std::tan(options.elevation));
   if (!stroke.ok) {
     plan->status = PlanStatus::kUnreachable;
     plan->reason = stroke.reason;

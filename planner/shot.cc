@@ -27,8 +27,8 @@ double ArrivalTimeLimit(const ShotRequest& q, const HeldSpin& held, const Launch
 physics::BallState Launch::State(double speed, double heading) const {
   const Eigen::Vector2d e(std::cos(heading), std::sin(heading));
   const double spin = k_ * speed / r_;  // about z x e
-  return physics::MakeBallState(from_.x(), from_.y(), speed * e.x(), speed * e.y(), -spin * e.y(),
-                                spin * e.x(), wz_);
+  return physics::MakeBallState(from_.x(), from_.y(), speed * e.x(), speed * e.y(), -spin * e.y() + along_ * e.x(),
+                                spin * e.x() + along_ * e.y(), wz_);
 }
 
 Eigen::Matrix<double, 7, 2> Launch::Derivative(double speed, double heading) const {
@@ -36,7 +36,8 @@ Eigen::Matrix<double, 7, 2> Launch::Derivative(double speed, double heading) con
   const double kr = k_ / r_;
   Eigen::Matrix<double, 7, 2> d = Eigen::Matrix<double, 7, 2>::Zero();
   d.col(0) << 0, 0, e.x(), e.y(), -kr * e.y(), kr * e.x(), 0;
-  d.col(1) << 0, 0, -speed * e.y(), speed * e.x(), -kr * speed * e.x(), -kr * speed * e.y(), 0;
+  d.col(1) << 0, 0, -speed * e.y(), speed * e.x(), -kr * speed * e.x() - along_ * e.y(),
+      -kr * speed * e.y() + along_ * e.x(), 0;
   return d;
 }
 
@@ -57,7 +58,7 @@ Shot::Shot(const ShotRequest& q, const HeldSpin& held, const physics::ModelParam
     : q_(q),
       params_(params),
       options_(options),
-      launch_(q.from, held.spin_ratio, q.side_spin, params.ball.radius),
+      launch_(q.from, held.spin_ratio, q.side_spin, params.ball.radius, std::tan(options.elevation)),
       speeds_(held.speeds),
       t_max_(ArrivalTimeLimit(q, held, launch_, params)) {}
 

@@ -21,11 +21,15 @@
 namespace billiard::planner {
 
 // The launch of a straight shot as the refinement parametrises it: speed s along the heading
-// theta, spin across the line R w = k s, side spin wz held.
+// theta, spin across the line R w = k s, side spin wz held; and, for a cue raised to the slope
+// t = tan(elevation) (PlannerOptions::elevation), the spin about the travel wz t that its side
+// spin comes with: the impulse tilted down by t is perpendicular to the spin it gives
+// (w = P x J / I), so w . e = wz t (physics::StrokeFor). Without side spin an elevated cue gives
+// the level launch (the table takes the rest).
 class Launch {
  public:
-  Launch(const Eigen::Vector2d& from, double spin_ratio, double side_spin, double radius)
-      : from_(from), k_(spin_ratio), wz_(side_spin), r_(radius) {}
+  Launch(const Eigen::Vector2d& from, double spin_ratio, double side_spin, double radius, double slope = 0.0)
+      : from_(from), k_(spin_ratio), wz_(side_spin), r_(radius), along_(side_spin * slope) {}
 
   physics::BallState State(double speed, double heading) const;
 
@@ -35,6 +39,7 @@ class Launch {
  private:
   Eigen::Vector2d from_;
   double k_, wz_, r_;
+  double along_;  // the spin about the travel [rad/s]
 };
 
 // Step 2 of PlanShot: the closed form's launch as the refinement parametrises it, the spin it

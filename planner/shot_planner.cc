@@ -1,6 +1,7 @@
 #include "planner/shot_planner.h"
 
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -26,6 +27,8 @@ std::string PlanStatusName(PlanStatus status) {
       return "unreachable";
     case PlanStatus::kNotConverged:
       return "not_converged";
+    case PlanStatus::kCueBlocked:
+      return "cue_blocked";
   }
   return "?";
 }
@@ -87,6 +90,9 @@ int Refine(Shot& shot, double launch[2]) {
 
 ShotPlan Plan(const ShotRequest& q, const physics::ModelParameters& params,
               const PlannerOptions& options) {
+  if (!(options.elevation >= 0.0 && options.elevation < M_PI / 2)) {
+    return Refused(PlanStatus::kInvalid, "the cue's elevation must lie in [0, 90) deg");
+  }
   LaunchSolution guess;
   if (auto refusal = CheckRequest(q, params, &guess)) return *refusal;
   const HeldSpin held = HoldTheSpin(q, guess, params);

@@ -21,10 +21,12 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "planner/closed_form_inverse.h"
+#include "sim/cue/clearance.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
 #include "sim/physics/simulator.h"
@@ -38,9 +40,11 @@ enum class PlanStatus {
   kOffTable,      // start or target outside the playing surface (ball centre within r of an edge)
   kUnreachable,   // no stroke within the robot's limits, or outside the model's validity
   kNotConverged,  // the refinement ended with a miss above the tolerance
+  kCueBlocked,    // the robot's cue meets the rails, a ball or its body at every elevation it
+                  // has (PlanShotForRobot, cue_planning.h)
 };
 
-// "ok", "invalid", "off_table", "unreachable", "not_converged".
+// "ok", "invalid", "off_table", "unreachable", "not_converged", "cue_blocked".
 std::string PlanStatusName(PlanStatus status);
 
 // How the refinement gets the derivative of the miss with respect to the launch.
@@ -70,6 +74,11 @@ struct PlannerOptions {
   // measured against the 5-DOF simulation).
   bool refine = true;
   JacobianMethod jacobian = JacobianMethod::kSensitivities;
+  // The cue's elevation the stroke is played at [rad], in [0, pi/2): the launch carries the spin
+  // about the travel that side spin comes with at it (its swerve, Launch in shot.h), and the
+  // stroke is the one at it (physics::StrokeFor). PlanShotForRobot (cue_planning.h) sets it to
+  // what the robot's cue needs; 0, a level cue.
+  double elevation = 0.0;
 
   static physics::SimulationOptions DefaultRefinementSimulation();
 };
@@ -94,6 +103,9 @@ struct ShotPlan {
   int iterations = 0;               // corrections of the launch (Newton's and Ceres')
   int simulations = 0;              // 5-DOF simulations run for the plan
   double slide_length = 0.0;        // x1 of the closed-form solution [m]
+  // The stroke's cue against a robot's (PlanShotForRobot): it clears, what comes nearest and how
+  // near; none when no robot was given.
+  std::optional<cue::CueClearance> clearance;
 };
 
 // Plans `request` on the table and ball of `params`. Never throws on a bad request: the status

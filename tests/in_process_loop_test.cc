@@ -20,6 +20,7 @@
 #include "planner/node/command_writing.h"
 #include "planner/node/planner_node.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/table_sim_node/session.h"
 #include "sim/table_sim_node/table_sim_node.h"
 #include "tests/support/quoted_figures.h"
@@ -28,6 +29,24 @@ namespace billiard {
 namespace {
 
 void Quiet(const std::string&) {}
+
+// The nodes on memq:// with the pool set: the simulator's camera, the estimator, the planner.
+struct Nodes {
+  lcm::LCM lcm{"memq://"};
+  physics::ModelParameters params = params::LoadParameters("pool");
+  camera::CameraModel camera = table_sim_node::SessionCamera(params.table);
+  estimator_node::EstimatorNode estimator{lcm, camera, params, {}, {}, Quiet};
+  planner_node::PlannerNode planner{lcm, params, {}, Quiet};
+};
+
+// The estimator and the planner run inside the simulator's waits, as `billiard loop` runs them.
+void WithTheNodes(table_sim_node::TableSimNode& node, estimator_node::EstimatorNode& estimator,
+                  planner_node::PlannerNode& planner) {
+  node.RunAlongside([&] {
+    estimator.Work();
+    return planner.Work();
+  });
+}
 
 struct LatestTruth {
   std::int64_t utime = -1;
@@ -56,10 +75,7 @@ TEST(InProcessLoop, ASessionRestartingTheClockSoonAfterTheLastIsServed) {
   options.min_distance = 0.15;
   for (int session = 0; session < 2; ++session) {
     table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
-    node.RunAlongside([&] {
-      estimator.Work();
-      return planner.Work();
-    });
+    WithTheNodes(node, estimator, planner);
     const std::vector<table_sim_node::ShotResult> shots = node.Run();
     ASSERT_EQ(shots.size(), 1u);
     EXPECT_EQ(shots[0].status, "ok") << shots[0].reason;
@@ -70,6 +86,29 @@ TEST(InProcessLoop, ASessionRestartingTheClockSoonAfterTheLastIsServed) {
     }
   }
   EXPECT_EQ(estimator.health().counter("clock_reset"), 1);
+}
+
+// The table simulator's robot checks every stroke and says so in NODE_STATUS: the ball a
+// millimetre off the lower rail, every target up the table, the point planner's stroke level,
+// and a robot that cannot raise its cue: the cue lies across the rail. The shots session's point
+// planner cannot raise its cue yet, so the stroke is counted cue_blocked_played and played
+// (a pot or a game's stroke would be refused, cue_blocked).
+TEST(InProcessLoop, TheSimulatorsRobotSaysWhichStrokeItsCueCannotMakeAndCountsIt) {
+  Nodes n;
+  table_sim_node::TableSimOptions options;
+  options.robot = params::LoadRobot("gantry");
+  options.robot->elevation.max = 0.0;
+  options.start = {0.5 * n.params.table.length, n.params.ball.radius + 1e-3};
+  options.shots = 1;
+  options.target_margin = 0.4;
+  options.reply_timeout = 3.0;
+  table_sim_node::TableSimNode node(n.lcm, n.params, n.camera, options, Quiet);
+  WithTheNodes(node, n.estimator, n.planner);
+  const std::vector<table_sim_node::ShotResult> shots = node.Run();
+  ASSERT_EQ(shots.size(), 1u);
+  EXPECT_EQ(shots[0].status, "ok") << shots[0].reason;
+  EXPECT_EQ(node.health().counter("cue_blocked_played"), 1);
+  EXPECT_NE(node.health().last_error().find("lower rail"), std::string::npos) << node.health().last_error();
 }
 
 // A planner that never sees the table at rest (its answer to every request after its wait),
@@ -140,10 +179,7 @@ TEST(InProcessLoop, NoiseLeavesTheTargetsAsTheyWere) {
     options.min_distance = 0.15;
     if (noise) options.noise = table_sim_node::RobotExecutionNoise();
     table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
-    node.RunAlongside([&] {
-      estimator.Work();
-      return planner.Work();
-    });
+    WithTheNodes(node, estimator, planner);
     runs.push_back(node.Run());
     ASSERT_EQ(runs.back().size(), 2u);
   }
@@ -165,10 +201,7 @@ TEST(InProcessLoop, ASessionIsRefusedWhileTheNodesRunOtherPhysics) {
   table_sim_node::TableSimOptions options;
   options.shots = 1;
   table_sim_node::TableSimNode node(lcm, pool, camera, options, Quiet);
-  node.RunAlongside([&] {
-    estimator.Work();
-    return planner.Work();
-  });
+  WithTheNodes(node, estimator, planner);
   try {
     node.Run();
     FAIL() << "a session with a planner on the paper set ran";
@@ -225,10 +258,7 @@ table_sim_node::SceneResult Break(std::uint64_t seed) {
   options.scene = "break";
   options.seed = seed;
   table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
-  node.RunAlongside([&] {
-    estimator.Work();
-    return planner.Work();
-  });
+  WithTheNodes(node, estimator, planner);
   return node.RunScene();
 }
 

@@ -33,6 +33,15 @@ NodeHealth::NodeHealth(std::string node, Log log, Clock::duration period)
 
 void NodeHealth::Dropped(const std::string& why) {
   ++dropped_;
+  Record("dropped: ", why);
+}
+
+void NodeHealth::Refused(const std::string& counter, const std::string& why) {
+  Count(counter);
+  Record("refused: ", why);
+}
+
+void NodeHealth::Record(const char* what, const std::string& why) {
   last_error_ = why;
   last_error_utime_ = WallUtime();
   const Clock::time_point now = Clock::now();
@@ -45,7 +54,7 @@ void NodeHealth::Dropped(const std::string& why) {
     return;
   }
   ++log_lines_;
-  std::string line = "dropped: " + why;
+  std::string line = what + why;
   if (not_logged_ > 0) {
     line += " (" + std::to_string(not_logged_) + " earlier refusals not logged)";
     not_logged_ = 0;

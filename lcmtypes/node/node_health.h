@@ -34,6 +34,10 @@ class NodeHealth {
   void Published() { ++published_; }
   // Counts a refused message and logs why (rate-limited, see above).
   void Dropped(const std::string& why);
+  // Counts a message the node read and refused to act on under `counter` (a table simulator's
+  // robot refusing a stroke its cue cannot make: "cue_blocked"), the reason its last error,
+  // logged as Dropped's are.
+  void Refused(const std::string& counter, const std::string& why);
   // Counts an event of the node's own: "duplicate", "stale_state", "busy", ...
   void Count(const std::string& counter, std::int64_t n = 1) { counters_[counter] += n; }
   // A setting of the node's, reported among its counters so that a log of its statuses says how
@@ -66,6 +70,9 @@ class NodeHealth {
   void PublishIfDue(lcm::LCM& lcm);
 
  private:
+  // The latest refusal `why` as the last error, logged after `what` ("dropped: "), at most
+  // kLogLinesPerSecond lines a second.
+  void Record(const char* what, const std::string& why);
   const std::string node_;
   const Log log_;
   const Clock::duration period_;

@@ -67,6 +67,18 @@ TEST(NodeHealth, CountsAndReportsWhatHappened) {
   EXPECT_EQ(next.dropped, 2);
 }
 
+TEST(NodeHealth, ARefusalIsCountedUnderItsNameAndIsTheLastErrorButNotADrop) {
+  std::vector<std::string> log;
+  NodeHealth health("table_sim_node", [&log](const std::string& line) { log.push_back(line); });
+  health.Refused("cue_blocked", "CUE_COMMAND 3: the gantry's cue meets ball 4");
+  health.Refused("cue_blocked", "CUE_COMMAND 5: the gantry's cue meets the lower rail");
+  EXPECT_EQ(health.counter("cue_blocked"), 2);
+  EXPECT_EQ(health.dropped(), 0);
+  EXPECT_EQ(health.last_error(), "CUE_COMMAND 5: the gantry's cue meets the lower rail");
+  ASSERT_EQ(log.size(), 2u);
+  EXPECT_EQ(log[0], "refused: CUE_COMMAND 3: the gantry's cue meets ball 4");
+}
+
 TEST(NodeHealth, AFloodOfRefusalsIsCountedButNotAllLogged) {
   std::vector<std::string> log;
   NodeHealth health("test_node", [&log](const std::string& line) { log.push_back(line); });

@@ -3,8 +3,10 @@
 #include <cmath>
 #include <stdexcept>
 #include <utility>
+#include <variant>
 
 #include "planner/choice/scene_balls.h"
+#include "sim/cue/stroke_limits.h"
 #include "sim/table/table_simulation.h"
 
 namespace billiard::choice {
@@ -69,12 +71,22 @@ std::optional<ChoiceResult> Unplayable(const table::TableGeometry& table,
   return std::nullopt;
 }
 
-void NoPlan(const std::vector<table::SceneBall>& balls, rules::Rules rules, std::string reason,
-            ChoiceResult* result) {
+void NoPlan(const table::TableGeometry& table, double ball_radius,
+            const std::vector<table::SceneBall>& balls, rules::Rules rules,
+            const std::optional<cue::Robot>& robot, std::string reason, ChoiceResult* result) {
   result->status = ChoiceStatus::kNoPlan;
   result->reason = std::move(reason);
   const int target = rules::LegalTargets(rules, balls).front();
-  result->fallback = FallbackStroke(*FindBall(balls, 0), *FindBall(balls, target));
+  physics::CueStroke fallback = FallbackStroke(*FindBall(balls, 0), *FindBall(balls, target));
+  if (robot) {
+    const std::variant<double, std::string> e = cue::ElevationFor(table, ball_radius, balls, 0, fallback, *robot);
+    if (const std::string* why = std::get_if<std::string>(&e)) {
+      result->reason += "; the fallback toward ball " + std::to_string(target) + " is cue_blocked: " + *why;
+      return;
+    }
+    fallback.elevation = std::get<double>(e);
+  }
+  result->fallback = fallback;
 }
 
 }  // namespace billiard::choice

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "planner/choice/candidates.h"
+#include "sim/cue/robot.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
 #include "sim/rules/rules.h"
@@ -73,8 +74,11 @@ std::optional<ChoiceResult> Unplayable(const table::TableGeometry& table,
                                        rules::Rules rules);
 
 // `result` made a kNoPlan for `reason`: its fallback hits the first legal target of `balls`
-// (under `rules`) full in the face from the cue ball.
-void NoPlan(const std::vector<table::SceneBall>& balls, rules::Rules rules, std::string reason,
-            ChoiceResult* result);
+// (under `rules`) full in the face from the cue ball, at the elevation `robot`'s cue needs
+// (cue::ElevationFor); none, and the reason said, when its cue clears at no elevation. Without a
+// robot, level.
+void NoPlan(const table::TableGeometry& table, double ball_radius,
+            const std::vector<table::SceneBall>& balls, rules::Rules rules,
+            const std::optional<cue::Robot>& robot, std::string reason, ChoiceResult* result);
 
 }  // namespace billiard::choice

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "planner/choice/testing/choice_test.h"
+#include "sim/cue/clearance.h"
+#include "sim/params/robots.h"
 
 namespace billiard::choice {
 namespace {
@@ -42,13 +44,31 @@ TEST_F(ChoiceResultTest, TheFallbackHitsTheFirstLegalTargetFullInTheFace) {
   const std::vector<table::SceneBall> balls = {table::AtRest(0, 1, 0.5), table::AtRest(4, 1.3, 0.9),
                                                table::AtRest(2, 0.6, 0.1)};
   ChoiceResult r;
-  NoPlan(balls, Rules::kNineBall, "why", &r);
+  NoPlan(table_, params_.ball.radius, balls, Rules::kNineBall, std::nullopt, "why", &r);
   EXPECT_EQ(r.status, ChoiceStatus::kNoPlan);
   EXPECT_EQ(r.reason, "why");
   ASSERT_TRUE(r.fallback);
   EXPECT_DOUBLE_EQ(r.fallback->heading, std::atan2(0.1 - 0.5, 0.6 - 1.0));
   EXPECT_GT(r.fallback->speed, 0.0);
   EXPECT_EQ(r.stroke(), &*r.fallback);
+}
+
+// With a robot the fallback is raised as a pot is: off the rail the gantry's cue clears it at
+// the elevation cue::ElevationFor finds; a robot that cannot raise its cue so far has none.
+TEST_F(ChoiceResultTest, TheFallbackIsRaisedForTheRobotsCueOrThereIsNone) {
+  const double r0 = params_.ball.radius;
+  const std::vector<table::SceneBall> balls = {table::AtRest(0, 1, r0 + 1e-3), table::AtRest(1, 1, 0.9)};
+  cue::Robot gantry = params::LoadRobot("gantry");
+  ChoiceResult raised;
+  NoPlan(table_, r0, balls, Rules::kAny, gantry, "why", &raised);
+  ASSERT_TRUE(raised.fallback);
+  EXPECT_GT(raised.fallback->elevation, 0.0);
+  EXPECT_TRUE(cue::Clearance(table_, r0, balls, 0, *raised.fallback, gantry).clears);
+  gantry.elevation.max = 5.0 * M_PI / 180;
+  ChoiceResult none;
+  NoPlan(table_, r0, balls, Rules::kAny, gantry, "why", &none);
+  EXPECT_FALSE(none.fallback);
+  EXPECT_NE(none.reason.find("cue_blocked"), std::string::npos) << none.reason;
 }
 
 TEST(ChoiceResultStrokeTest, TheChosenPotsStrokeElseNone) {

@@ -9,6 +9,7 @@
 #include "planner/choice/placements.h"
 #include "planner/choice/scene_balls.h"
 #include "planner/pot/pot_geometry.h"
+#include "sim/cue/clearance.h"
 
 namespace billiard::choice {
 
@@ -63,6 +64,10 @@ std::optional<Candidate> EasiestThatPlans(const table::TableGeometry& table,
     if (const auto heading = pot::GhostBallHeading(table, params, scene, plan, options.pot)) {
       plan.stroke.heading = *heading;
     }
+    if (options.pot.robot) {
+      plan.clearance = cue::Clearance(table, params.ball.radius, scene, 0, plan.stroke, *options.pot.robot);
+      if (!plan.clearance->clears) continue;  // the ghost ball's heading turned into the cue's way
+    }
     Candidate c;
     c.plan = std::move(plan);
     c.screen_probability = look.estimate;
@@ -95,7 +100,8 @@ ChoiceResult ChooseEasiestLooking(const table::TableGeometry& table,
     result.status = ChoiceStatus::kOk;
     result.likely = result.candidates.front().score >= options.likely;
   } else {
-    NoPlan(scene, options.rules, "no direct pot of a legal ball plans", &result);
+    NoPlan(table, params.ball.radius, scene, options.rules, options.pot.robot, "no direct pot of a legal ball plans",
+           &result);
   }
   result.decision_us = MicrosecondsSince(start);
   return result;

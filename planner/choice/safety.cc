@@ -4,10 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <string>
+#include <variant>
 
 #include "planner/choice/lookahead.h"
 #include "planner/choice/placements.h"
 #include "planner/choice/scene_balls.h"
+#include "sim/cue/stroke_limits.h"
 #include "sim/model_choice/model_choice.h"
 
 namespace billiard::choice {
@@ -170,6 +173,26 @@ std::vector<SafetyCandidate> SafetyStrokes(double radius, const std::vector<tabl
   return candidates;
 }
 
+std::vector<SafetyCandidate> MakeableByCue(const table::TableGeometry& table,
+                                           const physics::ModelParameters& params,
+                                           const std::vector<table::SceneBall>& balls,
+                                           const std::optional<cue::Robot>& robot,
+                                           std::vector<SafetyCandidate> candidates) {
+  if (!robot) return candidates;
+  const Eigen::Vector2d cue_ball = Position(*FindBall(balls, 0));
+  std::vector<SafetyCandidate> makeable;
+  for (SafetyCandidate& c : candidates) {
+    const std::variant<double, std::string> elevation =
+        cue::ElevationFor(table, params.ball.radius, balls, 0, c.stroke, *robot);
+    if (!std::holds_alternative<double>(elevation)) continue;
+    c.stroke.elevation = std::get<double>(elevation);
+    // Slowed to the fastest pace that keeps the ball on the cloth: the screening plays it so.
+    c.stroke.speed = std::min(c.stroke.speed, cue::HopFreeSpeed(c.stroke, cue_ball, params));
+    makeable.push_back(c);
+  }
+  return makeable;
+}
+
 rules::Rules OpponentRules(rules::Rules rules) {
   if (rules == rules::Rules::kEightBallSolids) return rules::Rules::kEightBallStripes;
   if (rules == rules::Rules::kEightBallStripes) return rules::Rules::kEightBallSolids;
@@ -205,7 +228,8 @@ std::optional<SafetyStroke> BestSafety(const table::TableGeometry& table,
                                        const ChoiceOptions& options, batch::ThreadPool& pool,
                                        int* simulations) {
   const std::vector<SafetyCandidate> candidates =
-      SafetyStrokes(params.ball.radius, balls, options.rules);
+      MakeableByCue(table, params, balls, options.pot.robot,
+                    SafetyStrokes(params.ball.radius, balls, options.rules));
   if (candidates.empty()) return std::nullopt;
   std::vector<std::size_t> order = ScreenSafeties(table, params, balls, candidates, options, pool);
   if (static_cast<int>(order.size()) > options.safety_finalists) {

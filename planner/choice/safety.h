@@ -74,6 +74,17 @@ struct SafetyCandidate {
 std::vector<SafetyCandidate> SafetyStrokes(double radius, const std::vector<table::SceneBall>& balls,
                                            rules::Rules rules);
 
+// `candidates` as `robot`'s cue can make them: each raised to the elevation its cue needs
+// (cue::ElevationFor, the pots' margin included) and slowed where that elevation would hop the
+// ball off the cloth at its pace (to cue::HopFreeSpeed, as the pots' pace is held), dropped where
+// no elevation in the robot's range clears, as a pot would be refused. Without a robot, the
+// candidates as they are (level).
+std::vector<SafetyCandidate> MakeableByCue(const table::TableGeometry& table,
+                                           const physics::ModelParameters& params,
+                                           const std::vector<table::SceneBall>& balls,
+                                           const std::optional<cue::Robot>& robot,
+                                           std::vector<SafetyCandidate> candidates);
+
 // The rules the opponent shoots under when we shoot under `rules`: under eight-ball with groups,
 // the other group; else the same.
 rules::Rules OpponentRules(rules::Rules rules);

@@ -6,6 +6,9 @@
 
 #include "planner/choice/shot_choice.h"
 #include "planner/choice/testing/choice_test.h"
+#include "sim/cue/clearance.h"
+#include "sim/cue/stroke_limits.h"
+#include "sim/params/robots.h"
 
 namespace billiard::choice {
 namespace {
@@ -108,6 +111,28 @@ TEST_F(SafetyTest, CandidatesHitTheLegalBall) {
   }
   const std::vector<SafetyCandidate> any = SafetyStrokes(r, balls, Rules::kAny);
   EXPECT_EQ(any.size(), 28u * kSafetyTargets);
+}
+
+// A safety from a cue ball a millimetre off the head rail: the cue comes over the rail, so every
+// candidate is raised until it clears (by the cue's own geometry) and slowed until the ball stays
+// on the cloth, and a robot that cannot raise its cue is left none.
+TEST_F(SafetyTest, CandidatesAreRaisedOverTheRailOrDropped) {
+  const double r = params_.ball.radius;
+  const std::vector<table::SceneBall> balls = {
+      table::AtRest(0, r + 1e-3, table_.width / 2),
+      table::AtRest(1, table_.length / 2, table_.width / 2)};
+  cue::Robot gantry = params::LoadRobot("gantry");
+  const std::vector<SafetyCandidate> level = SafetyStrokes(r, balls, Rules::kNineBall);
+  const std::vector<SafetyCandidate> raised = MakeableByCue(table_, params_, balls, gantry, level);
+  ASSERT_FALSE(raised.empty());
+  for (const SafetyCandidate& c : raised) {
+    EXPECT_GT(c.stroke.elevation, 0.0);
+    EXPECT_TRUE(cue::Clearance(table_, r, balls, 0, c.stroke, gantry).clears);
+    EXPECT_LE(cue::HopHeight(c.stroke, {r + 1e-3, table_.width / 2}, params_), cue::kMaxHop * (1 + 1e-9));
+  }
+  EXPECT_EQ(MakeableByCue(table_, params_, balls, std::nullopt, level).size(), level.size());
+  gantry.elevation.max = 0.0;
+  EXPECT_TRUE(MakeableByCue(table_, params_, balls, gantry, level).empty());
 }
 
 // A long cut the noise makes unlikely, its miss leaving the 1 in the open: a safety is played,

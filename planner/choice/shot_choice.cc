@@ -123,8 +123,8 @@ ChoiceResult ChooseUnconfirmed(const table::TableGeometry& table,
   ChoiceResult result;
   AddCandidates(table, params, balls, options, pool, &result);
   if (result.candidates.empty()) {
-    NoPlan(balls, options.rules,
-           "no pot of a legal ball plans (every route blocked, too thin or out of reach)", &result);
+    NoPlan(table, params.ball.radius, balls, options.rules, options.pot.robot,
+           "no pot of a legal ball plans (every route blocked, too thin, out of reach or cue_blocked)", &result);
     return result;
   }
   ScreenCandidates(table, params, balls, options, pool, &result);

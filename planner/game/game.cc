@@ -80,6 +80,7 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
       rec.status = "break";
       stroke = SetUpBreak(table, params.ball.radius, options.opening, &balls);
       rec.cue_placement = choice::Position(balls.front());
+      rec.stroke = stroke;
     } else {
       stroke = PlayerStroke(*options.player, {table, params, balls, constraints}, options.choice,
                             choice::SampleSeed(options.choice.seed, static_cast<std::uint64_t>(n)),

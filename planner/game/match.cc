@@ -48,6 +48,7 @@ std::optional<physics::CueStroke> StrokeOf(const RackContext& c, int n,
         SetUpBreak(c.table, c.params.ball.radius,
                    c.options.opening.value_or(StoredBreak(c.options.game)), balls);
     rec->cue_placement = choice::Position(balls->front());
+    rec->stroke = stroke;
     return stroke;
   }
   choice::ChoiceOptions choice = c.options.choice;

@@ -29,8 +29,12 @@ std::optional<physics::CueStroke> PlayerStroke(const players::Player& player,
     rec->pocket = c->plan.pocket;
     rec->kind = pot::ShotKindName(c->plan.kind);
     rec->predicted = c->finalist ? c->reported().probability : -1.0;
+    rec->clearance = c->plan.clearance;
   }
-  if (const physics::CueStroke* stroke = decided.stroke()) return *stroke;
+  if (const physics::CueStroke* stroke = decided.stroke()) {
+    rec->stroke = *stroke;
+    return *stroke;
+  }
   return std::nullopt;
 }
 

@@ -16,6 +16,7 @@
 #include "planner/choice/monte_carlo.h"
 #include "planner/players/player.h"
 #include "sim/batch/thread_pool.h"
+#include "sim/cue/clearance.h"
 #include "sim/params/execution_noise.h"
 #include "sim/physics/parameters.h"
 #include "sim/rules/ruleset.h"
@@ -47,6 +48,10 @@ struct ShotRecord {
   double predicted = -1.0;  // the choice's probability, -1 when it has none
   bool safety = false;      // a safety played (planner/choice/safety.h): no call
   bool likely = false;
+  // The stroke commanded (the break's, the chosen pot's, the safety's or the fallback), none when
+  // there was none; its cue's clearance where the robot's was checked (pot::PotPlan::clearance).
+  std::optional<physics::CueStroke> stroke;
+  std::optional<cue::CueClearance> clearance;
   int first_contact = -1;
   std::vector<int> potted;  // object balls dropped, in id order
   bool called_potted = false;

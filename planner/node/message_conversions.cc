@@ -16,6 +16,8 @@ int8_t ToMessageStatus(planner::PlanStatus status) {
       return cue_command_t::STATUS_UNREACHABLE;
     case planner::PlanStatus::kNotConverged:
       return cue_command_t::STATUS_NOT_CONVERGED;
+    case planner::PlanStatus::kCueBlocked:
+      return cue_command_t::STATUS_CUE_BLOCKED;
   }
   return cue_command_t::STATUS_INVALID;
 }
@@ -38,6 +40,8 @@ int8_t ToMessageStatus(pot::PotStatus status) {
       return cue_command_t::STATUS_NO_STROKE;
     case pot::PotStatus::kTargetUnreachable:
       return cue_command_t::STATUS_TARGET_UNREACHABLE;
+    case pot::PotStatus::kCueBlocked:
+      return cue_command_t::STATUS_CUE_BLOCKED;
   }
   return cue_command_t::STATUS_INVALID;
 }

@@ -15,7 +15,7 @@ namespace {
 TEST(ToMessageStatus, NamesAPlanStatusAsThePlannerDoes) {
   for (const planner::PlanStatus s :
        {planner::PlanStatus::kOk, planner::PlanStatus::kInvalid, planner::PlanStatus::kOffTable,
-        planner::PlanStatus::kUnreachable, planner::PlanStatus::kNotConverged}) {
+        planner::PlanStatus::kUnreachable, planner::PlanStatus::kNotConverged, planner::PlanStatus::kCueBlocked}) {
     EXPECT_EQ(messages::CueCommandStatusName(ToMessageStatus(s)), planner::PlanStatusName(s));
   }
 }

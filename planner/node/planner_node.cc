@@ -125,7 +125,7 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
     return AnswerChoice(q, state, *latest_table_, table_, params_, options, *player,
                         *choice_pool_, std::move(c));
   }
-  return AnswerToPoint(q, state, params_, options_.planner, std::move(c));
+  return AnswerToPoint(q, state, Candidates(q), table_, params_, options_, std::move(c));
 }
 
 const players::Player& PlannerNode::PlayerFor(const shot_request_t& q) const {

@@ -9,6 +9,7 @@
 #include "lcmtypes/node/node_loop.h"
 #include "planner/players/players.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/params/table_specs.h"
 
 namespace billiard::planner_node {
@@ -40,6 +41,10 @@ void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line) {
   app.add_option("--table", line->table,
                  "The table pots are planned on: a built-in table (pool-9ft, snooker-12ft, ...) or "
                  "a table file")
+      ->capture_default_str();
+  app.add_option("--robot", line->robot,
+                 "The robot whose cue plays the strokes: gantry | player | FILE (sim/params/robots/): "
+                 "every pot is planned at the elevation its cue needs, refused cue_blocked where none clears")
       ->capture_default_str();
   app.add_flag("--no-refine", line->no_refine, "Plan with the closed-form inverse alone");
   app.add_option("--player", options.player, "Who chooses a MODE_CHOOSE shot: ours | no-lookahead | easiest-looking")
@@ -81,6 +86,11 @@ PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line,
     throw std::invalid_argument(std::string("--identify: ") + e.what());
   }
   options.table = table::BuildTable(params::LoadTableSpec(line.table));
+  try {
+    options.pot.robot = params::LoadRobot(line.robot);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--robot: ") + e.what());
+  }
   // The point planner's bounds are the parameter set's table: both must be the one table.
   if (std::abs(options.table->length - params.table.length) > 1e-9 ||
       std::abs(options.table->width - params.table.width) > 1e-9) {

@@ -7,6 +7,7 @@
 
 #include "planner/node/planner_node.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 
 namespace billiard::planner_node {
 
@@ -14,6 +15,7 @@ struct PlannerNodeCommandLine {
   std::string lcm_url;  // empty: $LCM_DEFAULT_URL, else LCM's default
   std::string params = params::kDefaultParameterSet;
   std::string table = kDefaultPotTable;  // a built-in table or a table file (table_specs.h)
+  std::string robot = params::kDefaultRobot;  // --robot: a built-in robot or a robot file (robots.h)
   PlannerNodeOptions options;
   bool no_refine = false;
   std::string identify = "mu,rolling";  // --identify: the constants an online fit identifies
@@ -25,7 +27,7 @@ void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line);
 // The node's options from a parsed command line, with `params`; throws std::invalid_argument
 // with a one-line reason when they make no node (a negative or non-finite limit, an empty queue,
 // a table that does not load or is not the size of the parameter set's, a negative
-// --identify-every, an unknown constant in --identify).
+// --identify-every, an unknown constant in --identify, a --robot that does not load).
 PlannerNodeOptions NodeOptions(const PlannerNodeCommandLine& line,
                                const physics::ModelParameters& params);
 

@@ -50,19 +50,6 @@ std::optional<std::string> ReadPotRequest(const shot_request_t& q,
   return std::nullopt;
 }
 
-// The scene: the cue ball id 0, the others by their ids (one that is 0 takes a free id).
-std::optional<std::vector<table::SceneBall>> PotScene(const table_state_t& latest,
-                                                      const ball_state_t& cue,
-                                                      double max_ball_speed,
-                                                      std::unordered_map<int, int32_t>* message_id,
-                                                      std::string* moving) {
-  int32_t free_id = 1;
-  for (const ball_state_t& b : latest.balls) free_id = std::max(free_id, b.ball_id + 1);
-  return SceneAtRest(
-      latest, max_ball_speed, cue.ball_id, [&](int32_t id) { return id == 0 ? free_id : id; },
-      message_id, moving);
-}
-
 }  // namespace
 
 cue_command_t AnswerPot(const shot_request_t& q, const ball_state_t& cue,
@@ -82,7 +69,7 @@ cue_command_t AnswerPot(const shot_request_t& q, const ball_state_t& cue,
   }
   std::unordered_map<int, int32_t> message_id;
   std::string moving;
-  const auto balls = PotScene(latest, cue, options.max_ball_speed, &message_id, &moving);
+  const auto balls = StruckScene(latest, cue, options.max_ball_speed, &message_id, &moving);
   if (!balls) return Refusal(c, cue_command_t::STATUS_NOT_AT_REST, moving);
   for (const auto& [scene_id, id] : message_id) {
     if (id == object->ball_id) request.ball = scene_id;

@@ -45,4 +45,15 @@ std::optional<std::vector<table::SceneBall>> SceneAtRest(
   return balls;
 }
 
+std::optional<std::vector<table::SceneBall>> StruckScene(const table_state_t& latest, const ball_state_t& struck,
+                                                         double max_ball_speed,
+                                                         std::unordered_map<int, int32_t>* message_id,
+                                                         std::string* moving) {
+  int32_t free_id = 1;
+  for (const ball_state_t& b : latest.balls) free_id = std::max(free_id, b.ball_id + 1);
+  return SceneAtRest(
+      latest, max_ball_speed, struck.ball_id, [&](int32_t id) { return id == 0 ? free_id : id; }, message_id,
+      moving);
+}
+
 }  // namespace billiard::planner_node

@@ -32,4 +32,11 @@ std::optional<std::vector<table::SceneBall>> SceneAtRest(
     const std::function<int(int32_t)>& scene_id, std::unordered_map<int, int32_t>* message_id,
     std::string* moving);
 
+// SceneAtRest with `struck` the scene's cue ball (id 0) and the others by their ids (one that is
+// 0 takes a free id): the scene a pot, a choice or a stroke to a point is played in.
+std::optional<std::vector<table::SceneBall>> StruckScene(const table_state_t& latest, const ball_state_t& struck,
+                                                         double max_ball_speed,
+                                                         std::unordered_map<int, int32_t>* message_id,
+                                                         std::string* moving);
+
 }  // namespace billiard::planner_node

@@ -12,6 +12,8 @@
 #include "lcmtypes/names.h"
 #include "planner/node/command_writing.h"
 #include "planner/node/testing/node_harness.h"
+#include "sim/params/table_specs.h"
+#include "sim/table/table_geometry.h"
 
 namespace billiard::planner_node::testing {
 namespace {
@@ -103,7 +105,11 @@ TEST(AnswerToPoint, ARefusedPlanGoesOutWithItsMeasurementsAndNoStroke) {
   planner::PlannerOptions unrefined;  // the closed form's launch, centimetres off
   unrefined.max_iterations = 0;
   unrefined.acceptable_miss = 1e-9;
-  const cue_command_t c = AnswerToPoint(q, Ball(1, 0.5, 0.5), params, unrefined, ReplyTo(q));
+  PlannerNodeOptions options;
+  options.planner = unrefined;
+  options.pot.robot = std::nullopt;  // the plan alone: the paper's table is not the pool-9ft's
+  const cue_command_t c = AnswerToPoint(q, Ball(1, 0.5, 0.5), {}, table::BuildTable(params::LoadTableSpec("pool-9ft")),
+                                        params, options, ReplyTo(q));
   EXPECT_EQ(Status(c), cue_command_t::STATUS_NOT_CONVERGED) << c.reason;
   EXPECT_NE(c.reason.find("from the target"), std::string::npos) << c.reason;
   EXPECT_GT(c.refined_miss_m, 1e-4) << "the miss says by how much";

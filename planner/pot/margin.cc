@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planner/pot/cue_elevation.h"
 #include "planner/pot/pace.h"
 
 namespace billiard::pot {
@@ -80,7 +81,7 @@ SpeedWindow SpeedWindowAt(SearchContext& search, const StrokeShape& shape, doubl
     s.speed = speed;
     return search.Play(s.At(heading), false, false).outcome.legal;
   };
-  const double top = search.params().cue.max_speed;
+  const double top = TopCueSpeed(search, shape, heading);
   // The slowest: where the pace's fit brings K to the capture line at no speed; the fastest
   // often the cue's top speed.
   const double slowest = SlowestPottingSpeed(search.pace_fit(), shape.speed);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "planner/pot/cue_elevation.h"
 #include "planner/pot/lone_path.h"
 
 namespace billiard::pot {
@@ -28,7 +29,8 @@ std::optional<Refusal> Pace(SearchContext& search, const Route& route, const Eig
                             StrokeShape* shape, Aimed* aimed, double direction) {
   const PotOptions& options = search.options();
   PaceFit& fit = search.pace_fit();
-  const double top = search.params().cue.max_speed;
+  // The cue's top speed, or the fastest that keeps an elevated cue's ball on the cloth.
+  const double top = TopCueSpeed(search, *shape, aimed->heading);
   double v_prev = 0.0, a2_prev = 0.0;
   bool have_prev = false;
   for (int i = 0; i < 8; ++i) {
@@ -42,7 +44,9 @@ std::optional<Refusal> Pace(SearchContext& search, const Route& route, const Eig
       if (shape->speed >= top) {
         return Refusal{PotStatus::kNoStroke, "ball " + std::to_string(search.object_id()) +
                                                  " does not reach " + search.pocket().name +
-                                                 " at the cue's top speed"};
+                                                 " at " + MetresPerSecond(top) + ", the fastest stroke " +
+                                                 (top < search.params().cue.max_speed ? "that keeps the ball on the cloth"
+                                                                                      : "of the cue")};
       }
     } else if (!have_prev || !played.arrival_speed) {
       next = std::min(top, shape->speed * (played.arrival_speed ? 0.8 : 1.3));

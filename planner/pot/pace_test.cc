@@ -73,7 +73,7 @@ TEST_F(PaceTest, APotThatFallsShortAtTheTopSpeedIsRefused) {
   const std::optional<Refusal> refused = Pace(search, route, route.cue_aim, &shape, &*aimed, Angle(-along_));
   ASSERT_TRUE(refused);
   EXPECT_EQ(refused->status, PotStatus::kNoStroke);
-  EXPECT_EQ(refused->reason, "ball 3 does not reach lower_left at the cue's top speed");
+  EXPECT_EQ(refused->reason, "ball 3 does not reach lower_left at 0.3 m/s, the fastest stroke of the cue");
 }
 
 // a^2 = slope (v^2 - v0^2): the fit brings K to the capture line at no speed at v0.

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "planner/pot/cue_elevation.h"
 #include "planner/pot/pace.h"
 
 namespace billiard::pot {
@@ -35,6 +36,10 @@ struct Landing {
   Aimed aimed;
 };
 
+// The hop of a stroke does not depend on its heading (the strike turns with it, and the bed is
+// level): any heading tells the fastest stroke that keeps the ball on the cloth.
+constexpr double kAnyHeading = 0.0;
+
 // A stroke of the search, x = (cue speed, tip height), and where it leaves the cue ball.
 using Stroke = std::pair<Eigen::Vector2d, Landing>;
 
@@ -47,7 +52,7 @@ class SideSearch {
     const double max_tip = search.params().cue.max_tip_offset * search.radius();
     const double side = shape.tip_side;
     tip_room_ = std::sqrt(std::max(0.0, max_tip * max_tip - side * side)) * 0.999;
-    top_ = search.params().cue.max_speed;
+    top_ = TopCueSpeed(search, shape, kAnyHeading);
     base_ = shape.speed;
     tolerance_ = std::max(target.radius, search.options().position_tolerance);
     span_ = Eigen::Vector2d(base_, tip_room_ > 0.0 ? tip_room_ : 1.0);
@@ -73,8 +78,9 @@ class SideSearch {
 
  private:
   Eigen::Vector2d Bounded(Eigen::Vector2d x) const {
-    x.x() = std::clamp(x.x(), kSlowestCue, top_);
     x.y() = std::clamp(x.y(), -tip_room_, tip_room_);
+    // An elevated cue's fastest stroke that keeps the ball on the cloth moves with the tip height.
+    x.x() = std::max(kSlowestCue, std::min({x.x(), top_, TopCueSpeed(search_, Shaped(x), kAnyHeading)}));
     return x;
   }
 

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "planner/pot/aim.h"
+#include "planner/pot/cue_elevation.h"
 #include "planner/pot/drop_window.h"
 #include "planner/pot/lone_path.h"
 #include "planner/pot/margin.h"
@@ -49,6 +50,9 @@ std::variant<PotPlan, Refusal> Finish(SearchContext& search, const Route& route,
   if (const Refusal* refused = std::get_if<Refusal>(&truth)) return *refused;
   const TruthShot& shot = std::get<TruthShot>(truth);
   PotPlan plan;
+  // The cue: the final stroke (the aim's heading, position play's offsets) clears and keeps the
+  // ball on the cloth.
+  if (std::optional<Refusal> cue = CheckCue(search, shot.stroke, &plan.clearance)) return *cue;
   plan.kind = route.kind;
   plan.rail = route.rail;
   // The margin on the truth: near a jaw whether K rattles in turns on its speed and spin there,
@@ -84,11 +88,22 @@ std::variant<PotPlan, Refusal> PlanRoute(SearchContext& search, const Route& rou
     return TooThin(CutAngle(approach, departure), max_cut);
   }
   StrokeShape shape{kFirstCueSpeed, route.tip_side, 0.0, route.elevation};
-  double first_heading = 0.0;
+  double first_heading = FirstHeading(search, route, shape, ghost);
+  // 1b. The cue's elevation: the least that clears what lies behind the cue ball, and a margin;
+  // the aim, the pace and the truth are found at it, each pace within what keeps the ball on the
+  // cloth at that elevation (TopCueSpeed).
+  const std::variant<double, Refusal> elevation = NeededElevation(search, shape, first_heading);
+  if (const Refusal* blocked = std::get_if<Refusal>(&elevation)) return *blocked;
+  shape.elevation = std::get<double>(elevation);
+  const double top_speed = TopCueSpeed(search, shape, first_heading);
   std::optional<Aimed> aimed;
-  // 2. The aim along K's line; a curve's again with its bend spread, where the first meets a ball.
+  // 2. The aim along K's line; a curve's again faster, its bend spread, where the first meets a
+  // ball and the hop leaves a faster pace.
+  double tried = 0.0;
   for (double speed : {kFirstCueSpeed, kCurveSpreadSpeed}) {
-    shape.speed = speed;
+    shape.speed = std::min(speed, top_speed);
+    if (shape.speed == tried) break;
+    tried = shape.speed;
     first_heading = FirstHeading(search, route, shape, ghost);
     if (route.kind == ShotKind::kCurve) {
       if (std::optional<Refusal> thin = CurveTooThin(search, shape, first_heading, ghost, departure)) return *thin;
@@ -140,10 +155,17 @@ std::variant<PotPlan, Refusal> PlanRoute(SearchContext& search, const Route& rou
   return Finish(search, route, shape, *aimed, *drop, placed_aim);
 }
 
-// A route's plan, or the refusal of a stroke no cue gives or a scene out of events.
-std::variant<PotPlan, Refusal> Attempt(SearchContext& search, const Route& route, bool place_cue) {
+// A route's plan, or the refusal of a stroke no cue gives or a scene out of events. A final
+// stroke the aim turned into the cue's way is planned again, once, at the elevation it needs.
+std::variant<PotPlan, Refusal> Attempt(SearchContext& search, Route route, bool place_cue) {
   try {
-    return PlanRoute(search, route, place_cue);
+    std::variant<PotPlan, Refusal> result = PlanRoute(search, route, place_cue);
+    const Refusal* refused = std::get_if<Refusal>(&result);
+    if (refused && refused->elevation_needed && *refused->elevation_needed > route.elevation) {
+      route.elevation = *refused->elevation_needed;
+      result = PlanRoute(search, route, place_cue);
+    }
+    return result;
   } catch (const std::exception& e) {
     return Refusal{PotStatus::kNoStroke, e.what()};
   }
@@ -156,7 +178,8 @@ int Rank(PotStatus s) {
   switch (s) {
     case PotStatus::kTargetUnreachable: return 4;
     case PotStatus::kNoStroke: return 3;
-    case PotStatus::kTooThin: return 2;
+    case PotStatus::kTooThin:
+    case PotStatus::kCueBlocked: return 2;
     default: return 1;
   }
 }
@@ -423,6 +446,7 @@ const char* PotStatusName(PotStatus status) {
     case PotStatus::kTooThin: return "too_thin";
     case PotStatus::kNoStroke: return "no_stroke";
     case PotStatus::kTargetUnreachable: return "target_unreachable";
+    case PotStatus::kCueBlocked: return "cue_blocked";
   }
   return "invalid";
 }

@@ -41,6 +41,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/cue/clearance.h"
+#include "sim/cue/robot.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
 #include "sim/table/table_geometry.h"
@@ -64,10 +66,11 @@ enum class PotStatus {
   kTooThin,             // the cut needed is thinner than max_cut_deg
   kNoStroke,            // no stroke within the cue's limits pots it
   kTargetUnreachable,   // it pots, but no stroke within the limits stops the cue ball there
+  kCueBlocked,          // the robot's cue meets a ball, the table or its own body at every elevation
 };
 
 // "ok", "invalid", "no_such_ball", "no_such_pocket", "blocked", "too_thin", "no_stroke",
-// "target_unreachable".
+// "target_unreachable", "cue_blocked".
 const char* PotStatusName(PotStatus status);
 
 struct CueTarget {
@@ -101,6 +104,11 @@ struct PotOptions {
   // settled first (table::SettledScene) and the plan made on the settled scene; 0, the default
   // (plan-pot, like simulate --scene): the scene must be valid as it is.
   double settle_overlap = 0.0;
+  // The robot whose cue plays the stroke (params::LoadRobot; the commands' and nodes' --robot,
+  // "gantry" by default): every route is planned at the elevation its cue needs to clear the
+  // balls, the rails and its body (cue_elevation.h), and refused (cue_blocked) where none does.
+  // None: the cue is not checked (a stroke at the route's own elevation, level but for a curve).
+  std::optional<cue::Robot> robot;
 };
 
 struct BallPath {
@@ -133,6 +141,10 @@ struct PotPlan {
   double solve_us = 0.0;
   int simulations = 0;  // table simulations run for the plan, closed form and truth
   double departure = 0.0;  // the direction K leaves in: its drop window's middle [rad]
+  // The stroke's cue against the robot's (PotOptions::robot; none without one): it clears, the
+  // obstacle nearest the cue and its distance. The stroke's elevation is the least that clears
+  // plus a margin (cue_elevation.h).
+  std::optional<cue::CueClearance> clearance;
 };
 
 // Plans the pot of `request` on `table` from `balls` (id 0 the cue ball, at rest or moving: the

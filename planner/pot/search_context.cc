@@ -57,12 +57,21 @@ std::size_t IndexOf(const TableSimulation& sim, int id) {
   throw std::logic_error("no ball " + std::to_string(id));
 }
 
-std::string Degrees(double radians) {
+namespace {
+
+// A number to three significant digits, and its unit: "1.23 deg".
+std::string InWords(double value, const char* unit) {
   std::ostringstream s;
   s.precision(3);
-  s << radians / kDegree << " deg";
+  s << value << " " << unit;
   return s.str();
 }
+
+}  // namespace
+
+std::string Degrees(double radians) { return InWords(radians / kDegree, "deg"); }
+
+std::string MetresPerSecond(double speed) { return InWords(speed, "m/s"); }
 
 SearchContext::SearchContext(const table::TableGeometry& table, const physics::ModelParameters& params,
                              const std::vector<SceneBall>& balls, int object, const table::Pocket& pocket,

@@ -53,6 +53,9 @@ std::size_t IndexOf(const table::TableSimulation& sim, int id);
 // An angle in words: "1.23 deg".
 std::string Degrees(double radians);
 
+// A speed in words: "0.3 m/s", "1.23 m/s".
+std::string MetresPerSecond(double speed);
+
 // A stroke's free parts, the heading left to the aim.
 struct StrokeShape {
   double speed = 0.0, tip_side = 0.0, tip_height = 0.0, elevation = 0.0;
@@ -86,6 +89,8 @@ struct Refusal {
   // K does not drop along its own route, whatever the cue ball does: a curve, which changes only
   // the cue ball's path, cannot mend it.
   bool object_route_closed = false;
+  // cue_blocked at the final stroke: the elevation [rad] that clears there, to plan again at.
+  std::optional<double> elevation_needed;
 };
 
 // The pace's last fit (pace.h): d (arrival speed^2) / d (cue speed^2), and the arrival speed at

@@ -112,24 +112,26 @@ StrokeSolution Refusal(std::string reason) {
 // The stroke that launches v0 and w0, its tip offset and cue speed not yet held to the robot's
 // limits.
 StrokeSolution SolveStroke(const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
-                           const ModelParameters& p) {
+                           const ModelParameters& p, double free_slope) {
   if (!v0.allFinite() || !w0.allFinite()) {
     return Refusal("launch velocity or spin has a non-finite number");
   }
+  if (!(free_slope >= 0.0 && std::isfinite(free_slope))) return Refusal("the cue's slope must be finite and >= 0");
   const double speed = v0.norm();
   if (speed == 0.0) return Refusal("a cue stroke cannot leave the ball without velocity");
   const double r = p.ball.radius, m = p.ball.mass;
 
   // Step 1, the impulse: m v0 and the vertical part the table took. w0 = P x J / I is
-  // perpendicular to J, which fixes that part (and the elevation); a level cue without spin about
-  // the travel.
+  // perpendicular to J, which fixes that part (and the elevation) where there is side spin: a
+  // level cue without spin about the travel. Without side spin any part is, and `free_slope` is.
   const Eigen::Vector3d e(v0.x() / speed, v0.y() / speed, 0.0);
   double along = w0.dot(e);
   if (std::abs(along) <= 1e-12 * w0.norm()) along = 0.0;
   if (along != 0.0 && !(w0.z() != 0.0 && along / w0.z() > 0.0)) {
     return Refusal("spin about the direction of travel that a cue from above cannot give");
   }
-  const double forward = m * speed, down = along == 0.0 ? 0.0 : m * speed * along / w0.z();
+  const double forward = m * speed;
+  const double down = along != 0.0 ? forward * along / w0.z() : w0.z() == 0.0 ? forward * free_slope : 0.0;
   const Eigen::Vector3d impulse = forward * e - down * Eigen::Vector3d::UnitZ();
 
   // Step 2, the contact point: P x J = I w0, |P| = r, behind the ball's centre.
@@ -219,8 +221,8 @@ BallState StrikeBall(const CueStroke& stroke, const Eigen::Vector2d& position,
 }
 
 StrokeSolution StrokeFor(const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
-                         const ModelParameters& p) {
-  StrokeSolution s = SolveStroke(v0, w0, p);
+                         const ModelParameters& p, double free_slope) {
+  StrokeSolution s = SolveStroke(v0, w0, p, free_slope);
   if (!s.ok) return s;
   const double offset = std::hypot(s.stroke.tip_side, s.stroke.tip_height) / p.ball.radius;
   if (offset > p.cue.max_tip_offset * (1.0 + 1e-12)) {
@@ -256,7 +258,7 @@ LaunchSpeedRange LaunchSpeedsFor(double spin_ratio, double side_spin, const Mode
   // max_speed sqrt(M / m). When the slowest launch already needs more than max_speed, the range
   // starts where V, past its lowest, comes down to max_speed.
   const auto cue_speed = [&](double s) {
-    const StrokeSolution stroke = SolveStroke({s, 0.0}, {0.0, spin_ratio * s / r, side_spin}, p);
+    const StrokeSolution stroke = SolveStroke({s, 0.0}, {0.0, spin_ratio * s / r, side_spin}, p, 0.0);
     return stroke.ok ? stroke.stroke.speed : INFINITY;
   };
   const auto above_max = [&](double s) { return cue_speed(s) - p.cue.max_speed; };

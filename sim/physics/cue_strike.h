@@ -67,10 +67,15 @@ struct StrokeSolution {
 // the heading is off v0 by the squirt angle. The impulse and the contact point follow from v0 and
 // w0 (w0 = P x J / I is perpendicular to J, which fixes the vertical part of J the table took and
 // so the elevation; a level cue leaves no spin about the travel); the squirt angle is the root of
-// one equation (bisection, to the last bit). Fails (with the reason) on non-finite input, v0 = 0,
-// spin no stroke can give, a tip offset beyond max_tip_offset r, or a cue speed beyond max_speed.
+// one equation (bisection, to the last bit). Without side spin w0 leaves the elevation free (an
+// elevated cue struck above or below centre gives the same launch with a smaller offset and a
+// faster cue, the table taking the rest): `free_slope` is then the vertical part of the impulse
+// per unit of its horizontal part, tan(elevation); 0, a level cue. With side spin the spin about
+// the travel fixes it (wz free_slope for a launch planned at that slope). Fails (with the reason)
+// on non-finite input, a negative slope, v0 = 0, spin no stroke can give, a tip offset beyond
+// max_tip_offset r, or a cue speed beyond max_speed.
 StrokeSolution StrokeFor(const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
-                         const ModelParameters& p);
+                         const ModelParameters& p, double free_slope = 0.0);
 
 // The launch speeds a level stroke can give a ball sent along a line with spin R w = k v about the
 // horizontal axis across the line and side spin wz, squirt included: bounded below by the tip

@@ -249,6 +249,33 @@ TEST(CueStrike, InverseRecoversTheStroke) {
   }
 }
 
+// Without a side offset an elevated cue leaves no spin about the travel, so the launch does not
+// say the elevation: given it as the impulse's slope, the inverse recovers the stroke (a smaller
+// tip offset and a faster cue than the level stroke of the same launch).
+TEST(CueStrike, InverseAtAGivenSlopeRecoversAnElevatedStrokeWithoutSide) {
+  const ModelParameters p = testing::PaperParameters();
+  const double r = p.ball.radius;
+  for (const double elevation : {0.05, 0.2, 0.6}) {
+    for (const double height : {-0.3 * r, 0.0, 0.25 * r}) {
+      const CueStroke stroke{2.0, 0.7, 0.0, height, elevation};
+      BallState s = StrikeBall(stroke, {0, 0}, p);
+      // No side spin, as a planned launch has it: the strike leaves rounding's 1e-17 rad/s.
+      ASSERT_LT(std::abs(s[kWz]), 1e-12);
+      s[kWz] = 0.0;
+      const StrokeSolution back = StrokeFor(s.segment<2>(kVx), s.tail<3>(), p, std::tan(elevation));
+      ASSERT_TRUE(back.ok) << back.reason;
+      EXPECT_NEAR(back.stroke.speed, stroke.speed, 1e-9);
+      EXPECT_NEAR(back.stroke.tip_height, height, 1e-12);
+      EXPECT_NEAR(back.stroke.elevation, elevation, 1e-12);
+      const StrokeSolution level = StrokeFor(s.segment<2>(kVx), s.tail<3>(), p);
+      ASSERT_TRUE(level.ok) << level.reason;
+      EXPECT_EQ(level.stroke.elevation, 0.0);
+      EXPECT_LE(std::abs(height), std::abs(level.stroke.tip_height) + 1e-15);
+    }
+  }
+  EXPECT_FALSE(StrokeFor({1.0, 0.0}, {0.0, 10.0, 0.0}, p, -0.1).ok);
+}
+
 // Launches asked for directly, with top or draw, side spin and spin about the travel (an
 // elevated cue): the stroke StrokeFor returns launches exactly them, its heading off the launch
 // by the squirt.

@@ -9,6 +9,7 @@
 #include "lcmtypes/node/node_loop.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 
 namespace billiard::table_sim_node {
 
@@ -83,6 +84,10 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
                  "The robot executes with this noise (a name or a JSON file of "
                  "sim/params/noise/'s format) instead of --noise's, one the planner is not told "
                  "of: a controller can be seen measuring its own noise");
+  app.add_option("--robot", line->robot,
+                 "The robot that plays the strokes: gantry | player | FILE (sim/params/robots/); a "
+                 "stroke its cue cannot make is refused, counted cue_blocked in NODE_STATUS")
+      ->capture_default_str();
   app.add_option("--camera-rate", options.camera_rate, "Frames per second")->capture_default_str();
   app.add_flag("--realtime", line->realtime, "Real time instead of lockstep");
   app.add_option("--drop-frames", faults.drop_frames,
@@ -158,6 +163,11 @@ TableSimOptions SessionOptions(const SessionCommandLine& line) {
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(std::string("--plant-noise: ") + e.what());
     }
+  }
+  try {
+    options.robot = params::LoadRobot(line.robot);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--robot: ") + e.what());
   }
   return options;
 }

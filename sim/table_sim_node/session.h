@@ -11,6 +11,7 @@
 
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/physics/parameters.h"
 #include "sim/table_sim_node/session_summary.h"
 #include "sim/table_sim_node/table_sim_node.h"
@@ -28,6 +29,7 @@ struct SessionCommandLine {
   // --plant-noise: the noise the robot executes with when it differs from the one the planner
   // is told of (a name or a JSON file, sim/params/execution_noise.h); empty: `noise`'s.
   std::string plant_noise;
+  std::string robot = params::kDefaultRobot;  // --robot: the robot that plays the strokes
   bool realtime = false;
   std::vector<std::string> pots;  // --pot K:P, in order
   std::string players;            // --players A,B

@@ -1,5 +1,9 @@
 #include "sim/table_sim_node/stroke_execution.h"
 
+#include <cmath>
+#include <sstream>
+
+#include "sim/cue/clearance.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/table_sim_node/session_balls.h"
 
@@ -14,11 +18,25 @@ StrokeExecution::StrokeExecution(const params::ExecutionNoise& noise, double bal
                                  std::uint32_t seed)
     : noise_(noise), ball_radius_(ball_radius), random_(NoiseStream(seed)) {}
 
+physics::CueStroke Commanded(const cue_command_t& command) {
+  return {command.cue_speed, command.heading, command.tip_side, command.tip_height, command.elevation};
+}
+
 physics::CueStroke StrokeExecution::Executed(const cue_command_t& command) {
   std::normal_distribution<double> unit(0.0, 1.0);
-  return params::Perturbed(
-      {command.cue_speed, command.heading, command.tip_side, command.tip_height, command.elevation},
-      noise_, ball_radius_, [&] { return unit(random_); });
+  return params::Perturbed(Commanded(command), noise_, ball_radius_, [&] { return unit(random_); });
+}
+
+std::string Unmakeable(const cue::Robot& robot, const table::TableGeometry& geometry, double ball_radius,
+                       const std::vector<table::SceneBall>& balls, const physics::CueStroke& stroke) {
+  if (std::string outside = cue::OutsideRanges(robot, stroke, ball_radius); !outside.empty()) return outside;
+  const cue::CueClearance c = cue::Clearance(geometry, ball_radius, balls, kCueBall, stroke, robot);
+  if (c.clears) return "";
+  std::ostringstream why;
+  why.precision(3);
+  why << "the " << robot.name << "'s cue at " << stroke.elevation * 180.0 / M_PI << " deg meets " << c.what
+      << " (" << -c.distance * 1e3 << " mm into it)";
+  return why.str();
 }
 
 std::vector<table::SceneBall> StrokeExecution::Struck(const std::vector<table::SceneBall>& balls,

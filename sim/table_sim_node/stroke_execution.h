@@ -13,9 +13,11 @@
 
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "lcmtypes/billiard/cue_command_t.hpp"
+#include "sim/cue/robot.h"
 #include "sim/params/execution_noise.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
@@ -52,6 +54,18 @@ class StrokeExecution {
   double ball_radius_;
   std::mt19937 random_;
 };
+
+// The stroke `command` asks for, as commanded (no noise).
+physics::CueStroke Commanded(const cue_command_t& command);
+
+// Why `robot` cannot make `stroke` on the cue ball (id 0) of `balls` (of radius `ball_radius`) on
+// `geometry`, as FastFiz's TableState::isPhysicallyPossible refuses a shot (Archibald et al.
+// 2010): the stroke outside the robot's ranges (cue::OutsideRanges), or its cue meeting a ball,
+// the cloth, a rail or the robot's own body (cue::Clearance); empty when it can. The commanded
+// stroke is checked, not the noise's draw: the robot refuses what it is told, and the planner's
+// elevation margin (planner/pot/cue_elevation.h) is what keeps the executions clear.
+std::string Unmakeable(const cue::Robot& robot, const table::TableGeometry& geometry, double ball_radius,
+                       const std::vector<table::SceneBall>& balls, const physics::CueStroke& stroke);
 
 // The motion `billiard simulate --scene` runs by default, which the planner checks its pots
 // against: the closed form alone would leave a cue ball that slides off a cut centimetres from

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/params/table_specs.h"
 #include "sim/table_sim_node/session_balls.h"
 
@@ -103,6 +106,26 @@ TEST(PlayedToRest, RunsTheTableUntilEveryBallRestsTheSameEveryTime) {
     EXPECT_EQ(a.State(i), b.State(i)) << i;
   }
   EXPECT_EQ(a.events().size(), b.events().size());
+}
+
+// The robot refuses what its cue cannot make, as FastFiz does: a level stroke from a ball frozen
+// to the lower rail and struck away from it lays the cue across the rail; a stroke through a ball
+// just behind the cue ball meets that ball; a stroke beyond the robot's speed is out of range.
+// Raised clear of the rail, or in the open, the stroke is made.
+TEST(Unmakeable, RefusesAStrokeWhoseCueMeetsARailOrABallAndNoOther) {
+  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const double r = params::LoadParameters("pool").ball.radius;
+  const cue::Robot gantry = params::LoadRobot("gantry");
+  const double up = M_PI / 2;  // away from the lower rail
+  const std::vector<table::SceneBall> frozen{table::AtRest(kCueBall, 1.0, r + 1e-4)};
+  const std::string rail = Unmakeable(gantry, geometry, r, frozen, {2.0, up, 0.0, 0.0, 0.0});
+  EXPECT_NE(rail.find("lower rail"), std::string::npos) << rail;
+  EXPECT_EQ(Unmakeable(gantry, geometry, r, frozen, {2.0, up, 0.0, 0.0, 45.0 * M_PI / 180}), "");
+  const std::vector<table::SceneBall> behind{table::AtRest(kCueBall, 1.0, 0.6), table::AtRest(3, 1.0, 0.6 - 2.2 * r)};
+  const std::string ball = Unmakeable(gantry, geometry, r, behind, {2.0, up, 0.0, 0.0, 0.0});
+  EXPECT_NE(ball.find("ball 3"), std::string::npos) << ball;
+  EXPECT_EQ(Unmakeable(gantry, geometry, r, behind, {2.0, -up, 0.0, 0.0, 0.0}), "");
+  EXPECT_NE(Unmakeable(gantry, geometry, r, behind, {9.0, -up, 0.0, 0.0, 0.0}), "");
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "lcmtypes/node/node_loop.h"
 #include "lcmtypes/version.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
 #include "sim/physics/simulator.h"
 #include "sim/table_sim_node/session_balls.h"
 
@@ -251,6 +252,11 @@ std::vector<ShotResult> TableSimNode::Run() {
   AwaitPeersOfTheSameBuildAndPhysics();
   const double frame_dt = 1.0 / options_.camera_rate;
   const physics::TableParameters& table = params_.table;
+  // The robot's cue is checked on the break table's cushions and rails, at the parameter set's size.
+  table::TableSpec spec = params::LoadTableSpec(kBreakTable);
+  spec.length = table.length;
+  spec.width = table.width;
+  const table::TableGeometry shots_table = table::BuildTable(spec);
   std::uniform_real_distribution<double> x(options_.target_margin,
                                            table.length - options_.target_margin);
   std::uniform_real_distribution<double> y(options_.target_margin,
@@ -268,12 +274,14 @@ std::vector<ShotResult> TableSimNode::Run() {
     ask.target[0] = result.target.x();
     ask.target[1] = result.target.y();
     ask.spin = shot_request_t::SPIN_NATURAL;
-    const cue_command_t command =
-        Request(shot, {{kCueBall, physics::MakeBallState(rest.x(), rest.y(), 0, 0, 0, 0, 0)}}, rest,
-                ask, result);
+    const std::vector<table::SceneBall> alone{{kCueBall, physics::MakeBallState(rest.x(), rest.y(), 0, 0, 0, 0, 0)}};
+    const cue_command_t command = Request(shot, alone, rest, ask, result);
     result.status = messages::CueCommandStatusName(command.status);
     result.reason = command.reason;
     result.plan_ms = 1e-3 * command.solve_us;
+    // The point planner cannot raise its cue yet (its elevation is the spin's, StrokeFor): a
+    // stroke the robot cannot make is said and counted, and played all the same.
+    RobotRefuses(shots_table, alone, command, false);
     if (command.status != cue_command_t::STATUS_OK) {
       result.final_point = rest;
       result.miss_m = (rest - result.target).norm();
@@ -307,12 +315,24 @@ std::vector<ShotResult> TableSimNode::Run() {
   return results;
 }
 
+bool TableSimNode::RobotRefuses(const table::TableGeometry& geometry, const std::vector<table::SceneBall>& balls,
+                                const cue_command_t& command, bool refuse) {
+  if (command.status != cue_command_t::STATUS_OK || !options_.robot) return false;
+  const std::string why = Unmakeable(*options_.robot, geometry, params_.ball.radius, balls, Commanded(command));
+  if (why.empty()) return false;
+  health_.Refused(refuse ? "cue_blocked" : "cue_blocked_played",
+                  "CUE_COMMAND " + std::to_string(command.request_id) + ": " + why + (refuse ? "" : ", played"));
+  return refuse;
+}
+
 table::TableSimulation TableSimNode::PlayOut(const table::TableGeometry& geometry,
                                              const std::vector<table::SceneBall>& balls,
                                              const cue_command_t& command,
                                              const table::TableSimulationOptions& motion) {
+  cue_command_t played = command;
+  if (RobotRefuses(geometry, balls, command)) played.status = cue_command_t::STATUS_CUE_BLOCKED;
   table::TableSimulation sim =
-      PlayedToRest(geometry, plant_, execution_.Struck(balls, command, plant_), motion);
+      PlayedToRest(geometry, plant_, execution_.Struck(balls, played, plant_), motion);
   const double t_strike = time_;
   const double frame_dt = 1.0 / options_.camera_rate;
   const double last_event = sim.events().empty() ? 0.0 : sim.events().back().time;

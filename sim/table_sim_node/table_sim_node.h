@@ -136,6 +136,11 @@ struct TableSimOptions {
   // the nodes against the parameter set it is given and plays the balls with this one (of the
   // same table and balls), so that a controller can be seen learning a table it does not know.
   std::optional<physics::ModelParameters> plant;
+  // The robot that plays the strokes (table_sim_node --robot, "gantry" by default): a commanded
+  // stroke its cue cannot make (stroke_execution.h, Unmakeable) is refused, the balls left as
+  // they were, the reason logged and NODE_STATUS's last error, the "cue_blocked" counter counted.
+  // None: every stroke is played.
+  std::optional<cue::Robot> robot;
 };
 
 struct ShotResult {
@@ -308,8 +313,14 @@ class TableSimNode {
                         const std::optional<Eigen::Vector2d>& object = std::nullopt);
   // The estimator's track nearest `at` in its latest state, nullopt if it has none.
   std::optional<std::int32_t> NearestTrack(const Eigen::Vector2d& at) const;
+  // Whether options.robot refuses `command` on `balls` (a stroke its cue cannot make on
+  // `geometry`, stroke_execution.h's Unmakeable): counted cue_blocked, the reason logged and the
+  // last error of NODE_STATUS. With `refuse` false (the shots session, whose point planner cannot
+  // raise its cue yet) it is said and counted cue_blocked_played, and not refused.
+  bool RobotRefuses(const table::TableGeometry& geometry, const std::vector<table::SceneBall>& balls,
+                    const cue_command_t& command, bool refuse = true);
   // Strikes the cue ball of `balls` as `command` says (with the noise; not at all when it is a
-  // refusal), simulates the table to rest with `motion` and shows it to the camera frame by
+  // refusal or the robot refuses it, options.robot), simulates the table to rest with `motion` and shows it to the camera frame by
   // frame; returns the simulation.
   table::TableSimulation PlayOut(const table::TableGeometry& geometry,
                                  const std::vector<table::SceneBall>& balls,

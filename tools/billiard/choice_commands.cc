@@ -14,6 +14,7 @@
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/params/scene_file.h"
 #include "sim/rules/rules.h"
 #include "sim/table/rack.h"
@@ -37,6 +38,7 @@ struct ChoiceArgs {
   std::uint64_t seed = 1;
   int threads = batch::DefaultThreadCount();
   bool one_level = false;
+  std::string robot = params::kDefaultRobot;
   bool json = false;
 };
 
@@ -56,6 +58,7 @@ void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_flag("--one-level", args->one_level,
                 "The lookahead's next shot valued in closed form, not planned (no second level)");
+  cmd->add_option("--robot", args->robot, kRobotHelp)->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
 }
 
@@ -74,6 +77,7 @@ choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
   options.confirm_samples = args.confirm_samples;
   options.seed = args.seed;
   options.second_level = !args.one_level;
+  options.pot.robot = LoadRobotOption(args.robot);
   return options;
 }
 
@@ -234,6 +238,8 @@ nlohmann::json GameJson(const game::GameRecord& game) {
     j["predicted"] = s.predicted;
     j["likely"] = s.likely;
     j["safety"] = s.safety;
+    j["cue"] = s.stroke ? CueStrokeJson(*s.stroke) : nlohmann::json(nullptr);
+    if (s.stroke && s.clearance) j["cue"]["clearance"] = ClearanceJson(*s.clearance);
     j["first_contact"] = s.first_contact;
     j["potted"] = s.potted;
     j["called_potted"] = s.called_potted;
@@ -415,6 +421,7 @@ void AddPlayCommand(CLI::App& app) {
 void AddBenchGameCommand(CLI::App& app) {
   struct Args {
     bench::GameBenchmarkOptions options;
+    std::string robot = params::kDefaultRobot;
     std::string out;
   };
   auto args = std::make_shared<Args>();
@@ -439,10 +446,13 @@ void AddBenchGameCommand(CLI::App& app) {
   cmd->add_option("--threads", o.threads, "Threads")->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_option("--chunk", o.chunk, "Layouts between the report's rewrites")
       ->capture_default_str()->check(CLI::PositiveNumber);
+  cmd->add_option("--robot", args->robot, std::string(kRobotHelp) + "; none: the level cue, unchecked")
+      ->capture_default_str();
   cmd->add_option("--out", args->out, "Write game_report.md, game_reliability.png and game_results.json here");
   cmd->callback([args] {
     if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
     bench::GameBenchmarkOptions options = args->options;
+    options.robot = LoadRobotOrNone(args->robot);
     options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
     // The report rewritten after each chunk: a run stopped early leaves its largest whole part.
     const std::string out = args->out;

@@ -1,6 +1,7 @@
 #include "tools/billiard/command_line.h"
 
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 
 #include <unistd.h>
 
@@ -125,6 +126,27 @@ std::string StrokeInWords(const physics::CueStroke& stroke) {
   const double heading = std::remainder(stroke.heading, 2.0 * kPi) * kDegPerRad;
   return "speed " + Fixed(stroke.speed, 3) + " m/s, heading " + Fixed(heading, 2) + " deg, " +
          tip + ", elevation " + Fixed(stroke.elevation * kDegPerRad, 1) + " deg";
+}
+
+cue::Robot LoadRobotOption(const std::string& name_or_path) {
+  try {
+    return params::LoadRobot(name_or_path);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--robot: ") + e.what());
+  }
+}
+
+std::optional<cue::Robot> LoadRobotOrNone(const std::string& name_or_path) {
+  if (name_or_path == "none") return std::nullopt;
+  return LoadRobotOption(name_or_path);
+}
+
+nlohmann::json ClearanceJson(const cue::CueClearance& clearance) {
+  nlohmann::json j = {{"clears", clearance.clears}, {"nearest", clearance.what}};
+  if (clearance.nearest == cue::Obstacle::kBall) j["ball"] = clearance.ball;
+  // An empty table and no body leave nothing near: no distance to give (JSON has no infinity).
+  j["distance"] = std::isfinite(clearance.distance) ? nlohmann::json(clearance.distance) : nlohmann::json(nullptr);
+  return j;
 }
 
 void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j) {

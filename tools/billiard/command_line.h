@@ -2,11 +2,14 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "sim/cue/clearance.h"
+#include "sim/cue/robot.h"
 #include "sim/physics/ball_state.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
@@ -68,6 +71,23 @@ void RequireWritableDirectory(const std::string& dir, const std::string& option)
 // The parameter set of a --params option (a built-in name or a JSON file); UsageError if it
 // does not load.
 physics::ModelParameters LoadParametersOption(const std::string& name_or_path);
+
+// The robot of a --robot option (a built-in name, params::RobotNames(), or a JSON file);
+// UsageError if it does not load.
+cue::Robot LoadRobotOption(const std::string& name_or_path);
+
+// The benchmarks' --robot: a robot as LoadRobotOption loads it, or none for "none" (the level
+// cue, unchecked: the figures before robots, to compare with).
+std::optional<cue::Robot> LoadRobotOrNone(const std::string& name_or_path);
+
+// The help of every planning command's --robot option.
+inline constexpr char kRobotHelp[] =
+    "The robot whose cue plays the strokes: gantry | player | FILE (sim/params/robots/): every "
+    "stroke is planned at the elevation its cue needs to clear the balls, the rails and its body";
+
+// A stroke's clearance (sim/cue/clearance.h) as the planning commands print it beside its cue:
+// {"clears", "nearest" (what, in words), "ball" (its id, for a ball), "distance" [m]}.
+nlohmann::json ClearanceJson(const cue::CueClearance& clearance);
 
 // The most rows a trajectory file gets: a sample every 10 us of a 10 s shot, far finer than the
 // integrator's steps (about a hundred a shot), and at 130 to 180 bytes a row about 150 MB. A

@@ -6,6 +6,7 @@
 
 #include "estimator/node/estimator_node.h"
 #include "planner/node/planner_node.h"
+#include "sim/params/robots.h"
 #include "sim/params/scene_file.h"
 #include "sim/params/table_specs.h"
 #include "sim/table_sim_node/session.h"
@@ -18,15 +19,22 @@ namespace {
 // The estimator and the planner on the session's LCM: handling a frame publishes the estimator's
 // state, handling a request the planner's command, inside the simulator's waits. The planner
 // pots on the scene file's table (the default table for the break and the shots) and identifies
-// the table every `identify_every` shots (0: never), and learns its noise with `learn_noise`.
+// the table every `identify_every` shots (0: never), and learns its noise with `learn_noise`, for
+// the table simulator's robot.
 std::function<bool()> EstimatorAndPlanner(lcm::LCM& lcm, const physics::ModelParameters& params,
                                           const camera::CameraModel& camera,
-                                          const std::string& scene, int identify_every,
-                                          bool learn_noise) {
+                                          const table_sim_node::SessionCommandLine& line,
+                                          int identify_every, bool learn_noise) {
+  const std::string& scene = line.options.scene;
   auto estimator = std::make_shared<estimator_node::EstimatorNode>(lcm, camera, params);
   planner_node::PlannerNodeOptions options;
   options.identify_every = identify_every;
   options.learn_noise = learn_noise;
+  try {
+    options.pot.robot = params::LoadRobot(line.robot);
+  } catch (const std::invalid_argument&) {
+    // The session refuses the robot itself, with its reason.
+  }
   if (!scene.empty() && scene != "break") {
     try {
       options.table = table::BuildTable(params::LoadTableSpec(params::LoadScene(scene).table));
@@ -65,8 +73,7 @@ void AddLoopCommand(CLI::App& app) {
     const auto nodes = [line, identify_every, learn_noise](
                            lcm::LCM& lcm, const physics::ModelParameters& params,
                            const camera::CameraModel& camera) {
-      return EstimatorAndPlanner(lcm, params, camera, line->options.scene, *identify_every,
-                                 *learn_noise);
+      return EstimatorAndPlanner(lcm, params, camera, *line, *identify_every, *learn_noise);
     };
     const int status = table_sim_node::RunSessionCommand("billiard loop", *line, nodes);
     if (status != 0) throw ExitStatus(status);

@@ -1,12 +1,17 @@
 #include "tools/billiard/plan_command.h"
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "planner/cue_planning.h"
 #include "planner/shot_planner.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
+#include "sim/table/scene.h"
+#include "tools/billiard/scene_commands.h"
 #include "tools/billiard/command_line.h"
 
 namespace billiard::cli {
@@ -21,8 +26,21 @@ struct PlanArgs {
   double side_spin = 0.0;
   std::string params = params::kDefaultParameterSet;
   bool no_refine = false;
+  std::string robot = params::kDefaultRobot;
+  std::string table = "pool-9ft";
   bool json = false;
 };
+
+// Where the robot's cue is checked: `table_name` (of the parameter set's size), the ball alone
+// on it (the point planner knows no other balls).
+planner::CueSetting CueSettingOf(const std::string& robot_name, const std::string& table_name,
+                                 const physics::ModelParameters& params) {
+  const table::TableGeometry table = LoadTableOption(table_name);
+  if (std::abs(table.length - params.table.length) > 1e-9 || std::abs(table.width - params.table.width) > 1e-9) {
+    throw UsageError("--table " + table_name + " is not the size of the parameter set's table");
+  }
+  return planner::CueSetting{LoadRobotOption(robot_name), table, {}};
+}
 
 nlohmann::json PlanJson(const planner::ShotPlan& plan, const physics::ModelParameters& params) {
   nlohmann::json j;
@@ -86,12 +104,15 @@ void Run(const PlanArgs& args, bool slide_given) {
   planner::PlannerOptions options;
   options.refine = !args.no_refine;
 
-  const planner::ShotPlan plan = planner::PlanShot(request, params, options);
+  const planner::CueSetting setting = CueSettingOf(args.robot, args.table, params);
+  const planner::ShotPlan plan = planner::PlanShotForRobot(request, params, options, setting);
   if (args.json) {
     // The request's ends too, so that the plan alone can be drawn (`billiard plot --plan`).
     nlohmann::json j = PlanJson(plan, params);
     j["from"] = from;
     j["to"] = to;
+    j["robot"] = setting.robot.name;
+    if (plan.clearance) j["cue"]["clearance"] = ClearanceJson(*plan.clearance);
     std::cout << j.dump() << std::endl;
   }
   if (plan.status != planner::PlanStatus::kOk) {
@@ -122,6 +143,12 @@ void AddPlanCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--no-refine", args->no_refine,
                 "The closed-form inverse alone (its miss is still measured with the 5-DOF model)");
+  cmd->add_option("--robot", args->robot,
+                  "The robot whose cue plays the stroke: gantry | player | FILE (sim/params/robots/); the "
+                  "stroke is played at the elevation its cue needs, refused cue_blocked where none clears")
+      ->capture_default_str();
+  cmd->add_option("--table", args->table, "The table the cue is checked on (the parameter set's size)")
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args, slide] { Run(*args, slide->count() > 0); });
 }

@@ -1,5 +1,6 @@
 #include "tools/billiard/pot_commands.h"
 
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include "bench/pot_benchmark.h"
 #include "planner/pot/testing/pot_layouts.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/params/scene_file.h"
 #include "sim/table/table_simulation.h"
 #include "tools/billiard/command_line.h"
@@ -26,6 +28,7 @@ struct PlanPotArgs {
   std::string cue_to;
   double cue_radius = 0.0;
   std::string scene_out;
+  std::string robot = params::kDefaultRobot;
   bool json = false;
 };
 
@@ -38,7 +41,14 @@ void PrintPlan(const pot::PotPlan& plan) {
   if (plan.status != pot::PotStatus::kOk) return;
   std::cerr << "plan-pot: ball " << plan.ball << " in " << plan.pocket << ": "
             << pot::PotStatusName(plan.status) << ", " << plan.why << "\n  cue     "
-            << StrokeInWords(plan.stroke) << "\n  margin  " << Fixed(plan.margin_left_deg, 2)
+            << StrokeInWords(plan.stroke) << "\n";
+  // An empty table leaves nothing near the cue: no distance to give.
+  if (plan.clearance && std::isfinite(plan.clearance->distance)) {
+    constexpr double kMmPerM = 1000.0;
+    std::cerr << "  clears  by " << Fixed(plan.clearance->distance * kMmPerM, 1) << " mm (nearest: "
+              << plan.clearance->what << ")\n";
+  }
+  std::cerr << "  margin  " << Fixed(plan.margin_left_deg, 2)
             << " deg left, " << Fixed(plan.margin_right_deg, 2) << " deg right; cue speed "
             << Fixed(plan.speed_lo, 3) << " to " << Fixed(plan.speed_hi, 3) << " m/s; cut "
             << Fixed(plan.cut_deg, 1) << " deg\n  cue ball stops at " << Fixed(plan.cue_rest.x(), 3)
@@ -75,7 +85,9 @@ void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(args.scene_path + ": " + e.what());
   }
-  const pot::PotPlan plan = pot::PlanPot(geometry, params, balls, request);
+  pot::PotOptions options;
+  options.robot = LoadRobotOption(args.robot);
+  const pot::PotPlan plan = pot::PlanPot(geometry, params, balls, request, options);
   if (!args.scene_out.empty() && plan.status == pot::PotStatus::kOk) {
     // The scene with the cue ball launched as planned: `simulate --scene` and `plot --scene`
     // play the plan from it.
@@ -93,6 +105,7 @@ void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
   if (args.json) {
     nlohmann::json j = PotPlanJson(plan);
     j["table"] = geometry.name;
+    j["robot"] = options.robot->name;
     DescribeParameters(params, &j);
     std::cout << j.dump() << std::endl;
   } else {
@@ -120,6 +133,7 @@ nlohmann::json PotPlanJson(const pot::PotPlan& plan) {
   j["v0"] = Point(plan.v0);
   j["w0"] = {plan.w0.x(), plan.w0.y(), plan.w0.z()};
   j["cue"] = CueStrokeJson(plan.stroke);
+  if (plan.clearance) j["cue"]["clearance"] = ClearanceJson(*plan.clearance);
   j["cut_deg"] = plan.cut_deg;
   j["departure"] = plan.departure;
   j["margin_deg"] = {plan.margin_left_deg, plan.margin_right_deg};
@@ -154,6 +168,7 @@ void AddPlanPotCommand(CLI::App& app) {
                                         "Within this distance of --cue-to [m] (default: the point)");
   cmd->add_option("--scene-out", args->scene_out,
                   "Write the scene with the cue ball launched as planned (for simulate --scene, plot --scene)");
+  cmd->add_option("--robot", args->robot, kRobotHelp)->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args, radius] { RunPlanPot(*args, radius->count() > 0); });
 }
@@ -232,6 +247,7 @@ void AddPotLayoutCommand(CLI::App& app) {
 void AddBenchPotCommand(CLI::App& app) {
   struct Args {
     bench::PotBenchmarkOptions options;
+    std::string robot = params::kDefaultRobot;
     std::string out;
   };
   auto args = std::make_shared<Args>();
@@ -245,10 +261,13 @@ void AddBenchPotCommand(CLI::App& app) {
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--position-targets", args->options.position_targets, "Cue-ball targets planned")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd->add_option("--robot", args->robot, std::string(kRobotHelp) + "; none: the level cue, unchecked")
+      ->capture_default_str();
   cmd->add_option("--out", args->out, "Write pot_report.md into this directory");
   cmd->callback([args] {
     if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
     bench::PotBenchmarkOptions options = args->options;
+    options.robot = LoadRobotOrNone(args->robot);
     options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
     const bench::PotBenchmarkResult result = bench::RunPotBenchmark(options);
     if (!args->out.empty()) {

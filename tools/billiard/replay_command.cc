@@ -20,6 +20,7 @@
 #include "planner/node/planner_node.h"
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/message_difference.h"
 
@@ -31,6 +32,7 @@ struct ReplayArgs {
   std::string log;
   std::string params = params::kDefaultParameterSet;
   std::string camera;
+  std::string robot = params::kDefaultRobot;
   bool json = false;
 };
 
@@ -213,7 +215,9 @@ void Run(const ReplayArgs& args) {
   estimator::EstimatorOptions options;
   options.table_from_camera = !args.camera.empty();
   estimator_node::EstimatorNode estimator(lcm, camera, params, options, {}, quiet);
-  planner_node::PlannerNode planner(lcm, params, {}, quiet);
+  planner_node::PlannerNodeOptions planning;
+  planning.pot.robot = LoadRobotOption(args.robot);
+  planner_node::PlannerNode planner(lcm, params, planning, quiet);
   Outputs out;
   lcm.subscribe(messages::kTableStateChannel, &Outputs::OnState, &out);
   lcm.subscribe(messages::kCueCommandChannel, &Outputs::OnCommand, &out);
@@ -299,6 +303,7 @@ void AddReplayCommand(CLI::App& app) {
   cmd->add_option("--params", args->params, "As the loop's nodes had (default pool)")
       ->capture_default_str();
   cmd->add_option("--camera", args->camera, "Camera model JSON, as the estimator had");
+  cmd->add_option("--robot", args->robot, "As the planner had (default gantry)")->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { Run(*args); });
 }

@@ -15,9 +15,11 @@
 #include <string>
 
 #include "estimator/ball_detector.h"
+#include "planner/cue_planning.h"
 #include "planner/pot/pot_planner.h"
 #include "planner/shot_planner.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/params/table_specs.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/simulator.h"
@@ -126,7 +128,8 @@ py::dict SimulateScene(const Array& states, std::optional<std::vector<int>> ids,
 }
 
 py::dict Plan(const Array& from, const Array& to, double final_speed, const std::string& spin,
-              double side_spin, const std::string& params_name) {
+              double side_spin, const std::string& params_name, const std::string& robot,
+              const std::string& table_name) {
   const auto a = Numbers(from, 2, "from [X, Y]"), b = Numbers(to, 2, "to [X, Y]");
   if (!std::isfinite(final_speed) || !std::isfinite(side_spin)) {
     throw py::value_error("final_speed and side_spin must be finite");
@@ -139,14 +142,16 @@ py::dict Plan(const Array& from, const Array& to, double final_speed, const std:
   request.final_speed = final_speed;
   request.style = *style;
   request.side_spin = side_spin;
-  const planner::ShotPlan plan = planner::PlanShot(request, Params(params_name), {});
+  const physics::ModelParameters params = Params(params_name);
+  const planner::ShotPlan plan =
+      planner::PlanShotForRobot(request, params, {}, planner::CueSetting{Robot(robot), Table(table_name), {}});
   if (plan.status != planner::PlanStatus::kOk) {
     Refuse(planner::PlanStatusName(plan.status) + ": " + plan.reason);
   }
   py::dict out;
   out["v0"] = Array(2, plan.v0.data());
   out["w0"] = Array(3, plan.w0.data());
-  out["cue"] = CueJson(plan.stroke);
+  out["cue"] = CueJson(plan.stroke, plan.clearance);
   out["predicted_final"] = Array(2, plan.predicted_final.data());
   out["arrival_time"] = plan.arrival_time;
   out["refined_miss_m"] = plan.refined_miss_m;
@@ -156,7 +161,7 @@ py::dict Plan(const Array& from, const Array& to, double final_speed, const std:
 py::dict PlanPot(const Array& states, std::optional<std::vector<int>> ids, int ball,
                  const std::string& pocket, const std::string& kind,
                  std::optional<Array> cue_to, double cue_radius, const std::string& table_name,
-                 const std::string& params_name) {
+                 const std::string& params_name, const std::string& robot) {
   pot::PotRequest request;
   request.ball = ball;
   request.pocket = pocket;
@@ -167,7 +172,10 @@ py::dict PlanPot(const Array& states, std::optional<std::vector<int>> ids, int b
     const auto t = Numbers(*cue_to, 2, "cue_to [X, Y]");
     request.cue_target = pot::CueTarget{{t[0], t[1]}, cue_radius};
   }
-  const pot::PotPlan plan = pot::PlanPot(Table(table_name), Params(params_name), SceneBalls(states, ids), request);
+  pot::PotOptions options;
+  options.robot = Robot(robot);
+  const pot::PotPlan plan =
+      pot::PlanPot(Table(table_name), Params(params_name), SceneBalls(states, ids), request, options);
   if (plan.status != pot::PotStatus::kOk) {
     Refuse(std::string(pot::PotStatusName(plan.status)) + ": " + plan.reason);
   }
@@ -176,7 +184,7 @@ py::dict PlanPot(const Array& states, std::optional<std::vector<int>> ids, int b
   out["why"] = plan.why;
   out["v0"] = Array(2, plan.v0.data());
   out["w0"] = Array(3, plan.w0.data());
-  out["cue"] = CueJson(plan.stroke);
+  out["cue"] = CueJson(plan.stroke, plan.clearance);
   out["cut_deg"] = plan.cut_deg;
   out["margin_deg"] = std::vector<double>{plan.margin_left_deg, plan.margin_right_deg};
   out["speed_window"] = std::vector<double>{plan.speed_lo, plan.speed_hi};
@@ -258,10 +266,13 @@ PYBIND11_MODULE(billiard, m) {
         "by event, the closed form between events: 'ids', final 'states', 'pocketed', 'events'");
   m.def("plan", &Plan, arg("from_"), arg("to"), arg("final_speed") = 0.0,
         arg("spin") = "natural", arg("side_spin") = 0.0, arg("params") = "pool",
-        "The launch and cue stroke that send a ball from `from_` to `to`; raises Refused");
+        arg("robot") = billiard::params::kDefaultRobot, arg("table") = "pool-9ft",
+        "The launch and cue stroke that send a ball from `from_` to `to`, at the elevation the "
+        "robot's cue needs on the table; raises Refused");
   m.def("plan_pot", &PlanPot, arg("states"), arg("ids") = py::none(), arg("ball") = 1,
         arg("pocket") = "upper_right", arg("kind") = "any", arg("cue_to") = py::none(),
         arg("cue_radius") = 0.0, arg("table") = "pool-9ft", arg("params") = "pool",
+        arg("robot") = billiard::params::kDefaultRobot,
         "The stroke that pots `ball` in `pocket` from a scene (N x 7 states, id 0 the cue ball), "
         "planned against the whole-table simulation: 'kind', 'why', 'v0', 'w0', 'cue', "
         "'margin_deg', 'speed_window', 'cue_rest', 'paths'; raises Refused");

@@ -80,6 +80,18 @@ def test_a_plan_arrives_at_its_target_and_a_refusal_is_an_exception():
         billiard.plan(np.array([0.5, np.nan]), np.array([1.0, 0.5]))
 
 
+def test_a_plan_agrees_with_the_cli_at_the_elevation_the_robots_cue_needs():
+    """0.5 m off the left rail the gantry's cue must rise over it: both front ends plan the same
+    stroke at the same elevation, and the CLI says it clears."""
+    plan = billiard.plan(np.array([0.5, 0.5]), np.array([1.5, 0.8]), final_speed=0.3, spin="stun")
+    j = cli("plan", "--from", "0.5,0.5", "--to", "1.5,0.8", "--final-speed", "0.3", "--spin", "stun")
+    assert plan["cue"] == {key: j["cue"][key] for key in plan["cue"]}
+    assert plan["v0"].tolist() == j["v0"] and plan["w0"].tolist() == j["w0"]
+    assert plan["cue"]["elevation"] > 0 and j["cue"]["clearance"]["clears"]
+    with pytest.raises(ValueError, match="robot"):
+        billiard.plan(np.array([0.5, 0.5]), np.array([1.5, 0.8]), robot="no-such-robot")
+
+
 def test_a_pot_agrees_with_plan_pot_and_a_refusal_is_an_exception():
     scene = json.loads((SOURCE / "docs" / "pictures" / "pot_scene.json").read_text())
     states = np.array([b["state"] for b in scene["balls"]])

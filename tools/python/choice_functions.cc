@@ -12,6 +12,7 @@
 #include "planner/players/players.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
+#include "sim/params/robots.h"
 #include "sim/rules/rules.h"
 #include "sim/table/rack.h"
 #include "tools/python/conversions.h"
@@ -22,7 +23,7 @@ namespace {
 
 // The options choose_shot and play share, as the CLI's choice options.
 struct ChoiceArgs {
-  std::string rules, noise;
+  std::string rules, noise, robot;
   int samples = 0, confirm_samples = 0;
   std::uint64_t seed = 0;
   int threads = 0;  // 0: batch::DefaultThreadCount(); the answer does not depend on it
@@ -44,6 +45,7 @@ choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
   options.samples = args.samples;
   options.confirm_samples = args.confirm_samples;
   options.seed = args.seed;
+  options.pot.robot = Robot(args.robot);
   return options;
 }
 
@@ -59,7 +61,7 @@ py::dict ChosenDict(const choice::Candidate& c) {
   d["ball"] = c.plan.ball;
   d["pocket"] = c.plan.pocket;
   d["kind"] = pot::ShotKindName(c.plan.kind);
-  d["cue"] = CueJson(c.plan.stroke);
+  d["cue"] = CueJson(c.plan.stroke, c.plan.clearance);
   d["v0"] = Array(2, c.plan.v0.data());
   d["w0"] = Array(3, c.plan.w0.data());
   d["cut_deg"] = c.plan.cut_deg;
@@ -196,13 +198,15 @@ void AddChoiceFunctions(py::module_& m) {
       "choose_shot",
       [](const Array& states, std::optional<std::vector<int>> ids, const std::string& rules,
          bool ball_in_hand, const std::string& noise, int samples, int confirm_samples,
-         std::uint64_t seed, int threads, const std::string& table, const std::string& params) {
-        return ChooseShot(states, ids, ball_in_hand, {rules, noise, samples, confirm_samples, seed, threads},
+         std::uint64_t seed, int threads, const std::string& table, const std::string& params,
+         const std::string& robot) {
+        return ChooseShot(states, ids, ball_in_hand, {rules, noise, robot, samples, confirm_samples, seed, threads},
                           table, params);
       },
       arg("states"), arg("ids") = py::none(), arg("rules") = "any", arg("ball_in_hand") = false,
       arg("noise") = params::kDefaultNoise, arg("samples") = 64, arg("confirm_samples") = 256,
       arg("seed") = 1, arg("threads") = 0, arg("table") = "pool-9ft", arg("params") = "pool",
+      arg("robot") = params::kDefaultRobot,
       "billiard choose-shot: the pot most likely to drop under the execution noise, with a "
       "one-shot lookahead, from a scene of balls at rest (N x 7 states, id 0 the cue ball): "
       "'choice' (ball, pocket, kind, cue, success_probability, probability_stderr, "
@@ -214,15 +218,15 @@ void AddChoiceFunctions(py::module_& m) {
          std::optional<std::string> rack, const std::string& rules, const std::string& policy,
          int shot_limit, bool ball_in_hand, const std::string& noise, int samples,
          int confirm_samples, std::uint64_t seed, int threads, const std::string& table,
-         const std::string& params) {
+         const std::string& params, const std::string& robot) {
         return Play(states, ids, rack, policy, shot_limit, ball_in_hand,
-                    {rules, noise, samples, confirm_samples, seed, threads}, table, params);
+                    {rules, noise, robot, samples, confirm_samples, seed, threads}, table, params);
       },
       arg("states") = py::none(), arg("ids") = py::none(), arg("rack") = py::none(),
       arg("rules") = "any", arg("policy") = "ours", arg("shot_limit") = 40,
       arg("ball_in_hand") = false, arg("noise") = params::kDefaultNoise, arg("samples") = 64,
       arg("confirm_samples") = 256, arg("seed") = 1, arg("threads") = 0,
-      arg("table") = "pool-9ft", arg("params") = "pool",
+      arg("table") = "pool-9ft", arg("params") = "pool", arg("robot") = params::kDefaultRobot,
       "billiard play: a rack played in simulation shot by shot (states, or rack='nine-ball' "
       "racked from the seed and broken): 'shots' (each call, prediction, what dropped, any "
       "foul), 'summary' (pots per attempt, visits, fouls, cleared, run_out, end), 'balls_left'");

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "sim/params/parameter_sets.h"
+#include "sim/params/robots.h"
 #include "sim/params/table_specs.h"
 
 namespace billiard::python {
@@ -45,6 +46,14 @@ table::TableGeometry Table(const std::string& name_or_path) {
   }
 }
 
+cue::Robot Robot(const std::string& name_or_path) {
+  try {
+    return params::LoadRobot(name_or_path);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("robot: ") + e.what());
+  }
+}
+
 Array StateArray(const physics::BallState& s) {
   Array out(7);
   std::copy(s.data(), s.data() + 7, out.mutable_data());
@@ -69,13 +78,22 @@ std::vector<table::SceneBall> SceneBalls(const Array& states, const std::optiona
   return balls;
 }
 
-py::dict CueJson(const physics::CueStroke& stroke) {
+py::dict CueJson(const physics::CueStroke& stroke, const std::optional<cue::CueClearance>& clearance) {
   py::dict cue;
   cue["speed"] = stroke.speed;
   cue["heading"] = stroke.heading;
   cue["tip_side"] = stroke.tip_side;
   cue["tip_height"] = stroke.tip_height;
   cue["elevation"] = stroke.elevation;
+  if (clearance) {
+    // As the CLI writes it (ClearanceJson): no distance when nothing is near.
+    py::dict c;
+    c["clears"] = clearance->clears;
+    c["nearest"] = clearance->what;
+    if (clearance->nearest == cue::Obstacle::kBall) c["ball"] = clearance->ball;
+    c["distance"] = std::isfinite(clearance->distance) ? py::object(py::float_(clearance->distance)) : py::none();
+    cue["clearance"] = c;
+  }
   return cue;
 }
 

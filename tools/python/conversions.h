@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/cue/clearance.h"
+#include "sim/cue/robot.h"
 #include "sim/physics/ball_state.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
@@ -35,6 +37,9 @@ std::vector<double> Numbers(const Array& a, std::size_t n, const std::string& wh
 // A parameter set and a table by name or file; ValueError with the reason.
 physics::ModelParameters Params(const std::string& name_or_path);
 table::TableGeometry Table(const std::string& name_or_path);
+// The robot of a `robot` argument (params::LoadRobot: gantry, player or a file), as the CLI's
+// --robot; ValueError when it does not load.
+cue::Robot Robot(const std::string& name_or_path);
 
 // A ball's state as a 7-array [X, Y, vx, vy, wx, wy, wz].
 Array StateArray(const physics::BallState& s);
@@ -42,7 +47,9 @@ Array StateArray(const physics::BallState& s);
 // The balls of an N x 7 array of states, ids 0..N-1 unless given.
 std::vector<table::SceneBall> SceneBalls(const Array& states, const std::optional<std::vector<int>>& ids);
 
-// A stroke as the CLI's JSON has it: {"speed", "heading", "tip_side", "tip_height", "elevation"}.
-py::dict CueJson(const physics::CueStroke& stroke);
+// A stroke as the CLI's JSON has it: {"speed", "heading", "tip_side", "tip_height", "elevation"},
+// and "clearance" ({"clears", "nearest", "ball" for a ball, "distance"}) where the robot's cue was
+// checked.
+py::dict CueJson(const physics::CueStroke& stroke, const std::optional<cue::CueClearance>& clearance = std::nullopt);
 
 }  // namespace billiard::python

@@ -1,0 +1,98 @@
+#include "planner/pot/cue_elevation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "planner/pot/testing/pot_fixture.h"
+#include "sim/params/robots.h"
+
+namespace billiard::pot {
+namespace {
+
+using table::SceneBall;
+
+class CueElevationTest : public testing::PotFixture {
+ protected:
+  // A straight pot up the table's middle into upper_middle with the cue ball `gap` [m] off the
+  // lower rail's nose: a level cue lies across the rail.
+  std::vector<SceneBall> OffTheRail(double gap) const {
+    const double x = table_.length / 2, r = params_.ball.radius;
+    return {table::AtRest(0, x, r + gap), table::AtRest(1, x, table_.width / 2)};
+  }
+  PotRequest UpperMiddle() const { return PotRequest{1, "upper_middle", ShotKind::kDirect, std::nullopt}; }
+  PotOptions WithGantry() const {
+    PotOptions o;
+    o.robot = params::LoadRobot("gantry");
+    return o;
+  }
+};
+
+// Off the rail the level cue is blocked; the plan rises to the least clearing elevation and its
+// margin, clears, and still pots on `simulate --scene`'s motion.
+TEST_F(CueElevationTest, APotOffTheRailIsPlayedAboveItAndStillPots) {
+  const std::vector<SceneBall> balls = OffTheRail(0.1);
+  const PotOptions options = WithGantry();
+  const PotPlan plan = PlanPot(table_, params_, balls, UpperMiddle(), options);
+  ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
+  physics::CueStroke level = plan.stroke;
+  level.elevation = 0.0;
+  EXPECT_FALSE(cue::Clearance(table_, params_.ball.radius, balls, 0, level, *options.robot).clears);
+  const cue::ClearingElevation least =
+      cue::LeastClearingElevation(table_, params_.ball.radius, balls, 0, plan.stroke, *options.robot);
+  ASSERT_TRUE(least.elevation);
+  EXPECT_NEAR(plan.stroke.elevation, *least.elevation + cue::kElevationMargin, 0.2 * kDegree);
+  ASSERT_TRUE(plan.clearance);
+  EXPECT_TRUE(plan.clearance->clears);
+  EXPECT_GT(plan.clearance->distance, 0.0);
+  const Outcome o = Simulate(balls, plan.v0, plan.w0, 1, "upper_middle");
+  EXPECT_TRUE(o.potted && o.first_contact == 1 && !o.scratch);
+  EXPECT_TRUE(PlayStroke(table_, params_, balls, 1, "upper_middle", plan.stroke).legal);
+}
+
+// Without a robot the cue is not checked: the same pot is played level, as before robots.
+TEST_F(CueElevationTest, WithoutARobotTheStrokeIsLevel) {
+  const PotPlan plan = PlanPot(table_, params_, OffTheRail(0.1), UpperMiddle());
+  ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
+  EXPECT_EQ(plan.stroke.elevation, 0.0);
+  EXPECT_FALSE(plan.clearance);
+}
+
+// A robot that cannot raise its cue past 5 degrees clears the rail at no elevation: cue_blocked,
+// and the reason says what blocks.
+TEST_F(CueElevationTest, NothingInRangeClearsIsCueBlocked) {
+  PotOptions options = WithGantry();
+  options.robot->elevation.max = 5.0 * kDegree;
+  const PotPlan plan = PlanPot(table_, params_, OffTheRail(0.1), UpperMiddle(), options);
+  EXPECT_EQ(plan.status, PotStatus::kCueBlocked);
+  EXPECT_STREQ(PotStatusName(plan.status), "cue_blocked");
+  EXPECT_NE(plan.reason.find("rail"), std::string::npos) << plan.reason;
+}
+
+// A pot whose cue needs a steep elevation is paced within what keeps the ball on the cloth
+// (cue::kMaxHop), not played as if it stayed down: 3 mm off the rail the gantry's cue needs 31
+// degrees, at which a 0.4 m/s cue is the fastest that does not hop the ball beyond the limit, too
+// slow to send ball 1 the table's half length: refused, with that pace in the reason.
+TEST_F(CueElevationTest, AStrokeThatWouldLiftTheBallIsPacedBelowTheHopOrRefused) {
+  const PotPlan plan = PlanPot(table_, params_, OffTheRail(0.003), UpperMiddle(), WithGantry());
+  ASSERT_EQ(plan.status, PotStatus::kNoStroke);
+  EXPECT_NE(plan.reason.find("the fastest stroke that keeps the ball on the cloth"), std::string::npos) << plan.reason;
+}
+
+// Every plan's stroke keeps the ball on the cloth: off the rail at gaps where the cue must rise,
+// the planned pots hop the ball no more than the limit.
+TEST_F(CueElevationTest, EveryPlannedStrokeKeepsTheBallOnTheCloth) {
+  int raised = 0;
+  for (const double gap : {0.005, 0.01, 0.02, 0.05, 0.1}) {
+    const std::vector<SceneBall> balls = OffTheRail(gap);
+    const PotPlan plan = PlanPot(table_, params_, balls, UpperMiddle(), WithGantry());
+    if (plan.status != PotStatus::kOk) continue;
+    raised += plan.stroke.elevation > 0.0;
+    EXPECT_LE(cue::HopHeight(plan.stroke, Eigen::Vector2d(balls[0].state.head<2>()), params_), cue::kMaxHop * (1 + 1e-9))
+        << "gap " << gap;
+  }
+  EXPECT_GE(raised, 2);
+}
+
+}  // namespace
+}  // namespace billiard::pot

@@ -1,0 +1,67 @@
+#include "sim/cue/stroke_limits.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace billiard::cue {
+
+namespace {
+
+// The hop of a stroke per (m/s)^2 of its cue speed: the strike is linear in it.
+double HopPerSpeedSquared(physics::CueStroke stroke, const Eigen::Vector2d& position,
+                          const physics::ModelParameters& params) {
+  stroke.speed = 1.0;
+  return HopHeight(stroke, position, params);
+}
+
+std::string Fixed(double value, int digits) {
+  std::ostringstream s;
+  s.precision(digits);
+  s << std::fixed << value;
+  return s.str();
+}
+
+}  // namespace
+
+double HopHeight(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
+                 const physics::ModelParameters& params) {
+  const physics::BallState launch = physics::StrikeBall(stroke, position, params);
+  const Eigen::Vector2d along(std::cos(stroke.heading), std::sin(stroke.heading));
+  // The impulse along the cue's axis drives the ball down by its horizontal part times
+  // tan(elevation); the sideways part (squirt) is horizontal.
+  const double down = std::max(0.0, launch.segment<2>(physics::kVx).dot(along)) * std::tan(stroke.elevation);
+  const double up = kBedRestitution * down;
+  return up * up / (2.0 * params.ball.gravity);
+}
+
+double HopFreeSpeed(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
+                    const physics::ModelParameters& params) {
+  const double per_speed_squared = HopPerSpeedSquared(stroke, position, params);
+  if (per_speed_squared <= 0.0) return std::numeric_limits<double>::infinity();
+  return std::sqrt(kMaxHop / per_speed_squared);
+}
+
+std::string HopReason(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
+                      const physics::ModelParameters& params) {
+  const double hop = HopHeight(stroke, position, params);
+  if (hop <= kMaxHop) return "";
+  return "the cue at " + Fixed(stroke.elevation * 180.0 / M_PI, 1) + " deg and " + Fixed(stroke.speed, 2) +
+         " m/s would lift the ball off the cloth (a hop of " + Fixed(hop * 1e3, 2) + " mm, beyond the " +
+         Fixed(kMaxHop * 1e3, 2) + " mm the strike model's ball on the cloth covers; " +
+         Fixed(HopFreeSpeed(stroke, position, params), 2) + " m/s at most)";
+}
+
+std::variant<double, std::string> ElevationFor(const table::TableGeometry& table, double ball_radius,
+                                               const std::vector<table::SceneBall>& balls, int cue_ball_id,
+                                               const physics::CueStroke& stroke, const Robot& robot) {
+  const ClearingElevation least = LeastClearingElevation(table, ball_radius, balls, cue_ball_id, stroke, robot);
+  if (!least.elevation) return least.reason;
+  // A cue that clears at the robot's lowest elevation has nothing to be raised over.
+  if (*least.elevation <= robot.elevation.min) return std::max(*least.elevation, stroke.elevation);
+  const double margined = std::min(*least.elevation + kElevationMargin, robot.elevation.max);
+  return std::max(margined, stroke.elevation);
+}
+
+}  // namespace billiard::cue
