@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "planner/choice/scene_balls.h"
-#include "planner/game/wilson.h"
+#include "sim/batch/wilson.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
@@ -114,7 +114,7 @@ TEST_F(BreakSearchTest, MoreTablesKeptWithinTheScratchBound) {
   EXPECT_TRUE(Feasible(safe, options));
   EXPECT_TRUE(Feasible(better, options));
   EXPECT_FALSE(Feasible(wild, options));
-  EXPECT_NEAR(ScratchBound(wild, 1.0), WilsonInterval(40, 400, 1.0).hi, 1e-15);
+  EXPECT_NEAR(ScratchBound(wild, 1.0), batch::WilsonInterval(40, 400, 1.0).hi, 1e-15);
   EXPECT_TRUE(BreaksBetter(better, safe, options));
   EXPECT_TRUE(BreaksBetter(better, wild, options));
   EXPECT_TRUE(BreaksBetter(safe, wild, options));
