@@ -107,6 +107,7 @@ std::string WalkLayout(WireWalk& w, const cue_command_t*) {
   w.Skip(2 * kDouble + kInt8 + 2 * kDouble, "cue_command_t choice");
   w.Skip(kInt8, "cue_command_t status");
   w.String("reason");
+  w.Skip(kInt8, "cue_command_t safety");
   return w.error();
 }
 
@@ -137,6 +138,8 @@ std::string WalkLayout(WireWalk& w, const shot_request_t*) {
              kInt8,
          "shot_request_t header");
   w.String("pocket");
+  w.Skip(2 * kInt8 + 3 * kDouble + 2 * kInt8, "shot_request_t pot and choice");
+  w.String("player");
   return w.error();
 }
 
