@@ -39,15 +39,11 @@ int HistogramBin(const cv::Vec3b& lab) {
   return (l * kChromaBins + a) * kChromaBins + b;
 }
 
-// A region reaching this many of the frame's four edges, around its centre, surrounds the table
-// (a low camera's view may have the near rail cut the floor in two, leaving it three edges).
-constexpr int kSurroundingEdges = 3;
-
 }  // namespace
 
 // The cloth's colour (BGR): the mean of the pixels in the mode of the centre-weighted L*a*b*
 // histogram (the bins next to the fullest neighbourhood of bins).
-cv::Vec3f DominantClothColour(const cv::Mat& small, const cv::Mat& ignored) {
+cv::Vec3f DominantClothColour(const cv::Mat& small) {
   const cv::Mat lab = LabImage(small).pixels();
   std::vector<float> histogram(kLightnessBins * kChromaBins * kChromaBins, 0.0f);
   const double half_w = 0.5 * small.cols, half_h = 0.5 * small.rows;
@@ -57,9 +53,7 @@ cv::Vec3f DominantClothColour(const cv::Mat& small, const cv::Mat& ignored) {
     for (int x = 0; x < lab.cols; ++x) {
       const double dx = (x - half_w) / half_w;
       const double weight = 1.0 - (dx * dx + dy * dy);  // 0 from the middle of each edge out
-      if (weight > 0 && (ignored.empty() || !ignored.at<uchar>(y, x))) {
-        histogram[HistogramBin(row[x])] += static_cast<float>(weight);
-      }
+      if (weight > 0) histogram[HistogramBin(row[x])] += static_cast<float>(weight);
     }
   }
   int best_l = 0, best_a = 0, best_b = 0;
@@ -177,20 +171,6 @@ cv::Mat FillHoles(const cv::Mat& region) {
   region.copyTo(padded(cv::Rect(1, 1, region.cols, region.rows)));
   cv::floodFill(padded, cv::Point(0, 0), 128);
   return padded(cv::Rect(1, 1, region.cols, region.rows)) != 128;
-}
-
-bool SurroundsTheTable(const cv::Mat& region, double least_hole) {
-  const int last_row = region.rows - 1, last_col = region.cols - 1;
-  const int edges = (cv::countNonZero(region.row(0)) > 0) +
-                    (cv::countNonZero(region.row(last_row)) > 0) +
-                    (cv::countNonZero(region.col(0)) > 0) +
-                    (cv::countNonZero(region.col(last_col)) > 0);
-  const cv::Point centre(region.cols / 2, region.rows / 2);
-  if (edges < kSurroundingEdges || region.at<uchar>(centre)) return false;
-  cv::Mat holes = FillHoles(region) & ~region;
-  if (!holes.at<uchar>(centre)) return true;  // beside it
-  const int hole = cv::floodFill(holes, centre, 128);
-  return hole >= least_hole * static_cast<double>(region.total());
 }
 
 }  // namespace billiard::estimator

@@ -12,8 +12,8 @@
 namespace billiard::estimator {
 
 // The cloth's colour (BGR) in a reduced BGR frame: the mean of the pixels in the mode of the
-// centre-weighted L*a*b* histogram, the pixels of `ignored` (8UC1, nonzero; or empty) left out.
-cv::Vec3f DominantClothColour(const cv::Mat& small, const cv::Mat& ignored = cv::Mat());
+// centre-weighted L*a*b* histogram.
+cv::Vec3f DominantClothColour(const cv::Mat& small);
 
 // The CIE L*a*b* of a BGR colour (0..255 a channel).
 cv::Vec3f LabOfBgr(const cv::Vec3f& bgr);
@@ -26,11 +26,5 @@ cv::Mat LargestCentralRegion(const cv::Mat& cloth_like);
 
 // The region with its holes (balls, chalk, hands on the cloth) filled.
 cv::Mat FillHoles(const cv::Mat& region);
-
-// Whether a region surrounds the table rather than being its cloth (a floor or a wall around a
-// table seen from a low camera): it reaches three or four edges of the frame, and the frame's
-// centre, where a table camera looks, is beside it or in a hole of it at least `least_hole` of the
-// frame large. A cloth holds the centre, or has only its balls for holes there.
-bool SurroundsTheTable(const cv::Mat& region, double least_hole);
 
 }  // namespace billiard::estimator

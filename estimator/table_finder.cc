@@ -51,9 +51,6 @@ constexpr double kFocalAgreement = 1.3;
 // light reads L* 76).
 constexpr double kOverheadAspectTolerance = 1.25;
 constexpr double kMaxClothLightness = 85.0, kMinClothChroma = 10.0;
-// A side of the cloth's outline whose both ends are within kFrameEdgePx (search px) of the same
-// edge of the frame is that edge: the table goes on beyond it.
-constexpr double kFrameEdgePx = 2.0;
 
 struct Line {
   Eigen::Vector3d coefficients;  // a x + b y + c = 0, (a, b) unit
@@ -303,74 +300,6 @@ std::array<Eigen::Vector3d, 4> CushionNoses(const cv::Mat& bgr,
   return lines;
 }
 
-// The side of the cloth's outline (corners k to k + 1) that runs along an edge of the frame, or -1.
-int SideAlongFrameEdge(const std::array<Eigen::Vector2d, 4>& corners, const cv::Size& size,
-                       double tolerance_px) {
-  const auto on_edge = [&](const Eigen::Vector2d& p, int edge) {
-    const double distance[4] = {p.x(), p.y(), size.width - 1 - p.x(), size.height - 1 - p.y()};
-    return std::abs(distance[edge]) < tolerance_px;
-  };
-  for (int k = 0; k < 4; ++k) {
-    for (int edge = 0; edge < 4; ++edge) {
-      if (on_edge(corners[k], edge) && on_edge(corners[(k + 1) % 4], edge)) return k;
-    }
-  }
-  return -1;
-}
-
-// The corners of the unseen side `k` placed on its neighbouring sides so that the table has its
-// proportions: the sides beside it as long as kTableAspect times, or 1 / kTableAspect of, the side
-// opposite (whichever is the shortest that does not cut them shorter than they are seen). From
-// overhead the image keeps the table's proportions nearly; the corners moved are out of the frame.
-void PlaceUnseenSide(int k, std::array<Eigen::Vector2d, 4>* corners) {
-  auto& c = *corners;
-  const Eigen::Vector2d& a = c[(k + 2) % 4];  // the opposite side, from a to b
-  const Eigen::Vector2d& b = c[(k + 3) % 4];
-  const double opposite = (b - a).norm();
-  const double seen = std::max((c[(k + 1) % 4] - a).norm(), (c[k] - b).norm());
-  double length = HUGE_VAL;
-  for (const double candidate : {kTableAspect * opposite, opposite / kTableAspect}) {
-    if (candidate >= seen) length = std::min(length, candidate);
-  }
-  if (!std::isfinite(length)) return;
-  c[(k + 1) % 4] = a + length * (c[(k + 1) % 4] - a).normalized();
-  c[k] = b + length * (c[k] - b).normalized();
-}
-
-// Whether the cloth's colour is white, not a cloth's (a sheet of paper, a wall).
-bool IsWhite(const cv::Vec3f& cloth_colour) {
-  const cv::Vec3f lab = LabOfBgr(cloth_colour);
-  return lab[0] > kMaxClothLightness && std::hypot(lab[1], lab[2]) < kMinClothChroma;
-}
-
-// The cloth in the reduced frame (its colour and region into `table`): the region of the frame's
-// dominant colour; where that region surrounds the table (SurroundsTheTable: the floor around a
-// table seen from a low camera), the region of the dominant colour of the rest of the frame, if
-// it is a cloth. "" or the reason there is none.
-std::string FindCloth(const cv::Mat& small, TableRegion* table) {
-  table->cloth_colour = DominantClothColour(small);
-  if (IsWhite(table->cloth_colour)) {
-    return "no table: what fills the frame's middle is white, not a cloth";
-  }
-  const double least = kMinClothFraction * static_cast<double>(small.total());
-  const cv::Mat first_like = ClothLike(small, table->cloth_colour);
-  table->cloth = LargestCentralRegion(first_like);
-  if (SurroundsTheTable(table->cloth, kMinClothFraction)) {
-    const cv::Vec3f inner_colour = DominantClothColour(small, first_like);
-    const cv::Mat inner = LargestCentralRegion(ClothLike(small, inner_colour));
-    if (!IsWhite(inner_colour) && cv::countNonZero(inner) >= least &&
-        !SurroundsTheTable(inner, kMinClothFraction)) {
-      table->cloth_colour = inner_colour;
-      table->cloth = inner;
-    }
-  }
-  if (cv::countNonZero(table->cloth) < least) {
-    return "no table: no evenly coloured cloth covers " +
-           std::to_string(static_cast<int>(100 * kMinClothFraction)) + " % of the frame";
-  }
-  return "";
-}
-
 }  // namespace
 
 TableSearch FindTable(const cv::Mat& bgr) {
@@ -382,8 +311,19 @@ TableSearch FindTable(const cv::Mat& bgr) {
   cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
   TableRegion table;
   table.mask_scale = scale;
-  const std::string no_cloth = FindCloth(small, &table);
-  if (!no_cloth.empty()) return {std::nullopt, no_cloth, std::nullopt};
+  table.cloth_colour = DominantClothColour(small);
+  const cv::Vec3f cloth_lab = LabOfBgr(table.cloth_colour);
+  if (cloth_lab[0] > kMaxClothLightness && std::hypot(cloth_lab[1], cloth_lab[2]) < kMinClothChroma) {
+    return {std::nullopt, "no table: what fills the frame's middle is white, not a cloth",
+            std::nullopt};
+  }
+  table.cloth = LargestCentralRegion(ClothLike(small, table.cloth_colour));
+  if (cv::countNonZero(table.cloth) < kMinClothFraction * small.total()) {
+    return {std::nullopt, "no table: no evenly coloured cloth covers " +
+                              std::to_string(static_cast<int>(100 * kMinClothFraction)) +
+                              " % of the frame",
+            std::nullopt};
+  }
   table.surface = FillHoles(table.cloth);
   // Past here the cloth is found: a frame without its table still has it (TableSearch::cloth).
   const TableRegion cloth = table;
@@ -422,7 +362,7 @@ TableSearch FindTable(const cv::Mat& bgr) {
   if (!Intersections(lines, &table.cloth_corners)) {
     return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet", cloth};
   }
-  bool long_first = LongSideFirst(table.cloth_corners, bgr.size());
+  const bool long_first = LongSideFirst(table.cloth_corners, bgr.size());
   const std::array<Eigen::Vector3d, 4> rough_lines = lines;
   // A stretch of a side's outline other than its best supported is the cloth's side only when the
   // cushion's nose found inside it runs along most of the side too (kOtherStretchNose): the
@@ -462,11 +402,6 @@ TableSearch FindTable(const cv::Mat& bgr) {
   }
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet", cloth};
-  }
-  table.unseen_side = SideAlongFrameEdge(table.cloth_corners, bgr.size(), kFrameEdgePx / scale);
-  if (table.unseen_side >= 0 && DepthRatio(table.corners) <= kOverheadDepthRatio) {
-    PlaceUnseenSide(table.unseen_side, &table.corners);
-    long_first = LongSideFirst(table.corners, bgr.size());
   }
   table.image_from_table = ImageFromTable(table.corners, long_first);
   const Eigen::Vector3d inverse_depth = table.image_from_table.inverse().row(2).transpose();

@@ -87,10 +87,6 @@ struct TableRegion {
   TableOrigin origin = TableOrigin::kFound;
   // The largest over the smallest depth of the four corners.
   double depth_ratio = 1.0;
-  // The side (corners k to k + 1) along an edge of the frame, the table going on beyond it: -1
-  // when the whole table is in view. In an overhead view its corners are then placed on the
-  // neighbouring sides by the table's proportions.
-  int unseen_side = -1;
   // The cloth [255 where cloth] and the playing surface (the cloth with its holes filled) at
   // `mask_scale` of the full resolution.
   cv::Mat cloth, surface;

@@ -53,8 +53,6 @@ cv::Mat Render(const camera::CameraModel& camera, const cv::Vec3b& cloth) {
 }
 
 constexpr double kSurfaceTolerancePx = 4.0;
-// bench-detect's criterion on the real frames: within 2 px per side.
-constexpr double kSideTolerancePx = 2.0;
 
 // The table's corners on the cloth (z = 0) and at the cushions' nose (the top of their face).
 std::array<Eigen::Vector3d, 4> TableCorners(double z) {
@@ -170,55 +168,6 @@ TEST(TableFinder, AnArmOverACornerLeavesTheSidesWhereTheyAre) {
   }
 }
 
-// A third of the table out of the frame (an overhead camera moved along the table): the table is
-// found, the side at the frame's edge named unseen and placed beyond it, and each side's points in
-// the frame (at a quarter, half and three quarters of it) within 2 px of a side found.
-TEST(TableFinder, AThirdOfTheTableOutOfTheFrameLeavesTheSidesInView) {
-  const physics::TableParameters& t = Pool().table;
-  camera::CameraModel camera = camera::CameraModel::Overhead(t, 1280, 720);
-  // Moved along the table by 0.4 of its length: 0.36 of it leaves the frame on the left (the table
-  // spans 0.92 of the frame's width).
-  camera.translation = -camera.rotation * (camera.Centre() + Eigen::Vector3d(0.4 * t.length, 0, 0));
-  const TableSearch search = FindTable(Render(camera, {60, 110, 30}));
-  ASSERT_TRUE(search.table) << search.reason;
-  const TableRegion& table = *search.table;
-  ASSERT_GE(table.unseen_side, 0);
-  for (const int end : {table.unseen_side, (table.unseen_side + 1) % 4}) {
-    EXPECT_LT(table.corners[end].x(), 0.0) << "the unseen side lies beyond the frame's left edge";
-  }
-  const cv::Rect frame(0, 0, camera.width, camera.height);
-  for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector3d a = TableCorners(0.0)[i], b = TableCorners(0.0)[(i + 1) % 4];
-    double best = HUGE_VAL;
-    for (int j = 0; j < 4; ++j) {
-      double worst = 0;
-      for (const double s : {0.25, 0.5, 0.75}) {
-        const Eigen::Vector2d p = camera.Project(a + s * (b - a));
-        if (frame.contains(cv::Point(p.x(), p.y()))) {
-          worst = std::max(worst, DistanceFromSide(table, j, p));
-        }
-      }
-      best = std::min(best, worst);
-    }
-    EXPECT_LT(best, kSideTolerancePx) << "side " << i;
-  }
-}
-
-// Seen from 15 degrees above the cloth, the table is a thin band across the frame and the floor
-// around it fills most of the frame's middle: the floor is not taken for the cloth.
-TEST(TableFinder, FromFifteenDegreesTheFloorAroundIsNotTheCloth) {
-  const physics::TableParameters& t = Pool().table;
-  const Eigen::Vector3d middle(0.5 * t.length, 0.5 * t.width, 0.0);
-  const double elevation = 15.0 * M_PI / 180.0, distance = 3.2;
-  const camera::CameraModel camera = camera::CameraModel::LookingAt(
-      middle + distance * Eigen::Vector3d(0, -std::cos(elevation), std::sin(elevation)), middle,
-      1280, 720, 1.0);
-  const TableSearch search = FindTable(Render(camera, {60, 110, 30}));
-  ASSERT_TRUE(search.table) << search.reason;
-  ExpectTheSurface(*search.table, camera, "15 degrees");
-  EXPECT_EQ(search.table->view, TableView::kOblique);
-}
-
 // The largest distance [px] of the ends of each side of `expected` from the line of the same side
 // of `found` (as bench-detect judges a table: within 2 px per side).
 double SideError(const TableRegion& found, const TableRegion& expected) {
@@ -240,6 +189,7 @@ double SideError(const TableRegion& found, const TableRegion& expected) {
 // hide the inner edge (the nose's foot, where the surface ends) along half the side, so that the
 // outer one, seen whole, is taken (6.4 px off; NoseLine's innermost line nearly as well supported,
 // kNoseOfBest, which an old cloth's worn track needs). Left as a known limit (estimator/README.md).
+constexpr double kSideTolerancePx = 2.0;
 TEST(TableFinder, ARowOfBallsAlongACushionOrAnArmAcrossARailLeavesTheSides) {
   const physics::TableParameters& t = Pool().table;
   const double r = Pool().ball.radius;

@@ -30,13 +30,6 @@ constexpr int kRoutesSearched = 3;
 // Position play is tried on this many of a kind's pots, the widest first.
 constexpr std::size_t kPositionRoutes = 2;
 
-// A curve's massé bend runs over a distance that grows as the square of the cue speed: at the
-// first speed it may be spent in the first few decimetres, the path then straight on through the
-// ball it was to go around. A curve whose first aim meets another ball is aimed again at this
-// speed, its bend spread over a table's length (pot_scene.json's curve around ball 2, a
-// metre away: docs/planning.md).
-constexpr double kCurveSpreadSpeed = 2.4;  // [m/s]
-
 Refusal TooThin(double cut, double limit) {
   return Refusal{PotStatus::kTooThin, "the cut is " + Degrees(cut) + ", beyond " + Degrees(limit)};
 }
@@ -90,27 +83,20 @@ std::variant<PotPlan, Refusal> PlanRoute(SearchContext& search, const Route& rou
   StrokeShape shape{kFirstCueSpeed, route.tip_side, 0.0, route.elevation};
   double first_heading = FirstHeading(search, route, shape, ghost);
   // 1b. The cue's elevation: the least that clears what lies behind the cue ball, and a margin;
-  // the aim, the pace and the truth are found at it, each pace within what keeps the ball on the
-  // cloth at that elevation (TopCueSpeed).
+  // the aim, the pace and the truth are found at it.
   const std::variant<double, Refusal> elevation = NeededElevation(search, shape, first_heading);
   if (const Refusal* blocked = std::get_if<Refusal>(&elevation)) return *blocked;
   shape.elevation = std::get<double>(elevation);
-  const double top_speed = TopCueSpeed(search, shape, first_heading);
-  std::optional<Aimed> aimed;
-  // 2. The aim along K's line; a curve's again faster, its bend spread, where the first meets a
-  // ball and the hop leaves a faster pace.
-  double tried = 0.0;
-  for (double speed : {kFirstCueSpeed, kCurveSpreadSpeed}) {
-    shape.speed = std::min(speed, top_speed);
-    if (shape.speed == tried) break;
-    tried = shape.speed;
+  // Its first pace within what keeps the ball on the cloth at that elevation (TopCueSpeed).
+  shape.speed = std::min(shape.speed, TopCueSpeed(search, shape, first_heading));
+  if (shape.elevation != route.elevation || shape.speed != kFirstCueSpeed) {
     first_heading = FirstHeading(search, route, shape, ghost);
-    if (route.kind == ShotKind::kCurve) {
-      if (std::optional<Refusal> thin = CurveTooThin(search, shape, first_heading, ghost, departure)) return *thin;
-    }
-    aimed = AimAt(search, shape, first_heading, Angle(departure), false, 0.0);
-    if (aimed || route.kind != ShotKind::kCurve) break;
   }
+  if (route.kind == ShotKind::kCurve) {
+    if (std::optional<Refusal> thin = CurveTooThin(search, shape, first_heading, ghost, departure)) return *thin;
+  }
+  // 2. The aim along K's line.
+  std::optional<Aimed> aimed = AimAt(search, shape, first_heading, Angle(departure), false, 0.0);
   if (!aimed) return Refusal{PotStatus::kBlocked, BlockedReason(search, shape, first_heading)};
   const double cut_angle = CutAngle(Unit(Angle(aimed->contact.cue_before.segment<2>(physics::kVx))),
                                     Unit(aimed->contact.departure));

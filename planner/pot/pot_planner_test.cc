@@ -118,18 +118,6 @@ TEST_F(PotPlannerTest, ACurveAroundABlockerIsPlayedOnlyAtAPaceThatKeepsTheBallDo
   }
 }
 
-// Ball 2 squarely across the cue ball's line, half a metre on, the ghost ball a metre away
-// (docs/pictures/pot_scene.json): at the first cue speed every curve's bend is spent before ball
-// 2 and its aim meets it; aimed again with the bend spread, the curve goes around it and pots.
-TEST_F(PotPlannerTest, ACurveAroundABallSquarelyAcrossItsLineSpreadsItsBend) {
-  const std::vector<SceneBall> balls = {table::AtRest(0, 0.55, 0.45), table::AtRest(1, 1.55, 0.8),
-                                        table::AtRest(2, 1.05, 0.64), table::AtRest(3, 2.1, 0.35),
-                                        table::AtRest(4, 0.9, 1.05)};
-  const PotPlan plan = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kCurve, {}});
-  ExpectLegalPot(balls, plan);
-  EXPECT_GT(plan.stroke.elevation, 0.0);
-}
-
 TEST_F(PotPlannerTest, BadRequestsAreRefusedWithAReason) {
   const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9)};
   const auto refused = [&](const PotRequest& r, PotStatus status) {

@@ -88,9 +88,7 @@ nlohmann::json TableJson(const estimator::BallDetector& detector, const cv::Mat&
                       {"from", estimator::TableOriginName(table.origin)},
                       {"view", estimator::TableViewName(table.view)},
                       {"depth_ratio", table.depth_ratio},
-                      {"side_fit_rms_px", table.side_fit_rms_px},
-                      {"unseen_side", table.unseen_side >= 0 ? nlohmann::json(table.unseen_side)
-                                                             : nlohmann::json(nullptr)}};
+                      {"side_fit_rms_px", table.side_fit_rms_px}};
   if (camera) {
     const estimator::TableSearch found = estimator::FindTable(image);
     j["calibration_disagreement_px"] =
@@ -179,13 +177,7 @@ void PrintDetections(const nlohmann::json& j, const std::string& image) {
   } else {
     std::cerr << "  table   " << table["view"].get<std::string>() << " view ("
               << table["from"].get<std::string>() << "), its sides fitted to "
-              << Fixed(table["side_fit_rms_px"].get<double>(), 1) << " px RMS"
-              << (table["unseen_side"].is_null()
-                      ? std::string()
-                      : ", side " + std::to_string(table["unseen_side"].get<int>()) +
-                            " (corners " + std::to_string(table["unseen_side"].get<int>()) +
-                            " to the next) out of the frame")
-              << "\n";
+              << Fixed(table["side_fit_rms_px"].get<double>(), 1) << " px RMS\n";
   }
   for (const nlohmann::json& b : j["balls"]) {
     std::cerr << "  " << b["class"].get<std::string>() << " ("
