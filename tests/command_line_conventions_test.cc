@@ -279,6 +279,7 @@ TEST(Binaries, RefusalsExitThree) {
   const std::string blank = ::testing::TempDir() + "/blank_frame.pgm";
   std::ofstream(blank) << "P5 64 48 255\n" << std::string(64 * 48, '\x80');
   const std::string camera = ::testing::TempDir() + "/blank_camera.json";
+  fs::remove(camera);  // an earlier run's, in the shared temporary directory
   ExpectOneLine(kBilliard + " calibrate " + blank + " --out " + camera, 3);
   EXPECT_FALSE(fs::exists(camera));
 }

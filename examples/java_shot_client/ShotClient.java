@@ -85,6 +85,7 @@ public class ShotClient {
     // encoder cannot write.
     request.mode = shot_request_t.MODE_TO_POINT;
     request.pocket = "";
+    request.player = "";  // empty: the planner node's own player (a match names one)
 
     final cue_command_t[] answer = {null};
     lcm.subscribe("CUE_COMMAND", new LCMSubscriber() {
