@@ -47,9 +47,10 @@ void AddPlannerNodeOptions(CLI::App& app, PlannerNodeCommandLine* line) {
                  "every pot is planned at the elevation its cue needs, refused cue_blocked where none clears")
       ->capture_default_str();
   app.add_flag("--no-refine", line->no_refine, "Plan with the closed-form inverse alone");
-  app.add_option("--player", options.player, "Who chooses a MODE_CHOOSE shot: ours | no-lookahead | easiest-looking")
+  app.add_option("--player", options.player,
+                 "Who chooses a MODE_CHOOSE shot: " + players::KnownPlayerList())
       ->capture_default_str()
-      ->check(CLI::IsMember(players::PlayerNames()));
+      ->check(CLI::IsMember(players::KnownPlayerNames()));
   app.add_option("--identify-every", options.identify_every,
                  "Identify the table online: every N shots, fit --identify to the node's own "
                  "tracked shots and plan with them (0: never)")

@@ -56,7 +56,7 @@ struct PlannerNodeOptions {
   // its rules and pot options are the request's and `pot`.
   choice::ChoiceOptions choice;
   int choice_threads = batch::DefaultThreadCount();
-  // MODE_CHOOSE: who decides (planner/players/players.h): ours, no-lookahead, easiest-looking.
+  // MODE_CHOOSE: who decides, one of players::KnownPlayerNames (planner/players/players.h).
   std::string player = "ours";
 
   // Pots are planned on what the camera saw: touching balls measured a fraction of a millimetre

@@ -20,7 +20,15 @@ inline constexpr char kOursNoSafety[] = "ours-no-safety";
 // "ours" with the one-level lookahead (the next shot in closed form): the two levels' baseline.
 inline constexpr char kOursOneLevel[] = "ours-one-level";
 
-// The player named `name` (one of PlayerNames, kOursNoSafety or kOursOneLevel); throws std::invalid_argument naming it and the known ones otherwise.
+// Every name MakePlayer knows: PlayerNames, then kOursNoSafety and kOursOneLevel (what a
+// command's --player or --players accepts).
+std::vector<std::string> KnownPlayerNames();
+
+// KnownPlayerNames joined by ", " (a command's help, an error naming the known ones).
+std::string KnownPlayerList();
+
+// The player named `name` (one of KnownPlayerNames); throws std::invalid_argument naming it and
+// the known ones otherwise.
 std::unique_ptr<Player> MakePlayer(const std::string& name);
 
 }  // namespace billiard::players

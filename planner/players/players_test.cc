@@ -15,6 +15,12 @@ TEST(PlayersTest, EachNameMakesThatPlayer) {
   EXPECT_STREQ(MakePlayer(kOursOneLevel)->Name(), "ours-one-level");
 }
 
+TEST(PlayersTest, EveryKnownNameMakesThatPlayer) {
+  const std::vector<std::string> names = KnownPlayerNames();
+  EXPECT_EQ(names.size(), PlayerNames().size() + 2);
+  for (const std::string& name : names) EXPECT_EQ(MakePlayer(name)->Name(), name);
+}
+
 TEST(PlayersTest, AnUnknownNameIsRefusedWithTheKnownOnes) {
   try {
     MakePlayer("random");

@@ -119,7 +119,7 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
       ->check(CLI::IsMember({"nine-ball", "eight-ball", "drill"}));
   app.add_option("--players", line->players,
                  "--game nine-ball or eight-ball: a match between two players, A,B (ours, "
-                 "ours-no-safety, no-lookahead, easiest-looking), the planner answering for "
+                 "ours-no-safety, ours-one-level, no-lookahead, easiest-looking), the planner answering for "
                  "both; A breaks the first rack (eight-ball without it: ours,ours)")
       ->type_name("A,B");
   app.add_option("--racks", options.racks, "--game: racks played, seeds --seed, --seed + 1, ...")

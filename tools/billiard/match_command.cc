@@ -104,9 +104,7 @@ void AddMatchCommand(CLI::App& app) {
       "judged by the rules: racks won (Wilson 95 % interval), pots, fouls, decision times");
   cmd->add_option("--game", args->game, "nine-ball | eight-ball")->required();
   cmd->add_option("--players", args->players,
-                  "Two players, A,B (ours, ours-no-safety, ours-one-level, no-lookahead, "
-                  "easiest-looking); the "
-                  "first breaks the first rack")
+                  "Two players, A,B (" + players::KnownPlayerList() + "); the first breaks the first rack")
       ->required();
   cmd->add_option("--racks", args->racks, "Racks to play")->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_option("--noise", args->noise,
