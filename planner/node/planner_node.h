@@ -41,9 +41,10 @@
 // Until then the oldest request is held, unanswered, and the others wait behind it: a loop whose
 // estimator lags behind its frames (a busy machine) asks while the states still show the last
 // shot's balls rolling, and the states at rest come soon after. A request held max_rest_wait (in
-// the states' time past its own, or on the node's clock since it arrived, when the states stop)
-// is refused STATUS_NOT_AT_REST with the ball still moving: the one answer that depends on the
-// clock, and only when the states stop coming.
+// the states' time past its own, or on the node's clock once no state has come for that long
+// since it arrived: the states stopped) is refused STATUS_NOT_AT_REST with the ball still
+// moving: the one answer that depends on the clock, and only when the states stop coming (a
+// loop slower than real time waits in the states' time, so that its log replays bit for bit).
 //
 // Requests wait in a bounded queue and are planned one at a time by Work(), so a burst of them
 // costs bounded memory and each gets an answer: planned, or refused busy at once. A request
@@ -159,7 +160,7 @@ class PlannerNode {
   // than rest_states states); empty when it is, or when no state has come.
   std::string TableNotAtRest() const;
   // Whether `w`, held for the table, has waited max_rest_wait: in the table states' time past
-  // its request's, or on the node's clock since it arrived.
+  // its request's, or on the node's clock with no state coming since it arrived.
   bool WaitedForRestTooLong(const Waiting& w) const;
   // Answers the oldest waiting request: planned, or refused not_at_rest for `not_at_rest`.
   void AnswerOldest(const std::string& not_at_rest);
@@ -197,6 +198,7 @@ class PlannerNode {
   nodes::NodeHealth health_;
   std::unordered_map<int32_t, ball_state_t> balls_;
   std::optional<table_state_t> latest_table_;
+  nodes::NodeHealth::Clock::time_point latest_table_arrival_;  // on the node's clock
   // Table states in a row with every ball at rest (counted up to rest_states, which a table never
   // seen moving starts at), and the latest moving ball seen, for the reason.
   int states_at_rest_;

@@ -8,9 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "lcmtypes/billiard/table_state_t.hpp"
@@ -118,6 +120,51 @@ TEST_F(PlannerNodeTest, ATableThatNeverRestsIsRefusedNotAtRestAfterTheWait) {
   shot_request_t later = Request(2, 1, 1.5, 0.5);
   later.utime = q.utime + micros(wait) + 3;
   AskOk(later);
+}
+
+// A loop slower than real time (a busy machine): the states keep coming, their time advancing a
+// tenth of the clock's. The request is held in the states' time, as a replay of the loop's log
+// would hold it, however long the clock runs; once the states stop, the clock refuses it.
+TEST(PlannerNodeRestWait, ALoopSlowerThanRealTimeWaitsInTheStatesTimeUntilTheStatesStop) {
+  lcm::LCM lcm("memq://");
+  std::vector<cue_command_t> commands;
+  struct Collect {
+    std::vector<cue_command_t>* commands;
+    void On(const lcm::ReceiveBuffer*, const std::string&, const cue_command_t* c) {
+      commands->push_back(*c);
+    }
+  } collect{&commands};
+  lcm.subscribe(messages::kCueCommandChannel, &Collect::On, &collect)->setQueueCapacity(0);
+  PlannerNodeOptions options;
+  options.max_rest_wait = 0.5;  // [s], so that the test's clock runs past it in a second
+  const physics::ModelParameters params = params::LoadParameters("paper");
+  PlannerNode node(lcm, params, options, [](const std::string&) {});
+  const auto run = [&] { nodes::HandleUntilIdle(lcm, [&] { return node.Work(); }); };
+  const auto publish_rolling = [&](int64_t utime) {
+    table_state_t state{};
+    state.utime = utime;
+    state.balls = {Ball(1, 0.6, 0.5, 0.3, 0.0)};
+    state.balls[0].utime = utime;
+    state.num_balls = 1;
+    ASSERT_EQ(lcm.publish(messages::kTableStateChannel, &state), 0);
+  };
+  const shot_request_t q = Request(1, 1, 1.0, 0.5);
+  publish_rolling(q.utime);
+  ASSERT_EQ(lcm.publish(messages::kShotRequestChannel, &q), 0);
+  run();
+  constexpr int kStates = 60;
+  constexpr auto kFrame = std::chrono::milliseconds(20);  // 1.2 s of clock, 0.12 s of states
+  for (int n = 1; n <= kStates; ++n) {
+    std::this_thread::sleep_for(kFrame);
+    publish_rolling(q.utime + n * 2'000);
+    run();
+  }
+  EXPECT_TRUE(commands.empty()) << "answered " << messages::CueCommandStatusName(commands[0].status)
+                                << " while the states came: " << commands[0].reason;
+  std::this_thread::sleep_for(std::chrono::duration<double>(options.max_rest_wait));
+  run();
+  ASSERT_EQ(commands.size(), 1u) << "not refused once the states stopped";
+  EXPECT_EQ(Status(commands[0]), cue_command_t::STATUS_NOT_AT_REST) << commands[0].reason;
 }
 
 TEST_F(PlannerNodeTest, ABallStateThatDoesNotDecodeIsNoStateToPlanFrom) {
