@@ -5,8 +5,9 @@
 // With safeties ("ours"): when the best pot's probability is below
 // ChoiceOptions::safety_below, or nothing plans, the best safety weighed against it on the
 // chance of winning the rack (planner/choice/safety.h), and played when that is the higher;
-// not with ball in hand (a placement is chosen for a pot). "ours-no-safety": the same player
-// without safeties, the round-3 chooser a match measures them against (issue 48).
+// not with ball in hand (a placement is chosen for a pot). "ours-no-safety": the round-3
+// chooser a match measures the new player against (issue 48): without safeties and with one
+// level (below).
 //
 // Two levels: the lookahead's next shot planned on the outcomes (planner/choice/second_level.h)
 // and position play aimed where it is best. "ours-one-level": "ours" with the next shot valued

@@ -63,7 +63,8 @@ TEST_F(OursTest, OneLevelValuesTheNextShotInClosedForm) {
 }
 
 // With the pot unlikely (a long cut under the tournaments' noise, a miss leaving the 1 in the
-// open) ours plays safe; ours-no-safety, the same player without safeties, plays the pot.
+// open) ours plays safe; ours-no-safety, round 3's chooser (no safeties, one level), plays the
+// pot as the choice does without the second level.
 TEST_F(OursTest, OursPlaysSafeWhereOursNoSafetyAttempts) {
   const double l = table_.length, w = table_.width;
   const std::vector<table::SceneBall> balls = {
@@ -80,6 +81,7 @@ TEST_F(OursTest, OursPlaysSafeWhereOursNoSafetyAttempts) {
   EXPECT_EQ(safe.stroke(), &safe.safety->stroke);
   const choice::ChoiceResult attempt = MakePlayer(kOursNoSafety)->Decide(turn, options, pool);
   EXPECT_FALSE(attempt.safety);
+  options.second_level = false;
   ExpectSameChoice(attempt, choice::ChooseShot(table_, params_, balls, options, pool));
 }
 

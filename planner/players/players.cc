@@ -25,7 +25,7 @@ std::string KnownPlayerList() {
 
 std::unique_ptr<Player> MakePlayer(const std::string& name) {
   if (name == Ours().Name()) return std::make_unique<Ours>();
-  if (name == kOursNoSafety) return std::make_unique<Ours>(true, false, kOursNoSafety);
+  if (name == kOursNoSafety) return std::make_unique<Ours>(true, false, kOursNoSafety, false);
   if (name == kOursOneLevel) return std::make_unique<Ours>(true, true, kOursOneLevel, false);
   if (name == Ours(false).Name()) return std::make_unique<Ours>(false);
   if (name == EasiestLooking().Name()) return std::make_unique<EasiestLooking>();

@@ -14,8 +14,9 @@ namespace billiard::players {
 // "ours", "no-lookahead", "easiest-looking", in that order: the players, each once.
 std::vector<std::string> PlayerNames();
 
-// "ours" without safeties (issue 48's baseline for them): MakePlayer makes it; PlayerNames
-// lists the three kinds of player.
+// "ours" as round 3 chose, without safeties and with the next shot valued in closed form
+// (issue 48's baseline: the player it asks the new one to beat): MakePlayer makes it;
+// PlayerNames lists the three kinds of player.
 inline constexpr char kOursNoSafety[] = "ours-no-safety";
 // "ours" with the one-level lookahead (the next shot in closed form): the two levels' baseline.
 inline constexpr char kOursOneLevel[] = "ours-one-level";
