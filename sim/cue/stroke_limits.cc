@@ -40,7 +40,12 @@ double HopFreeSpeed(const physics::CueStroke& stroke, const Eigen::Vector2d& pos
                     const physics::ModelParameters& params) {
   const double per_speed_squared = HopPerSpeedSquared(stroke, position, params);
   if (per_speed_squared <= 0.0) return std::numeric_limits<double>::infinity();
-  return std::sqrt(kMaxHop / per_speed_squared);
+  // The square root rounds: stepped down to the last speed whose hop is within the limit, so that
+  // a stroke played at it is one HopReason accepts.
+  physics::CueStroke fastest = stroke;
+  fastest.speed = std::sqrt(kMaxHop / per_speed_squared);
+  while (HopHeight(fastest, position, params) > kMaxHop) fastest.speed = std::nextafter(fastest.speed, 0.0);
+  return fastest.speed;
 }
 
 std::string HopReason(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
