@@ -9,6 +9,9 @@ namespace billiard::cue {
 
 namespace {
 
+// The relative rounding of a hop computed at different headings (a few ulps of the strike).
+constexpr double kHopRounding = 1e-9;
+
 // The hop of a stroke per (m/s)^2 of its cue speed: the strike is linear in it.
 double HopPerSpeedSquared(physics::CueStroke stroke, const Eigen::Vector2d& position,
                           const physics::ModelParameters& params) {
@@ -40,18 +43,15 @@ double HopFreeSpeed(const physics::CueStroke& stroke, const Eigen::Vector2d& pos
                     const physics::ModelParameters& params) {
   const double per_speed_squared = HopPerSpeedSquared(stroke, position, params);
   if (per_speed_squared <= 0.0) return std::numeric_limits<double>::infinity();
-  // The square root rounds: stepped down to the last speed whose hop is within the limit, so that
-  // a stroke played at it is one HopReason accepts.
-  physics::CueStroke fastest = stroke;
-  fastest.speed = std::sqrt(kMaxHop / per_speed_squared);
-  while (HopHeight(fastest, position, params) > kMaxHop) fastest.speed = std::nextafter(fastest.speed, 0.0);
-  return fastest.speed;
+  return std::sqrt(kMaxHop / per_speed_squared);
 }
 
 std::string HopReason(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
                       const physics::ModelParameters& params) {
   const double hop = HopHeight(stroke, position, params);
-  if (hop <= kMaxHop) return "";
+  // A hop beyond the limit by the strike's rounding alone (the fastest stroke found at one heading,
+  // played at another) is within it.
+  if (hop <= kMaxHop * (1.0 + kHopRounding)) return "";
   return "the cue at " + Fixed(stroke.elevation * 180.0 / M_PI, 1) + " deg and " + Fixed(stroke.speed, 2) +
          " m/s would lift the ball off the cloth (a hop of " + Fixed(hop * 1e3, 2) + " mm, beyond the " +
          Fixed(kMaxHop * 1e3, 2) + " mm the strike model's ball on the cloth covers; " +
