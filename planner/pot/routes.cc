@@ -17,10 +17,11 @@ namespace {
 constexpr double kNearRoute = 0.15;
 // Curves: the cue elevations [rad] and side offsets (fraction of the largest) tried, with draw.
 // Low elevations: the hop limit (sim/cue/stroke_limits.h) allows a cue of 0.28 m/s / tan(elevation)
-// along the heading, and the bend a curve gets within it, measured in docs/planning.md ("How much a
-// curve bends"), is largest from 7.5 to 12.5 degrees (1.6-1.7 cm off a 1 m chord with draw, 1 cm
-// without): steeper, the slow cue's slide is spent within a few centimetres; lower, the bend of a
-// fast cue's long slide is small.
+// along the heading, and the bend a curve gets within it (bench/curve_bend.py, docs/planning.md's
+// "How much a curve bends") is largest from 7.5 to 15 degrees: 0.9-1.8 cm off a 1 m chord with
+// draw, 1.1 cm without, 2 cm off 1.5 m at 7.5-10 degrees, 1.1-1.3 cm off 0.5 m at 12.5-15.
+// Steeper, the slow cue's slide is spent within a few centimetres; lower, the bend of a fast cue's
+// long slide is small.
 constexpr double kCurveElevations[] = {7.5 * kDegree, 10.0 * kDegree, 12.5 * kDegree};
 constexpr double kCurveSides[] = {0.7, -0.7};
 // Draw lengthens the slide (the contact point's slip is the ball's speed plus its backspin's), over
