@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "planner/pot/cue_elevation.h"
 #include "planner/pot/drop_window.h"
 #include "planner/pot/pot_geometry.h"
 #include "planner/pot/testing/pot_fixture.h"
@@ -90,7 +91,9 @@ TEST_F(LonePathTest, ACurvesHeadingBendsTheCueBallThroughTheGhostBall) {
   const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.7), table::AtRest(3, 1.6, 0.7), table::AtRest(6, 1.1, 0.735)};
   SearchContext search = Search(balls, 3, "upper_right");
   const Route route = Routes(search, ShotKind::kCurve).front().route;
-  const StrokeShape shape{1.5, route.tip_side, 0.0, route.elevation};
+  // At its pace, the fastest that keeps the ball on the cloth (pace.h).
+  StrokeShape shape{0.0, route.tip_side, route.tip_height, route.elevation};
+  shape.speed = TopCueSpeed(search, shape, Angle(route.cue_aim - search.cue_position()));
   const double heading = FirstHeading(search, route, shape, route.cue_aim);
   const double straight = Angle(route.cue_aim - search.cue_position());
   EXPECT_LT(ClosestApproach(shape.At(heading), search.cue_position(), route.cue_aim, false), 2e-3);

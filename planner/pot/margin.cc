@@ -37,6 +37,8 @@ Bracket Edge(const std::function<bool(double)>& pots, double x0, double guess, d
   const double floor = std::ldexp(std::abs(out - in), -how.halvings);
   while (std::abs(out - in) > std::max(how.resolution * std::abs(in - x0), floor)) {
     const double mid = 0.5 * (in + out);
+    // Neighbouring numbers (an edge at x0 itself, a limit an ulp away) have no midpoint between.
+    if (mid == in || mid == out) break;
     (pots(mid) ? in : out) = mid;
   }
   return {in, out};

@@ -45,7 +45,8 @@ inline constexpr double kSmallestEdge = 1e-4;
 // The last x from x0 toward `guess` (a predicted edge), at most `limit`, for which `pots` holds
 // and the first beyond it that misses (both `limit` where it still pots there): the guess's own
 // bracket (`how.bracket` of it either side) where the edge lies in it, else found by
-// bisection until the two are within `how.resolution` of the inside's distance from x0.
+// bisection until the two are within `how.resolution` of the inside's distance from x0 (or are
+// neighbouring numbers).
 struct Bracket {
   double in, out;
 };

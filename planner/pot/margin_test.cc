@@ -80,6 +80,21 @@ TEST(Margin, AWindowOpenToTheLimitEndsThere) {
   EXPECT_EQ(b.out, 0.5 * M_PI);
 }
 
+// A stroke played at its top speed, the top found again at the aimed heading one ulp below it (the
+// strike's rounding), and the search saying neither pots: the edge lies between neighbouring
+// numbers, where bisection has no midpoint (it looped for ever in bench-game's second level, for
+// the one of two neighbouring speeds whose midpoint rounds outward).
+TEST(Margin, AnEdgeBetweenNeighbouringNumbersEnds) {
+  const double played = 1.2718199224554789;
+  for (double speed : {played, std::nextafter(played, 2.0)}) {
+    const double top = std::nextafter(speed, 0.0);
+    const auto pots = [&](double x) { return x > speed; };
+    const Bracket b = Edge(pots, speed, top, top, kSpeedEdge);
+    EXPECT_EQ(b.in, speed);
+    EXPECT_LE(std::abs(b.out - speed), speed - top);
+  }
+}
+
 class MarginTest : public testing::PotFixture {};
 
 // The margin is what the simulation says: turned to 0.9 of it either way the stroke still pots,

@@ -23,6 +23,15 @@ bool Reaim(SearchContext& search, const Route& route, const Eigen::Vector2d& gho
   return true;
 }
 
+// K does not reach the pocket at `top`, the fastest stroke there is.
+Refusal NotReached(const SearchContext& search, double top) {
+  return Refusal{PotStatus::kNoStroke, "ball " + std::to_string(search.object_id()) + " does not reach " +
+                                           search.pocket().name + " at " + MetresPerSecond(top) +
+                                           ", the fastest stroke " +
+                                           (top < search.params().cue.max_speed ? "that keeps the ball on the cloth"
+                                                                                : "of the cue")};
+}
+
 }  // namespace
 
 std::optional<Refusal> Pace(SearchContext& search, const Route& route, const Eigen::Vector2d& ghost,
@@ -31,6 +40,14 @@ std::optional<Refusal> Pace(SearchContext& search, const Route& route, const Eig
   PaceFit& fit = search.pace_fit();
   // The cue's top speed, or the fastest that keeps an elevated cue's ball on the cloth.
   const double top = TopCueSpeed(search, *shape, aimed->heading);
+  // A curve is played at the top pace (PlanRoute starts it there): its bend grows with the pace
+  // (the slide that bends it lasts in proportion), and within the hop limit it is small at best.
+  if (route.kind == ShotKind::kCurve) {
+    const Played played = search.Play(shape->At(aimed->heading), false, false);
+    if (!played.arrival_speed) return NotReached(search, shape->speed);
+    fit.arrival = *played.arrival_speed;
+    return std::nullopt;
+  }
   double v_prev = 0.0, a2_prev = 0.0;
   bool have_prev = false;
   for (int i = 0; i < 8; ++i) {
@@ -41,13 +58,7 @@ std::optional<Refusal> Pace(SearchContext& search, const Route& route, const Eig
     double next;
     if (!played.arrival_speed && !have_prev) {
       next = std::min(top, shape->speed * 1.6);
-      if (shape->speed >= top) {
-        return Refusal{PotStatus::kNoStroke, "ball " + std::to_string(search.object_id()) +
-                                                 " does not reach " + search.pocket().name +
-                                                 " at " + MetresPerSecond(top) + ", the fastest stroke " +
-                                                 (top < search.params().cue.max_speed ? "that keeps the ball on the cloth"
-                                                                                      : "of the cue")};
-      }
+      if (shape->speed >= top) return NotReached(search, top);
     } else if (!have_prev || !played.arrival_speed) {
       next = std::min(top, shape->speed * (played.arrival_speed ? 0.8 : 1.3));
     } else {

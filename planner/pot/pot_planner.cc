@@ -80,15 +80,17 @@ std::variant<PotPlan, Refusal> PlanRoute(SearchContext& search, const Route& rou
   if (route.kind != ShotKind::kCurve && CutAngle(approach, departure) > max_cut) {
     return TooThin(CutAngle(approach, departure), max_cut);
   }
-  StrokeShape shape{kFirstCueSpeed, route.tip_side, 0.0, route.elevation};
+  StrokeShape shape{kFirstCueSpeed, route.tip_side, route.tip_height, route.elevation};
   double first_heading = FirstHeading(search, route, shape, ghost);
   // 1b. The cue's elevation: the least that clears what lies behind the cue ball, and a margin;
   // the aim, the pace and the truth are found at it.
   const std::variant<double, Refusal> elevation = NeededElevation(search, shape, first_heading);
   if (const Refusal* blocked = std::get_if<Refusal>(&elevation)) return *blocked;
   shape.elevation = std::get<double>(elevation);
-  // Its first pace within what keeps the ball on the cloth at that elevation (TopCueSpeed).
-  shape.speed = std::min(shape.speed, TopCueSpeed(search, shape, first_heading));
+  // Its first pace within what keeps the ball on the cloth at that elevation (TopCueSpeed); a
+  // curve's at it, where its bend is largest (pace.h).
+  const double top = TopCueSpeed(search, shape, first_heading);
+  shape.speed = route.kind == ShotKind::kCurve ? top : std::min(shape.speed, top);
   if (shape.elevation != route.elevation || shape.speed != kFirstCueSpeed) {
     first_heading = FirstHeading(search, route, shape, ghost);
   }

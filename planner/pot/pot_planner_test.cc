@@ -7,7 +7,6 @@
 
 #include "planner/pot/testing/pot_fixture.h"
 #include "planner/pot/testing/pot_layouts.h"
-#include "sim/cue/stroke_limits.h"
 
 namespace billiard::pot {
 namespace {
@@ -97,24 +96,6 @@ TEST_F(PotPlannerTest, BanksAndKicksPotWhenTheirLaunchIsSimulated) {
              e.cushion == plan.rail;
     });
     EXPECT_GE(rail_events, 1) << "the route's rail is met";
-  }
-}
-
-// A curve is played at 25 degrees or more (routes.cc), where only a slow cue keeps the ball
-// within cue::kMaxHop of the cloth (pot::TopCueSpeed, about 0.5 m/s): too slow to bend the cue
-// ball around a blocker halfway along a metre. The curve is refused, not played as if the ball
-// stayed on the cloth at the pace that would bend it.
-TEST_F(PotPlannerTest, ACurveAroundABlockerIsPlayedOnlyAtAPaceThatKeepsTheBallDown) {
-  // Ball 6 stands halfway on the cue ball's line to the ghost ball, 3.5 cm off it.
-  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.7), table::AtRest(3, 1.6, 0.7), table::AtRest(6, 1.1, 0.735)};
-  const PotPlan direct = PlanPot(table_, params_, balls, {3, "upper_right", ShotKind::kDirect, {}});
-  EXPECT_EQ(direct.status, PotStatus::kBlocked) << direct.reason;
-  const PotPlan plan = PlanPot(table_, params_, balls, {3, "upper_right", ShotKind::kCurve, {}});
-  if (plan.status == PotStatus::kOk) {
-    ExpectLegalPot(balls, plan);
-    EXPECT_LE(cue::HopHeight(plan.stroke, {0.6, 0.7}, params_), cue::kMaxHop * (1 + 1e-9));
-  } else {
-    EXPECT_NE(plan.reason.find("curve"), std::string::npos) << plan.reason;
   }
 }
 

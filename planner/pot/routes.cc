@@ -15,9 +15,19 @@ namespace {
 // A pot's search simulates the balls within this distance of its routes' lines, beyond contact
 // [m]: the drop window is a few degrees wide, 5 cm at a metre.
 constexpr double kNearRoute = 0.15;
-// Curves: the cue elevations [rad] and side offsets (fraction of the largest) tried.
-constexpr double kCurveElevations[] = {25.0 * kDegree, 45.0 * kDegree, 60.0 * kDegree};
+// Curves: the cue elevations [rad] and side offsets (fraction of the largest) tried, with draw.
+// Low elevations: the hop limit (sim/cue/stroke_limits.h) allows a cue of 0.28 m/s / tan(elevation)
+// along the heading, and the bend a curve gets within it (bench/curve_bend.py, docs/planning.md's
+// "How much a curve bends") is largest from 7.5 to 15 degrees: 0.9-1.8 cm off a 1 m chord with
+// draw, 1.1 cm without, 2 cm off 1.5 m at 7.5-10 degrees, 1.1-1.3 cm off 0.5 m at 12.5-15.
+// Steeper, the slow cue's slide is spent within a few centimetres; lower, the bend of a fast cue's
+// long slide is small.
+constexpr double kCurveElevations[] = {7.5 * kDegree, 10.0 * kDegree, 12.5 * kDegree};
 constexpr double kCurveSides[] = {0.7, -0.7};
+// Draw lengthens the slide (the contact point's slip is the ball's speed plus its backspin's), over
+// which the side spin about the travel bends the path: 0.7 of the largest offset below centre,
+// with the side's 0.7 within the largest offset (0.99 of it).
+constexpr double kCurveDraw = -0.7;
 
 std::string BlockedWords(const std::string& what, const std::vector<int>& ids) {
   std::ostringstream s;
@@ -105,6 +115,7 @@ std::vector<Candidate> Routes(const SearchContext& search, ShotKind kind) {
           Route route{ShotKind::kCurve, -1, pocket, ghost};
           route.elevation = elevation;
           route.tip_side = side * search.params().cue.max_tip_offset * r;
+          route.tip_height = kCurveDraw * search.params().cue.max_tip_offset * r;
           out.push_back(WithBlockers(search, route, {k, pocket}, {}));
         }
       }

@@ -3,8 +3,9 @@
 // The object ball K's route is its line to the pocket's mouth (direct, kick, curve) or off one
 // rail to the pocket's mirror image in the rail's offset line (bank; pot_geometry.h RailBounce);
 // the cue ball's route is its line to the ghost ball (direct, bank), off one rail to the ghost
-// ball's mirror image (kick), or bent by an elevated cue with side spin (curve: 25, 45 and 60
-// degrees of elevation, 0.7 of the largest side offset either way). Geometry names the balls
+// ball's mirror image (kick), or bent by an elevated cue with side spin and draw (curve: 7.5, 10
+// and 12.5 degrees of elevation, low enough for a pace that bends the path within the hop limit;
+// 0.7 of the largest side offset either way, and 0.7 of it below centre). Geometry names the balls
 // across each line, so that a blocked route is refused without a simulation; a curve bends away
 // from its line, which names none on the cue ball's side.
 //
@@ -27,7 +28,7 @@ struct Route {
   int rail = -1;
   Eigen::Vector2d object_aim = Eigen::Vector2d::Zero();  // where K is sent first
   Eigen::Vector2d cue_aim = Eigen::Vector2d::Zero();     // where the cue ball is sent first
-  double elevation = 0.0, tip_side = 0.0;                // curve
+  double elevation = 0.0, tip_side = 0.0, tip_height = 0.0;  // curve
 };
 
 // A route of a kind for K into P from where the balls are, with the balls geometry says lie

@@ -106,6 +106,7 @@ TEST_F(RoutesTest, CurvesAreTriedAtEachElevationAndSideWhateverIsOnTheCueBallsLi
     EXPECT_TRUE(c.blocked.empty()) << c.blocked;
     EXPECT_GT(c.route.elevation, 0.0);
     EXPECT_NEAR(std::abs(c.route.tip_side), 0.7 * params_.cue.max_tip_offset * params_.ball.radius, 1e-15);
+    EXPECT_NEAR(c.route.tip_height, -0.7 * params_.cue.max_tip_offset * params_.ball.radius, 1e-15);
   }
 }
 

@@ -9,6 +9,9 @@ namespace billiard::cue {
 
 namespace {
 
+// The relative rounding of a hop computed at different headings (a few ulps of the strike).
+constexpr double kHopRounding = 1e-9;
+
 // The hop of a stroke per (m/s)^2 of its cue speed: the strike is linear in it.
 double HopPerSpeedSquared(physics::CueStroke stroke, const Eigen::Vector2d& position,
                           const physics::ModelParameters& params) {
@@ -46,7 +49,9 @@ double HopFreeSpeed(const physics::CueStroke& stroke, const Eigen::Vector2d& pos
 std::string HopReason(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
                       const physics::ModelParameters& params) {
   const double hop = HopHeight(stroke, position, params);
-  if (hop <= kMaxHop) return "";
+  // A hop beyond the limit by the strike's rounding alone (the fastest stroke found at one heading,
+  // played at another) is within it.
+  if (hop <= kMaxHop * (1.0 + kHopRounding)) return "";
   return "the cue at " + Fixed(stroke.elevation * 180.0 / M_PI, 1) + " deg and " + Fixed(stroke.speed, 2) +
          " m/s would lift the ball off the cloth (a hop of " + Fixed(hop * 1e3, 2) + " mm, beyond the " +
          Fixed(kMaxHop * 1e3, 2) + " mm the strike model's ball on the cloth covers; " +

@@ -60,7 +60,8 @@ double HopFreeSpeed(const physics::CueStroke& stroke, const Eigen::Vector2d& pos
                     const physics::ModelParameters& params);
 
 // Why `stroke` would hop the ball beyond kMaxHop, in words ("the cue at 25.0 deg would lift the
-// ball off the cloth (a hop of 8.16 mm, ...)"); empty when it stays on the cloth.
+// ball off the cloth (a hop of 8.16 mm, ...)"); empty when it stays on the cloth (within kMaxHop
+// to the strike's rounding, which differs from heading to heading by a few ulps).
 std::string HopReason(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
                       const physics::ModelParameters& params);
 

@@ -33,9 +33,10 @@ TEST(RobotsTest, BuiltInRobotsLoad) {
 }
 
 // The default robot is the one the planner and the table simulator assumed before robots were
-// data: the planner's elevations (its curves up to 60 degrees), the parameter sets' tip offset
-// and speed limits, the table simulator's noise; and its body never binds on a stroke of those
-// (level, the tip within the limit of the centre, on any built-in ball).
+// data: the planner's elevations (up to 60 degrees, where a cue must rise that far), the
+// parameter sets' tip offset and speed limits, the table simulator's noise; and its body never
+// binds on a stroke of those (level, the tip within the limit of the centre, on any built-in
+// ball).
 TEST(RobotsTest, TheGantryIsTodaysRobot) {
   EXPECT_STREQ(kDefaultRobot, "gantry");
   const cue::Robot gantry = LoadRobot(kDefaultRobot);

@@ -41,6 +41,7 @@ class PotFixture : public ::testing::Test {
     Eigen::Vector2d cue_rest = Eigen::Vector2d::Zero();
     double departure = 0.0, normal = 0.0;  // K's direction after the first contact, and the line
                                            // of centres there [rad]
+    Eigen::Vector2d cue_at_contact = Eigen::Vector2d::Zero();  // where the cue ball was then
   };
 
   // The scene with the cue ball launched at v0, w0, simulated as `simulate --scene` does.
@@ -65,6 +66,7 @@ class PotFixture : public ::testing::Test {
         const Eigen::Vector2d line = sim.StateAt(object, e.time).head<2>() - sim.StateAt(cue, e.time).head<2>();
         o.departure = std::atan2(after.y(), after.x());
         o.normal = std::atan2(line.y(), line.x());
+        o.cue_at_contact = sim.StateAt(cue, e.time).head<2>();
         break;
       }
     }
