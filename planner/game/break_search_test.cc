@@ -92,6 +92,7 @@ TEST_F(BreakSearchTest, TheSameWhateverTheThreadCount) {
   BreakSearchOptions options;
   options.samples = 6;
   options.rounds = 1;
+  options.refinements = 1;
   batch::ThreadPool one(1), three(3);
   const BreakSearchResult a = SearchBreak(setting_, Break{}, options, one);
   const BreakSearchResult b = SearchBreak(setting_, Break{}, options, three);
@@ -102,6 +103,29 @@ TEST_F(BreakSearchTest, TheSameWhateverTheThreadCount) {
   EXPECT_EQ(a.rates.kept, b.rates.kept);
   EXPECT_EQ(a.rates.scratches, b.rates.scratches);
   EXPECT_EQ(a.candidates, b.candidates);
+}
+
+// The refinements start from the rounds' best and keep a break only when it breaks better on
+// the same racks, so they never rank below it; each tries at most two values a parameter, all
+// within the robot's ranges.
+TEST_F(BreakSearchTest, RefinementsNeverRankBelowTheRoundsBestAndKeepTheRanges) {
+  const cue::Robot gantry = params::LoadRobot("gantry");
+  BreakSearchOptions options;
+  options.ranges = {gantry.speed.max, gantry.max_tip_offset};
+  options.samples = 12;
+  options.rounds = 1;
+  options.seed = kSearchSeed;
+  batch::ThreadPool pool(2);
+  const BreakSearchResult coarse = SearchBreak(setting_, Break{}, options, pool);
+  options.refinements = 2;
+  const BreakSearchResult refined = SearchBreak(setting_, Break{}, options, pool);
+  constexpr int kParameters = 4;
+  EXPECT_GT(refined.candidates, coarse.candidates);
+  EXPECT_LE(refined.candidates, coarse.candidates + 2 * kParameters * options.refinements);
+  EXPECT_FALSE(BreaksBetter(coarse.rates, refined.rates, options));
+  EXPECT_TRUE(gantry.speed.Contains(refined.best.speed));
+  EXPECT_LE(std::abs(refined.best.tip_height), gantry.max_tip_offset);
+  EXPECT_LE(std::abs(refined.best.aim), 0.5);
 }
 
 // The ranking: a break kept more often wins while both keep the scratch bound; past the bound
