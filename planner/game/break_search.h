@@ -27,7 +27,7 @@
 // others held, the best kept; `rounds` passes), then `refinements` passes of a compass search
 // (Kolda, Lewis and Torczon 2003, "Optimization by direct search", SIAM Review): each
 // parameter tried half the last step either side of the best, so that a break between the
-// coarse grid's points (an eighth of a radius of aim, half a m/s) is reached. Every candidate
+// coarse grid's points (an eighth of a radius of aim apart, 1 m/s of speed) is reached. Every candidate
 // is scored on the same seeded racks and noise draws (common random numbers: candidates differ
 // by their strokes, not their luck).
 // CueCard, winner of the 2008 Computer Olympiad, credits its win in part to an optimised break
