@@ -53,6 +53,23 @@ TEST(BilliardBenchBreak, AGivenBreakIsMeasuredAsGiven) {
   EXPECT_EQ(soft["legal_and_potted"]["count"], 0);
 }
 
+// --search reports the documented keys; --refinements adds candidates, at most two a parameter
+// a pass.
+TEST(BilliardBenchBreak, RefinementsAddCandidatesToTheSearch) {
+  const std::string search = "--game nine-ball --search --search-samples 4 --rounds 1";
+  const nlohmann::json coarse = Bench(search)["search"];
+  const nlohmann::json refined = Bench(search + " --refinements 1")["search"];
+  for (const char* key : {"candidates", "samples", "seed", "rounds", "refinements", "max_scratch",
+                          "scratch_z", "kept", "scratches", "scratch_bound", "feasible"}) {
+    EXPECT_TRUE(refined.contains(key)) << key;
+  }
+  EXPECT_EQ(coarse["refinements"], 0);
+  EXPECT_EQ(refined["refinements"], 1);
+  constexpr int kParameters = 4;
+  EXPECT_GT(refined["candidates"].get<int>(), coarse["candidates"].get<int>());
+  EXPECT_LE(refined["candidates"].get<int>(), coarse["candidates"].get<int>() + 2 * kParameters);
+}
+
 TEST(BilliardBenchBreak, TheSameFiguresWhateverTheThreads) {
   EXPECT_EQ(Bench("--game nine-ball --threads 1"), Bench("--game nine-ball --threads 2"));
 }
@@ -62,7 +79,8 @@ TEST(BilliardBenchBreak, ABadCommandLineExitsTwo) {
        {"bench-break --game snooker", "bench-break",
         "bench-break --game nine-ball --noise /no/such.json",
         "bench-break --game nine-ball --robot nobody", "bench-break --game nine-ball --samples 0",
-        "bench-break --game nine-ball --break=1,2"}) {
+        "bench-break --game nine-ball --break=1,2",
+        "bench-break --game nine-ball --search --refinements -1"}) {
     EXPECT_EQ(Billiard(args).status, 2) << args;
   }
 }

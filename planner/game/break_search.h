@@ -24,8 +24,12 @@
 // nine-ball break scratch 7.5 %.
 //
 // The search: a coordinate search on grids (each parameter in turn swept over its grid with the
-// others held, the best kept; `rounds` passes), every candidate scored on the same seeded racks
-// and noise draws (common random numbers: candidates differ by their strokes, not their luck).
+// others held, the best kept; `rounds` passes), then `refinements` passes of a compass search
+// (Kolda, Lewis and Torczon 2003, "Optimization by direct search", SIAM Review): each
+// parameter tried half the last step either side of the best, so that a break between the
+// coarse grid's points (an eighth of a radius of aim apart, 1 m/s of speed) is reached. Every candidate
+// is scored on the same seeded racks and noise draws (common random numbers: candidates differ
+// by their strokes, not their luck).
 // CueCard, winner of the 2008 Computer Olympiad, credits its win in part to an optimised break
 // (Archibald, Altman and Shoham 2009, "Analysis of a winning computational billiards player",
 // IJCAI); this is a search of that kind, run once per game and noise and kept as data
@@ -111,7 +115,10 @@ std::vector<BreakRates> EvaluateBreaks(const BreakSetting& setting,
 struct BreakSearchOptions {
   BreakRanges ranges;
   int samples = 200;  // racks each candidate is played on
-  int rounds = 2;     // passes over the parameters
+  int rounds = 2;     // passes over the parameters on their coarse grids
+  // Passes after the rounds on finer grids about the best: refinement k tries each parameter
+  // the coarse step / 2^k either side (the compass search's halving step).
+  int refinements = 0;
   std::uint64_t seed = 1;
   double max_scratch = 0.05;  // the scratch rate's bound a feasible break keeps within
   double scratch_z = 1.0;  // the normal quantile of the one-sided bound (84 %)
@@ -134,7 +141,8 @@ struct BreakSearchResult {
 
 // The coordinate search from `start` (the header's): cue_offset over the middle 70 % of the
 // head string, aim within half a radius of full, speed from 4 m/s to the robot's most, tip
-// height over the robot's range, in 5 to 9 steps each.
+// height over the robot's range, in 5 to 9 steps each; then options.refinements passes on
+// finer steps about the best, within the same ranges.
 BreakSearchResult SearchBreak(const BreakSetting& setting, const Break& start,
                               const BreakSearchOptions& options, batch::ThreadPool& pool);
 

@@ -24,10 +24,21 @@ class BreakSearchTest : public ::testing::Test {
       : params_(params::LoadParameters("pool")),
         table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))),
         setting_{table_, params_, rules::Rules::kNineBall, params::LoadNoise("computational-pool"),
-                 model_choice::TableMotion(params_)} {}
+                 model_choice::TableMotion(params_)},
+        gantry_(params::LoadRobot("gantry")) {}
+  // One coarse round on `samples` of the search's racks, within the gantry's ranges.
+  BreakSearchOptions GantrySearch(int samples) const {
+    BreakSearchOptions options;
+    options.ranges = {gantry_.speed.max, gantry_.max_tip_offset};
+    options.samples = samples;
+    options.rounds = 1;
+    options.seed = kSearchSeed;
+    return options;
+  }
   physics::ModelParameters params_;
   table::TableGeometry table_;
   BreakSetting setting_;
+  cue::Robot gantry_;
 };
 
 // The cue ball lands on the head string where the break says, and a full break heads at the
@@ -72,16 +83,10 @@ TEST_F(BreakSearchTest, ASoftRollIsNeverALegalBreak) {
 // A search on a small budget finds a break that keeps the table more often than today's (by 10
 // points) on racks and noise it never saw, and stays within the robot's ranges.
 TEST_F(BreakSearchTest, TheSearchBeatsTodaysBreakOnHeldOutRacks) {
-  const cue::Robot gantry = params::LoadRobot("gantry");
-  BreakSearchOptions options;
-  options.ranges = {gantry.speed.max, gantry.max_tip_offset};
-  options.samples = 24;
-  options.rounds = 1;
-  options.seed = kSearchSeed;
   batch::ThreadPool pool(2);
-  const BreakSearchResult found = SearchBreak(setting_, Break{}, options, pool);
-  EXPECT_LE(found.best.speed, gantry.speed.max);
-  EXPECT_LE(std::abs(found.best.tip_height), gantry.max_tip_offset);
+  const BreakSearchResult found = SearchBreak(setting_, Break{}, GantrySearch(24), pool);
+  EXPECT_LE(found.best.speed, gantry_.speed.max);
+  EXPECT_LE(std::abs(found.best.tip_height), gantry_.max_tip_offset);
   const std::vector<BreakRates> held_out =
       EvaluateBreaks(setting_, {Break{}, found.best}, 160, kHeldOutSeed, pool);
   EXPECT_GT(held_out[1].kept, held_out[0].kept + 16) << held_out[1].kept << " vs " << held_out[0].kept;
@@ -92,6 +97,7 @@ TEST_F(BreakSearchTest, TheSameWhateverTheThreadCount) {
   BreakSearchOptions options;
   options.samples = 6;
   options.rounds = 1;
+  options.refinements = 1;
   batch::ThreadPool one(1), three(3);
   const BreakSearchResult a = SearchBreak(setting_, Break{}, options, one);
   const BreakSearchResult b = SearchBreak(setting_, Break{}, options, three);
@@ -102,6 +108,24 @@ TEST_F(BreakSearchTest, TheSameWhateverTheThreadCount) {
   EXPECT_EQ(a.rates.kept, b.rates.kept);
   EXPECT_EQ(a.rates.scratches, b.rates.scratches);
   EXPECT_EQ(a.candidates, b.candidates);
+}
+
+// The refinements start from the rounds' best and keep a break only when it breaks better on
+// the same racks, so they never rank below it; each tries at most two values a parameter, all
+// within the robot's ranges.
+TEST_F(BreakSearchTest, RefinementsNeverRankBelowTheRoundsBestAndKeepTheRanges) {
+  BreakSearchOptions options = GantrySearch(12);
+  batch::ThreadPool pool(2);
+  const BreakSearchResult coarse = SearchBreak(setting_, Break{}, options, pool);
+  options.refinements = 2;
+  const BreakSearchResult refined = SearchBreak(setting_, Break{}, options, pool);
+  constexpr int kParameters = 4;
+  EXPECT_GT(refined.candidates, coarse.candidates);
+  EXPECT_LE(refined.candidates, coarse.candidates + 2 * kParameters * options.refinements);
+  EXPECT_FALSE(BreaksBetter(coarse.rates, refined.rates, options));
+  EXPECT_TRUE(gantry_.speed.Contains(refined.best.speed));
+  EXPECT_LE(std::abs(refined.best.tip_height), gantry_.max_tip_offset);
+  EXPECT_LE(std::abs(refined.best.aim), 0.5);
 }
 
 // The ranking: a break kept more often wins while both keep the scratch bound; past the bound
@@ -123,11 +147,10 @@ TEST_F(BreakSearchTest, MoreTablesKeptWithinTheScratchBound) {
 
 // The stored breaks are within the gantry's ranges.
 TEST_F(BreakSearchTest, StoredBreaksAreWithinTheRobotsRanges) {
-  const cue::Robot gantry = params::LoadRobot("gantry");
   for (rules::Rules game : {rules::Rules::kNineBall, rules::Rules::kEightBall}) {
     const Break b = StoredBreak(game);
-    EXPECT_TRUE(gantry.speed.Contains(b.speed));
-    EXPECT_LE(std::abs(b.tip_height), gantry.max_tip_offset);
+    EXPECT_TRUE(gantry_.speed.Contains(b.speed));
+    EXPECT_LE(std::abs(b.tip_height), gantry_.max_tip_offset);
     EXPECT_LE(std::abs(b.cue_offset), 0.5 * table_.width - params_.ball.radius);
   }
 }

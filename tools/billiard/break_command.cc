@@ -37,6 +37,7 @@ struct BenchBreakArgs {
   bool search = false;
   int search_samples = 200;
   int rounds = 2;
+  int refinements = 0;
   double max_scratch = 0.05;
   double scratch_z = 1.0;
   bool json = false;
@@ -107,6 +108,7 @@ void Run(const BenchBreakArgs& args) {
     options.ranges = {robot.speed.max, robot.max_tip_offset};
     options.samples = args.search_samples;
     options.rounds = args.rounds;
+    options.refinements = args.refinements;
     options.seed = args.seed + kSearchSeedOffset;
     options.max_scratch = args.max_scratch;
     options.scratch_z = args.scratch_z;
@@ -117,6 +119,7 @@ void Run(const BenchBreakArgs& args) {
                    {"samples", options.samples},
                    {"seed", options.seed},
                    {"rounds", options.rounds},
+                   {"refinements", options.refinements},
                    {"max_scratch", options.max_scratch},
                    {"scratch_z", options.scratch_z},
                    {"kept", found.rates.kept},
@@ -173,6 +176,11 @@ void AddBenchBreakCommand(CLI::App& app) {
   cmd->add_option("--rounds", args->rounds, "The search's passes over the parameters")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--refinements", args->refinements,
+                  "The search: passes after the rounds, each on half the last's steps about the "
+                  "best")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-scratch", args->max_scratch,
                   "The search: the scratch rate's upper bound a break must keep within")
       ->capture_default_str()
