@@ -33,11 +33,13 @@ Bracket Edge(const std::function<bool(double)>& pots, double x0, double guess, d
   } else if (pots(at(1.0 - 4.0 * bracket))) {  // short of the guess: a wider bracket first
     in = at(1.0 - 4.0 * bracket);
   }
-  // To the resolution of the edge, or to 2^-halvings of the bracket where the edge is at x0.
+  // To the resolution of the edge, or to 2^-halvings of the bracket where the edge is at x0;
+  // and no further than adjacent doubles, whose midpoint rounds to one of them: a bracket a few
+  // ulps wide (x0 at its limit, a pace already the cue's top speed) would otherwise be halved
+  // forever, the same stroke played each time (cue_clearance_acceptance_test's seed 4719).
   const double floor = std::ldexp(std::abs(out - in), -how.halvings);
   while (std::abs(out - in) > std::max(how.resolution * std::abs(in - x0), floor)) {
     const double mid = 0.5 * (in + out);
-    // Neighbouring numbers (an edge at x0 itself, a limit an ulp away) have no midpoint between.
     if (mid == in || mid == out) break;
     (pots(mid) ? in : out) = mid;
   }

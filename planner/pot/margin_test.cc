@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "planner/pot/testing/pot_fixture.h"
 
@@ -80,18 +81,25 @@ TEST(Margin, AWindowOpenToTheLimitEndsThere) {
   EXPECT_EQ(b.out, 0.5 * M_PI);
 }
 
-// A stroke played at its top speed, the top found again at the aimed heading one ulp below it (the
-// strike's rounding), and the search saying neither pots: the edge lies between neighbouring
-// numbers, where bisection has no midpoint (it looped for ever in bench-game's second level, for
-// the one of two neighbouring speeds whose midpoint rounds outward).
-TEST(Margin, AnEdgeBetweenNeighbouringNumbersEnds) {
-  const double played = 1.2718199224554789;
-  for (double speed : {played, std::nextafter(played, 2.0)}) {
-    const double top = std::nextafter(speed, 0.0);
-    const auto pots = [&](double x) { return x > speed; };
-    const Bracket b = Edge(pots, speed, top, top, kSpeedEdge);
-    EXPECT_EQ(b.in, speed);
-    EXPECT_LE(std::abs(b.out - speed), speed - top);
+// A bracket as narrow as doubles go: the pace already at the cue's top speed but for one ulp
+// (cue_clearance_acceptance_test's seed 4719: 2.9241940608431896 against 2.92419406084319 m/s),
+// where the midpoint of the two rounds onto one of them. The search ends on the two, each played
+// once, and does not play the same stroke again and again (it did, without end: a guard here
+// fails it after kPlays).
+TEST(Margin, ABracketOfAdjacentDoublesEnds) {
+  constexpr int kPlays = 100;
+  const double x0 = 2.9241940608431896, limit = std::nextafter(x0, 4.0);
+  for (const bool beyond_pots : {false, true}) {
+    SCOPED_TRACE(beyond_pots);
+    int plays = 0;
+    const auto pots = [&](double x) {
+      if (++plays > kPlays) throw std::runtime_error("the same bracket bisected without end");
+      return x <= x0 || beyond_pots;
+    };
+    const Bracket b = Edge(pots, x0, limit, limit, kSpeedEdge);
+    EXPECT_LE(plays, 3);
+    EXPECT_EQ(b.in, beyond_pots ? limit : x0);
+    EXPECT_EQ(b.out, limit);
   }
 }
 
