@@ -23,8 +23,9 @@ namespace billiard::bench {
 namespace {
 
 constexpr double kDegree = M_PI / 180.0;
-// The margin is checked this far inside and outside its edges (fractions of it).
-constexpr double kInner = 0.9, kOuter = 1.1;
+// The margin is checked on issue 47's grid [deg]: every heading this far apart inside it pots
+// legally, and the first past it does not (the margin is the largest the grid allows).
+constexpr double kMarginGridDeg = 0.01;
 // Position targets lie within this distance of the object ball [m].
 constexpr double kTargetReach = 0.5;
 // The cut-angle bins of the throw's table [deg].
@@ -91,6 +92,18 @@ bool PotsTurned(const Table& t, const PotRun& run, const std::vector<table::Scen
   return Simulate(t, balls, LaunchOf(t, balls, s), run.plan.ball, run.plan.pocket).legal;
 }
 
+// The grid's headings at or inside a margin [deg] (a margin of n steps is n * 0.01 degree
+// converted to radians and back: a part in a million more than its floor is still n).
+int StepsInside(double margin_deg) { return static_cast<int>(std::floor(margin_deg / kMarginGridDeg + 1e-6)); }
+
+// Whether the grid's headings 1 .. `steps` toward `side` (+1: left) each pot legally.
+bool GridPots(const Table& t, const PotRun& run, const std::vector<table::SceneBall>& balls, double side, int steps) {
+  for (int j = 1; j <= steps; ++j) {
+    if (!PotsTurned(t, run, balls, side * j * kMarginGridDeg)) return false;
+  }
+  return true;
+}
+
 double ThreadCpuUs() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
@@ -141,10 +154,11 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
       }
       if (margins < options.margin_checks) {
         ++margins;
-        run.inner_left = PotsTurned(t, run, layout.balls, kInner * run.plan.margin_left_deg);
-        run.inner_right = PotsTurned(t, run, layout.balls, -kInner * run.plan.margin_right_deg);
-        run.outer_left = !PotsTurned(t, run, layout.balls, kOuter * run.plan.margin_left_deg);
-        run.outer_right = !PotsTurned(t, run, layout.balls, -kOuter * run.plan.margin_right_deg);
+        const int left = StepsInside(run.plan.margin_left_deg), right = StepsInside(run.plan.margin_right_deg);
+        run.inner_left = GridPots(t, run, layout.balls, 1.0, left);
+        run.inner_right = GridPots(t, run, layout.balls, -1.0, right);
+        run.outer_left = !PotsTurned(t, run, layout.balls, (left + 1) * kMarginGridDeg);
+        run.outer_right = !PotsTurned(t, run, layout.balls, -(right + 1) * kMarginGridDeg);
       }
     }
     result.runs.push_back(run);
@@ -347,9 +361,9 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
   for (const PotRun& run : r.runs) ++statuses[pot::PotStatusName(run.plan.status)];
   for (const auto& [status, n] : statuses) out << "| " << status << " | " << n << " |\n";
   out << "\n## The margin is true\n\n"
-      << "On " << s["margin"]["plans"].get<int>() << " plans, the cue's heading turned to " << kInner
-      << " x the margin on each side pots " << s["margin"]["inner_pot"].get<int>() << " of "
-      << s["margin"]["of"].get<int>() << " times, and turned to " << kOuter << " x misses "
+      << "On " << s["margin"]["plans"].get<int>() << " plans, every heading " << kMarginGridDeg
+      << " deg apart inside the margin pots legally on " << s["margin"]["inner_pot"].get<int>() << " of "
+      << s["margin"]["of"].get<int>() << " sides, and the first past it misses on "
       << s["margin"]["outer_miss"].get<int>() << " of " << s["margin"]["of"].get<int>() << ".\n\n";
   out << "## Throw\n\nThe direct plans aimed through the ghost ball alone (the line of centres along "
       << "the drop window's middle, the same speed and spin: throw not corrected), simulated without "

@@ -5,7 +5,8 @@
 //  - truth: every "ok" plan pots K in P, without a scratch or a foul first contact;
 //  - coverage: of the pots whose straight ghost-ball line is clear, the share planned; what the
 //    banks, kicks and curves make where it is blocked;
-//  - margin: the heading turned to 0.9 and 1.1 times the margin each side, pots and misses;
+//  - margin: every heading on issue 47's grid (0.01 degree) inside the margin each side pots,
+//    and the first past it misses;
 //  - throw: the plans aimed through the ghost ball alone (throw not corrected), by cut angle;
 //  - position: random cue-ball targets within 0.5 m of the object ball, how many are feasible
 //    and how close the simulated rest is to them;
@@ -49,7 +50,8 @@ struct PotRun {
   std::string verify_failure;
   // The plan aimed through the ghost ball alone, simulated: whether it still pots (ok plans).
   std::optional<bool> ghost_pots;
-  // The margin's checks: at 0.9 x (left, right) pots, at 1.1 x misses.
+  // The margin's checks (left, right): every heading of the grid inside it pots, the first past
+  // it misses.
   std::optional<bool> inner_left, inner_right, outer_left, outer_right;
 };
 

@@ -8,6 +8,20 @@
 
 namespace billiard::pot {
 
+double WalkedMargin(const std::function<bool(double)>& pots, double centre, double side, double step,
+                    double limit) {
+  int steps = 0;
+  // Each heading from the grid's own multiple of `step` (not a running sum, which drifts).
+  while ((steps + 1) * step <= limit && pots(centre + side * (steps + 1) * step)) ++steps;
+  return steps * step;
+}
+
+HeadingMargin HeadingMargins(SearchContext& search, const StrokeShape& shape, double centre) {
+  // Played to rest on the truth: a scratch after K drops is no legal pot.
+  const auto pots_heading = [&](double heading) { return search.Play(shape.At(heading), true).outcome.legal; };
+  return {WalkedMargin(pots_heading, centre, 1.0), WalkedMargin(pots_heading, centre, -1.0)};
+}
+
 Bracket Edge(const std::function<bool(double)>& pots, double x0, double guess, double limit,
              const EdgeSearch& how) {
   const double bracket = how.bracket;
@@ -44,39 +58,6 @@ Bracket Edge(const std::function<bool(double)>& pots, double x0, double guess, d
     (pots(mid) ? in : out) = mid;
   }
   return {in, out};
-}
-
-double Margin(const Bracket& b, double centre) {
-  const double in = std::abs(b.in - centre), out = std::abs(b.out - centre);
-  const double margin = in / (1.0 - kMarginTolerance);
-  return (1.0 + kMarginTolerance) * margin >= out - kSameHeading ? margin : in;
-}
-
-double PlayedMargin(const std::function<bool(double)>& pots, const Bracket& b, double centre) {
-  const double margin = Margin(b, centre);
-  const double side = b.out >= centre ? 1.0 : -1.0;
-  const double beyond = centre + side * (1.0 + kMarginTolerance) * margin;
-  if (margin <= 0.0 || std::abs(beyond - b.out) <= kSameHeading || !pots(beyond)) return margin;
-  return std::abs(b.out - centre) / (1.0 + kMarginTolerance);
-}
-
-HeadingMargin HeadingMargins(SearchContext& search, const StrokeShape& shape, const Aimed& centre,
-                             const Drop& window) {
-  // Played to rest: the cue ball may scratch after K drops, as near an edge it may.
-  const auto pots_heading = [&](double heading) {
-    return search.Play(shape.At(heading), true).outcome.legal;
-  };
-  const double slope = std::isfinite(centre.slope) && std::abs(centre.slope) > 1e-9 ? centre.slope : 1.0;
-  const double up = (slope > 0.0 ? window.hi - window.Middle() : window.Middle() - window.lo) / std::abs(slope);
-  const double down = (slope > 0.0 ? window.Middle() - window.lo : window.hi - window.Middle()) / std::abs(slope);
-  const Bracket left = Edge(pots_heading, centre.heading, centre.heading + up, centre.heading + 0.5 * M_PI,
-                            kHeadingEdge);
-  const Bracket right = Edge(pots_heading, centre.heading, centre.heading - down, centre.heading - 0.5 * M_PI,
-                             kHeadingEdge);
-  HeadingMargin margin;
-  margin.left = PlayedMargin(pots_heading, left, centre.heading);
-  margin.right = PlayedMargin(pots_heading, right, centre.heading);
-  return margin;
 }
 
 SpeedWindow SpeedWindowAt(SearchContext& search, const StrokeShape& shape, double heading) {

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "planner/pot/testing/pot_fixture.h"
 
@@ -12,73 +14,90 @@ namespace {
 
 using table::SceneBall;
 
-// A window of headings that pot, its edges `lo` < 0 < `hi` about an aim at 0, with a gap
-// [gap_lo, gap_hi) beyond `hi` where it pots again (none by default).
+constexpr double kStep = kMarginGrid;
+
+// Headings that pot: an open window (lo, hi) about an aim at 0, less the holes [from, to) in it
+// (a scratch off a jaw), each heading asked for recorded.
 struct Window {
-  double lo, hi, gap_lo = 1.0, gap_hi = 1.0;
-  bool operator()(double x) const { return (x > lo && x < hi) || (x >= gap_lo && x < gap_hi); }
+  double lo, hi;
+  std::vector<std::pair<double, double>> holes;
+  std::vector<double>* asked = nullptr;
+  bool operator()(double x) const {
+    if (asked) asked->push_back(x);
+    for (const auto& [from, to] : holes) {
+      if (x >= from && x < to) return false;
+    }
+    return x > lo && x < hi;
+  }
 };
 
-// The margin either side from each edge's guess, as the planner finds it.
-double LeftMargin(const Window& pots, double guess) {
-  return PlayedMargin(pots, Edge(pots, 0.0, guess, 0.5 * M_PI, kHeadingEdge), 0.0);
-}
-double RightMargin(const Window& pots, double guess) {
-  return PlayedMargin(pots, Edge(pots, 0.0, -guess, -0.5 * M_PI, kHeadingEdge), 0.0);
-}
-
-// Whatever the guess, 0.9 of the margin pots and 1.1 of it misses.
-TEST(Margin, NineTenthsOfItPotsAndElevenTenthsMisses) {
-  const Window pots{-0.0071, 0.0123};
-  for (double guess : {0.0123, 0.012, 0.0131, 0.004, 0.03, 1e-9}) {
-    SCOPED_TRACE(guess);
-    const double left = LeftMargin(pots, guess), right = RightMargin(pots, guess);
-    EXPECT_TRUE(pots((1.0 - kMarginTolerance) * left));
-    EXPECT_FALSE(pots((1.0 + kMarginTolerance) * left));
-    EXPECT_TRUE(pots(-(1.0 - kMarginTolerance) * right));
-    EXPECT_FALSE(pots(-(1.0 + kMarginTolerance) * right));
-  }
+// The margin is the last grid step before the window's edge, each side on its own.
+TEST(Margin, TheWalkEndsAtTheLastGridStepInsideTheWindow) {
+  const Window pots{-2.5 * kStep, 7.3 * kStep, {}};
+  EXPECT_NEAR(WalkedMargin(pots, 0.0, 1.0), 7.0 * kStep, 1e-15);
+  EXPECT_NEAR(WalkedMargin(pots, 0.0, -1.0), 2.0 * kStep, 1e-15);
 }
 
-// An edge inside the guess's bracket: the two headings played are the bracket's, and the
-// margin is the guess.
-TEST(Margin, AnEdgeInsideTheBracketIsTheGuess) {
-  const Window pots{-0.01, 0.0123};
-  const Bracket b = Edge(pots, 0.0, 0.012, 0.5 * M_PI, kHeadingEdge);
-  EXPECT_NEAR(b.in, 0.9 * 0.012, 1e-15);
-  EXPECT_NEAR(b.out, 1.1 * 0.012, 1e-15);
-  EXPECT_NEAR(Margin(b, 0.0), 0.012, 1e-15);
+// A hole inside the window (headings that scratch) ends the margin where it begins, though K
+// drops legally again beyond it; a hole of a fraction of a step between two grid headings is
+// not one the grid plays.
+TEST(Margin, TheWalkStopsAtTheFirstHole) {
+  const Window pots{-20.0 * kStep, 20.0 * kStep, {{4.0 * kStep, 6.0 * kStep}, {-11.6 * kStep, -11.2 * kStep}}};
+  EXPECT_NEAR(WalkedMargin(pots, 0.0, 1.0), 3.0 * kStep, 1e-15);
+  EXPECT_NEAR(WalkedMargin(pots, 0.0, -1.0), 19.0 * kStep, 1e-15);
+  const Window deeper{-20.0 * kStep, 20.0 * kStep, {{-13.0 * kStep, -12.5 * kStep}}};
+  EXPECT_NEAR(WalkedMargin(deeper, 0.0, -1.0), 12.0 * kStep, 1e-15);
 }
 
-// Beyond the bracket, bisection until the outside is within 1.2 times the inside.
-TEST(Margin, AnEdgeFarFromItsGuessIsBisected) {
-  const Window pots{-0.01, 0.0317};
-  const Bracket b = Edge(pots, 0.0, 0.01, 0.5 * M_PI, kHeadingEdge);
-  EXPECT_LT(b.in, 0.0317);
-  EXPECT_GE(b.out, 0.0317);
-  EXPECT_LE(b.out - b.in, kHeadingEdge.resolution * b.in);
+// The headings played are the grid's, from the aim outward, up to the first that fails: one
+// simulation per step of the margin and one more.
+TEST(Margin, TheWalkPlaysEachGridHeadingOnceOutwardFromTheAim) {
+  std::vector<double> asked;
+  const double aim = 0.3;
+  const Window pots{aim - 1.0, aim + 4.5 * kStep, {}, &asked};
+  EXPECT_NEAR(WalkedMargin(pots, aim, 1.0), 4.0 * kStep, 1e-15);
+  ASSERT_EQ(asked.size(), 5u);
+  for (std::size_t j = 0; j < asked.size(); ++j) EXPECT_NEAR(asked[j], aim + (j + 1.0) * kStep, 1e-15);
 }
 
-// Where K drops again past a hole just outside the edge, the margin shrinks until 1.1 of it is
-// a heading played that misses.
-TEST(Margin, AHoleAtTheOutsideIsSteppedBack) {
-  const Window pots{-0.01, 0.0123, 0.0128, 0.05};
-  const Bracket b{0.011, 0.0125};  // in pots, out misses, 1.1 x in/0.9 pots again
-  ASSERT_TRUE(pots(b.in));
-  ASSERT_FALSE(pots(b.out));
-  ASSERT_TRUE(pots(1.1 * Margin(b, 0.0)));
-  const double margin = PlayedMargin(pots, b, 0.0);
-  EXPECT_NEAR(margin, b.out / 1.1, 1e-15);
-  EXPECT_TRUE(pots(0.9 * margin));
-  EXPECT_FALSE(pots(1.1 * margin));
+// A first step that misses (a fragile pot) is a margin of 0.
+TEST(Margin, AFirstStepThatMissesIsNoMargin) {
+  const Window pots{-0.4 * kStep, 3.0 * kStep, {}};
+  EXPECT_EQ(WalkedMargin(pots, 0.0, -1.0), 0.0);
+  EXPECT_NEAR(WalkedMargin(pots, 0.0, 1.0), 2.0 * kStep, 1e-15);
+}
+
+// A window that never closes is walked to the limit and no farther.
+TEST(Margin, AWindowOpenToTheLimitEndsThere) {
+  std::vector<double> asked;
+  const Window pots{-10.0, 10.0, {}, &asked};
+  EXPECT_NEAR(WalkedMargin(pots, 0.0, 1.0, kStep, 50.5 * kStep), 50.0 * kStep, 1e-15);
+  EXPECT_EQ(asked.size(), 50u);
+}
+
+// A speed edge inside its guess's bracket: the two speeds played are the bracket's.
+TEST(Margin, ASpeedEdgeInsideItsGuessBracketIsThatBracket) {
+  const Window pots{0.0, 3.05, {}};
+  const Bracket b = Edge(pots, 2.0, 3.0, 8.0, kSpeedEdge);
+  EXPECT_NEAR(b.in, 2.0 + 0.9 * 1.0, 1e-15);
+  EXPECT_NEAR(b.out, 2.0 + 1.1 * 1.0, 1e-15);
+}
+
+// Beyond the bracket, bisection until the outside is within 10 % of the inside's distance.
+TEST(Margin, ASpeedEdgeFarFromItsGuessIsBisected) {
+  const Window pots{0.0, 5.17, {}};
+  const Bracket b = Edge(pots, 2.0, 3.0, 8.0, kSpeedEdge);
+  EXPECT_LT(b.in, 5.17);
+  EXPECT_GE(b.out, 5.17);
+  EXPECT_LE(b.out - b.in, kSpeedEdge.resolution * (b.in - 2.0));
 }
 
 // A window that reaches the limit has its limit as the edge.
-TEST(Margin, AWindowOpenToTheLimitEndsThere) {
-  const Window pots{-0.01, 10.0};
-  const Bracket b = Edge(pots, 0.0, 0.01, 0.5 * M_PI, kHeadingEdge);
-  EXPECT_EQ(b.in, 0.5 * M_PI);
-  EXPECT_EQ(b.out, 0.5 * M_PI);
+TEST(Margin, ASpeedWindowOpenToTheLimitEndsThere) {
+  const Window pots{0.0, 10.0, {}};
+  const Bracket b = Edge(pots, 2.0, 3.0, 8.0, kSpeedEdge);
+  EXPECT_EQ(b.in, 8.0);
+  EXPECT_EQ(b.out, 8.0);
 }
 
 // A bracket as narrow as doubles go: the pace already at the cue's top speed but for one ulp
@@ -105,18 +124,21 @@ TEST(Margin, ABracketOfAdjacentDoublesEnds) {
 
 class MarginTest : public testing::PotFixture {};
 
-// The margin is what the simulation says: turned to 0.9 of it either way the stroke still pots,
-// to 1.1 it misses.
+// The margin is what the simulation says: every heading of the grid inside it pots legally, and
+// the next one out on each side does not.
 TEST_F(MarginTest, TheMarginIsTrueOnTheSimulation) {
   const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9), table::AtRest(2, 1.2, 0.3)};
   const PotPlan plan = PlanPot(table_, params_, balls, {1, "upper_right", ShotKind::kDirect, {}});
   ASSERT_EQ(plan.status, PotStatus::kOk) << plan.reason;
-  for (const auto& [fraction, pots] : {std::pair{0.9, true}, {1.1, false}}) {
-    for (double side : {1.0, -1.0}) {
+  ASSERT_GT(plan.margin_left_deg + plan.margin_right_deg, 0.1);
+  for (const auto& [side, margin] : {std::pair{1.0, plan.margin_left_deg}, {-1.0, plan.margin_right_deg}}) {
+    const int steps = static_cast<int>(std::lround(margin * kDegree / kStep));
+    EXPECT_NEAR(steps * kStep, margin * kDegree, 1e-12) << "a margin on the grid";
+    for (int j = 1; j <= steps + 1; ++j) {
       physics::CueStroke s = plan.stroke;
-      s.heading += side * fraction * (side > 0 ? plan.margin_left_deg : plan.margin_right_deg) * kDegree;
+      s.heading += side * j * kStep;
       const Outcome o = SimulateStroke(balls, s, plan.ball, plan.pocket);
-      EXPECT_EQ(o.potted && o.first_contact == 1 && !o.scratch, pots) << fraction << " x " << side;
+      EXPECT_EQ(o.potted && o.first_contact == 1 && !o.scratch, j <= steps) << j << " steps x " << side;
     }
   }
 }

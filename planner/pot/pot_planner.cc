@@ -50,7 +50,7 @@ std::variant<PotPlan, Refusal> Finish(SearchContext& search, const Route& route,
   plan.rail = route.rail;
   // The margin on the truth: near a jaw whether K rattles in turns on its speed and spin there,
   // which the truth's slide sets.
-  const HeadingMargin margin = HeadingMargins(search, shape, shot.aimed, shot.window);
+  const HeadingMargin margin = HeadingMargins(search, shape, shot.aimed.heading);
   plan.margin_left_deg = margin.left / kDegree;
   plan.margin_right_deg = margin.right / kDegree;
   const SpeedWindow speeds = SpeedWindowAt(search, shape, aimed.heading);

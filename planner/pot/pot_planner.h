@@ -21,8 +21,9 @@
 //     K in the pocket with some pace to spare; with a cue-ball target, the speed and the
 //     follow/draw (tip height) that stop the cue ball there, by Newton's method on the
 //     simulated rest point from the best of a coarse grid;
-//  4. the margin: the cue headings either side that still drop K (the window's edges, solved on
-//     the simulation), and the cue speeds between which it drops;
+//  4. the margin: how far the cue's heading may turn either way with every heading of a
+//     0.01-degree grid still potting legally on the truth (walked out from the aim), and the cue
+//     speeds between which K drops;
 //  5. the check against the truth: the plan simulated with the motion `billiard simulate --scene`
 //     runs by default (sim/model_choice/, `--model auto`), re-aimed there, and refused if it does
 //     not pot legally (K in P, the cue ball's first contact K, no scratch).
@@ -130,8 +131,10 @@ struct PotPlan {
   Eigen::Vector3d w0 = Eigen::Vector3d::Zero();
   double cut_deg = 0.0;  // angle between the cue ball's approach and K's departure
 
-  // Heading window: the cue may turn this far either way [deg] (left: counterclockwise) and K
-  // still drops; the cue speeds [m/s] at the planned heading between which it drops.
+  // Heading window: the cue may turn this far either way [deg] (left: counterclockwise) with
+  // every heading 0.01 degree apart still potting legally on the truth (margin.h: a multiple of
+  // 0.01 degree, 0 where the first step fails); the cue speeds [m/s] at the planned heading
+  // between which K drops.
   double margin_left_deg = 0.0, margin_right_deg = 0.0;
   double speed_lo = 0.0, speed_hi = 0.0;
 

@@ -142,9 +142,9 @@ class SearchContext {
   // The cue ball's first contact with a ball for `stroke`.
   Contact FirstContact(const physics::CueStroke& stroke, bool truth);
 
-  // Plays a stroke to rest, or with `to_rest` false until K drops (what the pace and the margin
-  // ask: the cue ball's later travel, its cushions above all, is most of a shot's cost): K's fate
-  // and the cue ball's.
+  // Plays a stroke to rest, or with `to_rest` false until K drops (what the pace and the speed
+  // window ask: the cue ball's later travel, its cushions above all, is most of a shot's cost):
+  // K's fate and the cue ball's.
   Played Play(const physics::CueStroke& stroke, bool truth, bool to_rest = true);
 
   // The event that decides K in `sim`: its drop, or a rail after which it heads away from P's
