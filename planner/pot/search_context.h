@@ -90,7 +90,7 @@ struct Refusal {
   // the cue ball's path, cannot mend it.
   bool object_route_closed = false;
   // cue_blocked at the final stroke: the elevation [rad] that clears there, to plan again at.
-  std::optional<double> elevation_needed;
+  std::optional<double> elevation_needed = std::nullopt;
 };
 
 // The pace's last fit (pace.h): d (arrival speed^2) / d (cue speed^2), and the arrival speed at
