@@ -4,6 +4,7 @@
 #include <fstream>
 #include <map>
 
+#include "bench/detection_report.h"
 #include "bench/format.h"
 
 namespace billiard::bench {

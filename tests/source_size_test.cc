@@ -32,7 +32,6 @@ constexpr const char* kTopFolders[] = {"sim", "planner", "estimator", "lcmtypes"
 const std::map<std::string, std::string>& LongFiles() {
   static const std::map<std::string, std::string> files = {
       {"estimator/ball_detector.cc", "the scale, the outlines' votes and their refinement"},
-      {"bench/detection_benchmark.cc", "the matching, the figures per view and the report"},
   };
   return files;
 }
