@@ -318,8 +318,7 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
       << r.options.snooker_every << "th on snooker-12ft, the rest on " << params::kDefaultTable
       << "; a random object ball and pocket each, planned with `--kind any`. Every plan is checked "
       << "on its own: its v0, w0 simulated from the scene with the default models of `billiard "
-      << "simulate --scene` (`--model auto`, Mathavan et al. 2010's cushion). " << Fixed(r.wall_s, 1)
-      << " s in all.\n\n";
+      << "simulate --scene` (`--model auto`, Mathavan et al. 2010's cushion). " << Fixed(r.wall_s, 1) << " s in all.\n\n";
   out << "## Truth\n\n" << s["truth"]["verified"].get<int>() << " of " << s["truth"]["ok"].get<int>()
       << " ok plans pot ball K in pocket P with a legal first contact and no scratch.\n\n";
   for (const PotRun& run : r.runs) {
