@@ -4,6 +4,7 @@
 #include <fstream>
 #include <map>
 
+#include "bench/detection_report.h"
 #include "bench/format.h"
 
 namespace billiard::bench {
@@ -205,11 +206,14 @@ const std::vector<std::pair<std::string, std::string>>& FixedFromData() {
       {"estimator/table_edges.cc",
        "kEdgeFrom, kEdgeMiddle, kMinEdge, kEdgeNoises, kMinPlaces, kNoseOfBest, kFaintEdges, "
        "kMinFaintEdge, kFaintRidge, kFaintClearancePx, kFaintMaxTilt"},
+      {"estimator/cloth_model.cc", "kEdgeNoises, kMinEdge"},
+      {"estimator/ball_scale.cc", "kMaxBlobAspect, kMinBlobFill, kMinScaleSupport"},
       {"estimator/ball_detector.cc",
-       "kEdgeNoises, kMinEdge, kMaxBlobAspect, kMinBlobFill, kMinScaleSupport, kMinVoteSupport, "
-       "kPocketRadii, kOffSurfaceRadii, kOffClothRadii, kSettlingScore, kSettledScaleChange, "
-       "kLargerScales, kSureGain, kOverlapRadii, kMaxForeignSurround, kMinSurroundSeen, "
-       "kSureScore, kNoisyEdges, kNoiseSmoothingPx"},
+       "kMinVoteSupport, kSettlingScore, kSettledScaleChange, kLargerScales, kSureGain, "
+       "kOverlapRadii, kNoisyEdges, kNoiseSmoothingPx"},
+      {"estimator/ball_placement.cc",
+       "kPocketRadii, kOffSurfaceRadii, kOffClothRadii, kMaxForeignSurround, kMinSurroundSeen"},
+      {"estimator/ball_score.h", "kSureScore"},
       {"estimator/ball_outline.cc",
        "kEdgeOfRayMax, kCandidateReach, kMaxShiftRadii, kMaxRadiusChange, kSupportPx, "
        "kSupportRadii"},

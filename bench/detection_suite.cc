@@ -19,8 +19,6 @@ namespace billiard::bench {
 
 namespace {
 
-// The table of the rack (its pockets and head string); the parameter set's table must be its size.
-constexpr char kSuiteTable[] = "pool-9ft";
 constexpr int kWidth = 1280, kHeight = 720;
 constexpr int kScatteredBalls = 16;
 // A touching pair's gap, and the least gap between other balls [m].
@@ -96,7 +94,8 @@ const std::vector<SuiteCloth>& SuiteCloths() {
 std::vector<Eigen::Vector2d> SceneBalls(const physics::ModelParameters& params, bool rack,
                                         std::uint32_t rack_seed, std::mt19937* rng) {
   if (!rack) return Scattered(params.table, params.ball.radius, *rng);
-  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(kSuiteTable));
+  const table::TableGeometry geometry =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   std::vector<Eigen::Vector2d> balls;
   for (const auto& b : table::Rack(table::RackKind::kEightBall, geometry, params.ball.radius,
                                    rack_seed)) {

@@ -23,7 +23,6 @@ namespace billiard::bench {
 
 namespace {
 
-constexpr char kTable[] = "pool-9ft";
 constexpr char kTournamentNoise[] = "computational-pool";
 // Deciles that hold at least this many executions are judged (the acceptance's rule).
 constexpr int kJudgedCount = 30;
@@ -254,7 +253,8 @@ GameBenchmarkResult RunGameBenchmark(
   GameBenchmarkResult result;
   result.options = options;
   const physics::ModelParameters params = params::LoadParameters(params::kDefaultParameterSet);
-  const table::TableGeometry table = table::BuildTable(params::LoadTableSpec(kTable));
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   batch::ThreadPool pool(options.threads);
   Calibrate(table, params, options, pool, &result);
   if (checkpoint) checkpoint(result);
@@ -349,10 +349,10 @@ void WriteGameReport(const GameBenchmarkResult& r, const std::string& dir) {
   out << "# Shot choice: calibration, baselines, decision time\n\n"
       << "From `nice billiard bench-game --out docs/benchmarks --layouts " << r.options.layouts
       << " --calibration-layouts " << r.options.calibration_layouts << " --executions "
-      << r.options.executions << " --confirm-samples " << r.options.confirm_samples
-      << " --seed " << r.options.seed << " --threads " << r.options.threads << " --robot "
-      << (r.options.robot ? r.options.robot->name : "none")
-      << "` (seeded nine-ball layouts on pool-9ft, bench/game_benchmark.h). The numbers are this "
+      << r.options.executions << " --confirm-samples " << r.options.confirm_samples << " --seed "
+      << r.options.seed << " --threads " << r.options.threads << " --robot "
+      << (r.options.robot ? r.options.robot->name : "none") << "` (seeded nine-ball layouts on "
+      << params::kDefaultTable << ", bench/game_benchmark.h). The numbers are this "
       << "run's, on a 2-core machine shared with other work. Robot: " << RobotName(r.options)
       << " (every stroke at the elevation its cue needs, planner/pot/cue_elevation.h).";
   if (layouts < r.options.layouts) {

@@ -4,6 +4,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "bench/detection_report.h"
 #include "bench/format.h"
 
 namespace billiard::bench {

@@ -155,7 +155,8 @@ bool InView(const camera::CameraModel& camera, const Eigen::Vector2d& xy) {
 std::vector<std::pair<BallClass, Eigen::Vector2d>> Place(BallSet set,
                                                          const camera::CameraModel& camera,
                                                          table::SeededUniform* u) {
-  static const table::TableGeometry table = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  static const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const double r = Pool().ball.radius;
   std::vector<BallClass> rack = RackOf(set);
   if (u->Next() < kCueLeftOut) rack.erase(rack.begin());

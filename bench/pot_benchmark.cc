@@ -117,8 +117,9 @@ std::string Percent(int n, int of) { return of > 0 ? Fixed(100.0 * n / of, 1) + 
 PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<Table> tables;
-  for (const auto& [name, params] : {std::pair<std::string, std::string>{"pool-9ft", "pool"},
-                                     {"snooker-12ft", "snooker"}}) {
+  for (const auto& [name, params] :
+       {std::pair<std::string, std::string>{params::kDefaultTable, "pool"},
+        {"snooker-12ft", "snooker"}}) {
     tables.push_back({name, params, table::BuildTable(params::LoadTableSpec(name)), params::LoadParameters(params)});
   }
   PotBenchmarkResult result;
@@ -225,7 +226,7 @@ nlohmann::json PotSummaryJson(const PotBenchmarkResult& r) {
   for (const PotRun& run : r.runs) {
     const bool is_ok = run.plan.status == pot::PotStatus::kOk;
     all_us.push_back(run.plan.solve_us);
-    if (run.table == "pool-9ft") {
+    if (run.table == params::kDefaultTable) {
       pool_us.push_back(run.plan.solve_us);
       pool_cpu.push_back(run.cpu_us);
       if (run.plan.status == pot::PotStatus::kOk && run.plan.kind == pot::ShotKind::kDirect) direct_cpu.push_back(run.cpu_us);
@@ -311,7 +312,7 @@ void WritePotResults(const PotBenchmarkResult& r, const std::string& dir) {
         << Flag(run.outer_left) << "," << Flag(run.outer_right) << ",,,," << Fixed(run.cpu_us, 0) << "\n";
   }
   for (const PositionRun& p : r.positions) {
-    row(p.seed, "pool-9ft", 0, false, p.plan);
+    row(p.seed, params::kDefaultTable, 0, false, p.plan);
     out << "," << (p.plan.status == pot::PotStatus::kOk ? (p.legal ? "1" : "0") : "") << ",,,,,,"
         << Fixed(p.target.x(), 4) << "," << Fixed(p.target.y(), 4) << ","
         << (p.rest_error_m >= 0.0 ? Sci(p.rest_error_m) : "") << ",\n";
@@ -328,10 +329,10 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
   out << "# Potting against the table simulation\n\n"
       << "`billiard bench-pot --out docs/benchmarks` (seed " << r.options.seed << "): "
       << r.runs.size() << " seeded layouts of 2-16 balls (planner/pot/testing/pot_layouts.h), every "
-      << r.options.snooker_every << "th on snooker-12ft, the rest on pool-9ft; a random object ball "
-      << "and pocket each, planned with `--kind any`. Every plan is checked on its own: its v0, w0 "
-      << "simulated from the scene with the default models of `billiard simulate --scene` "
-      << "(`--model auto`, Mathavan et al. 2010's cushion). " << Fixed(r.wall_s, 1) << " s in all.\n\n";
+      << r.options.snooker_every << "th on snooker-12ft, the rest on " << params::kDefaultTable
+      << "; a random object ball and pocket each, planned with `--kind any`. Every plan is checked "
+      << "on its own: its v0, w0 simulated from the scene with the default models of `billiard "
+      << "simulate --scene` (`--model auto`, Mathavan et al. 2010's cushion). " << Fixed(r.wall_s, 1) << " s in all.\n\n";
   out << "## Truth\n\n" << s["truth"]["verified"].get<int>() << " of " << s["truth"]["ok"].get<int>()
       << " ok plans pot ball K in pocket P with a legal first contact and no scratch.\n\n";
   for (const PotRun& run : r.runs) {
@@ -391,7 +392,7 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
       << "| outcome | plans | CPU median [ms] | CPU p95 [ms] |\n|---|---|---|---|\n";
   std::map<std::string, std::vector<double>> by_outcome;
   for (const PotRun& run : r.runs) {
-    if (run.table != "pool-9ft") continue;
+    if (run.table != params::kDefaultTable) continue;
     const bool ok = run.plan.status == pot::PotStatus::kOk;
     by_outcome[ok ? std::string("ok, ") + pot::ShotKindName(run.plan.kind) : pot::PotStatusName(run.plan.status)].push_back(run.cpu_us);
   }

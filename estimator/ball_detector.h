@@ -43,6 +43,7 @@
 #include "estimator/identity_parameters.h"
 #include "estimator/table_fallback.h"
 #include "estimator/table_finder.h"
+#include "estimator/table_outline.h"
 #include "sim/camera/camera_model.h"
 
 namespace billiard::estimator {
@@ -163,9 +164,7 @@ class BallDetector {
   double smoothing_px_ = 0;
   cv::Size frame_size_;
   std::string failure_;
-  // The learnt frame's gradient magnitude at the table search's resolution, and the band along
-  // the cloth's outline it is compared over (OutlineAgreement).
-  cv::Mat outline_gradient_, outline_band_;
+  TableOutline outline_;  // of the frame the table was learnt from (OutlineAgreement)
 };
 
 }  // namespace billiard::estimator

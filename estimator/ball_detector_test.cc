@@ -454,7 +454,8 @@ TEST(BallDetector, EveryBallOfARackIsSureOnTheFirstFrame) {
   // seed 4.
   constexpr double kSure = 0.8;  // TrackerOptions::sure_score
   const physics::ModelParameters params = params::LoadParameters("pool");
-  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry geometry =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const camera::CameraModel camera = camera::CameraModel::Overhead(params.table, 1280, 720);
   const render::TableRenderer renderer(camera, params);
   DetectorOptions options;

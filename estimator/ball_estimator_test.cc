@@ -51,7 +51,8 @@ void ExpectABreakTrackedAtThirtyFramesASecond(double break_speed, bool stripes_s
   constexpr double kMaxErrorMm = 5.0;
   const physics::ModelParameters& p = Pool();
   const double r = p.ball.radius;
-  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry geometry =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   std::vector<table::SceneBall> balls =
       table::Rack(table::RackKind::kEightBall, geometry, r, /*seed=*/1);
   // The cue ball rolls straight at the ball nearest it.

@@ -111,7 +111,8 @@ std::vector<render::RenderBall> InARow() {
 // cushions.
 std::vector<render::RenderBall> Scattered(std::uint64_t seed) {
   constexpr double kClearance = 2e-3;
-  const table::TableGeometry table = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const double r = Pool().ball.radius;
   table::SeededUniform uniform(seed);
   std::vector<table::SceneBall> placed;

@@ -2,8 +2,51 @@
 
 #include <algorithm>
 #include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "estimator/lab_image.h"
+#include "estimator/not_cloth.h"
 
 namespace billiard::estimator {
+
+namespace {
+
+// The balls' scale is measured on the compact blobs of not-cloth (not_cloth.h): blobs of at least
+// kMinBlobArea of its pixels, about as wide as high (kMaxBlobAspect), filling at least
+// kMinBlobFill of their bounding ellipse; their outlines count with kMinScaleSupport of the rays.
+constexpr int kMinBlobArea = 12;
+constexpr double kMaxBlobAspect = 1.55;
+constexpr double kMinBlobFill = 0.75;
+constexpr double kMinScaleSupport = 0.35;
+
+// The outlines of the compact blobs of not-cloth on the table: mostly single balls, whose radii
+// give the scale.
+std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& table,
+                                      const ClothModel& cloth) {
+  const NotClothMap not_cloth(bgr, table, cloth, NotClothMap::BlobFactor(table));
+  if (not_cloth.mask().empty()) return {};
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(not_cloth.mask(), labels, stats, centroids, 8);
+  const LabImage lab(bgr, not_cloth.region());
+  std::vector<BallOutline> outlines;
+  for (int i = 1; i < n; ++i) {
+    const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
+    const int area = stats.at<int>(i, cv::CC_STAT_AREA);
+    const double aspect = static_cast<double>(std::max(w, h)) / std::min(w, h);
+    const double fill = area / (0.25 * M_PI * w * h);
+    if (area < kMinBlobArea || aspect > kMaxBlobAspect || fill < kMinBlobFill) continue;
+    const Eigen::Vector2d centroid(centroids.at<double>(i, 0), centroids.at<double>(i, 1));
+    const auto outline =
+        FitBallOutline(lab, not_cloth.ToFull(centroid), not_cloth.factor() * std::sqrt(area / M_PI),
+                       EdgeThreshold(cloth.edge_noise));
+    if (outline && outline->supporting_rays >= kMinScaleSupport * kOutlineRays) {
+      outlines.push_back(*outline);
+    }
+  }
+  return outlines;
+}
+
+}  // namespace
 
 std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
                                            const std::vector<BallOutline>& outlines) {
@@ -50,6 +93,11 @@ std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
 BallScale ScaleFromTable(const TableRegion& table, double ball_to_table_width) {
   return BallScale{table.inverse_depth,
                    ball_to_table_width * table.PixelsPerWidthAt(table.Centre())};
+}
+
+std::optional<BallScale> ScaleFromBlobs(const cv::Mat& bgr, const TableRegion& table,
+                                        const ClothModel& cloth) {
+  return ScaleFromOutlines(table, BlobOutlines(bgr, table, cloth));
 }
 
 }  // namespace billiard::estimator

@@ -14,7 +14,10 @@
 #include <optional>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "estimator/ball_outline.h"
+#include "estimator/cloth_model.h"
 #include "estimator/table_finder.h"
 
 namespace billiard::estimator {
@@ -37,6 +40,13 @@ struct BallScale {
 // outlines.
 std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
                                            const std::vector<BallOutline>& outlines);
+
+// The scale the compact blobs of not-cloth on the table say (not_cloth.h): blobs about as wide as
+// high and filling their bounding ellipse, mostly single balls, outlined (ball_outline.h) and
+// given to ScaleFromOutlines where enough of their rays found an edge. Empty without such blobs
+// (an empty table, a rack).
+std::optional<BallScale> ScaleFromBlobs(const cv::Mat& bgr, const TableRegion& table,
+                                        const ClothModel& cloth);
 
 // The scale the table's size says, for balls of `ball_to_table_width` (radius over the width of
 // the playing surface, 0.0225 for pool balls on a 9-ft table): for an empty table, or one whose

@@ -28,6 +28,11 @@
 
 namespace billiard::estimator {
 
+// A score from which an outline is surely a ball: the detector holds it to less than an unsure
+// one (ball_placement.h), settles the balls' scale on such balls, and the tracker's RefineAt
+// reports only such.
+inline constexpr double kSureScore = 0.8;
+
 struct BallEvidence {
   double outline = 0, size = 0, votes = 0, look = 0;
   double Score() const;

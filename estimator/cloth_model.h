@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
+#include "estimator/table_finder.h"
+
 namespace billiard::estimator {
 
 // The local colour of the cloth, learnt from a frame.
@@ -20,5 +22,15 @@ struct ClothModel {
   // The cloth colour at a full-resolution pixel.
   cv::Vec3f ColourAt(const Eigen::Vector2d& pixel) const;
 };
+
+// The cloth's local colour, from the table's cloth pixels, and its spread across its own colour:
+// the colour averaged over cells of about a 24th of the table (a cell less than a fifth cloth takes
+// its neighbours' colour), its noise the median distance across the colour (scaled to a standard
+// deviation), its edge noise circle_votes.h's EdgeNoise of the table.
+ClothModel LearnClothModel(const cv::Mat& bgr, const TableRegion& table);
+
+// The least rate of colour change [L*a*b* units per px] that is an edge on a cloth of
+// `edge_noise` (ClothModel::edge_noise).
+double EdgeThreshold(double edge_noise);
 
 }  // namespace billiard::estimator

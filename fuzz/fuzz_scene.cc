@@ -67,7 +67,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace billiard;
   if (size < 1) return 0;
   static const physics::ModelParameters p = params::LoadParameters("pool");
-  static const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  static const table::TableGeometry geometry =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   fuzz::ByteDraws draws(data, size);
   const table::testing::Uniform uniform = [&draws] { return draws(); };
   const std::vector<table::SceneBall> balls =

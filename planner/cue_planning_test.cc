@@ -19,7 +19,9 @@ constexpr double kDegree = M_PI / 180.0;
 class CuePlanningTest : public testing::Test {
  protected:
   physics::ModelParameters params_ = params::LoadParameters("pool");
-  CueSetting gantry_{params::LoadRobot("gantry"), table::BuildTable(params::LoadTableSpec("pool-9ft")), {}};
+  CueSetting gantry_{params::LoadRobot("gantry"),
+                     table::BuildTable(params::LoadTableSpec(params::kDefaultTable)),
+                     {}};
 
   // docs/planning.md's first request: 0.5 m off the left rail, the ball sent away from it, so
   // that the gantry's 0.5 m cue lies over the rail.

@@ -128,7 +128,8 @@ double Quantile(std::vector<double> v, double q) {
 }
 
 TEST(CueClearanceAcceptance, NoPlannedPotPassesTheCueThroughABallTheClothOrARail) {
-  const table::TableGeometry table = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const physics::ModelParameters params = params::LoadParameters("pool");
   const double radius = params.ball.radius;
   pot::PotOptions options;
@@ -164,7 +165,8 @@ TEST(CueClearanceAcceptance, NoPlannedPotPassesTheCueThroughABallTheClothOrARail
 
 TEST(CueClearanceAcceptance, NoChosenStrokePassesTheCueThroughABallTheClothOrARail) {
   constexpr int kChoices = 24;
-  const table::TableGeometry table = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const physics::ModelParameters params = params::LoadParameters("pool");
   const double radius = params.ball.radius;
   choice::ChoiceOptions options;

@@ -131,7 +131,8 @@ void ExpectTheBallsLeft(const nlohmann::json& drawn, const nlohmann::json& summa
 
 void ExpectPocketsStrokeAndPaths(const nlohmann::json& drawn, const std::string& dom,
                                  const nlohmann::json& summary) {
-  const auto pool = billiard::table::BuildTable(billiard::params::LoadTableSpec("pool-9ft"));
+  const auto pool =
+      billiard::table::BuildTable(billiard::params::LoadTableSpec(billiard::params::kDefaultTable));
   ASSERT_EQ(drawn["pockets"].size(), pool.pockets.size());
   ASSERT_EQ(pool.pockets.size(), 6u);
   for (std::size_t k = 0; k < pool.pockets.size(); ++k) {

@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
     // (share/billiard/params/) works the same.
     const billiard::physics::ModelParameters params = billiard::params::LoadParameters("pool");
     const table::TableGeometry geometry =
-        table::BuildTable(billiard::params::LoadTableSpec("pool-9ft"));
+        table::BuildTable(billiard::params::LoadTableSpec(billiard::params::kDefaultTable));
     std::vector<table::SceneBall> balls =
         table::Rack(table::RackKind::kEightBall, geometry, params.ball.radius, seed);
 

@@ -22,7 +22,7 @@ class BreakSearchTest : public ::testing::Test {
  protected:
   BreakSearchTest()
       : params_(params::LoadParameters("pool")),
-        table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))),
+        table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))),
         setting_{table_, params_, rules::Rules::kNineBall, params::LoadNoise("computational-pool"),
                  model_choice::TableMotion(params_)},
         gantry_(params::LoadRobot("gantry")) {}

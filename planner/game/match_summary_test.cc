@@ -88,7 +88,8 @@ nlohmann::json WithoutTimes(nlohmann::json j) {
 // plays in order: a rack's figures depend on the seed and its index alone.
 TEST(AddRackTest, RacksPlayedApartSumToTheMatch) {
   const physics::ModelParameters params = params::LoadParameters("pool");
-  const table::TableGeometry table = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   MatchOptions options;
   options.players = {players::MakePlayer("easiest-looking"),
                      players::MakePlayer("easiest-looking")};

@@ -35,7 +35,7 @@ class MatchTest : public ::testing::Test {
  protected:
   MatchTest()
       : params_(params::LoadParameters("pool")),
-        table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {
+        table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))) {
     options_.choice.samples = 8;
     options_.choice.screen_samples = 4;
     options_.choice.finalists = 2;

@@ -14,7 +14,8 @@ namespace {
 
 TEST(StoredBreakTest, TheStoredFiguresReproduceAndKeepTheScratchBound) {
   const physics::ModelParameters params = params::LoadParameters("pool");
-  const table::TableGeometry table = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const cue::Robot gantry = params::LoadRobot("gantry");
   batch::ThreadPool pool(2);
   for (rules::Rules game : {rules::Rules::kNineBall, rules::Rules::kEightBall}) {

@@ -32,7 +32,8 @@ cue_command_t Command(std::int64_t utime, const physics::CueStroke& s) {
 // the robot's; a stroke after a placement in hand is not learned from.
 TEST(NoiseLearner, LearnsTheRobotsSpreadsFromItsStrokes) {
   const physics::ModelParameters p = params::LoadParameters("pool");
-  const table::TableGeometry table = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const params::ExecutionNoise prior = params::LoadNoise(params::kDefaultNoise);
   params::ExecutionNoise robot = prior;
   robot.heading = 0.25 * kDegree;

@@ -8,13 +8,14 @@
 #include "planner/node/planner_node.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
+#include "sim/params/table_specs.h"
 
 namespace billiard::planner_node {
 
 struct PlannerNodeCommandLine {
   std::string lcm_url;  // empty: $LCM_DEFAULT_URL, else LCM's default
   std::string params = params::kDefaultParameterSet;
-  std::string table = kDefaultPotTable;  // a built-in table or a table file (table_specs.h)
+  std::string table = params::kDefaultTable;  // a built-in table or a table file (table_specs.h)
   std::string robot = params::kDefaultRobot;  // --robot: a built-in robot or a robot file (robots.h)
   PlannerNodeOptions options;
   bool no_refine = false;

@@ -6,7 +6,7 @@ namespace billiard::planner_node {
 
 table::TableGeometry TableOf(const PlannerNodeOptions& options) {
   return options.table ? *options.table
-                       : table::BuildTable(params::LoadTableSpec(kDefaultPotTable));
+                       : table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
 }
 
 }  // namespace billiard::planner_node

@@ -10,6 +10,7 @@
 #include "planner/pot/pot_planner.h"
 #include "planner/shot_planner.h"
 #include "sim/batch/thread_pool.h"
+#include "sim/params/table_specs.h"
 #include "sim/shot_fit/shot_fit.h"
 #include "sim/table/table_geometry.h"
 
@@ -38,7 +39,7 @@ struct PlannerNodeOptions {
   double max_state_age = 1.0;
   // Requests waiting to be planned; more are answered STATUS_BUSY.
   int queue_capacity = 32;
-  // The table pots are planned on (its cushions and pockets); kDefaultPotTable when not given.
+  // The table pots are planned on (its cushions and pockets); params::kDefaultTable when not given.
   std::optional<table::TableGeometry> table;
   pot::PotOptions pot = CameraPotOptions();
   // Online identification of the table (0: off): after every `identify_every` shots the node
@@ -69,10 +70,7 @@ struct PlannerNodeOptions {
   }
 };
 
-// The table of a node started without one: the table of the default parameter set's size.
-inline constexpr char kDefaultPotTable[] = "pool-9ft";
-
-// The table pots and choices are planned on: `options.table`, else kDefaultPotTable.
+// The table pots and choices are planned on: `options.table`, else params::kDefaultTable.
 table::TableGeometry TableOf(const PlannerNodeOptions& options);
 
 }  // namespace billiard::planner_node

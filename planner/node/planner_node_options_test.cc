@@ -13,7 +13,7 @@ namespace {
 TEST(TableOf, WithoutATableIsTheDefaultParameterSetsSize) {
   const table::TableGeometry table = TableOf({});
   const physics::ModelParameters params = params::LoadParameters(params::kDefaultParameterSet);
-  EXPECT_EQ(table.name, table::BuildTable(params::LoadTableSpec(kDefaultPotTable)).name);
+  EXPECT_EQ(table.name, table::BuildTable(params::LoadTableSpec(params::kDefaultTable)).name);
   EXPECT_NEAR(table.length, params.table.length, 1e-9);
   EXPECT_NEAR(table.width, params.table.width, 1e-9);
 }

@@ -108,8 +108,9 @@ TEST(AnswerToPoint, ARefusedPlanGoesOutWithItsMeasurementsAndNoStroke) {
   PlannerNodeOptions options;
   options.planner = unrefined;
   options.pot.robot = std::nullopt;  // the plan alone: the paper's table is not the pool-9ft's
-  const cue_command_t c = AnswerToPoint(q, Ball(1, 0.5, 0.5), {}, table::BuildTable(params::LoadTableSpec("pool-9ft")),
-                                        params, options, ReplyTo(q));
+  const cue_command_t c = AnswerToPoint(
+      q, Ball(1, 0.5, 0.5), {}, table::BuildTable(params::LoadTableSpec(params::kDefaultTable)),
+      params, options, ReplyTo(q));
   EXPECT_EQ(Status(c), cue_command_t::STATUS_NOT_CONVERGED) << c.reason;
   EXPECT_NE(c.reason.find("from the target"), std::string::npos) << c.reason;
   EXPECT_GT(c.refined_miss_m, 1e-4) << "the miss says by how much";

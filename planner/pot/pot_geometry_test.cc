@@ -26,7 +26,7 @@ TEST(PotGeometry, CutAngleIsTheAngleBetweenApproachAndDeparture) {
 }
 
 TEST(PotGeometry, ARailBounceReflectsAboutTheOffsetLine) {
-  const table::TableGeometry t = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry t = table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   ASSERT_EQ(RailCount(t), 6);
   // Off the lower rail (y = 0) whichever segment holds the bounce: equal angles either side.
   const Eigen::Vector2d from(0.6, 0.5), to(1.0, 0.3);

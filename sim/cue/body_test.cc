@@ -14,7 +14,7 @@ constexpr double kR = 0.028575;
 
 class BodyTest : public ::testing::Test {
  protected:
-  BodyTest() : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {
+  BodyTest() : table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))) {
     robot_.cue = {0.74, 0.0065, 0.0108};
     robot_.bridge = 0.2;
   }

@@ -65,7 +65,7 @@ EdgeTangent OverEdge(double a, double h, const CueShape& cue) {
 
 class ClearanceTest : public ::testing::Test {
  protected:
-  ClearanceTest() : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {}
+  ClearanceTest() : table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))) {}
   double Least(const std::vector<table::SceneBall>& balls, const physics::CueStroke& stroke,
                const Robot& robot) const {
     const ClearingElevation found = LeastClearingElevation(table_, kR, balls, 0, stroke, robot);

@@ -57,7 +57,8 @@ TEST_F(StrokeLimitsTest, TheFastestHopFreeStrokeHopsTheLimit) {
 // The elevation a stroke is played at: level where a level cue clears; the least that clears and
 // the margin where the cue must rise over a rail; none where nothing in range clears.
 TEST_F(StrokeLimitsTest, TheElevationIsTheLeastThatClearsAndItsMargin) {
-  const table::TableGeometry table = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const Robot gantry = params::LoadRobot("gantry");
   const double r = params_.ball.radius, x = table.length / 2;
   const physics::CueStroke down{1.0, -M_PI / 2, 0.0, 0.0, 0.0};  // toward the lower rail

@@ -12,7 +12,7 @@ using Eigen::Vector3d;
 // The cloth's top is the playing surface; each rail's top is the rail's height from its nose
 // line out by its width; below them, inside.
 TEST(TableObstaclesTest, TheClothAndTheRailsWhereTheTableSays) {
-  const table::TableGeometry t = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry t = table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const std::vector<TableObstacle> obstacles = TableObstacles(t);
   ASSERT_EQ(obstacles.size(), 5u);
   const double L = t.length, W = t.width, w = t.rail_width, h = t.rail_height;
@@ -45,7 +45,7 @@ TEST(TableObstaclesTest, TheClothAndTheRailsWhereTheTableSays) {
 // A table written before rails were data: a rail of no width at the nose line, as high as the
 // nose.
 TEST(TableObstaclesTest, WithoutRailDataAWallAtTheNose) {
-  table::TableSpec spec = params::LoadTableSpec("pool-9ft");
+  table::TableSpec spec = params::LoadTableSpec(params::kDefaultTable);
   spec.rail.reset();
   const table::TableGeometry t = table::BuildTable(spec);
   const TableObstacle lower = TableObstacles(t)[1];

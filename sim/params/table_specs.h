@@ -19,6 +19,10 @@
 
 namespace billiard::params {
 
+// The table a command, a node or a binding plays on unless told another: the built-in 9-ft pool
+// table (WPA's tournament size).
+inline constexpr char kDefaultTable[] = "pool-9ft";
+
 // The names of the built-in tables: "carom-10ft", "pool-7ft", "pool-8ft", "pool-9ft",
 // "snooker-12ft".
 std::vector<std::string> TableNames();

@@ -9,7 +9,7 @@ namespace {
 
 class AnyBallTest : public ::testing::Test {
  protected:
-  AnyBallTest() : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {}
+  AnyBallTest() : table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))) {}
   // A shot played with every object ball of `on_table` legal, first meeting `first`.
   static Shot Played(std::vector<int> on_table, int first, std::vector<int> potted, int left) {
     Shot s;

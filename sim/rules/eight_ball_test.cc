@@ -11,7 +11,7 @@ namespace {
 
 class EightBallTest : public ::testing::Test {
  protected:
-  EightBallTest() : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {}
+  EightBallTest() : table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))) {}
   // A shot under `rules` on a table holding `on_table`, first meeting `first` (driven to a
   // rail), calling `called` in the corner "tr", potting `potted` there.
   static Shot Played(const EightBall& rules, std::vector<int> on_table, int first, int called,

@@ -10,7 +10,7 @@ namespace {
 
 class NineBallTest : public ::testing::Test {
  protected:
-  NineBallTest() : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {}
+  NineBallTest() : table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))) {}
   // A shot whose lowest ball on the table is `lowest`, first meeting `first` (and driving it to
   // a rail), potting `potted` and leaving `left` object balls.
   static Shot Played(int lowest, int first, std::vector<int> potted, int left) {

@@ -11,7 +11,7 @@ namespace {
 
 class RackStateTest : public ::testing::Test {
  protected:
-  RackStateTest() : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {}
+  RackStateTest() : table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))) {}
   std::vector<table::SceneBall> Balls(std::vector<int> ids) const {
     std::vector<table::SceneBall> balls = {table::AtRest(0, 0.5, 0.5)};
     for (int id : ids) balls.push_back(table::AtRest(id, 1.0, 0.1 * id));

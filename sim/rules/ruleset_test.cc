@@ -51,7 +51,7 @@ class RespotTest : public ::testing::Test {
  protected:
   RespotTest()
       : radius_(params::LoadParameters("pool").ball.radius),
-        table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {}
+        table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))) {}
   double radius_;
   table::TableGeometry table_;
 };

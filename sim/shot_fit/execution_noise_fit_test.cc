@@ -36,7 +36,8 @@ params::ExecutionNoise Noise(double speed, double heading_deg, double tip_mm) {
 // before a collision are left out.
 std::vector<LaunchResidual> Residuals(const params::ExecutionNoise& plant, int count,
                                       std::uint64_t seed, bool centre = false) {
-  const table::TableGeometry table = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   std::mt19937_64 random(seed);
   std::normal_distribution<double> unit;
   std::vector<LaunchResidual> out;

@@ -20,7 +20,9 @@ const physics::ModelParameters& Pool() {
   return p;
 }
 
-table::TableGeometry PoolTable() { return table::BuildTable(params::LoadTableSpec("pool-9ft")); }
+table::TableGeometry PoolTable() {
+  return table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
+}
 
 TrackedShot Tracked(const SyntheticScene& scene, double noise, std::uint64_t seed) {
   return SimulateTrackedShot(PoolTable(), Pool(), scene.starts, 0, scene.strike, kDuration,

@@ -38,7 +38,7 @@ TEST(RailContactsTest, NoneWithoutAContact) {
 // Simulated: the cue ball driven along the long axis into a ball 0.3 m from the foot rail sends
 // it to that rail (a straight shot keeps it on the axis, so it meets the rail, not a pocket).
 TEST(RailContactsTest, AStraightShotDrivesTheObjectBallToTheRail) {
-  const TableGeometry table = BuildTable(params::LoadTableSpec("pool-9ft"));
+  const TableGeometry table = BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const physics::ModelParameters params = params::LoadParameters("pool");
   const double y = 0.5 * table.width;
   std::vector<SceneBall> balls = {AtRest(0, table.length - 1.0, y),

@@ -13,7 +13,7 @@ namespace {
 // A camera's scene: touching balls measured overlapping, one a hair into the rail.
 TEST(SettledScene, PushesOverlapsApartByHalvesAndBallsOntoTheSurface) {
   const physics::ModelParameters p = params::LoadParameters("pool");
-  const TableGeometry t = BuildTable(params::LoadTableSpec("pool-9ft"));
+  const TableGeometry t = BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const double r = p.ball.radius;
   std::vector<SceneBall> balls = {
       {0, physics::MakeBallState(1.0, 0.6, 0.1, 0, 0, 0, 0)},

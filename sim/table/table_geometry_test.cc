@@ -305,7 +305,7 @@ TEST(TableGeometryTest, OnSurfaceAtPlainPlaces) {
   EXPECT_FALSE(pool.OnSurface({0.01, 0.01}, kPoolRadius));
 }
 
-TableSpec PoolSpec() { return params::LoadTableSpec("pool-9ft"); }
+TableSpec PoolSpec() { return params::LoadTableSpec(params::kDefaultTable); }
 
 void ExpectRefused(const TableSpec& spec, const std::string& reason) {
   try {

@@ -259,7 +259,8 @@ GameResult TableSimNode::PlayRack(int rack, const table::TableGeometry& geometry
 
 std::vector<GameResult> TableSimNode::RunGame() {
   AwaitPeersOfTheSameBuildAndPhysics();
-  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(kBreakTable));
+  const table::TableGeometry geometry =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   health_.Set(messages::kRealtimeClockSetting, options_.lockstep ? 0 : 1);
   health_.Publish(lcm_);
   std::vector<GameResult> games;

@@ -27,7 +27,7 @@ constexpr double kTrackGate = 1.0;
 std::pair<table::TableGeometry, std::vector<table::SceneBall>> LoadSessionScene(
     const TableSimOptions& options, const physics::ModelParameters& params) {
   if (options.scene == "break") {
-    table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(kBreakTable));
+    table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
     auto balls =
         table::Rack(table::RackKind::kEightBall, geometry, params.ball.radius, options.seed);
     return {std::move(geometry), std::move(balls)};

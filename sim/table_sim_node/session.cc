@@ -10,6 +10,7 @@
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
+#include "sim/params/table_specs.h"
 
 namespace billiard::table_sim_node {
 
@@ -101,9 +102,11 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
       ->check(CLI::Range(0.0, 1.0));
   app.add_option("--fault-seed", faults.seed, "Seed of the fault injection")->capture_default_str();
   app.add_option("--scene", options.scene,
-                 "A whole-table session instead of the shots: break (the eight-ball rack of "
-                 "--seed on pool-9ft) or a scene file (every ball at rest); the cue ball is "
-                 "struck once, rolling, at the ball nearest it");
+                 std::string("A whole-table session instead of the shots: break (the eight-ball "
+                             "rack of --seed on ") +
+                     params::kDefaultTable +
+                     ") or a scene file (every ball at rest); the cue ball is "
+                     "struck once, rolling, at the ball nearest it");
   app.add_option("--pot", line->pots,
                  "--scene: pot ball K (the scene's id) in pocket P (lower_left, ..., upper_right) "
                  "instead of the strike at the nearest ball, planned by the planner from the "

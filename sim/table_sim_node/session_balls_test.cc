@@ -12,8 +12,9 @@ namespace {
 
 constexpr double kRadius = 0.028575;
 
-table::TableGeometry Pool() { return table::BuildTable(params::LoadTableSpec("pool-9ft")); }
-
+table::TableGeometry Pool() {
+  return table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
+}
 
 TEST(SessionBalls, AnObjectBallsClassIsItsNumberAndTheCueBallsIsCue) {
   EXPECT_EQ(TruthClass(kCueBall), ball_state_t::CLASS_CUE);

@@ -90,7 +90,8 @@ TEST(StrokeExecution, StrikesTheCueBallAloneAndNothingOnARefusal) {
 // The table played to rest: every ball rests or has dropped, and the same strike plays the same.
 TEST(PlayedToRest, RunsTheTableUntilEveryBallRestsTheSameEveryTime) {
   const physics::ModelParameters plant = params::LoadParameters("pool");
-  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry geometry =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   std::vector<table::SceneBall> balls(2);
   balls[0].id = 4;
   balls[0].state.head<2>() = Eigen::Vector2d(1.5, 0.6);
@@ -113,7 +114,8 @@ TEST(PlayedToRest, RunsTheTableUntilEveryBallRestsTheSameEveryTime) {
 // just behind the cue ball meets that ball; a stroke beyond the robot's speed is out of range.
 // Raised clear of the rail, or in the open, the stroke is made.
 TEST(Unmakeable, RefusesAStrokeWhoseCueMeetsARailOrABallAndNoOther) {
-  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry geometry =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const double r = params::LoadParameters("pool").ball.radius;
   const cue::Robot gantry = params::LoadRobot("gantry");
   const double up = M_PI / 2;  // away from the lower rail

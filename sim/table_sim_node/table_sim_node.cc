@@ -253,7 +253,7 @@ std::vector<ShotResult> TableSimNode::Run() {
   const double frame_dt = 1.0 / options_.camera_rate;
   const physics::TableParameters& table = params_.table;
   // The robot's cue is checked on the break table's cushions and rails, at the parameter set's size.
-  table::TableSpec spec = params::LoadTableSpec(kBreakTable);
+  table::TableSpec spec = params::LoadTableSpec(params::kDefaultTable);
   spec.length = table.length;
   spec.width = table.width;
   const table::TableGeometry shots_table = table::BuildTable(spec);

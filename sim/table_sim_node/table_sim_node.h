@@ -74,9 +74,6 @@ struct FaultInjection {
   std::uint32_t seed = 7;
 };
 
-// The table of the "break" scene and of the games.
-inline constexpr char kBreakTable[] = "pool-9ft";
-
 // A game's new rack is shown this many settle times before its first shot: longer than the
 // estimator coasts the last rack's tracks (estimator::TrackerOptions::max_coast).
 inline constexpr int kNewLayoutSettles = 4;

@@ -65,7 +65,8 @@ TEST(AtRest, HoldsEachBallStillWhereItIs) {
 // into the pocket begins.
 TEST(OnTable, FollowsTheSimulationSinceTheStrikeAndDropsPocketedBalls) {
   const physics::ModelParameters p = params::LoadParameters("pool");
-  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry geometry =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   std::vector<table::SceneBall> balls(2);
   balls[0].id = 0;
   balls[0].state = physics::StrikeBall({2.0, -0.75 * M_PI, 0.0, 0.0, 0.0}, {0.3, 0.3}, p);

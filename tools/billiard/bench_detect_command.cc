@@ -8,6 +8,7 @@
 #include "bench/cross_validation.h"
 #include "bench/cross_validation_report.h"
 #include "bench/detection_benchmark.h"
+#include "bench/detection_report.h"
 #include "bench/detection_suite.h"
 #include "bench/hard_suite_report.h"
 #include "sim/params/parameter_sets.h"

@@ -21,6 +21,7 @@
 #include "sim/batch/wilson.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/match_command.h"
 #include "tools/billiard/scene_commands.h"
@@ -209,7 +210,7 @@ void Run(const BenchMatchArgs& args) {
   std::filesystem::create_directories(args.out, error);
   if (error) throw UsageError("--out: cannot make " + args.out + ": " + error.message());
   const physics::ModelParameters params = LoadParametersOption(params::kDefaultParameterSet);
-  const table::TableGeometry table = LoadTableOption("pool-9ft");
+  const table::TableGeometry table = LoadTableOption(params::kDefaultTable);
   batch::ThreadPool pool(args.threads);
   const auto start = std::chrono::steady_clock::now();
   nlohmann::json report = {{"racks", args.racks}, {"seed", args.seed}, {"noise", args.noise},

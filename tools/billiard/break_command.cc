@@ -9,12 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include "planner/game/break_search.h"
-#include "sim/batch/wilson.h"
 #include "sim/batch/thread_pool.h"
+#include "sim/batch/wilson.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
+#include "sim/params/table_specs.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/match_command.h"
 #include "tools/billiard/scene_commands.h"
@@ -96,7 +97,7 @@ void Run(const BenchBreakArgs& args) {
     throw UsageError(std::string("--robot: ") + e.what());
   }
   const physics::ModelParameters params = LoadParametersOption(params::kDefaultParameterSet);
-  const table::TableGeometry table = LoadTableOption("pool-9ft");
+  const table::TableGeometry table = LoadTableOption(params::kDefaultTable);
   const game::BreakSetting setting{table, params, game, noise, model_choice::TableMotion(params)};
   batch::ThreadPool pool(args.threads);
   game::Break optimised = game::StoredBreak(game);

@@ -9,13 +9,15 @@
 #include "bench/game_benchmark.h"
 #include "planner/choice/monte_carlo.h"
 #include "planner/choice/scene_balls.h"
+#include "planner/game/game_json.h"
 #include "planner/players/players.h"
-#include "sim/model_choice/model_choice.h"
 #include "sim/batch/thread_pool.h"
+#include "sim/model_choice/model_choice.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
 #include "sim/params/scene_file.h"
+#include "sim/params/table_specs.h"
 #include "sim/rules/rules.h"
 #include "sim/table/rack.h"
 #include "sim/table/table_simulation.h"
@@ -221,52 +223,6 @@ nlohmann::json ChoiceJson(const choice::ChoiceResult& r) {
   return j;
 }
 
-nlohmann::json GameJson(const game::GameRecord& game) {
-  nlohmann::json shots = nlohmann::json::array();
-  for (const game::ShotRecord& s : game.shots) {
-    nlohmann::json j;
-    j["shot"] = s.number;
-    j["visit"] = s.visit;
-    j["break"] = s.break_shot;
-    j["ball_in_hand"] = s.ball_in_hand;
-    j["cue_placement"] = s.cue_placement ? Point(*s.cue_placement) : nlohmann::json(nullptr);
-    j["status"] = s.status;
-    j["reason"] = s.reason;
-    j["ball"] = s.ball;
-    j["pocket"] = s.pocket;
-    j["kind"] = s.kind;
-    j["predicted"] = s.predicted;
-    j["likely"] = s.likely;
-    j["safety"] = s.safety;
-    j["cue"] = s.stroke ? CueStrokeJson(*s.stroke) : nlohmann::json(nullptr);
-    if (s.stroke && s.clearance) j["cue"]["clearance"] = ClearanceJson(*s.clearance);
-    j["first_contact"] = s.first_contact;
-    j["potted"] = s.potted;
-    j["called_potted"] = s.called_potted;
-    j["foul"] = s.foul;
-    j["foul_reason"] = s.foul_reason;
-    j["decision_us"] = s.decision_us;
-    shots.push_back(j);
-  }
-  const game::GameSummary& m = game.summary;
-  nlohmann::json summary = {{"shots", m.shots},
-                            {"attempts", m.attempts},
-                            {"pots", m.pots},
-                            {"pots_per_attempt", m.pots_per_attempt()},
-                            {"fouls", m.fouls},
-                            {"visits", m.visits},
-                            {"balls_potted", m.balls_potted},
-                            {"balls_per_visit", m.visits ? double(m.balls_potted) / m.visits : 0.0},
-                            {"cleared", m.cleared},
-                            {"run_out", m.run_out},
-                            {"end", game::GameEndName(m.end)},
-                            {"end_reason", m.end_reason},
-                            {"median_decision_us", m.median_decision_us}};
-  nlohmann::json left = nlohmann::json::array();
-  for (const table::SceneBall& b : game.final_balls) left.push_back(b.id);
-  return {{"shots", shots}, {"summary", summary}, {"balls_left", left}};
-}
-
 namespace {
 
 // A shot as a player reads it: the call (the break; a safety and why; or why nothing was
@@ -388,7 +344,7 @@ void AddPlayCommand(CLI::App& app) {
     if (rack->count()) {
       if (args->rack != "nine-ball") throw UsageError("--rack: only nine-ball is played");
       s.params = LoadParametersOption(params::kDefaultParameterSet);
-      s.table = LoadTableOption("pool-9ft");
+      s.table = LoadTableOption(params::kDefaultTable);
       s.balls = table::Rack(table::RackKind::kNineBall, s.table, s.params.ball.radius, args->seed);
       options.break_shot = !args->ball_in_hand;
       if (args->rules == "any") options.choice.rules = rules::Rules::kNineBall;
@@ -408,7 +364,7 @@ void AddPlayCommand(CLI::App& app) {
     const game::GameRecord game = game::PlayGame(s.table, s.params, s.balls, options, pool);
     PrintGame(game, options.shot_limit);
     if (args->json) {
-      nlohmann::json j = GameJson(game);
+      nlohmann::json j = game::GameJson(game);
       j["rules"] = rules::RulesName(options.choice.rules);
       j["noise"] = options.choice.noise.name;
       j["policy"] = options.player->Name();

@@ -13,8 +13,6 @@ namespace billiard::cli {
 
 // A choice as `choose-shot --json` prints it.
 nlohmann::json ChoiceJson(const choice::ChoiceResult& result);
-// A game as `play --json` prints it: the shots and the summary.
-nlohmann::json GameJson(const game::GameRecord& game);
 
 void AddChooseShotCommand(CLI::App& app);
 void AddPlayCommand(CLI::App& app);

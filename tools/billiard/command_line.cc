@@ -79,14 +79,6 @@ void RequireFinite(double value, const std::string& what) {
   if (!std::isfinite(value)) throw UsageError(what + ": numbers must be finite (no NaN or inf)");
 }
 
-nlohmann::json CueStrokeJson(const physics::CueStroke& stroke) {
-  return {{"speed", stroke.speed},
-          {"heading", stroke.heading},
-          {"tip_side", stroke.tip_side},
-          {"tip_height", stroke.tip_height},
-          {"elevation", stroke.elevation}};
-}
-
 std::string Fixed(double value, int decimals) {
   const double scale = std::pow(10.0, decimals);
   const double rounded = std::round(value * scale) / scale;
@@ -139,14 +131,6 @@ cue::Robot LoadRobotOption(const std::string& name_or_path) {
 std::optional<cue::Robot> LoadRobotOrNone(const std::string& name_or_path) {
   if (name_or_path == "none") return std::nullopt;
   return LoadRobotOption(name_or_path);
-}
-
-nlohmann::json ClearanceJson(const cue::CueClearance& clearance) {
-  nlohmann::json j = {{"clears", clearance.clears}, {"nearest", clearance.what}};
-  if (clearance.nearest == cue::Obstacle::kBall) j["ball"] = clearance.ball;
-  // An empty table and no body leave nothing near: no distance to give (JSON has no infinity).
-  j["distance"] = std::isfinite(clearance.distance) ? nlohmann::json(clearance.distance) : nlohmann::json(nullptr);
-  return j;
 }
 
 void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "planner/game/game_json.h"
 #include "sim/cue/clearance.h"
 #include "sim/cue/robot.h"
 #include "sim/physics/ball_state.h"
@@ -50,9 +51,10 @@ std::string NearestName(const std::string& word, const std::vector<std::string>&
 // "params": the set's name, and "params_file": the file it came from (when not built in).
 void DescribeParameters(const physics::ModelParameters& p, nlohmann::json* j);
 
-// A cue stroke as `plan` and `plan-pot` print it: {"speed", "heading", "tip_side", "tip_height",
-// "elevation"}, the object a scene's "cue" reads.
-nlohmann::json CueStrokeJson(const physics::CueStroke& stroke);
+// A cue stroke as `plan`, `plan-pot` and `play` print it (the object a scene's "cue" reads), and
+// its clearance (sim/cue/clearance.h) beside it: one writer with the Python module's.
+using game::ClearanceJson;
+using game::CueStrokeJson;
 
 // `value` rounded to `decimals` places as text, and "0" where it rounds to zero: a player reads
 // "0 mm", not "-1.73472e-18 m" or "-0.000".
@@ -84,10 +86,6 @@ std::optional<cue::Robot> LoadRobotOrNone(const std::string& name_or_path);
 inline constexpr char kRobotHelp[] =
     "The robot whose cue plays the strokes: gantry | player | FILE (sim/params/robots/): every "
     "stroke is planned at the elevation its cue needs to clear the balls, the rails and its body";
-
-// A stroke's clearance (sim/cue/clearance.h) as the planning commands print it beside its cue:
-// {"clears", "nearest" (what, in words), "ball" (its id, for a ball), "distance" [m]}.
-nlohmann::json ClearanceJson(const cue::CueClearance& clearance);
 
 // The most rows a trajectory file gets: a sample every 10 us of a 10 s shot, far finer than the
 // integrator's steps (about a hundred a shot), and at 130 to 180 bytes a row about 150 MB. A

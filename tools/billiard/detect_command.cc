@@ -26,6 +26,7 @@
 #include "sim/camera/camera_model.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/scene_file.h"
+#include "sim/params/table_specs.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/detect_options.h"
 #include "tools/billiard/detected_scene.h"
@@ -64,7 +65,7 @@ struct DetectArgs {
   std::string image, calib, params = params::kDefaultParameterSet, overlay, ball_set, ball_model;
   std::string identity = "rules", identity_model;
   std::string scene_out;
-  std::string table = "pool-9ft";
+  std::string table = params::kDefaultTable;
   double ball_radius_px = 0;
   bool json = false;
 };

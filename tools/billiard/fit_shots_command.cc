@@ -340,8 +340,9 @@ void RunBench(const BenchShotFitArgs& args) {
 
 
 struct IdentifyArgs {
-  std::string log, out, shots_out, params = params::kDefaultParameterSet, table = "pool-9ft",
-                                  fit_physics = "mu,rolling,cushion", tracks = "estimator";
+  std::string log, out, shots_out, params = params::kDefaultParameterSet,
+                                   table = params::kDefaultTable,
+                                   fit_physics = "mu,rolling,cushion", tracks = "estimator";
   int threads = batch::DefaultThreadCount(), rounds = 1;
   bool json = false;
 };

@@ -16,6 +16,7 @@
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/scene_commands.h"
 
@@ -67,7 +68,7 @@ std::string ProgressLine(const game::RackResult& r, const game::MatchRecord& so_
 void Run(const MatchArgs& args) {
   const game::MatchOptions options = OptionsOf(args);
   const physics::ModelParameters params = LoadParametersOption(params::kDefaultParameterSet);
-  const table::TableGeometry table = LoadTableOption("pool-9ft");
+  const table::TableGeometry table = LoadTableOption(params::kDefaultTable);
   batch::ThreadPool pool(args.threads);
   const std::array<std::string, 2> names = {std::string(options.players[0]->Name()) + " (A)",
                                             std::string(options.players[1]->Name()) + " (B)"};

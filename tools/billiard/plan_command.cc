@@ -10,9 +10,10 @@
 #include "planner/shot_planner.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
+#include "sim/params/table_specs.h"
 #include "sim/table/scene.h"
-#include "tools/billiard/scene_commands.h"
 #include "tools/billiard/command_line.h"
+#include "tools/billiard/scene_commands.h"
 
 namespace billiard::cli {
 
@@ -27,7 +28,7 @@ struct PlanArgs {
   std::string params = params::kDefaultParameterSet;
   bool no_refine = false;
   std::string robot = params::kDefaultRobot;
-  std::string table = "pool-9ft";
+  std::string table = params::kDefaultTable;
   bool json = false;
 };
 

@@ -12,6 +12,7 @@
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
 #include "sim/params/scene_file.h"
+#include "sim/params/table_specs.h"
 #include "sim/table/table_simulation.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/scene_commands.h"
@@ -176,7 +177,7 @@ void AddPlanPotCommand(CLI::App& app) {
 void AddPotLayoutCommand(CLI::App& app) {
   struct Args {
     std::uint64_t seed = 1;
-    std::string table = "pool-9ft";
+    std::string table = params::kDefaultTable;
     std::string params = "pool";
     bool clear = false;
     double max_cut_deg = pot::testing::kClearCutDeg;

@@ -265,8 +265,9 @@ void AddRackCommand(CLI::App& app) {
   cmd->add_option("kind", args->kind, "eight-ball | nine-ball | snooker | three-cushion")
       ->required();
   cmd->add_option("--table", args->table,
-                  "Table specification (default: pool-9ft; snooker-12ft for snooker, "
-                  "carom-10ft for three-cushion)");
+                  std::string("Table specification (default: ") + params::kDefaultTable +
+                      "; snooker-12ft for snooker, "
+                      "carom-10ft for three-cushion)");
   cmd->add_option("--params", args->params,
                   "Parameter set (default: pool; snooker and carom for their racks)");
   cmd->add_option("--seed", args->seed, "Seed of the rack's order and gaps")
@@ -286,7 +287,7 @@ void AddRackCommand(CLI::App& app) {
     if (scene.table.empty()) {
       scene.table = kind == table::RackKind::kSnooker        ? "snooker-12ft"
                     : kind == table::RackKind::kThreeCushion ? "carom-10ft"
-                                                             : "pool-9ft";
+                                                             : params::kDefaultTable;
     }
     if (!params_given && kind == table::RackKind::kSnooker) scene.params = "snooker";
     if (!params_given && kind == table::RackKind::kThreeCushion) scene.params = "carom";
@@ -304,7 +305,7 @@ void AddRackCommand(CLI::App& app) {
 void AddBenchScenesCommand(CLI::App& app) {
   struct Args {
     bench::SceneBenchmarkOptions options;
-    std::string table = "pool-9ft";
+    std::string table = params::kDefaultTable;
     std::string params = params::kDefaultParameterSet;
     std::string out;
     std::string cushion_model;  // "" with model "": every run below

@@ -261,18 +261,20 @@ PYBIND11_MODULE(billiard, m) {
         "The state a cue stroke launches a ball at `at` with (cue strike model with squirt): "
         "tip_side > 0 right english, tip_height > 0 follow, < 0 draw");
   m.def("simulate_scene", &SimulateScene, arg("states"), arg("ids") = py::none(),
-        arg("table") = "pool-9ft", arg("params") = "pool", arg("t_end") = py::none(),
+        arg("table") = billiard::params::kDefaultTable, arg("params") = "pool",
+        arg("t_end") = py::none(),
         "Every ball of a table scene (N x 7 states, ids default 0..N-1, id 0 the cue ball), event "
         "by event, the closed form between events: 'ids', final 'states', 'pocketed', 'events'");
-  m.def("plan", &Plan, arg("from_"), arg("to"), arg("final_speed") = 0.0,
-        arg("spin") = "natural", arg("side_spin") = 0.0, arg("params") = "pool",
-        arg("robot") = billiard::params::kDefaultRobot, arg("table") = "pool-9ft",
+  m.def("plan", &Plan, arg("from_"), arg("to"), arg("final_speed") = 0.0, arg("spin") = "natural",
+        arg("side_spin") = 0.0, arg("params") = "pool",
+        arg("robot") = billiard::params::kDefaultRobot,
+        arg("table") = billiard::params::kDefaultTable,
         "The launch and cue stroke that send a ball from `from_` to `to`, at the elevation the "
         "robot's cue needs on the table; raises Refused");
   m.def("plan_pot", &PlanPot, arg("states"), arg("ids") = py::none(), arg("ball") = 1,
         arg("pocket") = "upper_right", arg("kind") = "any", arg("cue_to") = py::none(),
-        arg("cue_radius") = 0.0, arg("table") = "pool-9ft", arg("params") = "pool",
-        arg("robot") = billiard::params::kDefaultRobot,
+        arg("cue_radius") = 0.0, arg("table") = billiard::params::kDefaultTable,
+        arg("params") = "pool", arg("robot") = billiard::params::kDefaultRobot,
         "The stroke that pots `ball` in `pocket` from a scene (N x 7 states, id 0 the cue ball), "
         "planned against the whole-table simulation: 'kind', 'why', 'v0', 'w0', 'cue', "
         "'margin_deg', 'speed_window', 'cue_rest', 'paths'; raises Refused");

@@ -151,22 +151,45 @@ def test_choose_shot_agrees_with_the_cli_to_the_bit():
         billiard.choose_shot(states, ids=ids, rules="snooker")
 
 
+# The decision's wall time, which no two runs share.
+TIMES = {"decision_us", "median_decision_us"}
+
+
+def assert_same_game(mine, theirs):
+    """billiard.play's answer is play --json's game: the same keys and values, the times aside
+    (the CLI adds the options it was given: the caller of play knows its own)."""
+    assert set(mine) == {"shots", "summary", "balls_left"} <= set(theirs)
+    assert len(mine["shots"]) == len(theirs["shots"]) == mine["summary"]["shots"]
+    for a, b in zip(mine["shots"], theirs["shots"]):
+        assert set(a) == set(b) and "safety" in a and "cue" in a
+        assert {k: v for k, v in a.items() if k not in TIMES} == {
+            k: v for k, v in b.items() if k not in TIMES}
+    assert {k: v for k, v in mine["summary"].items() if k not in TIMES} == {
+        k: v for k, v in theirs["summary"].items() if k not in TIMES}
+    assert mine["balls_left"] == theirs["balls_left"]
+
+
 def test_play_agrees_with_the_cli_shot_by_shot():
     r = billiard.play(rack="nine-ball", seed=3, samples=16, shot_limit=4)
     j = cli("play", "--rack", "nine-ball", "--seed", "3", "--samples", "16", "--shot-limit", "4")
-    assert len(r["shots"]) == len(j["shots"]) == r["summary"]["shots"]
-    for mine, theirs in zip(r["shots"], j["shots"]):
-        for key, value in mine.items():
-            got = value.tolist() if isinstance(value, np.ndarray) else value
-            assert got == theirs[key], key
-    for key, value in r["summary"].items():
-        assert value == j["summary"][key], key
-    assert r["balls_left"] == j["balls_left"]
+    assert_same_game(r, j)
     assert r["shots"][0]["break"]
     with pytest.raises(ValueError):
         billiard.play()
     with pytest.raises(ValueError):
         billiard.play(rack="eight-ball")
+
+
+def test_play_on_a_scene_agrees_with_the_cli_stroke_and_clearance_included():
+    states, ids = scene_arrays(NINE_BALL)
+    r = billiard.play(states, ids=ids, rules="nine-ball", samples=16, shot_limit=2)
+    j = cli("play", "--scene", str(NINE_BALL), "--rules", "nine-ball", "--samples", "16",
+            "--shot-limit", "2")
+    assert_same_game(r, j)
+    first = r["shots"][0]
+    assert not first["break"] and first["cue"]["speed"] > 0
+    assert isinstance(first["safety"], bool)
+    assert set(first["cue"]["clearance"]) >= {"clears", "nearest", "distance"}
 
 
 def read_png_rgb(path):

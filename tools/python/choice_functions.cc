@@ -9,10 +9,12 @@
 
 #include "planner/choice/choice_result.h"
 #include "planner/game/game.h"
+#include "planner/game/game_json.h"
 #include "planner/players/players.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/robots.h"
+#include "sim/params/table_specs.h"
 #include "sim/rules/rules.h"
 #include "sim/table/rack.h"
 #include "tools/python/conversions.h"
@@ -106,50 +108,12 @@ py::dict ChooseShot(const Array& states, const std::optional<std::vector<int>>& 
   return out;
 }
 
-// A shot as play --json's "shots" have it.
-py::dict ShotDict(const game::ShotRecord& s) {
-  py::dict d;
-  d["shot"] = s.number;
-  d["visit"] = s.visit;
-  d["break"] = s.break_shot;
-  d["ball_in_hand"] = s.ball_in_hand;
-  d["cue_placement"] = Point(s.cue_placement);
-  d["status"] = s.status;
-  d["reason"] = s.reason;
-  d["ball"] = s.ball;
-  d["pocket"] = s.pocket;
-  d["kind"] = s.kind;
-  d["predicted"] = s.predicted;
-  d["likely"] = s.likely;
-  d["first_contact"] = s.first_contact;
-  d["potted"] = s.potted;
-  d["called_potted"] = s.called_potted;
-  d["foul"] = s.foul;
-  d["foul_reason"] = s.foul_reason;
-  return d;
-}
-
-py::dict SummaryDict(const game::GameSummary& m) {
-  py::dict d;
-  d["shots"] = m.shots;
-  d["attempts"] = m.attempts;
-  d["pots"] = m.pots;
-  d["pots_per_attempt"] = m.pots_per_attempt();
-  d["fouls"] = m.fouls;
-  d["visits"] = m.visits;
-  d["balls_potted"] = m.balls_potted;
-  d["cleared"] = m.cleared;
-  d["run_out"] = m.run_out;
-  d["end"] = game::GameEndName(m.end);
-  d["end_reason"] = m.end_reason;
-  return d;
-}
-
-// play: the scene's balls, or with rack="nine-ball" the seeded rack broken first, as the CLI.
-py::dict Play(const std::optional<Array>& states, const std::optional<std::vector<int>>& ids,
-              const std::optional<std::string>& rack, const std::string& policy, int shot_limit,
-              bool ball_in_hand, const ChoiceArgs& args, const std::string& table_name,
-              const std::string& params_name) {
+// play: the scene's balls, or with rack="nine-ball" the seeded rack broken first, as the CLI;
+// the game as `play --json` writes it.
+py::object Play(const std::optional<Array>& states, const std::optional<std::vector<int>>& ids,
+                const std::optional<std::string>& rack, const std::string& policy, int shot_limit,
+                bool ball_in_hand, const ChoiceArgs& args, const std::string& table_name,
+                const std::string& params_name) {
   if (states.has_value() == rack.has_value()) throw py::value_error("give states or rack, not both");
   if (shot_limit < 1) throw py::value_error("shot_limit must be >= 1");
   const table::TableGeometry table = Table(table_name);
@@ -180,14 +144,7 @@ py::dict Play(const std::optional<Array>& states, const std::optional<std::vecto
     py::gil_scoped_release release;
     game = game::PlayGame(table, params, balls, options, pool);
   }
-  py::list shots, left;
-  for (const game::ShotRecord& s : game.shots) shots.append(ShotDict(s));
-  for (const table::SceneBall& b : game.final_balls) left.append(b.id);
-  py::dict out;
-  out["shots"] = shots;
-  out["summary"] = SummaryDict(game.summary);
-  out["balls_left"] = left;
-  return out;
+  return ToPython(game::GameJson(game));
 }
 
 }  // namespace
@@ -205,8 +162,8 @@ void AddChoiceFunctions(py::module_& m) {
       },
       arg("states"), arg("ids") = py::none(), arg("rules") = "any", arg("ball_in_hand") = false,
       arg("noise") = params::kDefaultNoise, arg("samples") = 64, arg("confirm_samples") = 256,
-      arg("seed") = 1, arg("threads") = 0, arg("table") = "pool-9ft", arg("params") = "pool",
-      arg("robot") = params::kDefaultRobot,
+      arg("seed") = 1, arg("threads") = 0, arg("table") = params::kDefaultTable,
+      arg("params") = "pool", arg("robot") = params::kDefaultRobot,
       "billiard choose-shot: the pot most likely to drop under the execution noise, with a "
       "one-shot lookahead, from a scene of balls at rest (N x 7 states, id 0 the cue ball): "
       "'choice' (ball, pocket, kind, cue, success_probability, probability_stderr, "
@@ -226,7 +183,8 @@ void AddChoiceFunctions(py::module_& m) {
       arg("rules") = "any", arg("policy") = "ours", arg("shot_limit") = 40,
       arg("ball_in_hand") = false, arg("noise") = params::kDefaultNoise, arg("samples") = 64,
       arg("confirm_samples") = 256, arg("seed") = 1, arg("threads") = 0,
-      arg("table") = "pool-9ft", arg("params") = "pool", arg("robot") = params::kDefaultRobot,
+      arg("table") = params::kDefaultTable, arg("params") = "pool",
+      arg("robot") = params::kDefaultRobot,
       "billiard play: a rack played in simulation shot by shot (states, or rack='nine-ball' "
       "racked from the seed and broken): 'shots' (each call, prediction, what dropped, any "
       "foul), 'summary' (pots per attempt, visits, fouls, cleared, run_out, end), 'balls_left'");

@@ -1,8 +1,10 @@
 #include "tools/python/conversions.h"
 
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
+#include "planner/game/game_json.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
 #include "sim/params/table_specs.h"
@@ -78,23 +80,40 @@ std::vector<table::SceneBall> SceneBalls(const Array& states, const std::optiona
   return balls;
 }
 
-py::dict CueJson(const physics::CueStroke& stroke, const std::optional<cue::CueClearance>& clearance) {
-  py::dict cue;
-  cue["speed"] = stroke.speed;
-  cue["heading"] = stroke.heading;
-  cue["tip_side"] = stroke.tip_side;
-  cue["tip_height"] = stroke.tip_height;
-  cue["elevation"] = stroke.elevation;
-  if (clearance) {
-    // As the CLI writes it (ClearanceJson): no distance when nothing is near.
-    py::dict c;
-    c["clears"] = clearance->clears;
-    c["nearest"] = clearance->what;
-    if (clearance->nearest == cue::Obstacle::kBall) c["ball"] = clearance->ball;
-    c["distance"] = std::isfinite(clearance->distance) ? py::object(py::float_(clearance->distance)) : py::none();
-    cue["clearance"] = c;
+py::object ToPython(const nlohmann::json& json) {
+  switch (json.type()) {
+    case nlohmann::json::value_t::null:
+      return py::none();
+    case nlohmann::json::value_t::boolean:
+      return py::bool_(json.get<bool>());
+    case nlohmann::json::value_t::number_integer:
+      return py::int_(json.get<std::int64_t>());
+    case nlohmann::json::value_t::number_unsigned:
+      return py::int_(json.get<std::uint64_t>());
+    case nlohmann::json::value_t::number_float:
+      return py::float_(json.get<double>());
+    case nlohmann::json::value_t::string:
+      return py::str(json.get<std::string>());
+    case nlohmann::json::value_t::array: {
+      py::list list;
+      for (const nlohmann::json& item : json) list.append(ToPython(item));
+      return list;
+    }
+    case nlohmann::json::value_t::object: {
+      py::dict dict;
+      for (const auto& [key, value] : json.items()) dict[py::str(key)] = ToPython(value);
+      return dict;
+    }
+    default:
+      throw py::value_error("JSON holds a value Python has no type for");
   }
-  return cue;
+}
+
+py::dict CueJson(const physics::CueStroke& stroke,
+                 const std::optional<cue::CueClearance>& clearance) {
+  nlohmann::json cue = game::CueStrokeJson(stroke);
+  if (clearance) cue["clearance"] = game::ClearanceJson(*clearance);
+  return ToPython(cue);
 }
 
 }  // namespace billiard::python

@@ -7,6 +7,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,9 +48,12 @@ Array StateArray(const physics::BallState& s);
 // The balls of an N x 7 array of states, ids 0..N-1 unless given.
 std::vector<table::SceneBall> SceneBalls(const Array& states, const std::optional<std::vector<int>>& ids);
 
-// A stroke as the CLI's JSON has it: {"speed", "heading", "tip_side", "tip_height", "elevation"},
-// and "clearance" ({"clears", "nearest", "ball" for a ball, "distance"}) where the robot's cue was
-// checked.
+// JSON as Python: objects as dicts, arrays as lists, null as None; the CLI's own JSON writers
+// (planner/game/game_json.h) give the module's answers where they are the same.
+py::object ToPython(const nlohmann::json& json);
+
+// A stroke as the CLI's JSON has it (game::CueStrokeJson), with "clearance"
+// (game::ClearanceJson) where the robot's cue was checked.
 py::dict CueJson(const physics::CueStroke& stroke, const std::optional<cue::CueClearance>& clearance = std::nullopt);
 
 }  // namespace billiard::python

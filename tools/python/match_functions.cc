@@ -14,14 +14,12 @@
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
 #include "tools/python/conversions.h"
 
 namespace billiard::python {
 
 namespace {
-
-// The table `billiard match` plays on (its parameter set is params::kDefaultParameterSet).
-constexpr const char* kMatchTable = "pool-9ft";
 
 // What names a match, as `billiard match`'s options do.
 struct MatchArgs {
@@ -75,7 +73,7 @@ py::dict PlayRack(const MatchArgs& args, int rack, int threads) {
   if (threads < 0) throw py::value_error("threads must be >= 0");
   const game::MatchOptions options = OptionsOf(args);
   const physics::ModelParameters params = Params(params::kDefaultParameterSet);
-  const table::TableGeometry table = Table(kMatchTable);
+  const table::TableGeometry table = Table(params::kDefaultTable);
   batch::ThreadPool pool(threads > 0 ? threads : batch::DefaultThreadCount());
   std::array<game::PlayerTally, 2> tallies;
   game::RackResult result;

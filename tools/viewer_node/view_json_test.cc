@@ -65,7 +65,7 @@ TEST(BallLabel, NumbersOnPoolsBallsOnly) {
 // The WPA 9 ft table: 6 pockets, the corners' at the playing surface's corners (within a mouth),
 // the middles' at half the length.
 TEST(TableJson, SixPocketsWhereTheTableHasThem) {
-  const table::TableGeometry pool = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry pool = table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const nlohmann::json j = TableJson(pool);
   ASSERT_EQ(j["pockets"].size(), 6u);
   const auto centre = [&](int k) {

@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
   CLI::App app("viewer_node: a live view of the table in a web browser, from LCM");
   billiard::nodes::OneLineErrors(app, "viewer_node");
   billiard::nodes::VersionFlag(app, "viewer_node");
-  std::string lcm_url, params_name = "pool", table_name = "pool-9ft", host = "127.0.0.1";
+  std::string lcm_url, params_name = "pool", table_name = billiard::params::kDefaultTable,
+                       host = "127.0.0.1";
   int port = 8765;
   app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL, else LCM's default)");
   app.add_option("--params", params_name, "Parameter set (its table's size)")->capture_default_str();

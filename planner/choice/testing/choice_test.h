@@ -28,7 +28,7 @@ class ChoiceTest : public ::testing::Test {
  protected:
   ChoiceTest()
       : params_(params::LoadParameters("pool")),
-        table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))) {}
+        table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))) {}
 
   // The cue ball and ball 1 on the upper right corner pocket's diagonal, `object_back` and
   // `object_back + cue_back` from the pocket: a dead-straight pot.

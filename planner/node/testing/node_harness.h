@@ -157,7 +157,8 @@ class PlannerNodePotTest : public PlannerNodeTest {
     return nullptr;
   }
 
-  const table::TableGeometry table_ = table::BuildTable(params::LoadTableSpec("pool-9ft"));
+  const table::TableGeometry table_ =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
 };
 
 }  // namespace billiard::planner_node::testing

@@ -24,9 +24,8 @@ namespace billiard::pot::testing {
 class PotFixture : public ::testing::Test {
  protected:
   PotFixture()
-      : table_(table::BuildTable(params::LoadTableSpec("pool-9ft"))),
+      : table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))),
         params_(params::LoadParameters("pool")) {}
-
 
   // The search context of the pot of ball `object` into `pocket` among `balls`.
   SearchContext Search(const std::vector<table::SceneBall>& balls, int object, const std::string& pocket,

@@ -16,8 +16,7 @@ namespace billiard::camera_node::testing {
 
 namespace {
 
-// The table of the closed loop's break (table_sim_node's kBreakTable) and its parameter set.
-constexpr char kTable[] = "pool-9ft";
+// The parameter set of the closed loop's break (on params::kDefaultTable, as table_sim_node's).
 constexpr char kParameters[] = "pool";
 
 }  // namespace
@@ -25,7 +24,8 @@ constexpr char kParameters[] = "pool";
 BreakVideo WriteBreakVideo(const std::string& path, const BreakVideoOptions& options,
                            const FrameTap& tap) {
   const physics::ModelParameters params = params::LoadParameters(kParameters);
-  const table::TableGeometry geometry = table::BuildTable(params::LoadTableSpec(kTable));
+  const table::TableGeometry geometry =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
   const std::vector<table::SceneBall> scene =
       table::testing::SeededBreak(geometry, params, options.seed);
   table::TableSimulation sim(geometry, params, scene);
