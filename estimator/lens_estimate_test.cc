@@ -89,16 +89,18 @@ cv::Mat Render(const camera::CameraModel& camera) {
                          0.0);
 }
 
-// The hard suite's lens camera (bench/hard_suite.h): overhead, the table filling the frame.
-camera::CameraModel LensCamera(double k1) {
-  constexpr double kHeightAboveCloth = 2.5, kFill = 1.05;
-  return camera::CameraModel::Overhead(Pool().table, kWidth, kHeight, kHeightAboveCloth, kFill,
+// An overhead camera with the lens, the table spanning `fill` of the frame's width through a
+// pinhole (k1 = -0.3 with 1.05: the hard suite's lens camera, bench/hard_suite.h, the lens pulling
+// the table's ends into the frame).
+camera::CameraModel LensCamera(double k1, double fill = 0.92) {
+  constexpr double kHeightAboveCloth = 2.5;
+  return camera::CameraModel::Overhead(Pool().table, kWidth, kHeight, kHeightAboveCloth, fill,
                                        {k1, 0, 0, 0, 0});
 }
 
 // The largest distance [px] of the playing surface's true edge (on the cloth, which an overhead
 // camera sees every cushion's face meet), projected through the camera's lens, from the side
-// found along it.
+// found along it, where it is in the frame.
 double WorstSidePx(const TableRegion& table, const camera::CameraModel& camera) {
   const physics::TableParameters& t = Pool().table;
   const std::array<Eigen::Vector3d, 4> corners = {
@@ -112,7 +114,10 @@ double WorstSidePx(const TableRegion& table, const camera::CameraModel& camera) 
       double worst = 0;
       for (int s = 0; s <= kSamples; ++s) {
         const Eigen::Vector3d p = corners[i] + (corners[(i + 1) % 4] - corners[i]) * s / kSamples;
-        worst = std::max(worst, table.DistanceToSide(j, camera.Project(p)));
+        const Eigen::Vector2d pixel = camera.Project(p);
+        if (cv::Rect(0, 0, kWidth, kHeight).contains(cv::Point(pixel.x(), pixel.y()))) {
+          worst = std::max(worst, table.DistanceToSide(j, pixel));
+        }
       }
       best = std::min(best, worst);
     }
@@ -127,8 +132,8 @@ double WorstSidePx(const TableRegion& table, const camera::CameraModel& camera) 
 // it follows is the cushions' foot, not a painted line).
 TEST(LensEstimate, FindsTheTableThroughABarrelLens) {
   constexpr double kSideTolerancePx = 3.0, kK1Tolerance = 0.1;
-  for (const double k1 : {-0.3, -0.15}) {
-    const camera::CameraModel camera = LensCamera(k1);
+  for (const auto& [k1, fill] : {std::pair{-0.3, 1.05}, std::pair{-0.15, 0.92}}) {
+    const camera::CameraModel camera = LensCamera(k1, fill);
     const TableSearch search = FindTable(Render(camera));
     ASSERT_TRUE(search.table) << k1 << ": " << search.reason;
     const double seen = k1 * std::pow(kWidth / camera.fx, 2);

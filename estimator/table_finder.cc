@@ -322,8 +322,7 @@ RadialLens OutlineLens(const std::vector<cv::Point>& outline, const std::vector<
       sides[i].emplace_back(p.x / scale, p.y / scale);
     }
   }
-  const auto e = EstimateRadialLens(sides, size, 1.0 / scale); fprintf(stderr, "DBG pin %.3f best %.3f k1 %.3f n %zu %zu %zu %zu\n", e.pinhole_rms_px, e.best_rms_px, e.best_k1, sides[0].size(), sides[1].size(), sides[2].size(), sides[3].size());
-  return e.lens;
+  return EstimateRadialLens(sides, size, 1.0 / scale).lens;
 }
 
 TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens);
