@@ -6,6 +6,8 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
+#include "sim/physics/golden_section.h"
+
 namespace billiard::estimator {
 
 namespace {
@@ -16,9 +18,10 @@ constexpr int kNewtonIterations = 30;
 // The standard deviation of normal errors over their median absolute value.
 constexpr double kMadToSigma = 1.4826;
 constexpr double kNewtonTolerancePx = 1e-9;
-// The grid over the k1 range, and the golden-section iterations refining its best within a step.
+// The grid over the k1 range, and the bracket golden-section search (Kiefer 1953) narrows the
+// grid's best to within a step of it.
 constexpr int kGridSteps = 120;
-constexpr int kGoldenIterations = 40;
+constexpr double kGoldenBracket = 1e-6;
 // The pinhole canvas holds the sides' points' box widened by this share of it on each side: the
 // points stop short of the table's corners (the corner pockets are left out).
 constexpr double kCanvasMargin = 0.15;
@@ -127,20 +130,9 @@ double BestK1(RadialLens lens, const std::array<std::vector<Eigen::Vector2d>, 4>
     const double k1 = kLensK1Min + i * step, r = residual(k1);
     if (r < best_residual) best = k1, best_residual = r;
   }
-  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = best - step, b = best + step;
-  double c = b - ratio * (b - a), d = a + ratio * (b - a);
-  double rc = residual(c), rd = residual(d);
-  for (int i = 0; i < kGoldenIterations; ++i) {
-    if (rc < rd) {
-      b = d, d = c, rd = rc;
-      c = b - ratio * (b - a), rc = residual(c);
-    } else {
-      a = c, c = d, rc = rd;
-      d = a + ratio * (b - a), rd = residual(d);
-    }
-  }
-  const double refined = 0.5 * (a + b);
+  const double refined = physics::GoldenSectionMinimum(
+      residual, best - step, best + step,
+      [](double lo, double hi) { return hi - lo < kGoldenBracket; });
   return residual(refined) < best_residual ? refined : best;
 }
 
