@@ -130,9 +130,9 @@ double BestK1(RadialLens lens, const std::array<std::vector<Eigen::Vector2d>, 4>
     const double k1 = kLensK1Min + i * step, r = residual(k1);
     if (r < best_residual) best = k1, best_residual = r;
   }
-  const double refined = physics::GoldenSectionMinimum(
-      residual, best - step, best + step,
-      [](double lo, double hi) { return hi - lo < kGoldenBracket; });
+  const double refined =
+      physics::GoldenSectionMinimum(residual, best - step, best + step,
+                                    [](double lo, double hi) { return hi - lo < kGoldenBracket; });
   return residual(refined) < best_residual ? refined : best;
 }
 
@@ -153,8 +153,8 @@ void FitCanvas(const std::array<std::vector<Eigen::Vector2d>, 4>& sides, const c
   const Eigen::Vector2d extent = (high - low + 2 * margin).cwiseMin(largest);
   const Eigen::Vector2d middle = 0.5 * (low + high);
   lens->canvas_origin = (middle - 0.5 * extent).array().floor();
-  lens->canvas = cv::Size(static_cast<int>(std::ceil(extent.x())),
-                          static_cast<int>(std::ceil(extent.y())));
+  lens->canvas =
+      cv::Size(static_cast<int>(std::ceil(extent.x())), static_cast<int>(std::ceil(extent.y())));
 }
 
 }  // namespace
@@ -190,7 +190,8 @@ cv::Mat RadialLens::Undistort(const cv::Mat& image) const {
     }
   }
   cv::Mat pinhole;
-  cv::remap(image, pinhole, map_x, map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
+  cv::remap(image, pinhole, map_x, map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT,
+            cv::Scalar::all(0));
   return pinhole;
 }
 

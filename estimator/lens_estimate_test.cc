@@ -164,7 +164,6 @@ TEST(LensEstimate, AFrameWithoutATableStaysWithoutOne) {
   cv::Mat mat(kHeight, kWidth, CV_8UC3, cv::Scalar(30, 30, 30));
   cv::circle(mat, {kWidth / 2, kHeight / 2}, 300, cv::Scalar(60, 110, 30), cv::FILLED);
   EXPECT_FALSE(FindTable(mat).table);
-
 }
 
 }  // namespace
