@@ -197,8 +197,8 @@ std::vector<bool> Occlude(const Case& c, const render::RenderOptions& options,
 
 }  // namespace
 
-std::vector<HardFrame> RenderHardSuite(const physics::ModelParameters& params,
-                                       std::uint32_t seed) {
+std::vector<HardFrame> RenderHardSuite(const physics::ModelParameters& params, std::uint32_t seed,
+                                       const std::string& only_case) {
   const double r = params.ball.radius;
   const std::vector<SuiteCloth> cloths = {SuiteCloths()[0], SuiteCloths()[1], SuiteCloths()[3]};
   std::mt19937 rng(seed);
@@ -210,6 +210,11 @@ std::vector<HardFrame> RenderHardSuite(const physics::ModelParameters& params,
     for (const SuiteCloth& cloth : cloths) {
       for (const bool rack : {false, true}) {
         const std::vector<Eigen::Vector2d> balls = SceneBalls(params, rack, seed + scene, &rng);
+        if (!only_case.empty() && c.condition.rfind(only_case, 0) != 0) {
+          along(rng);  // as when rendered: the cases kept are the whole suite's frames
+          ++scene;
+          continue;
+        }
         const render::RenderOptions options = SuiteRenderOptions(cloth, seed + scene);
         cv::Mat image = render::TableRenderer(c.camera, params, options).Render(PoolBalls(balls), 0);
         const std::vector<bool> hidden = Occlude(c, options, balls, r, along(rng), &image);
@@ -237,12 +242,8 @@ std::array<double, 4> SideErrorsPx(const HardFrame& truth, const estimator::Tabl
     if (truth.sides[k].empty()) continue;
     double best = HUGE_VAL;
     for (int j = 0; j < 4; ++j) {
-      const Eigen::Vector3d line =
-          table.corners[j].homogeneous().cross(table.corners[(j + 1) % 4].homogeneous());
       double worst = 0;
-      for (const auto& p : truth.sides[k]) {
-        worst = std::max(worst, std::abs(line.dot(p.homogeneous())) / line.head<2>().norm());
-      }
+      for (const auto& p : truth.sides[k]) worst = std::max(worst, table.DistanceToSide(j, p));
       best = std::min(best, worst);
     }
     errors[k] = best;

@@ -53,13 +53,16 @@ struct HardFrame {
   double tolerance_px = 2.0;
 };
 
-// The suite's frames, rendered, with their truth.
+// The suite's frames, rendered, with their truth; only the cases whose condition begins with
+// `only_case` when it is given (the same frames as in the whole suite).
 std::vector<HardFrame> RenderHardSuite(const physics::ModelParameters& params,
-                                       std::uint32_t seed = 2026);
+                                       std::uint32_t seed = 2026,
+                                       const std::string& only_case = "");
 
 // The error [px] of a found table's sides against the true ones: for each true side in the frame,
-// the largest distance of its points from the nearest found side's line (the found side it
-// matches); -1 for a side out of the frame.
+// the largest distance of its points from the nearest found side (the found side it matches: its
+// line, or through the lens the finder found the curve that is its image,
+// TableRegion::DistanceToSide); -1 for a side out of the frame.
 std::array<double, 4> SideErrorsPx(const HardFrame& truth, const estimator::TableRegion& table);
 
 }  // namespace billiard::bench

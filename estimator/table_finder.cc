@@ -64,8 +64,10 @@ struct Line {
 // outline along a side is a straight stretch where the cloth runs up to the cushion, and others
 // where an arm or a cue hides it, or where the cushion's top, of the cloth's colour, joins the bed
 // for a while: the best supported line may bridge two of them, and one of the others be the side.
-std::vector<Line> FitSides(const std::vector<cv::Point>& outline, const cv::Point2d& a,
-                           const cv::Point2d& b, double perimeter) {
+// The outline points along the middle of the side from `a` to `b` (between kSideEnd and
+// 1 - kSideEnd along it, within kSideBand of the perimeter of it).
+std::vector<cv::Point2d> SidePoints(const std::vector<cv::Point>& outline, const cv::Point2d& a,
+                                    const cv::Point2d& b, double perimeter) {
   const cv::Point2d along = b - a;
   const double length = cv::norm(along);
   if (length < 1) return {};
@@ -78,6 +80,16 @@ std::vector<Line> FitSides(const std::vector<cv::Point>& outline, const cv::Poin
       points.push_back(p);
     }
   }
+  return points;
+}
+
+std::vector<Line> FitSides(const std::vector<cv::Point>& outline, const cv::Point2d& a,
+                           const cv::Point2d& b, double perimeter) {
+  const cv::Point2d along = b - a;
+  const double length = cv::norm(along);
+  if (length < 1) return {};
+  const cv::Point2d u = along / length;
+  std::vector<cv::Point2d> points = SidePoints(outline, a, b, perimeter);
   const double min_points = std::max(2.0, kMinStretch * static_cast<double>(points.size()));
   std::vector<Line> lines;
   std::mt19937 random(1);
@@ -300,9 +312,45 @@ std::array<Eigen::Vector3d, 4> CushionNoses(const cv::Mat& bgr,
   return lines;
 }
 
-}  // namespace
+// The lens the cloth's outline implies (lens_estimate.h): its points along the middle of each side
+// of the hull's quadrilateral `polygon` [search px, at `scale` of the frame's].
+RadialLens OutlineLens(const std::vector<cv::Point>& outline, const std::vector<cv::Point>& polygon,
+                       double perimeter, double scale, const cv::Size& size) {
+  std::array<std::vector<Eigen::Vector2d>, 4> sides;
+  for (int i = 0; i < 4; ++i) {
+    for (const auto& p : SidePoints(outline, polygon[i], polygon[(i + 1) % 4], perimeter)) {
+      sides[i].emplace_back(p.x / scale, p.y / scale);
+    }
+  }
+  return EstimateRadialLens(sides, size, 1.0 / scale).lens;
+}
 
-TableSearch FindTable(const cv::Mat& bgr) {
+TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens);
+
+// The table found in the frame redrawn as `lens`'s pinhole sees it, given in the frame: its
+// corners through the lens, its masks the frame's `cloth`'s, its geometry the pinhole's.
+TableSearch FindThroughLens(const cv::Mat& bgr, const RadialLens& lens, const TableRegion& cloth) {
+  const TableSearch pinhole = FindTable(lens.Undistort(bgr), false);
+  if (!pinhole.table) {
+    char k1[32];
+    std::snprintf(k1, sizeof k1, "%.3f", lens.k1);
+    return {std::nullopt, pinhole.reason + " (through the lens found, k1 = " + k1 + ")", cloth};
+  }
+  TableRegion table = *pinhole.table;
+  for (int i = 0; i < 4; ++i) {
+    table.corners[i] = lens.ToImage(table.corners[i]);
+    table.cloth_corners[i] = lens.ToImage(table.cloth_corners[i]);
+  }
+  table.lens = lens;
+  table.cloth = cloth.cloth;
+  table.surface = cloth.surface;
+  table.mask_scale = cloth.mask_scale;
+  return {table, "", std::nullopt};
+}
+
+// The table in the frame; its lens estimated first when `estimate_lens` (not in a frame redrawn
+// through the lens already).
+TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
   if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame", std::nullopt};
   // An integer reduction: OpenCV's area averaging is much faster by whole factors.
   const int factor = static_cast<int>(std::ceil(std::max(bgr.cols, bgr.rows) / kTableSearchSize));
@@ -343,6 +391,10 @@ TableSearch FindTable(const cv::Mat& bgr) {
   }
   if (polygon.size() != 4) {
     return {std::nullopt, "no table: the cloth's outline is not a quadrilateral", cloth};
+  }
+  if (estimate_lens) {
+    const RadialLens lens = OutlineLens(outline, polygon, perimeter, scale, bgr.size());
+    if (!lens.IsPinhole()) return FindThroughLens(bgr, lens, cloth);
   }
   std::array<std::vector<Line>, 4> stretches;
   std::array<Line, 4> sides;
@@ -422,5 +474,9 @@ TableSearch FindTable(const cv::Mat& bgr) {
   }
   return {table, "", std::nullopt};
 }
+
+}  // namespace
+
+TableSearch FindTable(const cv::Mat& bgr) { return FindTable(bgr, true); }
 
 }  // namespace billiard::estimator

@@ -26,6 +26,13 @@
 // makes a line along one half at most. Where no such line is, the outline is the nose (a cushion
 // seen from behind hides its face).
 //
+// A wide-angle lens bends the sides (barrel distortion bows them outward). Before the sides are
+// fitted, the outline's points along them say how much (lens_estimate.h, the plumb-line method):
+// where a lens clearly straightens them, the frame is redrawn as its pinhole sees it and the table
+// is found there, its geometry (the homography, the inverse depth) kept in the pinhole's pixels and
+// its corners and masks given in the frame's; every method taking or giving a pixel takes or gives
+// the frame's.
+//
 // What the four corners give:
 //   - A homography between the frame and the table's plane. The table is twice as long as it is
 //     wide (pool, snooker and carom alike); which pair of sides is the long one comes from the
@@ -45,6 +52,8 @@
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
+
+#include "estimator/lens_estimate.h"
 
 namespace billiard::estimator {
 
@@ -69,7 +78,8 @@ inline constexpr double kMaxCushionWidth = 0.12;
 
 struct TableRegion {
   // The corners of the playing surface (where the cushions' noses meet) [full-resolution px], in
-  // order around the table.
+  // order around the table. Through a lens (`lens.k1` != 0) a side between two corners is the
+  // image of the pinhole's straight line, a curve (DistanceToSide).
   std::array<Eigen::Vector2d, 4> corners;
   // The corners of the cloth's outline, the cushions' tops included, in the same order.
   std::array<Eigen::Vector2d, 4> cloth_corners;
@@ -77,11 +87,17 @@ struct TableRegion {
   // the side's fitted line: how straight the sides are (lens distortion, a cloth that is not the
   // table's) and how well they were found.
   double side_fit_rms_px = 0;
-  // Image pixel from table point (x along the long side in [0, 2], y along the short side in
+  // The lens the table was found through (lens_estimate.h): k1 = 0, a pinhole, unless its sides
+  // were clearly bent.
+  RadialLens lens;
+  // Pinhole pixel (the frame's pixel where lens.k1 = 0, else lens.ToPinhole of it) from table
+  // point (x along the long side in [0, 2], y along the short side in
   // [0, 1], homogeneous): the playing surface in units of its width.
   Eigen::Matrix3d image_from_table = Eigen::Matrix3d::Identity();
-  // The inverse depth of the table's plane, relative to the table's centre: 1 / depth at pixel
-  // (u, v) is inverse_depth.dot((u, v, 1)) / depth at the centre.
+  // The inverse depth of the table's plane, relative to the table's centre: 1 / depth at pinhole
+  // pixel (u, v) is inverse_depth.dot((u, v, 1)) / depth at the centre (InverseDepthAt takes the
+  // frame's pixel; read at the frame's pixel directly, as BallScale does, it is off through a lens
+  // by the little the depth changes over the lens's shift, nothing in an overhead view).
   Eigen::Vector3d inverse_depth = Eigen::Vector3d::UnitZ();
   TableView view = TableView::kOverhead;
   TableOrigin origin = TableOrigin::kFound;
@@ -113,6 +129,10 @@ struct TableRegion {
   // balls touching in an oblique view are closer in the image along the view than across it,
   // never on the table.
   double TableDistancePx(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
+  // The distance [full-resolution px] of a pixel from side `side` (corner `side` to the next): from
+  // its line, or through a lens from the image of the pinhole's line at the foot of the pixel's
+  // pinhole image on it.
+  double DistanceToSide(int side, const Eigen::Vector2d& pixel) const;
   // The centre of the table in the image.
   Eigen::Vector2d Centre() const;
   // The smallest rectangle of full-resolution pixels holding the cloth's outline.
@@ -130,7 +150,9 @@ struct TableSearch {
 };
 
 // The table in a BGR (CV_8UC3) frame. About 5 ms at 1280x720: the frame is searched at about 400
-// pixels across.
+// pixels across; the lens estimate adds some 10 ms (about 150 evaluations of the sides' residual
+// over some 700 outline points: 4 estimates of 1,300 points take 84 ms in lens_estimate_test),
+// and a frame found through a lens is searched twice.
 TableSearch FindTable(const cv::Mat& bgr);
 
 }  // namespace billiard::estimator

@@ -61,13 +61,6 @@ std::array<Eigen::Vector3d, 4> TableCorners(double z) {
           Eigen::Vector3d(t.length, t.width, z), Eigen::Vector3d(0, t.width, z)};
 }
 
-// The distance [px] of `p` from the line through side `i` of `table` (corners i and i + 1).
-double DistanceFromSide(const TableRegion& table, int i, const Eigen::Vector2d& p) {
-  const Eigen::Vector3d line =
-      table.corners[i].homogeneous().cross(table.corners[(i + 1) % 4].homogeneous());
-  return std::abs(line.dot(p.homogeneous())) / line.head<2>().norm();
-}
-
 // Each side of the table lies along a side found: its points at a quarter, half and three
 // quarters of its length within kSurfaceTolerancePx of the found side's line, on the cloth or at
 // the nose's height (where the view shows the face of the cushion, the surface found ends at its
@@ -83,7 +76,7 @@ void ExpectTheSurface(const TableRegion& table, const camera::CameraModel& camer
       for (int j = 0; j < 4; ++j) {
         double worst = 0;
         for (const double t : {0.25, 0.5, 0.75}) {
-          worst = std::max(worst, DistanceFromSide(table, j, camera.Project(a + t * (b - a))));
+          worst = std::max(worst, table.DistanceToSide(j, camera.Project(a + t * (b - a))));
         }
         best = std::min(best, worst);
       }
@@ -141,7 +134,7 @@ TEST(TableFinder, TheNearCushionSeenFromBehindEndsAtItsNoseNotItsBack) {
     double worst = 0;
     for (const double t : {0.25, 0.5, 0.75}) {
       worst = std::max(worst,
-                       DistanceFromSide(*search.table, j, side.camera.Project(a + t * (b - a))));
+                       search.table->DistanceToSide(j, side.camera.Project(a + t * (b - a))));
     }
     best = std::min(best, worst);
   }
@@ -174,7 +167,7 @@ double SideError(const TableRegion& found, const TableRegion& expected) {
   double worst = 0;
   for (int i = 0; i < 4; ++i) {
     for (const Eigen::Vector2d& end : {expected.corners[i], expected.corners[(i + 1) % 4]}) {
-      worst = std::max(worst, DistanceFromSide(found, i, end));
+      worst = std::max(worst, found.DistanceToSide(i, end));
     }
   }
   return worst;

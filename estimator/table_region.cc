@@ -41,14 +41,25 @@ bool InsideQuadrilateral(const std::array<Eigen::Vector2d, 4>& corners,
   return true;
 }
 
+// The corners in the pinhole's pixels (the frame's through no lens).
+std::array<Eigen::Vector2d, 4> PinholeCorners(const RadialLens& lens,
+                                              const std::array<Eigen::Vector2d, 4>& corners) {
+  std::array<Eigen::Vector2d, 4> pinhole;
+  for (int i = 0; i < 4; ++i) pinhole[i] = lens.ToPinhole(corners[i]);
+  return pinhole;
+}
+
 }  // namespace
 
 bool TableRegion::Contains(const Eigen::Vector2d& pixel, double margin_px) const {
-  return InsideQuadrilateral(corners, pixel, margin_px);
+  if (lens.IsPinhole()) return InsideQuadrilateral(corners, pixel, margin_px);
+  return InsideQuadrilateral(PinholeCorners(lens, corners), lens.ToPinhole(pixel), margin_px);
 }
 
 bool TableRegion::InsideCloth(const Eigen::Vector2d& pixel, double margin_px) const {
-  return InsideQuadrilateral(cloth_corners, pixel, margin_px);
+  if (lens.IsPinhole()) return InsideQuadrilateral(cloth_corners, pixel, margin_px);
+  return InsideQuadrilateral(PinholeCorners(lens, cloth_corners), lens.ToPinhole(pixel),
+                             margin_px);
 }
 
 std::array<Eigen::Vector2d, 8> TableRegion::PocketPlaces() const {
@@ -57,17 +68,17 @@ std::array<Eigen::Vector2d, 8> TableRegion::PocketPlaces() const {
   const std::array<Eigen::Vector2d, 8> table = {
       {{0, 0}, {a / 2, 0}, {a, 0}, {a, 0.5}, {a, 1}, {a / 2, 1}, {0, 1}, {0, 0.5}}};
   for (int i = 0; i < 8; ++i) {
-    places[i] = (image_from_table * table[i].homogeneous()).hnormalized();
+    places[i] = lens.ToImage((image_from_table * table[i].homogeneous()).hnormalized());
   }
   return places;
 }
 
 double TableRegion::InverseDepthAt(const Eigen::Vector2d& pixel) const {
-  return inverse_depth.dot(pixel.homogeneous());
+  return inverse_depth.dot(lens.ToPinhole(pixel).homogeneous());
 }
 
 Eigen::Vector2d TableRegion::TableAt(const Eigen::Vector2d& pixel) const {
-  return (image_from_table.inverse() * pixel.homogeneous()).hnormalized();
+  return (image_from_table.inverse() * lens.ToPinhole(pixel).homogeneous()).hnormalized();
 }
 
 double TableRegion::PixelsPerWidthAt(const Eigen::Vector2d& pixel) const {
@@ -79,21 +90,39 @@ double TableRegion::PixelsPerWidthAt(const Eigen::Vector2d& pixel) const {
     jacobian(0, j) = (h(0, j) - p.x() / p.z() * h(2, j)) / p.z();
     jacobian(1, j) = (h(1, j) - p.y() / p.z() * h(2, j)) / p.z();
   }
-  return Eigen::JacobiSVD<Eigen::Matrix2d>(jacobian).singularValues()(0);
+  return Eigen::JacobiSVD<Eigen::Matrix2d>(jacobian).singularValues()(0) *
+         lens.MagnificationAt(p.hnormalized());
 }
 
 double TableRegion::TableDistancePx(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
   return (TableAt(a) - TableAt(b)).norm() * PixelsPerWidthAt(0.5 * (a + b));
 }
 
+double TableRegion::DistanceToSide(int side, const Eigen::Vector2d& pixel) const {
+  const Eigen::Vector2d a = lens.ToPinhole(corners[side]);
+  const Eigen::Vector2d b = lens.ToPinhole(corners[(side + 1) % 4]);
+  const Eigen::Vector3d line = a.homogeneous().cross(b.homogeneous());
+  if (lens.IsPinhole()) return std::abs(line.dot(pixel.homogeneous())) / line.head<2>().norm();
+  const Eigen::Vector2d q = lens.ToPinhole(pixel), along = (b - a).normalized();
+  const Eigen::Vector2d foot = a + along * along.dot(q - a);
+  return (lens.ToImage(foot) - pixel).norm();
+}
+
 Eigen::Vector2d TableRegion::Centre() const {
-  return (image_from_table * Eigen::Vector3d(0.5 * kTableAspect, 0.5, 1.0)).hnormalized();
+  return lens.ToImage(
+      (image_from_table * Eigen::Vector3d(0.5 * kTableAspect, 0.5, 1.0)).hnormalized());
 }
 
 cv::Rect TableRegion::Bounds() const {
   std::vector<cv::Point2f> points;
-  for (const auto& c : cloth_corners) {
-    points.emplace_back(static_cast<float>(c.x()), static_cast<float>(c.y()));
+  for (int i = 0; i < 4; ++i) {
+    points.emplace_back(static_cast<float>(cloth_corners[i].x()),
+                        static_cast<float>(cloth_corners[i].y()));
+    if (lens.IsPinhole()) continue;
+    // Through a lens a side bows: its middle is the farthest it goes from the corners' chord.
+    const Eigen::Vector2d middle = lens.ToImage(
+        0.5 * (lens.ToPinhole(cloth_corners[i]) + lens.ToPinhole(cloth_corners[(i + 1) % 4])));
+    points.emplace_back(static_cast<float>(middle.x()), static_cast<float>(middle.y()));
   }
   return cv::boundingRect(points);
 }

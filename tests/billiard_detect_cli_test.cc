@@ -269,6 +269,12 @@ TEST(BilliardBenchDetect, TheDevSetOfRealFramesWithinTheBounds) {
   // The hard suite renders its own frames: with a set, a usage error.
   EXPECT_EQ(Billiard("bench-detect --hard-suite --set " + set + " --out " + (out / "x"), true).status,
             2);
+  // --case picks cases of the hard suite, by the start of their names: one no case has, or without
+  // the hard suite, a usage error.
+  EXPECT_EQ(Billiard("bench-detect --hard-suite --case nothing --out " + (out / "x"), true).status,
+            2);
+  EXPECT_EQ(Billiard("bench-detect --set " + set + " --case lens --out " + (out / "x"), true).status,
+            2);
   EXPECT_EQ(Billiard("bench-detect --set " + set + " --corners /nonexistent --out " + (out / "x"),
                      true)
                 .status,

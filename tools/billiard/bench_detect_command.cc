@@ -23,7 +23,7 @@ namespace {
 struct BenchDetectArgs {
   std::vector<std::string> sets;
   std::string out, corners, params = params::kDefaultParameterSet;
-  std::string identity = "rules", identity_model;
+  std::string identity = "rules", identity_model, hard_case;
   bool synthetic = false, hard_suite = false, no_overlays = false, cross_validate = false;
   std::uint32_t seed = 2026;
 };
@@ -79,7 +79,8 @@ void HardSuite(const BenchDetectArgs& args) {
   const std::string set = args.out + "/hard";
   Progress("rendering the hard suite into " + set);
   const std::vector<bench::HardFrame> frames =
-      bench::RenderHardSuite(LoadParametersOption(args.params), args.seed);
+      bench::RenderHardSuite(LoadParametersOption(args.params), args.seed, args.hard_case);
+  if (frames.empty()) throw UsageError("--case " + args.hard_case + ": no case of the hard suite");
   std::vector<bench::LabelledFrame> labelled;
   for (const auto& f : frames) labelled.push_back(f.frame);
   bench::WriteLabelledSet(labelled, set);
@@ -96,6 +97,7 @@ void HardSuite(const BenchDetectArgs& args) {
 void Run(const BenchDetectArgs& args) {
   if (args.cross_validate) return CrossValidate(args);
   if (args.hard_suite) return HardSuite(args);
+  if (!args.hard_case.empty()) throw UsageError("--case picks cases of --hard-suite only");
   if (args.sets.size() > 1) throw UsageError("give one --set DIR (several with --cross-validate)");
   if (args.sets.empty() == !args.synthetic) {
     throw UsageError("give one of --set DIR (a labelled set) and --synthetic (the rendered suite)");
@@ -149,6 +151,9 @@ void AddBenchDetectCommand(CLI::App& app) {
                 "Render the hard suite (an arm, a player, a third out of frame, barrel lens "
                 "k1 = -0.3, elevations 15-45 degrees) into OUT/hard and score each side of the "
                 "table against its truth: OUT/hard_suite_report.md");
+  cmd->add_option("--case", args->hard_case,
+                  "With --hard-suite, only the cases whose name begins with this (\"lens\", "
+                  "\"arm\", \"elevation 30\", ...)");
   cmd->add_option("--corners", args->corners,
                   "The playing surface's corners of the set's frames (JSON, as "
                   "estimator/testing/real_table_corners.json): whether each table was found");
