@@ -198,9 +198,11 @@ void WriteFrames(const CrossValidationResult& result, std::ostream& md) {
 
 const std::vector<std::pair<std::string, std::string>>& FixedFromData() {
   static const std::vector<std::pair<std::string, std::string>> kFixed = {
-      {"estimator/table_finder.cc",
+      {"estimator/table_cloth.cc",
        "kChromaSpreads, kMinChromaTolerance, kMinBrightness, kMaxBrightness, "
-       "kMaxRelativeGradient, kMinClothFraction, kSideBand, kSideEnd, kMaxStretches, "
+       "kMaxRelativeGradient"},
+      {"estimator/table_finder.cc",
+       "kMinClothFraction, kSideBand, kSideEnd, kMaxStretches, "
        "kMinStretch, kMaxStretchTurn, kOtherStretchNose, kFocalAgreement, "
        "kOverheadAspectTolerance, kMaxClothLightness, kMinClothChroma"},
       {"estimator/table_edges.cc",
@@ -227,10 +229,10 @@ const std::vector<std::pair<std::string, std::string>>& FixedFromData() {
       {"estimator/not_cloth.h",
        "kIntruderBallAreas, kIntruderOpeningRadii, kIntruderFaintContrast"},
       {"estimator/ball_scale.h", "kScaleAgreement"},
+      {"estimator/ball_pixels.h", "kGreyChroma, kWhiteLightness, kBlackLightness, kPlainSaturation"},
       {"estimator/ball_identity.cc",
-       "kLimbRadii, kGreyChroma, kWhiteLightness, kBlackLightness, kBrightBalls, kMaxCueChroma, "
-       "kPlainSaturation, kChromaWeight, kLightnessWeight, kShareMargin, kColourUnit, "
-       "kNoColourCost, kUnknownCost, kCostFloor, kBandRadii, kClothRing, kBandShare"}};
+       "kLimbRadii, kBrightBalls, kMaxCueChroma, kChromaWeight, kLightnessWeight, kShareMargin, "
+       "kColourUnit, kNoColourCost, kUnknownCost, kCostFloor, kBandRadii, kClothRing, kBandShare"}};
   return kFixed;
 }
 
