@@ -205,15 +205,16 @@ LensEstimate EstimateRadialLens(const std::array<std::vector<Eigen::Vector2d>, 4
   lens.focal_px = kLensFocalWidths * size.width;
   lens.centre = Eigen::Vector2d(0.5 * (size.width - 1), 0.5 * (size.height - 1));
   estimate.pinhole_rms_px = SidesResidual(lens, sides, outline_px);
+  estimate.best_rms_px = estimate.pinhole_rms_px;
+  const double grid = kGridNoise * outline_px;
+  // Sides straight within the outline's rounding are a pinhole's: no k1 to search (nearly every
+  // frame, and the search is most of the estimate's time).
+  if (estimate.pinhole_rms_px <= kLensMinBow * grid) return estimate;
   estimate.best_k1 = BestK1(lens, sides, outline_px);
   lens.k1 = estimate.best_k1;
   estimate.best_rms_px = SidesResidual(lens, sides, outline_px);
-  const double grid = kGridNoise * outline_px;
   const auto excess = [&](double rms) { return std::sqrt(std::max(0.0, rms * rms - grid * grid)); };
-  const bool bent = estimate.pinhole_rms_px > kLensMinBow * grid;
-  const bool straightened =
-      excess(estimate.best_rms_px) <= kLensGain * excess(estimate.pinhole_rms_px);
-  if (!bent || !straightened) return estimate;
+  if (excess(estimate.best_rms_px) > kLensGain * excess(estimate.pinhole_rms_px)) return estimate;
   FitCanvas(sides, size, &lens);
   estimate.lens = lens;
   return estimate;

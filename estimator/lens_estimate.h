@@ -69,8 +69,10 @@ struct RadialLens {
 struct LensEstimate {
   RadialLens lens;            // k1 = 0 unless accepted
   double pinhole_rms_px = 0;  // the sides' residual at k1 = 0 [image px]
-  double best_rms_px = 0;     // at the best k1 searched [image px]
-  double best_k1 = 0;         // the best k1 searched, accepted or not
+  // The best k1 searched, accepted or not, and the residual there [image px]; searched only where
+  // the sides are bent beyond the outline's rounding (else 0 and the pinhole's residual).
+  double best_rms_px = 0;
+  double best_k1 = 0;
 };
 
 // The lens of a `size` frame from the points along each side of the table (image px; a side with
