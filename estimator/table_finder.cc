@@ -39,9 +39,13 @@ constexpr double kFocalAgreement = 1.3;
 // light reads L* 76).
 constexpr double kOverheadAspectTolerance = 1.25;
 constexpr double kMaxClothLightness = 85.0, kMinClothChroma = 10.0;
-// The cloth's colours tried (ClothColours): the likeliest, then the floor's or wall's around a
-// table seen from a low camera, then one more (the rail's wood, a shadowed floor).
+// The cloth's colours tried (ClothColours): the likeliest, then the next two (a low camera sees
+// the wall behind the table and the floor before it, each of its own colour).
 constexpr std::size_t kClothColours = 3;
+// A side of a later colour's outline within this many search pixels of the frame's edge at both
+// ends runs along it (the region's outline traced on the search's grid, the cloth's line fitted
+// at full resolution within a pixel or two of it).
+constexpr double kFrameEdgePx = 2.0;
 
 // The homography from the table (long side along x when `long_first`, else along y first and
 // then turned so that x is the long side) to the image of `corners`.
@@ -388,13 +392,33 @@ bool IsWhite(const cv::Vec3f& bgr) {
   return lab[0] > kMaxClothLightness && std::hypot(lab[1], lab[2]) < kMinClothChroma;
 }
 
+// Whether a side of the cloth's outline runs along an edge of the `size` frame (both its corners
+// within `tolerance_px` of it): the frame's edge, not the cloth's.
+bool AlongTheFrame(const TableRegion& table, const cv::Size& size, double tolerance_px) {
+  const Eigen::Vector2d far_corner(size.width - 1, size.height - 1);
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector2d& a = table.cloth_corners[i];
+    const Eigen::Vector2d& b = table.cloth_corners[(i + 1) % 4];
+    for (int axis = 0; axis < 2; ++axis) {
+      for (const double edge : {0.0, far_corner[axis]}) {
+        if (std::abs(a[axis] - edge) < tolerance_px && std::abs(b[axis] - edge) < tolerance_px) {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
 // The table in the frame; its lens estimated first when `estimate_lens` (not in a frame redrawn
 // through the lens already). The cloth is the frame's likeliest colour (ClothColours); where its
 // region is no plane's quadrilateral with straight sides (the wall or floor around a table seen
 // from a low camera, whose outline follows the table's far rail and its sides), the next colours
-// are tried, and the first that makes a table is the cloth. Where the first colour's region is a
-// quadrilateral with straight sides, it is the cloth, its table found or not (part of it out of
-// the frame, an arm across a corner): no other colour is tried.
+// are tried, and the first that makes a table is the cloth: a table whole in the frame, since the
+// first colour was around it (a side along the frame's edge is the floor's, around a cloth that
+// is no table: a round mat). Where the first colour's region is a quadrilateral with straight
+// sides, it is the cloth, its table found or not (part of it out of the frame, an arm across a
+// corner): no other colour is tried.
 TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
   if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame", std::nullopt};
   // An integer reduction: OpenCV's area averaging is much faster by whole factors.
@@ -413,6 +437,9 @@ TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
     bool quadrilateral = false;
     TableSearch search =
         FindTableOfCloth(bgr, small, scale, colours[k], estimate_lens, &quadrilateral);
+    if (k > 0 && search.table && AlongTheFrame(*search.table, bgr.size(), kFrameEdgePx / scale)) {
+      continue;
+    }
     if (search.table || (k == 0 && quadrilateral)) return search;
     if (k == 0) first = std::move(search);
   }
