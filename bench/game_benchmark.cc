@@ -358,8 +358,9 @@ void WriteGameReport(const GameBenchmarkResult& r, const std::string& dir) {
   plot::DrawReliability(Deciles(r.calibration),
                         "Shot choice calibration: " +
                             std::to_string(s["calibration"]["executions"].get<int>()) +
-                            " executions (told " + r.options.noise + ", played " +
-                            PlantNoise(r.options) + ")",
+                            " executions (told " +
+                            s["calibration"]["noise"]["name"].get<std::string>() + ", played " +
+                            s["calibration"]["plant_noise"]["name"].get<std::string>() + ")",
                         kJudgedCount, dir + "/game_reliability.png");
   std::ofstream out = OpenForWriting(dir + "/game_report.md");
   const int layouts = s["layouts"].get<int>();
