@@ -13,6 +13,7 @@
 #include "planner/choice/scene_balls.h"
 #include "planner/players/players.h"
 #include "sim/model_choice/model_choice.h"
+#include "sim/params/noise_file.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 #include "sim/rules/rules.h"
@@ -108,12 +109,18 @@ bool SameChoice(const choice::ChoiceResult& a, const choice::ChoiceResult& b) {
   return true;
 }
 
+// The noise the calibration's replays execute with.
+std::string PlantNoise(const GameBenchmarkOptions& options) {
+  return options.plant_noise.empty() ? options.noise : options.plant_noise;
+}
+
 // The chosen shot of each seeded choice played `executions` times more with fresh noise (the
-// table's own, on the table's own model), against the probability the choice reported.
+// plant's, on the table's own model), against the probability the choice reported.
 void Calibrate(const table::TableGeometry& table, const physics::ModelParameters& params,
                const GameBenchmarkOptions& options, batch::ThreadPool& pool,
                GameBenchmarkResult* result) {
-  const params::ExecutionNoise noise = params::LoadNoise(params::kDefaultNoise);
+  const params::ExecutionNoise noise = params::LoadNoise(options.noise);
+  const params::ExecutionNoise plant = params::LoadNoise(PlantNoise(options));
   const auto motion = model_choice::TableMotion(params);
   const std::unique_ptr<players::Player> ours = players::MakePlayer("ours");
   for (int i = 0; i < options.calibration_layouts; ++i) {
@@ -139,7 +146,7 @@ void Calibrate(const table::TableGeometry& table, const physics::ModelParameters
       auto replays = pool.Map(options.executions, [&](std::size_t e) {
         choice::NormalStream normal(choice::SampleSeed(seed + kReplayStream, e));
         const physics::CueStroke played = params::Perturbed(
-            chosen->plan.stroke, noise, params.ball.radius, [&] { return normal.Next(); });
+            chosen->plan.stroke, plant, params.ball.radius, [&] { return normal.Next(); });
         return choice::LegalPot(choice::PlayToRest(table, params, balls, played, motion),
                                 chosen->plan.ball, chosen->plan.pocket);
       });
@@ -269,6 +276,14 @@ std::string RobotName(const GameBenchmarkOptions& options) {
   return options.robot ? options.robot->name : "none (level cue, unchecked)";
 }
 
+// A noise as its file gives it (the source left out: it is long), and where it came from.
+nlohmann::json NoiseSummary(const std::string& name_or_file) {
+  nlohmann::json j = nlohmann::json::parse(params::FormatNoise(params::LoadNoise(name_or_file)));
+  j.erase("source");
+  j["from"] = name_or_file;
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json GameSummaryJson(const GameBenchmarkResult& r) {
@@ -304,6 +319,8 @@ nlohmann::json GameSummaryJson(const GameBenchmarkResult& r) {
                       {"mean_predicted", executions ? predicted_sum / executions : 0.0},
                       {"mean_selection_estimate", executions ? selection_sum / executions : 0.0},
                       {"measured", Rate(potted, executions)},
+                      {"noise", NoiseSummary(r.options.noise)},
+                      {"plant_noise", NoiseSummary(PlantNoise(r.options))},
                       {"deciles", deciles},
                       {"calibrated", calibrated}};
   j["decision"] = {{"median_us", Median(r.choice_us)},
@@ -341,7 +358,9 @@ void WriteGameReport(const GameBenchmarkResult& r, const std::string& dir) {
   plot::DrawReliability(Deciles(r.calibration),
                         "Shot choice calibration: " +
                             std::to_string(s["calibration"]["executions"].get<int>()) +
-                            " noisy executions (robot noise)",
+                            " executions (told " +
+                            s["calibration"]["noise"]["name"].get<std::string>() + ", played " +
+                            s["calibration"]["plant_noise"]["name"].get<std::string>() + ")",
                         kJudgedCount, dir + "/game_reliability.png");
   std::ofstream out = OpenForWriting(dir + "/game_report.md");
   const int layouts = s["layouts"].get<int>();
@@ -351,7 +370,8 @@ void WriteGameReport(const GameBenchmarkResult& r, const std::string& dir) {
       << " --calibration-layouts " << r.options.calibration_layouts << " --executions "
       << r.options.executions << " --confirm-samples " << r.options.confirm_samples << " --seed "
       << r.options.seed << " --threads " << r.options.threads << " --robot "
-      << (r.options.robot ? r.options.robot->name : "none") << "` (seeded nine-ball layouts on "
+      << (r.options.robot ? r.options.robot->name : "none") << " --noise " << r.options.noise
+      << " --plant-noise " << PlantNoise(r.options) << "` (seeded nine-ball layouts on "
       << params::kDefaultTable << ", bench/game_benchmark.h). The numbers are this "
       << "run's, on a 2-core machine shared with other work. Robot: " << RobotName(r.options)
       << " (every stroke at the elevation its cue needs, planner/pot/cue_elevation.h).";
@@ -361,11 +381,12 @@ void WriteGameReport(const GameBenchmarkResult& r, const std::string& dir) {
         << " layouts is written as it ends, every policy on the same layouts).";
   }
   out << "\n\n## Calibration\n\n"
-      << cal["choices"].get<int>() << " seeded choices (a seeded cue ball, nine-ball rules, the "
-      << "robot's noise, " << r.options.samples << " full-model executions of each of the finalists, "
+      << cal["choices"].get<int>() << " seeded choices (a seeded cue ball, nine-ball rules, "
+      << "planning for the noise " << r.options.noise << ", " << r.options.samples << " full-model executions of each of the finalists, "
       << "then " << r.options.confirm_samples << " fresh ones of the chosen shot on a seed stream "
       << "of their own: its reported probability), the chosen shot of each replayed "
-      << r.options.executions << " times with fresh noise on the table's own model: "
+      << r.options.executions << " times with fresh noise of the plant's, "
+      << PlantNoise(r.options) << ", on the table's own model: "
       << cal["executions"].get<int>() << " executions. Over all of them the mean reported "
       << "probability is " << Fixed(cal["mean_predicted"].get<double>(), 3) << ", the measured rate "
       << Fixed(cal["measured"].get<double>(), 3) << "; the finalists' own estimate that chose the "

@@ -1,9 +1,12 @@
 // The shot choice's benchmark (planner/choice/), on seeded nine-ball layouts
 // (game::SeededNineBallLayout) on the pool-9ft table:
-//  - calibration: seeded choices (a seeded cue ball, nine-ball rules, the robot's noise, the
-//    table's own model), the chosen shot's reported probability (its confirmation, fresh samples
-//    independent of the choice) against `executions` more plays of it with fresh noise on the
-//    same model: the measured pot rate per decile of the prediction (a reliability diagram);
+//  - calibration: seeded choices (a seeded cue ball, nine-ball rules, the noise they plan for,
+//    the table's own model), the chosen shot's reported probability (its confirmation, fresh
+//    samples independent of the choice) against `executions` more plays of it with fresh noise
+//    on the same model: the measured pot rate per decile of the prediction (a reliability
+//    diagram). The replays execute with the plant's noise, by default the one the choice was
+//    told; a plant noise it was not told shows as a miscalibration (issue 47: a noise learned
+//    on the robot against the shipped guess);
 //  - games: each layout a drill from ball in hand, one visit (until a shot pots nothing or
 //    fouls), under the robot's noise and under the computational-pool noise, played by ours, by
 //    ours without the lookahead and by the easiest-looking ghost-ball shot (the players of
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "planner/game/game.h"
+#include "sim/params/execution_noise.h"
 
 namespace billiard::bench {
 
@@ -38,6 +42,11 @@ struct GameBenchmarkOptions {
   int chunk = 10;  // layouts between checkpoints
   // The robot whose cue plays every choice's strokes (PotOptions::robot); none: the level cue.
   std::optional<cue::Robot> robot;
+  // The calibration's noises, each a name or a file (sim/params/noise/): the one the choices
+  // plan for, and the one their chosen shots are replayed with (empty: `noise`). The drills
+  // keep their two named noises.
+  std::string noise = params::kDefaultNoise;
+  std::string plant_noise;
   std::function<void(const std::string&)> progress = [](const std::string&) {};
 };
 

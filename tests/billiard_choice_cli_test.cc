@@ -103,6 +103,9 @@ TEST(BilliardChooseShot, RefusesWithTheStatusAndReason) {
 
   EXPECT_EQ(Billiard("choose-shot --scene " + kScene + " --rules snooker --json").status, 2);
   EXPECT_EQ(Billiard("choose-shot --scene " + kScene + " --noise no-such-noise --json").status, 2);
+  // A noise that does not load is refused before the first choice, not after the calibration.
+  EXPECT_EQ(Billiard("bench-game --layouts 0 --noise no-such-noise").status, 2);
+  EXPECT_EQ(Billiard("bench-game --layouts 0 --plant-noise no-such-noise").status, 2);
   EXPECT_EQ(Billiard("play --json").status, 2);
   EXPECT_EQ(Billiard("play --rack nine-ball --seed -1 --json").status, 2);
   // A ball off the table is bad input (2), as in simulate, plot and plan-pot.

@@ -22,6 +22,7 @@
 #include "sim/table/rack.h"
 #include "sim/table/table_simulation.h"
 #include "tools/billiard/command_line.h"
+#include "tools/billiard/noise_option.h"
 #include "tools/billiard/pot_commands.h"
 #include "tools/billiard/scene_commands.h"
 
@@ -70,11 +71,7 @@ choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
   if (!parsed) throw UsageError("--rules: unknown rules '" + args.rules +
                                 "' (any, nine-ball, eight-ball, eight-ball-solids, eight-ball-stripes)");
   options.rules = *parsed;
-  try {
-    options.noise = params::LoadNoise(args.noise);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--noise: ") + e.what());
-  }
+  options.noise = LoadNoiseOption(args.noise, "--noise");
   options.samples = args.samples;
   options.confirm_samples = args.confirm_samples;
   options.seed = args.seed;
@@ -404,11 +401,20 @@ void AddBenchGameCommand(CLI::App& app) {
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_option("--robot", args->robot, std::string(kRobotHelp) + "; none: the level cue, unchecked")
       ->capture_default_str();
+  cmd->add_option("--noise", o.noise,
+                  "The noise the calibration's choices plan for: robot | computational-pool | a "
+                  "JSON file (sim/params/noise/)")
+      ->capture_default_str();
+  cmd->add_option("--plant-noise", o.plant_noise,
+                  "The noise the chosen shots are replayed with, which the choice is not told of "
+                  "(a name or a file; default: --noise's)");
   cmd->add_option("--out", args->out, "Write game_report.md, game_reliability.png and game_results.json here");
   cmd->callback([args] {
     if (!args->out.empty()) RequireWritableDirectory(args->out, "--out");
     bench::GameBenchmarkOptions options = args->options;
     options.robot = LoadRobotOrNone(args->robot);
+    LoadNoiseOption(options.noise, "--noise");  // refused before the first choice, not after
+    if (!options.plant_noise.empty()) LoadNoiseOption(options.plant_noise, "--plant-noise");
     options.progress = [](const std::string& line) { std::cerr << line << std::endl; };
     // The report rewritten after each chunk: a run stopped early leaves its largest whole part.
     const std::string out = args->out;

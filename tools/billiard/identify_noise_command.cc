@@ -1,5 +1,6 @@
 #include "tools/billiard/identify_noise_command.h"
 
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -7,9 +8,11 @@
 
 #include "planner/node/noise_learning.h"
 #include "sim/params/execution_noise.h"
+#include "sim/params/noise_file.h"
 #include "sim/params/parameter_sets.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/logged_shots.h"
+#include "tools/billiard/noise_option.h"
 
 namespace billiard::cli {
 
@@ -19,7 +22,7 @@ constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 struct IdentifyNoiseArgs {
   std::string log, params = params::kDefaultParameterSet, prior = params::kDefaultNoise,
-                   tracks = "estimator";
+                   tracks = "estimator", noise_out;
   bool json = false;
 };
 
@@ -33,12 +36,7 @@ void RunIdentifyNoise(const IdentifyNoiseArgs& args) {
   if (args.tracks != "estimator" && args.tracks != "truth")
     throw UsageError("--tracks must be estimator or truth, not '" + args.tracks + "'");
   const physics::ModelParameters p = LoadParametersOption(args.params);
-  params::ExecutionNoise prior;
-  try {
-    prior = params::LoadNoise(args.prior);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--prior: ") + e.what());
-  }
+  const params::ExecutionNoise prior = LoadNoiseOption(args.prior, "--prior");
   const LoggedShots logged = ReadLoggedShots(args.log, args.tracks == "truth");
   planner_node::NoiseLearner learner(prior);
   for (const cue_command_t& command : logged.commands) learner.Commanded(command);
@@ -68,6 +66,12 @@ void RunIdentifyNoise(const IdentifyNoiseArgs& args) {
        {{"log_speed", fit.bias[0]},
         {"direction_deg", fit.bias[1] / kDegree},
         {"log_rolling_speed", fit.bias[2]}}}};
+  if (!args.noise_out.empty()) {
+    std::ofstream file(args.noise_out);
+    if (!(file << params::FormatNoise(learner.noise()))) {
+      throw UsageError("--noise-out: cannot write '" + args.noise_out + "'");
+    }
+  }
   if (args.json) std::cout << out.dump() << std::endl;
   std::cerr << "identify-noise: " << learner.Describe() << "\n";
 }
@@ -91,6 +95,9 @@ void AddIdentifyNoiseCommand(CLI::App& app) {
   cmd->add_option("--tracks", args->tracks,
                   "The launches from the estimator's TABLE_STATE, or the simulator's TABLE_TRUTH")
       ->capture_default_str();
+  cmd->add_option("--noise-out", args->noise_out,
+                  "Write the learned noise as a noise file (the prior with the learned spreads), "
+                  "which --noise of choose-shot, play and bench-game reads");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { RunIdentifyNoise(*args); });
 }
