@@ -313,7 +313,12 @@ fi
 if [ -n "$log" ]; then
   without_frames=()
   [ "$log_frames" = none ] && without_frames=(--channel CAMERA_IMAGE --invert-channels)
-  lcm-logger --quiet --force "${without_frames[@]}" "$log" >/dev/null 2>"$logger_err" &
+  # The logger is the one receiver lockstep does not wait for: starved of the CPU while the
+  # planner decides, its socket's 4 MB (net.core.rmem_max) overflowed and a frame the estimator
+  # answered was never recorded, so the replay lacked it. Where it may, it runs ahead of the nodes.
+  logger_priority=()
+  [ "$(id -u)" = 0 ] && logger_priority=(nice -n -10)
+  "${logger_priority[@]}" lcm-logger --quiet --force "${without_frames[@]}" "$log" >/dev/null 2>"$logger_err" &
   logger=$!
   pids+=($logger)
 fi
@@ -336,9 +341,10 @@ fi
 
 sim_clock=""
 [ "$clock" = --realtime ] && sim_clock=--realtime
-# A fit between shots takes seconds; the simulator waits for its answer that long.
+# A fit between shots takes seconds, and so does a game's decision (6 s and more on a loaded
+# machine, where the simulator's 10 s ended a match); the simulator waits for an answer that long.
 identifying=()
-[ "$identify_every" -gt 0 ] && identifying=(--reply-timeout 120)
+{ [ "$identify_every" -gt 0 ] || [ -n "$game" ]; } && identifying=(--reply-timeout 120)
 $in_process && identifying+=(--identify-every "$identify_every" "${learn_noise[@]}")
 # In the background, so that a signal reaches the trap at once and the cleanup stops it too.
 session=("$bin_dir/table_sim_node")
