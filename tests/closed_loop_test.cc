@@ -17,43 +17,22 @@
 #include "lcmtypes/billiard/cue_command_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "tests/support/quoted_figures.h"
+#include "tests/support/recorded_logs.h"
 #include "tests/support/run_command.h"
 
 namespace {
 
+using billiard::testing::ChannelCounts;
 using billiard::testing::CommandResult;
+using billiard::testing::CopyWithOneMessageAltered;
 using billiard::testing::RunCommand;
+using billiard::testing::TempDir;
 
 nlohmann::json RunLoop(const std::string& args) {
   const CommandResult r =
       RunCommand(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build --json " + args);
   EXPECT_EQ(r.status, 0) << args;
   return nlohmann::json::parse(r.out, nullptr, false);
-}
-
-// A directory of its own for a test's logs, removed with it.
-class TempDir {
- public:
-  TempDir() {
-    char name[] = "/tmp/closed_loop_XXXXXX";
-    path_ = mkdtemp(name) ? name : "";
-  }
-  ~TempDir() {
-    if (!path_.empty()) std::filesystem::remove_all(path_);
-  }
-  std::string operator/(const std::string& file) const { return path_ + "/" + file; }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
-
-// How many messages of each channel a log holds.
-std::map<std::string, int> ChannelCounts(const std::string& path) {
-  std::map<std::string, int> counts;
-  lcm::LogFile log(path, "r");
-  while (const lcm::LogEvent* e = log.good() ? log.readNextEvent() : nullptr) ++counts[e->channel];
-  return counts;
 }
 
 // Records a lockstep run of `shots` into `log`; false (the caller skips) where the machine has no
@@ -67,32 +46,6 @@ bool RecordRun(const std::string& log, int shots, const std::string& more_args =
 
 CommandResult Replay(const std::string& log) {
   return RunCommand(std::string("bash ") + REPLAY_SCRIPT + " " + log + " --json");
-}
-
-// Copies the log `from` to `to` with the index-th message on `channel` decoded as a Message,
-// changed by `alter` and encoded again, through LCM's log file API.
-template <class Message>
-void CopyWithOneMessageAltered(const std::string& from, const std::string& to,
-                               const std::string& channel, int index,
-                               const std::function<void(Message&)>& alter) {
-  lcm::LogFile in(from, "r"), out(to, "w");
-  ASSERT_TRUE(in.good() && out.good());
-  int seen = 0;
-  while (const lcm::LogEvent* e = in.readNextEvent()) {
-    lcm::LogEvent copy = *e;
-    std::vector<std::uint8_t> bytes;
-    if (e->channel == channel && seen++ == index) {
-      Message m;
-      ASSERT_EQ(m.decode(e->data, 0, e->datalen), e->datalen);
-      alter(m);
-      bytes.resize(m.getEncodedSize());
-      m.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-      copy.data = bytes.data();
-      copy.datalen = static_cast<std::int32_t>(bytes.size());
-    }
-    ASSERT_EQ(out.writeEvent(&copy), 0);
-  }
-  ASSERT_GT(seen, index) << "the log has " << seen << " messages on " << channel;
 }
 
 // Twenty shots to targets (seed 1), the README's main command before it played a rack: lockstep
@@ -480,6 +433,35 @@ TEST(ClosedLoop, AReplayNamesTheFirstMessageAndFieldThatDiffer) {
   EXPECT_EQ(r.status, 3) << r.out;
   EXPECT_NE(r.out.find("first difference: CUE_COMMAND 0 (utime "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("): heading: recorded "), std::string::npos) << r.out;
+}
+
+// A frame the estimator answered but the logger lost (lockstep waits for the estimator, not for
+// the logger, and UDP multicast promises no delivery; so a 10-rack match's log lost one while the
+// planner decided): the replay names the missing frame, not the estimator's states after it,
+// which looked one frame behind.
+TEST(ClosedLoop, AReplayNamesAFrameTheLogLost) {
+  const TempDir dir;
+  const std::string log = dir / "run.lcm";
+  if (!RecordRun(log, 1)) {
+    GTEST_SKIP() << "no multicast here: the loop ran in one process and recorded nothing";
+  }
+  constexpr int kLost = 20;  // a frame past the table's learning, before the shot
+  const std::int64_t utime = billiard::testing::FrameUtime(log, kLost);
+  ASSERT_GT(utime, 0);
+  billiard::testing::CopyWithAFrameLost(log, dir / "lost.lcm", utime);
+  const CommandResult r = Replay(dir / "lost.lcm");
+  EXPECT_EQ(r.status, 3) << r.out;
+  const nlohmann::json replay = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(replay.is_object()) << r.out;
+  EXPECT_EQ(replay["lost_frames"], 1) << replay;
+  const nlohmann::json& lost = replay["first_difference"];
+  EXPECT_EQ(lost["channel"], "CAMERA_IMAGE") << replay;
+  EXPECT_EQ(lost["utime"], utime) << replay;
+  EXPECT_GE(lost["index"].get<int>(), kLost) << replay;
+  EXPECT_NE(lost.value("reason", "").find("lcm-logger lost it"), std::string::npos) << replay;
+  // Every state before it replays bit for bit: the first that differs is the lost frame's.
+  EXPECT_EQ(replay["table_states"]["first_difference"]["utime"], utime) << replay;
+  EXPECT_EQ(replay["table_states"]["first_difference"]["field"], "utime") << replay;
 }
 
 TEST(ClosedLoop, ARealtimeLogIsReportedAsNotReplayableBitForBit) {

@@ -1,0 +1,105 @@
+// Recorded LCM logs for the loop's tests: a directory of the test's own, what a log holds, and
+// copies of a log with a message changed or lost, through LCM's log file API.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <lcm/lcm-cpp.hpp>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "lcmtypes/billiard/image_t.hpp"
+
+namespace billiard::testing {
+
+// A directory of its own for a test's logs, removed with it.
+class TempDir {
+ public:
+  TempDir() {
+    char name[] = "/tmp/closed_loop_XXXXXX";
+    path_ = mkdtemp(name) ? name : "";
+  }
+  ~TempDir() {
+    if (!path_.empty()) std::filesystem::remove_all(path_);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  std::string operator/(const std::string& file) const { return path_ + "/" + file; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// How many messages of each channel a log holds.
+inline std::map<std::string, int> ChannelCounts(const std::string& path) {
+  std::map<std::string, int> counts;
+  lcm::LogFile log(path, "r");
+  while (const lcm::LogEvent* e = log.good() ? log.readNextEvent() : nullptr) ++counts[e->channel];
+  return counts;
+}
+
+// Copies the log `from` to `to`, each event as `copy` gives it back: unchanged, changed, or
+// nothing (false: the event is left out).
+inline void CopyLog(const std::string& from, const std::string& to,
+                    const std::function<bool(lcm::LogEvent&, std::vector<std::uint8_t>&)>& copy) {
+  lcm::LogFile in(from, "r"), out(to, "w");
+  ASSERT_TRUE(in.good() && out.good());
+  while (const lcm::LogEvent* e = in.readNextEvent()) {
+    lcm::LogEvent event = *e;
+    std::vector<std::uint8_t> bytes;  // the event's data when `copy` changes it
+    if (copy(event, bytes)) {
+      ASSERT_EQ(out.writeEvent(&event), 0);
+    }
+  }
+}
+
+// Copies the log `from` to `to` with the index-th message on `channel` decoded as a Message,
+// changed by `alter` and encoded again.
+template <class Message>
+void CopyWithOneMessageAltered(const std::string& from, const std::string& to,
+                               const std::string& channel, int index,
+                               const std::function<void(Message&)>& alter) {
+  int seen = 0;
+  CopyLog(from, to, [&](lcm::LogEvent& e, std::vector<std::uint8_t>& bytes) {
+    if (e.channel != channel || seen++ != index) return true;
+    Message m;
+    EXPECT_EQ(m.decode(e.data, 0, e.datalen), e.datalen);
+    alter(m);
+    bytes.resize(m.getEncodedSize());
+    m.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    e.data = bytes.data();
+    e.datalen = static_cast<std::int32_t>(bytes.size());
+    return true;
+  });
+  ASSERT_GT(seen, index) << "the log has " << seen << " messages on " << channel;
+}
+
+// The utime of the index-th CAMERA_IMAGE of a log; -1 when it has fewer.
+inline std::int64_t FrameUtime(const std::string& path, int index) {
+  lcm::LogFile log(path, "r");
+  int seen = 0;
+  while (const lcm::LogEvent* e = log.good() ? log.readNextEvent() : nullptr) {
+    if (e->channel != "CAMERA_IMAGE" || seen++ != index) continue;
+    image_t frame{};
+    return frame.decode(e->data, 0, e->datalen) == e->datalen ? frame.utime : -1;
+  }
+  return -1;
+}
+
+// Copies the log `from` to `to` without the frames at `utime` (a frame sent again unanswered
+// has several), as a logger that lost that frame wrote it.
+inline void CopyWithAFrameLost(const std::string& from, const std::string& to, std::int64_t utime) {
+  CopyLog(from, to, [utime](lcm::LogEvent& e, std::vector<std::uint8_t>&) {
+    image_t frame{};
+    return e.channel != "CAMERA_IMAGE" || frame.decode(e.data, 0, e.datalen) != e.datalen ||
+           frame.utime != utime;
+  });
+}
+
+}  // namespace billiard::testing
