@@ -16,17 +16,16 @@
 
 #include "lcmtypes/billiard/cue_command_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
+#include "lcmtypes/testing/recorded_logs.h"
 #include "tests/support/quoted_figures.h"
-#include "tests/support/recorded_logs.h"
 #include "tests/support/run_command.h"
 
 namespace {
 
-using billiard::testing::ChannelCounts;
+using billiard::messages::testing::ChannelCounts;
+using billiard::messages::testing::CopyWithOneMessageAltered;
 using billiard::testing::CommandResult;
-using billiard::testing::CopyWithOneMessageAltered;
 using billiard::testing::RunCommand;
-using billiard::testing::TempDir;
 
 nlohmann::json RunLoop(const std::string& args) {
   const CommandResult r =
@@ -34,6 +33,23 @@ nlohmann::json RunLoop(const std::string& args) {
   EXPECT_EQ(r.status, 0) << args;
   return nlohmann::json::parse(r.out, nullptr, false);
 }
+
+// A directory of its own for a test's logs, removed with it.
+class TempDir {
+ public:
+  TempDir() {
+    char name[] = "/tmp/closed_loop_XXXXXX";
+    path_ = mkdtemp(name) ? name : "";
+  }
+  ~TempDir() {
+    if (!path_.empty()) std::filesystem::remove_all(path_);
+  }
+  std::string operator/(const std::string& file) const { return path_ + "/" + file; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
 
 // Records a lockstep run of `shots` into `log`; false (the caller skips) where the machine has no
 // multicast and the loop ran in one process, recording nothing.
@@ -446,9 +462,9 @@ TEST(ClosedLoop, AReplayNamesAFrameTheLogLost) {
     GTEST_SKIP() << "no multicast here: the loop ran in one process and recorded nothing";
   }
   constexpr int kLost = 20;  // a frame past the table's learning, before the shot
-  const std::int64_t utime = billiard::testing::FrameUtime(log, kLost);
+  const std::int64_t utime = billiard::messages::testing::FrameUtime(log, kLost);
   ASSERT_GT(utime, 0);
-  billiard::testing::CopyWithAFrameLost(log, dir / "lost.lcm", utime);
+  billiard::messages::testing::CopyWithAFrameLost(log, dir / "lost.lcm", utime);
   const CommandResult r = Replay(dir / "lost.lcm");
   EXPECT_EQ(r.status, 3) << r.out;
   const nlohmann::json replay = nlohmann::json::parse(r.out, nullptr, false);

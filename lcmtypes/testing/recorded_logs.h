@@ -1,12 +1,10 @@
-// Recorded LCM logs for the loop's tests: a directory of the test's own, what a log holds, and
-// copies of a log with a message changed or lost, through LCM's log file API.
+// Recorded LCM logs for the loop's tests: what a log holds, and copies of a log with a message
+// changed or lost (as a logger that missed it wrote it), through LCM's log file API.
 #pragma once
 
 #include <gtest/gtest.h>
-#include <stdlib.h>
 
 #include <cstdint>
-#include <filesystem>
 #include <functional>
 #include <lcm/lcm-cpp.hpp>
 #include <map>
@@ -15,26 +13,7 @@
 
 #include "lcmtypes/billiard/image_t.hpp"
 
-namespace billiard::testing {
-
-// A directory of its own for a test's logs, removed with it.
-class TempDir {
- public:
-  TempDir() {
-    char name[] = "/tmp/closed_loop_XXXXXX";
-    path_ = mkdtemp(name) ? name : "";
-  }
-  ~TempDir() {
-    if (!path_.empty()) std::filesystem::remove_all(path_);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  std::string operator/(const std::string& file) const { return path_ + "/" + file; }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
+namespace billiard::messages::testing {
 
 // How many messages of each channel a log holds.
 inline std::map<std::string, int> ChannelCounts(const std::string& path) {
@@ -102,4 +81,4 @@ inline void CopyWithAFrameLost(const std::string& from, const std::string& to, s
   });
 }
 
-}  // namespace billiard::testing
+}  // namespace billiard::messages::testing
