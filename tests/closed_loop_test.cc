@@ -7,18 +7,18 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <functional>
-#include <lcm/lcm-cpp.hpp>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/image_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/testing/recorded_logs.h"
 #include "tests/support/quoted_figures.h"
 #include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 
@@ -26,6 +26,7 @@ using billiard::messages::testing::ChannelCounts;
 using billiard::messages::testing::CopyWithOneMessageAltered;
 using billiard::testing::CommandResult;
 using billiard::testing::RunCommand;
+using billiard::testing::TempDir;
 
 nlohmann::json RunLoop(const std::string& args) {
   const CommandResult r =
@@ -33,23 +34,6 @@ nlohmann::json RunLoop(const std::string& args) {
   EXPECT_EQ(r.status, 0) << args;
   return nlohmann::json::parse(r.out, nullptr, false);
 }
-
-// A directory of its own for a test's logs, removed with it.
-class TempDir {
- public:
-  TempDir() {
-    char name[] = "/tmp/closed_loop_XXXXXX";
-    path_ = mkdtemp(name) ? name : "";
-  }
-  ~TempDir() {
-    if (!path_.empty()) std::filesystem::remove_all(path_);
-  }
-  std::string operator/(const std::string& file) const { return path_ + "/" + file; }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
 
 // Records a lockstep run of `shots` into `log`; false (the caller skips) where the machine has no
 // multicast and the loop ran in one process, recording nothing.
@@ -451,33 +435,49 @@ TEST(ClosedLoop, AReplayNamesTheFirstMessageAndFieldThatDiffer) {
   EXPECT_NE(r.out.find("): heading: recorded "), std::string::npos) << r.out;
 }
 
-// A frame the estimator answered but the logger lost (lockstep waits for the estimator, not for
-// the logger, and UDP multicast promises no delivery; so a 10-rack match's log lost one while the
-// planner decided): the replay names the missing frame, not the estimator's states after it,
-// which looked one frame behind.
-TEST(ClosedLoop, AReplayNamesAFrameTheLogLost) {
+// A message the nodes had but the logger lost (lockstep waits for the estimator, not for the
+// logger, and UDP multicast promises no delivery; so a 10-rack match's log lost a frame while the
+// planner decided): the replay names the lost message, not the estimator's states after it,
+// which looked a frame out of step.
+TEST(ClosedLoop, AReplayNamesAMessageTheLogLost) {
+  using billiard::messages::testing::UtimeOf;
   const TempDir dir;
   const std::string log = dir / "run.lcm";
   if (!RecordRun(log, 1)) {
     GTEST_SKIP() << "no multicast here: the loop ran in one process and recorded nothing";
   }
   constexpr int kLost = 20;  // a frame past the table's learning, before the shot
-  const std::int64_t utime = billiard::messages::testing::FrameUtime(log, kLost);
-  ASSERT_GT(utime, 0);
-  billiard::messages::testing::CopyWithAFrameLost(log, dir / "lost.lcm", utime);
-  const CommandResult r = Replay(dir / "lost.lcm");
+  const std::int64_t frame = UtimeOf<billiard::image_t>(log, "CAMERA_IMAGE", kLost);
+  ASSERT_GT(frame, 0);
+  billiard::messages::testing::CopyWithAFrameLost(log, dir / "frame.lcm", frame);
+  CommandResult r = Replay(dir / "frame.lcm");
   EXPECT_EQ(r.status, 3) << r.out;
-  const nlohmann::json replay = nlohmann::json::parse(r.out, nullptr, false);
+  nlohmann::json replay = nlohmann::json::parse(r.out, nullptr, false);
   ASSERT_TRUE(replay.is_object()) << r.out;
   EXPECT_EQ(replay["lost_frames"], 1) << replay;
-  const nlohmann::json& lost = replay["first_difference"];
-  EXPECT_EQ(lost["channel"], "CAMERA_IMAGE") << replay;
-  EXPECT_EQ(lost["utime"], utime) << replay;
-  EXPECT_GE(lost["index"].get<int>(), kLost) << replay;
-  EXPECT_NE(lost.value("reason", "").find("lcm-logger lost it"), std::string::npos) << replay;
+  EXPECT_EQ(replay["first_difference"]["channel"], "CAMERA_IMAGE") << replay;
+  EXPECT_EQ(replay["first_difference"]["utime"], frame) << replay;
+  EXPECT_GE(replay["first_difference"]["index"].get<int>(), kLost) << replay;
+  EXPECT_NE(replay["first_difference"].value("reason", "").find("lcm-logger lost it"),
+            std::string::npos)
+      << replay;
   // Every state before it replays bit for bit: the first that differs is the lost frame's.
-  EXPECT_EQ(replay["table_states"]["first_difference"]["utime"], utime) << replay;
-  EXPECT_EQ(replay["table_states"]["first_difference"]["field"], "utime") << replay;
+  EXPECT_EQ(replay["table_states"]["first_difference"]["utime"], frame) << replay;
+
+  const std::int64_t state = UtimeOf<billiard::table_state_t>(log, "TABLE_STATE", kLost);
+  billiard::messages::testing::CopyWithOneMessageLost(log, dir / "state.lcm", "TABLE_STATE", kLost);
+  r = Replay(dir / "state.lcm");
+  EXPECT_EQ(r.status, 3) << r.out;
+  replay = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(replay.is_object()) << r.out;
+  EXPECT_EQ(replay["lost_frames"], 0) << replay;
+  EXPECT_EQ(replay["lost_states"], 1) << replay;
+  EXPECT_EQ(replay["first_difference"]["channel"], "TABLE_STATE") << replay;
+  EXPECT_EQ(replay["first_difference"]["index"], kLost) << replay;
+  EXPECT_EQ(replay["first_difference"]["utime"], state) << replay;
+  EXPECT_NE(replay["first_difference"].value("reason", "").find("lcm-logger lost it"),
+            std::string::npos)
+      << replay;
 }
 
 TEST(ClosedLoop, ARealtimeLogIsReportedAsNotReplayableBitForBit) {

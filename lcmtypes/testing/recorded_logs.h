@@ -59,16 +59,28 @@ void CopyWithOneMessageAltered(const std::string& from, const std::string& to,
   ASSERT_GT(seen, index) << "the log has " << seen << " messages on " << channel;
 }
 
-// The utime of the index-th CAMERA_IMAGE of a log; -1 when it has fewer.
-inline std::int64_t FrameUtime(const std::string& path, int index) {
+// The utime of the index-th message on `channel` of a log, decoded as a Message; -1 when it has
+// fewer.
+template <class Message>
+std::int64_t UtimeOf(const std::string& path, const std::string& channel, int index) {
   lcm::LogFile log(path, "r");
   int seen = 0;
   while (const lcm::LogEvent* e = log.good() ? log.readNextEvent() : nullptr) {
-    if (e->channel != "CAMERA_IMAGE" || seen++ != index) continue;
-    image_t frame{};
-    return frame.decode(e->data, 0, e->datalen) == e->datalen ? frame.utime : -1;
+    if (e->channel != channel || seen++ != index) continue;
+    Message m{};
+    return m.decode(e->data, 0, e->datalen) == e->datalen ? m.utime : -1;
   }
   return -1;
+}
+
+// Copies the log `from` to `to` without the index-th message on `channel`, as a logger that lost
+// it wrote it.
+inline void CopyWithOneMessageLost(const std::string& from, const std::string& to,
+                                   const std::string& channel, int index) {
+  int seen = 0;
+  CopyLog(from, to, [&](lcm::LogEvent& e, std::vector<std::uint8_t>&) {
+    return e.channel != channel || seen++ != index;
+  });
 }
 
 // Copies the log `from` to `to` without the frames at `utime` (a frame sent again unanswered

@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -227,7 +228,7 @@ struct ReplayedLog {
   std::vector<Compared> recorded_states, recorded_commands;
   Outputs replayed;
   std::vector<AnsweredFrame> answered;
-  std::unordered_set<std::int64_t> frame_utimes;
+  std::unordered_map<std::int64_t, long> frame_events;  // a frame's utime: its first event
   long events = 0, inputs = 0, frames = 0;
   std::string clock = "unknown";
 };
@@ -264,7 +265,7 @@ ReplayedLog ReplayLog(const ReplayArgs& args, lcm::LogFile& log) {
       ++r.inputs;
       if (e->channel == messages::kCameraImageChannel) {
         ++r.frames;
-        if (const auto utime = FrameUtime(*e)) r.frame_utimes.insert(*utime);
+        if (const auto utime = FrameUtime(*e)) r.frame_events.emplace(*utime, r.events);
       }
       lcm.publish(e->channel, e->data, e->datalen);
       nodes::HandleUntilIdle(lcm, [&planner] { return planner.Work(); });
@@ -281,28 +282,47 @@ ReplayedLog ReplayLog(const ReplayArgs& args, lcm::LogFile& log) {
   return r;
 }
 
-// The frames the estimator answered (a TABLE_STATE of theirs is recorded) that the log does not
-// hold: lost by lcm-logger, the one receiver a lockstep run does not wait for (UDP multicast
-// promises no delivery). The replay's estimator never sees them, so its states cannot match from
-// the first on: that is the log's fault, not the nodes', and is said as such.
-struct LostFrames {
+// Messages a node had that the log does not hold: lost by lcm-logger, the one receiver a lockstep
+// run does not wait for (UDP multicast promises no delivery). The log is at fault, not the nodes,
+// and the first is said as such, before the messages it puts out of step.
+struct LostMessages {
   long count = 0;
   std::optional<MessageDifference> first;
+
+  void Add(const std::string& channel, long index, std::int64_t utime, long event,
+           const std::string& reason) {
+    if (count++ > 0) return;
+    first = MessageDifference{channel, index, utime, event, std::nullopt, reason};
+  }
 };
 
-LostFrames FindLostFrames(const ReplayedLog& r) {
-  LostFrames lost;
+// The frames the estimator answered (their TABLE_STATE is recorded) that the log does not hold.
+// The replay's estimator never sees them, so its states are a frame out of step from the first.
+LostMessages FindLostFrames(const ReplayedLog& r) {
+  LostMessages lost;
   for (const AnsweredFrame& a : r.answered) {
-    if (r.frame_utimes.count(a.utime)) continue;
-    if (lost.count++ == 0) {
-      MessageDifference d;
-      d.channel = messages::kCameraImageChannel;
-      d.index = a.frames_before;
-      d.utime = a.utime;
-      d.event = a.event;
-      d.reason = "not in the log, though a recorded TABLE_STATE answers it: lcm-logger lost it";
-      lost.first = d;
-    }
+    if (r.frame_events.count(a.utime)) continue;
+    lost.Add(messages::kCameraImageChannel, a.frames_before, a.utime, a.event,
+             "not in the log, though a recorded TABLE_STATE answers it: lcm-logger lost it");
+  }
+  return lost;
+}
+
+// The estimator's states of frames the log holds, which the replay's estimator published and the
+// log does not hold: the recorded states are a state out of step with the replayed from the first.
+LostMessages FindLostStates(const ReplayedLog& r) {
+  std::unordered_set<std::int64_t> recorded;
+  for (const AnsweredFrame& a : r.answered) recorded.insert(a.utime);
+  LostMessages lost;
+  for (std::size_t i = 0; i < r.replayed.states.size(); ++i) {
+    const Bytes& bytes = r.replayed.states[i].bytes;
+    table_state_t state;
+    if (!messages::Decode(bytes.data(), bytes.size(), state).empty()) continue;
+    const auto frame = r.frame_events.find(state.utime);
+    if (recorded.count(state.utime) || frame == r.frame_events.end()) continue;
+    lost.Add(messages::kTableStateChannel, static_cast<long>(i), state.utime, frame->second,
+             "not in the log, though its frame is and the estimator answers it: lcm-logger "
+             "lost it");
   }
   return lost;
 }
@@ -336,17 +356,19 @@ void Run(const ReplayArgs& args) {
       Compare<table_state_t>(messages::kTableStateChannel, r.recorded_states, r.replayed.states);
   const Comparison commands = Compare<cue_command_t>(messages::kCueCommandChannel,
                                                      r.recorded_commands, r.replayed.commands);
-  const LostFrames lost = FindLostFrames(r);
+  const LostMessages lost_frames = FindLostFrames(r), lost_states = FindLostStates(r);
   // The first difference in the log's order: a message missing from the recording comes last.
   const std::optional<MessageDifference> first =
-      Earlier(Earlier(lost.first, states.first_difference), commands.first_difference);
+      Earlier(Earlier(Earlier(lost_frames.first, lost_states.first), states.first_difference),
+              commands.first_difference);
   const bool same = !first && commands.recorded > 0;
   if (args.json) {
     std::cout << nlohmann::json{{"inputs", r.inputs},
                                 {"clock", r.clock},
                                 {"table_states", ToJson(states)},
                                 {"cue_commands", ToJson(commands)},
-                                {"lost_frames", lost.count},
+                                {"lost_frames", lost_frames.count},
+                                {"lost_states", lost_states.count},
                                 {"first_difference", ToJson(first)},
                                 {"identical", same}}
                      .dump()
@@ -355,10 +377,11 @@ void Run(const ReplayArgs& args) {
   std::cerr << "replay: " << r.inputs << " inputs; TABLE_STATE " << states.identical << " of "
             << states.recorded << " identical, CUE_COMMAND " << commands.identical << " of "
             << commands.recorded << " identical (all fields but solve_us)" << std::endl;
-  if (lost.count > 0) {
-    std::cerr << "replay: the log lacks " << lost.count
-              << " frame(s) the estimator answered, lost by lcm-logger: the replay cannot match "
-                 "from the first on"
+  if (lost_frames.count + lost_states.count > 0) {
+    std::cerr << "replay: the log lacks " << lost_frames.count << " frame(s) and "
+              << lost_states.count
+              << " state(s) the estimator had, lost by lcm-logger: the replay cannot match from "
+                 "the first on"
               << std::endl;
   }
   if (first) std::cerr << "replay: first difference: " << Describe(*first) << std::endl;
