@@ -341,10 +341,12 @@ fi
 
 sim_clock=""
 [ "$clock" = --realtime ] && sim_clock=--realtime
-# A fit between shots takes seconds, and so does a game's decision (6 s and more on a loaded
-# machine, where the simulator's 10 s ended a match); the simulator waits for an answer that long.
+# A fit between shots takes seconds; the simulator waits for its answer that long. A game's
+# choice (safeties, the second level) takes a second or two, and on a machine busy with other
+# work several times that: the simulator's 10 s would end a sound run.
 identifying=()
-{ [ "$identify_every" -gt 0 ] || [ -n "$game" ]; } && identifying=(--reply-timeout 120)
+[ -n "$game" ] && identifying=(--reply-timeout 60)
+[ "$identify_every" -gt 0 ] && identifying=(--reply-timeout 120)
 $in_process && identifying+=(--identify-every "$identify_every" "${learn_noise[@]}")
 # In the background, so that a signal reaches the trap at once and the cleanup stops it too.
 session=("$bin_dir/table_sim_node")
