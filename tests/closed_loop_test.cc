@@ -7,53 +7,32 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <functional>
-#include <lcm/lcm-cpp.hpp>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/image_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
+#include "lcmtypes/testing/recorded_logs.h"
 #include "tests/support/quoted_figures.h"
 #include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 
+using billiard::messages::testing::ChannelCounts;
+using billiard::messages::testing::CopyWithOneMessageAltered;
 using billiard::testing::CommandResult;
 using billiard::testing::RunCommand;
+using billiard::testing::TempDir;
 
 nlohmann::json RunLoop(const std::string& args) {
   const CommandResult r =
       RunCommand(std::string("bash ") + RUN_LOOP_SCRIPT + " --no-build --json " + args);
   EXPECT_EQ(r.status, 0) << args;
   return nlohmann::json::parse(r.out, nullptr, false);
-}
-
-// A directory of its own for a test's logs, removed with it.
-class TempDir {
- public:
-  TempDir() {
-    char name[] = "/tmp/closed_loop_XXXXXX";
-    path_ = mkdtemp(name) ? name : "";
-  }
-  ~TempDir() {
-    if (!path_.empty()) std::filesystem::remove_all(path_);
-  }
-  std::string operator/(const std::string& file) const { return path_ + "/" + file; }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
-
-// How many messages of each channel a log holds.
-std::map<std::string, int> ChannelCounts(const std::string& path) {
-  std::map<std::string, int> counts;
-  lcm::LogFile log(path, "r");
-  while (const lcm::LogEvent* e = log.good() ? log.readNextEvent() : nullptr) ++counts[e->channel];
-  return counts;
 }
 
 // Records a lockstep run of `shots` into `log`; false (the caller skips) where the machine has no
@@ -67,32 +46,6 @@ bool RecordRun(const std::string& log, int shots, const std::string& more_args =
 
 CommandResult Replay(const std::string& log) {
   return RunCommand(std::string("bash ") + REPLAY_SCRIPT + " " + log + " --json");
-}
-
-// Copies the log `from` to `to` with the index-th message on `channel` decoded as a Message,
-// changed by `alter` and encoded again, through LCM's log file API.
-template <class Message>
-void CopyWithOneMessageAltered(const std::string& from, const std::string& to,
-                               const std::string& channel, int index,
-                               const std::function<void(Message&)>& alter) {
-  lcm::LogFile in(from, "r"), out(to, "w");
-  ASSERT_TRUE(in.good() && out.good());
-  int seen = 0;
-  while (const lcm::LogEvent* e = in.readNextEvent()) {
-    lcm::LogEvent copy = *e;
-    std::vector<std::uint8_t> bytes;
-    if (e->channel == channel && seen++ == index) {
-      Message m;
-      ASSERT_EQ(m.decode(e->data, 0, e->datalen), e->datalen);
-      alter(m);
-      bytes.resize(m.getEncodedSize());
-      m.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-      copy.data = bytes.data();
-      copy.datalen = static_cast<std::int32_t>(bytes.size());
-    }
-    ASSERT_EQ(out.writeEvent(&copy), 0);
-  }
-  ASSERT_GT(seen, index) << "the log has " << seen << " messages on " << channel;
 }
 
 // Twenty shots to targets (seed 1), the README's main command before it played a rack: lockstep
@@ -480,6 +433,51 @@ TEST(ClosedLoop, AReplayNamesTheFirstMessageAndFieldThatDiffer) {
   EXPECT_EQ(r.status, 3) << r.out;
   EXPECT_NE(r.out.find("first difference: CUE_COMMAND 0 (utime "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("): heading: recorded "), std::string::npos) << r.out;
+}
+
+// A message the nodes had but the logger lost (lockstep waits for the estimator, not for the
+// logger, and UDP multicast promises no delivery; so a 10-rack match's log lost a frame while the
+// planner decided): the replay names the lost message, not the estimator's states after it,
+// which looked a frame out of step.
+TEST(ClosedLoop, AReplayNamesAMessageTheLogLost) {
+  using billiard::messages::testing::UtimeOf;
+  const TempDir dir;
+  const std::string log = dir / "run.lcm";
+  if (!RecordRun(log, 1)) {
+    GTEST_SKIP() << "no multicast here: the loop ran in one process and recorded nothing";
+  }
+  constexpr int kLost = 20;  // a frame past the table's learning, before the shot
+  const std::int64_t frame = UtimeOf<billiard::image_t>(log, "CAMERA_IMAGE", kLost);
+  ASSERT_GT(frame, 0);
+  billiard::messages::testing::CopyWithAFrameLost(log, dir / "frame.lcm", frame);
+  CommandResult r = Replay(dir / "frame.lcm");
+  EXPECT_EQ(r.status, 3) << r.out;
+  nlohmann::json replay = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(replay.is_object()) << r.out;
+  EXPECT_EQ(replay["lost_frames"], 1) << replay;
+  EXPECT_EQ(replay["first_difference"]["channel"], "CAMERA_IMAGE") << replay;
+  EXPECT_EQ(replay["first_difference"]["utime"], frame) << replay;
+  EXPECT_GE(replay["first_difference"]["index"].get<int>(), kLost) << replay;
+  EXPECT_NE(replay["first_difference"].value("reason", "").find("lcm-logger lost it"),
+            std::string::npos)
+      << replay;
+  // Every state before it replays bit for bit: the first that differs is the lost frame's.
+  EXPECT_EQ(replay["table_states"]["first_difference"]["utime"], frame) << replay;
+
+  const std::int64_t state = UtimeOf<billiard::table_state_t>(log, "TABLE_STATE", kLost);
+  billiard::messages::testing::CopyWithOneMessageLost(log, dir / "state.lcm", "TABLE_STATE", kLost);
+  r = Replay(dir / "state.lcm");
+  EXPECT_EQ(r.status, 3) << r.out;
+  replay = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_TRUE(replay.is_object()) << r.out;
+  EXPECT_EQ(replay["lost_frames"], 0) << replay;
+  EXPECT_EQ(replay["lost_states"], 1) << replay;
+  EXPECT_EQ(replay["first_difference"]["channel"], "TABLE_STATE") << replay;
+  EXPECT_EQ(replay["first_difference"]["index"], kLost) << replay;
+  EXPECT_EQ(replay["first_difference"]["utime"], state) << replay;
+  EXPECT_NE(replay["first_difference"].value("reason", "").find("lcm-logger lost it"),
+            std::string::npos)
+      << replay;
 }
 
 TEST(ClosedLoop, ARealtimeLogIsReportedAsNotReplayableBitForBit) {

@@ -33,7 +33,6 @@ const std::map<std::string, std::string>& LongFunctions() {
   static const std::map<std::string, std::string> functions = {
       {"tools/billiard/simulate_command.cc:Run", "one ball, a scene and their outputs"},
       {"tools/billiard/burst_command.cc:Run", "the burst, its answers and the summary"},
-      {"tools/billiard/replay_command.cc:Run", "the log read, replayed and compared"},
       {"plot/table_picture.cc:DrawTable", "the table, the paths, the events and the labels"},
       {"plot/chart.cc:DrawChart", "the axes, the lines and the labels"},
       {"sim/table/table_simulation_held.cc:TableSimulation::ResolveHeld", "the held set's solve and its release"},

@@ -8,10 +8,13 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "estimator/node/estimator_node.h"
 #include "lcmtypes/billiard/cue_command_t.hpp"
+#include "lcmtypes/billiard/image_t.hpp"
 #include "lcmtypes/billiard/node_status_t.hpp"
 #include "lcmtypes/billiard/table_state_t.hpp"
 #include "lcmtypes/message_checks.h"
@@ -60,6 +63,15 @@ Compared RecordedMessage(const lcm::LogEvent& e, long event) {
   const auto* p = static_cast<const std::uint8_t*>(e.data);
   if (e.channel == messages::kCueCommandChannel) return {WithoutWallTime(e.data, e.datalen), event};
   return {Bytes(p, p + e.datalen), event};
+}
+
+// A frame's utime; nothing when it does not decode (the estimator drops it too).
+std::optional<std::int64_t> FrameUtime(const lcm::LogEvent& e) {
+  image_t frame;
+  if (!messages::Decode(e.data, static_cast<std::size_t>(e.datalen), frame).empty()) {
+    return std::nullopt;
+  }
+  return frame.utime;
 }
 
 // Collects what the fresh nodes publish.
@@ -195,18 +207,36 @@ std::string ClockOf(const lcm::LogEvent& e) {
   throw UsageError("'" + path + "' is not an LCM log (no event in it)");
 }
 
-void Run(const ReplayArgs& args) {
-  lcm::LogFile log(args.log, "r");
-  if (!log.good()) throw UsageError("cannot read LCM log '" + args.log + "'");
-  const physics::ModelParameters params = LoadParametersOption(args.params);
-  camera::CameraModel camera;
+camera::CameraModel ReplayCamera(const ReplayArgs& args, const physics::ModelParameters& params) {
   try {
-    camera = args.camera.empty() ? camera::CameraModel::Overhead(params.table, 1280, 720)
-                                 : camera::LoadCameraModel(args.camera);
+    return args.camera.empty() ? camera::CameraModel::Overhead(params.table, 1280, 720)
+                               : camera::LoadCameraModel(args.camera);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--camera: ") + e.what());
   }
+}
 
+// A recorded TABLE_STATE: the estimator answered a CAMERA_IMAGE of its utime.
+struct AnsweredFrame {
+  std::int64_t utime = 0;
+  long frames_before = 0;  // CAMERA_IMAGE events in the log before the state
+  long event = 0;
+};
+
+// What the log held and what the fresh nodes made of it.
+struct ReplayedLog {
+  std::vector<Compared> recorded_states, recorded_commands;
+  Outputs replayed;
+  std::vector<AnsweredFrame> answered;
+  std::unordered_map<std::int64_t, long> frame_events;  // a frame's utime: its first event
+  long events = 0, inputs = 0, frames = 0;
+  std::string clock = "unknown";
+};
+
+// Reads the log once, feeding its frames and requests to fresh nodes as it goes.
+ReplayedLog ReplayLog(const ReplayArgs& args, lcm::LogFile& log) {
+  const physics::ModelParameters params = LoadParametersOption(args.params);
+  const camera::CameraModel camera = ReplayCamera(args, params);
   // The nodes in this process, on an in-memory LCM: each input is handled to the end before the
   // next, which is the order the lockstep run had.
   lcm::LCM lcm("memq://");
@@ -218,70 +248,142 @@ void Run(const ReplayArgs& args) {
   planner_node::PlannerNodeOptions planning;
   planning.pot.robot = LoadRobotOption(args.robot);
   planner_node::PlannerNode planner(lcm, params, planning, quiet);
-  Outputs out;
-  lcm.subscribe(messages::kTableStateChannel, &Outputs::OnState, &out);
-  lcm.subscribe(messages::kCueCommandChannel, &Outputs::OnCommand, &out);
+  ReplayedLog r;
+  lcm.subscribe(messages::kTableStateChannel, &Outputs::OnState, &r.replayed);
+  lcm.subscribe(messages::kCueCommandChannel, &Outputs::OnCommand, &r.replayed);
 
-  std::vector<Compared> recorded_states, recorded_commands;
-  long events = 0, inputs = 0, frames = 0;
-  std::string clock = "unknown";
-  for (const lcm::LogEvent* e; (e = log.readNextEvent()); ++events) {
-    if (const std::string said = ClockOf(*e); !said.empty()) clock = said;
-    if (clock == "realtime") {
-      RefuseReplay(args, clock,
+  for (const lcm::LogEvent* e; (e = log.readNextEvent()); ++r.events) {
+    if (const std::string said = ClockOf(*e); !said.empty()) r.clock = said;
+    if (r.clock == "realtime") {
+      RefuseReplay(args, r.clock,
                    "'" + args.log +
                        "' was recorded with --realtime: its nodes answered as the "
                        "wall clock let them, so it is not replayable bit for bit");
     }
     if (e->channel == messages::kCameraImageChannel ||
         e->channel == messages::kShotRequestChannel) {
-      ++inputs;
-      frames += e->channel == messages::kCameraImageChannel;
+      ++r.inputs;
+      if (e->channel == messages::kCameraImageChannel) {
+        ++r.frames;
+        if (const auto utime = FrameUtime(*e)) r.frame_events.emplace(*utime, r.events);
+      }
       lcm.publish(e->channel, e->data, e->datalen);
       nodes::HandleUntilIdle(lcm, [&planner] { return planner.Work(); });
     } else if (e->channel == messages::kTableStateChannel) {
-      recorded_states.push_back(RecordedMessage(*e, events));
+      r.recorded_states.push_back(RecordedMessage(*e, r.events));
+      if (table_state_t s;
+          messages::Decode(e->data, static_cast<std::size_t>(e->datalen), s).empty()) {
+        r.answered.push_back({s.utime, r.frames, r.events});
+      }
     } else if (e->channel == messages::kCueCommandChannel) {
-      recorded_commands.push_back(RecordedMessage(*e, events));
+      r.recorded_commands.push_back(RecordedMessage(*e, r.events));
     }
   }
-  if (events == 0) RejectEmptyLog(args.log);
-  if (frames == 0) {
-    RefuseReplay(args, clock,
+  return r;
+}
+
+// Messages a node had that the log does not hold: lost by lcm-logger, the one receiver a lockstep
+// run does not wait for (UDP multicast promises no delivery). The log is at fault, not the nodes,
+// and the first is said as such, before the messages it puts out of step.
+struct LostMessages {
+  long count = 0;
+  std::optional<MessageDifference> first;
+
+  void Add(const std::string& channel, long index, std::int64_t utime, long event,
+           const std::string& reason) {
+    if (count++ > 0) return;
+    first = MessageDifference{channel, index, utime, event, std::nullopt, reason};
+  }
+};
+
+// The frames the estimator answered (their TABLE_STATE is recorded) that the log does not hold.
+// The replay's estimator never sees them, so its states are a frame out of step from the first.
+LostMessages FindLostFrames(const ReplayedLog& r) {
+  LostMessages lost;
+  for (const AnsweredFrame& a : r.answered) {
+    if (r.frame_events.count(a.utime)) continue;
+    lost.Add(messages::kCameraImageChannel, a.frames_before, a.utime, a.event,
+             "not in the log, though a recorded TABLE_STATE answers it: lcm-logger lost it");
+  }
+  return lost;
+}
+
+// The estimator's states of frames the log holds, which the replay's estimator published and the
+// log does not hold: the recorded states are a state out of step with the replayed from the first.
+LostMessages FindLostStates(const ReplayedLog& r) {
+  std::unordered_set<std::int64_t> recorded;
+  for (const AnsweredFrame& a : r.answered) recorded.insert(a.utime);
+  LostMessages lost;
+  for (std::size_t i = 0; i < r.replayed.states.size(); ++i) {
+    const Bytes& bytes = r.replayed.states[i].bytes;
+    table_state_t state;
+    if (!messages::Decode(bytes.data(), bytes.size(), state).empty()) continue;
+    const auto frame = r.frame_events.find(state.utime);
+    if (recorded.count(state.utime) || frame == r.frame_events.end()) continue;
+    lost.Add(messages::kTableStateChannel, static_cast<long>(i), state.utime, frame->second,
+             "not in the log, though its frame is and the estimator answers it: lcm-logger "
+             "lost it");
+  }
+  return lost;
+}
+
+// The earlier in the log of two differences.
+std::optional<MessageDifference> Earlier(const std::optional<MessageDifference>& a,
+                                         const std::optional<MessageDifference>& b) {
+  return !a || (b && b->event < a->event) ? b : a;
+}
+
+nlohmann::json ToJson(const Comparison& c) {
+  return nlohmann::json{{"recorded", c.recorded},
+                        {"replayed", c.replayed},
+                        {"identical", c.identical},
+                        {"first_difference", ToJson(c.first_difference)}};
+}
+
+void Run(const ReplayArgs& args) {
+  lcm::LogFile log(args.log, "r");
+  if (!log.good()) throw UsageError("cannot read LCM log '" + args.log + "'");
+  const ReplayedLog r = ReplayLog(args, log);
+  if (r.events == 0) RejectEmptyLog(args.log);
+  if (r.frames == 0) {
+    RefuseReplay(args, r.clock,
                  "'" + args.log +
                      "' has no CAMERA_IMAGE frames (run_loop.sh --log-frames "
                      "none): nothing to replay through the estimator");
   }
 
   const Comparison states =
-      Compare<table_state_t>(messages::kTableStateChannel, recorded_states, out.states);
-  const Comparison commands =
-      Compare<cue_command_t>(messages::kCueCommandChannel, recorded_commands, out.commands);
+      Compare<table_state_t>(messages::kTableStateChannel, r.recorded_states, r.replayed.states);
+  const Comparison commands = Compare<cue_command_t>(messages::kCueCommandChannel,
+                                                     r.recorded_commands, r.replayed.commands);
+  const LostMessages lost_frames = FindLostFrames(r), lost_states = FindLostStates(r);
   // The first difference in the log's order: a message missing from the recording comes last.
-  std::optional<MessageDifference> first = states.first_difference;
-  if (!first || (commands.first_difference && commands.first_difference->event < first->event)) {
-    first = commands.first_difference;
-  }
+  const std::optional<MessageDifference> first =
+      Earlier(Earlier(Earlier(lost_frames.first, lost_states.first), states.first_difference),
+              commands.first_difference);
   const bool same = !first && commands.recorded > 0;
-  const auto describe = [](const Comparison& c) {
-    return nlohmann::json{{"recorded", c.recorded},
-                          {"replayed", c.replayed},
-                          {"identical", c.identical},
-                          {"first_difference", ToJson(c.first_difference)}};
-  };
   if (args.json) {
-    std::cout << nlohmann::json{{"inputs", inputs},
-                                {"clock", clock},
-                                {"table_states", describe(states)},
-                                {"cue_commands", describe(commands)},
+    std::cout << nlohmann::json{{"inputs", r.inputs},
+                                {"clock", r.clock},
+                                {"table_states", ToJson(states)},
+                                {"cue_commands", ToJson(commands)},
+                                {"lost_frames", lost_frames.count},
+                                {"lost_states", lost_states.count},
                                 {"first_difference", ToJson(first)},
                                 {"identical", same}}
                      .dump()
               << std::endl;
   }
-  std::cerr << "replay: " << inputs << " inputs; TABLE_STATE " << states.identical << " of "
+  std::cerr << "replay: " << r.inputs << " inputs; TABLE_STATE " << states.identical << " of "
             << states.recorded << " identical, CUE_COMMAND " << commands.identical << " of "
             << commands.recorded << " identical (all fields but solve_us)" << std::endl;
+  if (lost_frames.count + lost_states.count > 0) {
+    std::cerr << "replay: the log lacks " << lost_frames.count << " frame(s) and "
+              << lost_states.count
+              << " state(s) the estimator had, lost by lcm-logger: the replay cannot match from "
+                 "the first on"
+              << std::endl;
+  }
   if (first) std::cerr << "replay: first difference: " << Describe(*first) << std::endl;
   if (!same) {
     throw Refused(first ? "the replay differs from the recording"
@@ -303,7 +405,8 @@ void AddReplayCommand(CLI::App& app) {
   cmd->add_option("--params", args->params, "As the loop's nodes had (default pool)")
       ->capture_default_str();
   cmd->add_option("--camera", args->camera, "Camera model JSON, as the estimator had");
-  cmd->add_option("--robot", args->robot, "As the planner had (default gantry)")->capture_default_str();
+  cmd->add_option("--robot", args->robot, "As the planner had (default gantry)")
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { Run(*args); });
 }
