@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "planner/choice/testing/choice_test.h"
@@ -118,6 +119,30 @@ TEST_F(ShotChoiceTest, FinalistsFirstByScoreAndOnlyTheChosenConfirmed) {
   }
   EXPECT_EQ(r.likely, r.chosen()->reported().probability >= options.likely);
   EXPECT_GT(r.simulations, 0);
+}
+
+// The candidates' margins only rank them, walked to a cap; the chosen one's is stated as the pot
+// planner states it (every 0.01 degree out), the others' left as ranked. Off, it is left too.
+TEST_F(ShotChoiceTest, TheChosenPotsMarginIsStatedInFull) {
+  const auto balls = TwoBalls();
+  ChoiceOptions options = QuickChoice();
+  options.margin_cap_deg = 0.05;
+  batch::ThreadPool pool(2);
+  const ChoiceResult r = ChooseShot(table_, params_, balls, options, pool);
+  ASSERT_EQ(r.status, ChoiceStatus::kOk) << r.reason;
+  const pot::PotPlan& chosen = r.chosen()->plan;
+  const pot::PotPlan full = Plan(balls, chosen.ball, chosen.pocket);
+  ASSERT_GT(std::min(full.margin_left_deg, full.margin_right_deg), 0.05) << "the cap cuts it";
+  EXPECT_EQ(chosen.margin_left_deg, full.margin_left_deg);
+  EXPECT_EQ(chosen.margin_right_deg, full.margin_right_deg);
+  for (std::size_t i = 1; i < r.candidates.size(); ++i) {
+    EXPECT_LE(r.candidates[i].plan.margin_left_deg, 0.05 + 1e-9) << i;
+  }
+  options.state_margin = false;
+  const ChoiceResult ranked = ChooseShot(table_, params_, balls, options, pool);
+  ExpectSameChoice(r, ranked);
+  EXPECT_NEAR(ranked.chosen()->plan.margin_left_deg, 0.05, 1e-9);
+  EXPECT_LT(ranked.simulations, r.simulations);
 }
 
 TEST_F(ShotChoiceTest, RefusesWhatCannotBePlayed) {
