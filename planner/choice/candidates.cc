@@ -22,8 +22,9 @@ std::vector<pot::PotPlan> PlanCandidates(const table::TableGeometry& table,
       }
     }
   }
+  const pot::PotOptions ranking = RankingPotOptions(options);
   auto plans = pool.Map(requests.size(), [&](std::size_t i) {
-    return pot::PlanPot(table, params, balls, requests[i], options.pot);
+    return pot::PlanPot(table, params, balls, requests[i], ranking);
   });
   std::vector<pot::PotPlan> ok;
   for (auto& p : plans) {

@@ -4,6 +4,7 @@
 // Module: billiard::choice.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -65,6 +66,26 @@ struct ChoiceOptions {
   std::vector<pot::ShotKind> kinds = {pot::ShotKind::kDirect, pot::ShotKind::kBank,
                                       pot::ShotKind::kKick, pot::ShotKind::kCurve};
   pot::PotOptions pot;
+  // The heading margins of the pots it plans (pot::PotOptions::margin_cap, margin_stride): they
+  // only rank plans (within PlanPot a kind's widest route, the screening's tie-break, the second
+  // level's most forgiving next pots); a plan's chance is the noise's, sampled. So the walk stops
+  // at margin_cap_deg, 8 standard deviations of the computational-pool heading noise (0.125
+  // degree; 10 of the robot's 0.1), past which a wider window changes no probability, and plays
+  // every margin_stride-th heading of the 0.01-degree grid (0.04 degree, a third of either
+  // deviation), the edge found by bisection between: most of a choice's time was the walk.
+  double margin_cap_deg = 1.0;
+  int margin_stride = 4;
+  // The chosen pot's margin walked in full once it is chosen (pot::StateMargins), as a choice
+  // states it (choose-shot, planner_node); false: as ranked (a rack's players, planner/game/).
+  bool state_margin = true;
 };
+
+// options.pot with the walk of the margins it ranks plans by (margin_cap_deg, margin_stride).
+inline pot::PotOptions RankingPotOptions(const ChoiceOptions& options) {
+  pot::PotOptions ranking = options.pot;
+  ranking.margin_cap = options.margin_cap_deg * M_PI / 180.0;
+  ranking.margin_stride = options.margin_stride;
+  return ranking;
+}
 
 }  // namespace billiard::choice

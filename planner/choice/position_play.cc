@@ -59,8 +59,9 @@ std::vector<Candidate> PositionCandidates(const table::TableGeometry& table,
     r.cue_target = pot::CueTarget{*known->second, options.position_radius};
     requests.push_back(r);
   }
+  const pot::PotOptions ranking = RankingPotOptions(options);
   auto plans = pool.Map(requests.size(), [&](std::size_t i) {
-    return pot::PlanPot(table, params, balls, requests[i], options.pot);
+    return pot::PlanPot(table, params, balls, requests[i], ranking);
   });
   std::vector<Candidate> played;
   for (std::size_t i = 0; i < plans.size(); ++i) {

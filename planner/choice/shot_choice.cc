@@ -145,6 +145,10 @@ void Confirm(const table::TableGeometry& table, const physics::ModelParameters& 
                                           model_choice::TableMotion(params), pool);
     result->simulations += chosen.confirmed.samples;
   }
+  // Its margin was walked to rank it (RankingPotOptions); stated, it is walked in full.
+  if (options.state_margin) {
+    result->simulations += pot::StateMargins(table, params, balls, &chosen.plan, options.pot);
+  }
   result->likely = chosen.reported().probability >= options.likely;
   if (!result->likely) {
     result->reason = "no shot is likely: the best pots with probability " +

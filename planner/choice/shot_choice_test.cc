@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "planner/choice/testing/choice_test.h"
 
@@ -118,6 +120,39 @@ TEST_F(ShotChoiceTest, FinalistsFirstByScoreAndOnlyTheChosenConfirmed) {
   }
   EXPECT_EQ(r.likely, r.chosen()->reported().probability >= options.likely);
   EXPECT_GT(r.simulations, 0);
+}
+
+// The candidates' margins only rank them, walked to a cap; the chosen one's is stated as the pot
+// planner states it: every heading 0.01 degree apart inside it pots legally on the truth, the
+// next one out does not. The others' are left as ranked, and so is the chosen one's when off.
+TEST_F(ShotChoiceTest, TheChosenPotsMarginIsStatedInFull) {
+  const auto balls = TwoBalls();
+  ChoiceOptions options = QuickChoice();
+  options.margin_cap_deg = 0.02;
+  batch::ThreadPool pool(2);
+  const ChoiceResult r = ChooseShot(table_, params_, balls, options, pool);
+  ASSERT_EQ(r.status, ChoiceStatus::kOk) << r.reason;
+  const pot::PotPlan& chosen = r.chosen()->plan;
+  ASSERT_GT(std::min(chosen.margin_left_deg, chosen.margin_right_deg), 0.02) << "past the cap";
+  constexpr double kGrid = 0.01 * M_PI / 180.0;
+  for (const auto& [side, margin] :
+       {std::pair{1.0, chosen.margin_left_deg}, {-1.0, chosen.margin_right_deg}}) {
+    const int steps = static_cast<int>(std::lround(margin / 0.01));
+    for (int j = 1; j <= steps + 1; ++j) {
+      physics::CueStroke s = chosen.stroke;
+      s.heading += side * j * kGrid;
+      EXPECT_EQ(pot::PlayStroke(table_, params_, balls, chosen.ball, chosen.pocket, s).legal, j <= steps)
+          << j << " steps x " << side;
+    }
+  }
+  for (std::size_t i = 1; i < r.candidates.size(); ++i) {
+    EXPECT_LE(r.candidates[i].plan.margin_left_deg, 0.02 + 1e-9) << i;
+  }
+  options.state_margin = false;
+  const ChoiceResult ranked = ChooseShot(table_, params_, balls, options, pool);
+  ExpectSameChoice(r, ranked);
+  EXPECT_NEAR(ranked.chosen()->plan.margin_left_deg, 0.02, 1e-9);
+  EXPECT_LT(ranked.simulations, r.simulations);
 }
 
 TEST_F(ShotChoiceTest, RefusesWhatCannotBePlayed) {

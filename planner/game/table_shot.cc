@@ -14,6 +14,8 @@ std::optional<physics::CueStroke> PlayerStroke(const players::Player& player,
                                                std::vector<table::SceneBall>* balls,
                                                ShotRecord* rec) {
   options.seed = seed;
+  // A rack's record states no margin: the chosen pot's is left as ranked.
+  options.state_margin = false;
   const choice::ChoiceResult decided = player.Decide(turn, options, pool);
   rec->status = choice::ChoiceStatusName(decided.status);
   rec->reason = decided.reason;

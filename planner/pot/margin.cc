@@ -9,17 +9,32 @@
 namespace billiard::pot {
 
 double WalkedMargin(const std::function<bool(double)>& pots, double centre, double side, double step,
-                    double limit) {
-  int steps = 0;
+                    double limit, int stride) {
   // Each heading from the grid's own multiple of `step` (not a running sum, which drifts).
-  while ((steps + 1) * step <= limit && pots(centre + side * (steps + 1) * step)) ++steps;
-  return steps * step;
+  const auto pots_at = [&](int steps) { return pots(centre + side * steps * step); };
+  int last = 0;  // the grid's last heading within the limit
+  while ((last + 1) * step <= limit) ++last;
+  int in = 0;    // the farthest heading known to pot, as every one before it on the way out
+  int out = -1;  // the first heading played past it that does not
+  while (out < 0 && in < last) {
+    const int next = std::min(in + std::max(stride, 1), last);
+    (pots_at(next) ? in : out) = next;
+  }
+  // The edge between them, where a stride stepped past it.
+  while (out > in + 1) {
+    const int mid = in + (out - in) / 2;
+    (pots_at(mid) ? in : out) = mid;
+  }
+  return in * step;
 }
 
 HeadingMargin HeadingMargins(SearchContext& search, const StrokeShape& shape, double centre) {
   // Played to rest on the truth: a scratch after K drops is no legal pot.
   const auto pots_heading = [&](double heading) { return search.Play(shape.At(heading), true).outcome.legal; };
-  return {WalkedMargin(pots_heading, centre, 1.0), WalkedMargin(pots_heading, centre, -1.0)};
+  const PotOptions& options = search.options();
+  const double limit = options.margin_cap.value_or(kMarginLimit);
+  return {WalkedMargin(pots_heading, centre, 1.0, kMarginGrid, limit, options.margin_stride),
+          WalkedMargin(pots_heading, centre, -1.0, kMarginGrid, limit, options.margin_stride)};
 }
 
 Bracket Edge(const std::function<bool(double)>& pots, double x0, double guess, double limit,

@@ -34,11 +34,16 @@ inline constexpr double kMarginLimit = 0.5 * M_PI;
 // The largest turn n * step [rad] from `centre` toward `side` (+1: left, counterclockwise; -1:
 // right) for which `pots` holds at centre + side * j * step for each j = 1 .. n, walked outward
 // until the first heading for which it does not, no farther than `limit`.
+// With a `stride` above 1 only every stride-th heading is played on the way out, and the edge
+// between the last that pots and the first that does not is found by bisection on the grid: the
+// same n unless a hole narrower than a stride lies inside the window (it is stepped over), for
+// about n / stride + log2(stride) plays instead of n + 1.
 double WalkedMargin(const std::function<bool(double)>& pots, double centre, double side,
-                    double step = kMarginGrid, double limit = kMarginLimit);
+                    double step = kMarginGrid, double limit = kMarginLimit, int stride = 1);
 
 // The cue's turns [rad] either way (left: counterclockwise) from the truth's aim `centre` within
-// which every heading of the grid pots legally on the truth, played to rest with `shape`.
+// which every heading of the grid pots legally on the truth, played to rest with `shape`; walked
+// as the search's options ask (PotOptions::margin_cap, margin_stride; in full by default).
 struct HeadingMargin {
   double left = 0.0, right = 0.0;
 };

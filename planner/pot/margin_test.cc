@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -75,6 +76,52 @@ TEST(Margin, AWindowOpenToTheLimitEndsThere) {
   EXPECT_EQ(asked.size(), 50u);
 }
 
+// Strided, the walk finds the same margin wherever the window has no hole narrower than a
+// stride: every edge position, every stride, either side.
+TEST(Margin, AStridedWalkFindsTheFullWalksMargin) {
+  for (int edge = 0; edge <= 23; ++edge) {
+    const Window pots{-(edge + 0.5) * kStep, (edge + 0.5) * kStep, {}};
+    for (int stride : {1, 2, 4, 5, 8}) {
+      SCOPED_TRACE(::testing::Message() << "edge " << edge << ", stride " << stride);
+      EXPECT_NEAR(WalkedMargin(pots, 0.0, 1.0, kStep, kMarginLimit, stride), edge * kStep, 1e-15);
+      EXPECT_NEAR(WalkedMargin(pots, 0.0, -1.0, kStep, kMarginLimit, stride), edge * kStep, 1e-15);
+    }
+  }
+}
+
+// A stride plays about n / stride headings out and log2(stride) at the edge instead of n + 1;
+// every one on the grid.
+TEST(Margin, AStridedWalkPlaysAStrideOutAndBisectsTheEdge) {
+  std::vector<double> asked;
+  const Window pots{-1.0, 41.5 * kStep, {}, &asked};
+  EXPECT_NEAR(WalkedMargin(pots, 0.0, 1.0, kStep, kMarginLimit, 4), 41.0 * kStep, 1e-15);
+  // 4, 8, .., 44 out (11), then 42 and 41 between 40 and 44 (2): 13 of the full walk's 42.
+  EXPECT_EQ(asked.size(), 13u);
+  for (double x : asked) EXPECT_NEAR(x / kStep, std::round(x / kStep), 1e-9) << "on the grid";
+}
+
+// A hole narrower than a stride between two headings it plays is stepped over (that is its
+// cost); one a stride wide or wider always holds a heading it plays and ends the margin as the
+// full walk's does.
+TEST(Margin, AStridedWalkStepsOverOnlyAHoleNarrowerThanAStride) {
+  const Window narrow{-1.0, 30.5 * kStep, {{5.0 * kStep, 7.0 * kStep}}};
+  EXPECT_NEAR(WalkedMargin(narrow, 0.0, 1.0), 4.0 * kStep, 1e-15);
+  EXPECT_NEAR(WalkedMargin(narrow, 0.0, 1.0, kStep, kMarginLimit, 4), 30.0 * kStep, 1e-15);
+  for (int start = 1; start <= 12; ++start) {
+    const Window wide{-1.0, 30.5 * kStep, {{start * kStep, (start + 4) * kStep}}};
+    EXPECT_NEAR(WalkedMargin(wide, 0.0, 1.0, kStep, kMarginLimit, 4), (start - 1) * kStep, 1e-15)
+        << "a hole from " << start << " steps";
+  }
+}
+
+// A cap ends a wide window's walk, strided or not, on the grid's last heading within it.
+TEST(Margin, ACappedWalkEndsAtTheCap) {
+  std::vector<double> asked;
+  const Window pots{-10.0, 10.0, {}, &asked};
+  EXPECT_NEAR(WalkedMargin(pots, 0.0, -1.0, kStep, 50.5 * kStep, 4), 50.0 * kStep, 1e-15);
+  EXPECT_EQ(asked.size(), 13u);  // 4, 8, .., 48, then 50
+}
+
 // A speed edge inside its guess's bracket: the two speeds played are the bracket's.
 TEST(Margin, ASpeedEdgeInsideItsGuessBracketIsThatBracket) {
   const Window pots{0.0, 3.05, {}};
@@ -141,6 +188,32 @@ TEST_F(MarginTest, TheMarginIsTrueOnTheSimulation) {
       EXPECT_EQ(o.potted && o.first_contact == 1 && !o.scratch, j <= steps) << j << " steps x " << side;
     }
   }
+}
+
+// A plan's margin walked with a cap and a stride (as a choice ranks plans), then stated in full
+// (StateMargins), is the margin the full walk plans: on a pot whose window is wider than the cap
+// and on the scene's other side.
+TEST_F(MarginTest, AStatedMarginIsTheFullWalks) {
+  const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9), table::AtRest(2, 1.2, 0.3)};
+  const PotRequest request{1, "upper_right", ShotKind::kDirect, {}};
+  const PotPlan full = PlanPot(table_, params_, balls, request);
+  ASSERT_EQ(full.status, PotStatus::kOk) << full.reason;
+  PotOptions ranking;
+  ranking.margin_cap = 0.05 * kDegree;
+  ranking.margin_stride = 4;
+  PotPlan ranked = PlanPot(table_, params_, balls, request, ranking);
+  ASSERT_EQ(ranked.status, PotStatus::kOk) << ranked.reason;
+  ASSERT_GT(std::min(full.margin_left_deg, full.margin_right_deg), 0.05) << "the cap cuts it";
+  EXPECT_NEAR(ranked.margin_left_deg, 0.05, 1e-9);
+  EXPECT_NEAR(ranked.margin_right_deg, 0.05, 1e-9);
+  EXPECT_LT(ranked.simulations, full.simulations);
+  EXPECT_EQ(ranked.stroke.heading, full.stroke.heading) << "the margin changes no stroke";
+  const int simulations = ranked.simulations;
+  const int walked = StateMargins(table_, params_, balls, &ranked, ranking);
+  EXPECT_EQ(ranked.margin_left_deg, full.margin_left_deg);
+  EXPECT_EQ(ranked.margin_right_deg, full.margin_right_deg);
+  EXPECT_EQ(walked, std::lround((full.margin_left_deg + full.margin_right_deg) / 0.01) + 2);
+  EXPECT_EQ(ranked.simulations, simulations + walked);
 }
 
 // A straight-in pot: struck at the cue's top speed it still drops, and at the window's slowest

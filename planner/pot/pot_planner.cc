@@ -387,6 +387,23 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
   return finish(*tally.best, search.simulations());
 }
 
+int StateMargins(const table::TableGeometry& table, const physics::ModelParameters& params,
+                 const std::vector<SceneBall>& balls, PotPlan* plan, const PotOptions& options) {
+  if (plan->status != PotStatus::kOk) return 0;
+  PotOptions full = options;
+  full.margin_cap.reset();
+  full.margin_stride = 1;
+  SearchContext search(table, params, Settled(table, params, balls, full), plan->ball,
+                       PocketOf(table, plan->pocket), full);
+  const physics::CueStroke& s = plan->stroke;
+  const HeadingMargin margin =
+      HeadingMargins(search, {s.speed, s.tip_side, s.tip_height, s.elevation}, s.heading);
+  plan->margin_left_deg = margin.left / kDegree;
+  plan->margin_right_deg = margin.right / kDegree;
+  plan->simulations += search.simulations();
+  return search.simulations();
+}
+
 std::optional<double> GhostBallHeading(const table::TableGeometry& table,
                                        const physics::ModelParameters& params,
                                        const std::vector<SceneBall>& balls, const PotPlan& plan,

@@ -110,6 +110,14 @@ struct PotOptions {
   // balls, the rails and its body (cue_elevation.h), and refused (cue_blocked) where none does.
   // None: the cue is not checked (a stroke at the route's own elevation, level but for a curve).
   std::optional<cue::Robot> robot;
+  // The heading margin's walk (margin.h). By default in full: every 0.01-degree heading played out
+  // to a quarter turn, the margin a plan states. A planner that only ranks plans by their margin
+  // and finds their chance by sampling the noise (planner/choice/) may stop at `margin_cap`
+  // [rad] (a margin that reaches it is at least that wide) and play every `margin_stride`-th
+  // heading, the edge found by bisection on the grid: the same margin unless a hole narrower
+  // than a stride lies inside it. StateMargins walks such a plan's margin in full.
+  std::optional<double> margin_cap;
+  int margin_stride = 1;
 };
 
 struct BallPath {
@@ -156,6 +164,13 @@ struct PotPlan {
 PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameters& params,
                 const std::vector<table::SceneBall>& balls, const PotRequest& request,
                 const PotOptions& options = {});
+
+// `plan`'s heading margin walked in full (options' margin_cap and margin_stride aside), on the
+// scene it was planned on: the margin to state of a plan whose walk was cut short. Its
+// simulations are added to plan->simulations and returned; none for a plan that is not ok.
+int StateMargins(const table::TableGeometry& table, const physics::ModelParameters& params,
+                 const std::vector<table::SceneBall>& balls, PotPlan* plan,
+                 const PotOptions& options = {});
 
 // The heading [rad] that aims `plan`'s stroke (its speed, offsets, elevation) through the ghost ball
 // alone: the line of centres along plan.departure, the throw not corrected. What aiming without
