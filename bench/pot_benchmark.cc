@@ -367,10 +367,13 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
       << "). Where it is not clear, " << s["coverage"]["blocked_made"].get<int>() << " pots were made by:";
   for (const auto& [kind, n] : s["coverage"]["blocked_made_by_kind"].items()) out << " " << kind << " " << n.get<int>() << ";";
   out << "\n\n";
+  // A clear pair refused, by the reason of its first route (the direct pot; the routes' reasons
+  // are joined by "; ", and the rest are the banks, kicks and curves it tried next).
   for (const PotRun& run : r.runs) {
     if (run.straight_clear && run.plan.status != pot::PotStatus::kOk) {
       out << "- clear, refused: seed " << run.seed << " (" << run.table << "), "
-          << pot::PotStatusName(run.plan.status) << ": " << run.plan.reason << "\n";
+          << pot::PotStatusName(run.plan.status) << ": " << run.plan.reason.substr(0, run.plan.reason.find("; "))
+          << "\n";
     }
   }
   out << "\n| status | layouts |\n|---|---|\n";
