@@ -137,8 +137,7 @@ void DrawCue(cairo_t* cr, const TablePicture& pic, const physics::CueStroke& cue
 }
 
 // A robot's cue from above (cue_outline.h): its tapered outline, a ring where it comes nearest
-// what it clears (a dashed line on to a ball's centre), and its label beyond the butt, kept on
-// the picture.
+// what it clears (a dashed line on to a ball's centre), and its label by the butt.
 void DrawRobotCue(cairo_t* cr, const TablePicture& pic, const CueOutline& cue, double width) {
   constexpr double kRingPx = 6.0, kLabelPx = 12.0, kLabelGapPx = 10.0;
   std::vector<Vector2d> corners;
@@ -161,20 +160,18 @@ void DrawRobotCue(cairo_t* cr, const TablePicture& pic, const CueOutline& cue, d
     cairo_arc(cr, at.x(), at.y(), kRingPx, 0, 2 * M_PI);
     cairo_stroke(cr);
   }
-  // The label starts a gap beyond the butt, along the cue's line; where that runs off the
-  // picture it ends there instead.
+  // The label centred over the butt, on the side away from the cue (above it, or below a butt
+  // that lies below its tip), kept on the picture.
   const std::string label = CueLabel(cue);
   const Vector2d tip = TablePixel(pic, cue.tip), butt = TablePixel(pic, cue.butt);
-  const Vector2d past = butt + kLabelGapPx * (butt - tip).normalized();
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, kLabelPx);
   cairo_text_extents_t extents;
   cairo_text_extents(cr, label.c_str(), &extents);
-  const bool leftward = past.x() < tip.x();
-  double x = leftward ? past.x() - extents.x_advance : past.x();
-  x = std::clamp(x, 2.0, width - extents.x_advance - 2.0);
+  const double x = std::clamp(butt.x() - 0.5 * extents.x_advance, 2.0, width - extents.x_advance - 2.0);
+  const double y = butt.y() > tip.y() + kLabelGapPx ? butt.y() + kLabelGapPx + kLabelPx : butt.y() - kLabelGapPx;
   cairo_set_source_rgb(cr, 1, 1, 1);
-  Text(cr, x, past.y() + 0.5 * kLabelPx, label, kLabelPx);
+  Text(cr, x, y, label, kLabelPx);
 }
 
 // A ball as a player sees it from above: its body, a stripe's band across the middle (half the

@@ -54,7 +54,7 @@ struct TablePicture {
   std::vector<TrackedDots> tracked;
   std::optional<physics::CueStroke> cue;  // the stroke at ball 0's start, drawn as a plain cue
   // A robot's cue (cue_outline.h), drawn instead of the plain one: its outline, where it comes
-  // nearest what it clears, its elevation and clearance labelled beyond its butt.
+  // nearest what it clears, its elevation and clearance labelled by its butt.
   std::optional<CueOutline> robot_cue;
   std::optional<Eigen::Vector2d> target;  // a plan's target
 };
