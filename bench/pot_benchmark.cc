@@ -327,6 +327,33 @@ void WritePotResults(const PotBenchmarkResult& r, const std::string& dir) {
   }
 }
 
+// The report's coverage: the clear pairs planned, what the other routes made, the clear pairs
+// refused and why, and every layout's status.
+void WriteCoverage(const PotBenchmarkResult& r, const nlohmann::json& s, std::ofstream& out) {
+  out << "\n## Coverage\n\n"
+      << "Of the " << s["coverage"]["straight_clear"].get<int>() << " pots whose straight ghost-ball "
+      << "line is clear (no ball within a ball's width of either line, the object ball's line clear of the "
+      << "pocket's jaws, cut below 80 deg), "
+      << s["coverage"]["planned"].get<int>() << " planned ok ("
+      << Percent(s["coverage"]["planned"].get<int>(), s["coverage"]["straight_clear"].get<int>())
+      << "). Where it is not clear, " << s["coverage"]["blocked_made"].get<int>() << " pots were made by:";
+  for (const auto& [kind, n] : s["coverage"]["blocked_made_by_kind"].items()) out << " " << kind << " " << n.get<int>() << ";";
+  out << "\n\n";
+  // A clear pair refused, by the reason of its first route (the direct pot; the routes' reasons
+  // are joined by "; ", and the rest are the banks, kicks and curves it tried next).
+  for (const PotRun& run : r.runs) {
+    if (run.straight_clear && run.plan.status != pot::PotStatus::kOk) {
+      out << "- clear, refused: seed " << run.seed << " (" << run.table << "), "
+          << pot::PotStatusName(run.plan.status) << ": " << run.plan.reason.substr(0, run.plan.reason.find("; "))
+          << "\n";
+    }
+  }
+  out << "\n| status | layouts |\n|---|---|\n";
+  std::map<std::string, int> statuses;
+  for (const PotRun& run : r.runs) ++statuses[pot::PotStatusName(run.plan.status)];
+  for (const auto& [status, n] : statuses) out << "| " << status << " | " << n << " |\n";
+}
+
 }  // namespace
 
 void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
@@ -358,28 +385,7 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
       << " cue_blocked (the cue clears at no elevation), " << cue["held_by_hop"].get<int>()
       << " held by the hop (the reason of the best route tried: its cue would lift the ball off the cloth, "
       << "or the pot is out of reach at the fastest pace that keeps the ball on it).\n";
-  out << "\n## Coverage\n\n"
-      << "Of the " << s["coverage"]["straight_clear"].get<int>() << " pots whose straight ghost-ball "
-      << "line is clear (no ball within a ball's width of either line, the object ball's line clear of the "
-      << "pocket's jaws, cut below 80 deg), "
-      << s["coverage"]["planned"].get<int>() << " planned ok ("
-      << Percent(s["coverage"]["planned"].get<int>(), s["coverage"]["straight_clear"].get<int>())
-      << "). Where it is not clear, " << s["coverage"]["blocked_made"].get<int>() << " pots were made by:";
-  for (const auto& [kind, n] : s["coverage"]["blocked_made_by_kind"].items()) out << " " << kind << " " << n.get<int>() << ";";
-  out << "\n\n";
-  // A clear pair refused, by the reason of its first route (the direct pot; the routes' reasons
-  // are joined by "; ", and the rest are the banks, kicks and curves it tried next).
-  for (const PotRun& run : r.runs) {
-    if (run.straight_clear && run.plan.status != pot::PotStatus::kOk) {
-      out << "- clear, refused: seed " << run.seed << " (" << run.table << "), "
-          << pot::PotStatusName(run.plan.status) << ": " << run.plan.reason.substr(0, run.plan.reason.find("; "))
-          << "\n";
-    }
-  }
-  out << "\n| status | layouts |\n|---|---|\n";
-  std::map<std::string, int> statuses;
-  for (const PotRun& run : r.runs) ++statuses[pot::PotStatusName(run.plan.status)];
-  for (const auto& [status, n] : statuses) out << "| " << status << " | " << n << " |\n";
+  WriteCoverage(r, s, out);
   out << "\n## The margin is true\n\n"
       << "On " << s["margin"]["plans"].get<int>() << " plans, every heading " << kMarginGridDeg
       << " deg apart inside the margin pots legally on " << s["margin"]["inner_pot"].get<int>() << " of "
