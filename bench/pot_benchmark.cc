@@ -197,20 +197,28 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
 
 namespace {
 
+// Whether a refusal is the hop's (sim/cue/stroke_limits.h): a stroke that would lift the ball off
+// the cloth, or a pot out of reach at the fastest pace that keeps it down (planner/pot/pace.cc).
+bool HeldByTheHop(const pot::PotPlan& plan) {
+  return plan.status != pot::PotStatus::kOk &&
+         (plan.reason.find("lift the ball off the cloth") != std::string::npos ||
+          plan.reason.find("keeps the ball on the cloth") != std::string::npos);
+}
+
 // The cue's share: the robot, the elevation every ok plan is played at, the pots refused because
-// its cue clears at no elevation (cue_blocked) or would lift the ball off the cloth.
+// its cue clears at no elevation (cue_blocked) or by the hop.
 nlohmann::json CueSummary(const PotBenchmarkResult& r) {
   std::vector<double> elevations;
   int blocked = 0, lifted = 0, elevated = 0;
   for (const PotRun& run : r.runs) {
     blocked += run.plan.status == pot::PotStatus::kCueBlocked;
-    lifted += run.plan.reason.find("lift the ball off the cloth") != std::string::npos;
+    lifted += HeldByTheHop(run.plan);
     if (run.plan.status != pot::PotStatus::kOk) continue;
     elevations.push_back(run.plan.stroke.elevation * 180.0 / M_PI);
     elevated += run.plan.stroke.elevation > 0.0;
   }
   return {{"robot", r.options.robot ? r.options.robot->name : "none (level cue, unchecked)"},
-          {"cue_blocked", blocked}, {"lifts_ball", lifted}, {"elevated", elevated},
+          {"cue_blocked", blocked}, {"held_by_hop", lifted}, {"elevated", elevated},
           {"elevation_deg", {{"median", Quantile(elevations, 0.5)}, {"p90", Quantile(elevations, 0.9)},
                              {"max", elevations.empty() ? 0.0 : *std::max_element(elevations.begin(), elevations.end())}}}};
 }
@@ -319,6 +327,33 @@ void WritePotResults(const PotBenchmarkResult& r, const std::string& dir) {
   }
 }
 
+// The report's coverage: the clear pairs planned, what the other routes made, the clear pairs
+// refused and why, and every layout's status.
+void WriteCoverage(const PotBenchmarkResult& r, const nlohmann::json& s, std::ofstream& out) {
+  out << "\n## Coverage\n\n"
+      << "Of the " << s["coverage"]["straight_clear"].get<int>() << " pots whose straight ghost-ball "
+      << "line is clear (no ball within a ball's width of either line, the object ball's line clear of the "
+      << "pocket's jaws, cut below 80 deg), "
+      << s["coverage"]["planned"].get<int>() << " planned ok ("
+      << Percent(s["coverage"]["planned"].get<int>(), s["coverage"]["straight_clear"].get<int>())
+      << "). Where it is not clear, " << s["coverage"]["blocked_made"].get<int>() << " pots were made by:";
+  for (const auto& [kind, n] : s["coverage"]["blocked_made_by_kind"].items()) out << " " << kind << " " << n.get<int>() << ";";
+  out << "\n\n";
+  // A clear pair refused, by the reason of its first route (the direct pot; the routes' reasons
+  // are joined by "; ", and the rest are the banks, kicks and curves it tried next).
+  for (const PotRun& run : r.runs) {
+    if (run.straight_clear && run.plan.status != pot::PotStatus::kOk) {
+      out << "- clear, refused: seed " << run.seed << " (" << run.table << "), "
+          << pot::PotStatusName(run.plan.status) << ": " << run.plan.reason.substr(0, run.plan.reason.find("; "))
+          << "\n";
+    }
+  }
+  out << "\n| status | layouts |\n|---|---|\n";
+  std::map<std::string, int> statuses;
+  for (const PotRun& run : r.runs) ++statuses[pot::PotStatusName(run.plan.status)];
+  for (const auto& [status, n] : statuses) out << "| " << status << " | " << n << " |\n";
+}
+
 }  // namespace
 
 void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
@@ -347,20 +382,10 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
       << Fixed(cue["elevation_deg"]["p90"].get<double>(), 2) << " deg, max "
       << Fixed(cue["elevation_deg"]["max"].get<double>(), 2) << " deg; " << cue["elevated"].get<int>() << " of "
       << s["ok"].get<int>() << " above level. Refused: " << cue["cue_blocked"].get<int>()
-      << " cue_blocked (the cue clears at no elevation), " << cue["lifts_ball"].get<int>()
-      << " whose cue would lift the ball off the cloth (the reason of the best route tried).\n";
-  out << "\n## Coverage\n\n"
-      << "Of the " << s["coverage"]["straight_clear"].get<int>() << " pots whose straight ghost-ball "
-      << "line is clear (no ball within a ball's width of either line, the object ball's line clear of the "
-      << "pocket's jaws, cut below 80 deg), "
-      << s["coverage"]["planned"].get<int>() << " planned ok ("
-      << Percent(s["coverage"]["planned"].get<int>(), s["coverage"]["straight_clear"].get<int>())
-      << "). Where it is not clear, " << s["coverage"]["blocked_made"].get<int>() << " pots were made by:";
-  for (const auto& [kind, n] : s["coverage"]["blocked_made_by_kind"].items()) out << " " << kind << " " << n.get<int>() << ";";
-  out << "\n\n| status | layouts |\n|---|---|\n";
-  std::map<std::string, int> statuses;
-  for (const PotRun& run : r.runs) ++statuses[pot::PotStatusName(run.plan.status)];
-  for (const auto& [status, n] : statuses) out << "| " << status << " | " << n << " |\n";
+      << " cue_blocked (the cue clears at no elevation), " << cue["held_by_hop"].get<int>()
+      << " held by the hop (the reason of the best route tried: its cue would lift the ball off the cloth, "
+      << "or the pot is out of reach at the fastest pace that keeps the ball on it).\n";
+  WriteCoverage(r, s, out);
   out << "\n## The margin is true\n\n"
       << "On " << s["margin"]["plans"].get<int>() << " plans, every heading " << kMarginGridDeg
       << " deg apart inside the margin pots legally on " << s["margin"]["inner_pot"].get<int>() << " of "

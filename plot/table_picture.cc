@@ -21,6 +21,15 @@ void Source(cairo_t* cr, const Rgb& c, double alpha = 1.0) {
   cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
 }
 
+// Fills the current path in `fill` and outlines it in `line`, `width` px wide.
+void FillAndOutline(cairo_t* cr, const Rgb& fill, const Rgb& line, double width) {
+  Source(cr, fill);
+  cairo_fill_preserve(cr);
+  Source(cr, line);
+  cairo_set_line_width(cr, width);
+  cairo_stroke(cr);
+}
+
 // Whether the ball moved: its path drawn, its start outlined, its key in the legend.
 bool Moved(const PictureBall& ball) {
   return ball.path.size() >= 2 && (ball.path.back() - ball.path.front()).norm() > 0.0;
@@ -127,6 +136,43 @@ void DrawCue(cairo_t* cr, const TablePicture& pic, const physics::CueStroke& cue
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
 }
 
+// A robot's cue from above (cue_outline.h): its tapered outline, a ring where it comes nearest
+// what it clears (a dashed line on to a ball's centre), and its label by the butt.
+void DrawRobotCue(cairo_t* cr, const TablePicture& pic, const CueOutline& cue, double width) {
+  constexpr double kRingPx = 6.0, kLabelPx = 12.0, kLabelGapPx = 10.0;
+  std::vector<Vector2d> corners;
+  for (const Vector2d& c : OutlineCorners(cue)) corners.push_back(TablePixel(pic, c));
+  Polygon(cr, corners);
+  FillAndOutline(cr, kCueRgb, {0.25, 0.15, 0.05}, 1.0);
+  if (cue.nearest) {
+    const Vector2d at = TablePixel(pic, *cue.nearest);
+    cairo_set_source_rgb(cr, cue.distance > 0.0 ? 1.0 : 0.9, cue.distance > 0.0 ? 0.5 : 0.0, 0.0);
+    cairo_set_line_width(cr, 2.0);
+    if (cue.obstacle) {
+      const Vector2d to = TablePixel(pic, *cue.obstacle);
+      const double dash = 3.0;
+      cairo_set_dash(cr, &dash, 1, 0.0);
+      cairo_move_to(cr, at.x(), at.y());
+      cairo_line_to(cr, to.x(), to.y());
+      cairo_stroke(cr);
+      cairo_set_dash(cr, nullptr, 0, 0.0);
+    }
+    cairo_arc(cr, at.x(), at.y(), kRingPx, 0, 2 * M_PI);
+    cairo_stroke(cr);
+  }
+  // The label centred over the butt, on the side away from the cue (above it, or below a butt
+  // that lies below its tip), kept on the picture.
+  const std::string label = CueLabel(cue);
+  const Vector2d tip = TablePixel(pic, cue.tip), butt = TablePixel(pic, cue.butt);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, kLabelPx);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, label.c_str(), &extents);
+  const double x = std::clamp(butt.x() - 0.5 * extents.x_advance, 2.0, width - extents.x_advance - 2.0);
+  const double y = butt.y() > tip.y() + kLabelGapPx ? butt.y() + kLabelGapPx + kLabelPx : butt.y() - kLabelGapPx;
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  Text(cr, x, y, label, kLabelPx);
+}
 
 // A ball as a player sees it from above: its body, a stripe's band across the middle (half the
 // ball's height), a thin black rim.
@@ -321,11 +367,7 @@ void DrawTable(const TablePicture& pic, const std::string& path) {
     for (const Vector2d& sample : dots.samples) {
       const Vector2d p = TablePixel(pic, sample);
       cairo_arc(cr, p.x(), p.y(), kDotPx, 0, 2 * M_PI);
-      Source(cr, LookOf(dots.id).colour());
-      cairo_fill_preserve(cr);
-      cairo_set_source_rgb(cr, 0, 0, 0);
-      cairo_set_line_width(cr, 0.6);
-      cairo_stroke(cr);
+      FillAndOutline(cr, LookOf(dots.id).colour(), {0, 0, 0}, 0.6);
     }
   }
   if (pic.target) {
@@ -361,7 +403,11 @@ void DrawTable(const TablePicture& pic, const std::string& path) {
     DrawBall(cr, TablePixel(pic, ball.path.back()), r, LookOf(ball.id));
   }
   DrawLabels(cr, pic, r);
-  if (pic.cue && !pic.balls.empty()) DrawCue(cr, pic, *pic.cue, pic.balls.front().start.head<2>());
+  if (pic.robot_cue) {
+    DrawRobotCue(cr, pic, *pic.robot_cue, width);
+  } else if (pic.cue && !pic.balls.empty()) {
+    DrawCue(cr, pic, *pic.cue, pic.balls.front().start.head<2>());
+  }
   for (const PictureBall& ball : pic.balls) {
     if (ball.start.tail<5>().norm() > 0.0) DrawLaunch(cr, pic, ball);
   }

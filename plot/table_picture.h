@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "plot/ball_look.h"
+#include "plot/cue_outline.h"
 #include "sim/physics/ball_state.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/table/table_geometry.h"
@@ -50,7 +52,10 @@ struct TablePicture {
   std::vector<PictureBall> balls;
   std::vector<PictureEvent> events;
   std::vector<TrackedDots> tracked;
-  std::optional<physics::CueStroke> cue;  // the stroke at ball 0's start, drawn as the cue
+  std::optional<physics::CueStroke> cue;  // the stroke at ball 0's start, drawn as a plain cue
+  // A robot's cue (cue_outline.h), drawn instead of the plain one: its outline, where it comes
+  // nearest what it clears, its elevation and clearance labelled by its butt.
+  std::optional<CueOutline> robot_cue;
   std::optional<Eigen::Vector2d> target;  // a plan's target
 };
 
@@ -72,6 +77,10 @@ void AddSimulation(const table::TableSimulation& sim, double dt, TablePicture* p
 // The balls whose paths the picture's key lists, down the right rail: every ball that moved,
 // by number (each drawn as it looks, beside a stroke of its path: a stripe's dashed).
 std::vector<int> PathLegendIds(const TablePicture& picture);
+
+// The colour a robot's cue is filled with: pale maple, apart from the cloth, the rails and the
+// balls, so that a reader (and a test) finds it.
+inline constexpr Rgb kCueRgb{0.93, 0.80, 0.55};
 
 // Draws `picture` into `path` (.png or .svg). The balls look as plot/ball_look.h says (stripes
 // as stripes), their numbers placed apart (plot/labels.h). Throws std::invalid_argument for another

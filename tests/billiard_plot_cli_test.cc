@@ -165,6 +165,73 @@ TEST(BilliardPlot, APlansBallEndsOnItsTarget) {
                    {255, 255, 255}));
 }
 
+// The cue ball in the open with a stroke on it, and ball 1 `behind` metres behind it on the cue's
+// line (heading 200 degrees: the cue lies up and to the right of the ball).
+constexpr double kCueX = 1.0, kCueY = 0.5, kHeadingDeg = 200.0;
+constexpr double kGantryCue = 0.5;  // sim/params/robots/gantry.json's cue length [m]
+std::string CueScene(const std::string& name, double elevation_deg, double behind) {
+  const double h = kHeadingDeg * M_PI / 180.0;
+  nlohmann::json scene = {{"table", "pool-9ft"}, {"params", "pool"}};
+  scene["balls"] = {{{"id", 0},
+                     {"state", {kCueX, kCueY, 0, 0, 0, 0, 0}},
+                     {"cue", {{"speed", 1.0}, {"heading", h}, {"elevation", elevation_deg * M_PI / 180.0}}}},
+                    {{"id", 1},
+                     {"state", {kCueX - behind * std::cos(h), kCueY - behind * std::sin(h), 0, 0, 0, 0, 0}}}};
+  return Write(name, scene.dump());
+}
+
+// The point of the cue's axis `d` metres back from its tip as seen from above: the tip R cos(e)
+// behind the ball's centre (a centre stroke), the axis foreshortened to L cos(e).
+cv::Point BehindTip(double d, double elevation_deg) {
+  constexpr double kR = 0.028575;
+  const double h = kHeadingDeg * M_PI / 180.0;
+  const double back = kR * std::cos(elevation_deg * M_PI / 180.0) + d;
+  const cv::Point2d p = Pixel(kCueX - back * std::cos(h), kCueY - back * std::sin(h));
+  return {static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y))};
+}
+
+// The gantry's cue is drawn from the cue ball back along the heading for its length seen from
+// above, L cos(e), in its maple colour, and no farther; the label names the elevation and what it
+// clears.
+TEST(BilliardPlot, TheRobotsCueLiesAlongTheHeadingBackFromTheCueBall) {
+  const cv::Vec3b maple(140, 204, 237);  // plot::kCueRgb, as BGR
+  for (const double elevation : {0.0, 25.0}) {
+    SCOPED_TRACE(elevation);
+    const std::string png = ::testing::TempDir() + "/plot_cue.png";
+    const CommandResult r =
+        Billiard("plot --scene " + CueScene("plot_cue.json", elevation, 0.9) + " --out " + png, true);
+    ASSERT_EQ(r.status, 0) << r.out;
+    const cv::Mat image = cv::imread(png, cv::IMREAD_COLOR);
+    ASSERT_FALSE(image.empty());
+    const double drawn = kGantryCue * std::cos(elevation * M_PI / 180.0);  // 0.453 m at 25 deg
+    int on_cue = 0, samples = 0;
+    for (double d = 0.02; d < drawn - 0.02; d += 0.01, ++samples) {
+      on_cue += Near(image.at<cv::Vec3b>(BehindTip(d, elevation)), maple);
+    }
+    EXPECT_GE(on_cue, samples - 2) << "the outline runs from the tip back " << drawn << " m";
+    for (const double past : {0.02, 0.04}) {
+      EXPECT_FALSE(Near(image.at<cv::Vec3b>(BehindTip(drawn + past, elevation)), maple)) << "past the butt";
+    }
+    EXPECT_FALSE(Near(image.at<cv::Vec3b>(BehindTip(-0.1, elevation)), maple)) << "in front of the ball";
+    const std::string label = elevation == 0.0 ? "cue level, clears " : "cue at 25.00 deg, clears ";
+    EXPECT_NE(r.out.find(label), std::string::npos) << r.out;
+  }
+}
+
+// Ball 1 on the cue's line 20 cm behind the cue ball: a level cue meets it; raised 15 degrees
+// (above the 10.1 its tapered side needs, sim/cue/clearance_test.cc's tangent), it clears
+// it; the label says which.
+TEST(BilliardPlot, TheLabelSaysWhetherTheCueClearsABallBehind) {
+  const std::string png = ::testing::TempDir() + "/plot_cue_ball.png";
+  const CommandResult level = Billiard("plot --scene " + CueScene("plot_cue_level.json", 0.0, 0.2) + " --out " + png, true);
+  EXPECT_NE(level.out.find("cue level, meets ball 1"), std::string::npos) << level.out;
+  const CommandResult raised = Billiard("plot --scene " + CueScene("plot_cue_up.json", 15.0, 0.2) + " --out " + png, true);
+  EXPECT_NE(raised.out.find("cue at 15.00 deg, clears ball 1 by"), std::string::npos) << raised.out;
+  const CommandResult plain =
+      Billiard("plot --scene " + CueScene("plot_cue_up.json", 15.0, 0.2) + " --robot none --out " + png, true);
+  EXPECT_EQ(plain.out.find("cue at"), std::string::npos) << plain.out;
+}
+
 TEST(BilliardPlot, BadInputExitsTwoWithOneLine) {
   const std::string scene = Scene();
   const CommandResult jpg = Billiard("plot --scene " + scene + " --out x.jpg", true);

@@ -41,6 +41,7 @@ nlohmann::json ClearanceJson(const cue::CueClearance& clearance) {
   if (clearance.nearest == cue::Obstacle::kBall) j["ball"] = clearance.ball;
   j["distance"] = std::isfinite(clearance.distance) ? nlohmann::json(clearance.distance)
                                                     : nlohmann::json(nullptr);
+  if (std::isfinite(clearance.distance)) j["along"] = clearance.along;
   return j;
 }
 

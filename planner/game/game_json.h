@@ -19,7 +19,8 @@ namespace billiard::game {
 nlohmann::json CueStrokeJson(const physics::CueStroke& stroke);
 
 // {"clears", "nearest" (what is nearest the cue), "ball" (its id, when a ball is), "distance"
-// [m], null when nothing is near: an empty table and no body; JSON has no infinity}.
+// [m], null when nothing is near: an empty table and no body; JSON has no infinity; "along", where
+// on the cue it comes nearest [m from the tip], when something is}.
 nlohmann::json ClearanceJson(const cue::CueClearance& clearance);
 
 // One shot: its number and visit, the break and ball in hand, the cue ball's placement ([x, y]

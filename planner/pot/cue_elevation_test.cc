@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "planner/pot/testing/pot_fixture.h"
 #include "sim/params/robots.h"
@@ -72,11 +73,17 @@ TEST_F(CueElevationTest, NothingInRangeClearsIsCueBlocked) {
 // A pot whose cue needs a steep elevation is paced within what keeps the ball on the cloth
 // (cue::kMaxHop), not played as if it stayed down: 3 mm off the rail the gantry's cue needs 31
 // degrees, at which a 0.4 m/s cue is the fastest that does not hop the ball beyond the limit, too
-// slow to send ball 1 the table's half length: refused, with that pace in the reason.
+// slow to send ball 1 the table's half length: refused, with that pace and that elevation in the
+// reason (what tells a steep cue from a long pot).
 TEST_F(CueElevationTest, AStrokeThatWouldLiftTheBallIsPacedBelowTheHopOrRefused) {
   const PotPlan plan = PlanPot(table_, params_, OffTheRail(0.003), UpperMiddle(), WithGantry());
   ASSERT_EQ(plan.status, PotStatus::kNoStroke);
-  EXPECT_NE(plan.reason.find("the fastest stroke that keeps the ball on the cloth"), std::string::npos) << plan.reason;
+  const std::string said = "the fastest stroke that keeps the ball on the cloth with the cue at ";
+  const std::size_t at = plan.reason.find(said);
+  ASSERT_NE(at, std::string::npos) << plan.reason;
+  const double elevation_deg = std::stod(plan.reason.substr(at + said.size()));
+  EXPECT_GT(elevation_deg, 25.0) << plan.reason;
+  EXPECT_LT(elevation_deg, 40.0) << plan.reason;
 }
 
 // Every plan's stroke keeps the ball on the cloth: off the rail at gaps where the cue must rise,

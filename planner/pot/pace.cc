@@ -23,13 +23,15 @@ bool Reaim(SearchContext& search, const Route& route, const Eigen::Vector2d& gho
   return true;
 }
 
-// K does not reach the pocket at `top`, the fastest stroke there is.
-Refusal NotReached(const SearchContext& search, double top) {
+// K does not reach the pocket at `top`, the fastest stroke there is; where the hop sets it, the
+// elevation that does (what a reader needs to tell the rail behind the cue ball from the pace).
+Refusal NotReached(const SearchContext& search, double top, double elevation) {
   return Refusal{PotStatus::kNoStroke, "ball " + std::to_string(search.object_id()) + " does not reach " +
                                            search.pocket().name + " at " + MetresPerSecond(top) +
                                            ", the fastest stroke " +
-                                           (top < search.params().cue.max_speed ? "that keeps the ball on the cloth"
-                                                                                : "of the cue")};
+                                           (top < search.params().cue.max_speed
+                                                ? "that keeps the ball on the cloth with the cue at " + Degrees(elevation)
+                                                : std::string("of the cue"))};
 }
 
 }  // namespace
@@ -44,7 +46,7 @@ std::optional<Refusal> Pace(SearchContext& search, const Route& route, const Eig
   // (the slide that bends it lasts in proportion), and within the hop limit it is small at best.
   if (route.kind == ShotKind::kCurve) {
     const Played played = search.Play(shape->At(aimed->heading), false, false);
-    if (!played.arrival_speed) return NotReached(search, shape->speed);
+    if (!played.arrival_speed) return NotReached(search, shape->speed, shape->elevation);
     fit.arrival = *played.arrival_speed;
     return std::nullopt;
   }
@@ -58,7 +60,7 @@ std::optional<Refusal> Pace(SearchContext& search, const Route& route, const Eig
     double next;
     if (!played.arrival_speed && !have_prev) {
       next = std::min(top, shape->speed * 1.6);
-      if (shape->speed >= top) return NotReached(search, top);
+      if (shape->speed >= top) return NotReached(search, top, shape->elevation);
     } else if (!have_prev || !played.arrival_speed) {
       next = std::min(top, shape->speed * (played.arrival_speed ? 0.8 : 1.3));
     } else {

@@ -27,15 +27,15 @@ BodyMargin GantryMargin(const table::TableGeometry& table, const PlacedCue& cue,
   const Gantry& gantry = *robot.gantry;
   const Eigen::Vector3d carriage = cue.At(robot.bridge), butt = cue.At(cue.shape.length);
   return Least(
-      {{InsideRectangle(table, gantry.overhang, carriage), "the carriage beyond its rectangle"},
-       {InsideRectangle(table, gantry.overhang, butt), "the butt beyond the gantry"},
-       {carriage.z() - gantry.clearance, "the carriage below its clearance"}});
+      {{InsideRectangle(table, gantry.overhang, carriage), "the carriage beyond its rectangle", robot.bridge},
+       {InsideRectangle(table, gantry.overhang, butt), "the butt beyond the gantry", cue.shape.length},
+       {carriage.z() - gantry.clearance, "the carriage below its clearance", robot.bridge}});
 }
 
 BodyMargin ArmMargin(const PlacedCue& cue, const Robot& robot) {
   const Arm& arm = *robot.arm;
   return {arm.reach - (cue.At(robot.bridge) - arm.base).norm(),
-          "the gripper beyond the arm's reach"};
+          "the gripper beyond the arm's reach", robot.bridge};
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ namespace billiard::cue {
 struct BodyMargin {
   double distance = 0;  // [m], +infinity for a robot without a body
   std::string what;     // the limit nearest: "the carriage below its clearance", ...
+  double along = 0;     // the point of the cue's axis it is checked at: the bridge or the butt [m]
 };
 
 // The least margin of `robot`'s body with its cue placed as `cue` over `table`.

@@ -41,9 +41,9 @@ void NearestBall(const PlacedCue& cue, double ball_radius,
   for (const table::SceneBall& ball : balls) {
     if (ball.id == cue_ball_id) continue;
     const Eigen::Vector3d centre(ball.state[0], ball.state[1], ball_radius);
-    Nearer({false, Obstacle::kBall, ball.id, "ball " + std::to_string(ball.id),
-            DistanceToBall(cue, centre, ball_radius)},
-           nearest);
+    double along = 0;
+    const double distance = DistanceToBall(cue, centre, ball_radius, &along);
+    Nearer({false, Obstacle::kBall, ball.id, "ball " + std::to_string(ball.id), distance, along}, nearest);
   }
 }
 
@@ -79,11 +79,12 @@ CueClearance Clearance(const table::TableGeometry& table, double ball_radius,
   CueClearance nearest;
   NearestBall(cue, ball_radius, balls, cue_ball_id, &nearest);
   for (const TableObstacle& obstacle : TableObstacles(table)) {
-    Nearer({false, Obstacle::kTable, -1, obstacle.name, DistanceToBox(cue, obstacle.box)},
-           &nearest);
+    double along = 0;
+    const double distance = DistanceToBox(cue, obstacle.box, &along);
+    Nearer({false, Obstacle::kTable, -1, obstacle.name, distance, along}, &nearest);
   }
   const BodyMargin body = BodyClearance(table, cue, robot);
-  Nearer({false, Obstacle::kBody, -1, body.what, body.distance}, &nearest);
+  Nearer({false, Obstacle::kBody, -1, body.what, body.distance, body.along}, &nearest);
   nearest.clears = nearest.distance > 0;
   return nearest;
 }

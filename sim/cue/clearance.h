@@ -50,6 +50,9 @@ struct CueClearance {
   // its clearance" (body.h); empty for kNone (nothing on the table and no body).
   std::string what;
   double distance = std::numeric_limits<double>::infinity();  // from the rod to it [m]; < 0 overlap
+  // Where the rod comes nearest it: the point of the cue's axis so far from the tip [m] (where
+  // the cue clears it, or meets it).
+  double along = 0;
 };
 
 // The clearance of `stroke` (its heading, elevation and tip offsets; the speed is not read)

@@ -108,6 +108,10 @@ TEST_F(ClearanceTest, FrozenToARailOverItNeedsTheAnalyticElevation) {
   ASSERT_GT(tangent.along, 0.0) << "the side, not the tip's cap, touches the edge";
   const double least = Least(balls, Stroke(M_PI / 2), player);
   EXPECT_NEAR(least, tangent.elevation, kElevationTolerance);
+  // Where the side touches the edge: the clearance at the least elevation says the same point.
+  const CueClearance at_least = Clearance(table_, kR, balls, 0, Stroke(M_PI / 2, least), player);
+  EXPECT_EQ(at_least.what, "the lower rail");
+  EXPECT_NEAR(at_least.along, tangent.along, 1e-6);
   EXPECT_GT(least, std::atan((table_.rail_height - kR) / kR));
   EXPECT_NEAR(least / kDegree, 34.0, 0.1);  // what a player raises the cue to, off a rail
 }
@@ -155,6 +159,7 @@ TEST_F(ClearanceTest, ABallBehindNeedsTheTangentElevation) {
     EXPECT_EQ(level.ball, 1);
     EXPECT_EQ(level.what, "ball 1");
     EXPECT_NEAR(level.distance, -(robot.cue.RadiusAt(d - kR) + kR), 1e-12);
+    EXPECT_NEAR(level.along, d - kR, 1e-12) << "the ball's centre lies on the axis, d - R from the tip";
 
     const double expected = std::asin(k) + std::asin((kTipRadius + kR * (1 - k)) / d);
     const double least = Least(balls, Stroke(0.0), robot);

@@ -21,17 +21,19 @@ double SignedDistance(const Eigen::Vector3d& p, const Box& box) {
   return outside > 0.0 ? outside : beyond.maxCoeff();
 }
 
-double DistanceToBall(const PlacedCue& cue, const Eigen::Vector3d& centre, double radius) {
+double DistanceToBall(const PlacedCue& cue, const Eigen::Vector3d& centre, double radius,
+                      double* along) {
   const Eigen::Vector3d to_centre = centre - cue.tip;
-  const double along = to_centre.dot(cue.back);
-  const double across = (to_centre - along * cue.back).norm();
+  const double s_c = to_centre.dot(cue.back);
+  const double across = (to_centre - s_c * cue.back).norm();
   const double taper = cue.shape.Taper();
   const double nearest =
-      std::clamp(along + taper * across / std::sqrt(1.0 - taper * taper), 0.0, cue.shape.length);
+      std::clamp(s_c + taper * across / std::sqrt(1.0 - taper * taper), 0.0, cue.shape.length);
+  if (along) *along = nearest;
   return (cue.At(nearest) - centre).norm() - cue.shape.RadiusAt(nearest) - radius;
 }
 
-double DistanceToBox(const PlacedCue& cue, const Box& box) {
+double DistanceToBox(const PlacedCue& cue, const Box& box, double* along) {
   const auto apart = [&](double s) {
     return SignedDistance(cue.At(s), box) - cue.shape.RadiusAt(s);
   };
@@ -39,7 +41,12 @@ double DistanceToBox(const PlacedCue& cue, const Box& box) {
   const double least = physics::GoldenSectionMinimum(
       apart, 0.0, cue.shape.length,
       [](double lo, double hi) { return hi - lo <= kAxisResolution; });
-  return std::min({apart(least), apart(0.0), apart(cue.shape.length)});
+  double nearest = least;
+  for (const double end : {0.0, cue.shape.length}) {
+    if (apart(end) < apart(nearest)) nearest = end;
+  }
+  if (along) *along = nearest;
+  return apart(nearest);
 }
 
 }  // namespace billiard::cue

@@ -38,10 +38,13 @@ struct Box {
 // nearest face inside.
 double SignedDistance(const Eigen::Vector3d& p, const Box& box);
 
-// The distance between the rod's surface and the ball of `radius` at `centre` (< 0: overlap).
-double DistanceToBall(const PlacedCue& cue, const Eigen::Vector3d& centre, double radius);
+// The distance between the rod's surface and the ball of `radius` at `centre` (< 0: overlap);
+// with `along`, where on the axis the rod comes nearest it [m from the tip]: s* clamped.
+double DistanceToBall(const PlacedCue& cue, const Eigen::Vector3d& centre, double radius,
+                      double* along = nullptr);
 
-// The distance between the rod's surface and `box` (< 0: overlap).
-double DistanceToBox(const PlacedCue& cue, const Box& box);
+// The distance between the rod's surface and `box` (< 0: overlap); with `along`, where on the axis
+// the rod comes nearest it [m from the tip].
+double DistanceToBox(const PlacedCue& cue, const Box& box, double* along = nullptr);
 
 }  // namespace billiard::cue
