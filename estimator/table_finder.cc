@@ -10,6 +10,7 @@
 
 #include "estimator/table_cloth.h"
 #include "estimator/table_edges.h"
+#include "estimator/table_partial.h"
 
 namespace billiard::estimator {
 
@@ -50,6 +51,9 @@ constexpr double kFocalAgreement = 1.3;
 // is below kMaxClothLightness, or its chroma above kMinClothChroma (a grey cloth under bright
 // light reads L* 76).
 constexpr double kOverheadAspectTolerance = 1.25;
+// A cloth side within kBorderSearchPx search pixels of the frame's edge is the border, not the
+// table's (the outline stops a pixel or two inside it).
+constexpr double kBorderSearchPx = 2.5;
 constexpr double kMaxClothLightness = 85.0, kMinClothChroma = 10.0;
 
 struct Line {
@@ -325,6 +329,34 @@ RadialLens OutlineLens(const std::vector<cv::Point>& outline, const std::vector<
   return EstimateRadialLens(sides, size, 1.0 / scale).lens;
 }
 
+// The side of the found table that is the frame's border, where its end is out of the frame
+// (table_partial.h): seen from overhead, shorter than a table, and one side of its cloth along
+// the border.
+std::optional<int> EndOutOfFrame(const TableRegion& table, const cv::Size& size,
+                                 double border_px) {
+  if (DepthRatio(table.corners) > kOverheadDepthRatio) return std::nullopt;
+  if (OverheadAspect(table.corners) >= kTableAspect) return std::nullopt;
+  return SideAlongBorder(table.cloth_corners, size, border_px);
+}
+
+// The table with its side `cut` beyond the frame's border: the playing surface and the cloth's
+// outline completed to a table's proportions, the cloth's unseen end as far beyond the surface's
+// as the seen one is.
+void CompleteAcrossBorder(int cut, TableRegion* table) {
+  const auto corners = CompletedAcrossBorder(table->corners, cut, kTableAspect);
+  if (!corners) return;
+  const int end_a = (cut + 2) % 4, end_b = (cut + 3) % 4;
+  for (const auto& [border, end] : {std::pair{(cut + 1) % 4, end_a}, std::pair{cut, end_b}}) {
+    const Eigen::Vector2d along = ((*corners)[border] - table->corners[end]).normalized();
+    const double cushion = (table->corners[end] - table->cloth_corners[end]).dot(along);
+    table->cloth_corners[border] = (*corners)[border] + cushion * along;
+  }
+  table->corners = *corners;
+  table->side_out_of_frame = cut;
+}
+
+TableSearch Placed(TableRegion table, bool long_first, const TableRegion& cloth);
+
 TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens);
 
 // The table found in the frame redrawn as `lens`'s pinhole sees it, given in the frame: its
@@ -455,6 +487,18 @@ TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet", cloth};
   }
+  if (const auto cut = EndOutOfFrame(table, bgr.size(), kBorderSearchPx / scale)) {
+    CompleteAcrossBorder(*cut, &table);
+  }
+  // A completed table's cut side is an end: the sides beside it are the long ones.
+  const bool long_side_first =
+      table.side_out_of_frame >= 0 ? table.side_out_of_frame % 2 == 1 : long_first;
+  return Placed(std::move(table), long_side_first, cloth);
+}
+
+// The table of `corners` and `cloth_corners` found, placed: its homography, depth and view; none
+// where its corners are not a plane's in view, or, seen from overhead, it is not a table's shape.
+TableSearch Placed(TableRegion table, bool long_first, const TableRegion& cloth) {
   table.image_from_table = ImageFromTable(table.corners, long_first);
   const Eigen::Vector3d inverse_depth = table.image_from_table.inverse().row(2).transpose();
   table.inverse_depth = inverse_depth / inverse_depth.dot(table.Centre().homogeneous());
