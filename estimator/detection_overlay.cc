@@ -20,13 +20,22 @@ int LineWidth(const cv::Mat& image) {
   return std::max(1, static_cast<int>(std::lround(image.cols / 1280.0)));
 }
 
-void DrawQuadrilateral(const std::array<Eigen::Vector2d, 4>& corners, const cv::Scalar& colour,
-                       int thickness, cv::Mat* image) {
+// A side through a lens is the image of a straight pinhole line, a curve: drawn as this many
+// straight pieces (at most a few tenths of a pixel off the curve for a side bowed by 30 px).
+constexpr int kLensSidePieces = 32;
+
+// The four sides between `corners` (image px), each the image of its pinhole line through `lens`.
+void DrawSides(const std::array<Eigen::Vector2d, 4>& corners, const RadialLens& lens,
+               const cv::Scalar& colour, int thickness, cv::Mat* image) {
+  const int pieces = lens.IsPinhole() ? 1 : kLensSidePieces;
   for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector2d a = corners[i], b = corners[(i + 1) % 4];
-    cv::line(*image, {static_cast<int>(std::lround(a.x())), static_cast<int>(std::lround(a.y()))},
-             {static_cast<int>(std::lround(b.x())), static_cast<int>(std::lround(b.y()))}, colour,
-             thickness, cv::LINE_AA);
+    const Eigen::Vector2d a = lens.ToPinhole(corners[i]), b = lens.ToPinhole(corners[(i + 1) % 4]);
+    std::vector<cv::Point> side;
+    for (int k = 0; k <= pieces; ++k) {
+      const Eigen::Vector2d p = lens.ToImage(a + (b - a) * (static_cast<double>(k) / pieces));
+      side.emplace_back(static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())));
+    }
+    cv::polylines(*image, side, false, colour, thickness, cv::LINE_AA);
   }
 }
 
@@ -58,8 +67,8 @@ cv::Mat DetectionOverlay(const cv::Mat& image, const std::vector<BallDetection>&
 
 void DrawTable(const TableRegion& table, cv::Mat* image) {
   const int thickness = LineWidth(*image);
-  DrawQuadrilateral(table.cloth_corners, kCloth, thickness, image);
-  DrawQuadrilateral(table.corners, kSurface, thickness, image);
+  DrawSides(table.cloth_corners, table.lens, kCloth, thickness, image);
+  DrawSides(table.corners, table.lens, kSurface, thickness, image);
 }
 
 }  // namespace billiard::estimator

@@ -15,7 +15,8 @@ namespace billiard::estimator {
 cv::Mat DetectionOverlay(const cv::Mat& image, const std::vector<BallDetection>& balls);
 
 // Draws the table found on a BGR image: the cloth's outline thin and grey-blue, the playing
-// surface (the cushions' noses) in blue.
+// surface (the cushions' noses) in blue; through the lens it was found through, each side the
+// curve that is its straight line's image.
 void DrawTable(const TableRegion& table, cv::Mat* image);
 
 }  // namespace billiard::estimator

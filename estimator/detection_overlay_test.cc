@@ -34,5 +34,31 @@ TEST(DetectionOverlay, AGrayFrameIsDrawnInColour) {
   EXPECT_EQ(overlay.at<cv::Vec3b>(5, 5), cv::Vec3b(128, 128, 128));
 }
 
+// Found through a barrel lens, a side is drawn where the lens puts its straight line: on the
+// bowed curve, not on the chord between its corners (some 12 px apart at the top side's middle).
+TEST(DetectionOverlay, ATableFoundThroughALensIsDrawnWithCurvedSides) {
+  cv::Mat image(200, 300, CV_8UC3, cv::Scalar(0, 0, 0));
+  TableRegion table;
+  table.lens.k1 = -0.3;
+  table.lens.focal_px = 200;
+  table.lens.centre = {149.5, 99.5};
+  table.lens.canvas = {300, 200};
+  const std::array<Eigen::Vector2d, 4> pinhole = {
+      Eigen::Vector2d(10, 20), Eigen::Vector2d(290, 20), Eigen::Vector2d(290, 180),
+      Eigen::Vector2d(10, 180)};
+  for (int i = 0; i < 4; ++i) table.corners[i] = table.cloth_corners[i] = table.lens.ToImage(pinhole[i]);
+  DrawTable(table, &image);
+  const Eigen::Vector2d on_curve = table.lens.ToImage({150, 20});
+  const Eigen::Vector2d chord = 0.5 * (table.corners[0] + table.corners[1]);
+  ASSERT_GT((on_curve - chord).norm(), 8.0);
+  const auto drawn = [&](const Eigen::Vector2d& p) {
+    const cv::Vec3b c = image.at<cv::Vec3b>(static_cast<int>(std::lround(p.y())),
+                                            static_cast<int>(std::lround(p.x())));
+    return c[0] + c[1] + c[2] > 150;
+  };
+  EXPECT_TRUE(drawn(on_curve));
+  EXPECT_FALSE(drawn(chord));
+}
+
 }  // namespace
 }  // namespace billiard::estimator

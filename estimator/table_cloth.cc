@@ -1,8 +1,10 @@
 #include "estimator/table_cloth.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <vector>
 
 #include "estimator/lab_image.h"
@@ -39,14 +41,10 @@ int HistogramBin(const cv::Vec3b& lab) {
   return (l * kChromaBins + a) * kChromaBins + b;
 }
 
-}  // namespace
-
-// The cloth's colour (BGR): the mean of the pixels in the mode of the centre-weighted L*a*b*
-// histogram (the bins next to the fullest neighbourhood of bins).
-cv::Vec3f DominantClothColour(const cv::Mat& small) {
-  const cv::Mat lab = LabImage(small).pixels();
+// The centre-weighted histogram of the frame's L*a*b* (`lab`, 8-bit).
+std::vector<float> CentreWeightedHistogram(const cv::Mat& lab) {
   std::vector<float> histogram(kLightnessBins * kChromaBins * kChromaBins, 0.0f);
-  const double half_w = 0.5 * small.cols, half_h = 0.5 * small.rows;
+  const double half_w = 0.5 * lab.cols, half_h = 0.5 * lab.rows;
   for (int y = 0; y < lab.rows; ++y) {
     const auto* row = lab.ptr<cv::Vec3b>(y);
     const double dy = (y - half_h) / half_h;
@@ -56,11 +54,32 @@ cv::Vec3f DominantClothColour(const cv::Mat& small) {
       if (weight > 0) histogram[HistogramBin(row[x])] += static_cast<float>(weight);
     }
   }
-  int best_l = 0, best_a = 0, best_b = 0;
+  return histogram;
+}
+
+// A mode's bin (L*, a*, b* bin indices).
+using Mode = std::array<int, 3>;
+
+// Whether two bins are within one bin of each other on every axis: a mode's neighbourhood.
+bool Neighbours(const Mode& p, const Mode& q, int reach) {
+  return std::abs(p[0] - q[0]) <= reach && std::abs(p[1] - q[1]) <= reach &&
+         std::abs(p[2] - q[2]) <= reach;
+}
+
+// The bin next to the fullest neighbourhood of bins (3 x 3 x 3) that overlaps none of the
+// neighbourhoods of `taken`; nullopt when every bin's does.
+std::optional<Mode> FullestNeighbourhood(const std::vector<float>& histogram,
+                                         const std::vector<Mode>& taken) {
+  std::optional<Mode> best_mode;
   float best = -1;
   for (int l = 0; l < kLightnessBins; ++l) {
     for (int a = 1; a + 1 < kChromaBins; ++a) {
       for (int b = 1; b + 1 < kChromaBins; ++b) {
+        const Mode mode = {l, a, b};
+        if (std::any_of(taken.begin(), taken.end(),
+                        [&](const Mode& t) { return Neighbours(mode, t, 2); })) {
+          continue;
+        }
         float sum = 0;
         for (int dl = std::max(0, l - 1); dl <= std::min(kLightnessBins - 1, l + 1); ++dl) {
           for (int da = -1; da <= 1; ++da) {
@@ -71,13 +90,16 @@ cv::Vec3f DominantClothColour(const cv::Mat& small) {
         }
         if (sum > best) {
           best = sum;
-          best_l = l;
-          best_a = a;
-          best_b = b;
+          best_mode = mode;
         }
       }
     }
   }
+  return best_mode;
+}
+
+// The mean colour (BGR) of the pixels of `small` in the neighbourhood of `mode`.
+cv::Vec3f MeanOfMode(const cv::Mat& small, const cv::Mat& lab, const Mode& mode) {
   cv::Vec3d sum(0, 0, 0);
   double count = 0;
   for (int y = 0; y < lab.rows; ++y) {
@@ -85,15 +107,34 @@ cv::Vec3f DominantClothColour(const cv::Mat& small) {
     const auto* colour = small.ptr<cv::Vec3b>(y);
     for (int x = 0; x < lab.cols; ++x) {
       const int bin = HistogramBin(row[x]);
-      const int l = bin / (kChromaBins * kChromaBins), a = (bin / kChromaBins) % kChromaBins,
-                b = bin % kChromaBins;
-      if (std::abs(l - best_l) <= 1 && std::abs(a - best_a) <= 1 && std::abs(b - best_b) <= 1) {
+      const Mode of = {bin / (kChromaBins * kChromaBins), (bin / kChromaBins) % kChromaBins,
+                       bin % kChromaBins};
+      if (Neighbours(of, mode, 1)) {
         sum += cv::Vec3d(colour[x][0], colour[x][1], colour[x][2]);
         ++count;
       }
     }
   }
   return cv::Vec3f(sum / std::max(1.0, count));
+}
+
+}  // namespace
+
+// The modes of the centre-weighted L*a*b* histogram, fullest first, whose neighbourhoods of bins
+// do not overlap (so that the second is another colour, not the first's shade), each the mean of
+// its pixels.
+std::vector<cv::Vec3f> ClothColours(const cv::Mat& small, std::size_t count) {
+  const cv::Mat lab = LabImage(small).pixels();
+  const std::vector<float> histogram = CentreWeightedHistogram(lab);
+  std::vector<Mode> modes;
+  std::vector<cv::Vec3f> colours;
+  while (colours.size() < count) {
+    const std::optional<Mode> mode = FullestNeighbourhood(histogram, modes);
+    if (!mode) break;
+    modes.push_back(*mode);
+    colours.push_back(MeanOfMode(small, lab, *mode));
+  }
+  return colours;
 }
 
 // The CIE L*a*b* of a BGR colour (0..255 a channel).

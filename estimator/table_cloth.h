@@ -7,13 +7,19 @@
 // mixed lights change the brightness much more than it) and brightness, off strong edges.
 #pragma once
 
+#include <cstddef>
 #include <opencv2/core.hpp>
+#include <vector>
 
 namespace billiard::estimator {
 
-// The cloth's colour (BGR) in a reduced BGR frame: the mean of the pixels in the mode of the
-// centre-weighted L*a*b* histogram.
-cv::Vec3f DominantClothColour(const cv::Mat& small);
+// The cloth's candidate colours (BGR) in a reduced BGR frame, up to `count`, the likeliest first:
+// the modes of the centre-weighted L*a*b* histogram, each the mean of its pixels, each another
+// colour than those before it. The first is the cloth of a table that fills the frame's middle;
+// a table seen from a low camera is a band across the middle (its image's height is about the
+// sine of the elevation times its width), and the floor or wall around it can outweigh it
+// (table_finder.h tries the next colour where the first's region makes no table).
+std::vector<cv::Vec3f> ClothColours(const cv::Mat& small, std::size_t count);
 
 // The CIE L*a*b* of a BGR colour (0..255 a channel).
 cv::Vec3f LabOfBgr(const cv::Vec3f& bgr);

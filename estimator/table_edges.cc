@@ -113,7 +113,10 @@ SideProfiles Profiles(const cv::Mat& bgr, const Eigen::Matrix3d& image_from_tabl
   for (const double t : {0.0, 0.5, 1.0}) {
     px_per_unit = std::max(px_per_unit, (image(t, 0.01) - image(t, 0)).norm() / 0.01);
   }
-  const double step = 1.0 / std::max(1.0, px_per_unit);
+  // Never more offsets than the frame's diagonal has pixels: a quadrilateral with a corner near its
+  // horizon would ask for millions.
+  const double max_px_per_unit = std::hypot(bgr.cols, bgr.rows) / std::max(to - from, 1e-6);
+  const double step = 1.0 / std::min(std::max(1.0, px_per_unit), max_px_per_unit);
   const int offsets = static_cast<int>((to - from) / step) + 1;
   std::vector<double> along;
   for (int k = 0; k < kEdgeSamples; ++k) {

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
-#include <random>
 #include <vector>
 
 #include "estimator/table_cloth.h"
+#include "estimator/outline_stretches.h"
 #include "estimator/table_edges.h"
 #include "estimator/table_partial.h"
 
@@ -19,21 +19,9 @@ namespace {
 // The cloth must cover this fraction of the frame at least.
 constexpr double kMinClothFraction = 0.04;
 // The outline's sides: the hull is reduced to four vertices with a tolerance growing from
-// kFirstPolygonTolerance of its perimeter; each side is fitted to the outline points within
-// kSideBand of the perimeter of it and between kSideEnd and 1 - kSideEnd along it (the corner
-// pockets and their jaws are outside); RANSAC keeps the points within kRansacInlierPx (search px).
+// kFirstPolygonTolerance of its perimeter (outline_stretches.h fits each side).
 constexpr double kFirstPolygonTolerance = 0.01, kPolygonToleranceStep = 0.005,
                  kLastPolygonTolerance = 0.3;
-constexpr double kSideBand = 0.02;
-constexpr double kSideEnd = 0.12;
-constexpr double kRansacInlierPx = 1.5;
-constexpr int kRansacTries = 200;
-// Up to kMaxStretches lines are fitted to a side's outline points, each through kMinStretch of them
-// at least (but the first): the straight stretches of a side that an arm, a cue or the cushion's
-// top breaks (FitSides).
-constexpr std::size_t kMaxStretches = 3;
-constexpr double kMinStretch = 0.1;
-constexpr double kMaxStretchTurn = 0.15;  // [rad] from the hull's side
 // A stretch other than the best supported is taken for the side only when the nose found inside
 // it is met at kOtherStretchNose of the places along the side at least (table_edges.h).
 constexpr double kOtherStretchNose = 0.6;
@@ -51,100 +39,14 @@ constexpr double kFocalAgreement = 1.3;
 // is below kMaxClothLightness, or its chroma above kMinClothChroma (a grey cloth under bright
 // light reads L* 76).
 constexpr double kOverheadAspectTolerance = 1.25;
-// A cloth side within kBorderSearchPx search pixels of the frame's edge is the border, not the
-// table's (the outline stops a pixel or two inside it).
-constexpr double kBorderSearchPx = 2.5;
 constexpr double kMaxClothLightness = 85.0, kMinClothChroma = 10.0;
-
-struct Line {
-  Eigen::Vector3d coefficients;  // a x + b y + c = 0, (a, b) unit
-  double rms = 0;
-  int points = 0;
-};
-
-// The lines through the outline points near the side from `a` to `b`, best supported first: RANSAC
-// (seeded, so that a frame always gives the same table) then least squares over its inliers, then
-// again over the points left, while a line holds kMinStretch of the side's points. The cloth's
-// outline along a side is a straight stretch where the cloth runs up to the cushion, and others
-// where an arm or a cue hides it, or where the cushion's top, of the cloth's colour, joins the bed
-// for a while: the best supported line may bridge two of them, and one of the others be the side.
-// The outline points along the middle of the side from `a` to `b` (between kSideEnd and
-// 1 - kSideEnd along it, within kSideBand of the perimeter of it).
-std::vector<cv::Point2d> SidePoints(const std::vector<cv::Point>& outline, const cv::Point2d& a,
-                                    const cv::Point2d& b, double perimeter) {
-  const cv::Point2d along = b - a;
-  const double length = cv::norm(along);
-  if (length < 1) return {};
-  const cv::Point2d u = along / length, normal(-u.y, u.x);
-  std::vector<cv::Point2d> points;
-  for (const cv::Point& p : outline) {
-    const cv::Point2d q = cv::Point2d(p) - a;
-    const double t = q.dot(u) / length;
-    if (t > kSideEnd && t < 1 - kSideEnd && std::abs(q.dot(normal)) < kSideBand * perimeter) {
-      points.push_back(p);
-    }
-  }
-  return points;
-}
-
-std::vector<Line> FitSides(const std::vector<cv::Point>& outline, const cv::Point2d& a,
-                           const cv::Point2d& b, double perimeter) {
-  const cv::Point2d along = b - a;
-  const double length = cv::norm(along);
-  if (length < 1) return {};
-  const cv::Point2d u = along / length;
-  std::vector<cv::Point2d> points = SidePoints(outline, a, b, perimeter);
-  const double min_points = std::max(2.0, kMinStretch * static_cast<double>(points.size()));
-  std::vector<Line> lines;
-  std::mt19937 random(1);
-  for (std::size_t tries = 0; tries < kMaxStretches && points.size() >= min_points; ++tries) {
-    std::uniform_int_distribution<std::size_t> pick(0, points.size() - 1);
-    Eigen::Vector3d best_line = Eigen::Vector3d::Zero();
-    int best_count = 0;
-    for (int attempt = 0; attempt < kRansacTries; ++attempt) {
-      const cv::Point2d p1 = points[pick(random)], p2 = points[pick(random)];
-      const cv::Point2d d = p2 - p1;
-      const double n = cv::norm(d);
-      if (n < 5) continue;
-      const Eigen::Vector3d line(-d.y / n, d.x / n, (d.y * p1.x - d.x * p1.y) / n);
-      int count = 0;
-      for (const auto& p : points) {
-        count += std::abs(line.dot(Eigen::Vector3d(p.x, p.y, 1))) < kRansacInlierPx;
-      }
-      if (count > best_count) {
-        best_count = count;
-        best_line = line;
-      }
-    }
-    std::vector<cv::Point2f> inliers;
-    std::vector<cv::Point2d> rest;
-    for (const auto& p : points) {
-      if (std::abs(best_line.dot(Eigen::Vector3d(p.x, p.y, 1))) < kRansacInlierPx) {
-        inliers.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
-      } else {
-        rest.push_back(p);
-      }
-    }
-    if (inliers.size() < std::max<std::size_t>(2, lines.empty() ? 2 : min_points)) break;
-    points = std::move(rest);
-    // A stretch turned from the side (an arm's edge, a cue's) is none of it.
-    const double turn = std::abs(best_line.x() * u.x + best_line.y() * u.y);
-    if (!lines.empty() && turn > std::sin(kMaxStretchTurn)) continue;
-    cv::Vec4f fitted;
-    cv::fitLine(inliers, fitted, cv::DIST_L2, 0, 0.01, 0.01);
-    Line line;
-    line.coefficients = {-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]};
-    double squares = 0;
-    for (const auto& p : inliers) {
-      const double e = line.coefficients.dot(Eigen::Vector3d(p.x, p.y, 1));
-      squares += e * e;
-    }
-    line.points = static_cast<int>(inliers.size());
-    line.rms = std::sqrt(squares / inliers.size());
-    lines.push_back(line);
-  }
-  return lines;
-}
+// The cloth's colours tried (ClothColours): the likeliest, then the next two (a low camera sees
+// the wall behind the table and the floor before it, each of its own colour).
+constexpr std::size_t kClothColours = 3;
+// A side of the cloth's outline within this many search pixels of the frame's edge at both ends
+// runs along it (the region's outline traced on the search's grid, the cloth's line fitted at
+// full resolution within a pixel or two of it): the frame's edge, not the cloth's.
+constexpr double kFrameEdgePx = 2.0;
 
 // The homography from the table (long side along x when `long_first`, else along y first and
 // then turned so that x is the long side) to the image of `corners`.
@@ -336,7 +238,9 @@ std::optional<int> EndOutOfFrame(const TableRegion& table, const cv::Size& size,
                                  double border_px) {
   if (DepthRatio(table.corners) > kOverheadDepthRatio) return std::nullopt;
   if (OverheadAspect(table.corners) >= kTableAspect) return std::nullopt;
-  return SideAlongBorder(table.cloth_corners, size, border_px);
+  const std::vector<int> along = SidesAlongBorder(table.cloth_corners, size, border_px);
+  if (along.size() != 1) return std::nullopt;
+  return along.front();
 }
 
 // The table with its side `cut` beyond the frame's border: the playing surface and the cloth's
@@ -380,23 +284,63 @@ TableSearch FindThroughLens(const cv::Mat& bgr, const RadialLens& lens, const Ta
   return {table, "", std::nullopt};
 }
 
-// The table in the frame; its lens estimated first when `estimate_lens` (not in a frame redrawn
-// through the lens already).
-TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
-  if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame", std::nullopt};
-  // An integer reduction: OpenCV's area averaging is much faster by whole factors.
-  const int factor = static_cast<int>(std::ceil(std::max(bgr.cols, bgr.rows) / kTableSearchSize));
-  const double scale = 1.0 / factor;
-  cv::Mat small;
-  cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
+// The cloth's sides and the cushions' noses inside them (the lines of the playing surface) from
+// the straight stretches of its outline at the search resolution (`stretches`, best supported
+// first, at `scale` of the frame's), each side confirmed at full resolution; `table`'s
+// cloth_corners and side_fit_rms_px set. False when two neighbouring sides do not meet.
+bool SidesAndNoses(const cv::Mat& bgr, const std::array<std::vector<Line>, 4>& stretches,
+                   double scale, bool long_first, TableRegion* table,
+                   std::array<Eigen::Vector3d, 4>* lines) {
+  std::array<Eigen::Vector3d, 4> rough_lines;
+  for (int i = 0; i < 4; ++i) rough_lines[i] = stretches[i].front().coefficients;
+  // A stretch of a side's outline other than its best supported is the cloth's side only when the
+  // cushion's nose found inside it runs along most of the side too (kOtherStretchNose): the
+  // stretch a straight edge confirms may be the rail's, beyond a cushion whose nose cannot be seen
+  // (or is hidden by whoever hid the first stretch), and the side would be left at the rail.
+  std::array<bool, 4> other_stretches = {true, true, true, true};
+  for (bool again = true; again;) {
+    again = false;
+    std::array<bool, 4> other_stretch_taken = {false, false, false, false};
+    double squares = 0;
+    int points = 0;
+    for (int i = 0; i < 4; ++i) {
+      // Where no straight edge is near it, the side found at the search resolution stands.
+      const Line& best = stretches[i].front();
+      const std::vector<Line> tried(
+          stretches[i].begin(), other_stretches[i] ? stretches[i].end() : stretches[i].begin() + 1);
+      const std::optional<ClothEdge> found =
+          ClothSideOfStretches(bgr, rough_lines, tried, long_first, i, kOutlineSearchPx / scale);
+      const EdgeLine side = found ? found->edge : EdgeLine{best.coefficients, best.points, 0.0, best.rms};
+      other_stretch_taken[i] = found && found->stretch > 0;
+      (*lines)[i] = side.line;
+      squares += side.rms_px * side.rms_px * side.places;
+      points += side.places;
+    }
+    table->side_fit_rms_px = std::sqrt(squares / std::max(1, points));
+    if (!Intersections(*lines, &table->cloth_corners)) return false;
+    std::array<int, 4> nose_places;
+    *lines = CushionNoses(bgr, table->cloth_corners, long_first, &nose_places);
+    for (int i = 0; i < 4; ++i) {
+      if (other_stretch_taken[i] && nose_places[i] < kOtherStretchNose * kEdgePlaces) {
+        other_stretches[i] = false;
+        again = true;
+      }
+    }
+  }
+  return true;
+}
+
+// The table whose cloth is of the colour `cloth_colour` in the frame (`small`, its reduction by
+// `scale`); its lens estimated first when `estimate_lens`. `quadrilateral` tells whether the
+// colour's region is a quadrilateral with straight sides (or sides a lens bends), the table found
+// or not: a cloth, not what lies around one.
+TableSearch FindTableOfCloth(const cv::Mat& bgr, const cv::Mat& small, double scale,
+                             const cv::Vec3f& cloth_colour, bool estimate_lens,
+                             bool* quadrilateral) {
+  *quadrilateral = false;
   TableRegion table;
   table.mask_scale = scale;
-  table.cloth_colour = DominantClothColour(small);
-  const cv::Vec3f cloth_lab = LabOfBgr(table.cloth_colour);
-  if (cloth_lab[0] > kMaxClothLightness && std::hypot(cloth_lab[1], cloth_lab[2]) < kMinClothChroma) {
-    return {std::nullopt, "no table: what fills the frame's middle is white, not a cloth",
-            std::nullopt};
-  }
+  table.cloth_colour = cloth_colour;
   table.cloth = LargestCentralRegion(ClothLike(small, table.cloth_colour));
   if (cv::countNonZero(table.cloth) < kMinClothFraction * small.total()) {
     return {std::nullopt, "no table: no evenly coloured cloth covers " +
@@ -426,10 +370,10 @@ TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
   }
   if (estimate_lens) {
     const RadialLens lens = OutlineLens(outline, polygon, perimeter, scale, bgr.size());
-    if (!lens.IsPinhole()) return FindThroughLens(bgr, lens, cloth);
+    *quadrilateral = !lens.IsPinhole();
+    if (*quadrilateral) return FindThroughLens(bgr, lens, cloth);
   }
   std::array<std::vector<Line>, 4> stretches;
-  std::array<Line, 4> sides;
   std::array<Eigen::Vector3d, 4> lines;
   for (int i = 0; i < 4; ++i) {
     stretches[i] = FitSides(outline, polygon[i], polygon[(i + 1) % 4], perimeter);
@@ -440,54 +384,20 @@ TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
       stretch.coefficients.z() /= scale;  // to full-resolution pixels
       stretch.rms /= scale;
     }
-    sides[i] = stretches[i].front();
-    lines[i] = sides[i].coefficients;
+    lines[i] = stretches[i].front().coefficients;
   }
+  *quadrilateral = true;
   if (!Intersections(lines, &table.cloth_corners)) {
     return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet", cloth};
   }
   const bool long_first = LongSideFirst(table.cloth_corners, bgr.size());
-  const std::array<Eigen::Vector3d, 4> rough_lines = lines;
-  // A stretch of a side's outline other than its best supported is the cloth's side only when the
-  // cushion's nose found inside it runs along most of the side too (kOtherStretchNose): the
-  // stretch a straight edge confirms may be the rail's, beyond a cushion whose nose cannot be seen
-  // (or is hidden by whoever hid the first stretch), and the side would be left at the rail.
-  std::array<bool, 4> other_stretches = {true, true, true, true};
-  for (bool again = true; again;) {
-    again = false;
-    std::array<bool, 4> other_stretch_taken = {false, false, false, false};
-    double squares = 0;
-    int points = 0;
-    for (int i = 0; i < 4; ++i) {
-      // Where no straight edge is near it, the side found at the search resolution stands.
-      const std::vector<Line> tried(
-          stretches[i].begin(), other_stretches[i] ? stretches[i].end() : stretches[i].begin() + 1);
-      const std::optional<ClothEdge> found =
-          ClothSideOfStretches(bgr, rough_lines, tried, long_first, i, kOutlineSearchPx / scale);
-      const EdgeLine side =
-          found ? found->edge : EdgeLine{sides[i].coefficients, sides[i].points, 0.0, sides[i].rms};
-      other_stretch_taken[i] = found && found->stretch > 0;
-      lines[i] = side.line;
-      squares += side.rms_px * side.rms_px * side.places;
-      points += side.places;
-    }
-    table.side_fit_rms_px = std::sqrt(squares / std::max(1, points));
-    if (!Intersections(lines, &table.cloth_corners)) {
-      return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet", cloth};
-    }
-    std::array<int, 4> nose_places;
-    lines = CushionNoses(bgr, table.cloth_corners, long_first, &nose_places);
-    for (int i = 0; i < 4; ++i) {
-      if (other_stretch_taken[i] && nose_places[i] < kOtherStretchNose * kEdgePlaces) {
-        other_stretches[i] = false;
-        again = true;
-      }
-    }
+  if (!SidesAndNoses(bgr, stretches, scale, long_first, &table, &lines)) {
+    return {std::nullopt, "no table: two neighbouring sides of the cloth do not meet", cloth};
   }
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet", cloth};
   }
-  if (const auto cut = EndOutOfFrame(table, bgr.size(), kBorderSearchPx / scale)) {
+  if (const auto cut = EndOutOfFrame(table, bgr.size(), kFrameEdgePx / scale)) {
     CompleteAcrossBorder(*cut, &table);
   }
   // A completed table's cut side is an end: the sides beside it are the long ones.
@@ -517,6 +427,50 @@ TableSearch Placed(TableRegion table, bool long_first, const TableRegion& cloth)
                               " times as long as it is wide, not a table's 2", cloth};
   }
   return {table, "", std::nullopt};
+}
+
+// Whether a colour is white, not a cloth's (a chart, a sheet of paper).
+bool IsWhite(const cv::Vec3f& bgr) {
+  const cv::Vec3f lab = LabOfBgr(bgr);
+  return lab[0] > kMaxClothLightness && std::hypot(lab[1], lab[2]) < kMinClothChroma;
+}
+
+// The table in the frame; its lens estimated first when `estimate_lens` (not in a frame redrawn
+// through the lens already). The cloth is the frame's likeliest colour (ClothColours); where its
+// region is no plane's quadrilateral with straight sides (the wall or floor around a table seen
+// from a low camera, whose outline follows the table's far rail and its sides), the next colours
+// are tried, and the first that makes a table is the cloth: a table whole in the frame, since the
+// first colour was around it (a side along the frame's edge is the floor's, around a cloth that
+// is no table: a round mat). Where the first colour's region is a quadrilateral with straight
+// sides, it is the cloth, its table found or not (part of it out of the frame, an arm across a
+// corner): no other colour is tried.
+TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
+  if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame", std::nullopt};
+  // An integer reduction: OpenCV's area averaging is much faster by whole factors.
+  const int factor = static_cast<int>(std::ceil(std::max(bgr.cols, bgr.rows) / kTableSearchSize));
+  const double scale = 1.0 / factor;
+  cv::Mat small;
+  cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
+  const std::vector<cv::Vec3f> colours = ClothColours(small, kClothColours);
+  if (IsWhite(colours.front())) {
+    return {std::nullopt, "no table: what fills the frame's middle is white, not a cloth",
+            std::nullopt};
+  }
+  TableSearch first;
+  for (std::size_t k = 0; k < colours.size(); ++k) {
+    if (k > 0 && IsWhite(colours[k])) continue;
+    bool quadrilateral = false;
+    TableSearch search =
+        FindTableOfCloth(bgr, small, scale, colours[k], estimate_lens, &quadrilateral);
+    if (k > 0 && search.table &&
+        (search.table->side_out_of_frame >= 0 ||
+         !SidesAlongBorder(search.table->cloth_corners, bgr.size(), kFrameEdgePx / scale).empty())) {
+      continue;
+    }
+    if (search.table || (k == 0 && quadrilateral)) return search;
+    if (k == 0) first = std::move(search);
+  }
+  return first;
 }
 
 }  // namespace

@@ -261,6 +261,44 @@ TEST(TableFinder, TheDepthAndScaleAcrossTheTableAreTheCamerasOwn) {
   }
 }
 
+// A camera low over the long side (15 and 20 degrees above the cloth, far enough back for the
+// whole table in its 1-radian frame): the table is a band across the frame's middle (its image
+// about sin(elevation) as high as it is wide), and the dark room around it outweighs its cloth
+// even weighted towards the centre. The room's region is no quadrilateral with straight sides
+// (its outline follows the far rail and the table's ends), so the cloth is the next colour: the
+// playing surface is found on every cloth, the view oblique.
+TEST(TableFinder, ALowCameraSeesTheTableAsABandAcrossTheRoomAndFindsIt) {
+  constexpr double kDistance = 3.3;  // [m] from the table's middle
+  constexpr double kHorizontalFov = 1.0;
+  const physics::TableParameters& table = Pool().table;
+  const Eigen::Vector3d middle(0.5 * table.length, 0.5 * table.width, 0.0);
+  for (const double elevation_deg : {15.0, 20.0}) {
+    const double e = elevation_deg * M_PI / 180.0;
+    const camera::CameraModel camera = camera::CameraModel::LookingAt(
+        middle + kDistance * Eigen::Vector3d(0, -std::cos(e), std::sin(e)), middle, 1280, 720,
+        kHorizontalFov);
+    double lowest = HUGE_VAL, highest = -HUGE_VAL;
+    for (const Eigen::Vector3d& corner : TableCorners(0.0)) {
+      const Eigen::Vector2d p = camera.Project(corner);
+      ASSERT_TRUE(p.x() > 0 && p.x() < 1280) << elevation_deg << " degrees: a corner out of frame";
+      lowest = std::min(lowest, p.y());
+      highest = std::max(highest, p.y());
+    }
+    // A band: less than a third of the frame's height.
+    ASSERT_LT(highest - lowest, 720.0 / 3);
+    for (const cv::Vec3b& cloth : {cv::Vec3b(60, 110, 30), cv::Vec3b(200, 140, 40),
+                                   cv::Vec3b(45, 30, 140)}) {
+      const std::string what = std::to_string(static_cast<int>(elevation_deg)) +
+                               " degrees, cloth " + std::to_string(cloth[0]) + "," +
+                               std::to_string(cloth[1]) + "," + std::to_string(cloth[2]);
+      const TableSearch search = FindTable(Render(camera, cloth));
+      ASSERT_TRUE(search.table) << what << ": " << search.reason;
+      ExpectTheSurface(*search.table, camera, what);
+      EXPECT_EQ(search.table->view, TableView::kOblique) << what;
+    }
+  }
+}
+
 TEST(TableFinder, AFrameWithoutATableIsRefusedWithTheReason) {
   cv::Mat noise(480, 640, CV_8UC3);
   cv::RNG(5).fill(noise, cv::RNG::UNIFORM, 0, 256);

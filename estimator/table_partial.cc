@@ -25,15 +25,15 @@ double SeenDistance(double t, double vanishing) {
 
 }  // namespace
 
-std::optional<int> SideAlongBorder(const std::array<Eigen::Vector2d, 4>& corners,
-                                   const cv::Size& size, double border_px) {
-  std::optional<int> along;
+std::vector<int> SidesAlongBorder(const std::array<Eigen::Vector2d, 4>& corners,
+                                  const cv::Size& size, double border_px) {
+  std::vector<int> along;
   for (int i = 0; i < 4; ++i) {
     for (int edge = 0; edge < 4; ++edge) {
       if (OnEdge(corners[i], edge, size, border_px) &&
           OnEdge(corners[(i + 1) % 4], edge, size, border_px)) {
-        if (along && *along != i) return std::nullopt;
-        along = i;
+        along.push_back(i);
+        break;
       }
     }
   }

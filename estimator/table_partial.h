@@ -17,6 +17,7 @@
 #include <array>
 #include <opencv2/core.hpp>
 #include <optional>
+#include <vector>
 
 namespace billiard::estimator {
 
@@ -24,10 +25,10 @@ namespace billiard::estimator {
 // seen part as much a short strip of cloth as a table's end.
 inline constexpr double kMinSeenShare = 0.5;
 
-// The side (corner i to i + 1) of a quadrilateral [px] that lies along the frame's border (both
-// its corners within `border_px` of the same edge of a frame of `size`), when exactly one does.
-std::optional<int> SideAlongBorder(const std::array<Eigen::Vector2d, 4>& corners,
-                                   const cv::Size& size, double border_px);
+// The sides (corner i to i + 1) of a quadrilateral [px] that lie along the frame's border: both
+// corners within `border_px` of the same edge of a frame of `size`.
+std::vector<int> SidesAlongBorder(const std::array<Eigen::Vector2d, 4>& corners,
+                                  const cv::Size& size, double border_px);
 
 // The corners [px] of the whole rectangle kTableAspect long whose seen part is `corners` (in
 // order around it), cut by the frame's border along side `cut`: the sides beside the cut are the

@@ -49,21 +49,21 @@ TEST(TablePartial, WhatIsNotAnEndCutOffIsNotCompleted) {
   EXPECT_FALSE(CompletedAcrossBorder(strip, 1, kAspect));
 }
 
-TEST(TablePartial, TheSideAlongTheBorderIsTheOneWithBothCornersOnOneEdge) {
+TEST(TablePartial, ASideAlongTheBorderHasBothCornersOnOneEdge) {
   const cv::Size frame(1280, 720);
   const std::array<Eigen::Vector2d, 4> cut = {
       Eigen::Vector2d(100, 40), Eigen::Vector2d(1279, 38), Eigen::Vector2d(1278, 690),
       Eigen::Vector2d(100, 680)};
-  EXPECT_EQ(SideAlongBorder(cut, frame, 3.0), 1);
+  EXPECT_EQ(SidesAlongBorder(cut, frame, 3.0), std::vector<int>{1});
   const std::array<Eigen::Vector2d, 4> inside = {
       Eigen::Vector2d(100, 40), Eigen::Vector2d(1200, 38), Eigen::Vector2d(1200, 690),
       Eigen::Vector2d(100, 680)};
-  EXPECT_FALSE(SideAlongBorder(inside, frame, 3.0));
-  // The cloth filling the frame: every side along the border, none the one cut.
+  EXPECT_TRUE(SidesAlongBorder(inside, frame, 3.0).empty());
+  // The cloth filling the frame: every side along the border.
   const std::array<Eigen::Vector2d, 4> filling = {
       Eigen::Vector2d(0, 0), Eigen::Vector2d(1279, 0), Eigen::Vector2d(1279, 719),
       Eigen::Vector2d(0, 719)};
-  EXPECT_FALSE(SideAlongBorder(filling, frame, 3.0));
+  EXPECT_EQ(SidesAlongBorder(filling, frame, 3.0), (std::vector<int>{0, 1, 2, 3}));
 }
 
 const physics::ModelParameters& Pool() {

@@ -146,15 +146,24 @@ double DepthRatio(const std::array<Eigen::Vector3d, 4>& corners, const camera::C
   return farthest / nearest;
 }
 
-camera::CameraModel WithFocal(const cv::Size& size, double focal) {
-  camera::CameraModel c;
-  c.fx = c.fy = focal;
-  c.cx = 0.5 * (size.width - 1);
-  c.cy = 0.5 * (size.height - 1);
-  return c;
+bool HasDistortion(const camera::CameraModel& c) {
+  return std::any_of(c.distortion.begin(), c.distortion.end(), [](double d) { return d != 0.0; });
 }
 
 }  // namespace
+
+camera::CameraModel LensIntrinsics(const RadialLens& lens, const cv::Size& size, double focal_px) {
+  camera::CameraModel c;
+  c.fx = c.fy = focal_px;
+  c.cx = 0.5 * (size.width - 1);
+  c.cy = 0.5 * (size.height - 1);
+  if (!lens.IsPinhole()) {
+    c.cx = lens.centre.x();
+    c.cy = lens.centre.y();
+    c.distortion[0] = lens.k1 * std::pow(focal_px / lens.focal_px, 2);
+  }
+  return c;
+}
 
 std::array<Eigen::Vector3d, 4> TablePointsOf(const TableCornerPixels& corners,
                                              const physics::TableParameters& table, double z) {
@@ -197,13 +206,21 @@ std::optional<CalibrationResult> CalibrateFromCorners(const TableCornerPixels& c
   // A first pose with every corner on the cloth, its focal length the guess's unless given; in an
   // oblique view, the grid's that fits best.
   const auto on_cloth = TablePointsOf(corners, table, 0.0);
-  std::optional<CalibrationResult> first = PoseFromPoints(on_cloth, corners.pixels, size, intrinsics);
-  const bool fit_focal = !(intrinsics.fx > 0) && first &&
-                         DepthRatio(on_cloth, first->camera) > kOverheadDepthRatio;
+  const bool focal_given = intrinsics.fx > 0;
+  // The lens seen in the sides' bend, unless the intrinsics say theirs.
+  const camera::CameraModel lens_intrinsics =
+      corners.lens.IsPinhole() || HasDistortion(intrinsics)
+          ? intrinsics
+          : LensIntrinsics(corners.lens, size, focal_given ? intrinsics.fx : size.width);
+  std::optional<CalibrationResult> first =
+      PoseFromPoints(on_cloth, corners.pixels, size, lens_intrinsics);
+  const bool fit_focal =
+      !focal_given && first && DepthRatio(on_cloth, first->camera) > kOverheadDepthRatio;
   if (fit_focal) {
     const double guess_rms = first->rms_reprojection_px;
     for (double f = kMinFocal; f <= kMaxFocal; f *= std::pow(2.0, 1.0 / kFocalSteps)) {
-      const auto fit = PoseFromPoints(on_cloth, corners.pixels, size, WithFocal(size, f * size.width));
+      const auto fit = PoseFromPoints(on_cloth, corners.pixels, size,
+                                      LensIntrinsics(corners.lens, size, f * size.width));
       if (fit && fit->rms_reprojection_px < guess_rms - kFocalTiePx &&
           fit->rms_reprojection_px < first->rms_reprojection_px) {
         first = fit;
@@ -226,7 +243,7 @@ std::optional<TableCornerPixels> FoundTableCorners(const cv::Mat& bgr, std::stri
   }
   const TableRegion& t = *search.table;
   const Eigen::Vector2d first = t.TableAt(t.corners[1]) - t.TableAt(t.corners[0]);
-  return TableCornerPixels{t.corners, std::abs(first.x()) > std::abs(first.y())};
+  return TableCornerPixels{t.corners, std::abs(first.x()) > std::abs(first.y()), t.lens};
 }
 
 }  // namespace billiard::estimator

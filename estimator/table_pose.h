@@ -32,17 +32,20 @@
 #include <optional>
 #include <string>
 
+#include "estimator/lens_estimate.h"
 #include "estimator/table_calibration.h"
 #include "sim/camera/camera_model.h"
 #include "sim/physics/parameters.h"
 
 namespace billiard::estimator {
 
-// The playing surface's corners [px] in order around the table, and whether the first side
-// (corner 0 to 1) is a long one.
+// The playing surface's corners [px] in order around the table, whether the first side (corner 0
+// to 1) is a long one, and the lens they were seen through: the table finder's estimate from the
+// sides' bend (lens_estimate.h), a pinhole for corners given.
 struct TableCornerPixels {
   std::array<Eigen::Vector2d, 4> pixels;
   bool first_side_long = true;
+  RadialLens lens;
 };
 
 // The table points [m] (at height `z`) of the corners, by the convention above.
@@ -50,12 +53,20 @@ std::array<Eigen::Vector3d, 4> TablePointsOf(const TableCornerPixels& corners,
                                              const physics::TableParameters& table, double z);
 
 // The camera from the corners (see the top of the file) in frames of `size`; `intrinsics` as
-// PoseFromPoints', its focal length fitted when zero. None when no pose is found.
+// PoseFromPoints', its focal length fitted when zero. Where the corners were seen through a lens
+// and `intrinsics` has no distortion, the camera has the lens's (LensIntrinsics). None when no
+// pose is found.
 std::optional<CalibrationResult> CalibrateFromCorners(const TableCornerPixels& corners,
                                                       const cv::Size& size,
                                                       const physics::TableParameters& table,
                                                       double nose_height,
                                                       const camera::CameraModel& intrinsics = {});
+
+// A camera's intrinsics of focal length `focal_px` through `lens`: the principal point at the
+// lens's centre (the frame's where it is a pinhole) and OpenCV's k1 the lens's at that focal
+// length, k1 (focal_px / lens.focal_px)^2 (the lens's k1 is the distortion at its assumed focal
+// length; the bend a plumb line shows is k1 / f^2 whatever f is).
+camera::CameraModel LensIntrinsics(const RadialLens& lens, const cv::Size& size, double focal_px);
 
 // The corners of the table found in a BGR frame (table_finder.h); none, with FindTable's reason
 // in `why`, when it finds none.

@@ -105,6 +105,33 @@ TEST(TablePose, TheCameraFromTheTableFoundWithoutMarkers) {
   }
 }
 
+// A wide-angle lens (barrel distortion k1 = -0.3, the table filling the frame) bends the sides:
+// the table finder estimates the lens from the bend (lens_estimate.h), and the pose from the
+// corners is fitted through it. A pinhole fitted to the same corners maps the cloth centimetres
+// off (the lens moves the corners radially, by some 25 px here).
+TEST(TablePose, TheCameraThroughAWideAngleLensFromTheTableFound) {
+  constexpr double kBarrelK1 = -0.3, kFill = 1.05, kHeight = 2.5;
+  const camera::CameraModel truth = camera::CameraModel::Overhead(
+      Pool().table, 1280, 720, kHeight, kFill, {kBarrelK1, 0.0, 0.0, 0.0, 0.0});
+  std::string why;
+  const auto corners = FoundTableCorners(Render(truth, 1), &why);
+  ASSERT_TRUE(corners) << why;
+  ASSERT_FALSE(corners->lens.IsPinhole());
+  const auto fit = CalibrateFromCorners(*corners, {1280, 720}, Pool().table, NoseHeight(Radius()));
+  ASSERT_TRUE(fit);
+  EXPECT_LT(fit->rms_reprojection_px, 1.0);
+  EXPECT_NEAR(fit->camera.distortion[0] / (fit->camera.fx * fit->camera.fx),
+              kBarrelK1 / (truth.fx * truth.fx), 0.1 * std::abs(kBarrelK1) / (truth.fx * truth.fx));
+  EXPECT_LT(LargestMappingError(truth, fit->camera), 0.004);
+
+  TableCornerPixels through_a_pinhole = *corners;
+  through_a_pinhole.lens = RadialLens{};
+  const auto pinhole =
+      CalibrateFromCorners(through_a_pinhole, {1280, 720}, Pool().table, NoseHeight(Radius()));
+  ASSERT_TRUE(pinhole);
+  EXPECT_GT(LargestMappingError(truth, pinhole->camera), 0.02);
+}
+
 // The corners of the playing surface as the side camera sees them: the near cushion (y = 0) from
 // behind, its nose; the other three their faces, down to the cloth. Each corner is where the image
 // lines of its two sides meet.

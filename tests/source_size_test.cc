@@ -43,7 +43,6 @@ const std::map<std::string, std::string>& LongFunctions() {
       {"sim/render/table_renderer.cc:TableRenderer::TableRenderer", "the cloth, the rails and the pockets drawn once"},
       {"sim/render/table_renderer.cc:TableRenderer::Render", "the balls, their blur and the noise"},
       {"sim/render/table_renderer.cc:TableRenderer::RenderRegion", "the shading of one region"},
-      {"estimator/table_finder.cc:FindTable", "the candidates, their sides and the choice"},
       {"bench/game_benchmark.cc:WriteGameReport", "every table of the report"},
   };
   return functions;

@@ -175,13 +175,15 @@ void RunCalibrate(const CalibrateArgs& args) {
     nlohmann::json j = {{"from", c.from},
                         {c.from == "markers" ? "markers" : "corners", points},
                         {"fx", c.result.camera.fx},
+                        {"k1", c.result.camera.distortion[0]},
                         {"rms_reprojection_px", c.result.rms_reprojection_px},
                         {"out", args.out}};
     std::cout << j.dump() << std::endl;
   } else {
     std::cerr << (c.from == "markers" ? "markers " : "table corners ") << points.dump()
               << ", reprojection RMS " << c.result.rms_reprojection_px << " px, fx "
-              << c.result.camera.fx << " px; camera written to " << args.out << "\n";
+              << c.result.camera.fx << " px, k1 " << c.result.camera.distortion[0]
+              << "; camera written to " << args.out << "\n";
   }
 }
 

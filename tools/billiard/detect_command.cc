@@ -76,6 +76,15 @@ nlohmann::json Points(const std::array<Eigen::Vector2d, 4>& corners) {
   return list;
 }
 
+// The lens the table was found through (lens_estimate.h): k1 at its assumed focal length about
+// its centre; k1 = 0 for a pinhole.
+nlohmann::json LensJson(const estimator::RadialLens& lens) {
+  if (lens.IsPinhole()) return {{"k1", 0.0}};
+  return {{"k1", lens.k1},
+          {"focal_px", lens.focal_px},
+          {"centre", {lens.centre.x(), lens.centre.y()}}};
+}
+
 // The table the balls were looked for on, as JSON (null where only the cloth was found); with a
 // calibration, how far the playing surface's corners found in the frame (independently of the
 // calibration, null where none is found) are from where the calibration puts them [px].
@@ -89,7 +98,8 @@ nlohmann::json TableJson(const estimator::BallDetector& detector, const cv::Mat&
                       {"from", estimator::TableOriginName(table.origin)},
                       {"view", estimator::TableViewName(table.view)},
                       {"depth_ratio", table.depth_ratio},
-                      {"side_fit_rms_px", table.side_fit_rms_px}};
+                      {"side_fit_rms_px", table.side_fit_rms_px},
+                      {"lens", LensJson(table.lens)}};
   if (camera) {
     const estimator::TableSearch found = estimator::FindTable(image);
     j["calibration_disagreement_px"] =
@@ -178,7 +188,10 @@ void PrintDetections(const nlohmann::json& j, const std::string& image) {
   } else {
     std::cerr << "  table   " << table["view"].get<std::string>() << " view ("
               << table["from"].get<std::string>() << "), its sides fitted to "
-              << Fixed(table["side_fit_rms_px"].get<double>(), 1) << " px RMS\n";
+              << Fixed(table["side_fit_rms_px"].get<double>(), 1) << " px RMS";
+    const double k1 = table["lens"]["k1"].get<double>();
+    if (k1 != 0.0) std::cerr << ", through a lens of k1 " << Fixed(k1, 3);
+    std::cerr << "\n";
   }
   for (const nlohmann::json& b : j["balls"]) {
     std::cerr << "  " << b["class"].get<std::string>() << " ("
