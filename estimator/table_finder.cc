@@ -10,6 +10,7 @@
 #include "estimator/table_cloth.h"
 #include "estimator/outline_stretches.h"
 #include "estimator/table_edges.h"
+#include "estimator/table_partial.h"
 
 namespace billiard::estimator {
 
@@ -42,9 +43,9 @@ constexpr double kMaxClothLightness = 85.0, kMinClothChroma = 10.0;
 // The cloth's colours tried (ClothColours): the likeliest, then the next two (a low camera sees
 // the wall behind the table and the floor before it, each of its own colour).
 constexpr std::size_t kClothColours = 3;
-// A side of a later colour's outline within this many search pixels of the frame's edge at both
-// ends runs along it (the region's outline traced on the search's grid, the cloth's line fitted
-// at full resolution within a pixel or two of it).
+// A side of the cloth's outline within this many search pixels of the frame's edge at both ends
+// runs along it (the region's outline traced on the search's grid, the cloth's line fitted at
+// full resolution within a pixel or two of it): the frame's edge, not the cloth's.
 constexpr double kFrameEdgePx = 2.0;
 
 // The homography from the table (long side along x when `long_first`, else along y first and
@@ -230,6 +231,36 @@ RadialLens OutlineLens(const std::vector<cv::Point>& outline, const std::vector<
   return EstimateRadialLens(sides, size, 1.0 / scale).lens;
 }
 
+// The side of the found table that is the frame's border, where its end is out of the frame
+// (table_partial.h): seen from overhead, shorter than a table, and one side of its cloth along
+// the border.
+std::optional<int> EndOutOfFrame(const TableRegion& table, const cv::Size& size,
+                                 double border_px) {
+  if (DepthRatio(table.corners) > kOverheadDepthRatio) return std::nullopt;
+  if (OverheadAspect(table.corners) >= kTableAspect) return std::nullopt;
+  const std::vector<int> along = SidesAlongBorder(table.cloth_corners, size, border_px);
+  if (along.size() != 1) return std::nullopt;
+  return along.front();
+}
+
+// The table with its side `cut` beyond the frame's border: the playing surface and the cloth's
+// outline completed to a table's proportions, the cloth's unseen end as far beyond the surface's
+// as the seen one is.
+void CompleteAcrossBorder(int cut, TableRegion* table) {
+  const auto corners = CompletedAcrossBorder(table->corners, cut, kTableAspect);
+  if (!corners) return;
+  const int end_a = (cut + 2) % 4, end_b = (cut + 3) % 4;
+  for (const auto& [border, end] : {std::pair{(cut + 1) % 4, end_a}, std::pair{cut, end_b}}) {
+    const Eigen::Vector2d along = ((*corners)[border] - table->corners[end]).normalized();
+    const double cushion = (table->corners[end] - table->cloth_corners[end]).dot(along);
+    table->cloth_corners[border] = (*corners)[border] + cushion * along;
+  }
+  table->corners = *corners;
+  table->side_out_of_frame = cut;
+}
+
+TableSearch Placed(TableRegion table, bool long_first, const TableRegion& cloth);
+
 TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens);
 
 // The table found in the frame redrawn as `lens`'s pinhole sees it, given in the frame: its
@@ -366,6 +397,18 @@ TableSearch FindTableOfCloth(const cv::Mat& bgr, const cv::Mat& small, double sc
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet", cloth};
   }
+  if (const auto cut = EndOutOfFrame(table, bgr.size(), kFrameEdgePx / scale)) {
+    CompleteAcrossBorder(*cut, &table);
+  }
+  // A completed table's cut side is an end: the sides beside it are the long ones.
+  const bool long_side_first =
+      table.side_out_of_frame >= 0 ? table.side_out_of_frame % 2 == 1 : long_first;
+  return Placed(std::move(table), long_side_first, cloth);
+}
+
+// The table of `corners` and `cloth_corners` found, placed: its homography, depth and view; none
+// where its corners are not a plane's in view, or, seen from overhead, it is not a table's shape.
+TableSearch Placed(TableRegion table, bool long_first, const TableRegion& cloth) {
   table.image_from_table = ImageFromTable(table.corners, long_first);
   const Eigen::Vector3d inverse_depth = table.image_from_table.inverse().row(2).transpose();
   table.inverse_depth = inverse_depth / inverse_depth.dot(table.Centre().homogeneous());
@@ -390,24 +433,6 @@ TableSearch FindTableOfCloth(const cv::Mat& bgr, const cv::Mat& small, double sc
 bool IsWhite(const cv::Vec3f& bgr) {
   const cv::Vec3f lab = LabOfBgr(bgr);
   return lab[0] > kMaxClothLightness && std::hypot(lab[1], lab[2]) < kMinClothChroma;
-}
-
-// Whether a side of the cloth's outline runs along an edge of the `size` frame (both its corners
-// within `tolerance_px` of it): the frame's edge, not the cloth's.
-bool AlongTheFrame(const TableRegion& table, const cv::Size& size, double tolerance_px) {
-  const Eigen::Vector2d far_corner(size.width - 1, size.height - 1);
-  for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector2d& a = table.cloth_corners[i];
-    const Eigen::Vector2d& b = table.cloth_corners[(i + 1) % 4];
-    for (int axis = 0; axis < 2; ++axis) {
-      for (const double edge : {0.0, far_corner[axis]}) {
-        if (std::abs(a[axis] - edge) < tolerance_px && std::abs(b[axis] - edge) < tolerance_px) {
-          return true;
-        }
-      }
-    }
-  }
-  return false;
 }
 
 // The table in the frame; its lens estimated first when `estimate_lens` (not in a frame redrawn
@@ -437,7 +462,9 @@ TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
     bool quadrilateral = false;
     TableSearch search =
         FindTableOfCloth(bgr, small, scale, colours[k], estimate_lens, &quadrilateral);
-    if (k > 0 && search.table && AlongTheFrame(*search.table, bgr.size(), kFrameEdgePx / scale)) {
+    if (k > 0 && search.table &&
+        (search.table->side_out_of_frame >= 0 ||
+         !SidesAlongBorder(search.table->cloth_corners, bgr.size(), kFrameEdgePx / scale).empty())) {
       continue;
     }
     if (search.table || (k == 0 && quadrilateral)) return search;

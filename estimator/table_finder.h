@@ -101,6 +101,9 @@ struct TableRegion {
   Eigen::Vector3d inverse_depth = Eigen::Vector3d::UnitZ();
   TableView view = TableView::kOverhead;
   TableOrigin origin = TableOrigin::kFound;
+  // The side (corner i to i + 1) beyond the frame's border, its corners inferred from the table's
+  // proportions (table_partial.h); -1 where the four sides were seen.
+  int side_out_of_frame = -1;
   // The largest over the smallest depth of the four corners.
   double depth_ratio = 1.0;
   // The cloth [255 where cloth] and the playing surface (the cloth with its holes filled) at

@@ -99,7 +99,8 @@ nlohmann::json TableJson(const estimator::BallDetector& detector, const cv::Mat&
                       {"view", estimator::TableViewName(table.view)},
                       {"depth_ratio", table.depth_ratio},
                       {"side_fit_rms_px", table.side_fit_rms_px},
-                      {"lens", LensJson(table.lens)}};
+                      {"lens", LensJson(table.lens)},
+                      {"side_out_of_frame", table.side_out_of_frame}};
   if (camera) {
     const estimator::TableSearch found = estimator::FindTable(image);
     j["calibration_disagreement_px"] =
@@ -191,6 +192,10 @@ void PrintDetections(const nlohmann::json& j, const std::string& image) {
               << Fixed(table["side_fit_rms_px"].get<double>(), 1) << " px RMS";
     const double k1 = table["lens"]["k1"].get<double>();
     if (k1 != 0.0) std::cerr << ", through a lens of k1 " << Fixed(k1, 3);
+    const int cut = table["side_out_of_frame"].get<int>();
+    if (cut >= 0) {
+      std::cerr << ", side " << cut << " beyond the frame (placed by the table's proportions)";
+    }
     std::cerr << "\n";
   }
   for (const nlohmann::json& b : j["balls"]) {
