@@ -22,6 +22,7 @@
 #include <optional>
 #include <vector>
 
+#include "bench/calibration.h"
 #include "planner/game/game.h"
 
 namespace billiard::bench {
@@ -39,12 +40,6 @@ struct GameBenchmarkOptions {
   // The robot whose cue plays every choice's strokes (PotOptions::robot); none: the level cue.
   std::optional<cue::Robot> robot;
   std::function<void(const std::string&)> progress = [](const std::string&) {};
-};
-
-struct CalibrationPoint {
-  double predicted = 0.0;  // the chosen shot's reported probability
-  double selection = 0.0;  // the finalists' estimate that chose it (biased up)
-  int executions = 0, potted = 0;
 };
 
 struct PolicyResult {
