@@ -10,6 +10,7 @@
 #include <string>
 
 #include "bench/pot_benchmark.h"
+#include "planner/pot/search_context.h"
 #include "planner/pot/testing/pot_layouts.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
