@@ -10,14 +10,12 @@
 
 #include "bench/format.h"
 #include "planner/choice/monte_carlo.h"
-#include "planner/choice/scene_balls.h"
 #include "planner/players/players.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/noise_file.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 #include "sim/rules/rules.h"
-#include "sim/table/seeded_uniform.h"
 #include "plot/reliability.h"
 
 namespace billiard::bench {
@@ -25,12 +23,8 @@ namespace billiard::bench {
 namespace {
 
 constexpr char kTournamentNoise[] = "computational-pool";
-// Deciles that hold at least this many executions are judged (the acceptance's rule).
-constexpr int kJudgedCount = 30;
-constexpr double kCalibrationTolerance = 0.05;
 // The replays' noise stream, apart from the choice's and the games'.
 constexpr std::uint64_t kReplayStream = 0x7265706c61792121ull;
-constexpr int kDeciles = 10;
 
 double Median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -44,48 +38,6 @@ double Percentile(std::vector<double> v, double q) {
   return v[std::min(v.size() - 1, static_cast<std::size_t>(q * v.size()))];
 }
 
-// A layout with a cue ball placed at a seeded free place (a choice without ball in hand).
-std::vector<table::SceneBall> WithSeededCueBall(const table::TableGeometry& table, double radius,
-                                                std::vector<table::SceneBall> balls,
-                                                std::uint64_t seed) {
-  table::SeededUniform uniform(seed);
-  for (;;) {
-    const Eigen::Vector2d p(uniform.Between(0, table.length), uniform.Between(0, table.width));
-    if (!table.OnSurface(p, 3 * radius)) continue;
-    const bool clear = std::all_of(balls.begin(), balls.end(), [&](const auto& b) {
-      return (b.state.template segment<2>(physics::kX) - p).norm() >= 4 * radius;
-    });
-    if (clear) return choice::WithCueBallAt(std::move(balls), p);
-  }
-}
-
-// The decile a prediction falls in.
-int DecileOf(double predicted) {
-  return std::min(kDeciles - 1, static_cast<int>(predicted * kDeciles));
-}
-
-std::vector<plot::ReliabilityBin> Deciles(const std::vector<CalibrationPoint>& points) {
-  std::vector<plot::ReliabilityBin> bins(kDeciles);
-  std::vector<double> predicted_sum(kDeciles, 0.0);
-  std::vector<int> potted(kDeciles, 0);
-  for (int i = 0; i < kDeciles; ++i) {
-    bins[i].lo = i / double(kDeciles);
-    bins[i].hi = (i + 1) / double(kDeciles);
-  }
-  for (const CalibrationPoint& p : points) {
-    const int i = DecileOf(p.predicted);
-    bins[i].count += p.executions;
-    predicted_sum[i] += p.predicted * p.executions;
-    potted[i] += p.potted;
-  }
-  for (int i = 0; i < kDeciles; ++i) {
-    if (bins[i].count == 0) continue;
-    bins[i].predicted = predicted_sum[i] / bins[i].count;
-    bins[i].measured = static_cast<double>(potted[i]) / bins[i].count;
-  }
-  return bins;
-}
-
 choice::ChoiceOptions BaseChoice(const GameBenchmarkOptions& options,
                                  const params::ExecutionNoise& noise) {
   choice::ChoiceOptions c;
@@ -94,6 +46,9 @@ choice::ChoiceOptions BaseChoice(const GameBenchmarkOptions& options,
   c.samples = options.samples;
   c.confirm_samples = options.confirm_samples;
   c.pot.robot = options.robot;
+  // Every shot here plays on the set's own constants: known exactly, not drawn (bench-constants
+  // measures the choice on tables drawn from the set's uncertainty).
+  c.sample_constants = false;
   return c;
 }
 
@@ -290,29 +245,14 @@ nlohmann::json GameSummaryJson(const GameBenchmarkResult& r) {
   nlohmann::json j;
   int executions = 0, potted = 0;
   double predicted_sum = 0.0, selection_sum = 0.0;
-  std::vector<int> choices(kDeciles, 0);
   for (const CalibrationPoint& p : r.calibration) {
     executions += p.executions;
     potted += p.potted;
     predicted_sum += p.predicted * p.executions;
     selection_sum += p.selection * p.executions;
-    ++choices[DecileOf(p.predicted)];
   }
-  nlohmann::json deciles = nlohmann::json::array();
   bool calibrated = true;
-  const std::vector<plot::ReliabilityBin> bins = Deciles(r.calibration);
-  for (int i = 0; i < kDeciles; ++i) {
-    const plot::ReliabilityBin& b = bins[i];
-    const bool judged = b.count >= kJudgedCount;
-    const bool within = std::abs(b.measured - b.predicted) <= kCalibrationTolerance;
-    if (judged && !within) calibrated = false;
-    const double stderr_ =
-        b.count > 0 ? std::sqrt(b.measured * (1 - b.measured) / b.count) : 0.0;
-    deciles.push_back({{"lo", b.lo}, {"hi", b.hi}, {"count", b.count}, {"choices", choices[i]},
-                       {"predicted", b.predicted}, {"measured", b.measured},
-                       {"measured_stderr", stderr_}, {"judged", judged},
-                       {"within_5_points", within}});
-  }
+  const nlohmann::json deciles = DecilesJson(r.calibration, &calibrated);
   j["calibration"] = {{"executions", executions},
                       {"choices", static_cast<int>(r.calibration.size())},
                       {"confirm_samples", r.options.confirm_samples},

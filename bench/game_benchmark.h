@@ -25,6 +25,7 @@
 #include <optional>
 #include <vector>
 
+#include "bench/calibration.h"
 #include "planner/game/game.h"
 #include "sim/params/execution_noise.h"
 
@@ -48,12 +49,6 @@ struct GameBenchmarkOptions {
   std::string noise = params::kDefaultNoise;
   std::string plant_noise;
   std::function<void(const std::string&)> progress = [](const std::string&) {};
-};
-
-struct CalibrationPoint {
-  double predicted = 0.0;  // the chosen shot's reported probability
-  double selection = 0.0;  // the finalists' estimate that chose it (biased up)
-  int executions = 0, potted = 0;
 };
 
 struct PolicyResult {

@@ -37,6 +37,9 @@ struct ChoiceOptions {
   int confirm_round = 32;
   double confirm_stderr = 0.03;
   std::uint64_t seed = 1;
+  // Each execution on the table's constants drawn within the parameter set's uncertainty, when
+  // it has one (monte_carlo.h); false: on the set's own values, the constants taken as exact.
+  bool sample_constants = true;
   bool lookahead = true;  // score p (1 + v); false: p alone
   // Below this probability the choice says that no shot is likely.
   double likely = 0.5;

@@ -8,6 +8,7 @@
 #include "planner/choice/lookahead.h"
 #include "planner/choice/scene_balls.h"
 #include "sim/model_choice/model_choice.h"
+#include "sim/params/constants_uncertainty.h"
 #include "sim/table/rail_contacts.h"
 
 namespace billiard::choice {
@@ -16,6 +17,9 @@ namespace {
 
 // The longest a stroke is simulated [s]: every pot rests well within it.
 constexpr double kLongestStroke = 60.0;
+// The constants' draws come from a stream of their own, apart from the noise's of the same
+// sample: the two are independent, and a set without uncertainty draws the noise it always drew.
+constexpr std::uint64_t kConstantsStream = 0x636f6e7374616e74ull;
 
 Execution Execute(const table::TableGeometry& table, const physics::ModelParameters& params,
                   const std::vector<table::SceneBall>& balls, const pot::PotPlan& plan,
@@ -24,7 +28,9 @@ Execution Execute(const table::TableGeometry& table, const physics::ModelParamet
   NormalStream normal(SampleSeed(options.seed, sample));
   const physics::CueStroke stroke = params::Perturbed(plan.stroke, options.noise,
                                                       params.ball.radius, [&] { return normal.Next(); });
-  StrokeResult result = PlayToRest(table, params, balls, stroke, motion);
+  StrokeResult result =
+      PlayToRest(table, DrawnConstants(params, options.sample_constants, options.seed, sample),
+                 balls, stroke, motion);
   Execution e;
   e.potted = LegalPot(result, plan.ball, plan.pocket);
   if (e.potted && value_next) {
@@ -46,6 +52,13 @@ std::uint64_t SampleSeed(std::uint64_t seed, std::uint64_t index) {
     return z ^ (z >> 31);
   };
   return mix(mix(seed) ^ index);
+}
+
+physics::ModelParameters DrawnConstants(const physics::ModelParameters& params, bool draw,
+                                        std::uint64_t seed, std::uint64_t index) {
+  if (!draw || params.uncertainty.sd.empty()) return params;
+  NormalStream normal(SampleSeed(seed ^ kConstantsStream, index));
+  return params::SampledConstants(params, [&] { return normal.Next(); });
 }
 
 double NormalStream::Next() {

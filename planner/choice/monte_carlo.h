@@ -1,8 +1,12 @@
 // The Monte Carlo estimate: a stroke played many times with the robot's execution noise
 // (sim/params/execution_noise.h) on the table's own motion, and how often it pots legally.
+// When the parameter set carries an uncertainty (sim/params/constants_uncertainty.h) and
+// ChoiceOptions::sample_constants is on, each execution also plays on the table's constants
+// drawn within it: a bank that pots only on the cushion's exact restitution is then as likely
+// as the spread of cushions it may meet lets it be (issue 47).
 //
-// Deterministic: execution s of every stroke draws its noise from a generator seeded by
-// (seed, s) alone (common random numbers: candidates are compared on the same errors), each
+// Deterministic: execution s of every stroke draws its noise, and its constants, from
+// generators seeded by (seed, s) alone (common random numbers: candidates are compared on the same errors), each
 // execution's result is stored at its index and the sums run in index order, so a seed gives the
 // same estimate on 1 thread or 64.
 //
@@ -35,6 +39,12 @@ using Motion = decltype(table::TableSimulationOptions::five_dof);
 // A generator's seed for execution `index` of a run seeded `seed` (SplitMix64 of both): the
 // executions are independent of one another and of the order they run in.
 std::uint64_t SampleSeed(std::uint64_t seed, std::uint64_t index);
+
+// The table's constants for execution `index` of a run seeded `seed`: `params` drawn within its
+// uncertainty (params::SampledConstants) from a stream of their own, apart from the noise's, or
+// `params` itself when `draw` is false or the set has no uncertainty.
+physics::ModelParameters DrawnConstants(const physics::ModelParameters& params, bool draw,
+                                        std::uint64_t seed, std::uint64_t index);
 
 // Standard normal numbers from std::mt19937_64 by the Box-Muller transform, by hand so that a
 // seed gives the same numbers on every standard library.

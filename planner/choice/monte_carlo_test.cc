@@ -6,6 +6,7 @@
 #include <set>
 
 #include "planner/choice/testing/choice_test.h"
+#include "sim/model_choice/model_choice.h"
 
 namespace billiard::choice {
 namespace {
@@ -139,6 +140,70 @@ TEST_F(MonteCarloTest, ABatchIsItsPlansExecutionsSideBySide) {
     // The rack is over when the only object ball drops: the next shot is worth a ball.
     if (both[s].potted) EXPECT_EQ(both[s].next_value, 1.0);
   }
+}
+
+// With the set's uncertainty, execution s plays on the table DrawnConstants gives for s, the
+// same on one thread as on two; with sample_constants off, on the set's own values.
+TEST_F(MonteCarloTest, ExecutionsPlayOnTheirDrawnTables) {
+  const physics::ModelParameters uncertain = params::LoadParameters("pool");
+  ASSERT_FALSE(uncertain.uncertainty.sd.empty());
+  const auto balls = StraightPot(0.4, 0.4);
+  const pot::PotPlan plan = Plan(balls, 1, "upper_right");
+  ASSERT_EQ(plan.status, pot::PotStatus::kOk) << plan.reason;
+  ChoiceOptions options;
+  options.noise = HeadingNoise(0.2);
+  batch::ThreadPool two(2), one(1);
+  const int samples = 16;
+  const auto drawn = ExecuteAll(table_, uncertain, balls, {&plan}, samples, options, {}, false, two);
+  const auto again = ExecuteAll(table_, uncertain, balls, {&plan}, samples, options, {}, false, one);
+  options.sample_constants = false;
+  const auto exact = ExecuteAll(table_, uncertain, balls, {&plan}, samples, options, {}, false, two);
+  const auto reference = ExecuteAll(table_, params_, balls, {&plan}, samples, options, {}, false, two);
+  for (int s = 0; s < samples; ++s) {
+    physics::ModelParameters table_s = DrawnConstants(uncertain, true, options.seed, s);
+    table_s.uncertainty = {};
+    const auto one_sample = ExecuteRange(table_, table_s, balls, {&plan}, s, 1, options, {}, false, one);
+    EXPECT_EQ(drawn[s].potted, one_sample[0].potted) << s;
+    EXPECT_EQ(drawn[s].potted, again[s].potted) << s;
+    EXPECT_EQ(exact[s].potted, reference[s].potted) << s;
+  }
+}
+
+// Independent truth: without noise, the straight pot at 0.4 + 0.4 m drops for rolling
+// resistance above a threshold d* (below it the cue ball follows into the pocket), found by
+// bisection on exact tables on the motion the estimate plays. With d alone uncertain its Monte Carlo probability is then the
+// normal's mass above d*, 1 - Phi((d* - d) / sd), within four binomial standard errors.
+TEST_F(MonteCarloTest, AConstantsSpreadGivesTheNormalsMassWhereThePotDrops) {
+  const auto balls = StraightPot(0.4, 0.4);
+  const pot::PotPlan plan = Plan(balls, 1, "upper_right");
+  ASSERT_EQ(plan.status, pot::PotStatus::kOk) << plan.reason;
+  auto pots_with_d = [&](double d) {
+    physics::ModelParameters p = params_;
+    p.contact.d = d;
+    return LegalPot(PlayToRest(table_, p, balls, plan.stroke, model_choice::TableMotion(p)), 1,
+                    "upper_right");
+  };
+  double fails = 0.3, pots = params_.contact.d;  // a third of the way down already scratches
+  ASSERT_TRUE(pots_with_d(pots));
+  ASSERT_FALSE(pots_with_d(fails));
+  constexpr double kBisectionTolerance = 1e-4;
+  while (pots - fails > kBisectionTolerance) {
+    const double mid = 0.5 * (fails + pots);
+    (pots_with_d(mid) ? pots : fails) = mid;
+  }
+  constexpr double kSd = 0.1;
+  physics::ModelParameters uncertain = params_;
+  uncertain.uncertainty.sd = {{"contact.d", kSd}};
+  batch::ThreadPool pool(2);
+  constexpr int kSamples = 400;
+  const PotProbability p = EstimatePotProbability(table_, uncertain, balls, plan,
+                                                  params::ExecutionNoise{}, kSamples, 3, pool);
+  // d is drawn within [0, 1]: the normal truncated there (Phi of each end).
+  auto phi = [&](double d) { return 0.5 * std::erfc(-(d - params_.contact.d) / (kSd * std::sqrt(2.0))); };
+  const double expected = (phi(1.0) - phi(pots)) / (phi(1.0) - phi(0.0));
+  ASSERT_GT(expected, 0.1);  // a threshold the spread reaches
+  ASSERT_LT(expected, 0.99);
+  EXPECT_NEAR(p.probability, expected, 4 * std::sqrt(expected * (1 - expected) / kSamples));
 }
 
 }  // namespace

@@ -69,7 +69,10 @@ std::vector<Judged> JudgeAll(const table::TableGeometry& table,
     NormalStream normal(SampleSeed(options.seed + kSafetyStream, job % samples));
     const physics::CueStroke played = params::Perturbed(
         strokes[job / samples], options.noise, params.ball.radius, [&] { return normal.Next(); });
-    const StrokeResult r = PlayToRest(table, params, balls, played, motion);
+    const StrokeResult r = PlayToRest(
+        table,
+        DrawnConstants(params, options.sample_constants, options.seed + kSafetyStream, job % samples),
+        balls, played, motion);
     return Judged{WinChance(table, params.ball.radius, balls, r, calls[job / samples], options),
                   Fouls(balls, r, options.rules)};
   });

@@ -1,8 +1,10 @@
 #include "sim/params/parameter_sets.h"
 
+#include "sim/params/constants_uncertainty.h"
 #include "sim/params/strict_json.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -25,38 +27,86 @@ std::vector<std::string> BuiltinParameterSetNames() {
 
 using internal::Field;
 
+namespace {
+
+// The numbers of `p` by section and key, as the files spell them.
+std::vector<std::pair<std::string, std::vector<Field>>> Sections(ModelParameters& p) {
+  ContactParameters& c = p.contact;
+  return {{"ball", {{"radius", &p.ball.radius}, {"mass", &p.ball.mass}, {"gravity", &p.ball.gravity}}},
+          {"contact",
+           {{"patch_radius", &c.patch_radius},
+            {"mu", &c.mu},
+            {"d", &c.d},
+            {"eps_t", &c.eps_t},
+            {"eps_r", &c.eps_r},
+            {"b_t", &c.b_t},
+            {"m_t", &c.m_t},
+            {"b_m", &c.b_m},
+            {"m_m", &c.m_m}}},
+          {"cue",
+           {{"mass", &p.cue.mass},
+            {"tip_restitution", &p.cue.tip_restitution},
+            {"max_tip_offset", &p.cue.max_tip_offset},
+            {"max_speed", &p.cue.max_speed},
+            {"end_mass", &p.cue.end_mass}}},
+          {"collision",
+           {{"ball_restitution", &p.collision.ball_restitution},
+            {"ball_friction_a", &p.collision.ball_friction_a},
+            {"ball_friction_b", &p.collision.ball_friction_b},
+            {"ball_friction_c", &p.collision.ball_friction_c},
+            {"cushion_restitution", &p.collision.cushion_restitution},
+            {"cushion_friction", &p.collision.cushion_friction}}},
+          {"table", {{"length", &p.table.length}, {"width", &p.table.width}}}};
+}
+
+// The optional "uncertainty": {"source": "...", "<section>.<key>": sd, ...}, each key one the
+// sampler draws (ConstantByKey) and each sd a finite number >= 0.
+physics::ConstantsUncertainty ReadUncertainty(const nlohmann::json& j, const std::string& origin) {
+  physics::ConstantsUncertainty u;
+  if (!j.is_object()) {
+    throw std::invalid_argument(origin + ": \"uncertainty\" must be an object, not " +
+                                internal::TypeName(j));
+  }
+  u.source = internal::ReadText(j, "source", "", origin);
+  ModelParameters probe;
+  for (const auto& [key, value] : j.items()) {
+    if (key == "source") continue;
+    const std::string path = "uncertainty." + key;
+    if (ConstantByKey(probe, key) == nullptr) {
+      throw std::invalid_argument(origin + ": unknown key " + path +
+                                  " (a constant of contact, collision or cue mass, "
+                                  "tip_restitution, end_mass)");
+    }
+    if (!value.is_number() || !std::isfinite(value.get<double>()) || value.get<double>() < 0) {
+      throw std::invalid_argument(origin + ": " + path +
+                                  " must be a standard deviation, a number >= 0, not " + value.dump());
+    }
+    u.sd.emplace_back(key, value.get<double>());
+  }
+  return u;
+}
+
+}  // namespace
+
+double* ParameterByKey(ModelParameters& p, const std::string& key) {
+  const std::size_t dot = key.find('.');
+  if (dot == std::string::npos) return nullptr;
+  for (const auto& [section, fields] : Sections(p)) {
+    if (section != key.substr(0, dot)) continue;
+    for (const Field& f : fields) {
+      if (f.key == key.substr(dot + 1)) return f.value;
+    }
+  }
+  return nullptr;
+}
+
 ModelParameters ParseParameters(const std::string& json_text, const std::string& origin) {
   const nlohmann::json j = internal::ParseObject(json_text, origin, "a parameter set");
   ModelParameters p;
-  ContactParameters& c = p.contact;
-  const std::vector<std::pair<std::string, std::vector<Field>>> sections = {
-      {"ball", {{"radius", &p.ball.radius}, {"mass", &p.ball.mass}, {"gravity", &p.ball.gravity}}},
-      {"contact",
-       {{"patch_radius", &c.patch_radius},
-        {"mu", &c.mu},
-        {"d", &c.d},
-        {"eps_t", &c.eps_t},
-        {"eps_r", &c.eps_r},
-        {"b_t", &c.b_t},
-        {"m_t", &c.m_t},
-        {"b_m", &c.b_m},
-        {"m_m", &c.m_m}}},
-      {"cue",
-       {{"mass", &p.cue.mass},
-        {"tip_restitution", &p.cue.tip_restitution},
-        {"max_tip_offset", &p.cue.max_tip_offset},
-        {"max_speed", &p.cue.max_speed},
-        {"end_mass", &p.cue.end_mass}}},
-      {"collision",
-       {{"ball_restitution", &p.collision.ball_restitution},
-        {"ball_friction_a", &p.collision.ball_friction_a},
-        {"ball_friction_b", &p.collision.ball_friction_b},
-        {"ball_friction_c", &p.collision.ball_friction_c},
-        {"cushion_restitution", &p.collision.cushion_restitution},
-        {"cushion_friction", &p.collision.cushion_friction}}},
-      {"table", {{"length", &p.table.length}, {"width", &p.table.width}}}};
+  const auto sections = Sections(p);
   for (const auto& [key, value] : j.items()) {
-    const bool known = key == "name" || key == "source" || (key == "fit" && value.is_object()) ||
+    const bool known = key == "name" || key == "source" || key == "uncertainty" ||
+                       (key == "fit" && value.is_object()) ||
                        std::any_of(sections.begin(), sections.end(),
                                    [&key = key](const auto& s) { return s.first == key; });
     if (!known) throw std::invalid_argument(origin + ": unknown key " + key);
@@ -68,6 +118,7 @@ ModelParameters ParseParameters(const std::string& json_text, const std::string&
   }
   p.name = internal::ReadText(j, "name", origin, origin);
   p.source = internal::ReadText(j, "source", "", origin);
+  if (j.contains("uncertainty")) p.uncertainty = ReadUncertainty(j.at("uncertainty"), origin);
   physics::ValidateParameters(p);
   return p;
 }
@@ -103,6 +154,12 @@ std::string ParametersJson(const ModelParameters& p, const std::string& fit_json
                     {"cushion_restitution", k.cushion_restitution},
                     {"cushion_friction", k.cushion_friction}};
   j["table"] = {{"length", p.table.length}, {"width", p.table.width}};
+  if (!p.uncertainty.sd.empty()) {
+    nlohmann::ordered_json u;
+    if (!p.uncertainty.source.empty()) u["source"] = p.uncertainty.source;
+    for (const auto& [key, sd] : p.uncertainty.sd) u[key] = sd;
+    j["uncertainty"] = u;
+  }
   if (!fit_json.empty()) j["fit"] = nlohmann::ordered_json::parse(fit_json);
   return j.dump(2) + "\n";
 }

@@ -29,11 +29,19 @@ physics::ModelParameters LoadParameters(const std::string& name_or_path);
 // optional strings "name" (default: `origin`) and "source". An unknown key, a missing number or
 // a value of the wrong type is refused, naming the key ("t.json: unknown key contact.muu").
 // An optional object "fit" (the report of the fit that identified the set: how, on what data,
-// with what uncertainties) is documentation; the physics does not read it.
+// with what uncertainties) is documentation; the physics does not read it. An optional object
+// "uncertainty" gives standard deviations of named constants ("collision.cushion_restitution":
+// 0.03) and a "source" string: the set's ConstantsUncertainty, which the shot choice samples
+// (constants_uncertainty.h); a key the sampler does not draw or an sd that is negative or not
+// a number is refused, naming the key ("t.json: uncertainty.contact.mu must be a standard
+// deviation, a number >= 0, not -0.1").
 physics::ModelParameters ParseParameters(const std::string& json_text, const std::string& origin);
 
-// The set as JSON text that ParseParameters reads back to the same numbers (every one at full
-// precision), with `fit_json`, when not empty, a JSON object, as its "fit".
+// The number of `p` a file names `key` ("contact.mu", "table.length"), or nullptr.
+double* ParameterByKey(physics::ModelParameters& p, const std::string& key);
+
+// The set as JSON text that ParseParameters reads back to the same numbers and uncertainty
+// (every one at full precision), with `fit_json`, when not empty, a JSON object, as its "fit".
 std::string ParametersJson(const physics::ModelParameters& p, const std::string& fit_json = "");
 
 // The set's name, and the file it came from when not built in: "pool", "mine (my/set.json)".

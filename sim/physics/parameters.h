@@ -9,6 +9,8 @@
 
 #include <array>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace billiard::physics {
 
@@ -58,6 +60,15 @@ struct TableParameters {
   double width = 0.0;
 };
 
+// How well a set's constants are known: standard deviations of named constants, each named by
+// its key in the set's files ("collision.cushion_restitution"), and where they come from. The
+// physics does not read them; the shot choice draws the table's constants from them
+// (sim/params/constants_uncertainty.h) as it draws the robot's noise.
+struct ConstantsUncertainty {
+  std::string source;
+  std::vector<std::pair<std::string, double>> sd;  // key, standard deviation (>= 0)
+};
+
 struct ModelParameters {
   std::string name;
   std::string source;  // where the numbers come from
@@ -67,6 +78,7 @@ struct ModelParameters {
   CueParameters cue;
   CollisionParameters collision;
   TableParameters table;
+  ConstantsUncertainty uncertainty;  // empty: the constants taken as exact
 
   // Rolling-resistance coefficient of the closed-form model that matches this contact.
   double RollingResistance() const {

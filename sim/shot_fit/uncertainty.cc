@@ -70,4 +70,23 @@ void JudgeIdentifiable(double value, double variance, double max_relative_sd, Co
   if (!fit->identifiable) fit->value = fit->prior;
 }
 
+std::vector<std::pair<std::string, double>> SetUncertainty(const std::vector<ConstantFit>& constants,
+                                                           const physics::ModelParameters& fitted) {
+  std::vector<std::pair<std::string, double>> sd;
+  for (const ConstantFit& c : constants) {
+    if (!c.identifiable || !std::isfinite(c.sd)) continue;
+    switch (c.constant) {
+      case Constant::kMu: sd.emplace_back("contact.mu", c.sd); break;
+      case Constant::kSpin: sd.emplace_back("contact.patch_radius", c.sd); break;
+      case Constant::kRolling:
+        sd.emplace_back("contact.d", c.sd * 5 * fitted.ball.radius / fitted.contact.patch_radius);
+        break;
+      case Constant::kCushion: sd.emplace_back("collision.cushion_restitution", c.sd); break;
+      case Constant::kCushionFriction: sd.emplace_back("collision.cushion_friction", c.sd); break;
+      case Constant::kBallBall: sd.emplace_back("collision.ball_restitution", c.sd); break;
+    }
+  }
+  return sd;
+}
+
 }  // namespace billiard::shot_fit

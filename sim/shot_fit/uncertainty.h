@@ -20,6 +20,8 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/shot_fit/fit_constants.h"
@@ -59,5 +61,13 @@ Eigen::MatrixXd ConstantsCovariance(const std::vector<ShotBlocks>& blocks, std::
 // relative sd is at most `max_relative_sd` and it is not at a bound of ConstantRange; a
 // constant not identifiable goes back to its prior value.
 void JudgeIdentifiable(double value, double variance, double max_relative_sd, ConstantFit* fit);
+
+// The identifiable constants' sds as a parameter set carries them (its "uncertainty", drawn by
+// the shot choice: sim/params/constants_uncertainty.h), each under the set's key: mu as
+// contact.mu, spin as contact.patch_radius, cushion as collision.cushion_restitution,
+// cushion_friction as collision.cushion_friction, ball_ball as collision.ball_restitution, and
+// rolling as contact.d, mu_r's sd times 5 r / a (d = 5 r mu_r / a with `fitted`'s a held).
+std::vector<std::pair<std::string, double>> SetUncertainty(const std::vector<ConstantFit>& constants,
+                                                           const physics::ModelParameters& fitted);
 
 }  // namespace billiard::shot_fit

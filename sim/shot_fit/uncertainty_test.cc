@@ -239,3 +239,27 @@ TEST(FitShots, NeverReportsAConstantAtItsBoundAsIdentifiable) {
 
 }  // namespace
 }  // namespace billiard::shot_fit
+
+namespace billiard::shot_fit {
+namespace {
+
+// The fit's sds under the set's keys; rolling's in d, d = 5 r mu_r / a with a held; a constant
+// not identifiable (or of infinite sd) carries none.
+TEST(SetUncertainty, NamesTheSetsKeysAndConvertsRollingToD) {
+  const physics::ModelParameters pool = params::LoadParameters("pool");
+  std::vector<ConstantFit> fits(4);
+  fits[0] = {Constant::kCushion, 0.85, 0.86, 0.004, false, true};
+  fits[1] = {Constant::kRolling, 0.01, 0.011, 0.0002, false, true};
+  fits[2] = {Constant::kMu, 0.2, 0.2, 0.01, false, false};
+  fits[3] = {Constant::kBallBall, 0.95, 0.95, std::numeric_limits<double>::infinity(), false, true};
+  const auto sd = SetUncertainty(fits, pool);
+  ASSERT_EQ(sd.size(), 2u);
+  EXPECT_EQ(sd[0].first, "collision.cushion_restitution");
+  EXPECT_EQ(sd[0].second, 0.004);
+  EXPECT_EQ(sd[1].first, "contact.d");
+  // d moves with mu_r at 5 r / a: the pool set's d of 0.51 for mu_r = 0.01.
+  EXPECT_NEAR(sd[1].second, 0.0002 * pool.contact.d / pool.RollingResistance(), 1e-12);
+}
+
+}  // namespace
+}  // namespace billiard::shot_fit

@@ -41,6 +41,7 @@ struct ChoiceArgs {
   std::uint64_t seed = 1;
   int threads = batch::DefaultThreadCount();
   bool one_level = false;
+  bool exact_constants = false;
   std::string robot = params::kDefaultRobot;
   bool json = false;
 };
@@ -61,6 +62,8 @@ void AddChoiceOptions(CLI::App* cmd, ChoiceArgs* args) {
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_flag("--one-level", args->one_level,
                 "The lookahead's next shot valued in closed form, not planned (no second level)");
+  cmd->add_flag("--exact-constants", args->exact_constants,
+                "Take the parameter set's constants as exact: no draws within its \"uncertainty\"");
   cmd->add_option("--robot", args->robot, kRobotHelp)->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
 }
@@ -76,6 +79,7 @@ choice::ChoiceOptions ChoiceOptionsOf(const ChoiceArgs& args) {
   options.confirm_samples = args.confirm_samples;
   options.seed = args.seed;
   options.second_level = !args.one_level;
+  options.sample_constants = !args.exact_constants;
   options.pot.robot = LoadRobotOption(args.robot);
   return options;
 }
@@ -297,6 +301,7 @@ void AddChooseShotCommand(CLI::App& app) {
       nlohmann::json j = ChoiceJson(r);
       j["rules"] = rules::RulesName(options.rules);
       j["noise"] = options.noise.name;
+      j["constants_drawn"] = options.sample_constants && !s.params.uncertainty.sd.empty();
       j["table"] = s.table.name;
       DescribeParameters(s.params, &j);
       std::cout << j.dump() << std::endl;

@@ -24,6 +24,7 @@
 #include "sim/params/table_specs.h"
 #include "sim/shot_fit/shot_fit.h"
 #include "sim/shot_fit/shot_recorder.h"
+#include "sim/shot_fit/uncertainty.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/logged_shots.h"
 #include "plot/table_picture.h"
@@ -131,6 +132,8 @@ void WriteFittedSet(const std::string& path, const std::string& option,
   report["median_cue_rmse_m"] = fit.median_cue_rmse;
   physics::ModelParameters out_set = fit.params;
   out_set.name = prior.name + "-fitted";
+  out_set.uncertainty.sd = shot_fit::SetUncertainty(fit.constants, fit.params);
+  out_set.uncertainty.source = "The fitted constants' standard uncertainties (\"fit\": constants)";
   out_set.source = "The constants of \"fit\" fitted by billiard " + command + " to " +
                    std::to_string(fit.constant_shots) + " " + fitted_to +
                    "; the other numbers those of " + params::ParameterSetLabel(prior) + ": " +

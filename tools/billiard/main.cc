@@ -13,6 +13,7 @@
 #include "tools/billiard/bench_detect_command.h"
 #include "tools/billiard/bench_estimator_command.h"
 #include "tools/billiard/bench_planner_command.h"
+#include "tools/billiard/bench_constants_command.h"
 #include "tools/billiard/bench_match_command.h"
 #include "tools/billiard/break_command.h"
 #include "tools/billiard/burst_command.h"
@@ -114,6 +115,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddMatchCommand(app);
   billiard::cli::AddBenchBreakCommand(app);
   billiard::cli::AddBenchMatchCommand(app);
+  billiard::cli::AddBenchConstantsCommand(app);
   if (const std::string word = UnknownSubcommand(app, argc, argv); !word.empty()) {
     const std::string nearest = billiard::cli::NearestName(word, SubcommandNames(app), kNearEdits);
     std::cerr << "billiard: unknown subcommand '" << word << "'"

@@ -1,14 +1,18 @@
 #include "tools/billiard/pot_commands.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "bench/pot_benchmark.h"
+#include "planner/pot/search_context.h"
 #include "planner/pot/testing/pot_layouts.h"
+#include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
 #include "sim/params/scene_file.h"
@@ -35,10 +39,16 @@ struct PlanPotArgs {
 
 nlohmann::json Point(const Eigen::Vector2d& p) { return {p.x(), p.y()}; }
 
+// Whether the robot can hold the plan's heading window: its narrower side at least one standard
+// deviation of the robot's heading noise (below it, most strokes that err to that side miss).
+bool MarginHolds(const pot::PotPlan& plan, double heading_noise_deg) {
+  return std::min(plan.margin_left_deg, plan.margin_right_deg) >= heading_noise_deg;
+}
+
 // The plan as a player reads it: the stroke in degrees, mm and m/s (StrokeInWords), its
 // windows, where the cue ball stops. A refusal is not printed here: its reason is the one line
 // main() prints for exit 3.
-void PrintPlan(const pot::PotPlan& plan) {
+void PrintPlan(const pot::PotPlan& plan, double heading_noise_deg) {
   if (plan.status != pot::PotStatus::kOk) return;
   std::cerr << "plan-pot: ball " << plan.ball << " in " << plan.pocket << ": "
             << pot::PotStatusName(plan.status) << ", " << plan.why << "\n  cue     "
@@ -55,6 +65,16 @@ void PrintPlan(const pot::PotPlan& plan) {
             << Fixed(plan.cut_deg, 1) << " deg\n  cue ball stops at " << Fixed(plan.cue_rest.x(), 3)
             << ", " << Fixed(plan.cue_rest.y(), 3) << " m; " << plan.simulations << " simulations, "
             << Fixed(plan.solve_us, 0) << " us\n";
+  if (!MarginHolds(plan, heading_noise_deg)) {
+    std::cerr << "  margin  below the robot's heading noise (" << Fixed(heading_noise_deg, 2)
+              << " deg sd): many of its strokes miss; choose-shot says how often it pots\n";
+  }
+}
+
+// The robot's heading noise [deg]: its own model's, else the default robot's.
+double HeadingNoiseDeg(const std::optional<cue::Robot>& robot) {
+  const bool own = robot && !robot->noise.empty();
+  return params::LoadNoise(own ? robot->noise : params::kDefaultNoise).heading / pot::kDegree;
 }
 
 void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
@@ -107,10 +127,15 @@ void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
     nlohmann::json j = PotPlanJson(plan);
     j["table"] = geometry.name;
     j["robot"] = options.robot->name;
+    if (plan.status == pot::PotStatus::kOk) {
+      const double noise_deg = HeadingNoiseDeg(options.robot);
+      j["heading_noise_deg"] = noise_deg;
+      j["margin_holds"] = MarginHolds(plan, noise_deg);
+    }
     DescribeParameters(params, &j);
     std::cout << j.dump() << std::endl;
   } else {
-    PrintPlan(plan);
+    PrintPlan(plan, HeadingNoiseDeg(options.robot));
   }
   if (plan.status != pot::PotStatus::kOk) {
     throw Refused(std::string(pot::PotStatusName(plan.status)) + ": " + plan.reason);

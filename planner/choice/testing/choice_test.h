@@ -1,5 +1,5 @@
 // The fixture the choice's tests (and the players' and the game's) share: the pool parameter
-// set on a 9-ft pool table, balls placed where asked, a dead-straight pot, a direct plan, a
+// set (its constants exact) on a 9-ft pool table, balls placed where asked, a dead-straight pot, a direct plan, a
 // noise of heading error alone, a quick choice, and two choices compared.
 //
 // Module: billiard::choice (test code).
@@ -27,8 +27,16 @@ namespace billiard::choice::testing {
 class ChoiceTest : public ::testing::Test {
  protected:
   ChoiceTest()
-      : params_(params::LoadParameters("pool")),
+      : params_(ExactPool()),
         table_(table::BuildTable(params::LoadTableSpec(params::kDefaultTable))) {}
+
+  // The pool set with its constants taken as exact (no uncertainty drawn): the choice's tests
+  // judge what the robot's noise does; monte_carlo_test.cc judges the constants' draws.
+  static physics::ModelParameters ExactPool() {
+    physics::ModelParameters p = params::LoadParameters("pool");
+    p.uncertainty = {};
+    return p;
+  }
 
   // The cue ball and ball 1 on the upper right corner pocket's diagonal, `object_back` and
   // `object_back + cue_back` from the pocket: a dead-straight pot.
