@@ -224,8 +224,9 @@ struct Tally {
     return plan;
   }
 
-  // Why the best plan's kind, in words.
-  std::string Why(const PotRequest& request) const {
+  // Why the best plan's kind, in words; a margin walked no further than `margin_cap` [rad] is
+  // said to be at least that.
+  std::string Why(const PotRequest& request, const std::optional<double>& margin_cap) const {
     std::ostringstream why;
     why.precision(3);
     if (best->kind == ShotKind::kDirect) {
@@ -233,7 +234,10 @@ struct Tally {
     } else {
       why << ShotKindName(best->kind);
       if (best->rail >= 0) why << " off rail " << best->rail;
-      why << ": the widest margin (" << SmallerMargin(*best) << " deg) of " << alternatives << " plan"
+      const double margin = SmallerMargin(*best);
+      const bool capped = margin_cap && margin >= (*margin_cap - kMarginGrid) / kDegree;
+      why << ": the widest margin (" << (capped ? "at least " : "") << margin << " deg) of "
+          << alternatives << " plan"
           << (alternatives > 1 ? "s" : "");
       if (!direct_blocked.empty() && !request.kind) why << "; direct: " << direct_blocked;
     }
@@ -383,7 +387,7 @@ PotPlan PlanPot(const table::TableGeometry& table, const physics::ModelParameter
     if (request.cue_target && tally.best) break;
   }
   if (!tally.best) return finish(tally.EveryRouteRefused(kinds.size()), search.simulations());
-  tally.best->why = tally.Why(request);
+  tally.best->why = tally.Why(request, options.margin_cap);
   return finish(*tally.best, search.simulations());
 }
 

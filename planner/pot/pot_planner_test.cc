@@ -99,6 +99,23 @@ TEST_F(PotPlannerTest, BanksAndKicksPotWhenTheirLaunchIsSimulated) {
   }
 }
 
+// A bank's margin walked only to a cap (as the choice ranks plans) is told as at least the cap,
+// not as the margin: the walk stopped there. Walked in full, the margin itself.
+TEST_F(PotPlannerTest, ABanksWhySaysACappedMarginIsAtLeastTheCap) {
+  const testing::PotLayout layout = testing::SeededPotLayout(table_, params_.ball.radius, 2047);
+  PotRequest request = layout.request;
+  request.kind = ShotKind::kBank;
+  const PotPlan full = PlanPot(table_, params_, layout.balls, request);
+  ASSERT_EQ(full.status, PotStatus::kOk) << full.reason;
+  EXPECT_EQ(full.why.find("at least"), std::string::npos) << full.why;
+  PotOptions ranking;
+  ranking.margin_cap = 0.02 * kDegree;
+  const PotPlan capped = PlanPot(table_, params_, layout.balls, request, ranking);
+  ASSERT_EQ(capped.status, PotStatus::kOk) << capped.reason;
+  EXPECT_NE(capped.why.find("the widest margin (at least 0.02 deg)"), std::string::npos)
+      << capped.why;
+}
+
 TEST_F(PotPlannerTest, BadRequestsAreRefusedWithAReason) {
   const std::vector<SceneBall> balls = {table::AtRest(0, 0.6, 0.6), table::AtRest(1, 1.8, 0.9)};
   const auto refused = [&](const PotRequest& r, PotStatus status) {
