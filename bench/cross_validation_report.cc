@@ -202,9 +202,10 @@ const std::vector<std::pair<std::string, std::string>>& FixedFromData() {
        "kChromaSpreads, kMinChromaTolerance, kMinBrightness, kMaxBrightness, "
        "kMaxRelativeGradient"},
       {"estimator/table_finder.cc",
-       "kMinClothFraction, kSideBand, kSideEnd, kMaxStretches, "
-       "kMinStretch, kMaxStretchTurn, kOtherStretchNose, kFocalAgreement, "
-       "kOverheadAspectTolerance, kMaxClothLightness, kMinClothChroma"},
+       "kMinClothFraction, kOtherStretchNose, kFocalAgreement, kOverheadAspectTolerance, "
+       "kMaxClothLightness, kMinClothChroma"},
+      {"estimator/outline_stretches.cc",
+       "kSideBand, kSideEnd, kMaxStretches, kMinStretch, kMaxStretchTurn"},
       {"estimator/table_edges.cc",
        "kEdgeFrom, kEdgeMiddle, kMinEdge, kEdgeNoises, kMinPlaces, kNoseOfBest, kFaintEdges, "
        "kMinFaintEdge, kFaintRidge, kFaintClearancePx, kFaintMaxTilt"},
