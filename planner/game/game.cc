@@ -82,7 +82,9 @@ GameRecord PlayGame(const table::TableGeometry& table, const physics::ModelParam
       rec.cue_placement = choice::Position(balls.front());
       rec.stroke = stroke;
     } else {
-      stroke = PlayerStroke(*options.player, {table, params, balls, constraints}, options.choice,
+      // Alone at the table (players::Turn::alone): no safety is weighed.
+      const players::Turn turn{table, params, balls, constraints, true};
+      stroke = PlayerStroke(*options.player, turn, options.choice,
                             choice::SampleSeed(options.choice.seed, static_cast<std::uint64_t>(n)),
                             pool, &balls, &rec);
       decisions.push_back(rec.decision_us);

@@ -108,7 +108,8 @@ cue_command_t AnswerChoice(const shot_request_t& q, const ball_state_t& cue,
     *balls = table::SettledScene(table, params.ball.radius, std::move(*balls),
                                  options.pot.settle_overlap);
     const players::Turn turn{table, params, *balls,
-                             {q.ball_in_hand != 0, rules::LegalTargets(choosing.rules, *balls)}};
+                             {q.ball_in_hand != 0, rules::LegalTargets(choosing.rules, *balls)},
+                             q.alone != 0};
     result = player.Decide(turn, choosing, pool);
   } catch (const std::exception& e) {
     return Refusal(c, cue_command_t::STATUS_INVALID, std::string("no choice: ") + e.what());

@@ -27,7 +27,7 @@ choice::ChoiceResult Ours::Decide(const Turn& turn, const choice::ChoiceOptions&
   played.lookahead = lookahead_ && options.lookahead;
   played.second_level = two_level_ && options.second_level;
   choice::ChoiceResult result = Choose(turn, played, pool);
-  if (safeties_ && !turn.constraints.ball_in_hand) {
+  if (safeties_ && !turn.alone && !turn.constraints.ball_in_hand) {
     choice::ConsiderSafety(turn.table, turn.params, turn.balls, played, pool, &result);
     result.decision_us = choice::MicrosecondsSince(start);
   }

@@ -5,7 +5,8 @@
 // With safeties ("ours"): when the best pot's probability is below
 // ChoiceOptions::safety_below, or nothing plans, the best safety weighed against it on the
 // chance of winning the rack (planner/choice/safety.h), and played when that is the higher;
-// not with ball in hand (a placement is chosen for a pot). "ours-no-safety": the round-3
+// not with ball in hand (a placement is chosen for a pot), nor in a rack played alone
+// (Turn::alone: no opponent to leave a hard shot). "ours-no-safety": the round-3
 // chooser a match measures the new player against (issue 48): without safeties and with one
 // level (below).
 //

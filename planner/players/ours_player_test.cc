@@ -62,18 +62,29 @@ TEST_F(OursTest, OneLevelValuesTheNextShotInClosedForm) {
   ExpectSameChoice(one_level, choice::ChooseShot(table_, params_, balls, options, pool));
 }
 
-// With the pot unlikely (a long cut under the tournaments' noise, a miss leaving the 1 in the
-// open) ours plays safe; ours-no-safety, round 3's chooser (no safeties, one level), plays the
+// A long cut under the tournaments' noise whose miss leaves the 1 in the open, the pot unlikely.
+class OursSafetyTest : public choice::testing::ChoiceTest {
+ protected:
+  std::vector<table::SceneBall> LongCut() const {
+    const double l = table_.length, w = table_.width;
+    return {table::AtRest(0, 0.6, w / 2), table::AtRest(1, l - 0.6, w / 2),
+            table::AtRest(9, l - 0.4, 0.3)};
+  }
+  choice::ChoiceOptions Tournament() const {
+    choice::ChoiceOptions options = QuickChoice();
+    options.rules = rules::Rules::kNineBall;
+    options.noise = params::LoadNoise("computational-pool");
+    options.safety_screen_samples = 4;
+    options.safety_samples = 16;
+    return options;
+  }
+};
+
+// There ours plays safe; ours-no-safety, round 3's chooser (no safeties, one level), plays the
 // pot as the choice does without the second level.
-TEST_F(OursTest, OursPlaysSafeWhereOursNoSafetyAttempts) {
-  const double l = table_.length, w = table_.width;
-  const std::vector<table::SceneBall> balls = {
-      table::AtRest(0, 0.6, w / 2), table::AtRest(1, l - 0.6, w / 2), table::AtRest(9, l - 0.4, 0.3)};
-  choice::ChoiceOptions options = QuickChoice();
-  options.rules = rules::Rules::kNineBall;
-  options.noise = params::LoadNoise("computational-pool");
-  options.safety_screen_samples = 4;
-  options.safety_samples = 16;
+TEST_F(OursSafetyTest, OursPlaysSafeWhereOursNoSafetyAttempts) {
+  const auto balls = LongCut();
+  choice::ChoiceOptions options = Tournament();
   const Turn turn{table_, params_, balls, {false, rules::LegalTargets(options.rules, balls)}};
   batch::ThreadPool pool(2);
   const choice::ChoiceResult safe = MakePlayer("ours")->Decide(turn, options, pool);
@@ -83,6 +94,21 @@ TEST_F(OursTest, OursPlaysSafeWhereOursNoSafetyAttempts) {
   EXPECT_FALSE(attempt.safety);
   options.second_level = false;
   ExpectSameChoice(attempt, choice::ChooseShot(table_, params_, balls, options, pool));
+}
+
+// The same turn in a rack played alone (Turn::alone): no opponent takes the table after a miss,
+// so ours weighs no safety and attempts the pot, to the last bit as its choice without safeties.
+TEST_F(OursSafetyTest, AloneAttemptsWhereAgainstAnOpponentItPlaysSafe) {
+  const auto balls = LongCut();
+  const choice::ChoiceOptions options = Tournament();
+  Turn turn{table_, params_, balls, {false, rules::LegalTargets(options.rules, balls)}};
+  batch::ThreadPool pool(2);
+  const Ours ours;
+  ASSERT_TRUE(ours.Decide(turn, options, pool).safety);
+  turn.alone = true;
+  const choice::ChoiceResult alone = ours.Decide(turn, options, pool);
+  EXPECT_FALSE(alone.safety);
+  ExpectSameChoice(alone, choice::ChooseShot(table_, params_, balls, options, pool));
 }
 
 }  // namespace

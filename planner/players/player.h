@@ -29,6 +29,11 @@ struct Turn {
   // Id 0 the cue ball (which may be absent when in hand); every ball at rest.
   const std::vector<table::SceneBall>& balls;
   rules::Constraints constraints;  // the cue ball in hand or not, the legal first contacts
+  // The rack is played alone (billiard play, the loop's game without --players): a miss or a
+  // foul leaves this player at the table again. A safety is worth what it leaves an opponent, so
+  // a player alone weighs none: its own next shot would be the one left hard (two selves
+  // exchanging safeties to the shot limit, rack seed 15 of the 20-rack loop, 34 safeties).
+  bool alone = false;
 };
 
 class Player {

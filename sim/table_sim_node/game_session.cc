@@ -142,6 +142,7 @@ shot_request_t ChoiceRequest(int8_t rules, const GameShot& shot, const std::stri
   ask.rules = rules;
   ask.ball_in_hand = shot.ball_in_hand ? 1 : 0;
   ask.player = player;
+  ask.alone = player.empty() ? 1 : 0;
   return ask;
 }
 

@@ -244,7 +244,8 @@ using Judge = std::function<rules::Judgement(const rules::Shot&)>;
 
 // The request of game shot `shot`: the cue ball by class, the planner's choice
 // (shot_request_t::MODE_CHOOSE) under `rules` (shot_request_t::RULES_*) with ball in hand as
-// `shot` says, decided by `player` ("": the planner's own).
+// `shot` says, decided by `player` ("": the planner's own, in a rack played alone, which the
+// request says: shot_request_t::alone).
 shot_request_t ChoiceRequest(int8_t rules, const GameShot& shot, const std::string& player);
 
 // The estimator or the planner runs with other physics than the simulator, or is another version
