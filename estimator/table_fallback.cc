@@ -5,6 +5,8 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "estimator/ball_scale.h"
+#include "estimator/cloth_model.h"
 #include "estimator/table_edges.h"
 
 namespace billiard::estimator {
@@ -166,6 +168,24 @@ TableRegion ClothOnly(const TableRegion& cloth) {
   region.view = TableView::kOverhead;
   region.side_fit_rms_px = 0;
   return region;
+}
+
+std::optional<TableRegion> ClothWithBalls(const cv::Mat& bgr, const TableSearch& search) {
+  std::vector<TableRegion> regions;
+  if (search.cloth) regions.push_back(ClothOnly(*search.cloth));
+  for (const TableRegion& other : search.other_cloths) regions.push_back(ClothOnly(other));
+  std::optional<TableRegion> best;
+  double most = -1;
+  for (TableRegion& region : regions) {
+    const std::optional<BallScale> balls =
+        ScaleFromBlobs(bgr, region, LearnClothModel(bgr, region));
+    const double support = balls ? balls->support : 0.0;
+    if (support > most) {
+      most = support;
+      best = std::move(region);
+    }
+  }
+  return best;
 }
 
 }  // namespace billiard::estimator

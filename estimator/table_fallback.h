@@ -12,6 +12,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <optional>
 
 #include "estimator/table_finder.h"
 #include "sim/camera/camera_model.h"
@@ -48,5 +49,14 @@ TableRegion TableSeenBy(const CalibratedTable& calibrated, const cv::Mat& bgr);
 // smallest rectangle around the filled cloth, the homography a similarity onto it (uniform
 // scale, no perspective), origin kClothOnly.
 TableRegion ClothOnly(const TableRegion& cloth);
+
+// The cloth the balls lie on in a BGR frame whose table was not found, as ClothOnly's region:
+// of the regions of the frame's likeliest colours (`search.cloth`, then `search.other_cloths`),
+// the one whose compact blobs of not-cloth are most surely balls of one size (ball_scale.h's
+// ScaleFromBlobs: the rays of the outlines that agree on a radius), the likeliest colour where
+// none has more. With more than half of the table out of the frame, or a long side, the floor
+// beside it can be the frame's likeliest colour, and a straight-sided region: the balls are not
+// on it. None where no region was found.
+std::optional<TableRegion> ClothWithBalls(const cv::Mat& bgr, const TableSearch& search);
 
 }  // namespace billiard::estimator
