@@ -188,4 +188,25 @@ std::optional<TableRegion> ClothWithBalls(const cv::Mat& bgr, const TableSearch&
   return best;
 }
 
+std::array<double, 4> ClothAtFrameEdges(const TableRegion& region) {
+  const cv::Mat& surface = region.surface;
+  const std::array<cv::Mat, 4> edges = {surface.col(0), surface.row(0),
+                                        surface.col(surface.cols - 1),
+                                        surface.row(surface.rows - 1)};
+  // A pixel's place along its edge: an edge is one row or one column, the other coordinate 0.
+  const auto along = [](const cv::Point& p) { return p.x + p.y; };
+  std::array<double, 4> shares;
+  for (int i = 0; i < 4; ++i) {
+    // A convex surface meets an edge in one stretch, from its first pixel there to its last (a
+    // ball the edge cuts is open to the frame: no hole the region's filling closed).
+    std::vector<cv::Point> on;
+    cv::findNonZero(edges[i], on);
+    const auto [first, last] = std::minmax_element(
+        on.begin(), on.end(), [&](const auto& a, const auto& b) { return along(a) < along(b); });
+    const int stretch = on.empty() ? 0 : along(*last) - along(*first) + 1;
+    shares[i] = static_cast<double>(stretch) / edges[i].total();
+  }
+  return shares;
+}
+
 }  // namespace billiard::estimator

@@ -11,6 +11,7 @@
 // size nor its perspective), with the reason no table was found: never nothing.
 #pragma once
 
+#include <array>
 #include <opencv2/core.hpp>
 #include <optional>
 
@@ -58,5 +59,13 @@ TableRegion ClothOnly(const TableRegion& cloth);
 // beside it can be the frame's likeliest colour, and a straight-sided region: the balls are not
 // on it. None where no region was found.
 std::optional<TableRegion> ClothWithBalls(const cv::Mat& bgr, const TableSearch& search);
+
+// The frame's edges in the order ClothAtFrameEdges gives them.
+inline constexpr std::array<const char*, 4> kFrameEdges = {"left", "top", "right", "bottom"};
+
+// Which part of the table a region of cloth shows: the share of each edge of the frame
+// (kFrameEdges) along which its playing surface runs out of the frame, as the table does beyond
+// it; all 0 for a table whole in the frame.
+std::array<double, 4> ClothAtFrameEdges(const TableRegion& region);
 
 }  // namespace billiard::estimator

@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "estimator/ball_detector.h"
@@ -24,6 +26,9 @@ constexpr int kWidth = 1280, kHeight = 720;
 // A found ball is one of the table's when its centre is within kMatchRadii of a ball's radius of
 // that ball's image centre; the detector's centres of whole balls are within kCentrePx.
 constexpr double kMatchRadii = 1.0, kCentrePx = 1.5;
+// The share of a frame's edge the cloth's region reaches is the playing surface's within this:
+// the cushions' tops are of the cloth (2 x 5 cm on a 1.27 m wide bed: 0.08 of it).
+constexpr double kEdgeShareTolerance = 0.1;
 
 const physics::ModelParameters& Pool() {
   static const physics::ModelParameters params = params::LoadParameters("pool");
@@ -66,8 +71,8 @@ double SeenShare(const camera::CameraModel& c, const Eigen::Vector3d& a, const E
 camera::CameraModel MovedOut(const Eigen::Vector3d& direction, double share_out) {
   const camera::CameraModel overhead = camera::CameraModel::Overhead(Pool().table, kWidth, kHeight);
   const Eigen::Vector3d middle(0.5 * Pool().table.length, 0.5 * Pool().table.width, 0.0);
-  const double extent = std::abs(direction.dot(Eigen::Vector3d(Pool().table.length,
-                                                               Pool().table.width, 0.0)));
+  const double extent =
+      std::abs(direction.dot(Eigen::Vector3d(Pool().table.length, Pool().table.width, 0.0)));
   const auto moved = [&](double d) {
     camera::CameraModel c = overhead;
     c.translation = -c.rotation * (c.Centre() + d * direction);
@@ -77,11 +82,33 @@ camera::CameraModel MovedOut(const Eigen::Vector3d& direction, double share_out)
   for (int i = 0; i < 40; ++i) {
     const double d = 0.5 * (low + high);
     const camera::CameraModel c = moved(d);
-    const double out = 1 - SeenShare(c, middle - 0.5 * extent * direction,
-                                     middle + 0.5 * extent * direction);
+    const double out =
+        1 - SeenShare(c, middle - 0.5 * extent * direction, middle + 0.5 * extent * direction);
     (out < share_out ? low : high) = d;
   }
   return moved(0.5 * (low + high));
+}
+
+// The share of each edge of the frame (kFrameEdges) that sees the playing surface.
+std::array<double, 4> SurfaceAtFrameEdges(const camera::CameraModel& c) {
+  constexpr int kSamples = 400;
+  const Eigen::Vector2d last(kWidth - 1, kHeight - 1);
+  const std::array<std::pair<Eigen::Vector2d, Eigen::Vector2d>, 4> edges = {
+      {{{0, 0}, {0, last.y()}},
+       {{0, 0}, {last.x(), 0}},
+       {{last.x(), 0}, last},
+       {{0, last.y()}, last}}};
+  std::array<double, 4> shares;
+  for (int i = 0; i < 4; ++i) {
+    int on = 0;
+    for (int k = 0; k < kSamples; ++k) {
+      const double t = (k + 0.5) / kSamples;
+      const Eigen::Vector3d p = c.Unproject((1 - t) * edges[i].first + t * edges[i].second, 0.0);
+      on += p.x() >= 0 && p.y() >= 0 && p.x() <= Pool().table.length && p.y() <= Pool().table.width;
+    }
+    shares[i] = static_cast<double>(on) / kSamples;
+  }
+  return shares;
 }
 
 struct Scene {
@@ -120,6 +147,11 @@ TEST(TableFallback, TheBallsOfATableMostlyOutOfTheFrameAreFoundOnItsCloth) {
       const std::vector<BallDetection> found = detector.Detect(frame);
       ASSERT_TRUE(detector.table()) << name;
       EXPECT_FALSE(detector.knows_table()) << name;
+      const std::array<double, 4> seen = ClothAtFrameEdges(*detector.table());
+      const std::array<double, 4> truth = SurfaceAtFrameEdges(scene.camera);
+      for (int i = 0; i < 4; ++i) {
+        EXPECT_NEAR(seen[i], truth[i], kEdgeShareTolerance) << name << ", " << kFrameEdges[i];
+      }
       const double radius_px = ExpectedRadiusPx(scene.camera, Radius());
       int whole = 0;
       for (const Eigen::Vector2d& p : Layout()) {
@@ -128,16 +160,20 @@ TEST(TableFallback, TheBallsOfATableMostlyOutOfTheFrameAreFoundOnItsCloth) {
                              pixel.y() > radius_px && pixel.y() < kHeight - 1 - radius_px;
         if (!in_view) continue;
         ++whole;
-        EXPECT_TRUE(std::any_of(found.begin(), found.end(), [&](const BallDetection& b) {
-          return (b.pixel - pixel).norm() < kCentrePx;
-        })) << name << ": the ball at " << p.transpose() << " (pixel " << pixel.transpose() << ")";
+        EXPECT_TRUE(std::any_of(
+            found.begin(), found.end(),
+            [&](const BallDetection& b) { return (b.pixel - pixel).norm() < kCentrePx; }))
+            << name << ": the ball at " << p.transpose() << " (pixel " << pixel.transpose() << ")";
       }
       EXPECT_GE(whole, 4) << name;
       for (const BallDetection& b : found) {
-        EXPECT_TRUE(std::any_of(Layout().begin(), Layout().end(), [&](const Eigen::Vector2d& p) {
-          const Eigen::Vector2d pixel = scene.camera.Project({p.x(), p.y(), Radius()});
-          return (b.pixel - pixel).norm() < kMatchRadii * radius_px;
-        })) << name << ": no ball at " << b.pixel.transpose();
+        EXPECT_TRUE(std::any_of(
+            Layout().begin(), Layout().end(),
+            [&](const Eigen::Vector2d& p) {
+              const Eigen::Vector2d pixel = scene.camera.Project({p.x(), p.y(), Radius()});
+              return (b.pixel - pixel).norm() < kMatchRadii * radius_px;
+            }))
+            << name << ": no ball at " << b.pixel.transpose();
       }
     }
   }
