@@ -174,18 +174,15 @@ std::optional<TableRegion> ClothWithBalls(const cv::Mat& bgr, const TableSearch&
   std::vector<TableRegion> regions;
   if (search.cloth) regions.push_back(ClothOnly(*search.cloth));
   for (const TableRegion& other : search.other_cloths) regions.push_back(ClothOnly(other));
-  std::optional<TableRegion> best;
-  double most = -1;
-  for (TableRegion& region : regions) {
+  if (regions.empty()) return std::nullopt;
+  std::vector<double> support;
+  for (const TableRegion& region : regions) {
     const std::optional<BallScale> balls =
         ScaleFromBlobs(bgr, region, LearnClothModel(bgr, region));
-    const double support = balls ? balls->support : 0.0;
-    if (support > most) {
-      most = support;
-      best = std::move(region);
-    }
+    support.push_back(balls ? balls->support : 0.0);
   }
-  return best;
+  // The first of the most supported: the likeliest colour where another has no more.
+  return regions[std::max_element(support.begin(), support.end()) - support.begin()];
 }
 
 std::array<double, 4> ClothAtFrameEdges(const TableRegion& region) {

@@ -461,8 +461,8 @@ TableSearch WithOtherCloths(TableSearch search, const cv::Mat& small, double sca
 // are tried, and the first that makes a table is the cloth: a table whole in the frame, since the
 // first colour was around it (a side along the frame's edge is the floor's, around a cloth that
 // is no table: a round mat). Where the first colour's region is a quadrilateral with straight
-// sides, it is the cloth, its table found or not (part of it out of the frame, an arm across a
-// corner): no other colour is tried.
+// sides, it is the cloth, its table found or not (an end out of the frame, an arm across a
+// corner): no other colour's table is tried. No table found, the others' regions go beside it.
 TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
   if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame", std::nullopt};
   // An integer reduction: OpenCV's area averaging is much faster by whole factors.
