@@ -112,8 +112,7 @@ std::optional<TableRegion> BallDetector::LookForTable(const cv::Mat& bgr) {
   TableSearch search = FindTable(bgr);
   failure_ = search.reason;
   if (search.table) return search.table;
-  if (search.cloth) return ClothOnly(*search.cloth);
-  return std::nullopt;
+  return ClothWithBalls(bgr, search);
 }
 
 double BallDetector::OutlineAgreement(const cv::Mat& image) const {

@@ -85,9 +85,9 @@ std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
   double below = 0;
   for (const auto& [value, w] : group) {
     below += w;
-    if (below >= 0.5 * heaviest) return BallScale{table.inverse_depth, std::exp(value)};
+    if (below >= 0.5 * heaviest) return BallScale{table.inverse_depth, std::exp(value), heaviest};
   }
-  return BallScale{table.inverse_depth, std::exp(group.back().first)};
+  return BallScale{table.inverse_depth, std::exp(group.back().first), heaviest};
 }
 
 BallScale ScaleFromTable(const TableRegion& table, double ball_to_table_width) {

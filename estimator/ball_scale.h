@@ -28,6 +28,8 @@ inline constexpr double kScaleAgreement = 1.12;
 struct BallScale {
   Eigen::Vector3d inverse_depth = Eigen::Vector3d::UnitZ();  // relative, as TableRegion's
   double radius_at_centre = 0;                               // [px]
+  // Measured: the outlines' rays that agree with it (ScaleFromOutlines); 0 where it is given.
+  double support = 0;
 
   double RadiusAt(const Eigen::Vector2d& pixel) const {
     return radius_at_centre * inverse_depth.dot(pixel.homogeneous());

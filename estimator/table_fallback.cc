@@ -5,6 +5,8 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "estimator/ball_scale.h"
+#include "estimator/cloth_model.h"
 #include "estimator/table_edges.h"
 
 namespace billiard::estimator {
@@ -166,6 +168,42 @@ TableRegion ClothOnly(const TableRegion& cloth) {
   region.view = TableView::kOverhead;
   region.side_fit_rms_px = 0;
   return region;
+}
+
+std::optional<TableRegion> ClothWithBalls(const cv::Mat& bgr, const TableSearch& search) {
+  std::vector<TableRegion> regions;
+  if (search.cloth) regions.push_back(ClothOnly(*search.cloth));
+  for (const TableRegion& other : search.other_cloths) regions.push_back(ClothOnly(other));
+  if (regions.empty()) return std::nullopt;
+  std::vector<double> support;
+  for (const TableRegion& region : regions) {
+    const std::optional<BallScale> balls =
+        ScaleFromBlobs(bgr, region, LearnClothModel(bgr, region));
+    support.push_back(balls ? balls->support : 0.0);
+  }
+  // The first of the most supported: the likeliest colour where another has no more.
+  return regions[std::max_element(support.begin(), support.end()) - support.begin()];
+}
+
+std::array<double, 4> ClothAtFrameEdges(const TableRegion& region) {
+  const cv::Mat& surface = region.surface;
+  const std::array<cv::Mat, 4> edges = {surface.col(0), surface.row(0),
+                                        surface.col(surface.cols - 1),
+                                        surface.row(surface.rows - 1)};
+  // A pixel's place along its edge: an edge is one row or one column, the other coordinate 0.
+  const auto along = [](const cv::Point& p) { return p.x + p.y; };
+  std::array<double, 4> shares;
+  for (int i = 0; i < 4; ++i) {
+    // A convex surface meets an edge in one stretch, from its first pixel there to its last (a
+    // ball the edge cuts is open to the frame: no hole the region's filling closed).
+    std::vector<cv::Point> on;
+    cv::findNonZero(edges[i], on);
+    const auto [first, last] = std::minmax_element(
+        on.begin(), on.end(), [&](const auto& a, const auto& b) { return along(a) < along(b); });
+    const int stretch = on.empty() ? 0 : along(*last) - along(*first) + 1;
+    shares[i] = static_cast<double>(stretch) / edges[i].total();
+  }
+  return shares;
 }
 
 }  // namespace billiard::estimator

@@ -11,7 +11,9 @@
 // size nor its perspective), with the reason no table was found: never nothing.
 #pragma once
 
+#include <array>
 #include <opencv2/core.hpp>
+#include <optional>
 
 #include "estimator/table_finder.h"
 #include "sim/camera/camera_model.h"
@@ -48,5 +50,22 @@ TableRegion TableSeenBy(const CalibratedTable& calibrated, const cv::Mat& bgr);
 // smallest rectangle around the filled cloth, the homography a similarity onto it (uniform
 // scale, no perspective), origin kClothOnly.
 TableRegion ClothOnly(const TableRegion& cloth);
+
+// The cloth the balls lie on in a BGR frame whose table was not found, as ClothOnly's region:
+// of the regions of the frame's likeliest colours (`search.cloth`, then `search.other_cloths`),
+// the one whose compact blobs of not-cloth are most surely balls of one size (ball_scale.h's
+// ScaleFromBlobs: the rays of the outlines that agree on a radius), the likeliest colour where
+// none has more. With more than half of the table out of the frame, or a long side, the floor
+// beside it can be the frame's likeliest colour, and a straight-sided region: the balls are not
+// on it. None where no region was found.
+std::optional<TableRegion> ClothWithBalls(const cv::Mat& bgr, const TableSearch& search);
+
+// The frame's edges in the order ClothAtFrameEdges gives them.
+inline constexpr std::array<const char*, 4> kFrameEdges = {"left", "top", "right", "bottom"};
+
+// Which part of the table a region of cloth shows: the share of each edge of the frame
+// (kFrameEdges) along which its playing surface runs out of the frame, as the table does beyond
+// it; all 0 for a table whole in the frame.
+std::array<double, 4> ClothAtFrameEdges(const TableRegion& region);
 
 }  // namespace billiard::estimator

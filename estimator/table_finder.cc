@@ -330,6 +330,18 @@ bool SidesAndNoses(const cv::Mat& bgr, const std::array<std::vector<Line>, 4>& s
   return true;
 }
 
+// The region of `colour` in `small` (the frame reduced by `scale`); none below kMinClothFraction.
+std::optional<TableRegion> ClothOfColour(const cv::Mat& small, double scale,
+                                         const cv::Vec3f& colour) {
+  TableRegion cloth;
+  cloth.mask_scale = scale;
+  cloth.cloth_colour = colour;
+  cloth.cloth = LargestCentralRegion(ClothLike(small, colour));
+  if (cv::countNonZero(cloth.cloth) < kMinClothFraction * small.total()) return std::nullopt;
+  cloth.surface = FillHoles(cloth.cloth);
+  return cloth;
+}
+
 // The table whose cloth is of the colour `cloth_colour` in the frame (`small`, its reduction by
 // `scale`); its lens estimated first when `estimate_lens`. `quadrilateral` tells whether the
 // colour's region is a quadrilateral with straight sides (or sides a lens bends), the table found
@@ -338,19 +350,15 @@ TableSearch FindTableOfCloth(const cv::Mat& bgr, const cv::Mat& small, double sc
                              const cv::Vec3f& cloth_colour, bool estimate_lens,
                              bool* quadrilateral) {
   *quadrilateral = false;
-  TableRegion table;
-  table.mask_scale = scale;
-  table.cloth_colour = cloth_colour;
-  table.cloth = LargestCentralRegion(ClothLike(small, table.cloth_colour));
-  if (cv::countNonZero(table.cloth) < kMinClothFraction * small.total()) {
-    return {std::nullopt, "no table: no evenly coloured cloth covers " +
-                              std::to_string(static_cast<int>(100 * kMinClothFraction)) +
-                              " % of the frame",
+  const std::optional<TableRegion> found = ClothOfColour(small, scale, cloth_colour);
+  if (!found) {
+    const std::string share = std::to_string(static_cast<int>(100 * kMinClothFraction));
+    return {std::nullopt, "no table: no evenly coloured cloth covers " + share + " % of the frame",
             std::nullopt};
   }
-  table.surface = FillHoles(table.cloth);
   // Past here the cloth is found: a frame without its table still has it (TableSearch::cloth).
-  const TableRegion cloth = table;
+  const TableRegion& cloth = *found;
+  TableRegion table = cloth;
 
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours(table.surface.clone(), contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
@@ -435,6 +443,17 @@ bool IsWhite(const cv::Vec3f& bgr) {
   return lab[0] > kMaxClothLightness && std::hypot(lab[1], lab[2]) < kMinClothChroma;
 }
 
+// A search that found no table, given the regions of the frame's other colours than its first
+// (TableSearch::other_cloths): the ball detector's fallback chooses the cloth among them.
+TableSearch WithOtherCloths(TableSearch search, const cv::Mat& small, double scale,
+                            const std::vector<cv::Vec3f>& colours) {
+  for (std::size_t k = 1; k < colours.size(); ++k) {
+    if (IsWhite(colours[k])) continue;
+    if (auto other = ClothOfColour(small, scale, colours[k])) search.other_cloths.push_back(*other);
+  }
+  return search;
+}
+
 // The table in the frame; its lens estimated first when `estimate_lens` (not in a frame redrawn
 // through the lens already). The cloth is the frame's likeliest colour (ClothColours); where its
 // region is no plane's quadrilateral with straight sides (the wall or floor around a table seen
@@ -442,8 +461,8 @@ bool IsWhite(const cv::Vec3f& bgr) {
 // are tried, and the first that makes a table is the cloth: a table whole in the frame, since the
 // first colour was around it (a side along the frame's edge is the floor's, around a cloth that
 // is no table: a round mat). Where the first colour's region is a quadrilateral with straight
-// sides, it is the cloth, its table found or not (part of it out of the frame, an arm across a
-// corner): no other colour is tried.
+// sides, it is the cloth, its table found or not (an end out of the frame, an arm across a
+// corner): no other colour's table is tried. No table found, the others' regions go beside it.
 TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
   if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame", std::nullopt};
   // An integer reduction: OpenCV's area averaging is much faster by whole factors.
@@ -467,10 +486,11 @@ TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
          !SidesAlongBorder(search.table->cloth_corners, bgr.size(), kFrameEdgePx / scale).empty())) {
       continue;
     }
-    if (search.table || (k == 0 && quadrilateral)) return search;
+    if (search.table) return search;
+    if (k == 0 && quadrilateral) return WithOtherCloths(std::move(search), small, scale, colours);
     if (k == 0) first = std::move(search);
   }
-  return first;
+  return WithOtherCloths(std::move(first), small, scale, colours);
 }
 
 }  // namespace

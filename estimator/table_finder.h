@@ -146,10 +146,14 @@ struct TableRegion {
 // its table (its outline not a quadrilateral, a side not straight, the corners not a plane's, the
 // proportions not a table's: part of the table out of frame, a wide-angle lens, an arm across
 // it), the cloth: `cloth` holds its masks, their scale and its colour, and no geometry.
+// Beside it, the regions of the frame's next likeliest colours (as `cloth`, of the first): with
+// more than half of a table out of the frame, the floor around it can outweigh its cloth, and
+// which of them holds the balls tells (table_fallback.h's ClothWithBalls).
 struct TableSearch {
   std::optional<TableRegion> table;
   std::string reason;
   std::optional<TableRegion> cloth;
+  std::vector<TableRegion> other_cloths = {};
 };
 
 // The table in a BGR (CV_8UC3) frame. About 5 ms at 1280x720: the frame is searched at about 400

@@ -153,6 +153,10 @@ TEST(BilliardRig, WithoutATableTheBallsOnTheClothInImageCoordinates) {
   const nlohmann::json j = OneObject(r, args);
   EXPECT_TRUE(j["table"].is_null());
   EXPECT_NE(j.value("no_table", ""), "");
+  // The part seen: the table runs out of the frame through the frame's bottom edge alone.
+  const nlohmann::json& edges = j["cloth_at_frame_edges"];
+  EXPECT_GT(edges["bottom"].get<double>(), 0.5) << edges;
+  for (const char* edge : {"left", "top", "right"}) EXPECT_EQ(edges[edge], 0.0) << edge;
   int in_view = 0, in_frame = 0;
   for (const auto& b : params::LoadScene(kLayout).balls) {
     const Eigen::Vector2d p = moved.Project({b.state[0], b.state[1], Pool().ball.radius});

@@ -1,5 +1,6 @@
 #include "tools/billiard/detect_command.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -111,6 +112,15 @@ nlohmann::json TableJson(const estimator::BallDetector& detector, const cv::Mat&
   return j;
 }
 
+// Which part of the table the cloth alone shows: each edge of the frame the cloth runs out
+// through, with the share of the edge it takes.
+nlohmann::json ClothAtFrameEdgesJson(const estimator::TableRegion& cloth) {
+  const std::array<double, 4> shares = estimator::ClothAtFrameEdges(cloth);
+  nlohmann::json edges = nlohmann::json::object();
+  for (std::size_t i = 0; i < shares.size(); ++i) edges[estimator::kFrameEdges[i]] = shares[i];
+  return edges;
+}
+
 nlohmann::json BallsJson(const std::vector<estimator::BallDetection>& balls,
                          const std::optional<camera::CameraModel>& camera,
                          const physics::ModelParameters& params) {
@@ -186,6 +196,12 @@ void PrintDetections(const nlohmann::json& j, const std::string& image) {
   if (table.is_null()) {
     std::cerr << "  table   not found (" << j["no_table"].get<std::string>()
               << "): the balls on the cloth, in image coordinates only\n";
+    for (const auto& [edge, share] : j["cloth_at_frame_edges"].items()) {
+      if (share.get<double>() > 0) {
+        std::cerr << "  cloth   runs out of the frame along " << Fixed(100 * share.get<double>(), 0)
+                  << " % of the frame's " << edge << " edge\n";
+      }
+    }
   } else {
     std::cerr << "  table   " << table["view"].get<std::string>() << " view ("
               << table["from"].get<std::string>() << "), its sides fitted to "
@@ -247,7 +263,10 @@ void RunDetect(const DetectArgs& args) {
   const nlohmann::json table = TableJson(detector, image, camera, params);
   nlohmann::json j = {
       {"balls", list}, {"table", table}, {"radius_px", detector.radius_px()}, {"detect_us", us}};
-  if (!detector.knows_table()) j["no_table"] = detector.failure();
+  if (!detector.knows_table()) {
+    j["no_table"] = detector.failure();
+    j["cloth_at_frame_edges"] = ClothAtFrameEdgesJson(*detector.table());
+  }
   if (args.json) {
     std::cout << j.dump() << std::endl;
   } else {
