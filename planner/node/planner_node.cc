@@ -125,7 +125,11 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
     return AnswerChoice(q, state, *latest_table_, table_, params_, options, *player,
                         *choice_pool_, std::move(c));
   }
-  return AnswerToPoint(q, state, Candidates(q), table_, params_, options_, std::move(c));
+  // The cue clears the balls on the table now: a remembered ball the estimator no longer sees
+  // (pocketed, or of a rack cleared away) is no obstacle, though a request may still name it.
+  std::vector<const ball_state_t*> on_table;
+  if (latest_table_) on_table = BallsOf(*latest_table_);
+  return AnswerToPoint(q, state, on_table, table_, params_, options_, std::move(c));
 }
 
 const players::Player& PlannerNode::PlayerFor(const shot_request_t& q) const {

@@ -18,8 +18,8 @@
 namespace billiard::planner_node {
 
 // The plan of a checked MODE_TO_POINT request for the ball at `ball` (whose state is fit to plan
-// from) on `table`, the cue checked against the `seen` balls' latest positions (`ball` among them
-// or not) where `options.pot.robot` is set, into `c` (the reply with the ball's id and start): the
+// from) on `table`, the cue checked against the `seen` balls (the latest table state's, `ball`
+// among them or not) where `options.pot.robot` is set, into `c` (the reply with the ball's id and start): the
 // planner's status and reason, its measurements, and the stroke when ok; STATUS_NOT_CONVERGED
 // when the planner throws.
 cue_command_t AnswerToPoint(const shot_request_t& q, const ball_state_t& ball,

@@ -12,6 +12,8 @@
 #include "lcmtypes/names.h"
 #include "planner/node/command_writing.h"
 #include "planner/node/testing/node_harness.h"
+#include "sim/cue/stroke_limits.h"
+#include "sim/params/robots.h"
 #include "sim/params/table_specs.h"
 #include "sim/table/table_geometry.h"
 
@@ -97,6 +99,33 @@ TEST_F(PlannerNodeTest, MapsEverySpinChoiceToThePlannersRequest) {
                  answer->iterations, answer->refined_miss_m, answer->closed_form_miss_m,
                  answer->solve_us);
   }
+}
+
+// The node with the gantry's cue checked against the balls.
+class PlannerNodeGantryTest : public PlannerNodeTest {
+ protected:
+  PlannerNodeGantryTest() : PlannerNodeTest(WithGantry()) {}
+  static PlannerNodeOptions WithGantry() {
+    PlannerNodeOptions options;
+    options.pot.robot = params::LoadRobot("gantry");
+    return options;
+  }
+};
+
+// A ball 1 mm behind the struck one makes the cue rise steeply to clear it; once the estimator
+// no longer sees it (pocketed, or the rack cleared away and a new one set), it is no obstacle and
+// the cue lies level. The loop's break after a cleared rack was refused (cue_blocked): the planner
+// checked the cue against every ball it remembered, among them a cue ball track of the last rack
+// lying where the new cue ball stood.
+TEST_F(PlannerNodeGantryTest, TheCueClearsTheBallsOnTheTableNotTheBallsNoLongerSeen) {
+  constexpr double kSteep = 20.0 * M_PI / 180.0;
+  const double behind = 2.0 * params_.ball.radius + 1e-3;
+  PublishTable({Ball(1, 0.8, 0.5), Ball(2, 0.8 - behind, 0.5)});
+  const cue_command_t raised = AskOk(Request(1, 1, 1.1, 0.5));
+  EXPECT_GT(raised.elevation, kSteep);
+  PublishTable({Ball(1, 0.8, 0.5)}, 2'000'000);
+  const cue_command_t level = AskOk(Request(2, 1, 1.1, 0.5));
+  EXPECT_LT(level.elevation, cue::kElevationMargin + 1e-9);
 }
 
 TEST(AnswerToPoint, ARefusedPlanGoesOutWithItsMeasurementsAndNoStroke) {

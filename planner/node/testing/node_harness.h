@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lcmtypes/billiard/ball_path_t.hpp"
@@ -68,7 +69,9 @@ inline ball_state_t Classed(int32_t id, double x, double y, int8_t ball_class, f
 
 class PlannerNodeTest : public ::testing::Test {
  protected:
-  PlannerNodeTest() {
+  explicit PlannerNodeTest(PlannerNodeOptions options = {})
+      : node_{lcm_, params_, std::move(options),
+              [this](const std::string& line) { log_.push_back(line); }} {
     // Unbounded: a burst's answers all arrive before the test handles the first.
     lcm_.subscribe(messages::kCueCommandChannel, &PlannerNodeTest::OnCommand, this)
         ->setQueueCapacity(0);
@@ -125,7 +128,7 @@ class PlannerNodeTest : public ::testing::Test {
   const physics::ModelParameters params_ = params::LoadParameters("paper");
   std::vector<std::string> log_;
   std::vector<cue_command_t> commands_;
-  PlannerNode node_{lcm_, params_, {}, [this](const std::string& line) { log_.push_back(line); }};
+  PlannerNode node_;
 };
 
 // A pot on the node's default table (pool-9ft) as the estimator names the balls: the cue ball
