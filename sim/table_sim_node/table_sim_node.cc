@@ -273,7 +273,7 @@ std::vector<ShotResult> TableSimNode::Run() {
     shot_request_t ask{};
     ask.target[0] = result.target.x();
     ask.target[1] = result.target.y();
-    ask.spin = shot_request_t::SPIN_NATURAL;
+    ask.spin = options_.spins[static_cast<std::size_t>(shot) % options_.spins.size()];
     const std::vector<table::SceneBall> alone{{kCueBall, physics::MakeBallState(rest.x(), rest.y(), 0, 0, 0, 0, 0)}};
     const cue_command_t command = Request(shot, alone, rest, ask, result);
     result.status = messages::CueCommandStatusName(command.status);

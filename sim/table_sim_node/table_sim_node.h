@@ -103,6 +103,8 @@ struct TableSimOptions {
   Eigen::Vector2d start{0.6, 0.635};  // where the ball starts [m]
   double target_margin = 0.15;        // targets at least this far inside the cushions [m]
   double min_distance = 0.3;          // and at least this far from the ball [m]
+  // The spin style of shot k is spins[k % spins.size()] (shot_request_t's SPIN_ constants).
+  std::vector<std::int8_t> spins{shot_request_t::SPIN_NATURAL};
   int jpeg_quality = 90;
   // A whole-table session instead of shots to random targets: "break" (the eight-ball rack of
   // `seed` on the pool-9ft table) or a scene file (sim/params/scene_file.h, every ball at rest).

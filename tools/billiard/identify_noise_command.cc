@@ -65,7 +65,8 @@ void RunIdentifyNoise(const IdentifyNoiseArgs& args) {
       {"bias",
        {{"log_speed", fit.bias[0]},
         {"direction_deg", fit.bias[1] / kDegree},
-        {"log_rolling_speed", fit.bias[2]}}}};
+        {"log_rolling_speed", fit.bias[2]},
+        {"rolling_direction_deg", fit.bias[3] / kDegree}}}};
   if (!args.noise_out.empty()) {
     std::ofstream file(args.noise_out);
     if (!(file << params::FormatNoise(learner.noise()))) {
