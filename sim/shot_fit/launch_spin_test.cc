@@ -3,7 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
+#include <cstdint>
+#include <vector>
 
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
@@ -14,29 +15,31 @@ namespace billiard::shot_fit {
 namespace {
 
 // The loop's camera: 30 frames a second, half a millimetre of error per coordinate.
-constexpr double kPeriod = 1.0 / 30.0, kNoise = 5e-4, kDuration = 0.6;
+constexpr double kFramePeriod = 1.0 / 30.0, kTrackingSd = 5e-4, kTrackDuration = 0.6;
 
-const physics::ModelParameters& Pool() {
-  static const physics::ModelParameters p = params::LoadParameters("pool");
-  return p;
-}
+// The pool set's balls on the default table, tracked as the loop's camera tracks them.
+class LaunchSpinTest : public ::testing::Test {
+ protected:
+  MeasuredLaunch Launch(const SyntheticScene& scene, double noise, std::uint64_t seed) const {
+    const TrackedShot shot = SimulateTrackedShot(table_, pool_, scene.starts, 0, scene.strike,
+                                                 kTrackDuration, kFramePeriod, noise, 0.0, seed);
+    return FitLaunch(shot, scene.strike.stroke, pool_);
+  }
+  std::vector<SyntheticScene> Strokes(int count, std::uint64_t seed) const {
+    return LoopScenes(table_, pool_.ball.radius, count, seed);
+  }
 
-table::TableGeometry PoolTable() {
-  return table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
-}
-
-MeasuredLaunch Launch(const SyntheticScene& scene, double noise, std::uint64_t seed) {
-  const TrackedShot shot = SimulateTrackedShot(PoolTable(), Pool(), scene.starts, 0, scene.strike,
-                                               kDuration, kPeriod, noise, 0.0, seed);
-  return FitLaunch(shot, scene.strike.stroke, Pool());
-}
+  const physics::ModelParameters pool_ = params::LoadParameters("pool");
+  const table::TableGeometry table_ =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
+};
 
 // The slide's closed form (Jaroukh 2019, integrated in time) ends at 5/7 v0 + 2/7 s0 for any
 // launch and spin on the table, the spin's component across the line included: a stunned ball
 // rolls on at 5/7, a drawn one at 5/7 - 2/7, a rolling one keeps its speed.
-TEST(RollingVelocity, IsWhereTheSlidesClosedFormEnds) {
-  const physics::ClosedFormParameters closed = physics::ClosedFormParameters::From(Pool());
-  const double r = Pool().ball.radius;
+TEST_F(LaunchSpinTest, RollingVelocityIsWhereTheSlidesClosedFormEnds) {
+  const physics::ClosedFormParameters closed = physics::ClosedFormParameters::From(pool_);
+  const double r = pool_.ball.radius;
   const double cases[][4] = {{1.0, 0.0, 0.0, 0.0},    {1.0, 0.0, 0.0, 1.0 / r},
                              {0.5, 0.2, 3.0, -20.0},  {-0.3, 0.8, -10.0, 4.0},
                              {2.0, -1.0, 0.0, -60.0}};
@@ -55,11 +58,11 @@ TEST(RollingVelocity, IsWhereTheSlidesClosedFormEnds) {
 
 // A centre hit stuns the ball (q = 0) and the natural roll's height, 0.4 r above, rolls it
 // (q = 1): the cue model (TP A.30) gives R w = 5/2 h v / R^2 ... / v, so q = 5/2 h / r.
-TEST(SpinRatioOf, IsFiveHalvesOfTheTipsHeight) {
-  const double r = Pool().ball.radius;
+TEST_F(LaunchSpinTest, SpinRatioOfIsFiveHalvesOfTheTipsHeight) {
+  const double r = pool_.ball.radius;
   for (double h : {-0.4, -0.2, 0.0, 0.2, 0.4}) {
     const physics::CueStroke stroke{1.0, 0.3, 0.0, h * r, 0.0};
-    EXPECT_NEAR(SpinRatioOf(stroke, Pool()), 2.5 * h, 1e-12) << h;
+    EXPECT_NEAR(SpinRatioOf(stroke, pool_), 2.5 * h, 1e-12) << h;
   }
 }
 
@@ -67,14 +70,14 @@ TEST(SpinRatioOf, IsFiveHalvesOfTheTipsHeight) {
 // launch fit's v0 and v1 through v1 = 5/7 v0 + 2/7 s0 give back q for every stroke whose slide
 // spans two frames or more and ends inside them (the stuns and draws, few follows at these
 // speeds).
-TEST(SpinOf, ANoiselessTrackGivesTheStrokesSpin) {
+TEST_F(LaunchSpinTest, ANoiselessTrackGivesTheStrokesSpin) {
   int seen = 0;
-  for (const SyntheticScene& scene : LoopScenes(PoolTable(), Pool().ball.radius, 40, 3)) {
+  for (const SyntheticScene& scene : Strokes(40, 3)) {
     const LaunchSpin spin = SpinOf(Launch(scene, 0.0, 1));
     if (!spin.seen) continue;
     ++seen;
-    EXPECT_NEAR(spin.ratio, SpinRatioOf(scene.strike.stroke, Pool()), 1e-4)
-        << scene.strike.stroke.tip_height / Pool().ball.radius;
+    EXPECT_NEAR(spin.ratio, SpinRatioOf(scene.strike.stroke, pool_), 1e-4)
+        << scene.strike.stroke.tip_height / pool_.ball.radius;
   }
   EXPECT_GE(seen, 15);
 }
@@ -84,22 +87,22 @@ TEST(SpinOf, ANoiselessTrackGivesTheStrokesSpin) {
 // covariance is conservative here, by about 2.3 in the standard error, which the noise fit's
 // pooled tracking error takes up), and a millimetre of tip height (0.09 of q) stands clear of a
 // typical launch's error.
-TEST(SpinOf, ItsStandardErrorIsTheErrorsSpread) {
+TEST_F(LaunchSpinTest, TheSpinsStandardErrorBoundsItsError) {
   double sum = 0.0, sd = 0.0;
   int seen = 0;
   std::uint64_t seed = 100;
-  for (const SyntheticScene& scene : LoopScenes(PoolTable(), Pool().ball.radius, 400, 4)) {
-    const LaunchSpin spin = SpinOf(Launch(scene, kNoise, ++seed));
+  for (const SyntheticScene& scene : Strokes(400, 4)) {
+    const LaunchSpin spin = SpinOf(Launch(scene, kTrackingSd, ++seed));
     if (!spin.seen) continue;
     ++seen;
-    const double z = (spin.ratio - SpinRatioOf(scene.strike.stroke, Pool())) / spin.ratio_sd;
+    const double z = (spin.ratio - SpinRatioOf(scene.strike.stroke, pool_)) / spin.ratio_sd;
     sum += z * z;
     sd += spin.ratio_sd;
   }
   ASSERT_GE(seen, 150);
   EXPECT_GT(sum / seen, 0.1);
   EXPECT_LT(sum / seen, 1.0);
-  EXPECT_LT(sd / seen, 2.5e-3 / Pool().ball.radius);
+  EXPECT_LT(sd / seen, 2.5e-3 / pool_.ball.radius);
 }
 
 // A launch whose frames end inside the slide shows no spin.
