@@ -3,9 +3,11 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "sim/physics/closed_form.h"
+#include "sim/shot_fit/launch_spin.h"
 
 namespace billiard::shot_fit {
 
@@ -55,6 +57,7 @@ struct Components {
   Matrix4d g[3];  // speed fraction, heading, tip (side and height)
   Matrix4d fixed;
   Vector4d r;
+  int style = 0;
 };
 
 Components ComponentsOf(const LaunchResidual& s, double position_variance,
@@ -67,14 +70,15 @@ Components ComponentsOf(const LaunchResidual& s, double position_variance,
   const double absolute = o.speed_absolute / s.cue_speed;
   c.fixed = position_variance * s.measurement + absolute * absolute * c.g[0];
   c.r = s.residual;
+  c.style = s.style;
   return c;
 }
 
 // Fisher scoring for the variances theta of `free` components (the others held at theta's
-// values), the bias by generalised least squares at each step.
+// values), the biases by generalised least squares at each step.
 struct Scoring {
   Eigen::Vector3d theta;
-  Vector4d bias = Vector4d::Zero();
+  std::map<int, Eigen::Vector4d> bias;  // by spin style
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
   int iterations = 0;
 };
@@ -83,15 +87,19 @@ Matrix4d CovarianceOf(const Components& c, const Eigen::Vector3d& theta) {
   return c.fixed + theta[0] * c.g[0] + theta[1] * c.g[1] + theta[2] * c.g[2];
 }
 
-Vector4d Bias(const std::vector<Components>& shots, const Eigen::Vector3d& theta) {
-  Matrix4d weight = Matrix4d::Zero();
-  Vector4d weighted = Vector4d::Zero();
+// The bias of each spin style: the weighted mean of its residuals.
+std::map<int, Eigen::Vector4d> Bias(const std::vector<Components>& shots,
+                                    const Eigen::Vector3d& theta) {
+  std::map<int, Matrix4d> weight;
+  std::map<int, Vector4d> weighted;
   for (const Components& c : shots) {
     const Matrix4d w = CovarianceOf(c, theta).inverse();
-    weight += w;
-    weighted += w * c.r;
+    weight.try_emplace(c.style, Matrix4d::Zero()).first->second += w;
+    weighted.try_emplace(c.style, Vector4d::Zero()).first->second += w * c.r;
   }
-  return weight.ldlt().solve(weighted);
+  std::map<int, Eigen::Vector4d> bias;
+  for (const auto& [style, w] : weight) bias[style] = w.ldlt().solve(weighted[style]);
+  return bias;
 }
 
 void Score(const std::vector<Components>& shots, int free, Scoring& s, Eigen::Vector3d* score) {
@@ -99,7 +107,7 @@ void Score(const std::vector<Components>& shots, int free, Scoring& s, Eigen::Ve
   s.information.setZero();
   for (const Components& c : shots) {
     const Matrix4d w = CovarianceOf(c, s.theta).inverse();
-    const Vector4d e = w * (c.r - s.bias);
+    const Vector4d e = w * (c.r - s.bias.at(c.style));
     for (int j = 0; j < free; ++j) {
       const Matrix4d wg = w * c.g[j];
       (*score)[j] += 0.5 * (e.dot(c.g[j] * e) - wg.trace());
@@ -181,10 +189,15 @@ NoiseFit FitOn(const std::vector<Components>& all, const std::vector<std::size_t
 
 }  // namespace
 
+int StyleOf(const physics::CueStroke& commanded, const physics::ModelParameters& p) {
+  return static_cast<int>(std::lround(kStylesPerUnitSpin * SpinRatioOf(commanded, p)));
+}
+
 LaunchResidual ResidualOf(const physics::CueStroke& commanded, const Eigen::Vector2d& start,
                           const MeasuredLaunch& launch, const physics::ModelParameters& p) {
   LaunchResidual out;
   out.cue_speed = commanded.speed;
+  out.style = StyleOf(commanded, p);
   out.residual = WrappedDirections(Coordinates(launch.velocity, launch.rolling) -
                                    LaunchOf(commanded, start, p));
   const auto difference = [&](int k, double step) {
@@ -250,7 +263,7 @@ NoiseFit FitExecutionNoise(const std::vector<LaunchResidual>& shots, const Noise
                                 fit.tip.value * fit.tip.value);
     std::vector<std::size_t> inliers;
     for (std::size_t i = 0; i < all.size(); ++i) {
-      const Vector4d e = all[i].r - fit.bias;
+      const Vector4d e = all[i].r - fit.bias.at(all[i].style);
       if (e.dot(CovarianceOf(all[i], theta).ldlt().solve(e)) <= o.outlier_chi2) {
         inliers.push_back(i);
       }

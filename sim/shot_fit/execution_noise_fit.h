@@ -18,8 +18,9 @@
 // through StrikeBall), M the tracking's covariance of the residual (the launch fit's, mapped,
 // with the tracks' error per coordinate pooled over every shot's fit: a few frames cannot
 // estimate it alone, and a guess of it would be subtracted from the spreads as it stands),
-// F what is held known (an absolute speed spread, the prior's), mu a constant bias (a robot's
-// calibration, or the tracking's lag: not noise, reported apart). The variances theta =
+// F what is held known (an absolute speed spread, the prior's), mu a constant bias per spin
+// style (StyleOf: a robot's calibration, the tracking's lag, what the closed form leaves out of
+// a long slide: not noise, reported apart). The variances theta =
 // (s_v^2, s_h^2, s_t^2) are the maximum of the Gaussian likelihood over the shots, found by
 // Fisher scoring on variance components (Searle, Casella and McCulloch 1992, "Variance
 // Components", ch. 6; mu by generalised least squares at each step), so the tracking's error is
@@ -57,6 +58,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <map>
 #include <vector>
 
 #include "sim/physics/cue_strike.h"
@@ -79,7 +81,17 @@ struct LaunchResidual {
   Eigen::Matrix4d measurement = Eigen::Matrix4d::Zero();
   double squares = 0.0, dof = 0.0;
   double cue_speed = 0.0;                                 // commanded [m/s]
+  int style = 0;  // StyleOf the commanded stroke: the strokes of one style share a bias
 };
+
+// The spin style of a stroke: its spin ratio (launch_spin.h) in steps of 1/kStylesPerUnitSpin
+// (the loop's natural 2, follow 1, stun 0, draw -2). The closed form the launches are held
+// against leaves out what the table's full model does during a long slide (its rolling
+// resistance already at work: a stunned or drawn ball rolls on 3 to 5 % slower than the closed
+// form says, a naturally rolled one 1 %), the same for every stroke of a style: a bias per style,
+// not noise.
+inline constexpr double kStylesPerUnitSpin = 2.0;
+int StyleOf(const physics::CueStroke& commanded, const physics::ModelParameters& p);
 
 // The residual of `launch` against `commanded`, struck at `start` with `p`'s cue model.
 LaunchResidual ResidualOf(const physics::CueStroke& commanded, const Eigen::Vector2d& start,
@@ -115,7 +127,7 @@ struct NoiseFit {
   Spread speed;    // fraction of the cue speed
   Spread heading;  // [rad]
   Spread tip;      // each tip offset [m]
-  Eigen::Vector4d bias = Eigen::Vector4d::Zero();  // mu, in the residual's coordinates
+  std::map<int, Eigen::Vector4d> bias;  // mu by StyleOf, in the residual's coordinates
   std::vector<std::size_t> used;                   // indices of the residuals fitted
   std::size_t rejected = 0;                        // left out as outliers
   double position_sd = 0.0;  // the tracks' error per coordinate, pooled over the shots [m]
