@@ -273,7 +273,7 @@ MeasuredLaunch FitLaunch(const TrackedShot& shot, const physics::CueStroke& comm
                  " samples of the struck ball before it met a ball, a cushion or rest";
     return out;
   }
-  // A slide shorter than the frames' spacing leaves no frame inside it to tell a from v: the
+  // A slide shorter than two frames leaves at most one frame inside it to tell a from v: the
   // launch is then not seen, the velocity it rolls on is. A slide that outlasts the frames
   // leaves the rolling velocity unseen: the slide's acceleration is mu_s g whatever the spin,
   // which only sets how long it lasts.

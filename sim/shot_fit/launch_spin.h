@@ -17,7 +17,7 @@
 //     q = s0 . v0 / |v0|^2 = 7/2 (v1 . v0) / |v0|^2 - 5/2,
 //
 // 1 for a rolling ball, 0 stunned, negative drawn: the planner's SpinRatio (R w / v). A tip
-// height error of dh turns q by about 5/2 dh / R (cue_strike.h), 0.07 for a millimetre, while a
+// height error of dh turns q by about 5/2 dh / R (cue_strike.h), 0.09 for a millimetre, while a
 // speed error leaves q as it is: the spin tells the tip's height from the stroke's speed.
 //
 // Module: billiard::shot_fit.

@@ -57,7 +57,8 @@ TEST_F(LaunchSpinTest, RollingVelocityIsWhereTheSlidesClosedFormEnds) {
 }
 
 // A centre hit stuns the ball (q = 0) and the natural roll's height, 0.4 r above, rolls it
-// (q = 1): the cue model (TP A.30) gives R w = 5/2 h v / R^2 ... / v, so q = 5/2 h / r.
+// (q = 1): the cue's impulse J at height h gives m v = J and 2/5 m r^2 w = J h (Alciatore 2004,
+// TP A.30), so q = r w / v = 5/2 h / r, whatever the speed.
 TEST_F(LaunchSpinTest, SpinRatioOfIsFiveHalvesOfTheTipsHeight) {
   const double r = pool_.ball.radius;
   for (double h : {-0.4, -0.2, 0.0, 0.2, 0.4}) {
