@@ -13,9 +13,6 @@ namespace billiard::shot_fit {
 
 namespace {
 
-using Vector4d = Eigen::Matrix<double, kResidualSize, 1>;
-using Matrix4d = Eigen::Matrix<double, kResidualSize, kResidualSize>;
-
 // Central-difference steps of the stroke's errors: a millionth of the speed, a microradian, a
 // micrometre; the launch is smooth in each far beyond them.
 constexpr double kFractionStep = 1e-6, kHeadingStep = 1e-6, kTipStep = 1e-6;
@@ -31,19 +28,19 @@ double Wrapped(double angle) { return std::remainder(angle, 2.0 * kPi); }
 
 // The residual's coordinates of a launch velocity and the velocity it rolls on: log speed,
 // direction, log rolling speed, rolling direction.
-Vector4d Coordinates(const Eigen::Vector2d& v, const Eigen::Vector2d& rolling) {
+Eigen::Vector4d Coordinates(const Eigen::Vector2d& v, const Eigen::Vector2d& rolling) {
   return {std::log(v.norm()), std::atan2(v.y(), v.x()), std::log(rolling.norm()),
           std::atan2(rolling.y(), rolling.x())};
 }
 
 // The directions' differences, wrapped.
-Vector4d WrappedDirections(Vector4d d) {
+Eigen::Vector4d WrappedDirections(Eigen::Vector4d d) {
   d[1] = Wrapped(d[1]);
   d[3] = Wrapped(d[3]);
   return d;
 }
 
-Vector4d LaunchOf(const physics::CueStroke& stroke, const Eigen::Vector2d& start,
+Eigen::Vector4d LaunchOf(const physics::CueStroke& stroke, const Eigen::Vector2d& start,
                          const physics::ModelParameters& p) {
   const physics::BallState launch = physics::StrikeBall(stroke, start, p);
   const physics::ClosedFormTrajectory path(physics::ClosedFormParameters::From(p), launch);
@@ -54,9 +51,9 @@ Vector4d LaunchOf(const physics::CueStroke& stroke, const Eigen::Vector2d& start
 // The variance components of one shot: what each free spread's variance multiplies, and what is
 // known.
 struct Components {
-  Matrix4d g[3];  // speed fraction, heading, tip (side and height)
-  Matrix4d fixed;
-  Vector4d r;
+  Eigen::Matrix4d g[3];  // speed fraction, heading, tip (side and height)
+  Eigen::Matrix4d fixed;
+  Eigen::Vector4d r;
   int style = 0;
 };
 
@@ -83,19 +80,19 @@ struct Scoring {
   int iterations = 0;
 };
 
-Matrix4d CovarianceOf(const Components& c, const Eigen::Vector3d& theta) {
+Eigen::Matrix4d CovarianceOf(const Components& c, const Eigen::Vector3d& theta) {
   return c.fixed + theta[0] * c.g[0] + theta[1] * c.g[1] + theta[2] * c.g[2];
 }
 
 // The bias of each spin style: the weighted mean of its residuals.
 std::map<int, Eigen::Vector4d> Bias(const std::vector<Components>& shots,
                                     const Eigen::Vector3d& theta) {
-  std::map<int, Matrix4d> weight;
-  std::map<int, Vector4d> weighted;
+  std::map<int, Eigen::Matrix4d> weight;
+  std::map<int, Eigen::Vector4d> weighted;
   for (const Components& c : shots) {
-    const Matrix4d w = CovarianceOf(c, theta).inverse();
-    weight.try_emplace(c.style, Matrix4d::Zero()).first->second += w;
-    weighted.try_emplace(c.style, Vector4d::Zero()).first->second += w * c.r;
+    const Eigen::Matrix4d w = CovarianceOf(c, theta).inverse();
+    weight.try_emplace(c.style, Eigen::Matrix4d::Zero()).first->second += w;
+    weighted.try_emplace(c.style, Eigen::Vector4d::Zero()).first->second += w * c.r;
   }
   std::map<int, Eigen::Vector4d> bias;
   for (const auto& [style, w] : weight) bias[style] = w.ldlt().solve(weighted[style]);
@@ -106,10 +103,10 @@ void Score(const std::vector<Components>& shots, int free, Scoring& s, Eigen::Ve
   score->setZero();
   s.information.setZero();
   for (const Components& c : shots) {
-    const Matrix4d w = CovarianceOf(c, s.theta).inverse();
-    const Vector4d e = w * (c.r - s.bias.at(c.style));
+    const Eigen::Matrix4d w = CovarianceOf(c, s.theta).inverse();
+    const Eigen::Vector4d e = w * (c.r - s.bias.at(c.style));
     for (int j = 0; j < free; ++j) {
-      const Matrix4d wg = w * c.g[j];
+      const Eigen::Matrix4d wg = w * c.g[j];
       (*score)[j] += 0.5 * (e.dot(c.g[j] * e) - wg.trace());
       for (int k = 0; k < free; ++k) s.information(j, k) += 0.5 * (wg * w * c.g[k]).trace();
     }
@@ -207,14 +204,14 @@ LaunchResidual ResidualOf(const physics::CueStroke& commanded, const Eigen::Vect
     const double h = k == 0 ? step * commanded.speed : step;  // a fraction of the speed
     *up_field[k] += h;
     *down_field[k] -= h;
-    return Vector4d(WrappedDirections(LaunchOf(up, start, p) - LaunchOf(down, start, p)) /
+    return Eigen::Vector4d(WrappedDirections(LaunchOf(up, start, p) - LaunchOf(down, start, p)) /
                     (2.0 * step));
   };
   const double steps[] = {kFractionStep, kHeadingStep, kTipStep, kTipStep};
   for (int k = 0; k < 4; ++k) out.jacobian.col(k) = difference(k, steps[k]);
   // The coordinates' derivatives with respect to (v, rolling).
   const Eigen::Vector2d v = launch.velocity, u = launch.rolling;
-  Matrix4d g = Matrix4d::Zero();
+  Eigen::Matrix4d g = Eigen::Matrix4d::Zero();
   g.block<1, 2>(0, 0) = v.transpose() / v.squaredNorm();
   g.block<1, 2>(1, 0) = Eigen::Vector2d(-v.y(), v.x()).transpose() / v.squaredNorm();
   g.block<1, 2>(2, 2) = u.transpose() / u.squaredNorm();
@@ -263,7 +260,7 @@ NoiseFit FitExecutionNoise(const std::vector<LaunchResidual>& shots, const Noise
                                 fit.tip.value * fit.tip.value);
     std::vector<std::size_t> inliers;
     for (std::size_t i = 0; i < all.size(); ++i) {
-      const Vector4d e = all[i].r - fit.bias.at(all[i].style);
+      const Eigen::Vector4d e = all[i].r - fit.bias.at(all[i].style);
       if (e.dot(CovarianceOf(all[i], theta).ldlt().solve(e)) <= o.outlier_chi2) {
         inliers.push_back(i);
       }

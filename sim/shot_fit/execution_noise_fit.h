@@ -67,12 +67,9 @@
 
 namespace billiard::shot_fit {
 
-// The residual's coordinates: log speed ratio, direction [rad], log rolling-speed ratio, rolling
-// direction [rad].
-inline constexpr int kResidualSize = 4;
-
 // One shot's residual, as the fit takes it.
 struct LaunchResidual {
+  // log speed ratio, direction [rad], log rolling-speed ratio, rolling direction [rad].
   Eigen::Vector4d residual = Eigen::Vector4d::Zero();
   // d residual / d (speed fraction, heading [rad], tip side [m], tip height [m]).
   Eigen::Matrix4d jacobian = Eigen::Matrix4d::Zero();
