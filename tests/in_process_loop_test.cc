@@ -239,6 +239,44 @@ TEST(InProcessLoop, TheShotsToTargetsTakeTheSpinStylesInTurn) {
   EXPECT_THROW(table_sim_node::SessionOptions(line), std::invalid_argument);
 }
 
+// A table whose cloth slows a rolling ball four times less than the planner thinks (the plant's
+// rolling resistance d a quarter of the set's) sends shots from the middle past the cushions the
+// lone ball is simulated without: the ball drops. The session puts it back where it was struck
+// from, counts it, and plays every shot; before, the planner refused every later shot
+// (off_table) from where the ball fell.
+TEST(InProcessLoop, ABallPocketedIsPutBackWhereItWasStruckFromAndTheSessionGoesOn) {
+  Nodes n;
+  const int kShots = 4;
+  table_sim_node::TableSimOptions options = ShotsFromTheMiddle(n.params, kShots);
+  options.plant = n.params;
+  options.plant->contact.d *= 0.25;
+  options.seed = 3;
+  table_sim_node::TableSimNode node(n.lcm, n.params, n.camera, options, Quiet);
+  WithTheNodes(node, n.estimator, n.planner);
+  const std::vector<table_sim_node::ShotResult> shots = node.Run();
+  ASSERT_EQ(shots.size(), static_cast<std::size_t>(kShots));
+  int pocketed = 0;
+  for (std::size_t k = 0; k < shots.size(); ++k) {
+    const table_sim_node::ShotResult& shot = shots[k];
+    const bool dropped = shot.status == table_sim_node::kPocketedStatus;
+    ASSERT_TRUE(dropped || shot.status == "ok") << "shot " << k << ": " << shot.status << ", "
+                                                << shot.reason;
+    const physics::TableParameters& table = n.params.table;
+    const bool on_rectangle = shot.final_point.x() > 0.0 && shot.final_point.x() < table.length &&
+                              shot.final_point.y() > 0.0 && shot.final_point.y() < table.width;
+    if (!on_rectangle) {
+      EXPECT_TRUE(dropped) << "shot " << k << " ended off the table";
+    }
+    pocketed += dropped;
+    if (k + 1 == shots.size()) continue;
+    // The next shot starts where this one was struck from when it dropped, else where it rests.
+    const Eigen::Vector2d next = dropped ? shot.from : shot.final_point;
+    EXPECT_LT((shots[k + 1].from - next).norm(), 1e-12) << "shot " << k + 1;
+  }
+  EXPECT_GE(pocketed, 1) << "no ball dropped: the test means nothing";
+  EXPECT_EQ(node.health().counter(table_sim_node::kPocketedStatus), pocketed);
+}
+
 TEST(InProcessLoop, ASessionIsRefusedWhileTheNodesRunOtherPhysics) {
   lcm::LCM lcm("memq://");
   const physics::ModelParameters pool = params::LoadParameters("pool");
