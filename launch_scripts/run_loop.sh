@@ -6,6 +6,7 @@
 #                                   [--pot K:P ...] [--params NAME|FILE] [--log FILE]
 #                                   [--plant-params NAME|FILE] [--identify-every N]
 #                                   [--identify LIST] [--plant-noise NAME|FILE] [--learn-noise]
+#                                   [--spins LIST]
 #                                   [--log-frames all|none]
 #                                   [--lockstep | --realtime] [--view] [--view-port PORT]
 #                                   [--json] [--no-build] [-h | --help]
@@ -71,7 +72,11 @@
 #                          while the planner keeps choosing for the noise it was told of
 #   --learn-noise          the planner measures its own strokes' noise from the launches the
 #                          estimator tracks and chooses for it (planner_node --learn-noise); the
-#                          summary shows the noise learned, with its intervals
+#                          summary shows the noise learned, with its intervals; the shots to
+#                          random targets then vary their spin (--spins natural,stun,follow,draw)
+#   --spins LIST           the spin styles of the shots to random targets in turn (natural,
+#                          stun, follow, draw; default natural): the tip heights vary, so that
+#                          the spin the slide shows tells the tip's error from the speed's
 #   --log FILE             record every message with lcm-logger into FILE
 #   --log-frames all|none  with --log: record the CAMERA_IMAGE frames or not (default all)
 #   --lockstep             wait for the estimator's state of each frame: deterministic (default)
@@ -116,7 +121,7 @@
 set -euo pipefail
 source "$(dirname "$0")/script_support.sh"
 
-shots="" game="" players="" racks=1 shot_limit=40 seed=1 noise="" scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true plant_noise="" learn_noise=()
+shots="" game="" players="" racks=1 shot_limit=40 seed=1 noise="" scene="" params=pool plant="" identify_every="" identify=mu,rolling log="" log_frames=all clock=--lockstep json=false build=true plant_noise="" learn_noise=() spins=""
 pots=()
 view=false view_port=8765 camera="" camera_model=""
 while [ $# -gt 0 ]; do
@@ -153,6 +158,7 @@ while [ $# -gt 0 ]; do
       case "$2" in */* | *.json) plant_noise=$(realpath -m -- "$2") ;; *) plant_noise=$2 ;; esac
       shift 2 ;;
     --learn-noise) learn_noise=(--learn-noise); shift ;;
+    --spins) need_value "$@"; spins=$2; shift 2 ;;
     --log-frames) need_value "$@"; log_frames=$2; shift 2 ;;
     --lockstep) clock=--lockstep; shift ;;
     --realtime) clock=--realtime; shift ;;
@@ -269,7 +275,10 @@ if [ -n "$camera" ]; then
   pids=()
   run_camera
 fi
-playing=(--shots "$shots")
+# A learning loop's strokes vary their tip height: natural roll alone cannot tell the tip's
+# error from the speed's (docs/identification.md).
+[ ${#learn_noise[@]} -gt 0 ] && [ -z "$spins" ] && spins=natural,stun,follow,draw
+playing=(--shots "$shots" ${spins:+--spins "$spins"})
 [ -n "$game" ] && playing=(--game "$game" ${players:+--players "$players"} --racks "$racks" --shot-limit "$shot_limit")
 enter_private_network launch_scripts/run_loop.sh --no-build "${playing[@]}" --seed "$seed" \
   --noise "$noise" --params "$params" ${plant:+--plant-params "$plant"} ${plant_noise:+--plant-noise "$plant_noise"} "${learn_noise[@]}" --identify-every "$identify_every" --identify "$identify" ${scene:+--scene "$scene"} "${pots[@]}" ${log:+--log "$log"} --log-frames "$log_frames" "$clock" $($json && echo --json) $($view && echo --view-port "$view_port")

@@ -160,6 +160,18 @@ TEST(InProcessLoop, AShotTheTableNeverRestedForIsNeitherAShotNorAVisit) {
 
 // Started by hand with different sets, the nodes would plan and track one ball while the
 // simulator moves another: the session is refused before the first shot, naming who differs.
+// Shots to random targets from the table's middle, targets 0.5 m inside the cushions.
+table_sim_node::TableSimOptions ShotsFromTheMiddle(const physics::ModelParameters& params,
+                                                   int shots) {
+  table_sim_node::TableSimOptions options;
+  options.shots = shots;
+  options.reply_timeout = 3.0;
+  options.start = {0.5 * params.table.length, 0.5 * params.table.width};
+  options.target_margin = 0.5;
+  options.min_distance = 0.15;
+  return options;
+}
+
 // The targets and the noise come from streams of their own: the robot's noise moves where the
 // ball ends, never where it is sent.
 TEST(InProcessLoop, NoiseLeavesTheTargetsAsTheyWere) {
@@ -170,13 +182,8 @@ TEST(InProcessLoop, NoiseLeavesTheTargetsAsTheyWere) {
   planner_node::PlannerNode planner(lcm, params, {}, Quiet);
   std::vector<std::vector<table_sim_node::ShotResult>> runs;
   for (const bool noise : {false, true}) {
-    table_sim_node::TableSimOptions options;
-    options.shots = 2;
+    table_sim_node::TableSimOptions options = ShotsFromTheMiddle(params, 2);
     options.seed = 5;
-    options.reply_timeout = 3.0;
-    options.start = {0.5 * params.table.length, 0.5 * params.table.width};
-    options.target_margin = 0.5;
-    options.min_distance = 0.15;
     if (noise) options.noise = table_sim_node::RobotExecutionNoise();
     table_sim_node::TableSimNode node(lcm, params, camera, options, Quiet);
     WithTheNodes(node, estimator, planner);
@@ -189,6 +196,85 @@ TEST(InProcessLoop, NoiseLeavesTheTargetsAsTheyWere) {
   // The noise did something: the first shot, from the same place to the same target, ends
   // elsewhere.
   EXPECT_GT((runs[0][0].final_point - runs[1][0].final_point).norm(), 1e-5);
+}
+
+struct Commands {
+  std::vector<cue_command_t> sent;
+  void On(const lcm::ReceiveBuffer*, const std::string&, const cue_command_t* m) {
+    sent.push_back(*m);
+  }
+};
+
+// --spins natural,stun,follow,draw: the shots to random targets ask the spin styles in turn, and
+// the planner strokes each at its own tip height (the rolling ball's 0.4 r above the centre, the
+// stun's at it, the follow's between, the draw's below), each landing where it was sent. A name
+// that is no style is the session's bad input.
+TEST(InProcessLoop, TheShotsToTargetsTakeTheSpinStylesInTurn) {
+  Nodes n;
+  Commands commands;
+  n.lcm.subscribe(messages::kCueCommandChannel, &Commands::On, &commands);
+  table_sim_node::SessionCommandLine line;
+  line.spins = "natural,stun,follow,draw";
+  table_sim_node::TableSimOptions options = ShotsFromTheMiddle(n.params, 4);
+  options.spins = table_sim_node::SessionOptions(line).spins;
+  table_sim_node::TableSimNode node(n.lcm, n.params, n.camera, options, Quiet);
+  WithTheNodes(node, n.estimator, n.planner);
+  const std::vector<table_sim_node::ShotResult> shots = node.Run();
+  ASSERT_EQ(shots.size(), 4u);
+  for (const auto& shot : shots) {
+    EXPECT_EQ(shot.status, "ok") << shot.reason;
+    EXPECT_LT(shot.miss_m, 0.01) << shot.status;
+  }
+  while (n.lcm.handleTimeout(0) > 0) {
+  }
+  ASSERT_EQ(commands.sent.size(), 4u);
+  const double r = n.params.ball.radius;
+  EXPECT_NEAR(commands.sent[0].tip_height, 0.4 * r, 0.05 * r);
+  EXPECT_NEAR(commands.sent[1].tip_height, 0.0, 0.05 * r);
+  EXPECT_GT(commands.sent[2].tip_height, commands.sent[1].tip_height + 0.1 * r);
+  EXPECT_LT(commands.sent[2].tip_height, commands.sent[0].tip_height - 0.1 * r);
+  EXPECT_LT(commands.sent[3].tip_height, -0.2 * r);
+
+  line.spins = "natural,twirl";
+  EXPECT_THROW(table_sim_node::SessionOptions(line), std::invalid_argument);
+}
+
+// A table whose cloth slows a rolling ball four times less than the planner thinks (the plant's
+// rolling resistance d a quarter of the set's) sends shots from the middle past the cushions the
+// lone ball is simulated without: the ball drops. The session puts it back where it was struck
+// from, counts it, and plays every shot; before, the planner refused every later shot
+// (off_table) from where the ball fell.
+TEST(InProcessLoop, ABallPocketedIsPutBackWhereItWasStruckFromAndTheSessionGoesOn) {
+  Nodes n;
+  const int kShots = 4;
+  table_sim_node::TableSimOptions options = ShotsFromTheMiddle(n.params, kShots);
+  options.plant = n.params;
+  options.plant->contact.d *= 0.25;
+  options.seed = 3;
+  table_sim_node::TableSimNode node(n.lcm, n.params, n.camera, options, Quiet);
+  WithTheNodes(node, n.estimator, n.planner);
+  const std::vector<table_sim_node::ShotResult> shots = node.Run();
+  ASSERT_EQ(shots.size(), static_cast<std::size_t>(kShots));
+  int pocketed = 0;
+  for (std::size_t k = 0; k < shots.size(); ++k) {
+    const table_sim_node::ShotResult& shot = shots[k];
+    const bool dropped = shot.status == table_sim_node::kPocketedStatus;
+    ASSERT_TRUE(dropped || shot.status == "ok") << "shot " << k << ": " << shot.status << ", "
+                                                << shot.reason;
+    const physics::TableParameters& table = n.params.table;
+    const bool on_rectangle = shot.final_point.x() > 0.0 && shot.final_point.x() < table.length &&
+                              shot.final_point.y() > 0.0 && shot.final_point.y() < table.width;
+    if (!on_rectangle) {
+      EXPECT_TRUE(dropped) << "shot " << k << " ended off the table";
+    }
+    pocketed += dropped;
+    if (k + 1 == shots.size()) continue;
+    // The next shot starts where this one was struck from when it dropped, else where it rests.
+    const Eigen::Vector2d next = dropped ? shot.from : shot.final_point;
+    EXPECT_LT((shots[k + 1].from - next).norm(), 1e-12) << "shot " << k + 1;
+  }
+  EXPECT_GE(pocketed, 1) << "no ball dropped: the test means nothing";
+  EXPECT_EQ(node.health().counter(table_sim_node::kPocketedStatus), pocketed);
 }
 
 TEST(InProcessLoop, ASessionIsRefusedWhileTheNodesRunOtherPhysics) {

@@ -3,9 +3,11 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "sim/physics/closed_form.h"
+#include "sim/shot_fit/launch_spin.h"
 
 namespace billiard::shot_fit {
 
@@ -22,15 +24,23 @@ constexpr int kMaxRejectionRounds = 10;
 // tracked coordinate [1/m^2] (at the floor of 1e-5 m, still 1e4 of log speed squared).
 constexpr double kUnseen = 1e14;
 
-// The residual's coordinates of a launch velocity and the velocity it rolls on: log speed,
-// direction, log rolling speed.
-Eigen::Vector3d Coordinates(const Eigen::Vector2d& v, const Eigen::Vector2d& rolling) {
-  return {std::log(v.norm()), std::atan2(v.y(), v.x()), std::log(rolling.norm())};
-}
-
 double Wrapped(double angle) { return std::remainder(angle, 2.0 * kPi); }
 
-Eigen::Vector3d LaunchOf(const physics::CueStroke& stroke, const Eigen::Vector2d& start,
+// The residual's coordinates of a launch velocity and the velocity it rolls on: log speed,
+// direction, log rolling speed, rolling direction.
+Eigen::Vector4d Coordinates(const Eigen::Vector2d& v, const Eigen::Vector2d& rolling) {
+  return {std::log(v.norm()), std::atan2(v.y(), v.x()), std::log(rolling.norm()),
+          std::atan2(rolling.y(), rolling.x())};
+}
+
+// The directions' differences, wrapped.
+Eigen::Vector4d WrappedDirections(Eigen::Vector4d d) {
+  d[1] = Wrapped(d[1]);
+  d[3] = Wrapped(d[3]);
+  return d;
+}
+
+Eigen::Vector4d LaunchOf(const physics::CueStroke& stroke, const Eigen::Vector2d& start,
                          const physics::ModelParameters& p) {
   const physics::BallState launch = physics::StrikeBall(stroke, start, p);
   const physics::ClosedFormTrajectory path(physics::ClosedFormParameters::From(p), launch);
@@ -41,9 +51,10 @@ Eigen::Vector3d LaunchOf(const physics::CueStroke& stroke, const Eigen::Vector2d
 // The variance components of one shot: what each free spread's variance multiplies, and what is
 // known.
 struct Components {
-  Eigen::Matrix3d g[3];  // speed fraction, heading, tip (side and height)
-  Eigen::Matrix3d fixed;
-  Eigen::Vector3d r;
+  Eigen::Matrix4d g[3];  // speed fraction, heading, tip (side and height)
+  Eigen::Matrix4d fixed;
+  Eigen::Vector4d r;
+  int style = 0;
 };
 
 Components ComponentsOf(const LaunchResidual& s, double position_variance,
@@ -56,41 +67,46 @@ Components ComponentsOf(const LaunchResidual& s, double position_variance,
   const double absolute = o.speed_absolute / s.cue_speed;
   c.fixed = position_variance * s.measurement + absolute * absolute * c.g[0];
   c.r = s.residual;
+  c.style = s.style;
   return c;
 }
 
 // Fisher scoring for the variances theta of `free` components (the others held at theta's
-// values), the bias by generalised least squares at each step.
+// values), the biases by generalised least squares at each step.
 struct Scoring {
   Eigen::Vector3d theta;
-  Eigen::Vector3d bias = Eigen::Vector3d::Zero();
+  std::map<int, Eigen::Vector4d> bias;  // by spin style
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
   int iterations = 0;
 };
 
-Eigen::Matrix3d CovarianceOf(const Components& c, const Eigen::Vector3d& theta) {
+Eigen::Matrix4d CovarianceOf(const Components& c, const Eigen::Vector3d& theta) {
   return c.fixed + theta[0] * c.g[0] + theta[1] * c.g[1] + theta[2] * c.g[2];
 }
 
-Eigen::Vector3d Bias(const std::vector<Components>& shots, const Eigen::Vector3d& theta) {
-  Eigen::Matrix3d weight = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+// The bias of each spin style: the weighted mean of its residuals.
+std::map<int, Eigen::Vector4d> Bias(const std::vector<Components>& shots,
+                                    const Eigen::Vector3d& theta) {
+  std::map<int, Eigen::Matrix4d> weight;
+  std::map<int, Eigen::Vector4d> weighted;
   for (const Components& c : shots) {
-    const Eigen::Matrix3d w = CovarianceOf(c, theta).inverse();
-    weight += w;
-    weighted += w * c.r;
+    const Eigen::Matrix4d w = CovarianceOf(c, theta).inverse();
+    weight.try_emplace(c.style, Eigen::Matrix4d::Zero()).first->second += w;
+    weighted.try_emplace(c.style, Eigen::Vector4d::Zero()).first->second += w * c.r;
   }
-  return weight.ldlt().solve(weighted);
+  std::map<int, Eigen::Vector4d> bias;
+  for (const auto& [style, w] : weight) bias[style] = w.ldlt().solve(weighted[style]);
+  return bias;
 }
 
 void Score(const std::vector<Components>& shots, int free, Scoring& s, Eigen::Vector3d* score) {
   score->setZero();
   s.information.setZero();
   for (const Components& c : shots) {
-    const Eigen::Matrix3d w = CovarianceOf(c, s.theta).inverse();
-    const Eigen::Vector3d e = w * (c.r - s.bias);
+    const Eigen::Matrix4d w = CovarianceOf(c, s.theta).inverse();
+    const Eigen::Vector4d e = w * (c.r - s.bias.at(c.style));
     for (int j = 0; j < free; ++j) {
-      const Eigen::Matrix3d wg = w * c.g[j];
+      const Eigen::Matrix4d wg = w * c.g[j];
       (*score)[j] += 0.5 * (e.dot(c.g[j] * e) - wg.trace());
       for (int k = 0; k < free; ++k) s.information(j, k) += 0.5 * (wg * w * c.g[k]).trace();
     }
@@ -170,14 +186,17 @@ NoiseFit FitOn(const std::vector<Components>& all, const std::vector<std::size_t
 
 }  // namespace
 
+int StyleOf(const physics::CueStroke& commanded, const physics::ModelParameters& p) {
+  return static_cast<int>(std::lround(kStylesPerUnitSpin * SpinRatioOf(commanded, p)));
+}
+
 LaunchResidual ResidualOf(const physics::CueStroke& commanded, const Eigen::Vector2d& start,
                           const MeasuredLaunch& launch, const physics::ModelParameters& p) {
   LaunchResidual out;
   out.cue_speed = commanded.speed;
-  const Eigen::Vector3d measured = Coordinates(launch.velocity, launch.rolling);
-  const Eigen::Vector3d predicted = LaunchOf(commanded, start, p);
-  out.residual = measured - predicted;
-  out.residual[1] = Wrapped(out.residual[1]);
+  out.style = StyleOf(commanded, p);
+  out.residual = WrappedDirections(Coordinates(launch.velocity, launch.rolling) -
+                                   LaunchOf(commanded, start, p));
   const auto difference = [&](int k, double step) {
     physics::CueStroke up = commanded, down = commanded;
     double* up_field[] = {&up.speed, &up.heading, &up.tip_side, &up.tip_height};
@@ -185,18 +204,18 @@ LaunchResidual ResidualOf(const physics::CueStroke& commanded, const Eigen::Vect
     const double h = k == 0 ? step * commanded.speed : step;  // a fraction of the speed
     *up_field[k] += h;
     *down_field[k] -= h;
-    Eigen::Vector3d d = LaunchOf(up, start, p) - LaunchOf(down, start, p);
-    d[1] = Wrapped(d[1]);
-    return Eigen::Vector3d(d / (2.0 * step));
+    return Eigen::Vector4d(WrappedDirections(LaunchOf(up, start, p) - LaunchOf(down, start, p)) /
+                    (2.0 * step));
   };
   const double steps[] = {kFractionStep, kHeadingStep, kTipStep, kTipStep};
   for (int k = 0; k < 4; ++k) out.jacobian.col(k) = difference(k, steps[k]);
   // The coordinates' derivatives with respect to (v, rolling).
   const Eigen::Vector2d v = launch.velocity, u = launch.rolling;
-  Eigen::Matrix<double, 3, 4> g = Eigen::Matrix<double, 3, 4>::Zero();
+  Eigen::Matrix4d g = Eigen::Matrix4d::Zero();
   g.block<1, 2>(0, 0) = v.transpose() / v.squaredNorm();
   g.block<1, 2>(1, 0) = Eigen::Vector2d(-v.y(), v.x()).transpose() / v.squaredNorm();
   g.block<1, 2>(2, 2) = u.transpose() / u.squaredNorm();
+  g.block<1, 2>(3, 2) = Eigen::Vector2d(-u.y(), u.x()).transpose() / u.squaredNorm();
   out.measurement = g * launch.joint_covariance * g.transpose() / launch.variance;
   out.squares = launch.squares;
   out.dof = launch.dof;
@@ -205,8 +224,16 @@ LaunchResidual ResidualOf(const physics::CueStroke& commanded, const Eigen::Vect
     out.measurement.col(k).setZero();
     out.measurement(k, k) = kUnseen;
   };
-  if (!launch.launch_seen) unseen(0);
-  if (!launch.rolling_seen) unseen(2);
+  // An unseen launch is the rolling velocity less the commanded slide's change: its
+  // coordinates repeat the rolling ones and are left to them.
+  if (!launch.launch_seen) {
+    unseen(0);
+    unseen(1);
+  }
+  if (!launch.rolling_seen) {
+    unseen(2);
+    unseen(3);
+  }
   return out;
 }
 
@@ -233,7 +260,7 @@ NoiseFit FitExecutionNoise(const std::vector<LaunchResidual>& shots, const Noise
                                 fit.tip.value * fit.tip.value);
     std::vector<std::size_t> inliers;
     for (std::size_t i = 0; i < all.size(); ++i) {
-      const Eigen::Vector3d e = all[i].r - fit.bias;
+      const Eigen::Vector4d e = all[i].r - fit.bias.at(all[i].style);
       if (e.dot(CovarianceOf(all[i], theta).ldlt().solve(e)) <= o.outlier_chi2) {
         inliers.push_back(i);
       }

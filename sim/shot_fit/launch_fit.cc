@@ -25,6 +25,9 @@ constexpr double kFasterThanCommanded = 1.15;
 // The slide of the stroke played ends within this factor of the commanded one's (a millimetre
 // of tip height moves it by a tenth), and is seen to end with this many frames after it.
 constexpr double kSlideEndSpread = 1.25, kFramesPastTheSlide = 3.0;
+// The launch is seen where the slide spans this many frames: with one, its acceleration rests on
+// one sample and the launch's covariance is singular to rounding (a slow follow's slide).
+constexpr double kFramesInTheSlide = 2.0;
 // The commanded path is checked for clearance at this spacing [s]: a ball at 8 m/s moves 8 mm.
 constexpr double kPathStep = 1e-3;
 
@@ -270,12 +273,12 @@ MeasuredLaunch FitLaunch(const TrackedShot& shot, const physics::CueStroke& comm
                  " samples of the struck ball before it met a ball, a cushion or rest";
     return out;
   }
-  // A slide shorter than the frames' spacing leaves no frame inside it to tell a from v: the
+  // A slide shorter than two frames leaves at most one frame inside it to tell a from v: the
   // launch is then not seen, the velocity it rolls on is. A slide that outlasts the frames
   // leaves the rolling velocity unseen: the slide's acceleration is mu_s g whatever the spin,
   // which only sets how long it lasts.
   const double frame = (s.t.back() - s.strike_lo) / static_cast<double>(s.moving);
-  out.launch_seen = predicted.slide_time > frame;
+  out.launch_seen = predicted.slide_time > kFramesInTheSlide * frame;
   FitPass(s, predicted, out.launch_seen, options, out);
   out.rolling_seen = s.t.back() - out.strike_time > predicted.slide_time + frame;
   if (out.launch_seen && out.rolling_seen) {

@@ -19,8 +19,8 @@
 // model is linear in (v, a): least squares; t_s is the golden-section least of the residual sum
 // of squares. Where frames run past the slide, T is then taken again from the fit (the slide's
 // change over mu_s g) and the fit repeated: the stroke played sets where the slide ends. When
-// the slide is shorter than a frame, a is the commanded stroke's (mu_s g along its slip), since
-// frames that straddle no slide cannot tell it from v: the launch is not seen, only the rolling
+// the slide is shorter than two frames, a is the commanded stroke's (mu_s g along its slip), since
+// frames that straddle one slide sample or none cannot tell it from v: the launch is not seen, only the rolling
 // velocity. When the frames end inside the slide, the rolling velocity is not seen: the slide's
 // acceleration is mu_s g whatever the spin, which sets only how long it lasts.
 //
@@ -62,7 +62,7 @@ struct MeasuredLaunch {
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();      // right after the strike [m/s]
   Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();    // of velocity [m^2/s^2]
   Eigen::Vector2d rolling = Eigen::Vector2d::Zero();       // v + a T: the velocity it rolls on
-  // Whether the frames saw the launch (the slide lasts more than a frame, a fitted: otherwise
+  // Whether the frames saw the launch (the slide lasts more than two frames, a fitted: otherwise
   // velocity is the rolling one less the commanded slide's change) and the velocity it rolls
   // on (frames past the slide's end: otherwise rolling says nothing of the spin the stroke
   // gave, the slide's acceleration being mu_s g whatever the spin).

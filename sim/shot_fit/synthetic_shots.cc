@@ -76,6 +76,27 @@ std::vector<SyntheticScene> SyntheticScenes(const table::TableGeometry& table, d
   return scenes;
 }
 
+std::vector<SyntheticScene> LoopScenes(const table::TableGeometry& table, double ball_radius,
+                                       int count, std::uint64_t seed, bool natural_only) {
+  // The spin styles' tip heights [r]: R w / v = 5/2 h / r at the launch (cue_strike.h).
+  constexpr double kStyleHeights[] = {0.4, 0.0, 0.2, -0.4};
+  constexpr double kSlowest = 0.25, kFastest = 0.6;  // the loop's cue speeds [m/s]
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<SyntheticScene> scenes(static_cast<std::size_t>(count));
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    const Eigen::Vector2d start((1.0 + unit(random)) * table.length / 3.0,
+                                (1.0 + unit(random)) * table.width / 3.0);
+    scenes[k].starts = {start};
+    Strike& s = scenes[k].strike;
+    s.stroke.speed = kSlowest + (kFastest - kSlowest) * unit(random);
+    s.stroke.heading = 2 * M_PI * unit(random);
+    s.stroke.tip_height = (natural_only ? kStyleHeights[0] : kStyleHeights[k % 4]) * ball_radius;
+    s.time = kSyntheticPeriod * unit(random);
+  }
+  return scenes;
+}
+
 std::vector<TrackedShot> SyntheticShots(const table::TableGeometry& table,
                                         const physics::ModelParameters& params, int count,
                                         std::uint64_t seed) {

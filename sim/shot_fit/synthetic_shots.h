@@ -44,6 +44,14 @@ struct SyntheticScene {
 std::vector<SyntheticScene> SyntheticScenes(const table::TableGeometry& table, double ball_radius,
                                             int count, std::uint64_t seed);
 
+// `count` strokes as the loop's shots to a point are (table_sim_node --spins): one ball at
+// rest, placed at random a third of the table clear of the cushions, cue speeds 0.25-0.6 m/s,
+// any heading, no side, the tip heights of the spin styles in turn (natural, stun, follow, draw:
+// 0.4, 0, 0.2 and -0.4 r; the planner's SpinRatio over 5/2), the impact within the first frame
+// period (seeded by `seed`). With `natural_only`, every stroke at the natural roll's height.
+std::vector<SyntheticScene> LoopScenes(const table::TableGeometry& table, double ball_radius,
+                                       int count, std::uint64_t seed, bool natural_only = false);
+
 // The `count` SyntheticScenes simulated with `params` for 8 s and tracked by
 // SimulateTrackedShot as the real recordings are: 50 Hz, 1 mm of noise, thinned where a ball
 // moved less than 2 mm. Ball 0 is struck.

@@ -97,6 +97,33 @@ TEST(SyntheticScenes, PlaceBallsClearAndStrikeWithinTheRanges) {
   EXPECT_NE(SyntheticScenes(table, r, 50, 9)[49].starts, scenes[49].starts);
 }
 
+// The loop's strokes: one ball in the table's middle third, 0.25-0.6 m/s, no side, the four
+// styles' tip heights in turn (or all natural), seeded.
+TEST(LoopScenes, StrikeOneBallWithTheStylesInTurn) {
+  const table::TableGeometry table = Carom();
+  const double r = 0.03075;
+  const std::vector<SyntheticScene> scenes = LoopScenes(table, r, 40, 8);
+  ASSERT_EQ(scenes.size(), 40u);
+  const double heights[] = {0.4, 0.0, 0.2, -0.4};
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    ASSERT_EQ(scenes[k].starts.size(), 1u);
+    const Eigen::Vector2d& q = scenes[k].starts[0];
+    EXPECT_GE(q.x(), table.length / 3);
+    EXPECT_LE(q.x(), 2 * table.length / 3);
+    EXPECT_GE(q.y(), table.width / 3);
+    EXPECT_LE(q.y(), 2 * table.width / 3);
+    const physics::CueStroke& s = scenes[k].strike.stroke;
+    EXPECT_GE(s.speed, 0.25);
+    EXPECT_LE(s.speed, 0.6);
+    EXPECT_EQ(s.tip_side, 0.0);
+    EXPECT_DOUBLE_EQ(s.tip_height, heights[k % 4] * r);
+  }
+  for (const SyntheticScene& scene : LoopScenes(table, r, 8, 8, true)) {
+    EXPECT_DOUBLE_EQ(scene.strike.stroke.tip_height, 0.4 * r);
+  }
+  EXPECT_NE(LoopScenes(table, r, 2, 9)[1].starts, scenes[1].starts);
+}
+
 // The shots: one per scene, numbered from 1, ball 0 struck.
 TEST(SyntheticShots, TrackOneShotPerSceneNumberedFromOne) {
   const std::vector<TrackedShot> shots =

@@ -3,7 +3,9 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "lcmtypes/node/node_loop.h"
@@ -45,6 +47,26 @@ std::vector<std::string> ParsePlayers(const std::string& text) {
   return {text.substr(0, comma), text.substr(comma + 1)};
 }
 
+// "S,T,...": the spin styles of the shots to random targets, in turn.
+std::vector<std::int8_t> ParseSpins(const std::string& text) {
+  const std::map<std::string, std::int8_t> styles = {{"natural", shot_request_t::SPIN_NATURAL},
+                                                     {"stun", shot_request_t::SPIN_STUN},
+                                                     {"follow", shot_request_t::SPIN_FOLLOW},
+                                                     {"draw", shot_request_t::SPIN_DRAW}};
+  std::vector<std::int8_t> spins;
+  std::stringstream list(text);
+  for (std::string name; std::getline(list, name, ',');) {
+    const auto style = styles.find(name);
+    if (style == styles.end()) {
+      throw std::invalid_argument("--spins '" + text +
+                                  "' is not a list of natural, stun, follow and draw");
+    }
+    spins.push_back(style->second);
+  }
+  if (spins.empty()) throw std::invalid_argument("--spins names no spin style");
+  return spins;
+}
+
 // The table's own set of --plant-params: the same table and balls as the nodes', which the camera
 // and the estimator are made for; only the physics may differ.
 physics::ModelParameters PlantParameters(const std::string& name_or_path,
@@ -75,6 +97,11 @@ void AddSessionOptions(CLI::App& app, SessionCommandLine* line) {
                  "JSON file of the same table and balls): the nodes are checked against --params, "
                  "the balls roll with this set");
   app.add_option("--shots", options.shots, "Shots to random targets")->capture_default_str();
+  app.add_option("--spins", line->spins,
+                 "The spin styles of the shots to random targets in turn, from natural, stun, "
+                 "follow and draw: varied, the strokes' tip heights vary, which a controller "
+                 "learning its noise needs to tell the tip's error from the speed's")
+      ->capture_default_str();
   app.add_option("--seed", options.seed, "Seed of the targets and the noise")
       ->capture_default_str();
   app.add_option("--noise", line->noise,
@@ -151,6 +178,7 @@ TableSimOptions SessionOptions(const SessionCommandLine& line) {
   }
   for (const std::string& pot : line.pots) options.pots.push_back(ParsePot(pot));
   if (!line.players.empty()) options.players = ParsePlayers(line.players);
+  options.spins = ParseSpins(line.spins);
   if (options.game == "eight-ball" && options.players.empty()) options.players = {"ours", "ours"};
   if (!options.players.empty() && options.game != "nine-ball" && options.game != "eight-ball") {
     throw std::invalid_argument("--players plays a match: with --game nine-ball or eight-ball");

@@ -33,6 +33,7 @@ struct SessionCommandLine {
   bool realtime = false;
   std::vector<std::string> pots;  // --pot K:P, in order
   std::string players;            // --players A,B
+  std::string spins = "natural";  // --spins: the shots' spin styles in turn
   TableSimOptions options;
 };
 

@@ -202,7 +202,8 @@ nlohmann::json SessionSummary(const std::vector<ShotResult>& shots, const node_s
   nlohmann::json j;
   std::vector<double> misses;
   for (const ShotResult& s : shots) {
-    nlohmann::json shot = {{"target", {s.target.x(), s.target.y()}},
+    nlohmann::json shot = {{"from", {s.from.x(), s.from.y()}},
+                           {"target", {s.target.x(), s.target.y()}},
                            {"final", {s.final_point.x(), s.final_point.y()}},
                            {"miss_m", s.miss_m},
                            {"plan_ms", s.plan_ms},

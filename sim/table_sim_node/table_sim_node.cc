@@ -267,13 +267,14 @@ std::vector<ShotResult> TableSimNode::Run() {
   for (int shot = 0; shot < options_.shots; ++shot) {
     const Eigen::Vector2d rest = ball_;
     ShotResult result;
+    result.from = rest;
     do {
       result.target = {x(target_rng_), y(target_rng_)};
     } while ((result.target - rest).norm() < options_.min_distance);
     shot_request_t ask{};
     ask.target[0] = result.target.x();
     ask.target[1] = result.target.y();
-    ask.spin = shot_request_t::SPIN_NATURAL;
+    ask.spin = options_.spins[static_cast<std::size_t>(shot) % options_.spins.size()];
     const std::vector<table::SceneBall> alone{{kCueBall, physics::MakeBallState(rest.x(), rest.y(), 0, 0, 0, 0, 0)}};
     const cue_command_t command = Request(shot, alone, rest, ask, result);
     result.status = messages::CueCommandStatusName(command.status);
@@ -300,7 +301,6 @@ std::vector<ShotResult> TableSimNode::Run() {
       return t - t_strike >= arrival.time ? arrival.state : trajectory->At(t - t_strike);
     };
     for (; time_ - t_strike < arrival.time; time_ += frame_dt) Frame({{kCueBall, moving}}, time_);
-    ball_ = final_point;
     result.final_point = final_point;
     result.miss_m = (final_point - result.target).norm();
     std::ostringstream line;
@@ -309,10 +309,31 @@ std::vector<ShotResult> TableSimNode::Run() {
          << "), rests at (" << final_point.x() << ", " << final_point.y() << "), miss "
          << 1e3 * result.miss_m << " mm, plan " << result.plan_ms << " ms";
     log_(line.str());
+    ball_ = PutBackIfPocketed(shots_table, result) ? rest : final_point;
     results.push_back(result);
   }
   health_.PublishIfDue(lcm_);
   return results;
+}
+
+bool TableSimNode::PutBackIfPocketed(const table::TableGeometry& geometry, ShotResult& result) {
+  // The lone ball is simulated without cushions (physics::SimulateArrival), so a ball that
+  // comes to rest off the playing surface, or hanging past a pocket's mouth, is one a real table
+  // would have dropped: named by the pocket nearest where it ended. The planner refuses a ball
+  // off the surface (off_table), so left there it would end the session.
+  if (geometry.OnSurface(result.final_point, params_.ball.radius)) return false;
+  result.status = kPocketedStatus;
+  result.reason = NearestPocket(geometry, result.final_point);
+  health_.Count(kPocketedStatus);
+  // Put back where it was struck from, as a shot is taken again: a place on the surface that
+  // the estimator saw the ball at rest, the same whatever the noise did, and one that keeps the
+  // session's walk of starts and targets (the targets' stream draws each target against it).
+  // The foot spot the rules respot an object ball on would send every such shot from one place.
+  const std::vector<table::SceneBall> back{
+      {kCueBall, physics::MakeBallState(result.from.x(), result.from.y(), 0, 0, 0, 0, 0)}};
+  for (int k = 0; k < kNewLayoutSettles; ++k) ShowAtRest(back);
+  log_("the ball dropped in " + result.reason + ": put back where it was struck from");
+  return true;
 }
 
 bool TableSimNode::RobotRefuses(const table::TableGeometry& geometry, const std::vector<table::SceneBall>& balls,

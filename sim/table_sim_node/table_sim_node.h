@@ -103,6 +103,8 @@ struct TableSimOptions {
   Eigen::Vector2d start{0.6, 0.635};  // where the ball starts [m]
   double target_margin = 0.15;        // targets at least this far inside the cushions [m]
   double min_distance = 0.3;          // and at least this far from the ball [m]
+  // The spin style of shot k is spins[k % spins.size()] (shot_request_t's SPIN_ constants).
+  std::vector<std::int8_t> spins{shot_request_t::SPIN_NATURAL};
   int jpeg_quality = 90;
   // A whole-table session instead of shots to random targets: "break" (the eight-ball rack of
   // `seed` on the pool-9ft table) or a scene file (sim/params/scene_file.h, every ball at rest).
@@ -141,14 +143,21 @@ struct TableSimOptions {
 };
 
 struct ShotResult {
+  Eigen::Vector2d from = Eigen::Vector2d::Zero();  // truth, where the ball was struck from
   Eigen::Vector2d target = Eigen::Vector2d::Zero();
   Eigen::Vector2d final_point = Eigen::Vector2d::Zero();  // truth, where the ball rests
   double miss_m = 0.0;
   double plan_ms = 0.0;
-  std::string status;  // the planner's ("ok", or why not)
+  // The planner's ("ok", or why not); a shot to a target whose ball dropped, "pocketed"
+  // (kPocketedStatus), its reason the pocket.
+  std::string status;
   std::string reason;
   int retries = 0;  // requests refused for a cause that time cures, and asked again
 };
+
+// The status of a shot to a target whose ball came to rest off the playing surface: dropped, and
+// put back where it was struck from (TableSimNode::Run).
+inline constexpr char kPocketedStatus[] = "pocketed";
 
 // How the estimator followed one ball of a whole-table session, frame by frame (lockstep): the
 // error of the track associated with the ball (the nearest within a ball's radius), the frames
@@ -270,7 +279,8 @@ class TableSimNode {
   // Runs the session once the estimator and the planner have announced themselves (NODE_STATUS)
   // with the simulator's physics (the same params::ParameterHash) and version (kVersion). Throws
   // PeerMismatch when they run other physics or another version, std::runtime_error when a node
-  // does not answer in time.
+  // does not answer in time. A shot whose ball drops does not end it (PutBackIfPocketed): the
+  // session plays options.shots shots.
   std::vector<ShotResult> Run();
 
   // Runs the whole-table session of options.scene (same preconditions and throws as Run; also
@@ -309,6 +319,10 @@ class TableSimNode {
   cue_command_t Request(int shot, const std::vector<table::SceneBall>& shown,
                         const Eigen::Vector2d& ball, const shot_request_t& ask, ShotResult& result,
                         const std::optional<Eigen::Vector2d>& object = std::nullopt);
+  // Whether the shot's ball, come to rest at result.final_point, left the playing surface of
+  // `geometry`: then it is counted (NODE_STATUS's "pocketed"), the shot's status says so, the
+  // ball is put back at result.from and shown there until the estimator has forgotten its fall.
+  bool PutBackIfPocketed(const table::TableGeometry& geometry, ShotResult& result);
   // The estimator's track nearest `at` in its latest state, nullopt if it has none.
   std::optional<std::int32_t> NearestTrack(const Eigen::Vector2d& at) const;
   // Whether options.robot refuses `command` on `balls` (a stroke its cue cannot make on

@@ -32,6 +32,19 @@ nlohmann::json SpreadJson(const shot_fit::Spread& s, double unit) {
           {"upper", s.upper / unit}, {"identified", s.identified}};
 }
 
+// The bias of each spin style, in the residual's coordinates.
+nlohmann::json BiasJson(const shot_fit::NoiseFit& fit) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& [style, b] : fit.bias) {
+    out.push_back({{"spin_ratio", style / shot_fit::kStylesPerUnitSpin},
+                   {"log_speed", b[0]},
+                   {"direction_deg", b[1] / kDegree},
+                   {"log_rolling_speed", b[2]},
+                   {"rolling_direction_deg", b[3] / kDegree}});
+  }
+  return out;
+}
+
 void RunIdentifyNoise(const IdentifyNoiseArgs& args) {
   if (args.tracks != "estimator" && args.tracks != "truth")
     throw UsageError("--tracks must be estimator or truth, not '" + args.tracks + "'");
@@ -62,10 +75,7 @@ void RunIdentifyNoise(const IdentifyNoiseArgs& args) {
        {{"speed_fraction", SpreadJson(fit.speed, 1.0)},
         {"heading_deg", SpreadJson(fit.heading, kDegree)},
         {"tip_mm", SpreadJson(fit.tip, 1e-3)}}},
-      {"bias",
-       {{"log_speed", fit.bias[0]},
-        {"direction_deg", fit.bias[1] / kDegree},
-        {"log_rolling_speed", fit.bias[2]}}}};
+      {"bias", BiasJson(fit)}};
   if (!args.noise_out.empty()) {
     std::ofstream file(args.noise_out);
     if (!(file << params::FormatNoise(learner.noise()))) {
