@@ -31,13 +31,6 @@ constexpr int kTipSteps = 9;
 // first it met, a soft break that pots 8 % of racks.
 constexpr double kScratchPenalty = 10.0;
 
-// What one break did on one rack.
-struct BreakOutcome {
-  bool legal = false;
-  bool potted = false;
-  bool scratch = false;
-};
-
 // `steps` values evenly from lo to hi.
 std::vector<double> Grid(double lo, double hi, int steps) {
   std::vector<double> v;
@@ -53,24 +46,6 @@ const table::SceneBall& Apex(const std::vector<table::SceneBall>& balls) {
   }
   if (!apex) throw std::invalid_argument("break: no object ball to break");
   return *apex;
-}
-
-// Break `b` on rack `sample` of `seed`, judged as the rack's first shot.
-BreakOutcome PlayBreak(const BreakSetting& s, const Break& b, std::uint64_t seed,
-                       std::size_t sample) {
-  const std::uint64_t rack_seed = choice::SampleSeed(seed, sample);
-  std::vector<table::SceneBall> balls =
-      table::Rack(RackKindOf(s.game), s.table, s.params.ball.radius, rack_seed);
-  const physics::CueStroke stroke = SetUpBreak(s.table, s.params.ball.radius, b, &balls);
-  const choice::StrokeResult result =
-      ExecuteWithNoise(s.table, s.params, balls, stroke, s.noise,
-                       choice::SampleSeed(rack_seed + kExecutionStream, 0), s.motion);
-  rules::RackState state = rules::NewRack(s.game, 0);
-  ShotRecord rec;
-  rec.break_shot = true;
-  const rules::Shot shot = ShotOf(rules::NextConstraints(state, balls), rec, result);
-  const rules::Judgement judgement = rules::Referee(s.table, shot, &state);
-  return {!judgement.foul, !shot.potted.empty(), result.scratch};
 }
 
 // One parameter of Break: its range, the coarse grid's steps over it, and where it is kept.
@@ -164,6 +139,23 @@ physics::CueStroke SetUpBreak(const table::TableGeometry& table, double ball_rad
   stroke.heading = std::atan2(aim.y(), aim.x());
   stroke.tip_height = b.tip_height * ball_radius;
   return stroke;
+}
+
+BreakOutcome PlayBreak(const BreakSetting& s, const Break& b, std::uint64_t seed,
+                       std::size_t sample, std::vector<table::TableEvent>* events) {
+  const std::uint64_t rack_seed = choice::SampleSeed(seed, sample);
+  std::vector<table::SceneBall> balls =
+      table::Rack(RackKindOf(s.game), s.table, s.params.ball.radius, rack_seed);
+  const physics::CueStroke stroke = SetUpBreak(s.table, s.params.ball.radius, b, &balls);
+  const choice::StrokeResult result =
+      ExecuteWithNoise(s.table, s.params, balls, stroke, s.noise,
+                       choice::SampleSeed(rack_seed + kExecutionStream, 0), s.motion, events);
+  rules::RackState state = rules::NewRack(s.game, 0);
+  ShotRecord rec;
+  rec.break_shot = true;
+  const rules::Shot shot = ShotOf(rules::NextConstraints(state, balls), rec, result);
+  const rules::Judgement judgement = rules::Referee(s.table, shot, &state);
+  return {!judgement.foul, !shot.potted.empty(), result.scratch};
 }
 
 std::vector<BreakRates> EvaluateBreaks(const BreakSetting& setting,

@@ -56,6 +56,7 @@
 #include "sim/table/rack.h"
 #include "sim/table/scene.h"
 #include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
 
 namespace billiard::game {
 
@@ -106,6 +107,18 @@ struct BreakSetting {
 
 // The rack a game is broken from (nine-ball's diamond, eight-ball's triangle).
 table::RackKind RackKindOf(rules::Rules game);
+
+// What one break did on one rack.
+struct BreakOutcome {
+  bool legal = false;   // judged legal
+  bool potted = false;  // an object ball dropped
+  bool scratch = false;
+};
+
+// Break `b` on rack `sample` of `seed`, judged as the rack's first shot (the header's sample);
+// the simulation's events copied to `events` when it is given.
+BreakOutcome PlayBreak(const BreakSetting& setting, const Break& b, std::uint64_t seed,
+                       std::size_t sample, std::vector<table::TableEvent>* events = nullptr);
 
 // Each of `breaks` played on racks [0, samples) of `seed`, in one batch on `pool`.
 std::vector<BreakRates> EvaluateBreaks(const BreakSetting& setting,

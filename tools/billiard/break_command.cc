@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "planner/game/break_scratches.h"
 #include "planner/game/break_search.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/batch/wilson.h"
@@ -41,6 +42,7 @@ struct BenchBreakArgs {
   int refinements = 0;
   double max_scratch = 0.05;
   double scratch_z = 1.0;
+  bool scratches = false;  // --scratches: the optimised break's scratches by pocket and path
   bool json = false;
 };
 
@@ -61,6 +63,31 @@ nlohmann::json BreakJson(const game::Break& b, const game::BreakRates& r) {
           {"potted", RateJson(r.potted, r.samples)},
           {"legal_and_potted", RateJson(r.kept, r.samples)},
           {"scratch", RateJson(r.scratches, r.samples)}};
+}
+
+// `t` as JSON: each (pocket, path) and its count, and each path's count and mean balls met.
+nlohmann::json ScratchTallyJson(const game::ScratchTally& t) {
+  nlohmann::json rows = nlohmann::json::array(), paths = nlohmann::json::object();
+  for (const auto& [key, count] : t.by_pocket_and_path) {
+    rows.push_back({{"pocket", key.first}, {"path", key.second}, {"count", count}});
+  }
+  for (const auto& [path, count] : t.by_path) {
+    paths[path] = {{"count", count},
+                   {"mean_balls_met", static_cast<double>(t.balls_met.at(path)) / count}};
+  }
+  return {{"samples", t.samples}, {"scratches", t.scratches}, {"by_pocket", rows},
+          {"by_path", paths}};
+}
+
+// The scratch tally on stderr, a line per pocket and path.
+void ReportScratches(const nlohmann::json& j) {
+  std::cerr << "scratches by pocket and path (" << j["scratches"].get<int>() << " of "
+            << j["samples"].get<int>() << " racks):" << std::endl;
+  for (const nlohmann::json& row : j["by_pocket"]) {
+    const std::string pocket = row["pocket"].get<std::string>();
+    std::cerr << "  " << (pocket.empty() ? "(past a mouth)" : pocket) << ", "
+              << row["path"].get<std::string>() << ": " << row["count"].get<int>() << std::endl;
+  }
 }
 
 // One line on stderr: the break and its rates.
@@ -137,6 +164,11 @@ void Run(const BenchBreakArgs& args) {
          : args.given.empty() ? "stored break"
                               : "given break",
          j["optimised"]);
+  if (args.scratches) {
+    j["optimised"]["scratch_paths"] = ScratchTallyJson(
+        game::TallyBreakScratches(setting, optimised, args.samples, args.seed, pool));
+    ReportScratches(j["optimised"]["scratch_paths"]);
+  }
   if (args.json) std::cout << j.dump() << std::endl;
 }
 
@@ -190,6 +222,9 @@ void AddBenchBreakCommand(CLI::App& app) {
                   "The search: the normal quantile of that one-sided Wilson bound (1: 84 %)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--scratches", args->scratches,
+                "Also count the measured break's scratches by pocket and by the cue ball's path "
+                "after its last ball contact (direct, off rails, hanging, no ball)");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { Run(*args); });
 }

@@ -1,0 +1,119 @@
+// The scratch classes read from events built by hand (the truth by construction), from a cue
+// ball struck alone into a corner pocket, and counted over racks as the break's rates count
+// them.
+#include "planner/game/break_scratches.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "planner/choice/monte_carlo.h"
+#include "sim/model_choice/model_choice.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
+
+namespace billiard::game {
+namespace {
+
+using table::EventType;
+using table::TableEvent;
+
+TableEvent Impact(EventType type, int ball, int other = -1) {
+  TableEvent e;
+  e.type = type;
+  e.ball = ball;
+  e.other = other;
+  return e;
+}
+
+TableEvent Drop(int ball, const std::string& pocket) {
+  TableEvent e = Impact(EventType::kBallPocket, ball);
+  e.pocket = pocket;
+  return e;
+}
+
+TEST(CueBallScratchTest, RailsCountFromTheLastBallContact) {
+  const std::vector<TableEvent> events = {
+      Impact(EventType::kBallBall, 0, 1), Impact(EventType::kBallCushion, 0),
+      Impact(EventType::kBallCushion, 5),  // another ball's rail: not the cue ball's
+      Impact(EventType::kBallBall, 2, 0),  // the cue ball as the pair's other ball
+      Impact(EventType::kBallCushion, 0), Impact(EventType::kBallJaw, 0), Drop(0, "upper_left")};
+  const auto r = CueBallScratch(events, true);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->pocket, "upper_left");
+  EXPECT_EQ(r->path, ScratchPath::kOffRails);
+  EXPECT_EQ(r->balls_met, 2);
+  EXPECT_EQ(r->rails, 2);
+}
+
+TEST(CueBallScratchTest, ADropStraightFromABallIsDirect) {
+  const std::vector<TableEvent> events = {Impact(EventType::kBallCushion, 0),
+                                          Impact(EventType::kBallBall, 0, 1),
+                                          Drop(1, "lower_right"), Drop(0, "lower_side")};
+  const auto r = CueBallScratch(events, true);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->pocket, "lower_side");
+  EXPECT_EQ(r->path, ScratchPath::kDirect);
+  EXPECT_EQ(r->balls_met, 1);
+  EXPECT_EQ(r->rails, 0);
+}
+
+TEST(CueBallScratchTest, NoDropIsNoScratchUnlessTheBallHangsPastAMouth) {
+  const std::vector<TableEvent> events = {Impact(EventType::kBallBall, 0, 1),
+                                          Drop(1, "lower_right")};
+  EXPECT_FALSE(CueBallScratch(events, false));
+  const auto hanging = CueBallScratch(events, true);
+  ASSERT_TRUE(hanging);
+  EXPECT_EQ(hanging->path, ScratchPath::kHanging);
+  EXPECT_EQ(hanging->pocket, "");
+  EXPECT_STREQ(ScratchPathName(hanging->path), "hanging");
+}
+
+// The cue ball alone struck along the diagonal at the corner pocket at the origin: it drops
+// there having met no ball.
+TEST(CueBallScratchTest, ACueBallStruckAloneIntoACornerMetNoBall) {
+  const physics::ModelParameters params = params::LoadParameters("pool");
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
+  table::SceneBall cue;
+  cue.id = 0;
+  cue.state.segment<2>(physics::kX) = Eigen::Vector2d(0.4, 0.4);
+  physics::CueStroke stroke;
+  stroke.speed = 2.0;
+  stroke.heading = -0.75 * M_PI;  // toward the origin
+  std::vector<TableEvent> events;
+  const choice::StrokeResult result = choice::PlayToRest(table, params, {cue}, stroke, {}, &events);
+  ASSERT_TRUE(result.scratch);
+  const auto r = CueBallScratch(events, result.scratch);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->path, ScratchPath::kNoBall);
+  EXPECT_EQ(r->pocket, "lower_left");
+}
+
+// The tally replays the break's samples: its scratches are the rates' on the same racks, and
+// its classes sum to them.
+TEST(BreakScratchTallyTest, CountsTheScratchesTheRatesCount) {
+  const physics::ModelParameters params = params::LoadParameters("pool");
+  const table::TableGeometry table =
+      table::BuildTable(params::LoadTableSpec(params::kDefaultTable));
+  const BreakSetting setting{table, params, rules::Rules::kNineBall,
+                             params::LoadNoise("computational-pool"),
+                             model_choice::TableMotion(params)};
+  batch::ThreadPool pool(2);
+  constexpr int kRacks = 120;
+  constexpr std::uint64_t kSeed = 2027;
+  const Break side = StoredBreak(rules::Rules::kNineBall);
+  const BreakRates rates = EvaluateBreaks(setting, {side}, kRacks, kSeed, pool)[0];
+  const ScratchTally tally = TallyBreakScratches(setting, side, kRacks, kSeed, pool);
+  EXPECT_EQ(tally.samples, kRacks);
+  EXPECT_EQ(tally.scratches, rates.scratches);
+  EXPECT_GT(tally.scratches, 0);  // the side break at 8 m/s scratches some racks of 120
+  int by_pocket = 0, by_path = 0;
+  for (const auto& [key, n] : tally.by_pocket_and_path) by_pocket += n;
+  for (const auto& [path, n] : tally.by_path) by_path += n;
+  EXPECT_EQ(by_pocket, tally.scratches);
+  EXPECT_EQ(by_path, tally.scratches);
+}
+
+}  // namespace
+}  // namespace billiard::game
