@@ -7,6 +7,7 @@
 
 #include "planner/choice/scene_balls.h"
 #include "planner/game/table_shot.h"
+#include "sim/cue/clearance.h"
 #include "sim/batch/wilson.h"
 #include "sim/rules/rack_state.h"
 
@@ -25,6 +26,7 @@ constexpr int kOffsetSteps = 9;
 constexpr int kAimSteps = 9;
 constexpr int kSpeedSteps = 5;
 constexpr int kTipSteps = 9;
+constexpr int kBehindSteps = 5;
 // A break's kept rate loses this much per unit of scratch bound over the limit: a point of
 // scratch over it costs ten points of kept tables. A penalty, not feasibility first: a
 // coordinate search that ranked any feasible break above every infeasible one stopped at the
@@ -71,12 +73,28 @@ struct Axis {
 std::vector<Axis> AxesOf(const BreakSetting& s, const BreakRanges& r) {
   const double half_string = 0.5 * s.table.width - s.params.ball.radius;
   const double offset = kOffsetReach * half_string;
-  return {{-offset, offset, kOffsetSteps, [](Break& b) -> double& { return b.cue_offset; }},
-          {-kAimReach, kAimReach, kAimSteps, [](Break& b) -> double& { return b.aim; }},
-          {std::min(kMinSearchSpeed, r.max_speed), r.max_speed, kSpeedSteps,
-           [](Break& b) -> double& { return b.speed; }},
-          {-r.max_tip_offset, r.max_tip_offset, kTipSteps,
-           [](Break& b) -> double& { return b.tip_height; }}};
+  std::vector<Axis> axes = {
+      {-offset, offset, kOffsetSteps, [](Break& b) -> double& { return b.cue_offset; }},
+      {-kAimReach, kAimReach, kAimSteps, [](Break& b) -> double& { return b.aim; }},
+      {std::min(kMinSearchSpeed, r.max_speed), r.max_speed, kSpeedSteps,
+       [](Break& b) -> double& { return b.speed; }},
+      {-r.max_tip_offset, r.max_tip_offset, kTipSteps,
+       [](Break& b) -> double& { return b.tip_height; }}};
+  if (r.max_behind > 0) {
+    axes.push_back({0.0, r.max_behind, kBehindSteps, [](Break& b) -> double& { return b.behind; }});
+  }
+  return axes;
+}
+
+// `stroke` from the cue ball of `balls` raised to the least elevation `robot`'s cue clears at.
+// Throws std::invalid_argument when none does.
+physics::CueStroke Cleared(const BreakSetting& s, const std::vector<table::SceneBall>& balls,
+                           physics::CueStroke stroke) {
+  const cue::ClearingElevation least = cue::LeastClearingElevation(
+      s.table, s.params.ball.radius, balls, 0, stroke, *s.robot);
+  if (!least.elevation) throw std::invalid_argument("break: " + least.reason);
+  stroke.elevation = *least.elevation;
+  return stroke;
 }
 
 // The best of `values` for `axis`, the others held at the search's best, kept if it breaks
@@ -129,7 +147,10 @@ table::RackKind RackKindOf(rules::Rules game) {
 
 physics::CueStroke SetUpBreak(const table::TableGeometry& table, double ball_radius, const Break& b,
                               std::vector<table::SceneBall>* balls) {
-  const Eigen::Vector2d cue(kHeadString * table.length, 0.5 * table.width + b.cue_offset);
+  const Eigen::Vector2d cue(kHeadString * table.length - b.behind, 0.5 * table.width + b.cue_offset);
+  if (b.behind < 0 || !table.OnSurface(cue, ball_radius)) {
+    throw std::invalid_argument("break: the cue ball's place is off the kitchen");
+  }
   *balls = choice::WithCueBallAt(*balls, cue);
   const Eigen::Vector2d line = choice::Position(Apex(*balls)) - cue;
   const Eigen::Vector2d across(-line.y(), line.x());
@@ -146,7 +167,8 @@ BreakOutcome PlayBreak(const BreakSetting& s, const Break& b, std::uint64_t seed
   const std::uint64_t rack_seed = choice::SampleSeed(seed, sample);
   std::vector<table::SceneBall> balls =
       table::Rack(RackKindOf(s.game), s.table, s.params.ball.radius, rack_seed);
-  const physics::CueStroke stroke = SetUpBreak(s.table, s.params.ball.radius, b, &balls);
+  physics::CueStroke stroke = SetUpBreak(s.table, s.params.ball.radius, b, &balls);
+  if (s.robot) stroke = Cleared(s, balls, stroke);
   const choice::StrokeResult result =
       ExecuteWithNoise(s.table, s.params, balls, stroke, s.noise,
                        choice::SampleSeed(rack_seed + kExecutionStream, 0), s.motion, events);

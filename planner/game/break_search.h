@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "planner/choice/monte_carlo.h"
+#include "sim/cue/robot.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/params/execution_noise.h"
 #include "sim/physics/cue_strike.h"
@@ -71,19 +72,23 @@ struct Break {
   double aim = 0.0;
   double speed = 5.0;  // the cue's speed at impact [m/s]
   // The tip above the ball's centre, a fraction of the ball radius (< 0 draw, > 0 follow); the
-  // cue level.
+  // cue level, or raised as little as the robot's cue needs to clear (BreakSetting::robot).
   double tip_height = 0.0;
+  // The cue ball this far behind the head string, in the kitchen toward the head cushion [m].
+  double behind = 0.0;
 };
 
-// The robot's ranges the search keeps within (cue::Robot's speed.max and max_tip_offset).
+// The robot's ranges the search keeps within (cue::Robot's speed.max and max_tip_offset), and
+// how deep in the kitchen it places the cue ball (0: on the head string only).
 struct BreakRanges {
   double max_speed = 8.0;       // [m/s]
   double max_tip_offset = 0.5;  // a fraction of the ball radius
+  double max_behind = 0.0;      // [m]
 };
 
-// Break `b` set up on `balls` (a rack): the cue ball placed on the head string as `b` says (it
-// becomes the first ball), and the stroke it plays. Throws std::invalid_argument when there is
-// no object ball.
+// Break `b` set up on `balls` (a rack): the cue ball placed on or behind the head string as `b`
+// says (it becomes the first ball), and the stroke it plays, level. Throws std::invalid_argument
+// when there is no object ball or the place is off the kitchen.
 physics::CueStroke SetUpBreak(const table::TableGeometry& table, double ball_radius, const Break& b,
                               std::vector<table::SceneBall>* balls);
 
@@ -103,6 +108,11 @@ struct BreakSetting {
   rules::Rules game = rules::Rules::kNineBall;
   params::ExecutionNoise noise;
   choice::Motion motion;  // the table's (model_choice::TableMotion)
+  // When given, each break's cue is raised to the least elevation at which this robot's cue
+  // clears the balls and rails (cue::LeastClearingElevation: a cue ball deep in the kitchen puts
+  // a level cue into the head rail); a break no elevation clears is played as nothing (not
+  // kept). None: every break level.
+  const cue::Robot* robot = nullptr;
 };
 
 // The rack a game is broken from (nine-ball's diamond, eight-ball's triangle).
@@ -154,7 +164,8 @@ struct BreakSearchResult {
 
 // The coordinate search from `start` (the header's): cue_offset over the middle 70 % of the
 // head string, aim within half a radius of full, speed from 4 m/s to the robot's most, tip
-// height over the robot's range, in 5 to 9 steps each; then options.refinements passes on
+// height over the robot's range, the place behind the head string to ranges.max_behind (when
+// it is > 0), in 5 to 9 steps each; then options.refinements passes on
 // finer steps about the best, within the same ranges.
 BreakSearchResult SearchBreak(const BreakSetting& setting, const Break& start,
                               const BreakSearchOptions& options, batch::ThreadPool& pool);
