@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "planner/choice/monte_carlo.h"
 #include "sim/model_choice/model_choice.h"
@@ -32,41 +34,38 @@ TableEvent Drop(int ball, const std::string& pocket) {
   return e;
 }
 
+// `r` is a scratch in `pocket` by `path`, after `balls` ball contacts and `rails` rails.
+void ExpectScratch(const std::optional<ScratchRecord>& r, const std::string& pocket,
+                   ScratchPath path, int balls, int rails) {
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->pocket, pocket);
+  EXPECT_EQ(r->path, path);
+  EXPECT_EQ(r->balls_met, balls);
+  EXPECT_EQ(r->rails, rails);
+}
+
 TEST(CueBallScratchTest, RailsCountFromTheLastBallContact) {
   const std::vector<TableEvent> events = {
       Impact(EventType::kBallBall, 0, 1), Impact(EventType::kBallCushion, 0),
       Impact(EventType::kBallCushion, 5),  // another ball's rail: not the cue ball's
       Impact(EventType::kBallBall, 2, 0),  // the cue ball as the pair's other ball
       Impact(EventType::kBallCushion, 0), Impact(EventType::kBallJaw, 0), Drop(0, "upper_left")};
-  const auto r = CueBallScratch(events, true);
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->pocket, "upper_left");
-  EXPECT_EQ(r->path, ScratchPath::kOffRails);
-  EXPECT_EQ(r->balls_met, 2);
-  EXPECT_EQ(r->rails, 2);
+  ExpectScratch(CueBallScratch(events, true), "upper_left", ScratchPath::kOffRails, 2, 2);
 }
 
 TEST(CueBallScratchTest, ADropStraightFromABallIsDirect) {
   const std::vector<TableEvent> events = {Impact(EventType::kBallCushion, 0),
                                           Impact(EventType::kBallBall, 0, 1),
-                                          Drop(1, "lower_right"), Drop(0, "lower_side")};
-  const auto r = CueBallScratch(events, true);
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->pocket, "lower_side");
-  EXPECT_EQ(r->path, ScratchPath::kDirect);
-  EXPECT_EQ(r->balls_met, 1);
-  EXPECT_EQ(r->rails, 0);
+                                          Drop(1, "lower_right"), Drop(0, "lower_middle")};
+  ExpectScratch(CueBallScratch(events, true), "lower_middle", ScratchPath::kDirect, 1, 0);
 }
 
 TEST(CueBallScratchTest, NoDropIsNoScratchUnlessTheBallHangsPastAMouth) {
   const std::vector<TableEvent> events = {Impact(EventType::kBallBall, 0, 1),
                                           Drop(1, "lower_right")};
   EXPECT_FALSE(CueBallScratch(events, false));
-  const auto hanging = CueBallScratch(events, true);
-  ASSERT_TRUE(hanging);
-  EXPECT_EQ(hanging->path, ScratchPath::kHanging);
-  EXPECT_EQ(hanging->pocket, "");
-  EXPECT_STREQ(ScratchPathName(hanging->path), "hanging");
+  ExpectScratch(CueBallScratch(events, true), "", ScratchPath::kHanging, 1, 0);
+  EXPECT_STREQ(ScratchPathName(ScratchPath::kHanging), "hanging");
 }
 
 // The cue ball alone struck along the diagonal at the corner pocket at the origin: it drops
@@ -84,10 +83,7 @@ TEST(CueBallScratchTest, ACueBallStruckAloneIntoACornerMetNoBall) {
   std::vector<TableEvent> events;
   const choice::StrokeResult result = choice::PlayToRest(table, params, {cue}, stroke, {}, &events);
   ASSERT_TRUE(result.scratch);
-  const auto r = CueBallScratch(events, result.scratch);
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->path, ScratchPath::kNoBall);
-  EXPECT_EQ(r->pocket, "lower_left");
+  ExpectScratch(CueBallScratch(events, result.scratch), "lower_left", ScratchPath::kNoBall, 0, 0);
 }
 
 // The tally replays the break's samples: its scratches are the rates' on the same racks, and
