@@ -1,11 +1,13 @@
 // The break, optimised by Monte Carlo over the execution noise and the rack.
 //
-// What: a break is where the cue ball sits on the head string and how it is struck (`Break`).
+// What: a break is where the cue ball sits on or behind the head string and how it is struck
+// (`Break`).
 // `EvaluateBreaks` plays each candidate on many seeded racks (table::Rack varies the tiny gaps
 // between the balls and the order of the free balls by seed), each stroke perturbed by the
 // table's noise, and counts what the referee says of it (`BreakRates`). `SearchBreak` looks for
 // the break that keeps the table most often, within the robot's ranges (`BreakRanges`: its
-// cue speed and tip offset, sim/params/robots/).
+// cue speed and tip offset, sim/params/robots/; behind the head string the cue is raised as
+// little as the robot's cue needs to clear the head rail, cue::LeastClearingElevation).
 //
 // The objective: the most tables kept with few scratches. Only a legal break with a pot keeps
 // the table (WPA Rules of Play, Break Shot; the computational pool's eight-ball the same): a
