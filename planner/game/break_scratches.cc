@@ -1,7 +1,5 @@
 #include "planner/game/break_scratches.h"
 
-#include <utility>
-
 namespace billiard::game {
 
 namespace {

@@ -22,6 +22,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "planner/game/break_search.h"
@@ -54,8 +55,8 @@ struct ScratchTally {
   int scratches = 0;
   // (pocket, path name) -> scratches; the pocket "" for the hanging ones.
   std::map<std::pair<std::string, std::string>, int> by_pocket_and_path;
-  std::map<std::string, int> by_path;         // path name -> scratches
-  std::map<std::string, int> balls_met;       // path name -> the sum of their balls_met
+  std::map<std::string, int> by_path;    // path name -> scratches
+  std::map<std::string, int> balls_met;  // path name -> the sum of their balls_met
 };
 
 ScratchTally TallyBreakScratches(const BreakSetting& setting, const Break& b, int samples,

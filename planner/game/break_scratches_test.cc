@@ -46,10 +46,13 @@ void ExpectScratch(const std::optional<ScratchRecord>& r, const std::string& poc
 
 TEST(CueBallScratchTest, RailsCountFromTheLastBallContact) {
   const std::vector<TableEvent> events = {
-      Impact(EventType::kBallBall, 0, 1), Impact(EventType::kBallCushion, 0),
+      Impact(EventType::kBallBall, 0, 1),
+      Impact(EventType::kBallCushion, 0),
       Impact(EventType::kBallCushion, 5),  // another ball's rail: not the cue ball's
       Impact(EventType::kBallBall, 2, 0),  // the cue ball as the pair's other ball
-      Impact(EventType::kBallCushion, 0), Impact(EventType::kBallJaw, 0), Drop(0, "upper_left")};
+      Impact(EventType::kBallCushion, 0),
+      Impact(EventType::kBallJaw, 0),
+      Drop(0, "upper_left")};
   ExpectScratch(CueBallScratch(events, true), "upper_left", ScratchPath::kOffRails, 2, 2);
 }
 

@@ -7,8 +7,8 @@
 
 #include "planner/choice/scene_balls.h"
 #include "planner/game/table_shot.h"
-#include "sim/cue/clearance.h"
 #include "sim/batch/wilson.h"
+#include "sim/cue/clearance.h"
 #include "sim/rules/rack_state.h"
 
 namespace billiard::game {
@@ -90,8 +90,8 @@ std::vector<Axis> AxesOf(const BreakSetting& s, const BreakRanges& r) {
 // Throws std::invalid_argument when none does.
 physics::CueStroke Cleared(const BreakSetting& s, const std::vector<table::SceneBall>& balls,
                            physics::CueStroke stroke) {
-  const cue::ClearingElevation least = cue::LeastClearingElevation(
-      s.table, s.params.ball.radius, balls, 0, stroke, *s.robot);
+  const cue::ClearingElevation least =
+      cue::LeastClearingElevation(s.table, s.params.ball.radius, balls, 0, stroke, *s.robot);
   if (!least.elevation) throw std::invalid_argument("break: " + least.reason);
   stroke.elevation = *least.elevation;
   return stroke;
@@ -99,9 +99,8 @@ physics::CueStroke Cleared(const BreakSetting& s, const std::vector<table::Scene
 
 // The best of `values` for `axis`, the others held at the search's best, kept if it breaks
 // better than that best.
-void Sweep(const BreakSetting& setting, const BreakSearchOptions& options,
-           batch::ThreadPool& pool, const Axis& axis, const std::vector<double>& values,
-           BreakSearchResult* result) {
+void Sweep(const BreakSetting& setting, const BreakSearchOptions& options, batch::ThreadPool& pool,
+           const Axis& axis, const std::vector<double>& values, BreakSearchResult* result) {
   std::vector<Break> line;
   for (double v : values) {
     Break b = result->best;
@@ -147,7 +146,8 @@ table::RackKind RackKindOf(rules::Rules game) {
 
 physics::CueStroke SetUpBreak(const table::TableGeometry& table, double ball_radius, const Break& b,
                               std::vector<table::SceneBall>* balls) {
-  const Eigen::Vector2d cue(kHeadString * table.length - b.behind, 0.5 * table.width + b.cue_offset);
+  const Eigen::Vector2d cue(kHeadString * table.length - b.behind,
+                            0.5 * table.width + b.cue_offset);
   if (b.behind < 0 || !table.OnSurface(cue, ball_radius)) {
     throw std::invalid_argument("break: the cue ball's place is off the kitchen");
   }

@@ -50,8 +50,8 @@
 #include <vector>
 
 #include "planner/choice/monte_carlo.h"
-#include "sim/cue/robot.h"
 #include "sim/batch/thread_pool.h"
+#include "sim/cue/robot.h"
 #include "sim/params/execution_noise.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
@@ -146,7 +146,7 @@ struct BreakSearchOptions {
   int refinements = 0;
   std::uint64_t seed = 1;
   double max_scratch = 0.05;  // the scratch rate's bound a feasible break keeps within
-  double scratch_z = 1.0;  // the normal quantile of the one-sided bound (84 %)
+  double scratch_z = 1.0;     // the normal quantile of the one-sided bound (84 %)
 };
 
 // The upper Wilson bound of `r`'s scratch rate at `z`.

@@ -127,7 +127,8 @@ TEST_F(BreakSearchTest, TheSearchBeatsTodaysBreakOnHeldOutRacks) {
   EXPECT_LE(std::abs(found.best.tip_height), gantry_.max_tip_offset);
   const std::vector<BreakRates> held_out =
       EvaluateBreaks(setting_, {Break{}, found.best}, 160, kHeldOutSeed, pool);
-  EXPECT_GT(held_out[1].kept, held_out[0].kept + 16) << held_out[1].kept << " vs " << held_out[0].kept;
+  EXPECT_GT(held_out[1].kept, held_out[0].kept + 16)
+      << held_out[1].kept << " vs " << held_out[0].kept;
 }
 
 // The same seed gives the same figures and the same search on 1 thread or 3.
@@ -169,7 +170,7 @@ TEST_F(BreakSearchTest, RefinementsNeverRankBelowTheRoundsBestAndKeepTheRanges) 
 // The ranking: a break kept more often wins while both keep the scratch bound; past the bound
 // each point of scratch bound costs ten of kept tables (the header's penalty).
 TEST_F(BreakSearchTest, MoreTablesKeptWithinTheScratchBound) {
-  BreakSearchOptions options;  // 5 % at z = 1
+  BreakSearchOptions options;                 // 5 % at z = 1
   BreakRates safe{400, 380, 200, 200, 8};     // bound 2.8 %: feasible
   BreakRates better{400, 380, 220, 210, 12};  // bound 4.0 %: feasible, kept more
   BreakRates wild{400, 380, 260, 250, 40};    // bound 11.6 %: 62.5 % - 10 x 6.6 % < 50 %

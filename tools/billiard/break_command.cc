@@ -77,8 +77,8 @@ nlohmann::json ScratchTallyJson(const game::ScratchTally& t) {
     paths[path] = {{"count", count},
                    {"mean_balls_met", static_cast<double>(t.balls_met.at(path)) / count}};
   }
-  return {{"samples", t.samples}, {"scratches", t.scratches}, {"by_pocket", rows},
-          {"by_path", paths}};
+  return {
+      {"samples", t.samples}, {"scratches", t.scratches}, {"by_pocket", rows}, {"by_path", paths}};
 }
 
 // The scratch tally on stderr, a line per pocket and path.
@@ -100,8 +100,8 @@ void Report(const std::string& name, const nlohmann::json& j) {
             << " m off the axis, aim " << j["aim_radii"].get<double>() << " R, "
             << j["speed_mps"].get<double>() << " m/s, tip " << j["tip_height_radii"].get<double>()
             << " R, " << j["behind_m"].get<double>()
-            << " m behind the head string: legal and potted " << rate("legal_and_potted") << " (95 % "
-            << kept[0].get<double>() << " to " << kept[1].get<double>() << "), legal "
+            << " m behind the head string: legal and potted " << rate("legal_and_potted")
+            << " (95 % " << kept[0].get<double>() << " to " << kept[1].get<double>() << "), legal "
             << rate("legal") << ", potted " << rate("potted") << ", scratch " << rate("scratch")
             << " of " << j["samples"].get<int>() << " racks" << std::endl;
 }
