@@ -13,23 +13,17 @@
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
+#include "sim/table/testing/events.h"
 
 namespace billiard::game {
 namespace {
 
 using table::EventType;
 using table::TableEvent;
-
-TableEvent Impact(EventType type, int ball, int other = -1) {
-  TableEvent e;
-  e.type = type;
-  e.ball = ball;
-  e.other = other;
-  return e;
-}
+using table::testing::Event;
 
 TableEvent Drop(int ball, const std::string& pocket) {
-  TableEvent e = Impact(EventType::kBallPocket, ball);
+  TableEvent e = Event(EventType::kBallPocket, ball);
   e.pocket = pocket;
   return e;
 }
@@ -46,25 +40,25 @@ void ExpectScratch(const std::optional<ScratchRecord>& r, const std::string& poc
 
 TEST(CueBallScratchTest, RailsCountFromTheLastBallContact) {
   const std::vector<TableEvent> events = {
-      Impact(EventType::kBallBall, 0, 1),
-      Impact(EventType::kBallCushion, 0),
-      Impact(EventType::kBallCushion, 5),  // another ball's rail: not the cue ball's
-      Impact(EventType::kBallBall, 2, 0),  // the cue ball as the pair's other ball
-      Impact(EventType::kBallCushion, 0),
-      Impact(EventType::kBallJaw, 0),
+      Event(EventType::kBallBall, 0, 1),
+      Event(EventType::kBallCushion, 0),
+      Event(EventType::kBallCushion, 5),  // another ball's rail: not the cue ball's
+      Event(EventType::kBallBall, 2, 0),  // the cue ball as the pair's other ball
+      Event(EventType::kBallCushion, 0),
+      Event(EventType::kBallJaw, 0),
       Drop(0, "upper_left")};
   ExpectScratch(CueBallScratch(events, true), "upper_left", ScratchPath::kOffRails, 2, 2);
 }
 
 TEST(CueBallScratchTest, ADropStraightFromABallIsDirect) {
-  const std::vector<TableEvent> events = {Impact(EventType::kBallCushion, 0),
-                                          Impact(EventType::kBallBall, 0, 1),
-                                          Drop(1, "lower_right"), Drop(0, "lower_middle")};
+  const std::vector<TableEvent> events = {Event(EventType::kBallCushion, 0),
+                                          Event(EventType::kBallBall, 0, 1), Drop(1, "lower_right"),
+                                          Drop(0, "lower_middle")};
   ExpectScratch(CueBallScratch(events, true), "lower_middle", ScratchPath::kDirect, 1, 0);
 }
 
 TEST(CueBallScratchTest, NoDropIsNoScratchUnlessTheBallHangsPastAMouth) {
-  const std::vector<TableEvent> events = {Impact(EventType::kBallBall, 0, 1),
+  const std::vector<TableEvent> events = {Event(EventType::kBallBall, 0, 1),
                                           Drop(1, "lower_right")};
   EXPECT_FALSE(CueBallScratch(events, false));
   ExpectScratch(CueBallScratch(events, true), "", ScratchPath::kHanging, 1, 0);
