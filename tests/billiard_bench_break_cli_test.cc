@@ -70,6 +70,23 @@ TEST(BilliardBenchBreak, RefinementsAddCandidatesToTheSearch) {
   EXPECT_LE(refined["candidates"].get<int>(), coarse["candidates"].get<int>() + 2 * kParameters);
 }
 
+// --scratches classes every scratch the rates count, by pocket and by path; a fifth --break
+// number places the cue ball behind the head string.
+TEST(BilliardBenchBreak, ScratchesAreClassedAndTheKitchenIsReached) {
+  const std::string args = "bench-break --game nine-ball --samples 60 --scratches --json";
+  const nlohmann::json b = OneObject(Billiard(args), args)["optimised"];
+  ASSERT_GT(b["scratch"]["count"].get<int>(), 0);  // the stored side break scratches some of 60
+  const nlohmann::json& paths = b["scratch_paths"];
+  EXPECT_EQ(paths["samples"], 60);
+  EXPECT_EQ(paths["scratches"], b["scratch"]["count"]);
+  int by_pocket = 0;
+  for (const nlohmann::json& row : paths["by_pocket"]) by_pocket += row["count"].get<int>();
+  EXPECT_EQ(by_pocket, paths["scratches"].get<int>());
+  const nlohmann::json behind = Bench("--game nine-ball --break=-0.3,0,8,0,0.2")["optimised"];
+  EXPECT_EQ(behind["behind_m"], 0.2);
+  EXPECT_EQ(Bench("--game nine-ball")["optimised"]["behind_m"], 0.0);
+}
+
 TEST(BilliardBenchBreak, TheSameFiguresWhateverTheThreads) {
   EXPECT_EQ(Bench("--game nine-ball --threads 1"), Bench("--game nine-ball --threads 2"));
 }
@@ -80,6 +97,9 @@ TEST(BilliardBenchBreak, ABadCommandLineExitsTwo) {
         "bench-break --game nine-ball --noise /no/such.json",
         "bench-break --game nine-ball --robot nobody", "bench-break --game nine-ball --samples 0",
         "bench-break --game nine-ball --break=1,2",
+        "bench-break --game nine-ball --break=0,0,8,0,-0.1",
+        "bench-break --game nine-ball --break=0,0,8,0,0.1,2",
+        "bench-break --game nine-ball --max-behind -1",
         "bench-break --game nine-ball --search --refinements -1"}) {
     EXPECT_EQ(Billiard(args).status, 2) << args;
   }

@@ -76,7 +76,8 @@ double NormalStream::Next() {
 
 StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelParameters& params,
                         const std::vector<table::SceneBall>& balls,
-                        const physics::CueStroke& stroke, const Motion& motion) {
+                        const physics::CueStroke& stroke, const Motion& motion,
+                        std::vector<table::TableEvent>* events) {
   StrokeResult result;
   std::vector<table::SceneBall> start = balls;
   for (table::SceneBall& b : start) {
@@ -93,6 +94,7 @@ StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelP
   sim_options.five_dof = motion;
   table::TableSimulation sim(table, params, start, sim_options);
   sim.Run(kLongestStroke);
+  if (events) *events = sim.events();
   result.first_contact = table::FirstBallMet(sim.events(), 0);
   result.to_rail_after_contact = table::BallsToRailAfterFirstContact(sim.events(), 0);
   for (std::size_t i = 0; i < sim.ball_count(); ++i) {

@@ -71,10 +71,12 @@ struct StrokeResult {
 
 // Strikes the cue ball (id 0, at rest) of `balls` with `stroke` and simulates the table until
 // every ball rests (closed form between events when `motion` is empty, else `motion`'s 5-DOF
-// where it says).
+// where it says). The simulation's events are copied to `events` when it is given (what a
+// study of a stroke's path asks; nothing else keeps them).
 StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelParameters& params,
                         const std::vector<table::SceneBall>& balls,
-                        const physics::CueStroke& stroke, const Motion& motion);
+                        const physics::CueStroke& stroke, const Motion& motion,
+                        std::vector<table::TableEvent>* events = nullptr);
 
 // Whether `result` pots `ball` in `pocket` legally: the cue ball's first contact that ball, the
 // ball in that pocket, no scratch.

@@ -8,6 +8,7 @@
 #include "planner/choice/scene_balls.h"
 #include "planner/game/table_shot.h"
 #include "sim/batch/wilson.h"
+#include "sim/cue/clearance.h"
 #include "sim/rules/rack_state.h"
 
 namespace billiard::game {
@@ -25,18 +26,12 @@ constexpr int kOffsetSteps = 9;
 constexpr int kAimSteps = 9;
 constexpr int kSpeedSteps = 5;
 constexpr int kTipSteps = 9;
+constexpr int kBehindSteps = 5;
 // A break's kept rate loses this much per unit of scratch bound over the limit: a point of
 // scratch over it costs ten points of kept tables. A penalty, not feasibility first: a
 // coordinate search that ranked any feasible break above every infeasible one stopped at the
 // first it met, a soft break that pots 8 % of racks.
 constexpr double kScratchPenalty = 10.0;
-
-// What one break did on one rack.
-struct BreakOutcome {
-  bool legal = false;
-  bool potted = false;
-  bool scratch = false;
-};
 
 // `steps` values evenly from lo to hi.
 std::vector<double> Grid(double lo, double hi, int steps) {
@@ -53,24 +48,6 @@ const table::SceneBall& Apex(const std::vector<table::SceneBall>& balls) {
   }
   if (!apex) throw std::invalid_argument("break: no object ball to break");
   return *apex;
-}
-
-// Break `b` on rack `sample` of `seed`, judged as the rack's first shot.
-BreakOutcome PlayBreak(const BreakSetting& s, const Break& b, std::uint64_t seed,
-                       std::size_t sample) {
-  const std::uint64_t rack_seed = choice::SampleSeed(seed, sample);
-  std::vector<table::SceneBall> balls =
-      table::Rack(RackKindOf(s.game), s.table, s.params.ball.radius, rack_seed);
-  const physics::CueStroke stroke = SetUpBreak(s.table, s.params.ball.radius, b, &balls);
-  const choice::StrokeResult result =
-      ExecuteWithNoise(s.table, s.params, balls, stroke, s.noise,
-                       choice::SampleSeed(rack_seed + kExecutionStream, 0), s.motion);
-  rules::RackState state = rules::NewRack(s.game, 0);
-  ShotRecord rec;
-  rec.break_shot = true;
-  const rules::Shot shot = ShotOf(rules::NextConstraints(state, balls), rec, result);
-  const rules::Judgement judgement = rules::Referee(s.table, shot, &state);
-  return {!judgement.foul, !shot.potted.empty(), result.scratch};
 }
 
 // One parameter of Break: its range, the coarse grid's steps over it, and where it is kept.
@@ -96,19 +73,34 @@ struct Axis {
 std::vector<Axis> AxesOf(const BreakSetting& s, const BreakRanges& r) {
   const double half_string = 0.5 * s.table.width - s.params.ball.radius;
   const double offset = kOffsetReach * half_string;
-  return {{-offset, offset, kOffsetSteps, [](Break& b) -> double& { return b.cue_offset; }},
-          {-kAimReach, kAimReach, kAimSteps, [](Break& b) -> double& { return b.aim; }},
-          {std::min(kMinSearchSpeed, r.max_speed), r.max_speed, kSpeedSteps,
-           [](Break& b) -> double& { return b.speed; }},
-          {-r.max_tip_offset, r.max_tip_offset, kTipSteps,
-           [](Break& b) -> double& { return b.tip_height; }}};
+  std::vector<Axis> axes = {
+      {-offset, offset, kOffsetSteps, [](Break& b) -> double& { return b.cue_offset; }},
+      {-kAimReach, kAimReach, kAimSteps, [](Break& b) -> double& { return b.aim; }},
+      {std::min(kMinSearchSpeed, r.max_speed), r.max_speed, kSpeedSteps,
+       [](Break& b) -> double& { return b.speed; }},
+      {-r.max_tip_offset, r.max_tip_offset, kTipSteps,
+       [](Break& b) -> double& { return b.tip_height; }}};
+  if (r.max_behind > 0) {
+    axes.push_back({0.0, r.max_behind, kBehindSteps, [](Break& b) -> double& { return b.behind; }});
+  }
+  return axes;
+}
+
+// `stroke` from the cue ball of `balls` raised to the least elevation `robot`'s cue clears at.
+// Throws std::invalid_argument when none does.
+physics::CueStroke Cleared(const BreakSetting& s, const std::vector<table::SceneBall>& balls,
+                           physics::CueStroke stroke) {
+  const cue::ClearingElevation least =
+      cue::LeastClearingElevation(s.table, s.params.ball.radius, balls, 0, stroke, *s.robot);
+  if (!least.elevation) throw std::invalid_argument("break: " + least.reason);
+  stroke.elevation = *least.elevation;
+  return stroke;
 }
 
 // The best of `values` for `axis`, the others held at the search's best, kept if it breaks
 // better than that best.
-void Sweep(const BreakSetting& setting, const BreakSearchOptions& options,
-           batch::ThreadPool& pool, const Axis& axis, const std::vector<double>& values,
-           BreakSearchResult* result) {
+void Sweep(const BreakSetting& setting, const BreakSearchOptions& options, batch::ThreadPool& pool,
+           const Axis& axis, const std::vector<double>& values, BreakSearchResult* result) {
   std::vector<Break> line;
   for (double v : values) {
     Break b = result->best;
@@ -154,7 +146,11 @@ table::RackKind RackKindOf(rules::Rules game) {
 
 physics::CueStroke SetUpBreak(const table::TableGeometry& table, double ball_radius, const Break& b,
                               std::vector<table::SceneBall>* balls) {
-  const Eigen::Vector2d cue(kHeadString * table.length, 0.5 * table.width + b.cue_offset);
+  const Eigen::Vector2d cue(kHeadString * table.length - b.behind,
+                            0.5 * table.width + b.cue_offset);
+  if (b.behind < 0 || !table.OnSurface(cue, ball_radius)) {
+    throw std::invalid_argument("break: the cue ball's place is off the kitchen");
+  }
   *balls = choice::WithCueBallAt(*balls, cue);
   const Eigen::Vector2d line = choice::Position(Apex(*balls)) - cue;
   const Eigen::Vector2d across(-line.y(), line.x());
@@ -164,6 +160,24 @@ physics::CueStroke SetUpBreak(const table::TableGeometry& table, double ball_rad
   stroke.heading = std::atan2(aim.y(), aim.x());
   stroke.tip_height = b.tip_height * ball_radius;
   return stroke;
+}
+
+BreakOutcome PlayBreak(const BreakSetting& s, const Break& b, std::uint64_t seed,
+                       std::size_t sample, std::vector<table::TableEvent>* events) {
+  const std::uint64_t rack_seed = choice::SampleSeed(seed, sample);
+  std::vector<table::SceneBall> balls =
+      table::Rack(RackKindOf(s.game), s.table, s.params.ball.radius, rack_seed);
+  physics::CueStroke stroke = SetUpBreak(s.table, s.params.ball.radius, b, &balls);
+  if (s.robot) stroke = Cleared(s, balls, stroke);
+  const choice::StrokeResult result =
+      ExecuteWithNoise(s.table, s.params, balls, stroke, s.noise,
+                       choice::SampleSeed(rack_seed + kExecutionStream, 0), s.motion, events);
+  rules::RackState state = rules::NewRack(s.game, 0);
+  ShotRecord rec;
+  rec.break_shot = true;
+  const rules::Shot shot = ShotOf(rules::NextConstraints(state, balls), rec, result);
+  const rules::Judgement judgement = rules::Referee(s.table, shot, &state);
+  return {!judgement.foul, !shot.potted.empty(), result.scratch};
 }
 
 std::vector<BreakRates> EvaluateBreaks(const BreakSetting& setting,

@@ -1,11 +1,13 @@
 // The break, optimised by Monte Carlo over the execution noise and the rack.
 //
-// What: a break is where the cue ball sits on the head string and how it is struck (`Break`).
+// What: a break is where the cue ball sits on or behind the head string and how it is struck
+// (`Break`).
 // `EvaluateBreaks` plays each candidate on many seeded racks (table::Rack varies the tiny gaps
 // between the balls and the order of the free balls by seed), each stroke perturbed by the
 // table's noise, and counts what the referee says of it (`BreakRates`). `SearchBreak` looks for
 // the break that keeps the table most often, within the robot's ranges (`BreakRanges`: its
-// cue speed and tip offset, sim/params/robots/).
+// cue speed and tip offset, sim/params/robots/; behind the head string the cue is raised as
+// little as the robot's cue needs to clear the head rail, cue::LeastClearingElevation).
 //
 // The objective: the most tables kept with few scratches. Only a legal break with a pot keeps
 // the table (WPA Rules of Play, Break Shot; the computational pool's eight-ball the same): a
@@ -49,6 +51,7 @@
 
 #include "planner/choice/monte_carlo.h"
 #include "sim/batch/thread_pool.h"
+#include "sim/cue/robot.h"
 #include "sim/params/execution_noise.h"
 #include "sim/physics/cue_strike.h"
 #include "sim/physics/parameters.h"
@@ -56,6 +59,7 @@
 #include "sim/table/rack.h"
 #include "sim/table/scene.h"
 #include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
 
 namespace billiard::game {
 
@@ -70,19 +74,23 @@ struct Break {
   double aim = 0.0;
   double speed = 5.0;  // the cue's speed at impact [m/s]
   // The tip above the ball's centre, a fraction of the ball radius (< 0 draw, > 0 follow); the
-  // cue level.
+  // cue level, or raised as little as the robot's cue needs to clear (BreakSetting::robot).
   double tip_height = 0.0;
+  // The cue ball this far behind the head string, in the kitchen toward the head cushion [m].
+  double behind = 0.0;
 };
 
-// The robot's ranges the search keeps within (cue::Robot's speed.max and max_tip_offset).
+// The robot's ranges the search keeps within (cue::Robot's speed.max and max_tip_offset), and
+// how deep in the kitchen it places the cue ball (0: on the head string only).
 struct BreakRanges {
   double max_speed = 8.0;       // [m/s]
   double max_tip_offset = 0.5;  // a fraction of the ball radius
+  double max_behind = 0.0;      // [m]
 };
 
-// Break `b` set up on `balls` (a rack): the cue ball placed on the head string as `b` says (it
-// becomes the first ball), and the stroke it plays. Throws std::invalid_argument when there is
-// no object ball.
+// Break `b` set up on `balls` (a rack): the cue ball placed on or behind the head string as `b`
+// says (it becomes the first ball), and the stroke it plays, level. Throws std::invalid_argument
+// when there is no object ball or the place is off the kitchen.
 physics::CueStroke SetUpBreak(const table::TableGeometry& table, double ball_radius, const Break& b,
                               std::vector<table::SceneBall>* balls);
 
@@ -102,10 +110,27 @@ struct BreakSetting {
   rules::Rules game = rules::Rules::kNineBall;
   params::ExecutionNoise noise;
   choice::Motion motion;  // the table's (model_choice::TableMotion)
+  // When given, each break's cue is raised to the least elevation at which this robot's cue
+  // clears the balls and rails (cue::LeastClearingElevation: a cue ball deep in the kitchen puts
+  // a level cue into the head rail); a break no elevation clears is played as nothing (not
+  // kept). None: every break level.
+  const cue::Robot* robot = nullptr;
 };
 
 // The rack a game is broken from (nine-ball's diamond, eight-ball's triangle).
 table::RackKind RackKindOf(rules::Rules game);
+
+// What one break did on one rack.
+struct BreakOutcome {
+  bool legal = false;   // judged legal
+  bool potted = false;  // an object ball dropped
+  bool scratch = false;
+};
+
+// Break `b` on rack `sample` of `seed`, judged as the rack's first shot (the header's sample);
+// the simulation's events copied to `events` when it is given.
+BreakOutcome PlayBreak(const BreakSetting& setting, const Break& b, std::uint64_t seed,
+                       std::size_t sample, std::vector<table::TableEvent>* events = nullptr);
 
 // Each of `breaks` played on racks [0, samples) of `seed`, in one batch on `pool`.
 std::vector<BreakRates> EvaluateBreaks(const BreakSetting& setting,
@@ -121,7 +146,7 @@ struct BreakSearchOptions {
   int refinements = 0;
   std::uint64_t seed = 1;
   double max_scratch = 0.05;  // the scratch rate's bound a feasible break keeps within
-  double scratch_z = 1.0;  // the normal quantile of the one-sided bound (84 %)
+  double scratch_z = 1.0;     // the normal quantile of the one-sided bound (84 %)
 };
 
 // The upper Wilson bound of `r`'s scratch rate at `z`.
@@ -141,7 +166,8 @@ struct BreakSearchResult {
 
 // The coordinate search from `start` (the header's): cue_offset over the middle 70 % of the
 // head string, aim within half a radius of full, speed from 4 m/s to the robot's most, tip
-// height over the robot's range, in 5 to 9 steps each; then options.refinements passes on
+// height over the robot's range, the place behind the head string to ranges.max_behind (when
+// it is > 0), in 5 to 9 steps each; then options.refinements passes on
 // finer steps about the best, within the same ranges.
 BreakSearchResult SearchBreak(const BreakSetting& setting, const Break& start,
                               const BreakSearchOptions& options, batch::ThreadPool& pool);

@@ -6,6 +6,7 @@
 
 #include "planner/choice/scene_balls.h"
 #include "sim/batch/wilson.h"
+#include "sim/cue/clearance.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/robots.h"
@@ -65,6 +66,43 @@ TEST_F(BreakSearchTest, SetUpPlacesTheCueBallAndAimsAtTheApex) {
   EXPECT_NEAR(cut.heading - full.heading, std::atan(0.5 * r / d.norm()), 1e-12);
 }
 
+// A break behind the head string places the cue ball that far toward the head cushion, and
+// one off the kitchen is refused.
+TEST_F(BreakSearchTest, BehindPlacesTheCueBallInTheKitchen) {
+  const double r = params_.ball.radius;
+  std::vector<table::SceneBall> balls = table::Rack(table::RackKind::kNineBall, table_, r, 3);
+  Break b;
+  b.behind = 0.3;
+  SetUpBreak(table_, r, b, &balls);
+  EXPECT_NEAR(choice::Position(balls.front()).x(), 0.25 * table_.length - 0.3, 1e-12);
+  b.behind = 0.25 * table_.length;  // the cue ball's centre on the head cushion's nose
+  EXPECT_THROW(SetUpBreak(table_, r, b, &balls), std::invalid_argument);
+}
+
+// On the head string the gantry's level cue clears, so a setting that raises the cue to the
+// least clearing elevation plays the same strokes as one that keeps it level; deep in the
+// kitchen (0.5 m behind the head string) the level cue meets the head rail and must be raised.
+TEST_F(BreakSearchTest, TheCueIsRaisedOnlyWhereItMustClear) {
+  BreakSetting raised = setting_;
+  raised.robot = &gantry_;
+  batch::ThreadPool pool(2);
+  Break side = StoredBreak(rules::Rules::kNineBall);
+  const BreakRates level = EvaluateBreaks(setting_, {side}, 40, kHeldOutSeed, pool)[0];
+  const BreakRates cleared = EvaluateBreaks(raised, {side}, 40, kHeldOutSeed, pool)[0];
+  EXPECT_EQ(level.kept, cleared.kept);
+  EXPECT_EQ(level.scratches, cleared.scratches);
+  EXPECT_EQ(level.legal, cleared.legal);
+  std::vector<table::SceneBall> balls =
+      table::Rack(table::RackKind::kNineBall, table_, params_.ball.radius, 3);
+  side.behind = 0.5;
+  const physics::CueStroke stroke = SetUpBreak(table_, params_.ball.radius, side, &balls);
+  EXPECT_FALSE(cue::Clearance(table_, params_.ball.radius, balls, 0, stroke, gantry_).clears);
+  const cue::ClearingElevation least =
+      cue::LeastClearingElevation(table_, params_.ball.radius, balls, 0, stroke, gantry_);
+  ASSERT_TRUE(least.elevation);
+  EXPECT_GT(*least.elevation, 0.0);
+}
+
 // A roll too soft to reach four rails, potting nothing, is never a legal break; the counts nest
 // (kept within legal and within potted).
 TEST_F(BreakSearchTest, ASoftRollIsNeverALegalBreak) {
@@ -89,7 +127,8 @@ TEST_F(BreakSearchTest, TheSearchBeatsTodaysBreakOnHeldOutRacks) {
   EXPECT_LE(std::abs(found.best.tip_height), gantry_.max_tip_offset);
   const std::vector<BreakRates> held_out =
       EvaluateBreaks(setting_, {Break{}, found.best}, 160, kHeldOutSeed, pool);
-  EXPECT_GT(held_out[1].kept, held_out[0].kept + 16) << held_out[1].kept << " vs " << held_out[0].kept;
+  EXPECT_GT(held_out[1].kept, held_out[0].kept + 16)
+      << held_out[1].kept << " vs " << held_out[0].kept;
 }
 
 // The same seed gives the same figures and the same search on 1 thread or 3.
@@ -131,7 +170,7 @@ TEST_F(BreakSearchTest, RefinementsNeverRankBelowTheRoundsBestAndKeepTheRanges) 
 // The ranking: a break kept more often wins while both keep the scratch bound; past the bound
 // each point of scratch bound costs ten of kept tables (the header's penalty).
 TEST_F(BreakSearchTest, MoreTablesKeptWithinTheScratchBound) {
-  BreakSearchOptions options;  // 5 % at z = 1
+  BreakSearchOptions options;                 // 5 % at z = 1
   BreakRates safe{400, 380, 200, 200, 8};     // bound 2.8 %: feasible
   BreakRates better{400, 380, 220, 210, 12};  // bound 4.0 %: feasible, kept more
   BreakRates wild{400, 380, 260, 250, 40};    // bound 11.6 %: 62.5 % - 10 x 6.6 % < 50 %

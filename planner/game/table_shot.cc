@@ -45,11 +45,12 @@ choice::StrokeResult ExecuteWithNoise(const table::TableGeometry& table,
                                       const std::vector<table::SceneBall>& balls,
                                       const physics::CueStroke& stroke,
                                       const params::ExecutionNoise& noise, std::uint64_t seed,
-                                      const choice::Motion& motion) {
+                                      const choice::Motion& motion,
+                                      std::vector<table::TableEvent>* events) {
   choice::NormalStream normal(seed);
   const physics::CueStroke played =
       params::Perturbed(stroke, noise, params.ball.radius, [&] { return normal.Next(); });
-  choice::StrokeResult result = choice::PlayToRest(table, params, balls, played, motion);
+  choice::StrokeResult result = choice::PlayToRest(table, params, balls, played, motion, events);
   DropHangingBalls(table, &result);
   return result;
 }

@@ -22,6 +22,7 @@
 #include "sim/rules/ruleset.h"
 #include "sim/table/scene.h"
 #include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
 
 namespace billiard::game {
 
@@ -71,13 +72,15 @@ std::optional<physics::CueStroke> PlayerStroke(const players::Player& player,
                                                ShotRecord* rec);
 
 // `stroke` perturbed by `noise` (its normal draws from SampleSeed(seed, 0) on), played to rest
-// on `motion`, the balls hanging past a pocket's mouth dropped (DropHangingBalls).
+// on `motion`, the balls hanging past a pocket's mouth dropped (DropHangingBalls); the
+// simulation's events copied to `events` when it is given (PlayToRest).
 choice::StrokeResult ExecuteWithNoise(const table::TableGeometry& table,
                                       const physics::ModelParameters& params,
                                       const std::vector<table::SceneBall>& balls,
                                       const physics::CueStroke& stroke,
                                       const params::ExecutionNoise& noise, std::uint64_t seed,
-                                      const choice::Motion& motion);
+                                      const choice::Motion& motion,
+                                      std::vector<table::TableEvent>* events = nullptr);
 
 // Every ball of `result.rest` resting with its centre past a pocket's mouth line (the line
 // TableGeometry::OnSurface does not let a placed ball cross) moved into that pocket: an object

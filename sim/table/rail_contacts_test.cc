@@ -6,17 +6,12 @@
 
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
+#include "sim/table/testing/events.h"
 
 namespace billiard::table {
 namespace {
 
-TableEvent Event(EventType type, int ball, int other = -1) {
-  TableEvent e;
-  e.type = type;
-  e.ball = ball;
-  e.other = other;
-  return e;
-}
+using testing::Event;
 
 // A kick: the cue ball's own cushion before the contact does not count; after it, every ball
 // that meets a cushion or a jaw counts once, and a pocket is no rail.

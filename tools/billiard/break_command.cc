@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "planner/game/break_scratches.h"
 #include "planner/game/break_search.h"
 #include "sim/batch/thread_pool.h"
 #include "sim/batch/wilson.h"
@@ -34,13 +35,15 @@ struct BenchBreakArgs {
   int samples = 400;
   std::uint64_t seed = 1;
   int threads = batch::DefaultThreadCount();
-  std::vector<double> given;  // --break: offset, aim, speed, tip
+  std::vector<double> given;  // --break: offset, aim, speed, tip[, behind]
   bool search = false;
   int search_samples = 200;
   int rounds = 2;
   int refinements = 0;
+  double max_behind = 0.0;
   double max_scratch = 0.05;
   double scratch_z = 1.0;
+  bool scratches = false;  // --scratches: the optimised break's scratches by pocket and path
   bool json = false;
 };
 
@@ -56,11 +59,37 @@ nlohmann::json BreakJson(const game::Break& b, const game::BreakRates& r) {
           {"aim_radii", b.aim},
           {"speed_mps", b.speed},
           {"tip_height_radii", b.tip_height},
+          {"behind_m", b.behind},
           {"samples", r.samples},
           {"legal", RateJson(r.legal, r.samples)},
           {"potted", RateJson(r.potted, r.samples)},
           {"legal_and_potted", RateJson(r.kept, r.samples)},
           {"scratch", RateJson(r.scratches, r.samples)}};
+}
+
+// `t` as JSON: each (pocket, path) and its count, and each path's count and mean balls met.
+nlohmann::json ScratchTallyJson(const game::ScratchTally& t) {
+  nlohmann::json rows = nlohmann::json::array(), paths = nlohmann::json::object();
+  for (const auto& [key, count] : t.by_pocket_and_path) {
+    rows.push_back({{"pocket", key.first}, {"path", key.second}, {"count", count}});
+  }
+  for (const auto& [path, count] : t.by_path) {
+    paths[path] = {{"count", count},
+                   {"mean_balls_met", static_cast<double>(t.balls_met.at(path)) / count}};
+  }
+  return {
+      {"samples", t.samples}, {"scratches", t.scratches}, {"by_pocket", rows}, {"by_path", paths}};
+}
+
+// The scratch tally on stderr, a line per pocket and path.
+void ReportScratches(const nlohmann::json& j) {
+  std::cerr << "scratches by pocket and path (" << j["scratches"].get<int>() << " of "
+            << j["samples"].get<int>() << " racks):" << std::endl;
+  for (const nlohmann::json& row : j["by_pocket"]) {
+    const std::string pocket = row["pocket"].get<std::string>();
+    std::cerr << "  " << (pocket.empty() ? "(past a mouth)" : pocket) << ", "
+              << row["path"].get<std::string>() << ": " << row["count"].get<int>() << std::endl;
+  }
 }
 
 // One line on stderr: the break and its rates.
@@ -70,16 +99,20 @@ void Report(const std::string& name, const nlohmann::json& j) {
   std::cerr << std::setprecision(3) << name << ": cue ball " << j["cue_offset_m"].get<double>()
             << " m off the axis, aim " << j["aim_radii"].get<double>() << " R, "
             << j["speed_mps"].get<double>() << " m/s, tip " << j["tip_height_radii"].get<double>()
-            << " R: legal and potted " << rate("legal_and_potted") << " (95 % "
-            << kept[0].get<double>() << " to " << kept[1].get<double>() << "), legal "
+            << " R, " << j["behind_m"].get<double>()
+            << " m behind the head string: legal and potted " << rate("legal_and_potted")
+            << " (95 % " << kept[0].get<double>() << " to " << kept[1].get<double>() << "), legal "
             << rate("legal") << ", potted " << rate("potted") << ", scratch " << rate("scratch")
             << " of " << j["samples"].get<int>() << " racks" << std::endl;
 }
 
-// --break's four numbers as a break.
+// --break's four or five numbers as a break.
 game::Break BreakOf(const std::vector<double>& v) {
+  if (v.size() != 4 && v.size() != 5) throw UsageError("--break: 4 or 5 numbers");
   for (double x : v) RequireFinite(x, "--break");
-  return {v[0], v[1], v[2], v[3]};
+  const double behind = v.size() == 5 ? v[4] : 0.0;
+  if (behind < 0) throw UsageError("--break: the place behind the head string must be >= 0");
+  return {v[0], v[1], v[2], v[3], behind};
 }
 
 void Run(const BenchBreakArgs& args) {
@@ -98,7 +131,8 @@ void Run(const BenchBreakArgs& args) {
   }
   const physics::ModelParameters params = LoadParametersOption(params::kDefaultParameterSet);
   const table::TableGeometry table = LoadTableOption(params::kDefaultTable);
-  const game::BreakSetting setting{table, params, game, noise, model_choice::TableMotion(params)};
+  const game::BreakSetting setting{table, params, game, noise, model_choice::TableMotion(params),
+                                   &robot};
   batch::ThreadPool pool(args.threads);
   game::Break optimised = game::StoredBreak(game);
   if (!args.given.empty()) optimised = BreakOf(args.given);
@@ -106,7 +140,7 @@ void Run(const BenchBreakArgs& args) {
       {"game", args.game}, {"noise", args.noise}, {"robot", robot.name}, {"seed", args.seed}};
   if (args.search) {
     game::BreakSearchOptions options;
-    options.ranges = {robot.speed.max, robot.max_tip_offset};
+    options.ranges = {robot.speed.max, robot.max_tip_offset, args.max_behind};
     options.samples = args.search_samples;
     options.rounds = args.rounds;
     options.refinements = args.refinements;
@@ -137,6 +171,11 @@ void Run(const BenchBreakArgs& args) {
          : args.given.empty() ? "stored break"
                               : "given break",
          j["optimised"]);
+  if (args.scratches) {
+    j["optimised"]["scratch_paths"] = ScratchTallyJson(
+        game::TallyBreakScratches(setting, optimised, args.samples, args.seed, pool));
+    ReportScratches(j["optimised"]["scratch_paths"]);
+  }
   if (args.json) std::cout << j.dump() << std::endl;
 }
 
@@ -166,9 +205,10 @@ void AddBenchBreakCommand(CLI::App& app) {
   cmd->add_option("--break", args->given,
                   "A break to measure instead of the stored one (with --search, the search's "
                   "start): the cue ball's offset from the long axis [m], the aim [ball "
-                  "radii], the speed [m/s], the tip height [ball radii]")
-      ->expected(4)
-      ->delimiter(',');
+                  "radii], the speed [m/s], the tip height [ball radii], optionally the place "
+                  "behind the head string [m] (0)")
+      ->delimiter(',')
+      ->expected(4, 5);
   cmd->add_flag("--search", args->search,
                 "Search the break again (on racks seeded apart from the measured ones)");
   cmd->add_option("--search-samples", args->search_samples, "Racks each candidate is played on")
@@ -182,6 +222,11 @@ void AddBenchBreakCommand(CLI::App& app) {
                   "best")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-behind", args->max_behind,
+                  "The search: how far behind the head string it places the cue ball [m] (0: "
+                  "on it); the cue raised as the robot's needs to clear the head rail")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-scratch", args->max_scratch,
                   "The search: the scratch rate's upper bound a break must keep within")
       ->capture_default_str()
@@ -190,6 +235,9 @@ void AddBenchBreakCommand(CLI::App& app) {
                   "The search: the normal quantile of that one-sided Wilson bound (1: 84 %)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--scratches", args->scratches,
+                "Also count the measured break's scratches by pocket and by the cue ball's path "
+                "after its last ball contact (direct, off rails, hanging, no ball)");
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
   cmd->callback([args] { Run(*args); });
 }
