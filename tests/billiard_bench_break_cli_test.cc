@@ -85,6 +85,16 @@ TEST(BilliardBenchBreak, ScratchesAreClassedAndTheKitchenIsReached) {
   const nlohmann::json behind = Bench("--game nine-ball --break=-0.3,0,8,0,0.2")["optimised"];
   EXPECT_EQ(behind["behind_m"], 0.2);
   EXPECT_EQ(Bench("--game nine-ball")["optimised"]["behind_m"], 0.0);
+  EXPECT_EQ(behind["failed"], 0);
+}
+
+// A break from the head cushion's nose (0.635 m behind the head string of the 9-ft table) cannot
+// be played: every rack counted as failed, with the reason, and none kept.
+TEST(BilliardBenchBreak, ABreakThatCannotBePlayedSaysSo) {
+  const nlohmann::json b = Bench("--game nine-ball --break=0,0,8,0,0.635")["optimised"];
+  EXPECT_EQ(b["failed"], b["samples"]);
+  EXPECT_EQ(b["legal_and_potted"]["count"], 0);
+  EXPECT_NE(b["first_failure"].get<std::string>().find("off the kitchen"), std::string::npos);
 }
 
 TEST(BilliardBenchBreak, TheSameFiguresWhateverTheThreads) {

@@ -191,7 +191,10 @@ std::vector<BreakRates> EvaluateBreaks(const BreakSetting& setting,
   for (std::size_t job = 0; job < outcomes.size(); ++job) {
     BreakRates& r = rates[job / n];
     ++r.samples;
-    if (!outcomes[job].ok()) continue;  // a throw: a break that did nothing
+    if (!outcomes[job].ok()) {  // a break that could not be played: it kept nothing
+      if (r.failed++ == 0) r.first_failure = outcomes[job].error;
+      continue;
+    }
     const BreakOutcome& o = *outcomes[job].value;
     r.legal += o.legal;
     r.potted += o.potted;

@@ -47,6 +47,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "planner/choice/monte_carlo.h"
@@ -101,6 +102,11 @@ struct BreakRates {
   int potted = 0;     // an object ball dropped, legal or not
   int kept = 0;       // legal and an object ball dropped: the breaker stays at the table
   int scratches = 0;  // the cue ball dropped
+  // Racks the break could not be played on (the cue ball's place off the kitchen, no elevation
+  // the robot's cue clears at): counted as breaks that kept nothing, and said, with the first
+  // reason, so that a rate of 0 is never a failure in disguise.
+  int failed = 0;
+  std::string first_failure;
 };
 
 // What the search plays on: the game (nine-ball or eight-ball), its rack, the table's noise.

@@ -103,6 +103,20 @@ TEST_F(BreakSearchTest, TheCueIsRaisedOnlyWhereItMustClear) {
   EXPECT_GT(*least.elevation, 0.0);
 }
 
+// A break the table cannot play (the cue ball's place on the head cushion's nose) keeps nothing
+// on every rack, and says why rather than passing for a break that pots nothing.
+TEST_F(BreakSearchTest, ABreakThatCannotBePlayedIsCountedAndSaysWhy) {
+  Break off;
+  off.behind = 0.25 * table_.length;
+  batch::ThreadPool pool(2);
+  const BreakRates r = EvaluateBreaks(setting_, {off, Break{}}, 10, kHeldOutSeed, pool)[0];
+  EXPECT_EQ(r.samples, 10);
+  EXPECT_EQ(r.failed, 10);
+  EXPECT_EQ(r.kept, 0);
+  EXPECT_NE(r.first_failure.find("off the kitchen"), std::string::npos) << r.first_failure;
+  EXPECT_EQ(EvaluateBreaks(setting_, {Break{}}, 10, kHeldOutSeed, pool)[0].failed, 0);
+}
+
 // A roll too soft to reach four rails, potting nothing, is never a legal break; the counts nest
 // (kept within legal and within potted).
 TEST_F(BreakSearchTest, ASoftRollIsNeverALegalBreak) {

@@ -64,7 +64,9 @@ nlohmann::json BreakJson(const game::Break& b, const game::BreakRates& r) {
           {"legal", RateJson(r.legal, r.samples)},
           {"potted", RateJson(r.potted, r.samples)},
           {"legal_and_potted", RateJson(r.kept, r.samples)},
-          {"scratch", RateJson(r.scratches, r.samples)}};
+          {"scratch", RateJson(r.scratches, r.samples)},
+          {"failed", r.failed},
+          {"first_failure", r.first_failure}};
 }
 
 // `t` as JSON: each (pocket, path) and its count, and each path's count and mean balls met.
@@ -104,6 +106,10 @@ void Report(const std::string& name, const nlohmann::json& j) {
             << " (95 % " << kept[0].get<double>() << " to " << kept[1].get<double>() << "), legal "
             << rate("legal") << ", potted " << rate("potted") << ", scratch " << rate("scratch")
             << " of " << j["samples"].get<int>() << " racks" << std::endl;
+  if (const int failed = j["failed"].get<int>()) {
+    std::cerr << name << ": " << failed << " racks could not be played ("
+              << j["first_failure"].get<std::string>() << ")" << std::endl;
+  }
 }
 
 // --break's four or five numbers as a break.
