@@ -174,7 +174,9 @@ std::optional<TableRegion> ClothWithBalls(const cv::Mat& bgr, const TableSearch&
   std::vector<TableRegion> regions;
   if (search.cloth) regions.push_back(ClothOnly(*search.cloth));
   for (const TableRegion& other : search.other_cloths) regions.push_back(ClothOnly(other));
-  if (regions.empty()) return std::nullopt;
+  if (regions.size() < 2) {  // nothing to choose between: no blobs to weigh
+    return regions.empty() ? std::nullopt : std::optional<TableRegion>(regions.front());
+  }
   std::vector<double> support;
   for (const TableRegion& region : regions) {
     const std::optional<BallScale> balls =

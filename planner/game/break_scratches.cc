@@ -1,14 +1,12 @@
 #include "planner/game/break_scratches.h"
 
+#include "sim/table/rail_contacts.h"
+
 namespace billiard::game {
 
 namespace {
 
 constexpr int kCueBall = 0;
-
-bool IsRail(const table::TableEvent& e) {
-  return e.type == table::EventType::kBallCushion || e.type == table::EventType::kBallJaw;
-}
 
 // Whether `e` is a ball-ball impact of the cue ball (either side of the pair).
 bool CueBallMeetsBall(const table::TableEvent& e) {
@@ -38,7 +36,7 @@ std::optional<ScratchRecord> CueBallScratch(const std::vector<table::TableEvent>
     if (CueBallMeetsBall(e)) {
       ++r.balls_met;
       r.rails = 0;  // rails count from the last ball contact
-    } else if (e.ball == kCueBall && IsRail(e)) {
+    } else if (e.ball == kCueBall && table::IsRailContact(e.type)) {
       ++r.rails;
     } else if (e.ball == kCueBall && e.type == table::EventType::kBallPocket) {
       r.pocket = e.pocket;

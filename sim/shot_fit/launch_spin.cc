@@ -26,7 +26,6 @@ LaunchSpin SpinOf(const MeasuredLaunch& launch) {
   if (!launch.ok || !launch.launch_seen || !launch.rolling_seen || v0.squaredNorm() == 0.0) {
     return out;
   }
-  out.seen = true;
   out.spin_velocity = (v1 - kLaunchShare * v0) / kSpinShare;
   out.ratio = RatioOf(v0, out.spin_velocity);
   // q = 7/2 (v1 . v0) / |v0|^2 - 5/2: its gradient over (v0, v1), then the launch fit's

@@ -4,13 +4,9 @@
 
 namespace billiard::table {
 
-namespace {
-
-bool IsRail(EventType type) {
+bool IsRailContact(EventType type) {
   return type == EventType::kBallCushion || type == EventType::kBallJaw;
 }
-
-}  // namespace
 
 std::vector<int> BallsToRailAfterFirstContact(const std::vector<TableEvent>& events, int id) {
   std::vector<int> ids;
@@ -18,7 +14,7 @@ std::vector<int> BallsToRailAfterFirstContact(const std::vector<TableEvent>& eve
   for (const TableEvent& e : events) {
     if (!contact) {
       contact = e.type == EventType::kBallBall && (e.ball == id || e.other == id);
-    } else if (IsRail(e.type)) {
+    } else if (IsRailContact(e.type)) {
       ids.push_back(e.ball);
     }
   }

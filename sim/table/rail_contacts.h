@@ -16,6 +16,9 @@
 
 namespace billiard::table {
 
+// Whether an event of `type` is a rail contact (a cushion's nose or a jaw's).
+bool IsRailContact(EventType type);
+
 // The ids of the balls that meet a cushion or a jaw in `events` after ball `id` first meets a
 // ball, each once, ascending; none when it meets no ball.
 std::vector<int> BallsToRailAfterFirstContact(const std::vector<TableEvent>& events, int id);
