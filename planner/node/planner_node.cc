@@ -127,9 +127,7 @@ cue_command_t PlannerNode::Answer(const shot_request_t& q) const {
   }
   // The cue clears the balls on the table now: a remembered ball the estimator no longer sees
   // (pocketed, or of a rack cleared away) is no obstacle, though a request may still name it.
-  std::vector<const ball_state_t*> on_table;
-  if (latest_table_) on_table = BallsOf(*latest_table_);
-  return AnswerToPoint(q, state, on_table, table_, params_, options_, std::move(c));
+  return AnswerToPoint(q, state, OnTable(), table_, params_, options_, std::move(c));
 }
 
 const players::Player& PlannerNode::PlayerFor(const shot_request_t& q) const {
@@ -139,13 +137,15 @@ const players::Player& PlannerNode::PlayerFor(const shot_request_t& q) const {
   return *made->second;
 }
 
+std::vector<const ball_state_t*> PlannerNode::OnTable() const {
+  if (!latest_table_) return {};
+  return BallsOf(*latest_table_);
+}
+
 std::vector<const ball_state_t*> PlannerNode::Candidates(const shot_request_t& q) const {
+  if (q.mode != shot_request_t::MODE_TO_POINT) return OnTable();
   std::vector<const ball_state_t*> balls;
-  if (q.mode != shot_request_t::MODE_TO_POINT) {
-    if (latest_table_) balls = BallsOf(*latest_table_);
-  } else {
-    for (const auto& [id, b] : balls_) balls.push_back(&b);
-  }
+  for (const auto& [id, b] : balls_) balls.push_back(&b);
   return balls;
 }
 
@@ -169,8 +169,7 @@ const ball_state_t* PlannerNode::BallFor(const shot_request_t& q) const {
   if (q.ball_id != shot_request_t::BALL_BY_CLASS) return Named(Candidates(q), q.ball_id, 0);
   // By class among the balls the estimator sees now: one it has lost (pocketed, or of a rack
   // cleared away) is no ball to strike, however sure it was of it.
-  std::vector<const ball_state_t*> seen;
-  if (latest_table_) seen = BallsOf(*latest_table_);
+  const std::vector<const ball_state_t*> seen = OnTable();
   // A choice is made on a whole rack, which has one cue ball: the likeliest, however unsure, or
   // when the estimator names none now, the ball it named the cue ball last.
   if (q.mode != shot_request_t::MODE_CHOOSE && q.mode != shot_request_t::MODE_BREAK) {

@@ -172,6 +172,8 @@ class PlannerNode {
   // std::invalid_argument for a name no player has.
   const players::Player& PlayerFor(const shot_request_t& q) const;
 
+  // The balls of the latest table state, none before the first.
+  std::vector<const ball_state_t*> OnTable() const;
   // The balls a request's balls are looked for among: a pot's, a choice's or a break's, the
   // latest table state's; a point request's, the latest state of every ball.
   std::vector<const ball_state_t*> Candidates(const shot_request_t& q) const;
