@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "planner/choice/rack_value.h"
 #include "planner/pot/pot_planner.h"
 #include "sim/params/execution_noise.h"
 #include "sim/rules/rules.h"
@@ -66,6 +67,7 @@ struct ChoiceOptions {
   int safety_screen_samples = 8;
   int safety_finalists = 3;
   int safety_samples = 48;
+  RunOutRates run_out;  // the safeties' scale: a rack's chance of winning (rack_value.h)
   std::vector<pot::ShotKind> kinds = {pot::ShotKind::kDirect, pot::ShotKind::kBank,
                                       pot::ShotKind::kKick, pot::ShotKind::kCurve};
   pot::PotOptions pot;

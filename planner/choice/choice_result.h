@@ -49,6 +49,7 @@ struct ChoiceResult {
   // Set when a safety was weighed against the best attempt (safety.h) and won: the stroke played.
   std::optional<SafetyStroke> safety;
   double attempt_win = -1.0;  // the best attempt's chance of winning the rack; -1 when not weighed
+  double safety_win = -1.0;   // the best safety's, played or not; -1 when none was weighed
   double decision_us = 0.0;
   int simulations = 0;  // table simulations, plans and executions
 

@@ -9,6 +9,7 @@
 
 #include "planner/choice/lookahead.h"
 #include "planner/choice/placements.h"
+#include "planner/choice/rack_value.h"
 #include "planner/choice/scene_balls.h"
 #include "sim/cue/stroke_limits.h"
 #include "sim/model_choice/model_choice.h"
@@ -217,12 +218,19 @@ double WinChance(const table::TableGeometry& table, double radius,
   const bool called_pot = call && LegalPot(result, call->ball, call->pocket);
   if (eight_ball && Potted(result, kEight) && !(called_pot && call->ball == kEight)) return 0.0;
   const rules::Rules opponent = OpponentRules(options.rules);
+  const int their_run = RunLength(result.rest, opponent);
   if (Fouls(before, result, options.rules)) {
-    return 1.0 - HandChance(table, radius, result.rest, opponent, options.noise);
+    const double hand = HandChance(table, radius, result.rest, opponent, options.noise);
+    return 1.0 - RackWinChance(hand, their_run, options.run_out);
   }
   const bool kept = called_pot || (!eight_ball && !result.pocketed.empty());
-  if (kept) return BestNextShotValue(table, radius, result.rest, options.rules, options.noise);
-  return 1.0 - BestNextShotValue(table, radius, result.rest, opponent, options.noise);
+  if (kept) {
+    return RackWinChance(
+        BestNextShotValue(table, radius, result.rest, options.rules, options.noise),
+        RunLength(result.rest, options.rules), options.run_out);
+  }
+  const double theirs = BestNextShotValue(table, radius, result.rest, opponent, options.noise);
+  return 1.0 - RackWinChance(theirs, their_run, options.run_out);
 }
 
 std::optional<SafetyStroke> BestSafety(const table::TableGeometry& table,
@@ -266,6 +274,7 @@ void ConsiderSafety(const table::TableGeometry& table, const physics::ModelParam
   if (!best) return;
   result->attempt_win = AttemptWin(table, params, balls, *result, options, pool);
   result->simulations += options.safety_samples;
+  result->safety_win = best->win;
   if (best->win <= result->attempt_win) return;
   result->reason = Why(*best, result->attempt_win, *result);
   result->safety = best;

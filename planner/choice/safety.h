@@ -10,25 +10,26 @@
 // best `safety_finalists` `safety_samples` times on the full model the table runs, with the best
 // attempt's own stroke judged alike on the same seeds.
 //
-// The scale, execution by execution (WinChance). Whoever is to shoot next wins the rack with the
-// probability of their best pot as our own screening sees it (BestNextShotValue: the straight
-// ghost-ball estimate of lookahead.h over their legal balls; with ball in hand the best place of
-// placements.h). That is V(layout) = q, the model that the rack belongs to whoever pots next:
-// from the positions a pot leaves, the choice pots 77-92 % of its shots (docs/match.md,
-// docs/benchmarks/game_report.md), so a player who pots mostly keeps the table, and one who
-// misses mostly hands it over. It is coarse: it ignores that a player facing a poor shot may play
-// safe in turn, so it prices a safety's effect on the opponent at its full value. Then
+// The scale, execution by execution (WinChance): the rack's run-out model (rack_value.h). The
+// player to shoot from a table wins with W_m(q): q its best pot as our own screening sees it
+// (BestNextShotValue: the straight ghost-ball estimate of lookahead.h over its legal balls; with
+// ball in hand the best place of placements.h), m the balls it has left to pot (RunLength), the
+// later shots and the other player's visits at the rates ChoiceOptions::run_out measured. Then
 //   - the stroke fouls (no stroke, a scratch, a wrong or no first contact, no ball to a rail or
-//     into a pocket after contact): the opponent has ball in hand, we win 1 - q_hand;
+//     into a pocket after contact): the opponent has ball in hand, we win 1 - W(q_hand);
 //   - we keep the table (the attempt's called ball potted legally; under nine-ball any legal
-//     pot): we win q_us on the table left (1 when the rack is won);
-//   - else the opponent shoots from the table left: we win 1 - q_opp.
+//     pot): we win W(q_us) on the table left (1 when the rack is won);
+//   - else the opponent shoots from the table left: we win 1 - W(q_opp).
 // A safety potting the 8 under eight-ball (uncalled) loses the rack: 0.
-// The attempt so scored is p q_us + (1 - p) (1 - q_opp or 1 - q_hand), P(win) of the brief; a
-// safety is (1 - f)(1 - q_opp) + f (1 - q_hand), f its foul rate. The higher is played.
+// The attempt so scored is p W(q_us) + (1 - p) (1 - W(q_opp) or 1 - W(q_hand)); a safety is
+// (1 - f)(1 - W(q_opp)) + f (1 - W(q_hand)), f its foul rate. The higher is played.
+// The scale it replaced, V = q (whoever pots next wins the rack: the run-out model with both
+// rates 1), priced a safety's effect on the opponent at the whole rack, as if their miss were our
+// win; ours played 167 safeties in 100 nine-ball racks and won 44 of them against the same
+// chooser without safeties (docs/match.md, "The safeties' scale").
 //
 // When: only when the best attempt's confirmed probability is below `safety_below` (0.6) or no
-// pot plans. Above it the attempt wins at least 0.6 q_us and keeps the table 60 % of the time,
+// pot plans. Above it the attempt wins at least 0.6 W(q_us) and keeps the table 60 % of the time,
 // while a safety hands it over every time: on this scale a safety beats it only when the
 // attempt's misses leave an easy shot and its pots a hard one, rare where a pot is that likely.
 // The search costs about what the choice does (some 300 full-model executions), so skipping it

@@ -49,6 +49,7 @@ nlohmann::json ShotJson(const ShotRecord& s) {
   nlohmann::json j;
   j["shot"] = s.number;
   j["visit"] = s.visit;
+  j["player"] = s.player;
   j["break"] = s.break_shot;
   j["ball_in_hand"] = s.ball_in_hand;
   j["cue_placement"] = PointOrNull(s.cue_placement);
@@ -60,6 +61,8 @@ nlohmann::json ShotJson(const ShotRecord& s) {
   j["predicted"] = s.predicted;
   j["likely"] = s.likely;
   j["safety"] = s.safety;
+  j["attempt_win"] = s.attempt_win;
+  j["safety_win"] = s.safety_win;
   j["cue"] = s.stroke ? CueStrokeJson(*s.stroke) : nlohmann::json(nullptr);
   if (s.stroke && s.clearance) j["cue"]["clearance"] = ClearanceJson(*s.clearance);
   j["first_contact"] = s.first_contact;

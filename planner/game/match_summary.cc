@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "planner/game/game_json.h"
+#include "sim/batch/wilson.h"
 #include "sim/rules/match_standing.h"
 
 namespace billiard::game {
@@ -58,6 +60,25 @@ nlohmann::json MatchJson(const MatchRecord& match, const MatchLabels& labels) {
   }
   j["decision_us"] = DecisionJson(every);
   return j;
+}
+
+nlohmann::json RateJson(int count, int trials) {
+  const batch::Interval i = batch::WilsonInterval(count, trials);
+  return {{"count", count},
+          {"of", trials},
+          {"rate", trials ? static_cast<double>(count) / trials : 0.0},
+          {"interval95", {i.lo, i.hi}}};
+}
+
+nlohmann::json RackJson(const RackResult& rack) {
+  nlohmann::json shots = nlohmann::json::array();
+  for (const ShotRecord& s : rack.shots) shots.push_back(ShotJson(s));
+  return {{"rack", rack.rack},
+          {"breaker", rack.breaker},
+          {"winner", rack.winner < 0 ? nlohmann::json(nullptr) : nlohmann::json(rack.winner)},
+          {"reason", rack.reason},
+          {"break_and_run", rack.break_and_run},
+          {"shots", shots}};
 }
 
 }  // namespace billiard::game

@@ -50,4 +50,13 @@ struct MatchLabels {
 // are those the figures hold: the racks won by either player and the undecided ones.
 nlohmann::json MatchJson(const MatchRecord& match, const MatchLabels& labels);
 
+// A count of `trials` with its rate and Wilson 95 % interval: {"count", "of", "rate",
+// "interval95": [lo, hi]} (rate 0 of no trials).
+nlohmann::json RateJson(int count, int trials);
+
+// One rack shot by shot, as `billiard match --shots` logs it a line a rack: {"rack", "breaker",
+// "winner" (null when undecided), "reason", "break_and_run", "shots": [game_json.h's ShotJson,
+// each with its "player"]}.
+nlohmann::json RackJson(const RackResult& rack);
+
 }  // namespace billiard::game

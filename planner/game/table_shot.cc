@@ -25,6 +25,8 @@ std::optional<physics::CueStroke> PlayerStroke(const players::Player& player,
     *balls = choice::WithCueBallAt(*balls, *decided.cue_placement);
   }
   rec->safety = decided.safety.has_value();
+  rec->attempt_win = decided.attempt_win;
+  rec->safety_win = decided.safety_win;
   rec->likely = decided.likely;
   if (const choice::Candidate* c = decided.chosen(); c && !rec->safety) {
     rec->ball = c->plan.ball;

@@ -48,6 +48,11 @@ struct ShotRecord {
   std::string kind;
   double predicted = -1.0;  // the choice's probability, -1 when it has none
   bool safety = false;      // a safety played (planner/choice/safety.h): no call
+  // Where the decision weighed a safety against its best attempt (planner/choice/safety.h): each
+  // one's estimated chance of winning the rack (the safety's whether played or not), -1 when
+  // not weighed (the safety's -1 too when no safety could be played).
+  double attempt_win = -1.0;
+  double safety_win = -1.0;
   bool likely = false;
   // The stroke commanded (the break's, the chosen pot's, the safety's or the fallback), none when
   // there was none; its cue's clearance where the robot's was checked (pot::PotPlan::clearance).

@@ -18,7 +18,6 @@
 #include "planner/game/match_summary.h"
 #include "planner/players/players.h"
 #include "sim/batch/thread_pool.h"
-#include "sim/batch/wilson.h"
 #include "sim/params/execution_noise.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
@@ -54,15 +53,6 @@ struct BenchMatchArgs {
   bool json = false;
 };
 
-// A count of `trials` with its rate and Wilson 95 % interval.
-nlohmann::json RateJson(int count, int trials) {
-  const batch::Interval i = batch::WilsonInterval(count, trials);
-  return {{"count", count},
-          {"of", trials},
-          {"rate", trials ? static_cast<double>(count) / trials : 0.0},
-          {"interval95", {i.lo, i.hi}}};
-}
-
 // One match, ours (A) against `opponent`, as its JSON with the report's figures added.
 nlohmann::json PlayOne(const std::string& game, const std::string& opponent,
                        const BenchMatchArgs& args, const table::TableGeometry& table,
@@ -86,16 +76,16 @@ nlohmann::json PlayOne(const std::string& game, const std::string& opponent,
   j["opponent"] = opponent;
   const game::MatchBreaks b = game::BreaksOf(match);
   j["breaks"] = {{"racks", b.racks},
-                 {"legal", RateJson(b.legal, b.racks)},
-                 {"potted", RateJson(b.potted, b.racks)},
-                 {"legal_and_potted", RateJson(b.kept, b.racks)},
-                 {"scratch", RateJson(b.scratches, b.racks)}};
+                 {"legal", game::RateJson(b.legal, b.racks)},
+                 {"potted", game::RateJson(b.potted, b.racks)},
+                 {"legal_and_potted", game::RateJson(b.kept, b.racks)},
+                 {"scratch", game::RateJson(b.scratches, b.racks)}};
   const std::array<game::OneVisitClears, 2> clears = game::OneVisitClearsOf(match);
   for (int p = 0; p < 2; ++p) {
     nlohmann::json& player = j["players"][p];
-    player["one_visit_clears"] = RateJson(clears[p].clears, clears[p].chances);
-    player["pots_per_attempt"] = RateJson(player["pots"], player["attempts"]);
-    player["safeties_worked"] = RateJson(player["safeties_that_worked"], player["safeties"]);
+    player["one_visit_clears"] = game::RateJson(clears[p].clears, clears[p].chances);
+    player["pots_per_attempt"] = game::RateJson(player["pots"], player["attempts"]);
+    player["safeties_worked"] = game::RateJson(player["safeties_that_worked"], player["safeties"]);
   }
   return j;
 }
@@ -124,7 +114,7 @@ void WinTable(const nlohmann::json& matches, std::ostream& md) {
     const double floor =
         m["opponent"] == players::kOursNoSafety ? kWinAgainstNoSafety : kWinAgainstEasiest;
     md << "| " << m["game"].get<std::string>() << " | " << m["opponent"].get<std::string>()
-       << " | " << m["racks"] << " | " << Percent(RateJson(ours["racks_won"], m["racks"]))
+       << " | " << m["racks"] << " | " << Percent(game::RateJson(ours["racks_won"], m["racks"]))
        << " | " << m["undecided"] << " | " << 100 * floor << " % or more, the interval above 50 % |\n";
   }
 }

@@ -19,6 +19,7 @@
 #include "tools/billiard/burst_command.h"
 #include "tools/billiard/calibrate_command.h"
 #include "tools/billiard/choice_commands.h"
+#include "tools/billiard/fit_run_out_command.h"
 #include "tools/billiard/match_command.h"
 #include "tools/billiard/command_line.h"
 #include "tools/billiard/detect_command.h"
@@ -113,6 +114,7 @@ int main(int argc, char** argv) {
   billiard::cli::AddPlayCommand(app);
   billiard::cli::AddBenchGameCommand(app);
   billiard::cli::AddMatchCommand(app);
+  billiard::cli::AddFitRunOutCommand(app);
   billiard::cli::AddBenchBreakCommand(app);
   billiard::cli::AddBenchMatchCommand(app);
   billiard::cli::AddBenchConstantsCommand(app);

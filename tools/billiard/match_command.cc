@@ -1,5 +1,6 @@
 #include "tools/billiard/match_command.h"
 
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -33,6 +34,7 @@ struct MatchArgs {
   int threads = batch::DefaultThreadCount();
   int shot_limit = 200;
   bool json = false;
+  std::string shots;  // the shot log's file; none when empty
 };
 
 // "A,B": the two players' names.
@@ -72,11 +74,17 @@ void Run(const MatchArgs& args) {
   batch::ThreadPool pool(args.threads);
   const std::array<std::string, 2> names = {std::string(options.players[0]->Name()) + " (A)",
                                             std::string(options.players[1]->Name()) + " (B)"};
+  std::ofstream log;
+  if (!args.shots.empty()) {
+    log.open(args.shots);
+    if (!log) throw UsageError("--shots: cannot write '" + args.shots + "'");
+  }
   game::MatchRecord so_far;
   const game::MatchRecord match =
       game::PlayMatch(table, params, options, pool, [&](const game::RackResult& r) {
         if (r.winner >= 0) ++so_far.players[r.winner].racks_won;
         std::cerr << ProgressLine(r, so_far, names, options.racks) << std::endl;
+        if (log.is_open()) log << game::RackJson(r).dump() << std::endl;
       });
   const nlohmann::json j = game::MatchJson(match, {args.game, args.noise, args.seed});
   for (const nlohmann::json& p : j["players"]) {
@@ -119,6 +127,8 @@ void AddMatchCommand(CLI::App& app) {
   cmd->add_option("--shot-limit", args->shot_limit, "Shots at most in a rack (then undecided)")
       ->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_flag("--json", args->json, "Print one JSON object on stdout (else on stderr)");
+  cmd->add_option("--shots", args->shots,
+                  "Log every rack shot by shot to this file, a JSON line a rack as it ends");
   cmd->callback([args] { Run(*args); });
 }
 
