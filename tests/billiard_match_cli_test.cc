@@ -1,7 +1,10 @@
 // `billiard match` as a user runs it: the documented JSON, the racks and the interval adding up,
-// the same figures whatever --threads, exit 2 for a bad command line.
+// the same figures whatever --threads, exit 2 for a bad command line; its shot log read back by
+// `billiard fit-run-out`.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <string>
 
 #include "tests/support/billiard_command.h"
@@ -62,6 +65,48 @@ TEST(BilliardMatch, ABadCommandLineExitsTwo) {
                            "match --game nine-ball --players ours,ours --racks 0"}) {
     EXPECT_EQ(Billiard(args).status, 2) << args;
   }
+}
+
+// The log holds a line a rack, each shot with its player, and fit-run-out reads it back (its
+// counting is run_out_fit_test's).
+TEST(BilliardMatch, TheShotLogIsARackALineAndFitRunOutReadsIt) {
+  const std::string log = ::testing::TempDir() + "match_shots.jsonl";
+  const nlohmann::json match = Match("--game nine-ball --shots " + log);
+  std::ifstream in(log);
+  std::string line;
+  int racks = 0, shots = 0;
+  while (std::getline(in, line)) {
+    const nlohmann::json rack = nlohmann::json::parse(line);
+    EXPECT_EQ(rack["rack"], racks++);
+    for (const nlohmann::json& s : rack["shots"]) {
+      ++shots;
+      EXPECT_TRUE(s["player"] == 0 || s["player"] == 1) << s;
+      EXPECT_EQ(s["attempt_win"], -1.0);  // easiest-looking weighs no safety
+    }
+  }
+  EXPECT_EQ(racks, 2);
+  EXPECT_GT(shots, 2);
+  for (const char* player : {"0", "1"}) {
+    const std::string args = std::string("fit-run-out ") + log + " --player " + player;
+    const CommandResult r = Billiard(args);
+    ASSERT_EQ(r.status, 0) << args;
+    const nlohmann::json fit = OneObject(r, args);
+    for (const char* rate : {"pot_rate", "arrival_chance"}) {
+      EXPECT_LE(fit[rate]["count"].get<int>(), fit[rate]["of"].get<int>());
+    }
+    EXPECT_EQ(fit["calibration"]["safeties"]["won"]["of"], 0);
+  }
+  std::remove(log.c_str());
+}
+
+TEST(BilliardMatch, FitRunOutRefusesWhatIsNoShotLog) {
+  const std::string bad = ::testing::TempDir() + "not_a_log.jsonl";
+  std::ofstream(bad) << "{\"rack\": 0}\n";
+  const CommandResult r = Billiard("fit-run-out " + bad, /*merge_stderr=*/true);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find(":1: not a rack"), std::string::npos) << r.out;
+  EXPECT_EQ(Billiard("fit-run-out /no/such/log.jsonl").status, 2);
+  std::remove(bad.c_str());
 }
 
 }  // namespace

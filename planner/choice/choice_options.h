@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "planner/choice/rack_value.h"
@@ -67,7 +68,9 @@ struct ChoiceOptions {
   int safety_screen_samples = 8;
   int safety_finalists = 3;
   int safety_samples = 48;
-  RunOutRates run_out;  // the safeties' scale: a rack's chance of winning (rack_value.h)
+  // The safeties' scale, a rack's chance of winning (rack_value.h), at these rates; none: the
+  // rates measured for the game (MeasuredRunOutRates).
+  std::optional<RunOutRates> run_out;
   std::vector<pot::ShotKind> kinds = {pot::ShotKind::kDirect, pot::ShotKind::kBank,
                                       pot::ShotKind::kKick, pot::ShotKind::kCurve};
   pot::PotOptions pot;

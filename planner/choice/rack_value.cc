@@ -34,6 +34,17 @@ int RunLength(const std::vector<table::SceneBall>& balls, rules::Rules rules) {
   }
 }
 
+RunOutRates MeasuredRunOutRates(rules::Rules rules) {
+  switch (rules) {
+    case rules::Rules::kEightBall:
+    case rules::Rules::kEightBallSolids:
+    case rules::Rules::kEightBallStripes:
+      return {368.0 / 486.0, 98.0 / 167.0};
+    default:
+      return {272.0 / 331.0, 74.0 / 168.0};
+  }
+}
+
 double RackWinChance(double first_shot, int balls_to_pot, const RunOutRates& rates) {
   if (balls_to_pot <= 0) return 1.0;
   const double p = rates.pot_rate;

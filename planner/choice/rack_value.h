@@ -36,14 +36,20 @@
 
 namespace billiard::choice {
 
-// The run-out model's two rates: ours-no-safety's in 100 nine-ball racks against ours under the
-// computational-pool noise (`billiard match --game nine-ball --players ours,ours-no-safety
-// --racks 100 --noise computational-pool --seed 1 --shots LOG`, then `billiard fit-run-out LOG
-// --player 1`: 272 of 331 and 74 of 168; docs/match.md, "The safeties' scale").
+// The run-out model's two rates.
 struct RunOutRates {
-  double pot_rate = 0.82;        // a shot after one's own pot keeps the table
-  double arrival_chance = 0.44;  // the first shot after the opponent's miss keeps it
+  double pot_rate = 1.0;        // a shot after one's own pot keeps the table
+  double arrival_chance = 1.0;  // the first shot after the opponent's miss keeps it
 };
+
+// The rates measured for `rules`' game under the computational-pool noise: ours-no-safety's in
+// 100 racks against ours (at nine-ball ours on the scale before this one, at eight-ball on this;
+// `billiard match --game G --players ours,ours-no-safety --racks 100
+// --noise computational-pool --seed 1 --shots LOG`, then `billiard fit-run-out LOG --player 1`;
+// docs/match.md, "The safeties' scale"). Nine-ball (and any other game): 272 of 331 shots after
+// its own pot kept the table, 74 of 168 first shots after a miss. Eight-ball (each group's
+// rules too): 368 of 486 and 98 of 167; more balls to choose from leave a first shot more often.
+RunOutRates MeasuredRunOutRates(rules::Rules rules);
 
 // The balls the player shooting under `rules` must still pot to win on `balls` (the cue ball,
 // id 0, aside): under nine-ball the object balls left; under eight-ball with a group its balls

@@ -29,8 +29,8 @@ TEST(RunLengthTest, CountsTheBallsLeftToPotUnderEachGame) {
 }
 
 TEST(RackWinChanceTest, NoBallLeftIsARackWon) {
-  EXPECT_EQ(RackWinChance(0.0, 0, {}), 1.0);
-  EXPECT_EQ(RackWinChance(0.3, -1, {}), 1.0);
+  EXPECT_EQ(RackWinChance(0.0, 0, {0.8, 0.5}), 1.0);
+  EXPECT_EQ(RackWinChance(0.3, -1, {0.8, 0.5}), 1.0);
 }
 
 // With both rates 1 every shot after the first pots: whoever pots next wins the rack, the scale

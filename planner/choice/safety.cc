@@ -219,18 +219,19 @@ double WinChance(const table::TableGeometry& table, double radius,
   if (eight_ball && Potted(result, kEight) && !(called_pot && call->ball == kEight)) return 0.0;
   const rules::Rules opponent = OpponentRules(options.rules);
   const int their_run = RunLength(result.rest, opponent);
+  const RunOutRates rates = options.run_out.value_or(MeasuredRunOutRates(options.rules));
   if (Fouls(before, result, options.rules)) {
     const double hand = HandChance(table, radius, result.rest, opponent, options.noise);
-    return 1.0 - RackWinChance(hand, their_run, options.run_out);
+    return 1.0 - RackWinChance(hand, their_run, rates);
   }
   const bool kept = called_pot || (!eight_ball && !result.pocketed.empty());
   if (kept) {
     return RackWinChance(
         BestNextShotValue(table, radius, result.rest, options.rules, options.noise),
-        RunLength(result.rest, options.rules), options.run_out);
+        RunLength(result.rest, options.rules), rates);
   }
   const double theirs = BestNextShotValue(table, radius, result.rest, opponent, options.noise);
-  return 1.0 - RackWinChance(theirs, their_run, options.run_out);
+  return 1.0 - RackWinChance(theirs, their_run, rates);
 }
 
 std::optional<SafetyStroke> BestSafety(const table::TableGeometry& table,

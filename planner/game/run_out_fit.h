@@ -12,6 +12,11 @@
 // safeties and all, the model's "pots" being visits that go on. The rack's last shot of an
 // undecided rack (the shot limit) is not counted.
 //
+// Beside the rates, the scale's calibration: where the player weighed a safety against its best
+// attempt (the shot's "attempt_win" and "safety_win"), the estimated chance of winning of the
+// stroke it played, summed, and how many of those racks it won. On a calibrated scale the two
+// agree: the racks are the truth the estimates answer to.
+//
 // Module: billiard::game.
 #pragma once
 
@@ -24,6 +29,14 @@ struct RunOutCounts {
   int continuing_kept = 0;
   int arriving = 0;
   int arriving_kept = 0;
+  // The weighed decisions, by what was played: how many, their estimates' sum, the racks won.
+  struct Weighed {
+    int count = 0;
+    double estimated = 0.0;
+    int won = 0;
+  };
+  Weighed safeties;
+  Weighed attempts;
 };
 
 // Adds the shots of `player` (0 or 1) in `rack` (match_summary.h's RackJson) to `counts`.

@@ -12,6 +12,9 @@ namespace {
 struct Shot {
   int player;
   bool foul = false;
+  double attempt_win = -1.0;  // the weighed decision's estimates; -1 not weighed
+  double safety_win = -1.0;
+  bool safety = false;
 };
 
 // A rack of `shots` (the first the break), won by `winner` (-1: undecided), as its log line.
@@ -24,6 +27,9 @@ nlohmann::json Rack(const std::vector<Shot>& shots, int winner) {
     rec.player = shots[i].player;
     rec.break_shot = i == 0;
     rec.foul = shots[i].foul;
+    rec.attempt_win = shots[i].attempt_win;
+    rec.safety_win = shots[i].safety_win;
+    rec.safety = shots[i].safety;
     rack.shots.push_back(rec);
   }
   return RackJson(rack);
@@ -60,6 +66,21 @@ TEST(RunOutFitTest, TheLastShotOfAnUndecidedRackIsNotCounted) {
   CountRunOut(Rack({{0}, {1}, {0}}, 0), 0, &counts);
   EXPECT_EQ(counts.arriving, 1);
   EXPECT_EQ(counts.arriving_kept, 1);
+}
+
+// Player 0 weighs two decisions in a rack it wins (a safety played at 0.6, an attempt at 0.7)
+// and one in a rack it loses (a safety at 0.5); a shot weighed by nothing is not counted.
+TEST(RunOutFitTest, SumsTheWeighedDecisionsEstimatesAgainstTheRacksWon) {
+  RunOutCounts counts;
+  CountRunOut(Rack({{1}, {0, false, 0.4, 0.6, true}, {1}, {0, false, 0.7, 0.3}, {0}}, 0), 0,
+              &counts);
+  CountRunOut(Rack({{0}, {0, false, 0.45, 0.5, true}, {1}, {0}, {1}}, 1), 0, &counts);
+  EXPECT_EQ(counts.safeties.count, 2);
+  EXPECT_DOUBLE_EQ(counts.safeties.estimated, 1.1);
+  EXPECT_EQ(counts.safeties.won, 1);
+  EXPECT_EQ(counts.attempts.count, 1);
+  EXPECT_DOUBLE_EQ(counts.attempts.estimated, 0.7);
+  EXPECT_EQ(counts.attempts.won, 1);
 }
 
 }  // namespace

@@ -38,14 +38,25 @@ game::RunOutCounts Count(const FitRunOutArgs& args) {
   return counts;
 }
 
+// The weighed decisions of one side: how many, their mean estimate, the racks won.
+nlohmann::json WeighedJson(const game::RunOutCounts::Weighed& w) {
+  return {{"estimated", w.count ? w.estimated / w.count : 0.0},
+          {"won", game::RateJson(w.won, w.count)}};
+}
+
 void Run(const FitRunOutArgs& args) {
   const game::RunOutCounts c = Count(args);
-  const nlohmann::json j = {{"player", args.player},
-                            {"pot_rate", game::RateJson(c.continuing_kept, c.continuing)},
-                            {"arrival_chance", game::RateJson(c.arriving_kept, c.arriving)}};
+  const nlohmann::json j = {
+      {"player", args.player},
+      {"pot_rate", game::RateJson(c.continuing_kept, c.continuing)},
+      {"arrival_chance", game::RateJson(c.arriving_kept, c.arriving)},
+      {"calibration", {{"safeties", WeighedJson(c.safeties)}, {"attempts", WeighedJson(c.attempts)}}}};
   std::cerr << "player " << args.player << ": kept the table on " << c.continuing_kept << " of "
             << c.continuing << " shots after its own pot, on " << c.arriving_kept << " of "
-            << c.arriving << " first shots after the other's miss" << std::endl;
+            << c.arriving << " first shots after the other's miss; safeties weighed and played "
+            << c.safeties.count << ", their racks won " << c.safeties.won << ", estimated "
+            << c.safeties.estimated << "; attempts weighed and played " << c.attempts.count
+            << ", won " << c.attempts.won << ", estimated " << c.attempts.estimated << std::endl;
   std::cout << j.dump() << std::endl;
 }
 
