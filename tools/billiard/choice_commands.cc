@@ -219,6 +219,7 @@ nlohmann::json ChoiceJson(const choice::ChoiceResult& r) {
   j["plays_safe"] = r.safety.has_value();
   j["safety"] = r.safety ? SafetyJson(*r.safety) : nlohmann::json(nullptr);
   j["attempt_win"] = r.attempt_win >= 0 ? nlohmann::json(r.attempt_win) : nlohmann::json(nullptr);
+  j["safety_win"] = r.safety_win >= 0 ? nlohmann::json(r.safety_win) : nlohmann::json(nullptr);
   j["simulations"] = r.simulations;
   j["decision_us"] = r.decision_us;
   return j;
