@@ -50,8 +50,10 @@ void ExpectPureScene(const nlohmann::json& scene, const std::string& what) {
 }
 
 // The cue ball of `scene` struck with `cue` (a stroke as --json prints it): the scene that
-// `simulate --scene` plays the stroke from.
-nlohmann::json Struck(nlohmann::json scene, const nlohmann::json& cue) {
+// `simulate --scene` plays the stroke from. A planned stroke's "clearance" (what the planner
+// found of the robot's cue) is no part of the stroke a scene holds.
+nlohmann::json Struck(nlohmann::json scene, nlohmann::json cue) {
+  cue.erase("clearance");
   for (nlohmann::json& b : scene["balls"]) {
     if (b["id"] == 0) b["cue"] = cue;
   }
