@@ -1,4 +1,5 @@
-// A match's figures summed rack by rack, and written as `billiard match --json` prints them.
+// A match's figures summed rack by rack, and written as `billiard match --json` prints them; a rack
+// shot by shot as `billiard match --shots` logs it.
 //
 // A rack's part of the figures (RackFigures: who won it, whether its breaker ran it out, each
 // player's tally of its shots) depends on the match's seed and the rack's index alone (match.h:
