@@ -7,17 +7,23 @@
 // `pot_rate`, the shots a player leaves itself by position play. A miss hands the table over,
 // the incoming player's first shot potting with `arrival_chance` (what a miss leaves), their
 // later ones with `pot_rate`, both players alike (the opponent valued as we value ourselves).
-// The last pot wins. Let W_m(q) be the shooter's chance of winning; then
+// The last pot wins.
+//
+// Nine-ball's race is one count: both players pot from the same balls. Let W_m(q) be the
+// shooter's chance of winning with m left; then
 //   W_0 = 1,  W_m(q) = q W_{m-1}(pot_rate) + (1 - q) (1 - A_m),  A_m = W_m(arrival_chance),
 // and A_m, which appears on both sides of its own equation, solves in closed form:
 //   A_m = (a W_{m-1}(pot_rate) + 1 - a) / (2 - a),  a = arrival_chance.
+// Eight-ball's is two: each player pots its own group and then the 8, the shooter m balls, the
+// other n. With V(m, n) = W(pot_rate; m, n) and U(m, n) = W(arrival_chance; m, n),
+//   W(q; m, n) = q V(m - 1, n) + (1 - q) (1 - U(n, m)),  V(0, n) = U(0, n) = 1,
+// and U(m, n), U(n, m) solve together, a 2 x 2 linear system, for each pair in order of m + n.
 // The opponent may miss as we do: leaving them a poor shot is worth their chance of missing times
-// ours from what they leave (A_m), not the whole rack, so a safety no longer pays where the pot
-// it declines keeps the table often enough (safety.h).
+// ours from what they leave, not the whole rack, so a safety no longer pays where the pot it
+// declines keeps the table often enough (safety.h).
 //
 // It counts the balls, not where they lie past the first shot: clusters, a ball without a
-// pocket and the opponent playing safe in turn are outside it, and the race a miss hands over is
-// taken as long as the shooter's (under eight-ball the groups' may differ).
+// pocket and the opponent playing safe in turn are outside it.
 //
 // The rates are those of a player that attempts every shot (ours-no-safety), measured on its
 // shots in a match (`billiard fit-run-out`, planner/game/run_out_fit.h). W is then the value of
@@ -57,8 +63,21 @@ RunOutRates MeasuredRunOutRates(rules::Rules rules);
 // (rules::Ruleset::RackOver).
 int RunLength(const std::vector<table::SceneBall>& balls, rules::Rules rules);
 
-// W_m(q) above: the chance that the player to shoot, with `balls_to_pot` balls to pot and a
-// first shot that pots with probability `first_shot`, wins the rack; 1 when balls_to_pot <= 0.
-double RackWinChance(double first_shot, int balls_to_pot, const RunOutRates& rates);
+// The rack's race as it stands: the balls the shooter and the other player must pot, and whether
+// they pot from the same balls (nine-ball) or each from its own group (eight-ball).
+struct Race {
+  int shooter = 0;
+  int other = 0;
+  bool shared = true;
+};
+
+// The race on `balls` for a shooter under `shooter` and an opponent under `other` (their
+// RunLengths; shared unless under eight-ball).
+Race RaceOf(const std::vector<table::SceneBall>& balls, rules::Rules shooter, rules::Rules other);
+
+// W above: the chance that the player to shoot, with a first shot that pots with probability
+// `first_shot`, wins `race`; 1 when the shooter has nothing left to pot, 0 when (two counts)
+// the other has.
+double RackWinChance(double first_shot, const Race& race, const RunOutRates& rates);
 
 }  // namespace billiard::choice

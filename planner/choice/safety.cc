@@ -218,20 +218,20 @@ double WinChance(const table::TableGeometry& table, double radius,
   const bool called_pot = call && LegalPot(result, call->ball, call->pocket);
   if (eight_ball && Potted(result, kEight) && !(called_pot && call->ball == kEight)) return 0.0;
   const rules::Rules opponent = OpponentRules(options.rules);
-  const int their_run = RunLength(result.rest, opponent);
+  const Race theirs = RaceOf(result.rest, opponent, options.rules);
   const RunOutRates rates = options.run_out.value_or(MeasuredRunOutRates(options.rules));
   if (Fouls(before, result, options.rules)) {
     const double hand = HandChance(table, radius, result.rest, opponent, options.noise);
-    return 1.0 - RackWinChance(hand, their_run, rates);
+    return 1.0 - RackWinChance(hand, theirs, rates);
   }
   const bool kept = called_pot || (!eight_ball && !result.pocketed.empty());
   if (kept) {
     return RackWinChance(
         BestNextShotValue(table, radius, result.rest, options.rules, options.noise),
-        RunLength(result.rest, options.rules), rates);
+        RaceOf(result.rest, options.rules, opponent), rates);
   }
-  const double theirs = BestNextShotValue(table, radius, result.rest, opponent, options.noise);
-  return 1.0 - RackWinChance(theirs, their_run, rates);
+  const double next = BestNextShotValue(table, radius, result.rest, opponent, options.noise);
+  return 1.0 - RackWinChance(next, theirs, rates);
 }
 
 std::optional<SafetyStroke> BestSafety(const table::TableGeometry& table,

@@ -13,8 +13,9 @@
 // The scale, execution by execution (WinChance): the rack's run-out model (rack_value.h). The
 // player to shoot from a table wins with W_m(q): q its best pot as our own screening sees it
 // (BestNextShotValue: the straight ghost-ball estimate of lookahead.h over its legal balls; with
-// ball in hand the best place of placements.h), m the balls it has left to pot (RunLength), the
-// later shots and the other player's visits at the rates measured for the game. Then
+// ball in hand the best place of placements.h), the race as it stands (RaceOf: the balls each
+// player has left to pot), the later shots and the other player's visits at the rates measured
+// for the game. Then
 //   - the stroke fouls (no stroke, a scratch, a wrong or no first contact, no ball to a rail or
 //     into a pocket after contact): the opponent has ball in hand, we win 1 - W(q_hand);
 //   - we keep the table (the attempt's called ball potted legally; under nine-ball any legal
