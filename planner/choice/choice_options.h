@@ -6,10 +6,8 @@
 
 #include <cmath>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
-#include "planner/choice/rack_value.h"
 #include "planner/pot/pot_planner.h"
 #include "sim/params/execution_noise.h"
 #include "sim/rules/rules.h"
@@ -68,9 +66,6 @@ struct ChoiceOptions {
   int safety_screen_samples = 8;
   int safety_finalists = 3;
   int safety_samples = 48;
-  // The safeties' scale, a rack's chance of winning (rack_value.h), at these rates; none: the
-  // rates measured for the game (MeasuredRunOutRates).
-  std::optional<RunOutRates> run_out;
   std::vector<pot::ShotKind> kinds = {pot::ShotKind::kDirect, pot::ShotKind::kBank,
                                       pot::ShotKind::kKick, pot::ShotKind::kCurve};
   pot::PotOptions pot;

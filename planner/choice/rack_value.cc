@@ -37,21 +37,12 @@ int RunLength(const std::vector<table::SceneBall>& balls, rules::Rules rules) {
 }
 
 RunOutRates MeasuredRunOutRates(rules::Rules rules) {
-  switch (rules) {
-    case rules::Rules::kEightBall:
-    case rules::Rules::kEightBallSolids:
-    case rules::Rules::kEightBallStripes:
-      return {368.0 / 486.0, 98.0 / 167.0};
-    default:
-      return {272.0 / 331.0, 74.0 / 168.0};
-  }
+  if (rules::IsEightBall(rules)) return {368.0 / 486.0, 98.0 / 167.0};
+  return {272.0 / 331.0, 74.0 / 168.0};
 }
 
 Race RaceOf(const std::vector<table::SceneBall>& balls, rules::Rules shooter, rules::Rules other) {
-  const bool eight_ball = shooter == rules::Rules::kEightBall ||
-                          shooter == rules::Rules::kEightBallSolids ||
-                          shooter == rules::Rules::kEightBallStripes;
-  return {RunLength(balls, shooter), RunLength(balls, other), !eight_ball};
+  return {RunLength(balls, shooter), RunLength(balls, other), !rules::IsEightBall(shooter)};
 }
 
 namespace {

@@ -27,11 +27,6 @@ constexpr double kThicknesses[] = {0.0, 0.3, -0.3, 0.6, -0.6, 0.85, -0.85};
 constexpr double kSpeeds[] = {0.7, 1.1, 1.7, 2.6};
 constexpr int kEight = 8;
 
-bool EightBallFamily(rules::Rules r) {
-  return r == rules::Rules::kEightBall || r == rules::Rules::kEightBallSolids ||
-         r == rules::Rules::kEightBallStripes;
-}
-
 bool Potted(const StrokeResult& result, int ball) {
   return std::any_of(result.pocketed.begin(), result.pocketed.end(),
                      [&](const auto& p) { return p.first == ball; });
@@ -214,12 +209,12 @@ bool Fouls(const std::vector<table::SceneBall>& before, const StrokeResult& resu
 double WinChance(const table::TableGeometry& table, double radius,
                  const std::vector<table::SceneBall>& before, const StrokeResult& result,
                  const std::optional<Call>& call, const ChoiceOptions& options) {
-  const bool eight_ball = EightBallFamily(options.rules);
+  const bool eight_ball = rules::IsEightBall(options.rules);
   const bool called_pot = call && LegalPot(result, call->ball, call->pocket);
   if (eight_ball && Potted(result, kEight) && !(called_pot && call->ball == kEight)) return 0.0;
   const rules::Rules opponent = OpponentRules(options.rules);
   const Race theirs = RaceOf(result.rest, opponent, options.rules);
-  const RunOutRates rates = options.run_out.value_or(MeasuredRunOutRates(options.rules));
+  const RunOutRates rates = MeasuredRunOutRates(options.rules);
   if (Fouls(before, result, options.rules)) {
     const double hand = HandChance(table, radius, result.rest, opponent, options.noise);
     return 1.0 - RackWinChance(hand, theirs, rates);

@@ -27,6 +27,11 @@ const Ruleset& RulesetOf(Rules rules) {
   return any;
 }
 
+bool IsEightBall(Rules rules) {
+  return rules == Rules::kEightBall || rules == Rules::kEightBallSolids ||
+         rules == Rules::kEightBallStripes;
+}
+
 const char* RulesName(Rules rules) { return RulesetOf(rules).Name(); }
 
 std::optional<Rules> ParseRules(const std::string& name) {

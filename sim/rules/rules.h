@@ -22,6 +22,9 @@ enum class Rules { kAny, kNineBall, kEightBall, kEightBallSolids, kEightBallStri
 // The ruleset of `rules` (one for the program's life).
 const Ruleset& RulesetOf(Rules rules);
 
+// Whether `rules` is eight-ball's, on an open table or with a group taken.
+bool IsEightBall(Rules rules);
+
 // "any", "nine-ball", "eight-ball", "eight-ball-solids", "eight-ball-stripes".
 const char* RulesName(Rules rules);
 // std::nullopt for an unknown name.

@@ -29,6 +29,14 @@ TEST(RulesTest, LegalTargetsAreTheGamesOwn) {
   EXPECT_EQ(LegalTargets(Rules::kEightBallStripes, balls), (std::vector<int>{9}));
 }
 
+TEST(RulesTest, EightBallIsTheOpenTableAndEitherGroup) {
+  EXPECT_TRUE(IsEightBall(Rules::kEightBall));
+  EXPECT_TRUE(IsEightBall(Rules::kEightBallSolids));
+  EXPECT_TRUE(IsEightBall(Rules::kEightBallStripes));
+  EXPECT_FALSE(IsEightBall(Rules::kNineBall));
+  EXPECT_FALSE(IsEightBall(Rules::kAny));
+}
+
 TEST(RulesTest, OneRulesetPerGame) {
   EXPECT_EQ(&RulesetOf(Rules::kNineBall), &RulesetOf(Rules::kNineBall));
   EXPECT_NE(&RulesetOf(Rules::kNineBall), &RulesetOf(Rules::kAny));
