@@ -99,11 +99,18 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
   if (scale_settled_) {
     scale_ = BallScale{table_->inverse_depth, options_.ball_radius_px};
   } else {
-    scale_ = ScaleFromBlobs(searched, *table_, cloth_);
+    scale_ = ScaleFromBlobs(searched, *table_, cloth_, LeastPlausibleScale());
     if (!scale_) scale_ = ScaleFromTable(*table_, options_.ball_to_table_width);
   }
   outline_ = TableOutline(bgr, table_->cloth_corners);
   return failure_.empty();
+}
+
+double BallDetector::LeastPlausibleScale() const {
+  if (!table_ || table_->origin == TableOrigin::kClothOnly || CutByFrame(*table_, frame_size_)) {
+    return 0;
+  }
+  return estimator::LeastPlausibleScale(*table_, options_.ball_set);
 }
 
 std::optional<TableRegion> BallDetector::LookForTable(const cv::Mat& bgr) {
@@ -166,7 +173,8 @@ void BallDetector::SettleScale(const cv::Mat& bgr, std::vector<BallDetection>* b
     outline.supporting_rays = kOutlineRays;
     outlines.push_back(outline);
   }
-  const std::optional<BallScale> settled = ScaleFromOutlines(*table_, outlines);
+  const std::optional<BallScale> settled =
+      ScaleFromOutlines(*table_, outlines, LeastPlausibleScale());
   if (!settled) return;  // nothing sure yet: an empty table so far
   scale_settled_ = true;
   const double change = settled->radius_at_centre / scale_->radius_at_centre;

@@ -19,6 +19,10 @@ constexpr double kMaxBlobAspect = 1.55;
 constexpr double kMinBlobFill = 0.75;
 constexpr double kMinScaleSupport = 0.35;
 
+// How much wider than its playing surface a found table may be: the finder's sides are the
+// cushions' noses, a few pixels out at most; a tenth covers that and a perspective's rounding.
+constexpr double kTableWidthTolerance = 1.1;
+
 // The outlines of the compact blobs of not-cloth on the table: mostly single balls, whose radii
 // give the scale.
 std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& table,
@@ -48,8 +52,30 @@ std::vector<BallOutline> BlobOutlines(const cv::Mat& bgr, const TableRegion& tab
 
 }  // namespace
 
+double LargestTableRatio(BallSet set) {
+  // Ball radius over playing-surface width on the largest regulation table: pool, the WPA's 9-ft
+  // (50 in wide, balls 2 1/4 in); snooker, the WPBSA's 12-ft (1778 mm, balls 52.5 mm); carom,
+  // the UMB's match table (1.42 m, balls 61.5 mm); blackball, the WEPF's 7-ft (0.94 m, balls 2 in).
+  switch (set) {
+    case BallSet::kSnooker:
+      return 0.02625 / 1.778;
+    case BallSet::kCarom:
+      return 0.03075 / 1.42;
+    case BallSet::kBlackball:
+      return 0.0254 / 0.94;
+    case BallSet::kPool:
+      break;
+  }
+  return 0.028575 / 1.27;
+}
+
+double LeastPlausibleScale(const TableRegion& table, BallSet set) {
+  return LargestTableRatio(set) * table.PixelsPerWidthAt(table.Centre()) / kTableWidthTolerance;
+}
+
 std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
-                                           const std::vector<BallOutline>& outlines) {
+                                           const std::vector<BallOutline>& outlines,
+                                           double least_plausible) {
   // Each outline's radius at the table's centre (log), weighed by how much of it was seen.
   std::vector<std::pair<double, double>> logs;
   for (const BallOutline& outline : outlines) {
@@ -59,6 +85,12 @@ std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
     }
   }
   if (logs.empty()) return std::nullopt;
+  // The groups are seeded by the plausible outlines where there are any.
+  const auto is_plausible = [&](double log_radius) {
+    return std::exp(log_radius) >= least_plausible;
+  };
+  const bool any_plausible = std::any_of(logs.begin(), logs.end(),
+                                         [&](const auto& v) { return is_plausible(v.first); });
   const double agreement = std::log(kScaleAgreement);
   const auto agreeing_with = [&](double seed) {
     std::vector<std::pair<double, double>> group;
@@ -73,6 +105,7 @@ std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
   };
   double seed = logs.front().first, heaviest = 0;
   for (const auto& [value, w] : logs) {
+    if (any_plausible && !is_plausible(value)) continue;
     const double agreeing = weight(agreeing_with(value));
     if (agreeing > heaviest) {
       heaviest = agreeing;
@@ -96,8 +129,8 @@ BallScale ScaleFromTable(const TableRegion& table, double ball_to_table_width) {
 }
 
 std::optional<BallScale> ScaleFromBlobs(const cv::Mat& bgr, const TableRegion& table,
-                                        const ClothModel& cloth) {
-  return ScaleFromOutlines(table, BlobOutlines(bgr, table, cloth));
+                                        const ClothModel& cloth, double least_plausible) {
+  return ScaleFromOutlines(table, BlobOutlines(bgr, table, cloth), least_plausible);
 }
 
 }  // namespace billiard::estimator

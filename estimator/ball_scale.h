@@ -16,6 +16,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "estimator/ball_class.h"
 #include "estimator/ball_outline.h"
 #include "estimator/cloth_model.h"
 #include "estimator/table_finder.h"
@@ -36,19 +37,33 @@ struct BallScale {
   }
 };
 
+// The least radius at the table's centre [px] that a found table allows its balls: no table is
+// larger, for its balls, than its game's largest regulation table (LargestTableRatio), and the
+// found sides give the width in pixels. There is no such bound above: toy and home tables come
+// in any size (dev2's fou frames: a toy table, balls twice as large for its width as on a 9-ft).
+double LeastPlausibleScale(const TableRegion& table, BallSet set);
+
+// A ball's radius over the playing surface's width on the largest table its set is played on
+// (regulation sizes; ball_scale.cc cites them).
+double LargestTableRatio(BallSet set);
+
 // The scale most of the outlines agree with (within kScaleAgreement), each weighed by the rays
 // that found its edge: the weighted median of the heaviest agreeing group, so that a pocket, a
-// shadow, a half-hidden ball or a piece of a rack among them changes nothing. Empty without
+// shadow, a half-hidden ball or a piece of a rack among them changes nothing. Where some
+// outlines are at least `least_plausible` [px at the table's centre] (LeastPlausibleScale), the
+// heaviest group of those: the pieces of a rack that the cloth's colour breaks up (blue balls on
+// a blue cloth) can outweigh the one ball lying apart, never the table's size. Empty without
 // outlines.
 std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
-                                           const std::vector<BallOutline>& outlines);
+                                           const std::vector<BallOutline>& outlines,
+                                           double least_plausible = 0);
 
 // The scale the compact blobs of not-cloth on the table say (not_cloth.h): blobs about as wide as
 // high and filling their bounding ellipse, mostly single balls, outlined (ball_outline.h) and
-// given to ScaleFromOutlines where enough of their rays found an edge. Empty without such blobs
-// (an empty table, a rack).
+// given to ScaleFromOutlines (with `least_plausible`) where enough of their rays found an edge.
+// Empty without such blobs (an empty table, a rack).
 std::optional<BallScale> ScaleFromBlobs(const cv::Mat& bgr, const TableRegion& table,
-                                        const ClothModel& cloth);
+                                        const ClothModel& cloth, double least_plausible = 0);
 
 // The scale the table's size says, for balls of `ball_to_table_width` (radius over the width of
 // the playing surface, 0.0225 for pool balls on a 9-ft table): for an empty table, or one whose

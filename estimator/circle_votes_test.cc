@@ -12,6 +12,8 @@
 #include "estimator/lab_image.h"
 #include "estimator/table_finder.h"
 #include "estimator/testing/synthetic_table.h"
+#include "sim/params/parameter_sets.h"
+#include "sim/params/table_specs.h"
 
 namespace billiard::estimator {
 namespace {
@@ -124,6 +126,42 @@ TEST(BallScale, MostOutlinesAgreeOnTheScaleWhateverTheOddOnes) {
   // From the table's size: its width times the ball's share of it.
   const double width_px = table.PixelsPerWidthAt(table.Centre());
   EXPECT_NEAR(ScaleFromTable(table, 0.0225).radius_at_centre, 0.0225 * width_px, 1e-9);
+}
+
+TEST(BallScale, NoTableIsLargerForItsBallsThanItsGamesLargest) {
+  const cv::Mat frame = DrawTable({}, kRadius, kSize, kCloth, 3.0, 2);
+  const TableSearch search = FindTable(frame);
+  ASSERT_TRUE(search.table) << search.reason;
+  const TableRegion& table = *search.table;
+  const double width_px = table.PixelsPerWidthAt(table.Centre());
+  // The ratios against the shipped parameter sets and tables: a pool ball on the 9-ft table, a
+  // snooker ball on the 12-ft one.
+  const auto ratio = [](const std::string& set, const std::string& table_name) {
+    return params::LoadParameters(set).ball.radius / params::LoadTableSpec(table_name).width;
+  };
+  EXPECT_NEAR(LargestTableRatio(BallSet::kPool), ratio("pool", "pool-9ft"), 1e-4);
+  EXPECT_NEAR(LargestTableRatio(BallSet::kSnooker), ratio("snooker", "snooker-12ft"), 1e-4);
+  const double least = LeastPlausibleScale(table, BallSet::kPool);
+  EXPECT_LT(least, LargestTableRatio(BallSet::kPool) * width_px);
+  EXPECT_GT(least, 0.85 * LargestTableRatio(BallSet::kPool) * width_px);
+  // Two pieces of a rack, well seen, outweigh the one ball lying apart ...
+  const auto outline = [](double u, double radius, int rays) {
+    BallOutline o;
+    o.centre = {u, 180};
+    o.radius = radius;
+    o.supporting_rays = rays;
+    return o;
+  };
+  const std::vector<BallOutline> outlines = {outline(300, 1.2 * least, 20),
+                                             outline(200, 0.70 * least, 18),
+                                             outline(210, 0.74 * least, 16)};
+  EXPECT_NEAR(ScaleFromOutlines(table, outlines)->radius_at_centre, 0.70 * least, 0.05 * least);
+  // ... but not the table's size: the ball apart is the scale.
+  EXPECT_NEAR(ScaleFromOutlines(table, outlines, least)->radius_at_centre, 1.2 * least,
+              1e-4 * least);
+  // Where nothing is that large, the heaviest group all the same (a table read too large).
+  EXPECT_NEAR(ScaleFromOutlines(table, {outlines[1], outlines[2]}, least)->radius_at_centre,
+              0.70 * least, 0.05 * least);
 }
 
 }  // namespace

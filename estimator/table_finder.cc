@@ -48,6 +48,12 @@ constexpr std::size_t kClothColours = 3;
 // full resolution within a pixel or two of it): the frame's edge, not the cloth's.
 constexpr double kFrameEdgePx = 2.0;
 
+// The search's reduction of a frame of `size`: an integer, since OpenCV's area averaging is
+// much faster by whole factors.
+int SearchReduction(const cv::Size& size) {
+  return static_cast<int>(std::ceil(std::max(size.width, size.height) / kTableSearchSize));
+}
+
 // The homography from the table (long side along x when `long_first`, else along y first and
 // then turned so that x is the long side) to the image of `corners`.
 Eigen::Matrix3d ImageFromTable(const std::array<Eigen::Vector2d, 4>& corners, bool long_first) {
@@ -465,9 +471,7 @@ TableSearch WithOtherCloths(TableSearch search, const cv::Mat& small, double sca
 // corner): no other colour's table is tried. No table found, the others' regions go beside it.
 TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
   if (bgr.empty() || bgr.type() != CV_8UC3) return {std::nullopt, "not a BGR colour frame", std::nullopt};
-  // An integer reduction: OpenCV's area averaging is much faster by whole factors.
-  const int factor = static_cast<int>(std::ceil(std::max(bgr.cols, bgr.rows) / kTableSearchSize));
-  const double scale = 1.0 / factor;
+  const double scale = 1.0 / SearchReduction(bgr.size());
   cv::Mat small;
   cv::resize(bgr, small, {}, scale, scale, cv::INTER_AREA);
   const std::vector<cv::Vec3f> colours = ClothColours(small, kClothColours);
@@ -481,11 +485,7 @@ TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
     bool quadrilateral = false;
     TableSearch search =
         FindTableOfCloth(bgr, small, scale, colours[k], estimate_lens, &quadrilateral);
-    if (k > 0 && search.table &&
-        (search.table->side_out_of_frame >= 0 ||
-         !SidesAlongBorder(search.table->cloth_corners, bgr.size(), kFrameEdgePx / scale).empty())) {
-      continue;
-    }
+    if (k > 0 && search.table && CutByFrame(*search.table, bgr.size())) continue;
     if (search.table) return search;
     if (k == 0 && quadrilateral) return WithOtherCloths(std::move(search), small, scale, colours);
     if (k == 0) first = std::move(search);
@@ -496,5 +496,12 @@ TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
 }  // namespace
 
 TableSearch FindTable(const cv::Mat& bgr) { return FindTable(bgr, true); }
+
+bool CutByFrame(const TableRegion& table, const cv::Size& frame_size) {
+  return table.side_out_of_frame >= 0 ||
+         !SidesAlongBorder(table.cloth_corners, frame_size,
+                           kFrameEdgePx * SearchReduction(frame_size))
+              .empty();
+}
 
 }  // namespace billiard::estimator

@@ -162,4 +162,9 @@ struct TableSearch {
 // and a frame found through a lens is searched twice.
 TableSearch FindTable(const cv::Mat& bgr);
 
+// Whether a table found in a frame of `frame_size` was not seen whole: its cloth's outline runs
+// along the frame's border (within the search's pixel or two), or a side beyond it was completed
+// (table_partial.h).
+bool CutByFrame(const TableRegion& table, const cv::Size& frame_size);
+
 }  // namespace billiard::estimator
