@@ -117,6 +117,28 @@ double SidesResidual(const RadialLens& lens,
   return std::sqrt(squares / std::max<std::size_t>(1, count));
 }
 
+// Whether `lens` leaves no side more bent than through a pinhole, nor than the grid's rounding
+// can explain (kLensMinBow): a lens straightens every side, and a side nearly through the image
+// centre stays straight. A kink in one side (balls over a cushion, a pocket's jaws seen from a
+// low camera) is no lens: the k1 that halves it bends the other sides.
+bool BendsNoSide(const RadialLens& lens, const std::array<std::vector<Eigen::Vector2d>, 4>& sides,
+                 double outline_px) {
+  const auto rms = [&](const RadialLens& through, const std::vector<Eigen::Vector2d>& side) {
+    const std::vector<double> squares = KeptSquaredResiduals(through, side, outline_px);
+    double sum = 0;
+    for (const double s : squares) sum += s;
+    return std::sqrt(sum / std::max<std::size_t>(1, squares.size()));
+  };
+  RadialLens pinhole = lens;
+  pinhole.k1 = 0;
+  const double straight = kLensMinBow * kGridNoise * outline_px;
+  for (const auto& side : sides) {
+    if (side.size() < kLensMinSidePoints) continue;
+    if (rms(lens, side) > std::max(rms(pinhole, side), straight)) return false;
+  }
+  return true;
+}
+
 // The best k1 in the range: the grid's best, refined by golden-section search within a step of it.
 double BestK1(RadialLens lens, const std::array<std::vector<Eigen::Vector2d>, 4>& sides,
               double outline_px) {
@@ -215,6 +237,7 @@ LensEstimate EstimateRadialLens(const std::array<std::vector<Eigen::Vector2d>, 4
   estimate.best_rms_px = SidesResidual(lens, sides, outline_px);
   const auto excess = [&](double rms) { return std::sqrt(std::max(0.0, rms * rms - grid * grid)); };
   if (excess(estimate.best_rms_px) > kLensGain * excess(estimate.pinhole_rms_px)) return estimate;
+  if (!BendsNoSide(lens, sides, outline_px)) return estimate;
   FitCanvas(sides, size, &lens);
   estimate.lens = lens;
   return estimate;

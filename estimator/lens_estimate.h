@@ -18,7 +18,10 @@
 // line, in the image's pixels, over the points not far from it (kLensOutlierSigmas: a middle
 // pocket's notch, an arm across the side, are left out). A lens is accepted only when the sides
 // seen through a pinhole are clearly bent, and the lens clearly straightens them (kLensMinBow,
-// kLensGain): a pinhole frame keeps k1 = 0 and the table found exactly as before.
+// kLensGain) and bends none of them more than a pinhole or the grid does (a lens straightens every
+// side; an outline that turns a corner, seen from a low camera over a rack, is an L that a strong
+// barrel nearly straightens at the other sides' cost): a pinhole frame keeps k1 = 0 and the table
+// found exactly as before.
 #pragma once
 
 #include <Eigen/Core>
