@@ -43,17 +43,6 @@ constexpr double kMaxClothLightness = 85.0, kMinClothChroma = 10.0;
 // The cloth's colours tried (ClothColours): the likeliest, then the next two (a low camera sees
 // the wall behind the table and the floor before it, each of its own colour).
 constexpr std::size_t kClothColours = 3;
-// A side of the cloth's outline within this many search pixels of the frame's edge at both ends
-// runs along it (the region's outline traced on the search's grid, the cloth's line fitted at
-// full resolution within a pixel or two of it): the frame's edge, not the cloth's.
-constexpr double kFrameEdgePx = 2.0;
-
-// The search's reduction of a frame of `size`: an integer, since OpenCV's area averaging is
-// much faster by whole factors.
-int SearchReduction(const cv::Size& size) {
-  return static_cast<int>(std::ceil(std::max(size.width, size.height) / kTableSearchSize));
-}
-
 // The homography from the table (long side along x when `long_first`, else along y first and
 // then turned so that x is the long side) to the image of `corners`.
 Eigen::Matrix3d ImageFromTable(const std::array<Eigen::Vector2d, 4>& corners, bool long_first) {
@@ -496,12 +485,5 @@ TableSearch FindTable(const cv::Mat& bgr, bool estimate_lens) {
 }  // namespace
 
 TableSearch FindTable(const cv::Mat& bgr) { return FindTable(bgr, true); }
-
-bool CutByFrame(const TableRegion& table, const cv::Size& frame_size) {
-  return table.side_out_of_frame >= 0 ||
-         !SidesAlongBorder(table.cloth_corners, frame_size,
-                           kFrameEdgePx * SearchReduction(frame_size))
-              .empty();
-}
 
 }  // namespace billiard::estimator

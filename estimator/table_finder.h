@@ -48,7 +48,9 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
@@ -72,6 +74,15 @@ const char* TableOriginName(TableOrigin origin);
 
 // The table search's resolution: the frame's longer side reduced to at most this many pixels.
 inline constexpr double kTableSearchSize = 400.0;
+// The search's reduction of a frame of `size`: an integer, since OpenCV's area averaging is much
+// faster by whole factors.
+inline int SearchReduction(const cv::Size& size) {
+  return static_cast<int>(std::ceil(std::max(size.width, size.height) / kTableSearchSize));
+}
+// A side of the cloth's outline within this many search pixels of the frame's edge at both ends
+// runs along it (the region's outline traced on the search's grid, the cloth's line fitted at
+// full resolution within a pixel or two of it): the frame's edge, not the cloth's.
+inline constexpr double kFrameEdgePx = 2.0;
 
 // How far in from the cloth's outline the cushions' noses are looked for, in table widths.
 inline constexpr double kMaxCushionWidth = 0.12;

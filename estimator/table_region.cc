@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "estimator/table_edges.h"
+#include "estimator/table_partial.h"
 
 namespace billiard::estimator {
 
@@ -125,6 +126,13 @@ cv::Rect TableRegion::Bounds() const {
     points.emplace_back(static_cast<float>(middle.x()), static_cast<float>(middle.y()));
   }
   return cv::boundingRect(points);
+}
+
+bool CutByFrame(const TableRegion& table, const cv::Size& frame_size) {
+  return table.side_out_of_frame >= 0 ||
+         !SidesAlongBorder(table.cloth_corners, frame_size,
+                           kFrameEdgePx * SearchReduction(frame_size))
+              .empty();
 }
 
 }  // namespace billiard::estimator
