@@ -9,6 +9,7 @@ namespace billiard::choice {
 
 namespace {
 
+// The least arrival chance the two-count race is solved at (RackWinChance).
 constexpr double kLeastArrivalChance = 1e-9;
 
 int Count(const std::vector<table::SceneBall>& balls, rules::Group group) {
@@ -16,36 +17,6 @@ int Count(const std::vector<table::SceneBall>& balls, rules::Group group) {
     return b.id != 0 && rules::GroupOf(b.id) == group;
   }));
 }
-
-}  // namespace
-
-int RunLength(const std::vector<table::SceneBall>& balls, rules::Rules rules) {
-  if (rules::RulesetOf(rules).RackOver(balls)) return 0;
-  const int eight = 1;  // under eight-ball the 8 is potted last
-  switch (rules) {
-    case rules::Rules::kEightBallSolids:
-      return Count(balls, rules::Group::kSolids) + eight;
-    case rules::Rules::kEightBallStripes:
-      return Count(balls, rules::Group::kStripes) + eight;
-    case rules::Rules::kEightBall:
-      return std::min(Count(balls, rules::Group::kSolids), Count(balls, rules::Group::kStripes)) +
-             eight;
-    default:
-      return static_cast<int>(std::count_if(balls.begin(), balls.end(),
-                                            [](const table::SceneBall& b) { return b.id != 0; }));
-  }
-}
-
-RunOutRates MeasuredRunOutRates(rules::Rules rules) {
-  if (rules::IsEightBall(rules)) return {368.0 / 486.0, 98.0 / 167.0};
-  return {272.0 / 331.0, 74.0 / 168.0};
-}
-
-Race RaceOf(const std::vector<table::SceneBall>& balls, rules::Rules shooter, rules::Rules other) {
-  return {RunLength(balls, shooter), RunLength(balls, other), !rules::IsEightBall(shooter)};
-}
-
-namespace {
 
 // Nine-ball's race of one count m: W_m(q), the recursion climbed from W_0 = 1.
 double SharedRace(double first_shot, int m, const RunOutRates& rates) {
@@ -87,6 +58,32 @@ double SeparateRaces(double first_shot, int m, int n, const RunOutRates& rates) 
 }
 
 }  // namespace
+
+int RunLength(const std::vector<table::SceneBall>& balls, rules::Rules rules) {
+  if (rules::RulesetOf(rules).RackOver(balls)) return 0;
+  const int eight = 1;  // under eight-ball the 8 is potted last
+  switch (rules) {
+    case rules::Rules::kEightBallSolids:
+      return Count(balls, rules::Group::kSolids) + eight;
+    case rules::Rules::kEightBallStripes:
+      return Count(balls, rules::Group::kStripes) + eight;
+    case rules::Rules::kEightBall:
+      return std::min(Count(balls, rules::Group::kSolids), Count(balls, rules::Group::kStripes)) +
+             eight;
+    default:
+      return static_cast<int>(std::count_if(balls.begin(), balls.end(),
+                                            [](const table::SceneBall& b) { return b.id != 0; }));
+  }
+}
+
+RunOutRates MeasuredRunOutRates(rules::Rules rules) {
+  if (rules::IsEightBall(rules)) return {368.0 / 486.0, 98.0 / 167.0};
+  return {272.0 / 331.0, 74.0 / 168.0};
+}
+
+Race RaceOf(const std::vector<table::SceneBall>& balls, rules::Rules shooter, rules::Rules other) {
+  return {RunLength(balls, shooter), RunLength(balls, other), !rules::IsEightBall(shooter)};
+}
 
 double RackWinChance(double first_shot, const Race& race, const RunOutRates& rates) {
   if (race.shooter <= 0) return 1.0;
