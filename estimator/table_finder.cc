@@ -226,24 +226,23 @@ RadialLens OutlineLens(const std::vector<cv::Point>& outline, const std::vector<
   return EstimateRadialLens(sides, size, 1.0 / scale).lens;
 }
 
-// The side of the found table that is the frame's border, where its end is out of the frame
-// (table_partial.h): seen from overhead, shorter than a table, and one side of its cloth along
-// the border.
-std::optional<int> EndOutOfFrame(const TableRegion& table, const cv::Size& size,
-                                 double border_px) {
-  if (DepthRatio(table.corners) > kOverheadDepthRatio) return std::nullopt;
-  if (OverheadAspect(table.corners) >= kTableAspect) return std::nullopt;
+// The side of the found table that is the frame's border, where part of it is out of the frame
+// (table_partial.h): one side of its cloth along the border.
+std::optional<int> SideOutOfFrame(const TableRegion& table, const cv::Size& size,
+                                  double border_px) {
   const std::vector<int> along = SidesAlongBorder(table.cloth_corners, size, border_px);
   if (along.size() != 1) return std::nullopt;
   return along.front();
 }
 
 // The table with its side `cut` beyond the frame's border: the playing surface and the cloth's
-// outline completed to a table's proportions, the cloth's unseen end as far beyond the surface's
-// as the seen one is.
+// outline completed to a table's proportions, the cloth's unseen side as far beyond the surface's
+// as the seen opposite one is. Left as found where the completion is not a table seen from
+// overhead, the one view the completion holds for (an oblique view's near side cut by the frame
+// is a side of the table seen whole, as far as the homography is concerned).
 void CompleteAcrossBorder(int cut, TableRegion* table) {
   const auto corners = CompletedAcrossBorder(table->corners, cut, kTableAspect);
-  if (!corners) return;
+  if (!corners || DepthRatio(*corners) > kOverheadDepthRatio) return;
   const int end_a = (cut + 2) % 4, end_b = (cut + 3) % 4;
   for (const auto& [border, end] : {std::pair{(cut + 1) % 4, end_a}, std::pair{cut, end_b}}) {
     const Eigen::Vector2d along = ((*corners)[border] - table->corners[end]).normalized();
@@ -400,12 +399,12 @@ TableSearch FindTableOfCloth(const cv::Mat& bgr, const cv::Mat& small, double sc
   if (!Intersections(lines, &table.corners)) {
     return {std::nullopt, "no table: two neighbouring cushions do not meet", cloth};
   }
-  if (const auto cut = EndOutOfFrame(table, bgr.size(), kFrameEdgePx / scale)) {
+  if (const auto cut = SideOutOfFrame(table, bgr.size(), kFrameEdgePx / scale)) {
     CompleteAcrossBorder(*cut, &table);
   }
-  // A completed table's cut side is an end: the sides beside it are the long ones.
+  // A completed table is seen from overhead: its long sides are the long ones in the frame.
   const bool long_side_first =
-      table.side_out_of_frame >= 0 ? table.side_out_of_frame % 2 == 1 : long_first;
+      table.side_out_of_frame >= 0 ? LongSideFirst(table.corners, bgr.size()) : long_first;
   return Placed(std::move(table), long_side_first, cloth);
 }
 

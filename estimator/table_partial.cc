@@ -23,6 +23,37 @@ double SeenDistance(double t, double vanishing) {
   return std::isfinite(vanishing) ? t / (1.0 + t / vanishing) : t;
 }
 
+// The rectangle whose seen part is `corners`, cut along side `cut`, its unseen side `ratio` times
+// the seen opposite side's length from it (CompletedAcrossBorder, with the ratio of one reading).
+std::optional<std::array<Eigen::Vector2d, 4>> ExtendedAcrossBorder(
+    const std::array<Eigen::Vector2d, 4>& corners, int cut, double ratio) {
+  // Side cut + 1 runs from the border to the seen side, side cut + 3 from the seen side back to it.
+  const int border_a = (cut + 1) % 4, end_a = (cut + 2) % 4;
+  const int end_b = (cut + 3) % 4, border_b = cut;
+  const double opposite = (corners[end_a] - corners[end_b]).norm();
+  const Eigen::Vector3d meet =
+      corners[end_a].homogeneous().cross(corners[border_a].homogeneous())
+          .cross(corners[end_b].homogeneous().cross(corners[border_b].homogeneous()));
+  std::array<Eigen::Vector2d, 4> whole = corners;
+  double seen_share = 0;
+  for (const auto& [end, border] : {std::pair{end_a, border_a}, std::pair{end_b, border_b}}) {
+    const Eigen::Vector2d seen = corners[border] - corners[end];
+    const Eigen::Vector2d along = seen.normalized();
+    double vanishing = HUGE_VAL;
+    if (std::abs(meet.z()) > 1e-12 * meet.head<2>().norm()) {
+      vanishing = (meet.hnormalized() - corners[end]).dot(along);
+    }
+    const double length = ratio * opposite;
+    if (std::isfinite(vanishing) && 1.0 + length / vanishing <= 0) return std::nullopt;
+    const double far = SeenDistance(length, vanishing);
+    if (seen.norm() >= far) return std::nullopt;
+    seen_share += 0.5 * seen.norm() / far;
+    whole[border] = corners[end] + far * along;
+  }
+  if (seen_share < kMinSeenShare) return std::nullopt;
+  return whole;
+}
+
 }  // namespace
 
 std::vector<int> SidesAlongBorder(const std::array<Eigen::Vector2d, 4>& corners,
@@ -42,28 +73,10 @@ std::vector<int> SidesAlongBorder(const std::array<Eigen::Vector2d, 4>& corners,
 
 std::optional<std::array<Eigen::Vector2d, 4>> CompletedAcrossBorder(
     const std::array<Eigen::Vector2d, 4>& corners, int cut, double aspect) {
-  // Side cut + 1 runs from the border to the seen end, side cut + 3 from the seen end back to it.
-  const int border_a = (cut + 1) % 4, end_a = (cut + 2) % 4;
-  const int end_b = (cut + 3) % 4, border_b = cut;
-  const double width = (corners[end_a] - corners[end_b]).norm();
-  const Eigen::Vector3d meet =
-      corners[end_a].homogeneous().cross(corners[border_a].homogeneous())
-          .cross(corners[end_b].homogeneous().cross(corners[border_b].homogeneous()));
-  std::array<Eigen::Vector2d, 4> whole = corners;
-  for (const auto& [end, border] : {std::pair{end_a, border_a}, std::pair{end_b, border_b}}) {
-    const Eigen::Vector2d seen = corners[border] - corners[end];
-    const Eigen::Vector2d along = seen.normalized();
-    double vanishing = HUGE_VAL;
-    if (std::abs(meet.z()) > 1e-12 * meet.head<2>().norm()) {
-      vanishing = (meet.hnormalized() - corners[end]).dot(along);
-    }
-    const double length = aspect * width;
-    if (std::isfinite(vanishing) && 1.0 + length / vanishing <= 0) return std::nullopt;
-    const double far = SeenDistance(length, vanishing);
-    if (seen.norm() >= far || seen.norm() < kMinSeenShare * far) return std::nullopt;
-    whole[border] = corners[end] + far * along;
+  for (const double ratio : {aspect, 1.0 / aspect}) {
+    if (const auto whole = ExtendedAcrossBorder(corners, cut, ratio)) return whole;
   }
-  return whole;
+  return std::nullopt;
 }
 
 }  // namespace billiard::estimator
