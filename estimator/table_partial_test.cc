@@ -38,6 +38,26 @@ TEST(TablePartial, TheUnseenEndOfATableSeenSquareOnIsWhereItsProportionsPutIt) {
   }
 }
 
+// The frame's border across a turned table: a long side out, the short sides cut where the border
+// crosses them (80 and 50 % of their length seen: a trapezoid, which alone reads as an oblique view).
+TEST(TablePartial, TheUnseenLongSideOfATableSeenSquareOnIsWhereItsProportionsPutIt) {
+  for (const double turn : {0.0, 0.3}) {
+    const auto whole = Rectangle(turn);
+    std::array<Eigen::Vector2d, 4> seen = whole;
+    seen[2] = whole[1] + 0.8 * (whole[2] - whole[1]);
+    seen[3] = whole[0] + 0.5 * (whole[3] - whole[0]);
+    const auto completed = CompletedAcrossBorder(seen, 2, kAspect);
+    ASSERT_TRUE(completed) << turn;
+    for (int i = 0; i < 4; ++i) EXPECT_LT(((*completed)[i] - whole[i]).norm(), 1e-9) << turn << i;
+  }
+  // Less than kMinSeenShare of the short sides seen, on average: a strip along the long side.
+  const auto whole = Rectangle(0.0);
+  std::array<Eigen::Vector2d, 4> strip = whole;
+  strip[2] = whole[1] + 0.5 * (whole[2] - whole[1]);
+  strip[3] = whole[0] + 0.4 * (whole[3] - whole[0]);
+  EXPECT_FALSE(CompletedAcrossBorder(strip, 2, kAspect));
+}
+
 TEST(TablePartial, WhatIsNotAnEndCutOffIsNotCompleted) {
   const auto whole = Rectangle(0.0);
   // Seen whole (as long as a table): nothing is beyond the border.
@@ -71,13 +91,18 @@ const physics::ModelParameters& Pool() {
   return params;
 }
 
-// The overhead camera moved along the table by `shift` [m] (its far end out of the frame).
-camera::CameraModel MovedAlong(double shift) {
+// The overhead camera moved by `shift` [m] (table frame) and turned by `turn` [rad] about its
+// optical axis.
+camera::CameraModel Moved(const Eigen::Vector3d& shift, double turn = 0.0) {
   camera::CameraModel c = camera::CameraModel::Overhead(Pool().table, 1280, 720);
-  const Eigen::Vector3d centre = c.Centre() + Eigen::Vector3d(shift, 0, 0);
+  const Eigen::Vector3d centre = c.Centre() + shift;
+  c.rotation = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()).toRotationMatrix() * c.rotation;
   c.translation = -c.rotation * centre;
   return c;
 }
+
+// The overhead camera moved along the table by `shift` [m] (its far end out of the frame).
+camera::CameraModel MovedAlong(double shift) { return Moved({shift, 0, 0}); }
 
 cv::Mat Render(const camera::CameraModel& camera, const cv::Vec3b& cloth) {
   render::RenderOptions options;
@@ -89,8 +114,8 @@ cv::Mat Render(const camera::CameraModel& camera, const cv::Vec3b& cloth) {
 }
 
 // The largest distance [m] between the points of the seen cloth (at the cushions' nose height)
-// and where a found table maps their pixels (x from the end nearest the table's x = 0: which end
-// the finder calls 0 is its convention's).
+// and where a found table maps their pixels, up to the rectangle's symmetries: which corner the
+// finder calls 0, and so the frame's handedness, is its convention's (table_pose.h fixes it).
 double LargestMappingError(const TableRegion& table, const camera::CameraModel& camera) {
   const physics::TableParameters& t = Pool().table;
   const double nose = render::RenderOptions{}.cushion_height;
@@ -99,10 +124,18 @@ double LargestMappingError(const TableRegion& table, const camera::CameraModel& 
     for (double y = 0.05; y < t.width; y += 0.1) {
       const Eigen::Vector2d p(x, y);
       const Eigen::Vector2d pixel = camera.Project(Eigen::Vector3d(x, y, nose));
-      if (pixel.x() < 0 || pixel.x() > camera.width - 1) continue;
+      if (pixel.x() < 0 || pixel.x() > camera.width - 1 || pixel.y() < 0 ||
+          pixel.y() > camera.height - 1) {
+        continue;
+      }
       const Eigen::Vector2d a = table.TableAt(pixel) * t.width;
-      const Eigen::Vector2d b(t.length - a.x(), t.width - a.y());
-      worst = std::max(worst, std::min((a - p).norm(), (b - p).norm()));
+      double nearest = HUGE_VAL;
+      for (const double x : {a.x(), t.length - a.x()}) {
+        for (const double y : {a.y(), t.width - a.y()}) {
+          nearest = std::min(nearest, (Eigen::Vector2d(x, y) - p).norm());
+        }
+      }
+      worst = std::max(worst, nearest);
     }
   }
   return worst;
@@ -128,6 +161,29 @@ TEST(TablePartial, ATableWithAThirdOutOfTheFrameIsMappedAsWellAsTheWholeTable) {
       EXPECT_GE(found.table->side_out_of_frame, 0) << shift;
       EXPECT_LT(LargestMappingError(*found.table, camera), whole_error + kCompletedExtraM) << shift;
     }
+  }
+}
+
+// Turned 12 degrees and moved across the table until the frame's border crosses it (a long side
+// out): the seen cloth is a trapezoid, which the finder would otherwise take for an oblique view
+// of a whole table (its balls' scale then wrong by half at the border: 3 of 12 found in the hard
+// suite's rack). Completed, it is mapped within kCompletedExtraM of the whole table's mapping:
+// 1.3 cm more on the green cloth, whose cut short side is found 6.6 px out (bench/hard_suite.h's
+// turned case: its cushion's top, of the cloth's colour, joins the bed along it), 2.3 cm on the
+// blue (the width is read off the seen long side, between the faces' feet, not the noses).
+TEST(TablePartial, ATableTurnedWithALongSideOutOfTheFrameIsMappedNearlyAsWellAsTheWholeTable) {
+  constexpr double kCompletedExtraM = 0.025, kAcrossM = 0.45 * 1.27, kTurn = 12.0 * M_PI / 180.0;
+  for (const cv::Vec3b& cloth : {cv::Vec3b(40, 120, 30), cv::Vec3b(140, 70, 20)}) {
+    const camera::CameraModel middle = MovedAlong(0.0);
+    const TableSearch whole = FindTable(Render(middle, cloth));
+    ASSERT_TRUE(whole.table) << whole.reason;
+    const camera::CameraModel camera = Moved({0, kAcrossM, 0}, kTurn);
+    const TableSearch found = FindTable(Render(camera, cloth));
+    ASSERT_TRUE(found.table) << found.reason;
+    EXPECT_GE(found.table->side_out_of_frame, 0);
+    EXPECT_EQ(found.table->view, TableView::kOverhead);
+    EXPECT_LT(LargestMappingError(*found.table, camera),
+              LargestMappingError(*whole.table, middle) + kCompletedExtraM);
   }
 }
 
