@@ -1,5 +1,7 @@
 #include "estimator/ball_placement.h"
 
+#include <Eigen/SVD>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,6 +10,7 @@
 #include "estimator/ball_score.h"
 #include "estimator/local_cloth.h"
 #include "estimator/not_cloth.h"
+#include "estimator/table_edges.h"
 
 namespace billiard::estimator {
 
@@ -32,6 +35,12 @@ constexpr double kPocketRadii = 3.0;
 constexpr double kNoseMarginPx = 1.5, kNoseMarginRadii = 0.1;
 constexpr double kOffSurfaceRadii = 0.5;
 constexpr double kOffClothRadii = 0.5;
+// A ball whose centre is beyond that (against the far cushion in a low view, its centre seen above
+// the cushion's foot) is on the table where it touches the cloth (GroundPoint) at least
+// kGroundInsideRadii of its radius inside the noses: a ball against a cushion touches it at the
+// nose's height (63.5 % of its diameter, WPA), its centre 0.96 of a radius inside; the rest is
+// the sides' error. What lies on a cushion's top or face is farther out.
+constexpr double kGroundInsideRadii = 0.5;
 // A ball lies on the cloth: on a circle of kSurroundRadii radii around it (past its shadow's
 // darkest part, short of a touching neighbour's far side), at kSurroundSamples places, what is on
 // the playing surface and not cloth (in any light, local_cloth.h) is another ball kept. An unsure
@@ -91,9 +100,30 @@ bool OnIntruder(const NotClothMap& not_cloth, const cv::Mat& intruders,
 
 }  // namespace
 
+Eigen::Vector2d GroundPoint(const TableRegion& table, const Eigen::Vector2d& centre,
+                            double radius) {
+  const Eigen::JacobiSVD<Eigen::Matrix2d> svd(table.JacobianAt(centre), Eigen::ComputeFullU);
+  const Eigen::Vector2d axes = svd.singularValues();
+  if (!(axes(0) > 0)) return centre;
+  const double sin_elevation = std::clamp(axes(1) / axes(0), 0.0, 1.0);
+  Eigen::Vector2d towards_camera = svd.matrixU().col(1);
+  if (towards_camera.dot(table.inverse_depth.head<2>()) < 0) towards_camera = -towards_camera;
+  return centre +
+         radius * std::sqrt(1.0 - sin_elevation * sin_elevation) * towards_camera;
+}
+
 bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double radius) {
-  if (!table.InsideCloth(centre, -kOffClothRadii * radius)) return false;
-  return !NearPocket(table, centre, radius) || table.Contains(centre, -kOffSurfaceRadii * radius);
+  if (table.InsideCloth(centre, -kOffClothRadii * radius) &&
+      (!NearPocket(table, centre, radius) || table.Contains(centre, -kOffSurfaceRadii * radius))) {
+    return true;
+  }
+  // In an oblique view (a found table's geometry; from overhead the centre is where the ball
+  // touches the cloth), a ball against a cushion: where it touches the cloth, well inside the noses.
+  if (table.view != TableView::kOblique || table.origin == TableOrigin::kClothOnly) return false;
+  const Eigen::Vector2d ground = GroundPoint(table, centre, radius);
+  const Eigen::Vector2d t = table.TableAt(ground);
+  const double inside = std::min(std::min(t.x(), kTableAspect - t.x()), std::min(t.y(), 1.0 - t.y()));
+  return inside >= kGroundInsideRadii * radius / table.PixelsPerWidthAt(ground);
 }
 
 bool InPocketMouth(const TableRegion& table, const Eigen::Vector2d& centre, double radius,

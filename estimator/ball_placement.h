@@ -23,9 +23,20 @@
 
 namespace billiard::estimator {
 
-// Whether a ball of `radius` [px] may be centred at `centre`: within half a radius outside the
-// cloth's outline, and near a pocket (within 3 radii of a corner or the middle of a side) within
-// half a radius outside the cushions' noses.
+// Where a ball of `radius` [px] centred at `centre` [px] touches the cloth, as the camera sees
+// it. The centre is a radius above the cloth, and a height there is seen shifted away from the
+// camera by its length times the cosine of the line of sight's elevation e over the cloth (in the
+// ball's own pixels: `radius` per ball radius). The table's homography gives e where the ball is:
+// a small circle on the cloth looks like an ellipse whose minor over major axis is sin e, its
+// minor axis along the view, pointing to the camera where the inverse depth grows. From overhead
+// (e = 90 degrees) the centre itself; from 15 degrees 0.97 of a radius nearer the camera.
+Eigen::Vector2d GroundPoint(const TableRegion& table, const Eigen::Vector2d& centre, double radius);
+
+// Whether a ball of `radius` [px] may be centred at `centre`: where it touches the cloth
+// (GroundPoint) within half a radius outside the cloth's outline, and near a pocket (within 3
+// radii of a corner or the middle of a side) within half a radius outside the cushions' noses. A
+// ball against the far cushion in a low view has its centre beyond the cushion's foot: from 15
+// degrees some 0.7 of a radius.
 bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double radius);
 
 // Whether an outline scoring `score` is a pocket's mouth rather than a ball: unsure (below

@@ -135,6 +135,9 @@ struct TableRegion {
   double InverseDepthAt(const Eigen::Vector2d& pixel) const;
   // The table point (x in [0, 2], y in [0, 1] on the surface) seen at a pixel.
   Eigen::Vector2d TableAt(const Eigen::Vector2d& pixel) const;
+  // The homography's Jacobian at a pixel: pinhole pixels per table width, along the table's x
+  // (column 0) and y (column 1).
+  Eigen::Matrix2d JacobianAt(const Eigen::Vector2d& pixel) const;
   // Image pixels per table width at a pixel, along the direction the view does not foreshorten
   // (the larger singular value of the homography's Jacobian): how large things on the table at
   // that place look, in pixels, when seen square on.

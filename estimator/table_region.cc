@@ -82,7 +82,7 @@ Eigen::Vector2d TableRegion::TableAt(const Eigen::Vector2d& pixel) const {
   return (image_from_table.inverse() * lens.ToPinhole(pixel).homogeneous()).hnormalized();
 }
 
-double TableRegion::PixelsPerWidthAt(const Eigen::Vector2d& pixel) const {
+Eigen::Matrix2d TableRegion::JacobianAt(const Eigen::Vector2d& pixel) const {
   const Eigen::Vector3d q = TableAt(pixel).homogeneous();
   const Eigen::Matrix3d& h = image_from_table;
   const Eigen::Vector3d p = h * q;
@@ -91,8 +91,13 @@ double TableRegion::PixelsPerWidthAt(const Eigen::Vector2d& pixel) const {
     jacobian(0, j) = (h(0, j) - p.x() / p.z() * h(2, j)) / p.z();
     jacobian(1, j) = (h(1, j) - p.y() / p.z() * h(2, j)) / p.z();
   }
-  return Eigen::JacobiSVD<Eigen::Matrix2d>(jacobian).singularValues()(0) *
-         lens.MagnificationAt(p.hnormalized());
+  return jacobian;
+}
+
+double TableRegion::PixelsPerWidthAt(const Eigen::Vector2d& pixel) const {
+  const Eigen::Vector2d pinhole = (image_from_table * TableAt(pixel).homogeneous()).hnormalized();
+  return Eigen::JacobiSVD<Eigen::Matrix2d>(JacobianAt(pixel)).singularValues()(0) *
+         lens.MagnificationAt(pinhole);
 }
 
 double TableRegion::TableDistancePx(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
