@@ -138,12 +138,19 @@ Eigen::Vector2d RayDirection(int k) {
 
 // The outline judged on the rays in view: supporting_rays, seen_rays and largest_gap counted over
 // the rays whose places on the circle `occluder` does not hide (a gap runs over the rays in view
-// between two supporting ones), unless it hides more than half the circle.
+// between two supporting ones), unless more than half the circle is beyond the occluder's line
+// (its margin, which keeps the occluder's own edge from the fit, hides no part of the ball: a
+// ball centred on the line is half seen, as a set's labels count it).
 void CountSupportInView(const Occluder& occluder, BallOutline* outline) {
+  Occluder line = occluder;
+  line.margin_px = 0;
+  int beyond_line = 0;
   for (int k = 0; k < kOutlineRays; ++k) {
-    outline->hidden[k] = occluder.Hides(outline->centre + outline->radius * RayDirection(k));
+    const Eigen::Vector2d place = outline->centre + outline->radius * RayDirection(k);
+    outline->hidden[k] = occluder.Hides(place);
+    beyond_line += line.Hides(place);
   }
-  if (2 * outline->hidden.count() > kOutlineRays) outline->hidden.reset();
+  if (2 * beyond_line > kOutlineRays) outline->hidden.reset();
   const OutlineRays seen = ~outline->hidden;
   outline->seen_rays = static_cast<int>(seen.count());
   outline->supporting_rays = static_cast<int>((outline->supporting & seen).count());
