@@ -14,12 +14,17 @@
 namespace billiard::bench {
 namespace {
 
-void ExpectWholeTableAndEveryBall(const std::string& condition) {
+// The case's six frames rendered and run through the detector.
+HardSuiteResult RunCase(const std::string& condition) {
   const std::vector<HardFrame> frames =
       RenderHardSuite(params::LoadParameters("pool"), 2026, condition);
-  ASSERT_EQ(frames.size(), 6u);
-  const HardSuiteResult result = RunHardSuite(frames, {});
-  for (std::size_t i = 0; i < frames.size(); ++i) {
+  EXPECT_EQ(frames.size(), 6u);
+  return RunHardSuite(frames, {});
+}
+
+// Every side within tolerance, every ball more than half seen found, nothing false.
+void ExpectWholeTableAndEveryBall(const HardSuiteResult& result) {
+  for (std::size_t i = 0; i < result.detection.frames.size(); ++i) {
     const FrameScore& f = result.detection.frames[i];
     std::fprintf(stderr, "%s: %d of %d found, %d false\n", f.file.c_str(), f.found, f.labels,
                  f.false_detections);
@@ -29,13 +34,17 @@ void ExpectWholeTableAndEveryBall(const std::string& condition) {
   }
 }
 
-TEST(HardSuite, AnArmAcrossTheTableHidesNoSideAndNoBall) { ExpectWholeTableAndEveryBall("arm"); }
+TEST(HardSuite, AnArmAcrossTheTableHidesNoSideAndNoBall) {
+  ExpectWholeTableAndEveryBall(RunCase("arm"));
+}
 
 // The blue cloth's rack: its blue balls and their shadows break the rack's not-cloth into pieces
 // the size of a small ball, which outweighed the cue ball lying apart in the first scale (7.9 px
 // for 13.4), and 10 of the 16 balls were lost. No 9-ft table is that large for its balls
 // (ball_scale.h's LeastPlausibleScale).
-TEST(HardSuite, APlayerLeaningInHidesNoSideAndNoBall) { ExpectWholeTableAndEveryBall("player"); }
+TEST(HardSuite, APlayerLeaningInHidesNoSideAndNoBall) {
+  ExpectWholeTableAndEveryBall(RunCase("player"));
+}
 
 // From 20 degrees above the cloth, over a rack, each short side's outline turned the corner onto
 // the near side, and the lens estimate took the L for a barrel's bow (k1 about -0.7): the table
@@ -44,17 +53,11 @@ TEST(HardSuite, APlayerLeaningInHidesNoSideAndNoBall) { ExpectWholeTableAndEvery
 // centre seen above the cushion's foot (ball_placement.h's GroundPoint), and half behind the
 // near cushion (ball_outline.h: judged on the half in view).
 TEST(HardSuite, FromTwentyDegreesEverySideWithinTwoPixelsAndEveryBallFound) {
-  const std::vector<HardFrame> frames =
-      RenderHardSuite(params::LoadParameters("pool"), 2026, "elevation 20");
-  ASSERT_EQ(frames.size(), 6u);
-  const HardSuiteResult result = RunHardSuite(frames, {});
-  for (std::size_t i = 0; i < frames.size(); ++i) {
-    const FrameScore& f = result.detection.frames[i];
+  const HardSuiteResult result = RunCase("elevation 20");
+  ExpectWholeTableAndEveryBall(result);
+  for (const FrameScore& f : result.detection.frames) {
     ASSERT_TRUE(f.table) << f.file << ": " << f.failure;
     EXPECT_TRUE(f.table->lens.IsPinhole()) << f.file;
-    EXPECT_TRUE(SidesWithin(result, i)) << f.file;
-    EXPECT_EQ(f.found, f.labels) << f.file;
-    EXPECT_EQ(f.false_detections, 0) << f.file;
   }
 }
 
@@ -65,12 +68,8 @@ TEST(HardSuite, FromTwentyDegreesEverySideWithinTwoPixelsAndEveryBallFound) {
 // the border cuts most), nothing false.
 TEST(HardSuite, ATableTurnedWithALongSideOutIsCompletedAndItsBallsFound) {
   constexpr int kMostMissed = 1;
-  const std::vector<HardFrame> frames =
-      RenderHardSuite(params::LoadParameters("pool"), 2026, "out-of-frame turned");
-  ASSERT_EQ(frames.size(), 6u);
-  const HardSuiteResult result = RunHardSuite(frames, {});
-  for (std::size_t i = 0; i < frames.size(); ++i) {
-    const FrameScore& f = result.detection.frames[i];
+  const HardSuiteResult result = RunCase("out-of-frame turned");
+  for (const FrameScore& f : result.detection.frames) {
     ASSERT_TRUE(f.table) << f.file << ": " << f.failure;
     EXPECT_GE(f.table->side_out_of_frame, 0) << f.file;
     EXPECT_EQ(f.table->view, estimator::TableView::kOverhead) << f.file;

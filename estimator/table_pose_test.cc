@@ -251,7 +251,8 @@ camera::CameraModel Moved(const Eigen::Vector3d& by) {
 }
 
 std::vector<NoTable> FramesWithoutATable() {
-  return {{"a long side out of frame", Moved({0, 0.45, 0})}};
+  // Less than half of the width seen (table_partial.h's kMinSeenShare): not completed.
+  return {{"a long side and more than half the width out of frame", Moved({0, 0.8, 0})}};
 }
 
 TEST(TableFallback, WithoutATableTheBallsOnTheClothAreStillFound) {
