@@ -108,8 +108,7 @@ Eigen::Vector2d GroundPoint(const TableRegion& table, const Eigen::Vector2d& cen
   const double sin_elevation = std::clamp(axes(1) / axes(0), 0.0, 1.0);
   Eigen::Vector2d towards_camera = svd.matrixU().col(1);
   if (towards_camera.dot(table.inverse_depth.head<2>()) < 0) towards_camera = -towards_camera;
-  return centre +
-         radius * std::sqrt(1.0 - sin_elevation * sin_elevation) * towards_camera;
+  return centre + radius * std::sqrt(1.0 - sin_elevation * sin_elevation) * towards_camera;
 }
 
 bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double radius) {
@@ -118,11 +117,13 @@ bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double rad
     return true;
   }
   // In an oblique view (a found table's geometry; from overhead the centre is where the ball
-  // touches the cloth), a ball against a cushion: where it touches the cloth, well inside the noses.
+  // touches the cloth), a ball against a cushion: where it touches the cloth, well inside the
+  // noses.
   if (table.view != TableView::kOblique || table.origin == TableOrigin::kClothOnly) return false;
   const Eigen::Vector2d ground = GroundPoint(table, centre, radius);
   const Eigen::Vector2d t = table.TableAt(ground);
-  const double inside = std::min(std::min(t.x(), kTableAspect - t.x()), std::min(t.y(), 1.0 - t.y()));
+  const double inside =
+      std::min(std::min(t.x(), kTableAspect - t.x()), std::min(t.y(), 1.0 - t.y()));
   return inside >= kGroundInsideRadii * radius / table.PixelsPerWidthAt(ground);
 }
 

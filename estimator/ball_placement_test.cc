@@ -69,8 +69,8 @@ constexpr double kLength = 2.54, kWidth = 1.27, kBall = 0.028575;
 camera::CameraModel Beside(double elevation_deg) {
   const Eigen::Vector3d middle(0.5 * kLength, 0.5 * kWidth, 0.0);
   const double e = elevation_deg * M_PI / 180.0;
-  return camera::CameraModel::LookingAt(middle + 3.2 * Eigen::Vector3d(0, -std::cos(e), std::sin(e)),
-                                        middle, 1280, 720, 1.0);
+  const Eigen::Vector3d back(0, -std::cos(e), std::sin(e));
+  return camera::CameraModel::LookingAt(middle + 3.2 * back, middle, 1280, 720, 1.0);
 }
 
 TableRegion SeenBy(const camera::CameraModel& c) {

@@ -39,7 +39,8 @@ TEST(TablePartial, TheUnseenEndOfATableSeenSquareOnIsWhereItsProportionsPutIt) {
 }
 
 // The frame's border across a turned table: a long side out, the short sides cut where the border
-// crosses them (80 and 50 % of their length seen: a trapezoid, which alone reads as an oblique view).
+// crosses them (80 and 50 % of their length seen: a trapezoid, which alone reads as an oblique
+// view).
 TEST(TablePartial, TheUnseenLongSideOfATableSeenSquareOnIsWhereItsProportionsPutIt) {
   for (const double turn : {0.0, 0.3}) {
     const auto whole = Rectangle(turn);
