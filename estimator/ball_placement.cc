@@ -116,10 +116,10 @@ bool OnTable(const TableRegion& table, const Eigen::Vector2d& centre, double rad
       (!NearPocket(table, centre, radius) || table.Contains(centre, -kOffSurfaceRadii * radius))) {
     return true;
   }
-  // In an oblique view (a found table's geometry; from overhead the centre is where the ball
+  // In an oblique view (from overhead, the cloth-only region's too, the centre is where the ball
   // touches the cloth), a ball against a cushion: where it touches the cloth, well inside the
   // noses.
-  if (table.view != TableView::kOblique || table.origin == TableOrigin::kClothOnly) return false;
+  if (table.view != TableView::kOblique) return false;
   const Eigen::Vector2d ground = GroundPoint(table, centre, radius);
   const Eigen::Vector2d t = table.TableAt(ground);
   const double inside =

@@ -50,6 +50,22 @@ std::array<Eigen::Vector2d, 4> PinholeCorners(const RadialLens& lens,
   return pinhole;
 }
 
+// The homography `h` about table point `q`: the pinhole pixel it maps `q` to, and its Jacobian
+// there (pinhole pixels per table width along the table's x and y).
+struct LocalMap {
+  Eigen::Vector2d pinhole;
+  Eigen::Matrix2d jacobian;
+};
+LocalMap LocalMapAt(const Eigen::Matrix3d& h, const Eigen::Vector2d& q) {
+  const Eigen::Vector3d p = h * q.homogeneous();
+  LocalMap map{p.hnormalized(), Eigen::Matrix2d()};
+  for (int j = 0; j < 2; ++j) {
+    map.jacobian(0, j) = (h(0, j) - p.x() / p.z() * h(2, j)) / p.z();
+    map.jacobian(1, j) = (h(1, j) - p.y() / p.z() * h(2, j)) / p.z();
+  }
+  return map;
+}
+
 }  // namespace
 
 bool TableRegion::Contains(const Eigen::Vector2d& pixel, double margin_px) const {
@@ -83,21 +99,13 @@ Eigen::Vector2d TableRegion::TableAt(const Eigen::Vector2d& pixel) const {
 }
 
 Eigen::Matrix2d TableRegion::JacobianAt(const Eigen::Vector2d& pixel) const {
-  const Eigen::Vector3d q = TableAt(pixel).homogeneous();
-  const Eigen::Matrix3d& h = image_from_table;
-  const Eigen::Vector3d p = h * q;
-  Eigen::Matrix2d jacobian;
-  for (int j = 0; j < 2; ++j) {
-    jacobian(0, j) = (h(0, j) - p.x() / p.z() * h(2, j)) / p.z();
-    jacobian(1, j) = (h(1, j) - p.y() / p.z() * h(2, j)) / p.z();
-  }
-  return jacobian;
+  return LocalMapAt(image_from_table, TableAt(pixel)).jacobian;
 }
 
 double TableRegion::PixelsPerWidthAt(const Eigen::Vector2d& pixel) const {
-  const Eigen::Vector2d pinhole = (image_from_table * TableAt(pixel).homogeneous()).hnormalized();
-  return Eigen::JacobiSVD<Eigen::Matrix2d>(JacobianAt(pixel)).singularValues()(0) *
-         lens.MagnificationAt(pinhole);
+  const LocalMap map = LocalMapAt(image_from_table, TableAt(pixel));
+  return Eigen::JacobiSVD<Eigen::Matrix2d>(map.jacobian).singularValues()(0) *
+         lens.MagnificationAt(map.pinhole);
 }
 
 double TableRegion::TableDistancePx(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
