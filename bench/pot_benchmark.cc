@@ -37,8 +37,8 @@ struct Table {
   physics::ModelParameters p;
 };
 
-// What `billiard simulate --scene` makes of the scene with the cue ball launched at v0, w0: its
-// default models (model_choice::TableMotion, Mathavan's cushion), to rest.
+// What `billiard simulate --scene` makes of the scene with the cue ball launched at v0, w0 (and its
+// hop): its default models (model_choice::TableMotion, Mathavan's cushion), to rest.
 struct Check {
   bool potted = false, legal = false;
   int first_contact = -1;
@@ -46,14 +46,14 @@ struct Check {
   Eigen::Vector2d rest = Eigen::Vector2d::Zero();
 };
 
-Check Simulate(const Table& t, std::vector<table::SceneBall> balls, const physics::BallState& launch,
-               int k, const std::string& pocket) {
+Check Simulate(const Table& t, std::vector<table::SceneBall> balls,
+               const table::SceneBall& launched, int k, const std::string& pocket) {
   std::size_t cue = 0, object = 0;
   for (std::size_t i = 0; i < balls.size(); ++i) {
     if (balls[i].id == 0) cue = i;
     if (balls[i].id == k) object = i;
   }
-  balls[cue].state = launch;
+  balls[cue] = launched;
   table::TableSimulationOptions o;
   o.five_dof = model_choice::TableMotion(t.p);
   table::TableSimulation sim(t.geometry, t.p, balls, o);
@@ -67,22 +67,25 @@ Check Simulate(const Table& t, std::vector<table::SceneBall> balls, const physic
   return c;
 }
 
-physics::BallState LaunchOf(const Table& t, const std::vector<table::SceneBall>& balls,
-                            const physics::CueStroke& stroke) {
+table::SceneBall LaunchOf(const Table& t, const std::vector<table::SceneBall>& balls,
+                          const physics::CueStroke& stroke) {
   for (const table::SceneBall& b : balls) {
-    if (b.id == 0) return physics::StrikeBall(stroke, b.state.head<2>(), t.p);
+    if (b.id == 0) return table::Struck(0, stroke, b.state.head<2>(), t.p);
   }
-  return physics::BallState::Zero();
+  return table::SceneBall(0);
 }
 
-physics::BallState PlannedLaunch(const std::vector<table::SceneBall>& balls, const pot::PotPlan& plan) {
+table::SceneBall PlannedLaunch(const std::vector<table::SceneBall>& balls,
+                               const pot::PotPlan& plan) {
   for (const table::SceneBall& b : balls) {
     if (b.id == 0) {
-      return physics::MakeBallState(b.state.x(), b.state.y(), plan.v0.x(), plan.v0.y(),
-                                    plan.w0.x(), plan.w0.y(), plan.w0.z());
+      return {0,
+              physics::MakeBallState(b.state.x(), b.state.y(), plan.v0.x(), plan.v0.y(),
+                                     plan.w0.x(), plan.w0.y(), plan.w0.z()),
+              plan.flight};
     }
   }
-  return physics::BallState::Zero();
+  return table::SceneBall(0);
 }
 
 bool PotsTurned(const Table& t, const PotRun& run, const std::vector<table::SceneBall>& balls,
@@ -197,12 +200,13 @@ PotBenchmarkResult RunPotBenchmark(const PotBenchmarkOptions& options) {
 
 namespace {
 
-// Whether a refusal is the hop's (sim/cue/stroke_limits.h): a stroke that would lift the ball off
-// the cloth, or a pot out of reach at the fastest pace that keeps it down (planner/pot/pace.cc).
+// Whether a refusal is the hop's (sim/cue/stroke_limits.h): a stroke that would hop the ball
+// beyond what the table's motion covers, or a pot out of reach at the fastest pace within it
+// (planner/pot/pace.cc).
 bool HeldByTheHop(const pot::PotPlan& plan) {
   return plan.status != pot::PotStatus::kOk &&
-         (plan.reason.find("lift the ball off the cloth") != std::string::npos ||
-          plan.reason.find("keeps the ball on the cloth") != std::string::npos);
+         (plan.reason.find("would hop the ball") != std::string::npos ||
+          plan.reason.find("whose hop the table's motion covers") != std::string::npos);
 }
 
 // The cue's share: the robot, the elevation every ok plan is played at, the pots refused because
@@ -362,12 +366,14 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
   const nlohmann::json s = PotSummaryJson(r);
   std::ofstream out = OpenForWriting(dir + "/pot_report.md");
   out << "# Potting against the table simulation\n\n"
-      << "`billiard bench-pot --out docs/benchmarks` (seed " << r.options.seed << "): "
-      << r.runs.size() << " seeded layouts of 2-16 balls (planner/pot/testing/pot_layouts.h), every "
+      << "`billiard bench-pot --out docs/benchmarks` (seed " << r.options.seed
+      << "): " << r.runs.size()
+      << " seeded layouts of 2-16 balls (planner/pot/testing/pot_layouts.h), every "
       << r.options.snooker_every << "th on snooker-12ft, the rest on " << params::kDefaultTable
       << "; a random object ball and pocket each, planned with `--kind any`. Every plan is checked "
-      << "on its own: its v0, w0 simulated from the scene with the default models of `billiard "
-      << "simulate --scene` (`--model auto`, Mathavan et al. 2010's cushion). " << Fixed(r.wall_s, 1) << " s in all.\n\n";
+      << "on its own: its v0, w0 and hop simulated from the scene with the default models of "
+      << "`billiard simulate --scene` (`--model auto`, Mathavan et al. 2010's cushion). "
+      << Fixed(r.wall_s, 1) << " s in all.\n\n";
   out << "## Truth\n\n" << s["truth"]["verified"].get<int>() << " of " << s["truth"]["ok"].get<int>()
       << " ok plans pot ball K in pocket P with a legal first contact and no scratch.\n\n";
   for (const PotRun& run : r.runs) {
@@ -376,15 +382,18 @@ void WritePotReport(const PotBenchmarkResult& r, const std::string& dir) {
     }
   }
   const nlohmann::json& cue = s["cue"];
-  out << "\n## The cue\n\nRobot: " << cue["robot"].get<std::string>() << ". The ok plans' cue elevation "
+  out << "\n## The cue\n\nRobot: " << cue["robot"].get<std::string>()
+      << ". The ok plans' cue elevation "
       << "(the least that clears plus 1 deg, planner/pot/cue_elevation.h): median "
       << Fixed(cue["elevation_deg"]["median"].get<double>(), 2) << " deg, p90 "
       << Fixed(cue["elevation_deg"]["p90"].get<double>(), 2) << " deg, max "
-      << Fixed(cue["elevation_deg"]["max"].get<double>(), 2) << " deg; " << cue["elevated"].get<int>() << " of "
-      << s["ok"].get<int>() << " above level. Refused: " << cue["cue_blocked"].get<int>()
+      << Fixed(cue["elevation_deg"]["max"].get<double>(), 2) << " deg; "
+      << cue["elevated"].get<int>() << " of " << s["ok"].get<int>()
+      << " above level. Refused: " << cue["cue_blocked"].get<int>()
       << " cue_blocked (the cue clears at no elevation), " << cue["held_by_hop"].get<int>()
-      << " held by the hop (the reason of the best route tried: its cue would lift the ball off the cloth, "
-      << "or the pot is out of reach at the fastest pace that keeps the ball on it).\n";
+      << " held by the hop (the reason of the best route tried: its cue would hop the ball beyond "
+      << "the tenth of a radius the table's motion covers, or the pot is out of reach at the "
+      << "fastest pace within it).\n";
   WriteCoverage(r, s, out);
   out << "\n## The margin is true\n\n"
       << "On " << s["margin"]["plans"].get<int>() << " plans, every heading " << kMarginGridDeg

@@ -1,7 +1,7 @@
 // The pot planner's benchmark (planner/pot/): seeded layouts (planner/pot/testing/pot_layouts.h)
 // on pool and snooker tables, each pot planned on one core and every plan checked on its own
-// against the table simulation `billiard simulate --scene` runs by default (the launch v0, w0
-// simulated from the scene, independently of the planner's own check):
+// against the table simulation `billiard simulate --scene` runs by default (the launch v0, w0 and
+// the hop simulated from the scene, independently of the planner's own check):
 //  - truth: every "ok" plan pots K in P, without a scratch or a foul first contact;
 //  - coverage: of the pots whose straight ghost-ball line is clear, the share planned; what the
 //    banks, kicks and curves make where it is blocked;

@@ -65,7 +65,7 @@ ShotPlan Judged(ShotPlan plan, const cue::CueClearance& clearance, const ShotReq
   }
   const std::string outside = cue::OutsideRanges(robot, plan.stroke, params.ball.radius);
   if (!outside.empty()) return Refused(std::move(plan), PlanStatus::kUnreachable, "the " + robot.name + " cannot: " + outside);
-  const std::string hop = cue::HopReason(plan.stroke, q.from, params);
+  const std::string hop = cue::HopReason(plan.stroke, q.from, params, cue::kMaxHopOnTheCloth);
   if (!hop.empty()) return Refused(std::move(plan), PlanStatus::kUnreachable, hop);
   return plan;
 }

@@ -10,7 +10,8 @@
 // by the squirt and the refinement, is checked again: where it meets something the plan is made
 // once more at the elevation it needs there, and refused (cue_blocked) where it still does not
 // clear. The request fixes the launch speed (the ball must arrive at its final speed), so there
-// is no pace to choose: a stroke whose elevation would hop the ball beyond cue::kMaxHop is
+// is no pace to choose: a stroke whose elevation would hop the ball beyond
+// cue::kMaxHopOnTheCloth (the lone ball's 5-DOF run keeps it on the cloth) is
 // refused (unreachable) with the hop and the fastest pace that would keep it down, and a stroke
 // beyond the robot's own ranges (its speed, elevation, tip offset) is refused likewise.
 //

@@ -118,9 +118,9 @@ TEST_F(CuePlanningTest, AFastRaisedStrokeThatWouldHopIsRefusedWithTheHop) {
   q.final_speed = 3.0;
   const ShotPlan plan = PlanShotForRobot(q, params_, {}, gantry_);
   EXPECT_EQ(plan.status, PlanStatus::kUnreachable) << plan.reason;
-  EXPECT_NE(plan.reason.find("would lift the ball off the cloth"), std::string::npos) << plan.reason;
+  EXPECT_NE(plan.reason.find("would hop the ball"), std::string::npos) << plan.reason;
   ASSERT_TRUE(plan.clearance);
-  EXPECT_GT(cue::HopHeight(plan.stroke, q.from, params_), cue::kMaxHop);
+  EXPECT_GT(cue::HopHeight(plan.stroke, q.from, params_), cue::kMaxHopOnTheCloth);
   q.from = {1.0, 0.6};
   q.to = {2.0, 0.9};
   const ShotPlan middle = PlanShotForRobot(q, params_, {}, gantry_);

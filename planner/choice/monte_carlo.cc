@@ -83,7 +83,7 @@ StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelP
   for (table::SceneBall& b : start) {
     if (b.id != 0) continue;
     try {
-      b.state = physics::StrikeBall(stroke, Position(b), params);
+      b = table::Struck(b.id, stroke, Position(b), params);
     } catch (const std::invalid_argument&) {
       result.rest = balls;
       return result;

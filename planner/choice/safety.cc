@@ -185,8 +185,9 @@ std::vector<SafetyCandidate> MakeableByCue(const table::TableGeometry& table,
         cue::ElevationFor(table, params.ball.radius, balls, 0, c.stroke, *robot);
     if (!std::holds_alternative<double>(elevation)) continue;
     c.stroke.elevation = std::get<double>(elevation);
-    // Slowed to the fastest pace that keeps the ball on the cloth: the screening plays it so.
-    c.stroke.speed = std::min(c.stroke.speed, cue::HopFreeSpeed(c.stroke, cue_ball, params));
+    // Slowed to the fastest pace whose hop the table's motion covers: the screening plays it so.
+    c.stroke.speed = std::min(
+        c.stroke.speed, cue::HopFreeSpeed(c.stroke, cue_ball, params, cue::TableMaxHop(params)));
     makeable.push_back(c);
   }
   return makeable;

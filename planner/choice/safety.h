@@ -78,7 +78,8 @@ std::vector<SafetyCandidate> SafetyStrokes(double radius, const std::vector<tabl
 
 // `candidates` as `robot`'s cue can make them: each raised to the elevation its cue needs
 // (cue::ElevationFor, the pots' margin included) and slowed where that elevation would hop the
-// ball off the cloth at its pace (to cue::HopFreeSpeed, as the pots' pace is held), dropped where
+// ball beyond what the table's motion covers at its pace (to cue::HopFreeSpeed within
+// cue::TableMaxHop, as the pots' pace is held), dropped where
 // no elevation in the robot's range clears, as a pot would be refused. Without a robot, the
 // candidates as they are (level).
 std::vector<SafetyCandidate> MakeableByCue(const table::TableGeometry& table,

@@ -128,7 +128,8 @@ TEST_F(SafetyTest, CandidatesAreRaisedOverTheRailOrDropped) {
   for (const SafetyCandidate& c : raised) {
     EXPECT_GT(c.stroke.elevation, 0.0);
     EXPECT_TRUE(cue::Clearance(table_, r, balls, 0, c.stroke, gantry).clears);
-    EXPECT_LE(cue::HopHeight(c.stroke, {r + 1e-3, table_.width / 2}, params_), cue::kMaxHop * (1 + 1e-9));
+    EXPECT_LE(cue::HopHeight(c.stroke, {r + 1e-3, table_.width / 2}, params_),
+              cue::TableMaxHop(params_) * (1 + 1e-9));
   }
   EXPECT_EQ(MakeableByCue(table_, params_, balls, std::nullopt, level).size(), level.size());
   gantry.elevation.max = 0.0;

@@ -22,7 +22,8 @@ std::string Millimetres(double metres) {
 
 double TopCueSpeed(const SearchContext& search, const StrokeShape& shape, double heading) {
   double top = std::min(search.params().cue.max_speed,
-                        cue::HopFreeSpeed(shape.At(heading), search.cue_position(), search.params()));
+                        cue::HopFreeSpeed(shape.At(heading), search.cue_position(), search.params(),
+                                          cue::TableMaxHop(search.params())));
   if (const std::optional<cue::Robot>& robot = search.options().robot) top = std::min(top, robot->speed.max);
   return top;
 }
@@ -51,7 +52,8 @@ std::optional<Refusal> CheckCue(const SearchContext& search, const physics::CueS
       return blocked;
     }
   }
-  const std::string hop = cue::HopReason(stroke, search.cue_position(), search.params());
+  const std::string hop = cue::HopReason(stroke, search.cue_position(), search.params(),
+                                         cue::TableMaxHop(search.params()));
   if (!hop.empty()) return Refusal{PotStatus::kNoStroke, hop};
   return std::nullopt;
 }

@@ -9,10 +9,11 @@
 // all simulate the stroke at the elevation it is played at. The final stroke (its heading turned
 // by the aim, its offsets by position play) is checked again.
 //
-// An elevated stroke drives the ball into the slate, and a fast one would hop it off the cloth,
-// which the strike model does not cover (cue::kMaxHop): the pace and position play choose their
-// cue speeds below TopCueSpeed, the fastest that keeps the ball down, so that a route is refused
-// for the hop (no_stroke, with the hop in the reason) only when no pace within it pots.
+// An elevated stroke drives the ball into the slate, which hops it: the table's simulation flies
+// it (sim/physics/hop.h) up to a height (cue::TableMaxHop, a tenth of a radius, where its
+// contacts in the air are still those of the plane): the pace and position play choose their
+// cue speeds below TopCueSpeed, the fastest within it, so that a route is refused for the hop
+// (no_stroke, with the hop in the reason) only when no pace within it pots.
 //
 // Module: billiard::pot.
 #pragma once
@@ -27,8 +28,8 @@
 namespace billiard::pot {
 
 // The fastest cue speed [m/s] for `shape` along `heading`: the cue's top speed
-// (ModelParameters::cue.max_speed, and the robot's where there is one), or below it the fastest that keeps the ball on the cloth
-// (cue::HopFreeSpeed) for an elevated cue.
+// (ModelParameters::cue.max_speed, and the robot's where there is one), or below it the fastest whose hop
+// the table's motion covers (cue::HopFreeSpeed within cue::TableMaxHop) for an elevated cue.
 double TopCueSpeed(const SearchContext& search, const StrokeShape& shape, double heading);
 
 // The elevation [rad] `shape` is to be played at along `heading` with the search's robot: the
@@ -39,7 +40,7 @@ std::variant<double, Refusal> NeededElevation(const SearchContext& search, const
                                               double heading);
 
 // The final stroke's check: it clears with the search's robot (cue_blocked where it does not,
-// with the elevation it would need in Refusal::elevation_needed) and its hop is within cue::kMaxHop
+// with the elevation it would need in Refusal::elevation_needed) and its hop is within cue::TableMaxHop
 // (no_stroke where not). The clearance found, where there is a robot, in `*clearance`.
 std::optional<Refusal> CheckCue(const SearchContext& search, const physics::CueStroke& stroke,
                                 std::optional<cue::CueClearance>* clearance);

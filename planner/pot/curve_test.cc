@@ -1,4 +1,4 @@
-// A curve around a ball, end to end: planned within the hop limit (cue::kMaxHop) at a low
+// A curve around a ball, end to end: planned within the hop limit (cue::TableMaxHop) at a low
 // elevation, and played on the table's own replay (`simulate --scene`'s motion), where the cue
 // ball bends around the ball a straight stroke cannot pass and pots; a curve no hop-free stroke
 // bends enough stays refused.
@@ -44,7 +44,7 @@ TEST_F(CurveTest, ACurveAroundABallIsPlannedWithinTheHopLimitAndBendsAroundItToP
   ExpectLegalPot(balls_, plan);
   EXPECT_EQ(plan.kind, ShotKind::kCurve);
   // Within the hop limit and the gantry's (the default robot's) ranges.
-  EXPECT_LE(cue::HopHeight(plan.stroke, cue_, params_), cue::kMaxHop * (1 + 1e-9));
+  EXPECT_LE(cue::HopHeight(plan.stroke, cue_, params_), cue::TableMaxHop(params_) * (1 + 1e-9));
   EXPECT_EQ(cue::OutsideRanges(params::LoadRobot("gantry"), plan.stroke, params_.ball.radius), "");
   EXPECT_GT(plan.stroke.elevation, 0.0);
   EXPECT_NE(plan.stroke.tip_side, 0.0);

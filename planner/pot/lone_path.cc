@@ -25,8 +25,9 @@ constexpr double kCurveCutSlack = 10.0 * kDegree;
 
 }  // namespace
 
-Passing Pass(SearchContext& search, const BallState& state, const Eigen::Vector2d& point, bool after_rail) {
-  std::vector<SceneBall> alone = {{0, state}};
+Passing Pass(SearchContext& search, const SceneBall& ball, const Eigen::Vector2d& point,
+             bool after_rail) {
+  std::vector<SceneBall> alone = {ball};
   std::unique_ptr<TableSimulation> sim = search.Simulation(alone, false);
   // Run a stretch at a time until the path has passed the point (it draws away again) or
   // the ball rests: a kick's cue ball would go on from cushion to cushion.
@@ -66,12 +67,13 @@ Passing Pass(SearchContext& search, const BallState& state, const Eigen::Vector2
 
 double PassingSide(SearchContext& search, const physics::CueStroke& stroke, const Eigen::Vector2d& point,
                    bool after_rail) {
-  return PassingSide(search, physics::StrikeBall(stroke, search.cue_position(), search.params()), point,
-                     after_rail);
+  return Pass(search, table::Struck(0, stroke, search.cue_position(), search.params()), point,
+              after_rail)
+      .side;
 }
 
 double PassingSide(SearchContext& search, const BallState& state, const Eigen::Vector2d& point, bool after_rail) {
-  return Pass(search, state, point, after_rail).side;
+  return Pass(search, SceneBall{0, state}, point, after_rail).side;
 }
 
 double FirstHeading(SearchContext& search, const Route& route, const StrokeShape& shape,
@@ -100,7 +102,8 @@ double FirstHeading(SearchContext& search, const Route& route, const StrokeShape
 std::optional<Refusal> CurveTooThin(SearchContext& search, const StrokeShape& shape, double heading,
                                     const Eigen::Vector2d& ghost, const Eigen::Vector2d& departure) {
   const Passing pass =
-      Pass(search, physics::StrikeBall(shape.At(heading), search.cue_position(), search.params()), ghost, false);
+      Pass(search, table::Struck(0, shape.At(heading), search.cue_position(), search.params()),
+           ghost, false);
   if (!(std::abs(pass.side) < search.radius()) || pass.velocity.norm() <= 0.0) return std::nullopt;
   const double cut = CutAngle(pass.velocity.normalized(), departure);
   const double limit = search.options().max_cut_deg * kDegree;

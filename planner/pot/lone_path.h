@@ -21,14 +21,14 @@
 
 namespace billiard::pot {
 
-// How a ball's path alone on the table passes a point: the signed distance [m] at its closest
-// approach (left of its travel > 0; infinite where it never does, after its rail if asked) and
-// the ball's velocity there.
+// How the path of `ball` (its state and flight) alone on the table passes a point: the signed
+// distance [m] at its closest approach (left of its travel > 0; infinite where it never does,
+// after its rail if asked) and the ball's velocity there.
 struct Passing {
   double side = std::numeric_limits<double>::infinity();
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
 };
-Passing Pass(SearchContext& search, const physics::BallState& state, const Eigen::Vector2d& point,
+Passing Pass(SearchContext& search, const table::SceneBall& ball, const Eigen::Vector2d& point,
              bool after_rail);
 
 // The signed distance [m] by which the cue ball's path alone on the table, struck with
@@ -36,7 +36,7 @@ Passing Pass(SearchContext& search, const physics::BallState& state, const Eigen
 double PassingSide(SearchContext& search, const physics::CueStroke& stroke, const Eigen::Vector2d& point,
                    bool after_rail);
 
-// The same for a ball that starts in `state`, alone on the table.
+// The same for a ball that starts in `state` on the cloth, alone on the table.
 double PassingSide(SearchContext& search, const physics::BallState& state, const Eigen::Vector2d& point,
                    bool after_rail);
 

@@ -26,12 +26,13 @@ bool Reaim(SearchContext& search, const Route& route, const Eigen::Vector2d& gho
 // K does not reach the pocket at `top`, the fastest stroke there is; where the hop sets it, the
 // elevation that does (what a reader needs to tell the rail behind the cue ball from the pace).
 Refusal NotReached(const SearchContext& search, double top, double elevation) {
-  return Refusal{PotStatus::kNoStroke, "ball " + std::to_string(search.object_id()) + " does not reach " +
-                                           search.pocket().name + " at " + MetresPerSecond(top) +
-                                           ", the fastest stroke " +
-                                           (top < search.params().cue.max_speed
-                                                ? "that keeps the ball on the cloth with the cue at " + Degrees(elevation)
-                                                : std::string("of the cue"))};
+  return Refusal{
+      PotStatus::kNoStroke,
+      "ball " + std::to_string(search.object_id()) + " does not reach " + search.pocket().name +
+          " at " + MetresPerSecond(top) + ", the fastest stroke " +
+          (top < search.params().cue.max_speed
+               ? "whose hop the table's motion covers with the cue at " + Degrees(elevation)
+               : std::string("of the cue"))};
 }
 
 }  // namespace
@@ -40,7 +41,7 @@ std::optional<Refusal> Pace(SearchContext& search, const Route& route, const Eig
                             StrokeShape* shape, Aimed* aimed, double direction) {
   const PotOptions& options = search.options();
   PaceFit& fit = search.pace_fit();
-  // The cue's top speed, or the fastest that keeps an elevated cue's ball on the cloth.
+  // The cue's top speed, or the fastest whose hop the table's motion covers.
   const double top = TopCueSpeed(search, *shape, aimed->heading);
   // A curve is played at the top pace (PlanRoute starts it there): its bend grows with the pace
   // (the slide that bends it lasts in proportion), and within the hop limit it is small at best.

@@ -26,7 +26,7 @@ inline constexpr double kArrivalTolerance = 0.05;
 // The plain pot's pace for `route` (its ghost ball `ghost`): `shape`'s speed and `aimed` moved
 // to it, K sent along `direction`; the search's pace fit updated. A refusal where K does not
 // reach P at the cue's top speed or the cue ball no longer meets K first. A curve keeps the
-// pace it is given, the fastest that keeps the ball on the cloth (its bend grows with the pace):
+// pace it is given, the fastest whose hop the table's motion covers (its bend grows with the pace):
 // a refusal where K does not reach P at it.
 std::optional<Refusal> Pace(SearchContext& search, const Route& route, const Eigen::Vector2d& ghost,
                             StrokeShape* shape, Aimed* aimed, double direction);

@@ -37,7 +37,7 @@ struct Landing {
 };
 
 // The hop of a stroke does not depend on its heading (the strike turns with it, and the bed is
-// level): any heading tells the fastest stroke that keeps the ball on the cloth.
+// level): any heading tells the fastest stroke whose hop the table's motion covers.
 constexpr double kAnyHeading = 0.0;
 
 // A stroke of the search, x = (cue speed, tip height), and where it leaves the cue ball.
@@ -79,7 +79,7 @@ class SideSearch {
  private:
   Eigen::Vector2d Bounded(Eigen::Vector2d x) const {
     x.y() = std::clamp(x.y(), -tip_room_, tip_room_);
-    // An elevated cue's fastest stroke that keeps the ball on the cloth moves with the tip height.
+    // An elevated cue's fastest stroke within the hop covered moves with the tip height.
     x.x() = std::max(kSlowestCue, std::min({x.x(), top_, TopCueSpeed(search_, Shaped(x), kAnyHeading)}));
     return x;
   }

@@ -87,7 +87,7 @@ std::variant<PotPlan, Refusal> PlanRoute(SearchContext& search, const Route& rou
   const std::variant<double, Refusal> elevation = NeededElevation(search, shape, first_heading);
   if (const Refusal* blocked = std::get_if<Refusal>(&elevation)) return *blocked;
   shape.elevation = std::get<double>(elevation);
-  // Its first pace within what keeps the ball on the cloth at that elevation (TopCueSpeed); a
+  // Its first pace within the hop the table's motion covers at that elevation (TopCueSpeed); a
   // curve's at it, where its bend is largest (pace.h).
   const double top = TopCueSpeed(search, shape, first_heading);
   shape.speed = route.kind == ShotKind::kCurve ? top : std::min(shape.speed, top);

@@ -137,6 +137,7 @@ struct PotPlan {
   physics::CueStroke stroke;
   Eigen::Vector2d v0 = Eigen::Vector2d::Zero();  // the cue ball's launch, squirt included
   Eigen::Vector3d w0 = Eigen::Vector3d::Zero();
+  physics::Flight flight;  // the cue ball's hop at launch (table::Struck), for an elevated cue
   double cut_deg = 0.0;  // angle between the cue ball's approach and K's departure
 
   // Heading window: the cue may turn this far either way [deg] (left: counterclockwise) with

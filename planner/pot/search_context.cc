@@ -105,7 +105,7 @@ std::unique_ptr<TableSimulation> SearchContext::Simulation(const std::vector<Sce
 std::unique_ptr<TableSimulation> SearchContext::Launch(const CueStroke& stroke, bool truth, bool whole) {
   std::vector<SceneBall> balls = whole || near_.empty() ? balls_ : near_;
   for (SceneBall& b : balls) {
-    if (b.id == 0) b.state = physics::StrikeBall(stroke, cue_position_, params_);
+    if (b.id == 0) b = table::Struck(0, stroke, cue_position_, params_);
   }
   return Simulation(balls, truth);
 }

@@ -81,6 +81,7 @@ void DescribeShot(const TruthShot& shot, double sample_dt, PotPlan* plan) {
   plan->stroke = shot.stroke;
   plan->v0 = sim.StateAt(cue, 0.0).segment<2>(physics::kVx);
   plan->w0 = sim.StateAt(cue, 0.0).segment<3>(physics::kWx);
+  plan->flight = sim.segments(cue).front().FlightAt(0.0);
   plan->cut_deg = CutAngle(Unit(Angle(shot.aimed.contact.cue_before.segment<2>(physics::kVx))),
                            Unit(shot.aimed.contact.departure)) / kDegree;
   plan->cue_rest = shot.played.outcome.cue_rest;

@@ -31,31 +31,30 @@ std::string Fixed(double value, int digits) {
 double HopHeight(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
                  const physics::ModelParameters& params) {
   const physics::BallState launch = physics::StrikeBall(stroke, position, params);
-  const Eigen::Vector2d along(std::cos(stroke.heading), std::sin(stroke.heading));
-  // The impulse along the cue's axis drives the ball down by its horizontal part times
-  // tan(elevation); the sideways part (squirt) is horizontal.
-  const double down = std::max(0.0, launch.segment<2>(physics::kVx).dot(along)) * std::tan(stroke.elevation);
-  const double up = kBedRestitution * down;
-  return up * up / (2.0 * params.ball.gravity);
+  return physics::Apex({0.0, physics::LaunchUpSpeed(stroke, launch)}, params.ball.gravity);
+}
+
+double TableMaxHop(const physics::ModelParameters& params) {
+  return kMaxHopRadii * params.ball.radius;
 }
 
 double HopFreeSpeed(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
-                    const physics::ModelParameters& params) {
+                    const physics::ModelParameters& params, double max_hop) {
   const double per_speed_squared = HopPerSpeedSquared(stroke, position, params);
   if (per_speed_squared <= 0.0) return std::numeric_limits<double>::infinity();
-  return std::sqrt(kMaxHop / per_speed_squared);
+  return std::sqrt(max_hop / per_speed_squared);
 }
 
 std::string HopReason(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
-                      const physics::ModelParameters& params) {
+                      const physics::ModelParameters& params, double max_hop) {
   const double hop = HopHeight(stroke, position, params);
   // A hop beyond the limit by the strike's rounding alone (the fastest stroke found at one heading,
   // played at another) is within it.
-  if (hop <= kMaxHop * (1.0 + kHopRounding)) return "";
-  return "the cue at " + Fixed(stroke.elevation * 180.0 / M_PI, 1) + " deg and " + Fixed(stroke.speed, 2) +
-         " m/s would lift the ball off the cloth (a hop of " + Fixed(hop * 1e3, 2) + " mm, beyond the " +
-         Fixed(kMaxHop * 1e3, 2) + " mm the strike model's ball on the cloth covers; " +
-         Fixed(HopFreeSpeed(stroke, position, params), 2) + " m/s at most)";
+  if (hop <= max_hop * (1.0 + kHopRounding)) return "";
+  return "the cue at " + Fixed(stroke.elevation * 180.0 / M_PI, 1) + " deg and " +
+         Fixed(stroke.speed, 2) + " m/s would hop the ball " + Fixed(hop * 1e3, 2) +
+         " mm, beyond the " + Fixed(max_hop * 1e3, 2) + " mm its motion covers (" +
+         Fixed(HopFreeSpeed(stroke, position, params, max_hop), 2) + " m/s at most)";
 }
 
 std::variant<double, std::string> ElevationFor(const table::TableGeometry& table, double ball_radius,

@@ -14,13 +14,21 @@
 // rounded top. Where the margin would leave the robot's range, the range's top is used (it still
 // clears). A cue that clears at the robot's lowest elevation is not raised: nothing lies under it.
 //
-// The hop: the strike model keeps the ball on the cloth (the table takes the vertical momentum an
-// elevated cue gives). A real ball hops: it leaves the slate with the restitution e_t of the bed
-// times the speed it was driven down with, v_down = v tan(elevation) for a launch v along the
-// heading, and flies (e_t v_down)^2 / (2 g) high. A stroke whose hop would exceed kMaxHop is one
-// the model does not cover. The strike is linear in the cue speed (Alciatore 2004, TP A.30), so
-// the hop grows with its square, and the fastest stroke of a shape that stays within kMaxHop
-// follows from one strike (HopFreeSpeed): the pace a planner may choose up to.
+// The hop: an elevated cue drives the ball into the slate, which returns e_b of the speed it was
+// driven down with, v_down = v tan(elevation) for a launch v along the heading: the ball flies
+// (e_b v_down)^2 / (2 g) high (sim/physics/hop.h). Each motion covers hops up to a height:
+//  - the table's simulation flies the ball and lands it (sim/table/: airborne), taking its
+//    contacts with other balls in the air as in the plane. A ball h above the cloth meets one at
+//    rest with the line of centres asin(h / 2r) out of the plane: up to kMaxHopRadii, 2.9
+//    degrees, and the planar impact's speed for it is 0.13 % too high (1 - cos), below the
+//    robot's speed noise (1 %, sim/params/noise/robot.json); the part of the impulse into the
+//    cloth (5 %) the cloth takes. A cushion meets a ball in the air lower on it, by its height
+//    (sim/table/table_simulation.cc passes the height to the cushion's impact).
+//  - a lone ball's 5-DOF run (the point planner, the table simulator's shots to a point) keeps
+//    the ball on the cloth: kMaxHopOnTheCloth.
+// The strike is linear in the cue speed (Alciatore 2004, TP A.30), so the hop grows with its
+// square, and the fastest stroke of a shape within a motion's hop follows from one strike
+// (HopFreeSpeed): the pace a planner may choose up to.
 //
 // Module: billiard::cue.
 #pragma once
@@ -33,6 +41,7 @@
 #include "sim/cue/clearance.h"
 #include "sim/cue/robot.h"
 #include "sim/physics/cue_strike.h"
+#include "sim/physics/hop.h"
 #include "sim/physics/parameters.h"
 #include "sim/table/scene.h"
 #include "sim/table/table_geometry.h"
@@ -41,29 +50,31 @@ namespace billiard::cue {
 
 // Above the least clearing elevation, for the aim's turn and the robot's noise (see above) [rad].
 inline constexpr double kElevationMargin = M_PI / 180.0;
-// The slate bed's restitution under a cloth: an assumption of about a half (the bed takes most
-// of the ball's downward speed; not measured here).
-inline constexpr double kBedRestitution = 0.5;
-// The highest hop the model's ball-on-the-cloth is taken to cover [m]: a millimetre's flight
-// lasts 2 sqrt(2 h / g) = 29 ms, about a tenth of a 2 m/s launch's slide on the pool cloth
-// (2 v / (7 mu g) = 0.29 s), the friction the model applies during it then a small error.
-inline constexpr double kMaxHop = 1e-3;
+// The highest hop the table's simulation covers, in ball radii (see above).
+inline constexpr double kMaxHopRadii = 0.1;
+// The highest hop a motion that keeps the ball on the cloth is taken to cover [m]: a millimetre's
+// flight lasts 2 sqrt(2 h / g) = 29 ms, about a tenth of a 2 m/s launch's slide on the pool
+// cloth (2 v / (7 mu g) = 0.29 s), the friction the model applies during it then a small error.
+inline constexpr double kMaxHopOnTheCloth = 1e-3;
+
+// The highest hop [m] the table's simulation covers with `params`' balls: kMaxHopRadii radii.
+double TableMaxHop(const physics::ModelParameters& params);
 
 // The height [m] the ball would hop off the bed after `stroke` from `position` (0 for a level
-// cue), with the bed's restitution kBedRestitution.
+// cue), with the bed's restitution physics::kBedRestitution.
 double HopHeight(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
                  const physics::ModelParameters& params);
 
 // The fastest cue speed [m/s] at which `stroke`'s heading, tip offsets and elevation keep the
-// hop within kMaxHop (its speed is not read); infinity for a level cue.
+// hop within `max_hop` [m] (its speed is not read); infinity for a level cue.
 double HopFreeSpeed(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
-                    const physics::ModelParameters& params);
+                    const physics::ModelParameters& params, double max_hop);
 
-// Why `stroke` would hop the ball beyond kMaxHop, in words ("the cue at 25.0 deg would lift the
-// ball off the cloth (a hop of 8.16 mm, ...)"); empty when it stays on the cloth (within kMaxHop
-// to the strike's rounding, which differs from heading to heading by a few ulps).
+// Why `stroke` would hop the ball beyond `max_hop` [m], in words ("the cue at 25.0 deg and 5.00
+// m/s would hop the ball 8.16 mm, ..."); empty when it does not (within `max_hop` to the strike's
+// rounding, which differs from heading to heading by a few ulps).
 std::string HopReason(const physics::CueStroke& stroke, const Eigen::Vector2d& position,
-                      const physics::ModelParameters& params);
+                      const physics::ModelParameters& params, double max_hop);
 
 // The elevation [rad] `stroke`'s heading and tip offsets are to be played at with `robot`, the
 // cue ball (id `cue_ball_id`) and the other `balls` (of radius `ball_radius`) on `table`: the

@@ -28,30 +28,35 @@ TEST_F(StrokeLimitsTest, TheHopIsTheBedsReturnOfTheCuesDownwardImpulse) {
   const double elevation = 12.0 * kDegree, V = 2.0;
   const double m = params_.ball.mass, M = params_.cue.mass, e = params_.cue.tip_restitution;
   const double j = (1 + e) * M * m * V / (m + M);
-  const double up = kBedRestitution * j * std::sin(elevation) / m;
+  const double up = physics::kBedRestitution * j * std::sin(elevation) / m;
   EXPECT_NEAR(HopHeight({V, 0.3, 0.0, 0.0, elevation}, {1.0, 0.6}, params_), up * up / (2 * params_.ball.gravity),
               1e-12);
 }
 
-// The hop grows with the square of the cue speed: the fastest hop-free stroke hops exactly kMaxHop,
-// and a level cue has no such limit.
-TEST_F(StrokeLimitsTest, TheFastestHopFreeStrokeHopsTheLimit) {
+// The hop grows with the square of the cue speed: the fastest stroke within a hop limit hops
+// exactly the limit (the table's, a tenth of a radius, or the 1 mm of a motion on the cloth), and a
+// level cue has no such limit.
+TEST_F(StrokeLimitsTest, TheFastestStrokeWithinAHopLimitHopsTheLimit) {
+  EXPECT_DOUBLE_EQ(TableMaxHop(params_), 0.1 * params_.ball.radius);
   const physics::CueStroke level{2.0, 0.3, 0.0, 0.0, 0.0};
-  EXPECT_TRUE(std::isinf(HopFreeSpeed(level, {1.0, 0.6}, params_)));
-  EXPECT_EQ(HopReason(level, {1.0, 0.6}, params_), "");
-  physics::CueStroke raised{5.0, 0.3, 0.004, -0.005, 25.0 * kDegree};
-  raised.speed = HopFreeSpeed(raised, {1.0, 0.6}, params_);
-  EXPECT_NEAR(HopHeight(raised, {1.0, 0.6}, params_), kMaxHop, 1e-12);
-  EXPECT_EQ(HopReason(raised, {1.0, 0.6}, params_), "");
-  // The fastest hop-free stroke found at one heading is one HopReason accepts at any other (the
-  // strike's rounding differs from heading to heading).
-  for (int i = 0; i < 64; ++i) {
-    physics::CueStroke turned = raised;
-    turned.heading = i * 2.0 * M_PI / 64;
-    EXPECT_EQ(HopReason(turned, {1.0, 0.6}, params_), "") << turned.heading;
+  for (const double limit : {kMaxHopOnTheCloth, TableMaxHop(params_)}) {
+    EXPECT_TRUE(std::isinf(HopFreeSpeed(level, {1.0, 0.6}, params_, limit)));
+    EXPECT_EQ(HopReason(level, {1.0, 0.6}, params_, limit), "");
+    physics::CueStroke raised{5.0, 0.3, 0.004, -0.005, 25.0 * kDegree};
+    raised.speed = HopFreeSpeed(raised, {1.0, 0.6}, params_, limit);
+    EXPECT_NEAR(HopHeight(raised, {1.0, 0.6}, params_), limit, 1e-12);
+    EXPECT_EQ(HopReason(raised, {1.0, 0.6}, params_, limit), "");
+    // The fastest stroke found at one heading is one HopReason accepts at any other (the strike's
+    // rounding differs from heading to heading).
+    for (int i = 0; i < 64; ++i) {
+      physics::CueStroke turned = raised;
+      turned.heading = i * 2.0 * M_PI / 64;
+      EXPECT_EQ(HopReason(turned, {1.0, 0.6}, params_, limit), "") << turned.heading;
+    }
+    raised.speed *= 1.01;
+    EXPECT_NE(HopReason(raised, {1.0, 0.6}, params_, limit).find("would hop the ball"),
+              std::string::npos);
   }
-  raised.speed *= 1.01;
-  EXPECT_NE(HopReason(raised, {1.0, 0.6}, params_).find("would lift the ball off the cloth"), std::string::npos);
 }
 
 // The elevation a stroke is played at: level where a level cue clears; the least that clears and

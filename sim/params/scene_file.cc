@@ -142,7 +142,7 @@ std::vector<table::SceneBall> LaunchedBalls(const SceneFile& scene,
       throw std::invalid_argument(name + ": a struck ball starts at rest (velocity and spin 0)");
     }
     try {
-      ball->state = physics::StrikeBall(stroke, ball->state.head<2>(), p);
+      *ball = table::Struck(id, stroke, ball->state.head<2>(), p);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(name + ": " + e.what());
     }

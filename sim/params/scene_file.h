@@ -6,7 +6,8 @@
 // A ball may be struck instead of launched: {"id": 0, "state": [X, Y, 0, 0, 0, 0, 0],
 // "cue": {"speed", "heading", "tip_side", "tip_height", "elevation"}} (the stroke of
 // physics::CueStroke, as `billiard plan` prints it; the three offsets default to 0), its launch
-// given by the cue strike model with squirt (sim/physics/cue_strike.h) from rest at (X, Y).
+// given by the cue strike model with squirt (sim/physics/cue_strike.h) from rest at (X, Y); an
+// elevated cue hops it off the cloth (sim/physics/hop.h).
 //
 // "table" names a table specification (sim/params/table_specs.h), "params" a parameter set
 // (parameter_sets.h), each built in or a file; the states are in table coordinates (README.md,
@@ -31,7 +32,7 @@ struct SceneFile {
 };
 
 // The balls as they start: each struck ball in `scene.cues` at rest at its place, launched by its
-// stroke (physics::StrikeBall). Throws std::invalid_argument, naming the ball, for a stroke of
+// stroke (table::Struck: its launch and its hop). Throws std::invalid_argument, naming the ball, for a stroke of
 // a ball that is not there or not at rest, or that no cue gives.
 std::vector<table::SceneBall> LaunchedBalls(const SceneFile& scene,
                                             const physics::ModelParameters& p);

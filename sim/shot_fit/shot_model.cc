@@ -114,7 +114,7 @@ table::TableSimulation ShotModel::Run(const Strike& strike, double until) const 
     b.id = static_cast<int>(i);
     b.state.segment<2>(physics::kX) = where[i];
     if (i == shot_.cue && strike.stroke.speed > 0.0)
-      b.state = physics::StrikeBall(strike.stroke, where[i], params_);
+      b = table::Struck(b.id, strike.stroke, where[i], params_);
     balls.push_back(b);
   }
   table::TableSimulationOptions options;

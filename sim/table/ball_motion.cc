@@ -46,6 +46,8 @@ const char* PhaseName(MotionPhase phase) {
       return "stationary";
     case MotionPhase::kFiveDof:
       return "5-dof";
+    case MotionPhase::kAirborne:
+      return "airborne";
   }
   return "unknown";
 }
@@ -140,6 +142,21 @@ MotionSegment::MotionSegment(const ClothParameters& cloth, double start_time,
   max_acceleration_ = acceleration_.norm();
 }
 
+MotionSegment::MotionSegment(const ClothParameters& cloth, double start_time,
+                             const BallState& state, const physics::Flight& flight)
+    : cloth_(cloth),
+      phase_(MotionPhase::kAirborne),
+      start_time_(start_time),
+      end_time_(start_time + physics::TimeToLand(flight, cloth.gravity)),
+      start_(state),
+      flight_(flight) {}
+
+physics::Flight MotionSegment::FlightAt(double t) const {
+  if (phase_ != MotionPhase::kAirborne) return {};
+  const double tau = std::clamp(t - start_time_, 0.0, end_time_ - start_time_);
+  return physics::FlightAfter(flight_, tau, cloth_.gravity);
+}
+
 MotionSegment::MotionSegment(const physics::ModelParameters& params,
                              const physics::SimulationOptions& options, double start_time,
                              const BallState& state, double horizon)
@@ -164,6 +181,7 @@ BallState MotionSegment::At(double t) const {
   BallState s = start_;
   s.segment<2>(kX) += velocity() * tau + 0.5 * acceleration_ * tau * tau;
   s.segment<2>(kVx) += acceleration_ * tau;
+  if (phase_ == MotionPhase::kAirborne) return s;  // no cloth: the spin keeps
   s[kWz] -= Sign(start_[kWz]) * cloth_.spin_decel * std::min(tau, spin_stop_);
   if (tau >= spin_stop_) s[kWz] = 0.0;
   const bool at_end = t >= end_time_ && !held_;  // a held motion ends where the forces change
@@ -189,6 +207,7 @@ BallState MotionSegment::At(double t) const {
       s.segment<4>(kVx).setZero();
       break;
     case MotionPhase::kFiveDof:  // returned above
+    case MotionPhase::kAirborne:
       break;
   }
   return s;

@@ -16,6 +16,10 @@
 // cost of an integration. Its segment runs until the ball rests (the rest switch of
 // `sim/physics/rest.h`); its centre's path is no polynomial, so the simulation finds its
 // contacts by conservative advancement, from the bound on how fast it can move.
+//
+// Off the cloth (`sim/physics/hop.h`: a ball an elevated cue has struck hops), a ball flies: its
+// centre moves straight at constant velocity, its spin keeps, until it lands; the landing is a
+// transition like the others (the bed's impulse, then the next bounce or the cloth).
 #pragma once
 
 #include <Eigen/Core>
@@ -23,14 +27,16 @@
 #include <memory>
 
 #include "sim/physics/ball_state.h"
+#include "sim/physics/hop.h"
 #include "sim/physics/parameters.h"
 #include "sim/physics/simulator.h"
 #include "sim/physics/trajectory.h"
 
 namespace billiard::table {
 
-// kFiveDof: moving by the 5-DOF model (sliding and rolling alike), until it rests.
-enum class MotionPhase { kSliding, kRolling, kSpinning, kStationary, kFiveDof };
+// kFiveDof: moving by the 5-DOF model (sliding and rolling alike), until it rests. kAirborne:
+// off the cloth, until it lands.
+enum class MotionPhase { kSliding, kRolling, kSpinning, kStationary, kFiveDof, kAirborne };
 
 const char* PhaseName(MotionPhase phase);
 
@@ -77,6 +83,11 @@ class MotionSegment {
   MotionSegment(const physics::ModelParameters& params, const physics::SimulationOptions& options,
                 double start_time, const physics::BallState& state, double horizon);
 
+  // A ball off the cloth in `flight` (physics::Airborne): straight at constant velocity and
+  // spin until it lands.
+  MotionSegment(const ClothParameters& cloth, double start_time, const physics::BallState& state,
+                const physics::Flight& flight);
+
   // Whether the centre moves on a parabola (position(), velocity(), acceleration() hold).
   bool closed_form() const { return trajectory_ == nullptr; }
   // Whether the motion is that of a ball held in contact.
@@ -89,6 +100,10 @@ class MotionSegment {
 
   // The state at table time t, start_time <= t <= end_time (clamped to the segment).
   physics::BallState At(double t) const;
+
+  // The ball's flight at table time t (clamped to the segment); none (on the cloth) but in
+  // kAirborne.
+  physics::Flight FlightAt(double t) const;
 
   // A bound on the centre's acceleration over the segment [m/s^2].
   double max_acceleration() const { return max_acceleration_; }
@@ -111,6 +126,7 @@ class MotionSegment {
   Eigen::Vector2d slip_direction_ = Eigen::Vector2d::Zero();  // sliding: u / |u|
   double max_acceleration_ = 0.0;
   bool held_ = false;
+  physics::Flight flight_;                                 // kAirborne: at the start
   std::shared_ptr<const physics::Trajectory> trajectory_;  // the 5-DOF motion, from tau = 0
   physics::BallState end_ = physics::BallState::Zero();    // the 5-DOF motion's last state
 };

@@ -1,5 +1,6 @@
 #include "sim/table/scene_validation.h"
 
+#include <cmath>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -16,6 +17,10 @@ void ValidateScene(const TableGeometry& table, double radius, const std::vector<
   for (const SceneBall& b : balls) {
     const std::string name = "ball " + std::to_string(b.id);
     if (!b.state.allFinite()) throw std::invalid_argument(name + ": a state number is not finite");
+    if (!(b.flight.height >= 0.0) || !std::isfinite(b.flight.height) ||
+        !std::isfinite(b.flight.vertical_speed)) {
+      throw std::invalid_argument(name + ": its flight is not a finite height of 0 or more");
+    }
     if (b.id < 0) throw std::invalid_argument(name + ": ids are 0 (the cue ball) or more");
     if (!ids.insert(b.id).second) throw std::invalid_argument(name + ": the id is repeated");
     if (!table.OnSurface(b.state.segment<2>(kX), radius)) {

@@ -82,7 +82,7 @@ TableSimulation::TableSimulation(const TableGeometry& table, const physics::Mode
   ValidateScene(table, params.ball.radius, balls);
   for (const SceneBall& b : balls) {
     balls_.push_back({b.id, {}, std::nullopt});
-    StartSegment(balls_.size() - 1, b.state);
+    StartSegment(balls_.size() - 1, b.state, b.flight);
   }
   boundary_.resize(balls_.size());
   pair_.assign(balls_.size() * balls_.size(), Candidate{});
@@ -224,7 +224,12 @@ void TableSimulation::Recompute(std::size_t i) {
   }
 }
 
-void TableSimulation::StartSegment(std::size_t i, const BallState& state) {
+void TableSimulation::StartSegment(std::size_t i, const BallState& state,
+                                   const physics::Flight& flight) {
+  if (physics::Airborne(flight, params_.ball.gravity)) {
+    balls_[i].segments.emplace_back(cloth_, time_, state, flight);
+    return;
+  }
   const bool moving =
       state.segment<2>(kVx).norm() > 0.0 || ClothSlip(state, params_.ball.radius).norm() > 0.0;
   const std::optional<physics::SimulationOptions> five_dof =
@@ -245,11 +250,14 @@ void TableSimulation::StartSegment(std::size_t i, const BallState& state) {
 }
 
 BallState TableSimulation::CushionImpact(const BallState& s, const Eigen::Vector2d& normal,
-                                         double* impulse) const {
+                                         double height, double* impulse) const {
   const CushionFrame frame(normal);
   const ImpactVelocities before{frame.In(s.segment<2>(kVx), 0.0),
                                 frame.In(s.segment<2>(kWx), s[kWz])};
-  const CushionParameters cushion{table_.cushion_height, params_.collision.cushion_restitution,
+  // A ball in the air meets the nose lower on itself by its height (no lower than its equator,
+  // where the cushion models end: a ball that high is beyond any hop a planner plays).
+  const double nose = std::max(table_.cushion_height - height, params_.ball.radius);
+  const CushionParameters cushion{nose, params_.collision.cushion_restitution,
                                   params_.collision.cushion_friction, params_.contact.mu};
   const ImpactVelocities after =
       ResolveCushionImpact(options_.cushion_model, before, params_.ball, cushion,
@@ -265,6 +273,8 @@ BallState TableSimulation::CushionImpact(const BallState& s, const Eigen::Vector
 void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, int index) {
   TableEvent event = e;
   const BallState s = Current(i).At(time_);
+  // An impact in the air leaves the flight as it was (the contacts are taken as in the plane).
+  const physics::Flight flight = Current(i).FlightAt(time_);
   std::vector<std::size_t> changed{i};
   // The held balls whose forces counted on a ball that an impact or a pocket takes.
   std::vector<std::size_t> released;
@@ -278,6 +288,9 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
       if (Current(i).held()) {
         event.type = EventType::kBallPush;
         changed = ResolveHeld({i});
+      } else if (Current(i).phase() == MotionPhase::kAirborne) {
+        const physics::Landing landing = physics::LandOnBed(s, -flight.vertical_speed, params_);
+        StartSegment(i, landing.state, landing.rebound);
       } else {
         StartSegment(i, s);
       }
@@ -303,8 +316,8 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
       last = time_;
       const BallBallImpulse hit = ResolveBallBallImpact(s, b, params_.ball, collision);
       event.impulse = hit.normal;
-      StartSegment(i, hit.a);
-      StartSegment(j, hit.b);
+      StartSegment(i, hit.a, flight);
+      StartSegment(j, hit.b, Current(j).FlightAt(time_));
       changed.push_back(j);
       break;
     }
@@ -318,7 +331,7 @@ void TableSimulation::Apply(const TableEvent& e, std::size_t i, std::size_t j, i
         changed = ResolveHeld({i});
       } else {
         release(i);
-        StartSegment(i, CushionImpact(s, n, &event.impulse));
+        StartSegment(i, CushionImpact(s, n, flight.height, &event.impulse), flight);
       }
       break;
     }

@@ -1,7 +1,7 @@
 // Every ball on the table, event by event.
 //
 // Between events each ball moves in closed form (`sim/table/ball_motion.h`: sliding, rolling,
-// spinning, at rest; its centre on a parabola), so the next event of every kind is the first
+// spinning, at rest, in the air; its centre on a parabola), so the next event of every kind is the first
 // root of a polynomial in time, found exactly (`sim/table/polynomial_roots.h`):
 //  - ball-ball: |p_a(t) - p_b(t)|^2 = (2 r)^2, a quartic;
 //  - ball-cushion: the centre at distance r from a cushion's nose line (a quadratic) or at
@@ -19,6 +19,12 @@
 // only the next events of the balls it changed. Ties go to the lower ball index and the event
 // kinds in the order transitions, balls, cushions, pockets: the same scene gives the same events,
 // bit for bit.
+//
+// A ball off the cloth (SceneBall::flight: an elevated cue's hop, `sim/physics/hop.h`) flies
+// straight until it lands, a transition (the bed's impulse, then the next bounce or the cloth).
+// Its impacts in the air keep its flight: with another ball they are taken in the plane (the
+// line of centres of a ball h above the cloth is asin(h / 2r) out of it, sim/cue/stroke_limits.h
+// says how high that holds); a cushion's nose meets it lower on the ball, by its height.
 #pragma once
 
 #include <cstdint>
@@ -132,15 +138,19 @@ class TableSimulation {
   Candidate BallBallByAdvancement(std::size_t i, std::size_t j) const;
   Candidate BoundaryByAdvancement(std::size_t i) const;
   void Apply(const TableEvent& event, std::size_t i, std::size_t j, int index);
-  void StartSegment(std::size_t i, const physics::BallState& state);
+  // Ball i's next motion from `state`, off the cloth where `flight` is airborne.
+  void StartSegment(std::size_t i, const physics::BallState& state,
+                    const physics::Flight& flight = {});
   // Solves the contact forces of the balls touching `seeds` (transitively) and of the cushions
   // they touch, and starts the motions they give; returns the balls whose motion changed.
   std::vector<std::size_t> ResolveHeld(const std::vector<std::size_t>& seeds);
   // The balls touching ball i whose motions are held ones.
   std::vector<std::size_t> HeldNeighbours(std::size_t i) const;
   double Gap(std::size_t i, std::size_t j) const;  // between the surfaces, now
+  // Ball state `s` after meeting the cushion of inward `normal`, its centre `height` above its
+  // place on the cloth; its normal impulse in `*impulse`.
   physics::BallState CushionImpact(const physics::BallState& s, const Eigen::Vector2d& normal,
-                                   double* impulse) const;
+                                   double height, double* impulse) const;
 
   TableGeometry table_;
   physics::ModelParameters params_;

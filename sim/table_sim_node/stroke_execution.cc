@@ -46,7 +46,7 @@ std::vector<table::SceneBall> StrokeExecution::Struck(const std::vector<table::S
   if (command.status == cue_command_t::STATUS_OK) {
     const physics::CueStroke stroke = Executed(command);
     for (table::SceneBall& b : struck) {
-      if (b.id == kCueBall) b.state = physics::StrikeBall(stroke, b.state.head<2>(), plant);
+      if (b.id == kCueBall) b = table::Struck(b.id, stroke, b.state.head<2>(), plant);
     }
   }
   return struck;

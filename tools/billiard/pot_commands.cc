@@ -110,17 +110,11 @@ void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
   options.robot = LoadRobotOption(args.robot);
   const pot::PotPlan plan = pot::PlanPot(geometry, params, balls, request, options);
   if (!args.scene_out.empty() && plan.status == pot::PotStatus::kOk) {
-    // The scene with the cue ball launched as planned: `simulate --scene` and `plot --scene`
-    // play the plan from it.
+    // The scene with the cue ball struck by the planned stroke (its launch and, with an elevated
+    // cue, its hop): `simulate --scene` and `plot --scene` play the plan from it.
     params::SceneFile played = scene;
-    played.cues.clear();
     played.balls = balls;
-    for (table::SceneBall& b : played.balls) {
-      if (b.id == 0) {
-        b.state.segment<2>(physics::kVx) = plan.v0;
-        b.state.segment<3>(physics::kWx) = plan.w0;
-      }
-    }
+    played.cues = {{0, plan.stroke}};
     WriteScene(played, args.scene_out, "--scene-out");
   }
   if (args.json) {
@@ -130,6 +124,7 @@ void RunPlanPot(const PlanPotArgs& args, bool radius_given) {
     if (plan.status == pot::PotStatus::kOk) {
       const double noise_deg = HeadingNoiseDeg(options.robot);
       j["heading_noise_deg"] = noise_deg;
+      j["hop_mm"] = physics::Apex(plan.flight, params.ball.gravity) * 1e3;
       j["margin_holds"] = MarginHolds(plan, noise_deg);
     }
     DescribeParameters(params, &j);

@@ -43,9 +43,11 @@ class PotFixture : public ::testing::Test {
     Eigen::Vector2d cue_at_contact = Eigen::Vector2d::Zero();  // where the cue ball was then
   };
 
-  // The scene with the cue ball launched at v0, w0, simulated as `simulate --scene` does.
-  Outcome Simulate(std::vector<table::SceneBall> balls, const Eigen::Vector2d& v0, const Eigen::Vector3d& w0,
-                   int k, const std::string& pocket) const {
+  // The scene with the cue ball launched at v0, w0 (in `flight`), simulated as `simulate --scene`
+  // does.
+  Outcome Simulate(std::vector<table::SceneBall> balls, const Eigen::Vector2d& v0,
+                   const Eigen::Vector3d& w0, int k, const std::string& pocket,
+                   const physics::Flight& flight = {}) const {
     std::size_t cue = 0, object = 0;
     for (std::size_t i = 0; i < balls.size(); ++i) {
       if (balls[i].id == 0) cue = i;
@@ -53,6 +55,7 @@ class PotFixture : public ::testing::Test {
     }
     balls[cue].state.segment<2>(physics::kVx) = v0;
     balls[cue].state.segment<3>(physics::kWx) = w0;
+    balls[cue].flight = flight;
     table::TableSimulationOptions options;
     options.five_dof = model_choice::TableMotion(params_);
     table::TableSimulation sim(table_, params_, balls, options);
@@ -76,14 +79,15 @@ class PotFixture : public ::testing::Test {
   }
 
   Outcome SimulatePlan(const std::vector<table::SceneBall>& balls, const PotPlan& plan) const {
-    return Simulate(balls, plan.v0, plan.w0, plan.ball, plan.pocket);
+    return Simulate(balls, plan.v0, plan.w0, plan.ball, plan.pocket, plan.flight);
   }
 
   // The stroke struck from the cue ball (the first of `balls`) where it is.
   Outcome SimulateStroke(const std::vector<table::SceneBall>& balls, const physics::CueStroke& stroke, int k,
                          const std::string& pocket) const {
-    const physics::BallState launch = physics::StrikeBall(stroke, balls.front().state.head<2>(), params_);
-    return Simulate(balls, launch.segment<2>(physics::kVx), launch.segment<3>(physics::kWx), k, pocket);
+    const table::SceneBall cue = table::Struck(0, stroke, balls.front().state.head<2>(), params_);
+    return Simulate(balls, cue.state.segment<2>(physics::kVx), cue.state.segment<3>(physics::kWx),
+                    k, pocket, cue.flight);
   }
 
   void ExpectLegalPot(const std::vector<table::SceneBall>& balls, const PotPlan& plan) const {

@@ -42,7 +42,7 @@ std::vector<SceneBall> SeededBreak(const TableGeometry& table, const physics::Mo
   const double per_cue_speed =
       physics::StrikeBall(stroke, cue->state.head<2>(), p).segment<2>(physics::kVx).norm();
   stroke.speed = options.speed / per_cue_speed;
-  cue->state = physics::StrikeBall(stroke, cue->state.head<2>(), p);
+  *cue = table::Struck(cue->id, stroke, cue->state.head<2>(), p);
   return balls;
 }
 
