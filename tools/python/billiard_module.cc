@@ -22,6 +22,7 @@
 #include "sim/params/robots.h"
 #include "sim/params/table_specs.h"
 #include "sim/physics/cue_strike.h"
+#include "sim/physics/hop.h"
 #include "sim/physics/simulator.h"
 #include "sim/table/table_simulation.h"
 #include "tools/python/choice_functions.h"
@@ -82,11 +83,25 @@ Array Strike(double speed, double heading, double tip_side, double tip_height, d
   }
 }
 
+double LaunchUpSpeed(double speed, double heading, double tip_side, double tip_height,
+                     double elevation, const std::string& params_name) {
+  const physics::CueStroke stroke{speed, heading, tip_side, tip_height, elevation};
+  try {
+    return physics::LaunchUpSpeed(stroke, physics::StrikeBall(stroke, {0.0, 0.0}, Params(params_name)));
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(e.what());
+  }
+}
+
 py::dict SimulateScene(const Array& states, std::optional<std::vector<int>> ids,
                        const std::string& table_name, const std::string& params_name,
-                       std::optional<double> t_end) {
-  const std::vector<table::SceneBall> balls = SceneBalls(states, ids);
+                       std::optional<double> t_end, std::optional<std::vector<double>> up_speeds) {
+  std::vector<table::SceneBall> balls = SceneBalls(states, ids);
   const std::size_t n = balls.size();
+  if (up_speeds) {
+    if (up_speeds->size() != n) throw py::value_error("up_speeds must give every ball's (N of them)");
+    for (std::size_t i = 0; i < n; ++i) balls[i].flight.vertical_speed = (*up_speeds)[i];
+  }
   const physics::ModelParameters p = Params(params_name);
   std::unique_ptr<table::TableSimulation> sim;
   try {
@@ -260,11 +275,16 @@ PYBIND11_MODULE(billiard, m) {
         arg("at") = Array(2, std::array<double, 2>{0, 0}.data()), arg("params") = "pool",
         "The state a cue stroke launches a ball at `at` with (cue strike model with squirt): "
         "tip_side > 0 right english, tip_height > 0 follow, < 0 draw");
+  m.def("launch_up_speed", &LaunchUpSpeed, arg("speed"), arg("heading"), arg("tip_side") = 0.0,
+        arg("tip_height") = 0.0, arg("elevation") = 0.0, arg("params") = "pool",
+        "The speed [m/s] a ball struck by that stroke leaves the cloth upward at: the slate's "
+        "return of what an elevated cue drives it down with (0 for a level cue)");
   m.def("simulate_scene", &SimulateScene, arg("states"), arg("ids") = py::none(),
         arg("table") = billiard::params::kDefaultTable, arg("params") = "pool",
-        arg("t_end") = py::none(),
+        arg("t_end") = py::none(), arg("up_speeds") = py::none(),
         "Every ball of a table scene (N x 7 states, ids default 0..N-1, id 0 the cue ball), event "
-        "by event, the closed form between events: 'ids', final 'states', 'pocketed', 'events'");
+        "by event, the closed form between events, a ball given an upward speed (up_speeds, "
+        "launch_up_speed's) flown until it lands: 'ids', final 'states', 'pocketed', 'events'");
   m.def("plan", &Plan, arg("from_"), arg("to"), arg("final_speed") = 0.0, arg("spin") = "natural",
         arg("side_spin") = 0.0, arg("params") = "pool",
         arg("robot") = billiard::params::kDefaultRobot,

@@ -2,6 +2,7 @@
 strike, the CLI's own answers for the same input (the module is a second front end over the same
 library: it must agree to the bit), a plan's launch arriving at its target, and the refusals."""
 import json
+import math
 import os
 import struct
 import subprocess
@@ -62,6 +63,22 @@ def test_a_scene_runs_event_by_event_and_refuses_a_ball_over_a_pocket():
         billiard.simulate_scene(np.array([[0.01, 0.01, 0, 0, 0, 0, 0]]), ids=[3])
     with pytest.raises(ValueError):
         billiard.simulate_scene(np.zeros((2, 6)))
+
+
+def test_an_elevated_strike_hops_the_ball_and_the_scene_flies_it():
+    """The slate returns half the downward speed v tan(elevation) (sim/physics/hop.h); a ball given
+    it lands first after a projectile's rise and fall, 2 v_up / g."""
+    elevation = math.radians(10.0)
+    launch = billiard.strike(2.0, 0.0, elevation=elevation)
+    up = billiard.launch_up_speed(2.0, 0.0, elevation=elevation)
+    assert up == pytest.approx(0.5 * launch[2] * math.tan(elevation), rel=1e-12)
+    assert billiard.launch_up_speed(2.0, 0.0) == 0.0
+    launch[:2] = [0.5, 0.6]
+    r = billiard.simulate_scene(np.array([launch]), up_speeds=[up], t_end=0.5)
+    assert r["events"][0]["type"] == "transition"
+    assert r["events"][0]["t"] == pytest.approx(2.0 * up / 9.81, rel=1e-12)
+    with pytest.raises(ValueError, match="up_speeds"):
+        billiard.simulate_scene(np.array([launch]), up_speeds=[up, up])
 
 
 def test_a_plan_arrives_at_its_target_and_a_refusal_is_an_exception():
