@@ -39,7 +39,8 @@ struct Flight {
   double vertical_speed = 0.0;
 };
 
-// Whether `flight` leaves the cloth: above it, or rising from it by more than kSettledHop.
+// Whether `flight` rises (or is) more than kSettledHop above the cloth at its apex: a lower one
+// is the ball on the cloth.
 bool Airborne(const Flight& flight, double gravity);
 // The highest the centre rises above the cloth in `flight` [m].
 double Apex(const Flight& flight, double gravity);
