@@ -1,7 +1,7 @@
 // The hard suite's cases held to issue 45's acceptance on their rendered truth: with an arm, a
 // hand and a cue, or a player leaning in across an overhead table, every side of the table within
-// 2 px and every ball more than half seen found, nothing false; from 20 degrees above the cloth,
-// the same; with a long side out of the frame, the table completed and the balls found.
+// 2 px and every ball more than half seen found, nothing false; from 20 and 45 degrees above the
+// cloth, the same; with a long side out of the frame, the table completed and the balls found.
 #include "bench/hard_suite.h"
 
 #include <gtest/gtest.h>
@@ -59,6 +59,16 @@ TEST(HardSuite, FromTwentyDegreesEverySideWithinTwoPixelsAndEveryBallFound) {
     ASSERT_TRUE(f.table) << f.file << ": " << f.failure;
     EXPECT_TRUE(f.table->lens.IsPinhole()) << f.file;
   }
+}
+
+// From 45 degrees, the near cushion is seen from behind: the cloth's outline runs along its back
+// by the rail, and its nose is a faint line inside. Where a ball against it cut the outline, the
+// outline's best supported line bridged the back and the nose (turned 0.027 rad); the back's own
+// stretch was confirmed and dropped again for want of a nose met along the side (the faint line
+// was not counted as one), and the near side was left 23.4 px off. A faint nose confirms it now
+// (table_finder.cc's CushionNoses).
+TEST(HardSuite, FromFortyFiveDegreesEverySideWithinTwoPixelsAndEveryBallFound) {
+  ExpectWholeTableAndEveryBall(RunCase("elevation 45"));
 }
 
 // The camera turned 12 degrees with a third of the table out: the border crosses the table, and

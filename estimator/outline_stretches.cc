@@ -22,6 +22,27 @@ constexpr int kRansacTries = 200;
 constexpr std::size_t kMaxStretches = 3;
 constexpr double kMinStretch = 0.1;
 constexpr double kMaxStretchTurn = 0.15;  // [rad] from the hull's side
+// The first line kept may turn twice as far: the hull's side is itself turned where a vertex of its
+// quadrilateral is off a corner (a pocket, an arm across it), by 0.155 rad on a dev frame
+// (fou_03's left side), where balls in a row against a short side seen from low make a line
+// turned by 0.38 rad (the hard suite's 15-degree camera).
+constexpr double kMaxFirstStretchTurn = 2 * kMaxStretchTurn;
+
+// The least-squares line through `points` and their distances from it.
+Line LeastSquaresLine(const std::vector<cv::Point2f>& points) {
+  cv::Vec4f fitted;
+  cv::fitLine(points, fitted, cv::DIST_L2, 0, 0.01, 0.01);
+  Line line;
+  line.coefficients = {-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]};
+  double squares = 0;
+  for (const auto& p : points) {
+    const double e = line.coefficients.dot(Eigen::Vector3d(p.x, p.y, 1));
+    squares += e * e;
+  }
+  line.points = static_cast<int>(points.size());
+  line.rms = std::sqrt(squares / points.size());
+  return line;
+}
 
 }  // namespace
 
@@ -51,6 +72,7 @@ std::vector<Line> FitSides(const std::vector<cv::Point>& outline, const cv::Poin
   std::vector<cv::Point2d> points = SidePoints(outline, a, b, perimeter);
   const double min_points = std::max(2.0, kMinStretch * static_cast<double>(points.size()));
   std::vector<Line> lines;
+  std::vector<cv::Point2f> turned;  // the first stretch's points, where it is turned
   std::mt19937 random(1);
   for (std::size_t tries = 0; tries < kMaxStretches && points.size() >= min_points; ++tries) {
     std::uniform_int_distribution<std::size_t> pick(0, points.size() - 1);
@@ -82,22 +104,16 @@ std::vector<Line> FitSides(const std::vector<cv::Point>& outline, const cv::Poin
     }
     if (inliers.size() < std::max<std::size_t>(2, lines.empty() ? 2 : min_points)) break;
     points = std::move(rest);
-    // A stretch turned from the side (an arm's edge, a cue's) is none of it.
+    // A stretch turned from the side (an arm's edge, a cue's, balls' in a row against a cushion
+    // seen from low) is none of it; the first one turned is kept for when no other is found.
     const double turn = std::abs(best_line.x() * u.x + best_line.y() * u.y);
-    if (!lines.empty() && turn > std::sin(kMaxStretchTurn)) continue;
-    cv::Vec4f fitted;
-    cv::fitLine(inliers, fitted, cv::DIST_L2, 0, 0.01, 0.01);
-    Line line;
-    line.coefficients = {-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]};
-    double squares = 0;
-    for (const auto& p : inliers) {
-      const double e = line.coefficients.dot(Eigen::Vector3d(p.x, p.y, 1));
-      squares += e * e;
+    if (turn > std::sin(lines.empty() ? kMaxFirstStretchTurn : kMaxStretchTurn)) {
+      if (lines.empty() && turned.empty()) turned = inliers;
+      continue;
     }
-    line.points = static_cast<int>(inliers.size());
-    line.rms = std::sqrt(squares / inliers.size());
-    lines.push_back(line);
+    lines.push_back(LeastSquaresLine(inliers));
   }
+  if (lines.empty() && !turned.empty()) lines.push_back(LeastSquaresLine(turned));
   return lines;
 }
 

@@ -25,10 +25,12 @@ std::vector<cv::Point2d> SidePoints(const std::vector<cv::Point>& outline, const
 // The lines through the outline points near the side from `a` to `b`, best supported first: RANSAC
 // (seeded, so that a frame always gives the same table) then least squares over its inliers, then
 // again over the points left, while a line holds a tenth of the side's points (up to three lines;
-// the others within 0.15 rad of the side's direction). The cloth's
-// outline along a side is a straight stretch where the cloth runs up to the cushion, and others
-// where an arm or a cue hides it, or where the cushion's top, of the cloth's colour, joins the bed
-// for a while: the best supported line may bridge two of them, and one of the others be the side.
+// the first within 0.3 rad of the side's direction, the others within 0.15 rad; a turned line is
+// the side only when no other is found). The cloth's outline along a side is a straight stretch
+// where the cloth runs up to the cushion, and others where an arm or a cue hides it, where balls
+// against a cushion seen from low cut it (their outlines in a row), or where the cushion's top, of
+// the cloth's colour, joins the bed for a while: the best supported line may bridge two of them,
+// and one of the others be the side.
 std::vector<Line> FitSides(const std::vector<cv::Point>& outline, const cv::Point2d& a,
                            const cv::Point2d& b, double perimeter);
 

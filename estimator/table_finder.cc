@@ -166,11 +166,12 @@ std::optional<ClothEdge> ClothSideOfStretches(const cv::Mat& bgr,
 }
 
 // The lines of the cushions' noses inside the cloth's outline `cloth_corners` (the outline's own
-// side where none is found), and at how many places along each side its nose was met (0 where
-// none was, or only the faint line of a cushion seen from behind).
+// side where none is found), and whether each was found along the side (`along`): met at
+// kOtherStretchNose of the places along it at least, or the faint line of a cushion seen from
+// behind (whose median change of colour stands out on both halves of the side).
 std::array<Eigen::Vector3d, 4> CushionNoses(const cv::Mat& bgr,
                                             const std::array<Eigen::Vector2d, 4>& cloth_corners,
-                                            bool long_first, std::array<int, 4>* places) {
+                                            bool long_first, std::array<bool, 4>* along) {
   const Eigen::Matrix3d cloth_from_table = ImageFromTable(cloth_corners, long_first);
   // The side nearest the camera (the largest inverse depth at its middle), whose cushion is seen
   // from behind in an oblique view.
@@ -192,7 +193,7 @@ std::array<Eigen::Vector3d, 4> CushionNoses(const cv::Mat& bgr,
   for (int i = 0; i < 4; ++i) {
     const std::optional<EdgeLine> edge =
         NoseLine(bgr, cloth_from_table, long_first, i, kMaxCushionWidth);
-    (*places)[i] = edge ? edge->places : 0;
+    (*along)[i] = edge && edge->places >= kOtherStretchNose * kEdgePlaces;
     std::optional<Eigen::Vector3d> nose;
     if (edge) nose = edge->line;
     if (oblique && i == nearest) {
@@ -205,7 +206,7 @@ std::array<Eigen::Vector3d, 4> CushionNoses(const cv::Mat& bgr,
       };
       if (faint && (!nose || inward(*faint) > inward(*nose))) {
         nose = faint;
-        (*places)[i] = 0;
+        (*along)[i] = true;
       }
     }
     lines[i] = nose.value_or(SideLine(cloth_from_table, long_first, i));
@@ -288,9 +289,10 @@ bool SidesAndNoses(const cv::Mat& bgr, const std::array<std::vector<Line>, 4>& s
   std::array<Eigen::Vector3d, 4> rough_lines;
   for (int i = 0; i < 4; ++i) rough_lines[i] = stretches[i].front().coefficients;
   // A stretch of a side's outline other than its best supported is the cloth's side only when the
-  // cushion's nose found inside it runs along most of the side too (kOtherStretchNose): the
-  // stretch a straight edge confirms may be the rail's, beyond a cushion whose nose cannot be seen
-  // (or is hidden by whoever hid the first stretch), and the side would be left at the rail.
+  // cushion's nose found inside it runs along the side too (CushionNoses): the stretch a straight
+  // edge confirms may be the rail's, beyond a cushion whose nose cannot be seen (or is hidden by
+  // whoever hid the first stretch), and the side would be left at the rail. A cushion seen from
+  // behind has its outline there (its top is of the cloth), and its faint nose confirms it.
   std::array<bool, 4> other_stretches = {true, true, true, true};
   for (bool again = true; again;) {
     again = false;
@@ -312,10 +314,10 @@ bool SidesAndNoses(const cv::Mat& bgr, const std::array<std::vector<Line>, 4>& s
     }
     table->side_fit_rms_px = std::sqrt(squares / std::max(1, points));
     if (!Intersections(*lines, &table->cloth_corners)) return false;
-    std::array<int, 4> nose_places;
-    *lines = CushionNoses(bgr, table->cloth_corners, long_first, &nose_places);
+    std::array<bool, 4> nose_along;
+    *lines = CushionNoses(bgr, table->cloth_corners, long_first, &nose_along);
     for (int i = 0; i < 4; ++i) {
-      if (other_stretch_taken[i] && nose_places[i] < kOtherStretchNose * kEdgePlaces) {
+      if (other_stretch_taken[i] && !nose_along[i]) {
         other_stretches[i] = false;
         again = true;
       }
