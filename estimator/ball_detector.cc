@@ -107,7 +107,9 @@ bool BallDetector::LearnTable(const cv::Mat& image) {
 }
 
 double BallDetector::LeastPlausibleScale() const {
-  if (!table_ || table_->origin == TableOrigin::kClothOnly || CutByFrame(*table_, frame_size_)) {
+  const bool completed = table_ && table_->side_out_of_frame >= 0;
+  if (!table_ || table_->origin == TableOrigin::kClothOnly ||
+      (!completed && CutByFrame(*table_, frame_size_))) {
     return 0;
   }
   return estimator::LeastPlausibleScale(*table_, options_.ball_set);

@@ -149,9 +149,10 @@ class BallDetector {
   // A larger scale than the measured one, where it makes clearly more balls sure (the top of
   // ball_detector.cc), with the balls found at it.
   void TryLargerScales(const cv::Mat& bgr, std::vector<BallDetection>* balls);
-  // The least scale the table allows its balls (ball_scale.h) where it is whole in the frame; 0
-  // where the frame cuts it (a cut table read as whole is smaller than it is) or only the cloth
-  // is known (no table).
+  // The least scale the table allows its balls (ball_scale.h) where it is whole in the frame or
+  // completed across the frame's border (table_partial.h: its width seen, or its length); 0 where
+  // the frame cuts it otherwise (a cut table read as whole is smaller than it is) or only the
+  // cloth is known (no table).
   double LeastPlausibleScale() const;
   // The calibrated camera's table, the table found, or the cloth alone; failure_ says why no
   // table was found.

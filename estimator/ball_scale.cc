@@ -91,6 +91,9 @@ std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
   };
   const bool any_plausible = std::any_of(logs.begin(), logs.end(),
                                          [&](const auto& v) { return is_plausible(v.first); });
+  // A scale the table does not allow is no measurement: the pieces of a rack that the cloth's
+  // colour breaks up, with no ball lying apart.
+  if (least_plausible > 0 && !any_plausible) return std::nullopt;
   const double agreement = std::log(kScaleAgreement);
   const auto agreeing_with = [&](double seed) {
     std::vector<std::pair<double, double>> group;

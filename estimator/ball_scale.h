@@ -53,7 +53,8 @@ double LargestTableRatio(BallSet set);
 // outlines are at least `least_plausible` [px at the table's centre] (LeastPlausibleScale), the
 // heaviest group of those: the pieces of a rack that the cloth's colour breaks up (blue balls on
 // a blue cloth) can outweigh the one ball lying apart, never the table's size. Empty without
-// outlines.
+// outlines, and where none is at least `least_plausible` (a rack's pieces alone, no ball lying
+// apart: the table's own scale, ScaleFromTable, or the scale already settled, is the better one).
 std::optional<BallScale> ScaleFromOutlines(const TableRegion& table,
                                            const std::vector<BallOutline>& outlines,
                                            double least_plausible = 0);
