@@ -81,8 +81,7 @@ inline Scene RandomScene(int balls, int struck, unsigned seed, double duration) 
     bool sliding = true, moving = true;
     for (double t = 0.0; t <= duration; t += 0.001) {
       const physics::BallState x = trajectory->At(t);
-      const double slip =
-          std::hypot(x[physics::kVx] - r * x[physics::kWy], x[physics::kVy] + r * x[physics::kWx]);
+      const double slip = physics::ClothSlip(x, r).norm();
       if (sliding && slip < 0.01) changes.push_back(s.t_strike + t);
       if (moving && x.segment<2>(physics::kVx).norm() < 1e-3) changes.push_back(s.t_strike + t);
       sliding = sliding && slip >= 0.01;

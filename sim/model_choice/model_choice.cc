@@ -13,9 +13,7 @@ const char* MeasuredModelChoiceJson();
 
 std::string SceneKindOf(const physics::BallState& s, const physics::ModelParameters& p) {
   if (s[physics::kWz] != 0.0) return "side-spin";
-  const double r = p.ball.radius;
-  const double slip =
-      std::hypot(s[physics::kVx] - r * s[physics::kWy], s[physics::kVy] + r * s[physics::kWx]);
+  const double slip = physics::ClothSlip(s, p.ball.radius).norm();
   return slip <= 1e-9 + 1e-6 * s.segment<2>(physics::kVx).norm() ? "rolling" : "sliding";
 }
 

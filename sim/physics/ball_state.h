@@ -29,6 +29,13 @@ inline double KineticEnergy(const BallState& s, double mass, double radius) {
   return 0.5 * mass * (translational + rotational);
 }
 
+// The slip of the ball's contact point with the cloth, u = v + r z x w = (vx - r wy, vy + r wx)
+// (Kudra et al. 2016, section 3.1): zero when the ball rolls, and the direction of the cloth's
+// sliding friction against it.
+inline Eigen::Vector2d ClothSlip(const BallState& s, double radius) {
+  return {s[kVx] - radius * s[kWy], s[kVy] + radius * s[kWx]};
+}
+
 // "X,Y,vx,vy,wx,wy,wz" with full precision, for messages and reports.
 std::string FormatState(const BallState& s);
 

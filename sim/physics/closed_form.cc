@@ -16,8 +16,7 @@ ClosedFormTrajectory::ClosedFormTrajectory(const ClosedFormParameters& p, const 
     throw std::invalid_argument("closed-form model needs mu_s > 0, mu_r >= 0, R > 0, g > 0");
   }
   // Slip of the contact point u = v + R z x w (eq. 1).
-  const Eigen::Vector2d u0(initial[kVx] - p.radius * initial[kWy],
-                           initial[kVy] + p.radius * initial[kWx]);
+  const Eigen::Vector2d u0 = ClothSlip(initial, p.radius);
   const double slip = u0.norm();
   if (slip > 0.0) slip_direction_ = u0 / slip;
   slide_end_time_ = 2.0 * slip / (7.0 * p.mu_slide * p.gravity);

@@ -26,7 +26,7 @@ Flight FlightAfter(const Flight& flight, double t, double gravity) {
 Landing LandOnBed(const BallState& s, double landing_speed, const ModelParameters& p) {
   const double r = p.ball.radius;
   Landing out{s, {}};
-  const Eigen::Vector2d slip(s[kVx] - r * s[kWy], s[kVy] + r * s[kWx]);
+  const Eigen::Vector2d slip = ClothSlip(s, r);
   if (slip.norm() > 0.0) {
     // The friction impulse per unit mass: Coulomb's share of the normal one, or what stops the
     // slip (du = -7/2 F / m along the slip).

@@ -47,8 +47,7 @@ RestKind ClassifyRest(const BallState& s, const Dynamics& dynamics) {
   const double v_rest = RestSpeed(c);
   if (s.segment<2>(kVx).squaredNorm() >= v_rest * v_rest) return RestKind::kMoving;
   const double u_rest = 10.0 * c.eps_t * c.patch_radius;
-  const double r = p.ball.radius;
-  const Eigen::Vector2d slip(s[kVx] - r * s[kWy], s[kVy] + r * s[kWx]);
+  const Eigen::Vector2d slip = ClothSlip(s, p.ball.radius);
   if (slip.squaredNorm() < u_rest * u_rest) return RestKind::kStill;
   const double a_rest = kBalancedForceFraction * c.mu * p.ball.gravity;
   const Eigen::Vector2d force = dynamics.Derivative(s).template segment<2>(kVx);

@@ -58,10 +58,6 @@ ClothParameters ClothParameters::From(const physics::ModelParameters& p) {
           2.5 * p.ball.gravity * p.contact.patch_radius * p.contact.mu * kPivotMoment / (r * r)};
 }
 
-Eigen::Vector2d ClothSlip(const BallState& s, double radius) {
-  return {s[kVx] - radius * s[kWy], s[kVy] + radius * s[kWx]};
-}
-
 MotionPhase PhaseOf(const BallState& s, double radius) {
   if (ClothSlip(s, radius).norm() > kRollingSlip) return MotionPhase::kSliding;
   if (s.segment<2>(kVx).norm() > kStillSpeed) return MotionPhase::kRolling;

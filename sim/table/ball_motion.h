@@ -131,7 +131,6 @@ class MotionSegment {
   physics::BallState end_ = physics::BallState::Zero();    // the 5-DOF motion's last state
 };
 
-// The slip velocity of the contact point with the cloth, u = v + r z x w.
-Eigen::Vector2d ClothSlip(const physics::BallState& s, double radius);
+using physics::ClothSlip;
 
 }  // namespace billiard::table
