@@ -52,8 +52,8 @@ TEST(FitSides, ARowOfBallsTurnedFromTheSideIsNotIt) {
   const double turned = side + 0.38;
   const cv::Point2d along_turned(std::cos(turned), std::sin(turned));
   std::vector<cv::Point> outline;
-  AddSegment(a, a + 0.35 * (b - a), &outline);         // the cloth up to the side
-  AddSegment(a + 0.85 * (b - a), b, &outline);          // and again near its far end
+  AddSegment(a, a + 0.35 * (b - a), &outline);  // the cloth up to the side
+  AddSegment(a + 0.85 * (b - a), b, &outline);  // and again near its far end
   AddSegment(a + 6.0 * along_turned, a + 42.0 * along_turned, &outline);  // the balls' row
   const double perimeter = 2 * (200 + cv::norm(b - a));
   const std::vector<Line> lines = FitSides(outline, a, b, perimeter);

@@ -87,7 +87,8 @@ double LaunchUpSpeed(double speed, double heading, double tip_side, double tip_h
                      double elevation, const std::string& params_name) {
   const physics::CueStroke stroke{speed, heading, tip_side, tip_height, elevation};
   try {
-    return physics::LaunchUpSpeed(stroke, physics::StrikeBall(stroke, {0.0, 0.0}, Params(params_name)));
+    return physics::LaunchUpSpeed(stroke,
+                                  physics::StrikeBall(stroke, {0.0, 0.0}, Params(params_name)));
   } catch (const std::invalid_argument& e) {
     throw py::value_error(e.what());
   }
@@ -99,7 +100,8 @@ py::dict SimulateScene(const Array& states, std::optional<std::vector<int>> ids,
   std::vector<table::SceneBall> balls = SceneBalls(states, ids);
   const std::size_t n = balls.size();
   if (up_speeds) {
-    if (up_speeds->size() != n) throw py::value_error("up_speeds must give every ball's (N of them)");
+    if (up_speeds->size() != n)
+      throw py::value_error("up_speeds must give every ball's (N of them)");
     for (std::size_t i = 0; i < n; ++i) balls[i].flight.vertical_speed = (*up_speeds)[i];
   }
   const physics::ModelParameters p = Params(params_name);
