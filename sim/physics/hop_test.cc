@@ -20,10 +20,6 @@ Eigen::Vector3d AboutTheContact(const BallState& s, double r) {
   return 0.4 * r * r * w + Eigen::Vector3d(0.0, 0.0, r).cross(v);
 }
 
-Eigen::Vector2d Slip(const BallState& s, double r) {
-  return {s[kVx] - r * s[kWy], s[kVy] + r * s[kWx]};
-}
-
 TEST(Hop, AFlightFromTheClothIsAProjectilesRiseAndFall) {
   const double g = 9.81, v = 0.2;
   const Flight up{0.0, v};
@@ -63,10 +59,10 @@ TEST(Hop, ASlidingLandingKeepsTheAngularMomentumAboutTheContactAndObeysCoulomb) 
   // The impulse is Coulomb's share of the normal one, against the slip.
   const Eigen::Vector2d dv = l.state.segment<2>(kVx) - s.segment<2>(kVx);
   EXPECT_NEAR(dv.norm(), mu * (1.0 + kBedRestitution) * landing, 1e-12);
-  EXPECT_NEAR(dv.normalized().dot(-Slip(s, r).normalized()), 1.0, 1e-12);
+  EXPECT_NEAR(dv.normalized().dot(-ClothSlip(s, r).normalized()), 1.0, 1e-12);
   EXPECT_EQ(l.state[kWz], s[kWz]);  // the bed's impulse has no moment about the vertical
   // The slip keeps its direction, shortened by 7/2 of the impulse.
-  EXPECT_NEAR(Slip(l.state, r).norm(), Slip(s, r).norm() - 3.5 * dv.norm(), 1e-12);
+  EXPECT_NEAR(ClothSlip(l.state, r).norm(), ClothSlip(s, r).norm() - 3.5 * dv.norm(), 1e-12);
 }
 
 TEST(Hop, AHardLandingStopsTheSlipAndNoMore) {
@@ -74,7 +70,7 @@ TEST(Hop, AHardLandingStopsTheSlipAndNoMore) {
   const double r = p.ball.radius;
   const BallState stun = MakeBallState(0.0, 0.0, 0.5, 0.0, 0.0, 0.0, 0.0);
   const Landing l = LandOnBed(stun, 10.0, p);
-  EXPECT_NEAR(Slip(l.state, r).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(ClothSlip(l.state, r).norm(), 0.0, 1e-14);
   // Rolling without slip keeps the angular momentum about the contact: v = 5/7 v0.
   EXPECT_NEAR(l.state[kVx], 5.0 / 7.0 * 0.5, 1e-14);
 }
