@@ -21,14 +21,14 @@ std::string Read(const std::filesystem::path& path) {
   return text.str();
 }
 
-// bench-match on kRacks racks into a fresh directory: its JSON file, checked to be what stdout
-// printed.
-nlohmann::json BenchMatch(const std::string& name, int threads) {
+// bench-match on kRacks racks into a fresh directory (`more` added to its command line): its JSON
+// file, checked to be what stdout printed.
+nlohmann::json BenchMatch(const std::string& name, int threads, const std::string& more = "") {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
   std::filesystem::remove_all(dir);
   const std::string args = "bench-match --racks " + std::to_string(kRacks) +
                            " --seed 3 --json --threads " + std::to_string(threads) + " --out " +
-                           dir.string();
+                           dir.string() + more;
   const CommandResult r = Billiard(args);
   EXPECT_EQ(r.status, 0) << args << ": " << r.out;
   const nlohmann::json printed = OneObject(r, args);
@@ -71,12 +71,21 @@ TEST(BilliardBenchMatch, WritesTheReportAndTheSameFiguresWhateverTheThreads) {
     EXPECT_LE(m["breaks"]["legal_and_potted"]["count"], m["breaks"]["legal"]["count"]);
   }
   EXPECT_EQ(Figures(one), Figures(BenchMatch("bench_match_two", 2)));
+
+  // One of the four matches played alone is the same match: its racks are seeded by the seed
+  // and their index, whatever was played before.
+  const nlohmann::json alone =
+      BenchMatch("bench_match_alone", 2, " --games eight-ball --opponents easiest-looking");
+  ASSERT_EQ(alone["matches"].size(), 1u) << alone;
+  EXPECT_EQ(Figures(alone)["matches"][0], Figures(one)["matches"][3]);
 }
 
 TEST(BilliardBenchMatch, ABadCommandLineExitsTwo) {
-  for (const char* args : {"bench-match", "bench-match --out /tmp/x --racks 0",
-                           "bench-match --out /tmp/x --noise /no/such.json",
-                           "bench-match --out /proc/no/such/dir"}) {
+  for (const char* args :
+       {"bench-match", "bench-match --out /tmp/x --racks 0",
+        "bench-match --out /tmp/x --noise /no/such.json",
+        "bench-match --out /tmp/x --games snooker", "bench-match --out /tmp/x --opponents ours",
+        "bench-match --out /proc/no/such/dir"}) {
     EXPECT_EQ(Billiard(args).status, 2) << args;
   }
 }

@@ -1,5 +1,6 @@
 #include "tools/billiard/bench_match_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -39,8 +40,8 @@ constexpr double kWinAgainstEasiest = 0.85;
 constexpr double kSafetiesWorked = 0.60;
 constexpr double kMicro = 1e-6;
 
-const char* const kGames[] = {"nine-ball", "eight-ball"};
-const char* const kOpponents[] = {players::kOursNoSafety, "easiest-looking"};
+const std::vector<std::string> kGames = {"nine-ball", "eight-ball"};
+const std::vector<std::string> kOpponents = {players::kOursNoSafety, "easiest-looking"};
 constexpr char kOurs[] = "ours";
 
 struct BenchMatchArgs {
@@ -51,7 +52,20 @@ struct BenchMatchArgs {
   int threads = batch::DefaultThreadCount();
   int shot_limit = 200;
   bool json = false;
+  std::vector<std::string> games = kGames;
+  std::vector<std::string> opponents = kOpponents;
 };
+
+// The names joined: by `separator`, the last by `last` ("a, b and c" in a sentence, "a,b,c" on a
+// command line).
+std::string Joined(const std::vector<std::string>& names, const std::string& separator,
+                   const std::string& last) {
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    text += (i == 0 ? "" : i + 1 == names.size() ? last : separator) + names[i];
+  }
+  return text;
+}
 
 // One match, ours (A) against `opponent`, as its JSON with the report's figures added.
 nlohmann::json PlayOne(const std::string& game, const std::string& opponent,
@@ -119,8 +133,10 @@ void WinTable(const nlohmann::json& matches, std::ostream& md) {
   }
 }
 
-// Eight-ball's pots and one-visit clears beside pix2pockets'.
+// Eight-ball's pots and one-visit clears beside pix2pockets' (none without an eight-ball match).
 void EightBallTable(const nlohmann::json& matches, std::ostream& md) {
+  const auto eight_ball = [](const nlohmann::json& m) { return m["game"] == "eight-ball"; };
+  if (std::none_of(matches.begin(), matches.end(), eight_ball)) return;
   md << "\n## Eight-ball: pots per attempt and one-visit clears\n\nA one-visit clear: of the "
         "racks with a legal break in which the player came to the table, those it won in its "
         "first visit after the break (planner/game/match_report.h). pix2pockets' baseline (2025): "
@@ -128,7 +144,7 @@ void EightBallTable(const nlohmann::json& matches, std::ostream& md) {
      << " % of racks cleared in one visit.\n\n| player | in the match against | pots per attempt "
         "(95 %) | one-visit clears (95 %) |\n|---|---|---|---|\n";
   for (const nlohmann::json& m : matches) {
-    if (m["game"] != "eight-ball") continue;
+    if (!eight_ball(m)) continue;
     for (int p = 0; p < 2; ++p) {
       const nlohmann::json& player = m["players"][p];
       md << "| " << player["name"].get<std::string>() << " | "
@@ -171,11 +187,15 @@ std::string Markdown(const nlohmann::json& report, const BenchMatchArgs& args, d
   std::ostringstream md;
   char wall[64];
   std::snprintf(wall, sizeof wall, "%.0f s", wall_s);
+  const bool all = args.games == kGames && args.opponents == kOpponents;
   md << "# Match report (issue 48)\n\n`billiard bench-match --out DIR --racks " << args.racks
-     << " --seed " << args.seed << " --threads " << args.threads << "` (noise `" << args.noise
-     << "`, shot limit " << args.shot_limit << "): ours against " << kOpponents[0] << " and "
-     << kOpponents[1] << ", " << args.racks
-     << " racks a match, the break alternating (ours breaks the odd racks); " << wall
+     << " --seed " << args.seed << " --threads " << args.threads
+     << (all ? ""
+             : " --games " + Joined(args.games, ",", ",") + " --opponents " +
+                   Joined(args.opponents, ",", ","))
+     << "` (noise `" << args.noise << "`, shot limit " << args.shot_limit << "): ours against "
+     << Joined(args.opponents, ", ", " and ") << " at " << Joined(args.games, ", ", " and ") << ", "
+     << args.racks << " racks a match, the break alternating (ours breaks the odd racks); " << wall
      << " of wall time. The figures do not depend on --threads; the decision times do (wall "
         "time, on a shared machine longer than the work). Intervals: Wilson (1927) at 95 %.\n\n";
   WinTable(report["matches"], md);
@@ -205,8 +225,8 @@ void Run(const BenchMatchArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   nlohmann::json report = {{"racks", args.racks}, {"seed", args.seed}, {"noise", args.noise},
                            {"shot_limit", args.shot_limit}, {"matches", nlohmann::json::array()}};
-  for (const char* game : kGames) {
-    for (const char* opponent : kOpponents) {
+  for (const std::string& game : args.games) {
+    for (const std::string& opponent : args.opponents) {
       report["matches"].push_back(PlayOne(game, opponent, args, table, params, pool));
     }
   }
@@ -227,9 +247,16 @@ void AddBenchMatchCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "bench-match",
       "Issue 48's match report: ours against ours-no-safety and easiest-looking at nine-ball "
-      "and eight-ball, written to DIR/match_report.md and DIR/match_report.json");
+      "and eight-ball (or those --opponents and --games name), written to DIR/match_report.md "
+      "and DIR/match_report.json");
   cmd->add_option("--out", args->out, "The directory the report is written to")->required();
-  cmd->add_option("--racks", args->racks, "Racks of each of the four matches")
+  cmd->add_option("--games", args->games, "The games played (default both)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(kGames));
+  cmd->add_option("--opponents", args->opponents, "Ours' opponents (default both)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(kOpponents));
+  cmd->add_option("--racks", args->racks, "Racks of each match")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   cmd->add_option("--noise", args->noise,
