@@ -69,7 +69,8 @@
 #                          planner_node --identify)
 #   --plant-noise NAME|FILE  the robot executes its strokes with this noise (a name of
 #                          sim/params/noise/ or a JSON file of its format) instead of --noise's,
-#                          while the planner keeps choosing for the noise it was told of
+#                          while the planner keeps choosing for the noise it was told of; the
+#                          summary shows the noise the robot drew (RMS over its strokes)
 #   --learn-noise          the planner measures its own strokes' noise from the launches the
 #                          estimator tracks and chooses for it (planner_node --learn-noise); the
 #                          summary shows the noise learned, with its intervals; the shots to
@@ -457,6 +458,10 @@ if "plant" in s:
     print(f"the table played {s['plant']}; the nodes ran their own parameters")
 if "plant_noise" in s:
     print(f"the robot executed with the noise {s['plant_noise']}; the planner was not told")
+if "drawn_noise" in s:
+    d = s["drawn_noise"]
+    print(f"the robot drew over its {d['strokes']} strokes (RMS): heading {d['heading_deg']:.3f} deg, "
+          f"speed {100*d['speed_fraction']:.2f} %, tip {d['tip_mm']:.3f} mm")
 if "scene" in s:
     scene, tracking = s["scene"], s["scene"]["tracking"]
     pocketed = [f"{b['id']} ({b['pocketed']})" for b in scene["balls"] if b["pocketed"]]

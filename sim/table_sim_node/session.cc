@@ -262,6 +262,10 @@ int RunSessionCommand(const std::string& name, const SessionCommandLine& line,
   if (games) summary["game"] = GameSummary(*games, options.game, options.players);
   if (options.plant) summary["plant"] = params::ParameterSetLabel(*options.plant);
   if (!line.plant_noise.empty()) summary["plant_noise"] = options.noise.name;
+  const bool noisy = line.noise == "on" || !line.plant_noise.empty();
+  if (const DrawnNoise drawn = node.Drawn(); noisy && drawn.strokes > 0) {
+    summary["drawn_noise"] = DrawnNoiseJson(drawn);
+  }
   std::cout << summary.dump() << std::endl;
   return 0;
 }

@@ -269,4 +269,11 @@ nlohmann::json SceneSummary(const SceneResult& scene, const std::string& name) {
   return j;
 }
 
+nlohmann::json DrawnNoiseJson(const DrawnNoise& drawn) {
+  return {{"strokes", drawn.strokes},
+          {"speed_fraction", drawn.speed_fraction},
+          {"heading_deg", drawn.heading * 180.0 / M_PI},
+          {"tip_mm", drawn.tip * 1e3}};
+}
+
 }  // namespace billiard::table_sim_node

@@ -38,4 +38,8 @@ nlohmann::json GameSummary(const std::vector<GameResult>& games, const std::stri
 // (and where), a scratch, the cue ball's first contact, and its rest against the plan's.
 nlohmann::json SceneSummary(const SceneResult& scene, const std::string& name);
 
+// The noise the robot drew (the summary's "drawn_noise"): {"strokes", "speed_fraction",
+// "heading_deg", "tip_mm"}, in the units of identify-noise's "learned_noise".
+nlohmann::json DrawnNoiseJson(const DrawnNoise& drawn);
+
 }  // namespace billiard::table_sim_node

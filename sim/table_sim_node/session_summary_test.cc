@@ -180,6 +180,14 @@ TEST(GameSummary, AMatchTalliesEachPlayerAsBilliardMatchDoes) {
 
 // Per ball, the RMS error over its tracked frames; over all balls, the RMS over every frame,
 // not the mean of the balls' RMS.
+TEST(DrawnNoiseJson, InIdentifyNoisesUnits) {
+  const nlohmann::json j = DrawnNoiseJson({60, 0.025, 0.25 * M_PI / 180.0, 0.8e-3});
+  EXPECT_EQ(j["strokes"], 60);
+  EXPECT_DOUBLE_EQ(j["speed_fraction"], 0.025);
+  EXPECT_DOUBLE_EQ(j["heading_deg"], 0.25);
+  EXPECT_DOUBLE_EQ(j["tip_mm"], 0.8);
+}
+
 TEST(SceneSummary, TheTrackingErrorOverEveryFrame) {
   SceneResult scene;
   scene.events = 7;

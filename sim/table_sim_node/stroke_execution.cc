@@ -24,7 +24,21 @@ physics::CueStroke Commanded(const cue_command_t& command) {
 
 physics::CueStroke StrokeExecution::Executed(const cue_command_t& command) {
   std::normal_distribution<double> unit(0.0, 1.0);
-  return params::Perturbed(Commanded(command), noise_, ball_radius_, [&] { return unit(random_); });
+  const physics::CueStroke commanded = Commanded(command);
+  const physics::CueStroke executed =
+      params::Perturbed(commanded, noise_, ball_radius_, [&] { return unit(random_); });
+  ++strokes_;
+  if (commanded.speed > 0) speed_squares_ += std::pow(executed.speed / commanded.speed - 1.0, 2);
+  heading_squares_ += std::pow(executed.heading - commanded.heading, 2);
+  tip_squares_ += std::pow(executed.tip_side - commanded.tip_side, 2) +
+                  std::pow(executed.tip_height - commanded.tip_height, 2);
+  return executed;
+}
+
+DrawnNoise StrokeExecution::Drawn() const {
+  if (strokes_ == 0) return {};
+  return {strokes_, std::sqrt(speed_squares_ / strokes_), std::sqrt(heading_squares_ / strokes_),
+          std::sqrt(tip_squares_ / (2.0 * strokes_))};
 }
 
 std::string Unmakeable(const cue::Robot& robot, const table::TableGeometry& geometry, double ball_radius,

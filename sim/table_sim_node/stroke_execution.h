@@ -35,6 +35,17 @@ inline constexpr double kLongestScene = 120.0;
 // as they were).
 std::mt19937 NoiseStream(std::uint32_t seed);
 
+// The noise the robot drew, over the strokes it executed: the root mean square of each error
+// (the executed stroke against the commanded one, the tip's limit applied), about zero as the
+// noise is drawn. What a run's learned noise (shot_fit/execution_noise_fit.h) is to be held
+// against: a few dozen strokes draw spreads some per cent off the noise's own.
+struct DrawnNoise {
+  int strokes = 0;
+  double speed_fraction = 0.0;  // of the commanded speed
+  double heading = 0.0;         // [rad]
+  double tip = 0.0;             // each tip offset, side and height pooled [m]
+};
+
 class StrokeExecution {
  public:
   // `noise` on balls of `ball_radius` (the tip offsets' scale), drawn from NoiseStream(seed).
@@ -42,6 +53,9 @@ class StrokeExecution {
 
   // The stroke `command` asks for as the robot executes it, with the noise (one draw per call).
   physics::CueStroke Executed(const cue_command_t& command);
+
+  // The noise drawn by Executed so far.
+  DrawnNoise Drawn() const;
 
   // `balls` with the cue ball (id 0) struck by the executed stroke on a table of `plant`'s
   // physics; as they are when the command is a refusal (no draw then).
@@ -53,6 +67,9 @@ class StrokeExecution {
   params::ExecutionNoise noise_;
   double ball_radius_;
   std::mt19937 random_;
+  // The sums of the drawn errors' squares: speed fraction, heading, tip side and height.
+  int strokes_ = 0;
+  double speed_squares_ = 0.0, heading_squares_ = 0.0, tip_squares_ = 0.0;
 };
 
 // The stroke `command` asks for, as commanded (no noise).

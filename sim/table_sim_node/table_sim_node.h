@@ -298,6 +298,9 @@ class TableSimNode {
   // The node's counters; TakeStatus() on it starts a new latency period.
   nodes::NodeHealth& health() { return health_; }
 
+  // The execution noise the robot drew over the strokes it played.
+  DrawnNoise Drawn() const { return execution_.Drawn(); }
+
  private:
   // The message in `rbuf`, or nothing when it fails its checks (counted and logged).
   template <class Message>
