@@ -26,6 +26,11 @@ constexpr double kThicknesses[] = {0.0, 0.3, -0.3, 0.6, -0.6, 0.85, -0.85};
 // The cue speeds [m/s]: a soft roll to the ball, a rail or two, a stroke round the table.
 constexpr double kSpeeds[] = {0.7, 1.1, 1.7, 2.6};
 constexpr int kEight = 8;
+// A kick's headings are searched kKickStep apart within kKickReach of the mirror's [rad]: a
+// cushion's rebound parts from a mirror's by a few degrees, and the 1 degree or so a ball's width
+// subtends at a table's length is met by several steps.
+constexpr double kKickStep = 0.25 * M_PI / 180.0;
+constexpr double kKickReach = 8.0 * M_PI / 180.0;
 
 bool Potted(const StrokeResult& result, int ball) {
   return std::any_of(result.pocketed.begin(), result.pocketed.end(),
@@ -146,8 +151,93 @@ std::string Why(const SafetyStroke& s, double attempt_win, const ChoiceResult& r
 
 }  // namespace
 
-std::vector<SafetyCandidate> SafetyStrokes(double radius, const std::vector<table::SceneBall>& balls,
+namespace {
+
+// Whether a ball other than `target` lies across the cue ball's straight line from `from` to
+// `to` (its centre within two radii of the segment): the legal ball is hidden from the cue ball.
+bool Hidden(const std::vector<table::SceneBall>& balls, int target, const Eigen::Vector2d& from,
+            const Eigen::Vector2d& to, double radius) {
+  const Eigen::Vector2d along = to - from;
+  const double length = along.norm();
+  return std::any_of(balls.begin(), balls.end(), [&](const table::SceneBall& b) {
+    if (b.id == 0 || b.id == target) return false;
+    const Eigen::Vector2d p = Position(b) - from;
+    const double t = std::clamp(p.dot(along) / (length * length), 0.0, 1.0);
+    return (p - t * along).norm() < 2 * radius;
+  });
+}
+
+// The cue ball's heading to meet `target` off one cushion as a mirror would return it: at the
+// target mirrored in each line the cue ball's centre rebounds from (a radius inside the noses).
+std::vector<double> MirrorHeadings(const table::TableGeometry& table, const Eigen::Vector2d& cue,
+                                   const Eigen::Vector2d& target, double radius) {
+  const double left = radius, right = table.length - radius;
+  const double bottom = radius, top = table.width - radius;
+  std::vector<double> headings;
+  for (const Eigen::Vector2d& image : {Eigen::Vector2d(2 * left - target.x(), target.y()),
+                                       Eigen::Vector2d(2 * right - target.x(), target.y()),
+                                       Eigen::Vector2d(target.x(), 2 * bottom - target.y()),
+                                       Eigen::Vector2d(target.x(), 2 * top - target.y())}) {
+    headings.push_back(std::atan2(image.y() - cue.y(), image.x() - cue.x()));
+  }
+  return headings;
+}
+
+// Kicks at `target` off each cushion, one a speed: a cushion is no mirror (its rebound angle
+// depends on the speed and the spin: Mathavan et al. 2010), so about each mirror heading the
+// headings kKickStep apart within kKickReach are played once without noise on the closed form,
+// and the middle of the longest run that meets `target` first is the kick (the heading the
+// noise moves least off it). The Monte Carlo then judges them as the other candidates.
+std::vector<SafetyCandidate> Kicks(const table::TableGeometry& table,
+                                   const physics::ModelParameters& params,
+                                   const std::vector<table::SceneBall>& balls, int target) {
+  const Eigen::Vector2d cue = Position(*FindBall(balls, 0));
+  const Eigen::Vector2d at = Position(*FindBall(balls, target));
+  const int steps = static_cast<int>(std::round(kKickReach / kKickStep));
+  std::vector<SafetyCandidate> kicks;
+  for (const double mirror : MirrorHeadings(table, cue, at, params.ball.radius)) {
+    for (const double speed : kSpeeds) {
+      physics::CueStroke s;
+      s.speed = speed;
+      int run = 0, best_run = 0, best_end = 0;
+      for (int k = -steps; k <= steps; ++k) {
+        s.heading = mirror + k * kKickStep;
+        run = PlayToRest(table, params, balls, s, {}).first_contact == target ? run + 1 : 0;
+        if (run > best_run) {
+          best_run = run;
+          best_end = k;
+        }
+      }
+      if (best_run == 0) continue;
+      s.heading = mirror + (best_end - 0.5 * (best_run - 1)) * kKickStep;
+      kicks.push_back({target, s});
+    }
+  }
+  return kicks;
+}
+
+// The grid's strokes at `aim` (thicknesses about it, then speeds), appended to `candidates`.
+void AddStrokesAt(int target, const Eigen::Vector2d& cue, const Eigen::Vector2d& aim, double radius,
+                  std::vector<SafetyCandidate>* candidates) {
+  const Eigen::Vector2d d = aim - cue;
+  for (double thickness : kThicknesses) {
+    const double heading = std::atan2(d.y(), d.x()) + std::asin(thickness * 2 * radius / d.norm());
+    for (double speed : kSpeeds) {
+      physics::CueStroke s;
+      s.speed = speed;
+      s.heading = heading;
+      candidates->push_back({target, s});
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<SafetyCandidate> SafetyStrokes(const table::TableGeometry& table,
+                                           const physics::ModelParameters& params,
+                                           const std::vector<table::SceneBall>& balls,
                                            rules::Rules rules) {
+  const double radius = params.ball.radius;
   const table::SceneBall* cue = FindBall(balls, 0);
   if (!cue) return {};
   std::vector<int> targets = rules::LegalTargets(rules, balls);
@@ -156,18 +246,14 @@ std::vector<SafetyCandidate> SafetyStrokes(double radius, const std::vector<tabl
                    [&](int a, int b) { return distance(a) < distance(b); });
   if (static_cast<int>(targets.size()) > kSafetyTargets) targets.resize(kSafetyTargets);
   std::vector<SafetyCandidate> candidates;
+  const Eigen::Vector2d from = Position(*cue);
   for (int target : targets) {
-    const Eigen::Vector2d d = Position(*FindBall(balls, target)) - Position(*cue);
-    if (d.norm() <= 2 * radius) continue;
-    for (double thickness : kThicknesses) {
-      const double heading = std::atan2(d.y(), d.x()) + std::asin(thickness * 2 * radius / d.norm());
-      for (double speed : kSpeeds) {
-        physics::CueStroke s;
-        s.speed = speed;
-        s.heading = heading;
-        candidates.push_back({target, s});
-      }
-    }
+    const Eigen::Vector2d at = Position(*FindBall(balls, target));
+    if ((at - from).norm() <= 2 * radius) continue;
+    AddStrokesAt(target, from, at, radius, &candidates);
+    if (!Hidden(balls, target, from, at, radius)) continue;
+    const std::vector<SafetyCandidate> kicks = Kicks(table, params, balls, target);
+    candidates.insert(candidates.end(), kicks.begin(), kicks.end());
   }
   return candidates;
 }
@@ -235,9 +321,8 @@ std::optional<SafetyStroke> BestSafety(const table::TableGeometry& table,
                                        const std::vector<table::SceneBall>& balls,
                                        const ChoiceOptions& options, batch::ThreadPool& pool,
                                        int* simulations) {
-  const std::vector<SafetyCandidate> candidates =
-      MakeableByCue(table, params, balls, options.pot.robot,
-                    SafetyStrokes(params.ball.radius, balls, options.rules));
+  const std::vector<SafetyCandidate> candidates = MakeableByCue(
+      table, params, balls, options.pot.robot, SafetyStrokes(table, params, balls, options.rules));
   if (candidates.empty()) return std::nullopt;
   std::vector<std::size_t> order = ScreenSafeties(table, params, balls, candidates, options, pool);
   if (static_cast<int>(order.size()) > options.safety_finalists) {

@@ -71,9 +71,15 @@ struct SafetyCandidate {
   physics::CueStroke stroke;
 };
 
-// The candidate safeties of `balls` under `rules` (the grid above), in target, thickness, speed
-// order; none when the cue ball is missing or touches its target.
-std::vector<SafetyCandidate> SafetyStrokes(double radius, const std::vector<table::SceneBall>& balls,
+// The candidate safeties of `balls` under `rules` on `table` (the grid above), in target,
+// thickness, speed order; none when the cue ball is missing or touches its target. A target that
+// another ball hides from the cue ball (across its straight line) is also kicked at off each
+// cushion, one kick a cushion and speed: the heading about the mirror's that meets it first
+// without noise on `params`' closed form, in the middle of the headings that do. A player
+// snookered on the legal ball kicks at it rather than foul for sure.
+std::vector<SafetyCandidate> SafetyStrokes(const table::TableGeometry& table,
+                                           const physics::ModelParameters& params,
+                                           const std::vector<table::SceneBall>& balls,
                                            rules::Rules rules);
 
 // `candidates` as `robot`'s cue can make them: each raised to the elevation its cue needs

@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
 #include "planner/choice/shot_choice.h"
 #include "planner/choice/testing/choice_test.h"
 #include "sim/cue/clearance.h"
 #include "sim/cue/stroke_limits.h"
+#include "sim/model_choice/model_choice.h"
 #include "sim/params/robots.h"
 
 namespace billiard::choice {
@@ -45,6 +47,13 @@ class SafetyTest : public testing::ChoiceTest {
     const double l = table_.length, w = table_.width;
     return {table::AtRest(0, l - 0.5, 0.3), table::AtRest(1, l - 0.3, 0.3),
             table::AtRest(9, 0.4, w - 0.4)};
+  }
+  // The 1 straight along the table from the cue ball, the 5 on the line between them: the cue
+  // ball is snookered on the 1.
+  std::vector<table::SceneBall> Snookered() const {
+    const double l = table_.length, w = table_.width;
+    return {table::AtRest(0, 0.6, w / 2), table::AtRest(5, l / 2, w / 2),
+            table::AtRest(1, l - 0.6, w / 2), table::AtRest(9, l - 0.4, 0.3)};
   }
   // A stroke that hit ball `first` and left `rest`.
   static StrokeResult Hit(int first, std::vector<table::SceneBall> rest) {
@@ -101,7 +110,7 @@ TEST_F(SafetyTest, WinChanceAtTheEndsOfTheRack) {
 TEST_F(SafetyTest, CandidatesHitTheLegalBall) {
   const auto balls = LongCut();
   const double r = params_.ball.radius;
-  const std::vector<SafetyCandidate> nine = SafetyStrokes(r, balls, Rules::kNineBall);
+  const std::vector<SafetyCandidate> nine = SafetyStrokes(table_, params_, balls, Rules::kNineBall);
   ASSERT_EQ(nine.size(), 28u);
   const double d = table_.length - 1.2;  // the 1 straight along +x from the cue ball
   for (const SafetyCandidate& c : nine) {
@@ -109,8 +118,43 @@ TEST_F(SafetyTest, CandidatesHitTheLegalBall) {
     EXPECT_LT(std::abs(std::sin(c.stroke.heading)) * d, 2 * r);
     EXPECT_GT(std::cos(c.stroke.heading), 0);
   }
-  const std::vector<SafetyCandidate> any = SafetyStrokes(r, balls, Rules::kAny);
+  const std::vector<SafetyCandidate> any = SafetyStrokes(table_, params_, balls, Rules::kAny);
   EXPECT_EQ(any.size(), 28u * kSafetyTargets);
+}
+
+// Snookered on the 1, the candidates also kick at it off the cushions: the direct strokes meet the
+// 5 first; the kicks, found on the closed form, played without noise on the table's full model
+// meet the 1 first at least half the time (the two models part a little in the slide and at
+// the cushion).
+TEST_F(SafetyTest, SnookeredCandidatesKickOffEachCushion) {
+  const auto balls = Snookered();
+  const double r = params_.ball.radius;
+  const std::vector<SafetyCandidate> all = SafetyStrokes(table_, params_, balls, Rules::kNineBall);
+  constexpr std::size_t kGrid = 28;  // thicknesses x speeds
+  ASSERT_GT(all.size(), kGrid);
+  const Motion motion = model_choice::TableMotion(params_);
+  EXPECT_EQ(PlayToRest(table_, params_, balls, all[0].stroke, motion).first_contact, 5);
+  int kicks_meeting_the_1 = 0;
+  for (std::size_t k = kGrid; k < all.size(); ++k) {
+    EXPECT_EQ(all[k].target, 1);
+    kicks_meeting_the_1 +=
+        PlayToRest(table_, params_, balls, all[k].stroke, motion).first_contact == 1;
+  }
+  std::cerr << kicks_meeting_the_1 << " of " << all.size() - kGrid << " kicks meet the 1 first"
+            << std::endl;
+  const int kicks = static_cast<int>(all.size() - kGrid);
+  EXPECT_GE(kicks, 4);                        // off the two long cushions at least, at two speeds
+  EXPECT_GE(2 * kicks_meeting_the_1, kicks);  // found on the closed form, most hold on the 5-DOF
+}
+
+// Snookered, the choice plays a kick at the 1 that seldom fouls (before the kicks: a safety on
+// the 5's side that fouled every time, the only candidates being direct).
+TEST_F(SafetyTest, SnookeredKicksRatherThanFoulForSure) {
+  const ChoiceResult r = Decide(Snookered(), NineBall(), 2);
+  std::cerr << r.reason << std::endl;
+  ASSERT_TRUE(r.safety) << r.reason;
+  EXPECT_EQ(r.safety->target, 1);
+  EXPECT_LT(r.safety->foul_rate, 0.5) << r.reason;
 }
 
 // A safety from a cue ball a millimetre off the head rail: the cue comes over the rail, so every
@@ -122,7 +166,8 @@ TEST_F(SafetyTest, CandidatesAreRaisedOverTheRailOrDropped) {
       table::AtRest(0, r + 1e-3, table_.width / 2),
       table::AtRest(1, table_.length / 2, table_.width / 2)};
   cue::Robot gantry = params::LoadRobot("gantry");
-  const std::vector<SafetyCandidate> level = SafetyStrokes(r, balls, Rules::kNineBall);
+  const std::vector<SafetyCandidate> level =
+      SafetyStrokes(table_, params_, balls, Rules::kNineBall);
   const std::vector<SafetyCandidate> raised = MakeableByCue(table_, params_, balls, gantry, level);
   ASSERT_FALSE(raised.empty());
   for (const SafetyCandidate& c : raised) {
