@@ -11,6 +11,7 @@
 #include "planner/choice/placements.h"
 #include "planner/choice/rack_value.h"
 #include "planner/choice/scene_balls.h"
+#include "planner/pot/pot_geometry.h"
 #include "sim/cue/stroke_limits.h"
 #include "sim/model_choice/model_choice.h"
 
@@ -149,22 +150,11 @@ std::string Why(const SafetyStroke& s, double attempt_win, const ChoiceResult& r
   return text;
 }
 
-}  // namespace
-
-namespace {
-
 // Whether a ball other than `target` lies across the cue ball's straight line from `from` to
-// `to` (its centre within two radii of the segment): the legal ball is hidden from the cue ball.
+// `to` (pot_geometry.h's BallsAcross at two radii): the legal ball is hidden from the cue ball.
 bool Hidden(const std::vector<table::SceneBall>& balls, int target, const Eigen::Vector2d& from,
             const Eigen::Vector2d& to, double radius) {
-  const Eigen::Vector2d along = to - from;
-  const double length = along.norm();
-  return std::any_of(balls.begin(), balls.end(), [&](const table::SceneBall& b) {
-    if (b.id == 0 || b.id == target) return false;
-    const Eigen::Vector2d p = Position(b) - from;
-    const double t = std::clamp(p.dot(along) / (length * length), 0.0, 1.0);
-    return (p - t * along).norm() < 2 * radius;
-  });
+  return !pot::BallsAcross(balls, from, to, 2 * radius, {0, target}).empty();
 }
 
 // The cue ball's heading to meet `target` off one cushion as a mirror would return it: at the
