@@ -66,7 +66,6 @@ TEST(StrokeExecution, TheSameSeedExecutesTheSameCommandsTheSameWay) {
   }
 }
 
-// A refusal strikes nothing and draws no noise; a command strikes the cue ball alone.
 // What the robot drew is what its noise says over many strokes (the root mean square of 4000
 // normal draws is within 1.1 % of their spread, one standard error; 5 % is 4.5 of them), and
 // nothing before a stroke or without noise.
@@ -88,6 +87,7 @@ TEST(StrokeExecution, DrawsTheNoisesSpreadsOverManyStrokes) {
   EXPECT_NEAR(drawn.tip, Robot().tip_offset, 0.05 * Robot().tip_offset);
 }
 
+// A refusal strikes nothing and draws no noise; a command strikes the cue ball alone.
 TEST(StrokeExecution, StrikesTheCueBallAloneAndNothingOnARefusal) {
   const physics::ModelParameters plant = params::LoadParameters("pool");
   std::vector<table::SceneBall> balls(2);
