@@ -111,7 +111,23 @@ StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelP
     b.state.segment<2>(physics::kX) = sim.State(i).segment<2>(physics::kX);
     result.rest.push_back(b);
   }
+  DropHangingBalls(table, &result);
   return result;
+}
+
+void DropHangingBalls(const table::TableGeometry& table, StrokeResult* result) {
+  std::vector<table::SceneBall> rest;
+  for (const table::SceneBall& b : result->rest) {
+    const table::Pocket* pocket = table.PocketPastMouth(Position(b));
+    if (!pocket) {
+      rest.push_back(b);
+    } else if (b.id == 0) {
+      result->scratch = true;
+    } else {
+      result->pocketed.emplace_back(b.id, pocket->name);
+    }
+  }
+  result->rest = std::move(rest);
 }
 
 bool LegalPot(const StrokeResult& result, int ball, const std::string& pocket) {

@@ -71,12 +71,23 @@ struct StrokeResult {
 
 // Strikes the cue ball (id 0, at rest) of `balls` with `stroke` and simulates the table until
 // every ball rests (closed form between events when `motion` is empty, else `motion`'s 5-DOF
-// where it says). The simulation's events are copied to `events` when it is given (what a
-// study of a stroke's path asks; nothing else keeps them).
+// where it says), the balls resting past a pocket's mouth dropped (DropHangingBalls). The
+// simulation's events are copied to `events` when it is given (what a study of a stroke's path
+// asks; nothing else keeps them).
+//
+// The drop is here, not only where a rack is played, so that a choice predicts what the table
+// (planner/game/, the table simulator node) does: a soft pot whose ball stops in the jaws counts
+// as the pot it is on a real table. Without it the choice's chances ran low against the matches'
+// outcomes (400 nine-ball racks: 0.76 predicted, 0.89 potted for shots called 0.7 to 0.8).
 StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelParameters& params,
                         const std::vector<table::SceneBall>& balls,
                         const physics::CueStroke& stroke, const Motion& motion,
                         std::vector<table::TableEvent>* events = nullptr);
+
+// Every ball of `result.rest` resting with its centre past a pocket's mouth line (the line
+// TableGeometry::OnSurface does not let a placed ball cross) moved into that pocket: an object
+// ball into `pocketed` (after the simulation's own), the cue ball a scratch.
+void DropHangingBalls(const table::TableGeometry& table, StrokeResult* result);
 
 // Whether `result` pots `ball` in `pocket` legally: the cue ball's first contact that ball, the
 // ball in that pocket, no scratch.

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <set>
 
+#include "planner/choice/scene_balls.h"
 #include "planner/choice/testing/choice_test.h"
 #include "sim/model_choice/model_choice.h"
+#include "sim/table/table_simulation.h"
 
 namespace billiard::choice {
 namespace {
@@ -66,6 +68,49 @@ TEST_F(MonteCarloTest, ScratchAndWrongContactAreNotPots) {
   EXPECT_EQ(r.first_contact, -1);
   EXPECT_FALSE(LegalPot(r, 1, "upper_right"));
   EXPECT_EQ(r.rest.size(), 1u);
+}
+
+// A ball left at rest past a pocket's mouth line drops into that pocket (the cue ball: a
+// scratch); one short of the line stays.
+TEST_F(MonteCarloTest, BallsHangingPastTheMouthDrop) {
+  const table::Pocket& corner = *table_.PocketNamed("upper_right");
+  const table::Pocket& side = *table_.PocketNamed("lower_middle");
+  const Eigen::Vector2d past = corner.centre + 0.005 * corner.inward;
+  const Eigen::Vector2d short_of = corner.centre - 0.005 * corner.inward;
+  const Eigen::Vector2d cue = side.centre + 0.001 * side.inward;
+  choice::StrokeResult result;
+  result.pocketed = {{5, "lower_left"}};
+  result.rest = {table::AtRest(0, cue.x(), cue.y()), table::AtRest(3, past.x(), past.y()),
+                 table::AtRest(4, short_of.x(), short_of.y()), table::AtRest(6, 1.0, 0.6)};
+  DropHangingBalls(table_, &result);
+  EXPECT_TRUE(result.scratch);
+  const std::vector<std::pair<int, std::string>> pocketed = {{5, "lower_left"}, {3, "upper_right"}};
+  EXPECT_EQ(result.pocketed, pocketed);
+  ASSERT_EQ(result.rest.size(), 2u);
+  EXPECT_EQ(result.rest[0].id, 4);
+  EXPECT_EQ(result.rest[1].id, 6);
+}
+
+// The cue ball rolled softly down the upper right corner's diagonal: at some speed the
+// simulation leaves it at rest between the mouth line and the capture line, in the jaws, which
+// a real table drops and PlayToRest calls a scratch, as the table (planner/game/, the table
+// simulator node) does; whatever rests short of the mouth line stays.
+TEST_F(MonteCarloTest, PlayToRestDropsTheCueBallStoppingInTheJaws) {
+  const std::vector<table::SceneBall> cue_alone = {StraightPot(0.4, 0.4)[0]};
+  const double heading = std::atan2(1.0, 1.0);
+  int hanging = 0;
+  for (double speed = 0.30; speed < 1.2; speed += 0.01) {
+    const physics::CueStroke stroke{speed, heading, 0, 0, 0};
+    table::TableSimulation bare(table_, params_,
+                                {table::Struck(0, stroke, Position(cue_alone[0]), params_)});
+    bare.Run(60.0);
+    const bool in_the_jaws =
+        !bare.pocket(0) && table_.PocketPastMouth(bare.State(0).segment<2>(physics::kX));
+    const StrokeResult r = PlayToRest(table_, params_, cue_alone, stroke, {});
+    EXPECT_EQ(r.scratch, bare.pocket(0).has_value() || in_the_jaws) << speed;
+    hanging += in_the_jaws;
+  }
+  EXPECT_GT(hanging, 0) << "no speed stops the cue ball in the jaws: the test shows nothing";
 }
 
 // A stroke no cue gives (the tip off the ball): not struck, the balls as they were.

@@ -12,7 +12,7 @@
 //  - kDirect: no cushion or jaw between the cue ball's last ball contact and the drop;
 //  - kOffRails: one or more cushions or jaws between them (`rails` counts them);
 //  - kHanging: no drop in the simulation, the cue ball at rest past a pocket's mouth line
-//    (DropHangingBalls dropped it);
+//    (choice::DropHangingBalls dropped it);
 //  - kNoBall: the cue ball dropped without meeting a ball (a miss of the rack).
 //
 // Module: billiard::game.

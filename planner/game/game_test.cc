@@ -173,27 +173,6 @@ TEST_F(GameTest, WhenNothingPlansTheFallbackIsPlayedAndTheRackGoesOn) {
   EXPECT_EQ(game.summary.end, GameEnd::kShotLimit);
 }
 
-// A ball left at rest past a pocket's mouth line drops into that pocket (the cue ball: a
-// scratch); one short of the line stays.
-TEST_F(GameTest, BallsHangingPastTheMouthDrop) {
-  const table::Pocket& corner = *table_.PocketNamed("upper_right");
-  const table::Pocket& side = *table_.PocketNamed("lower_middle");
-  const Eigen::Vector2d past = corner.centre + 0.005 * corner.inward;
-  const Eigen::Vector2d short_of = corner.centre - 0.005 * corner.inward;
-  const Eigen::Vector2d cue = side.centre + 0.001 * side.inward;
-  choice::StrokeResult result;
-  result.pocketed = {{5, "lower_left"}};
-  result.rest = {table::AtRest(0, cue.x(), cue.y()), table::AtRest(3, past.x(), past.y()),
-                 table::AtRest(4, short_of.x(), short_of.y()), table::AtRest(6, 1.0, 0.6)};
-  DropHangingBalls(table_, &result);
-  EXPECT_TRUE(result.scratch);
-  const std::vector<std::pair<int, std::string>> pocketed = {{5, "lower_left"}, {3, "upper_right"}};
-  EXPECT_EQ(result.pocketed, pocketed);
-  ASSERT_EQ(result.rest.size(), 2u);
-  EXPECT_EQ(result.rest[0].id, 4);
-  EXPECT_EQ(result.rest[1].id, 6);
-}
-
 // Under nine-ball the 9 potted off the cue ball before the 1 is a foul and comes back to the
 // foot spot; under any ball the same shot is a legal pot and the 9 stays down.
 TEST_F(GameTest, TheNinePottedOnAFoulComesBackToTheFootSpot) {

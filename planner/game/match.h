@@ -68,7 +68,8 @@ struct MatchNames {
   int shot_limit = 200;
 };
 
-// The options `names` names, the table's noise also the one the players assume; throws
+// The options `names` names, the table's noise also the one the players assume and its constants
+// known to them exactly (ChoiceOptions::sample_constants off); throws
 // std::invalid_argument beginning with the field at fault ("game: ", "players: ", "noise: ").
 MatchOptions OptionsOf(const MatchNames& names);
 

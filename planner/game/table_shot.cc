@@ -52,24 +52,7 @@ choice::StrokeResult ExecuteWithNoise(const table::TableGeometry& table,
   choice::NormalStream normal(seed);
   const physics::CueStroke played =
       params::Perturbed(stroke, noise, params.ball.radius, [&] { return normal.Next(); });
-  choice::StrokeResult result = choice::PlayToRest(table, params, balls, played, motion, events);
-  DropHangingBalls(table, &result);
-  return result;
-}
-
-void DropHangingBalls(const table::TableGeometry& table, choice::StrokeResult* result) {
-  std::vector<table::SceneBall> rest;
-  for (const table::SceneBall& b : result->rest) {
-    const table::Pocket* pocket = table.PocketPastMouth(choice::Position(b));
-    if (!pocket) {
-      rest.push_back(b);
-    } else if (b.id == 0) {
-      result->scratch = true;
-    } else {
-      result->pocketed.emplace_back(b.id, pocket->name);
-    }
-  }
-  result->rest = std::move(rest);
+  return choice::PlayToRest(table, params, balls, played, motion, events);
 }
 
 rules::Shot ShotOf(const rules::Constraints& constraints, const ShotRecord& rec,

@@ -77,7 +77,7 @@ std::optional<physics::CueStroke> PlayerStroke(const players::Player& player,
                                                ShotRecord* rec);
 
 // `stroke` perturbed by `noise` (its normal draws from SampleSeed(seed, 0) on), played to rest
-// on `motion`, the balls hanging past a pocket's mouth dropped (DropHangingBalls); the
+// on `motion`, the balls hanging past a pocket's mouth dropped (choice::PlayToRest); the
 // simulation's events copied to `events` when it is given (PlayToRest).
 choice::StrokeResult ExecuteWithNoise(const table::TableGeometry& table,
                                       const physics::ModelParameters& params,
@@ -86,11 +86,6 @@ choice::StrokeResult ExecuteWithNoise(const table::TableGeometry& table,
                                       const params::ExecutionNoise& noise, std::uint64_t seed,
                                       const choice::Motion& motion,
                                       std::vector<table::TableEvent>* events = nullptr);
-
-// Every ball of `result.rest` resting with its centre past a pocket's mouth line (the line
-// TableGeometry::OnSurface does not let a placed ball cross) moved into that pocket: an object
-// ball into `pocketed` (after the simulation's own), the cue ball a scratch.
-void DropHangingBalls(const table::TableGeometry& table, choice::StrokeResult* result);
 
 // What the referee sees of `result`, played under `constraints` with the call of `rec` (its
 // ball and pocket): the potted balls in id order with their pockets.

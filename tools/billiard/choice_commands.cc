@@ -174,9 +174,8 @@ void PrintChoice(const choice::ChoiceResult& r) {
 void WriteSceneAfter(const LoadedScene& s, const choice::ChoiceResult& r, const std::string& path) {
   const std::vector<table::SceneBall> balls =
       r.cue_placement ? choice::WithCueBallAt(s.balls, *r.cue_placement) : s.balls;
-  choice::StrokeResult played = choice::PlayToRest(s.table, s.params, balls, *r.stroke(),
-                                                   model_choice::TableMotion(s.params));
-  game::DropHangingBalls(s.table, &played);
+  const choice::StrokeResult played = choice::PlayToRest(s.table, s.params, balls, *r.stroke(),
+                                                         model_choice::TableMotion(s.params));
   std::cerr << "  played as planned: potted ";
   if (played.pocketed.empty()) std::cerr << "none";
   for (std::size_t i = 0; i < played.pocketed.size(); ++i) {

@@ -12,7 +12,6 @@
 
 #include "bench/scene_benchmark.h"
 #include "planner/choice/monte_carlo.h"
-#include "planner/game/game.h"
 #include "sim/model_choice/model_choice.h"
 #include "sim/params/parameter_sets.h"
 #include "sim/params/scene_file.h"
@@ -98,7 +97,7 @@ void PrintSceneTable(const table::TableSimulation& sim,
 }
 
 // The table at the end of `sim` as a scene of `scene`'s table and parameters: the balls left on
-// it, a ball resting past a pocket's mouth dropped into that pocket (game::DropHangingBalls: a
+// it, a ball resting past a pocket's mouth dropped into that pocket (choice::DropHangingBalls: a
 // real one would, and no tool is asked about a ball hanging there), said on stderr.
 params::SceneFile SceneAtEnd(const table::TableGeometry& geometry, const table::TableSimulation& sim,
                              const params::SceneFile& scene) {
@@ -106,7 +105,7 @@ params::SceneFile SceneAtEnd(const table::TableGeometry& geometry, const table::
   for (std::size_t i = 0; i < sim.ball_count(); ++i) {
     if (!sim.pocket(i)) end.rest.push_back({sim.id(i), sim.State(i)});
   }
-  game::DropHangingBalls(geometry, &end);
+  choice::DropHangingBalls(geometry, &end);
   for (const auto& [id, pocket] : end.pocketed) {
     std::cerr << "simulate: ball " << id << " rests over " << pocket << "'s mouth: dropped\n";
   }
