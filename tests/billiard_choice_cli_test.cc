@@ -46,10 +46,12 @@ TEST(BilliardChooseShot, PrintsTheChoiceUnderNineBallRules) {
 
 // A long cut under the tournaments' noise whose miss leaves the 1 open: it plays safe and says
 // why, the safety's chance of winning above the attempt's; the nine-ball layout's pot it plays.
+// The table's constants known, as in a match (planner/game/match.h): drawn within the pool
+// set's uncertainty the two chances are within a hundredth (0.454 and 0.460), too near to test.
 TEST(BilliardChooseShot, PlaysSafeWhenThatWinsMoreRacksAndSaysWhy) {
   const std::string scene = std::string(PROJECT_SOURCE_DIR) + "/tests/data/nine_ball_safety.json";
   const std::string args = "choose-shot --scene " + scene + kFew +
-                           " --rules nine-ball --noise computational-pool --json";
+                           " --rules nine-ball --noise computational-pool --exact-constants --json";
   const CommandResult r = Billiard(args);
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json j = OneObject(r, args);

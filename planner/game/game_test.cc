@@ -46,11 +46,14 @@ class Scripted final : public players::Player {
   mutable std::vector<rules::Constraints> seen_;
 };
 
-// Three open balls from ball in hand: cleared, and the summary adds up the shots.
+// Three open balls from ball in hand: cleared, and the summary adds up the shots. Twenty shots
+// at most: a miss can leave the last ball where no direct pot plans, and the fallback strokes
+// then take a few shots to free it (4 of the 9 this game takes).
 TEST_F(GameTest, ClearsAnOpenTableAndCountsWhatHappened) {
   const std::vector<table::SceneBall> balls = {table::AtRest(1, 1.9, 0.9), table::AtRest(2, 0.8, 0.35),
                                                table::AtRest(3, 1.3, 0.7)};
   options_.ball_in_hand = true;
+  options_.shot_limit = 20;
   batch::ThreadPool pool(2);
   const GameRecord game = PlayGame(table_, params_, balls, options_, pool);
   const GameSummary& s = game.summary;
