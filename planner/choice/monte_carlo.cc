@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -20,6 +21,22 @@ constexpr double kLongestStroke = 60.0;
 // The constants' draws come from a stream of their own, apart from the noise's of the same
 // sample: the two are independent, and a set without uncertainty draws the noise it always drew.
 constexpr std::uint64_t kConstantsStream = 0x636f6e7374616e74ull;
+
+// `balls` with the cue ball (id 0) struck by `stroke`; none when no cue gives the stroke.
+std::optional<std::vector<table::SceneBall>> StruckStart(const physics::ModelParameters& params,
+                                                         const std::vector<table::SceneBall>& balls,
+                                                         const physics::CueStroke& stroke) {
+  std::vector<table::SceneBall> start = balls;
+  for (table::SceneBall& b : start) {
+    if (b.id != 0) continue;
+    try {
+      b = table::Struck(b.id, stroke, Position(b), params);
+    } catch (const std::invalid_argument&) {
+      return std::nullopt;
+    }
+  }
+  return start;
+}
 
 Execution Execute(const table::TableGeometry& table, const physics::ModelParameters& params,
                   const std::vector<table::SceneBall>& balls, const pot::PotPlan& plan,
@@ -79,20 +96,15 @@ StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelP
                         const physics::CueStroke& stroke, const Motion& motion,
                         std::vector<table::TableEvent>* events) {
   StrokeResult result;
-  std::vector<table::SceneBall> start = balls;
-  for (table::SceneBall& b : start) {
-    if (b.id != 0) continue;
-    try {
-      b = table::Struck(b.id, stroke, Position(b), params);
-    } catch (const std::invalid_argument&) {
-      result.rest = balls;
-      return result;
-    }
+  const std::optional<std::vector<table::SceneBall>> start = StruckStart(params, balls, stroke);
+  if (!start) {
+    result.rest = balls;
+    return result;
   }
   result.struck = true;
   table::TableSimulationOptions sim_options;
   sim_options.five_dof = motion;
-  table::TableSimulation sim(table, params, start, sim_options);
+  table::TableSimulation sim(table, params, *start, sim_options);
   sim.Run(kLongestStroke);
   if (events) *events = sim.events();
   result.first_contact = table::FirstBallMet(sim.events(), 0);
@@ -128,6 +140,21 @@ void DropHangingBalls(const table::TableGeometry& table, StrokeResult* result) {
     }
   }
   result->rest = std::move(rest);
+}
+
+int FirstContact(const table::TableGeometry& table, const physics::ModelParameters& params,
+                 const std::vector<table::SceneBall>& balls, const physics::CueStroke& stroke) {
+  const std::optional<std::vector<table::SceneBall>> start = StruckStart(params, balls, stroke);
+  if (!start) return -1;
+  table::TableSimulation sim(table, params, *start);
+  // The cue ball's first ball, or its drop: nothing later changes what it met first.
+  sim.RunUntil(
+      [](const table::TableEvent& e) {
+        return (e.type == table::EventType::kBallBall && (e.ball == 0 || e.other == 0)) ||
+               (e.type == table::EventType::kBallPocket && e.ball == 0);
+      },
+      kLongestStroke);
+  return table::FirstBallMet(sim.events(), 0);
 }
 
 bool LegalPot(const StrokeResult& result, int ball, const std::string& pocket) {

@@ -89,6 +89,12 @@ StrokeResult PlayToRest(const table::TableGeometry& table, const physics::ModelP
 // ball into `pocketed` (after the simulation's own), the cue ball a scratch.
 void DropHangingBalls(const table::TableGeometry& table, StrokeResult* result);
 
+// The first ball the cue ball of `balls` meets when struck by `stroke` on the closed form, -1
+// none (or no cue gives the stroke): PlayToRest's first_contact, the table run only until that
+// contact or the cue ball's drop (what a search over headings asks of each).
+int FirstContact(const table::TableGeometry& table, const physics::ModelParameters& params,
+                 const std::vector<table::SceneBall>& balls, const physics::CueStroke& stroke);
+
 // Whether `result` pots `ball` in `pocket` legally: the cue ball's first contact that ball, the
 // ball in that pocket, no scratch.
 bool LegalPot(const StrokeResult& result, int ball, const std::string& pocket);

@@ -113,6 +113,26 @@ TEST_F(MonteCarloTest, PlayToRestDropsTheCueBallStoppingInTheJaws) {
   EXPECT_GT(hanging, 0) << "no speed stops the cue ball in the jaws: the test shows nothing";
 }
 
+// FirstContact is PlayToRest's first contact, the table run only that far: over a fan of
+// headings and speeds into two balls (the cue ball meeting the 1, the 2, both or neither, or
+// dropping first), and -1 for a stroke no cue gives.
+TEST_F(MonteCarloTest, FirstContactIsPlayToRestsOwn) {
+  std::vector<table::SceneBall> balls = StraightPot(0.4, 0.6);
+  balls.push_back(table::AtRest(2, 1.6, 0.9));
+  std::set<int> met;
+  for (double speed : {0.5, 1.5, 3.0}) {
+    for (double heading = -M_PI; heading < M_PI; heading += 0.05) {
+      const physics::CueStroke stroke{speed, heading, 0, 0, 0};
+      const int first = FirstContact(table_, params_, balls, stroke);
+      EXPECT_EQ(first, PlayToRest(table_, params_, balls, stroke, {}).first_contact)
+          << speed << " m/s at " << heading;
+      met.insert(first);
+    }
+  }
+  EXPECT_EQ(met, (std::set<int>{-1, 1, 2}));
+  EXPECT_EQ(FirstContact(table_, params_, balls, {2.0, 0.0, 2 * params_.ball.radius, 0, 0}), -1);
+}
+
 // A stroke no cue gives (the tip off the ball): not struck, the balls as they were.
 TEST_F(MonteCarloTest, AStrokeTheCueCannotGiveIsNotStruck) {
   const auto balls = StraightPot(0.4, 0.4);

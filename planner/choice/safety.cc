@@ -192,7 +192,7 @@ std::vector<SafetyCandidate> Kicks(const table::TableGeometry& table,
       int run = 0, best_run = 0, best_end = 0;
       for (int k = -steps; k <= steps; ++k) {
         s.heading = mirror + k * kKickStep;
-        run = PlayToRest(table, params, balls, s, {}).first_contact == target ? run + 1 : 0;
+        run = FirstContact(table, params, balls, s) == target ? run + 1 : 0;
         if (run > best_run) {
           best_run = run;
           best_end = k;
