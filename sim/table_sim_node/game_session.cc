@@ -54,44 +54,6 @@ std::vector<table::SceneBall> WithCueBallPlaced(const table::TableGeometry& geom
   return table::WithBallAt(others, kCueBall, *placed);
 }
 
-// What the table did with a game shot: the balls left at rest, the object balls dropped
-// (ascending) and the pocket of each, whether the cue ball dropped, and whether the ball
-// `called` dropped in `pocket`.
-struct TableOutcome {
-  std::vector<table::SceneBall> rest;
-  std::vector<int> potted;
-  std::vector<std::string> pockets;
-  bool scratch = false;
-  bool called_potted = false;
-};
-
-TableOutcome OutcomeOf(const table::TableSimulation& sim, const table::TableGeometry& geometry,
-                       double radius, int called, const std::string& called_pocket) {
-  TableOutcome outcome;
-  std::vector<std::pair<int, std::string>> dropped;
-  for (std::size_t i = 0; i < sim.ball_count(); ++i) {
-    std::optional<std::string> pocket = sim.pocket(i);
-    // A ball come to rest over a pocket's mouth hangs there in the model, where a real one
-    // would drop (table::TableGeometry::OnSurface): it drops in that pocket.
-    const Eigen::Vector2d at = sim.State(i).head<2>();
-    if (!pocket && !geometry.OnSurface(at, radius)) pocket = NearestPocket(geometry, at);
-    if (!pocket) {
-      outcome.rest.push_back({sim.id(i), sim.State(i)});
-    } else if (sim.id(i) == kCueBall) {
-      outcome.scratch = true;
-    } else {
-      dropped.emplace_back(sim.id(i), *pocket);
-      if (sim.id(i) == called && *pocket == called_pocket) outcome.called_potted = true;
-    }
-  }
-  std::sort(dropped.begin(), dropped.end());
-  for (const auto& [ball, pocket] : dropped) {
-    outcome.potted.push_back(ball);
-    outcome.pockets.push_back(pocket);
-  }
-  return outcome;
-}
-
 // The log's line of a game shot played.
 std::string GameShotLine(const GameShot& shot) {
   std::ostringstream line;
@@ -189,7 +151,7 @@ GameShot TableSimNode::PlayGameShot(int id, GameShot shot, const shot_request_t&
   }
   const table::TableSimulation sim = PlayOut(geometry, balls, command, SceneMotion(plant_));
   shot.first_contact = table::FirstBallMet(sim.events(), kCueBall);
-  TableOutcome outcome = OutcomeOf(sim, geometry, radius, shot.called, shot.pocket);
+  TableOutcome outcome = OutcomeOf(sim, geometry, shot.called, shot.pocket);
   shot.potted = outcome.potted;
   played.first_contact = shot.first_contact;
   played.to_rail_after_contact = table::BallsToRailAfterFirstContact(sim.events(), kCueBall);

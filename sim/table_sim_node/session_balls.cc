@@ -1,7 +1,9 @@
 #include "sim/table_sim_node/session_balls.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "lcmtypes/billiard/ball_state_t.hpp"
 #include "sim/table/rack.h"
@@ -39,6 +41,31 @@ std::string NearestPocket(const table::TableGeometry& table, const Eigen::Vector
                                           return (a.centre - at).norm() < (b.centre - at).norm();
                                         });
   return nearest->name;
+}
+
+TableOutcome OutcomeOf(const table::TableSimulation& sim, const table::TableGeometry& geometry,
+                       int called, const std::string& called_pocket) {
+  TableOutcome outcome;
+  std::vector<std::pair<int, std::string>> dropped;
+  for (std::size_t i = 0; i < sim.ball_count(); ++i) {
+    std::optional<std::string> pocket = sim.pocket(i);
+    const table::Pocket* hanging = geometry.PocketPastMouth(sim.State(i).head<2>());
+    if (!pocket && hanging) pocket = hanging->name;
+    if (!pocket) {
+      outcome.rest.push_back({sim.id(i), sim.State(i)});
+    } else if (sim.id(i) == kCueBall) {
+      outcome.scratch = true;
+    } else {
+      dropped.emplace_back(sim.id(i), *pocket);
+      if (sim.id(i) == called && *pocket == called_pocket) outcome.called_potted = true;
+    }
+  }
+  std::sort(dropped.begin(), dropped.end());
+  for (const auto& [ball, pocket] : dropped) {
+    outcome.potted.push_back(ball);
+    outcome.pockets.push_back(pocket);
+  }
+  return outcome;
 }
 
 std::vector<table::SceneBall> InTheKitchen(const table::TableGeometry& table, double radius,

@@ -1,7 +1,7 @@
 // The balls of a table session as the truth names them: the cue ball is id 0, an object ball's
 // id is its number (the class the estimator should publish it with). Finding them, the object
-// ball the cue ball is rolled into at a break, the pocket a ball hanging over a mouth drops
-// into, and the cue ball put back in the kitchen after a scratch.
+// ball the cue ball is rolled into at a break, what a game shot left on the table and dropped,
+// and the cue ball put back in the kitchen after a scratch.
 //
 // Module: billiard::table_sim_node.
 #pragma once
@@ -13,6 +13,7 @@
 
 #include "sim/table/scene.h"
 #include "sim/table/table_geometry.h"
+#include "sim/table/table_simulation.h"
 
 namespace billiard::table_sim_node {
 
@@ -39,6 +40,24 @@ const table::SceneBall& NearestObjectBall(const std::vector<table::SceneBall>& b
 
 // The name of the pocket nearest `at`.
 std::string NearestPocket(const table::TableGeometry& table, const Eigen::Vector2d& at);
+
+// What the table did with a game shot: the balls left at rest, the object balls dropped
+// (ascending) and the pocket of each, whether the cue ball dropped, and whether the ball
+// `called` dropped in `pocket`.
+struct TableOutcome {
+  std::vector<table::SceneBall> rest;
+  std::vector<int> potted;
+  std::vector<std::string> pockets;
+  bool scratch = false;
+  bool called_potted = false;
+};
+
+// The outcome of `sim`, played to rest, calling ball `called` in `called_pocket`. A ball come
+// to rest past a pocket's mouth line hangs there in the model, where a real one would drop
+// (table::TableGeometry::PocketPastMouth): it drops in that pocket, as in the planner's own
+// games (choice::PlayToRest). A ball frozen to a rail stays.
+TableOutcome OutcomeOf(const table::TableSimulation& sim, const table::TableGeometry& geometry,
+                       int called, const std::string& called_pocket);
 
 // `balls` with the cue ball (id 0) back on the table: on the head spot (the middle of the head
 // half, x = 1/4 length), or the nearest free place behind it toward the head rail.

@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "lcmtypes/billiard/ball_state_t.hpp"
+#include "sim/params/parameter_sets.h"
 #include "sim/params/table_specs.h"
 
 namespace billiard::table_sim_node {
@@ -41,6 +44,40 @@ TEST(SessionBalls, TheNearestPocketOfAPointIsTheCornerOrSideItLiesBy) {
   EXPECT_EQ(NearestPocket(table, {0.02, 0.03}), "lower_left");
   EXPECT_EQ(NearestPocket(table, {0.5 * table.length + 0.01, 0.02}), "lower_middle");
   EXPECT_EQ(NearestPocket(table, {table.length, table.width}), "upper_right");
+}
+
+// A ball rolled softly down the upper right corner's diagonal: at some speeds the model leaves
+// it at rest past the mouth line, in the jaws, where a real one drops. The outcome drops it in
+// that pocket (the cue ball: a scratch; an object ball: a pot, the called one's if called
+// there), as the planner's own games do (choice::PlayToRest); one resting short of the line, or
+// frozen to a rail, stays.
+TEST(SessionBalls, ABallStoppingInTheJawsDropsThereAndOneFrozenToARailStays) {
+  const table::TableGeometry table = Pool();
+  const physics::ModelParameters params = params::LoadParameters("pool");
+  const table::Pocket& corner = *table.PocketNamed("upper_right");
+  const Eigen::Vector2d from = corner.centre - 0.8 * Eigen::Vector2d(1.0, 1.0).normalized();
+  const table::SceneBall frozen = table::AtRest(9, 0.6, params.ball.radius);  // on the bottom rail
+  int hanging = 0;
+  for (const int id : {kCueBall, 5}) {
+    for (double speed = 0.30; speed < 1.2; speed += 0.01) {
+      table::TableSimulation sim(
+          table, params,
+          {table::Struck(id, {speed, std::atan2(1.0, 1.0), 0, 0, 0}, from, params), frozen});
+      sim.Run(60.0);
+      const bool in_the_jaws = !sim.pocket(0) && table.PocketPastMouth(sim.State(0).head<2>());
+      const bool dropped = sim.pocket(0).has_value() || in_the_jaws;
+      hanging += in_the_jaws;
+      const TableOutcome outcome = OutcomeOf(sim, table, 5, "upper_right");
+      EXPECT_EQ(outcome.scratch, id == kCueBall && dropped) << speed;
+      EXPECT_EQ(outcome.called_potted, id == 5 && dropped) << speed;
+      EXPECT_EQ(outcome.potted, id == 5 && dropped ? std::vector<int>{5} : std::vector<int>{})
+          << speed;
+      ASSERT_EQ(outcome.rest.size(), dropped ? 1u : 2u) << speed;
+      EXPECT_EQ(outcome.rest.back().id, 9);
+      EXPECT_EQ(outcome.rest.back().state.head<2>(), frozen.state.head<2>());
+    }
+  }
+  EXPECT_GT(hanging, 0) << "no speed stops a ball in the jaws: the test shows nothing";
 }
 
 // After a scratch the cue ball goes on the head spot (x = 1/4 length, the middle of the width);
