@@ -77,7 +77,7 @@ int RunLength(const std::vector<table::SceneBall>& balls, rules::Rules rules) {
 }
 
 RunOutRates MeasuredRunOutRates(rules::Rules rules) {
-  if (rules::IsEightBall(rules)) return {368.0 / 486.0, 98.0 / 167.0};
+  if (rules::IsEightBall(rules)) return {733.0 / 925.0, 172.0 / 264.0};
   return {272.0 / 331.0, 74.0 / 168.0};
 }
 

@@ -48,13 +48,14 @@ struct RunOutRates {
   double arrival_chance = 1.0;  // the first shot after the opponent's miss keeps it
 };
 
-// The rates measured for `rules`' game under the computational-pool noise: ours-no-safety's in
-// 100 racks against ours (at nine-ball ours on the scale before this one, at eight-ball on this;
-// `billiard match --game G --players ours,ours-no-safety --racks 100
+// The rates measured for `rules`' game under the computational-pool noise: ours-no-safety's
+// against ours on seed 1 (`billiard match --game G --players ours,ours-no-safety --racks N
 // --noise computational-pool --seed 1 --shots LOG`, then `billiard fit-run-out LOG --player 1`;
-// docs/match.md, "The safeties' scale"). Nine-ball (and any other game): 272 of 331 shots after
-// its own pot kept the table, 74 of 168 first shots after a miss. Eight-ball (each group's
-// rules too): 368 of 486 and 98 of 167; more balls to choose from leave a first shot more often.
+// docs/match.md, "The safeties' scale"). Nine-ball (and any other game; 100 racks, ours on the
+// scale before this one): 272 of 331 shots after its own pot kept the table, 74 of 168 first
+// shots after a miss. Eight-ball (each group's rules too; 200 racks, both players knowing the
+// table's constants): 733 of 925 and 172 of 264; more balls to choose from leave a first shot
+// more often.
 RunOutRates MeasuredRunOutRates(rules::Rules rules);
 
 // The balls the player shooting under `rules` must still pot to win on `balls` (the cue ball,
