@@ -147,13 +147,8 @@ int FirstContact(const table::TableGeometry& table, const physics::ModelParamete
   const std::optional<std::vector<table::SceneBall>> start = StruckStart(params, balls, stroke);
   if (!start) return -1;
   table::TableSimulation sim(table, params, *start);
-  // The cue ball's first ball, or its drop: nothing later changes what it met first.
-  sim.RunUntil(
-      [](const table::TableEvent& e) {
-        return (e.type == table::EventType::kBallBall && (e.ball == 0 || e.other == 0)) ||
-               (e.type == table::EventType::kBallPocket && e.ball == 0);
-      },
-      kLongestStroke);
+  sim.RunUntil([](const table::TableEvent& e) { return table::SettlesFirstBallMet(e, 0); },
+               kLongestStroke);
   return table::FirstBallMet(sim.events(), 0);
 }
 

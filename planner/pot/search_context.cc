@@ -113,10 +113,7 @@ std::unique_ptr<TableSimulation> SearchContext::Launch(const CueStroke& stroke, 
 Contact SearchContext::FirstContact(const CueStroke& stroke, bool truth) {
   Contact c;
   std::unique_ptr<TableSimulation> sim = Launch(stroke, truth);
-  const auto cue_event = [](const TableEvent& e) {
-    return (e.type == EventType::kBallBall && (e.ball == 0 || e.other == 0)) ||
-           (e.type == EventType::kBallPocket && e.ball == 0);
-  };
+  const auto cue_event = [](const TableEvent& e) { return table::SettlesFirstBallMet(e, 0); };
   if (!sim->RunUntil(cue_event)) return c;
   const auto it = std::find_if(sim->events().rbegin(), sim->events().rend(), cue_event);
   if (it->type == EventType::kBallPocket) return c;

@@ -47,6 +47,11 @@ int FirstBallMet(const std::vector<TableEvent>& events, int id) {
   return -1;
 }
 
+bool SettlesFirstBallMet(const TableEvent& e, int id) {
+  return (e.type == EventType::kBallBall && (e.ball == id || e.other == id)) ||
+         (e.type == EventType::kBallPocket && e.ball == id);
+}
+
 const char* EventTypeName(EventType type) {
   switch (type) {
     case EventType::kTransition:

@@ -69,6 +69,10 @@ struct TableEvent {
 // what a stroke's legality turns on.
 int FirstBallMet(const std::vector<TableEvent>& events, int id);
 
+// Whether `e` settles FirstBallMet for ball `id`: it meets a ball, or drops (nothing later
+// changes what it met first). What a search that asks only the first contact runs a table until.
+bool SettlesFirstBallMet(const TableEvent& e, int id);
+
 struct TableSimulationOptions {
   CushionModel cushion_model = CushionModel::kMathavan2010;
   // kMathavan2010's steps per approach momentum (ResolveCushionImpact): fewer for a search that

@@ -62,6 +62,27 @@ double SmallestGap(const TableSimulation& sim, double t, double r) {
   return smallest;
 }
 
+// A ball's first contact is settled by its meeting a ball (as either party) or its drop; its
+// cushions, jaws and transitions, and the events of other balls, settle nothing.
+TEST(TableSimulation, AFirstContactIsSettledByABallMetOrADrop) {
+  const auto event = [](EventType type, int ball, int other) {
+    TableEvent e;
+    e.type = type;
+    e.ball = ball;
+    e.other = other;
+    return e;
+  };
+  EXPECT_TRUE(SettlesFirstBallMet(event(EventType::kBallBall, 0, 3), 0));
+  EXPECT_TRUE(SettlesFirstBallMet(event(EventType::kBallBall, 3, 0), 0));
+  EXPECT_TRUE(SettlesFirstBallMet(event(EventType::kBallPocket, 0, -1), 0));
+  EXPECT_FALSE(SettlesFirstBallMet(event(EventType::kBallBall, 2, 3), 0));
+  EXPECT_FALSE(SettlesFirstBallMet(event(EventType::kBallPocket, 3, -1), 0));
+  for (EventType type : {EventType::kTransition, EventType::kBallCushion, EventType::kBallJaw,
+                         EventType::kBallPush}) {
+    EXPECT_FALSE(SettlesFirstBallMet(event(type, 0, -1), 0)) << EventTypeName(type);
+  }
+}
+
 TEST(TableSimulation, HeadOnStunMeetsAtTheSlidingBallsTimeAndSendsHalfOnePlusE) {
   const auto p = Pool();
   const TableGeometry table = Table("pool-9ft");
