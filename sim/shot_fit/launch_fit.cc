@@ -28,6 +28,10 @@ constexpr double kSlideEndSpread = 1.25, kFramesPastTheSlide = 3.0;
 // The launch is seen where the slide spans this many frames: with one, its acceleration rests on
 // one sample and the launch's covariance is singular to rounding (a slow follow's slide).
 constexpr double kFramesInTheSlide = 2.0;
+// The rolling line is taken from the fit again at most this many times, until it turns by less
+// than kSettledLine [rad] (a micrometre over a metre).
+constexpr int kMaxRefits = 20;
+constexpr double kSettledLine = 1e-6;
 // The commanded path is checked for clearance at this spacing [s]: a ball at 8 m/s moves 8 mm.
 constexpr double kPathStep = 1e-3;
 
@@ -70,8 +74,7 @@ Predicted Predict(const physics::CueStroke& commanded, const Eigen::Vector2d& st
   if (v1.norm() > 0.0) out.rolling_direction = v1.normalized();
   out.rolling_deceleration = 5.0 / 7.0 * closed.mu_roll * closed.gravity;
   out.stop_time = path.stop_time();
-  const double horizon = std::min(out.stop_time, 2.0 * o.window);
-  while (out.clear_until < horizon &&
+  while (out.clear_until < out.stop_time &&
          Clear(path.At(out.clear_until + kPathStep).segment<2>(physics::kX), others, p,
                o.clearance)) {
     out.clear_until += kPathStep;
@@ -130,9 +133,8 @@ Stretch MovingSamples(const TrackedShot& shot, const Predicted& predicted,
   s.strike_lo = ball.t[first - 1];
   s.strike_hi = ball.t[first];
   for (std::size_t k = first; k < ball.t.size(); ++k) {
-    const double since = ball.t[k] - s.strike_hi;
     const double longest = ball.t[k] - s.strike_lo;  // since the earliest the strike can be
-    if (since > o.window || longest > kBeforeRest * predicted.stop_time ||
+    if (longest > kBeforeRest * predicted.stop_time ||
         kFasterThanCommanded * longest > predicted.clear_until ||
         !Clear(ball.position[k], others, p, o.clearance)) {
       break;
@@ -255,6 +257,25 @@ void FitPass(const Stretch& s, const Predicted& predicted, bool free_slide,
   if (!out.ok) out.reason = "the launch's samples do not determine it";
 }
 
+// The slide's duration for which the fit's slide decelerates at `slide_deceleration` (mu_s g),
+// within kSlideEndSpread of the commanded one's: a slide's frames alone place its end only
+// roughly, and the rolling frames after it, extrapolated to an end placed wrong, would bend
+// the launch (a long roll's weight against a draw's few sliding frames).
+double PlayedSlideTime(const Stretch& s, Predicted predicted, const LaunchFitOptions& options,
+                       double slide_deceleration) {
+  const double commanded = predicted.slide_time;
+  const auto mismatch = [&](double slide_time) {
+    predicted.slide_time = slide_time;
+    MeasuredLaunch fit;
+    FitPass(s, predicted, true, options, fit);
+    const double deceleration = (fit.rolling - fit.velocity).norm() / slide_time;
+    return std::pow(deceleration - slide_deceleration, 2);
+  };
+  return physics::GoldenSectionMinimum(
+      mismatch, commanded / kSlideEndSpread, commanded * kSlideEndSpread,
+      [](double lo, double hi) { return hi - lo < kStrikeTimeTolerance; });
+}
+
 }  // namespace
 
 MeasuredLaunch FitLaunch(const TrackedShot& shot, const physics::CueStroke& commanded,
@@ -281,11 +302,23 @@ MeasuredLaunch FitLaunch(const TrackedShot& shot, const physics::CueStroke& comm
   out.launch_seen = predicted.slide_time > kFramesInTheSlide * frame;
   FitPass(s, predicted, out.launch_seen, options, out);
   out.rolling_seen = s.t.back() - out.strike_time > predicted.slide_time + frame;
-  if (out.launch_seen && out.rolling_seen) {
-    // The slide lasts as long as the change it makes at mu_s g: the stroke played, not the
-    // commanded one, sets where its frames change from slide to roll.
-    predicted.slide_time = (out.rolling - out.velocity).norm() / (p.contact.mu * p.ball.gravity);
-    FitPass(s, predicted, true, options, out);
+  if (!out.rolling_seen) return out;
+  // The stroke played, not the commanded one, sets where its frames change from slide to roll
+  // (the slide lasts as long as the change it makes at mu_s g) and the line it rolls along: the
+  // rolling resistance along the commanded line would bend a long roll's fitted path by the
+  // heading's error times the distance it slows (4 mrad of 0.9 m in 5 s: 3.5 mm). Both are
+  // taken from the fit again until the line settles.
+  const double slide_deceleration = p.contact.mu * p.ball.gravity;
+  for (int pass = 0; pass < kMaxRefits; ++pass) {
+    const Eigen::Vector2d line = out.rolling.normalized();
+    const Eigen::Vector2d& was = predicted.rolling_direction;
+    const double turned = std::abs(was.x() * line.y() - was.y() * line.x());
+    predicted.rolling_direction = line;
+    if (out.launch_seen) {
+      predicted.slide_time = PlayedSlideTime(s, predicted, options, slide_deceleration);
+    }
+    FitPass(s, predicted, out.launch_seen, options, out);
+    if (turned < kSettledLine) break;
   }
   return out;
 }

@@ -24,18 +24,21 @@
 // velocity. When the frames end inside the slide, the rolling velocity is not seen: the slide's
 // acceleration is mu_s g whatever the spin, which sets only how long it lasts.
 //
-// Samples are used from the strike for at most `window`, and only while the ball is clear of
-// every other ball's start (2 r + clearance) and of the cushions (r + clearance from the
-// playing surface's edges), and so is the commanded stroke's path 15 % faster up to the
-// sample's time (a ball that met a cushion between two frames can be back inside at the
-// second), and it has not come near rest (the commanded stroke's stop time): a collision, a
-// cushion or a stop would break the model. Frames near the slide's end are left out unless
-// three frames follow 1.25 times the commanded slide (the played one ends within that). The launch's covariance is the
-// Gauss-Newton one over (t_s, v, a), s^2 (J^T J)^-1, with s the residuals' RMS or
-// `position_sd`, whichever is larger: the tracks' error per coordinate, which a fit of a few
-// frames cannot estimate alone. Filtered tracks (the estimator's) share their error between
-// neighbouring frames, which this covariance does not know; docs/identification.md says what
-// that does to the noise measured.
+// Samples are used from the strike for as long as the model holds: while the ball is clear of every
+// other ball's start (2 r + clearance) and of the cushions (r + clearance from the playing
+// surface's edges), and so is the commanded stroke's path 15 % faster up to the sample's time (a
+// ball that met a cushion between two frames can be back inside at the second), and it has not come
+// near rest (the commanded stroke's stop time): a collision, a cushion or a stop would break the
+// model. The whole of that stretch, not a first few tenths of a second: the rolling line is
+// straight until then, and its length is what sets the rolling direction's error against the
+// tracks' (a window of 0.3 s left seed 1's heading 34 % under the robot's draws on the estimator's
+// tracks, docs/identification.md). Frames near the slide's end are left out unless three frames
+// follow 1.25 times the commanded slide (the played one ends within that). The launch's covariance
+// is the Gauss-Newton one over (t_s, v, a), s^2 (J^T J)^-1, with s the residuals' RMS or
+// `position_sd`, whichever is larger: the tracks' error per coordinate, which a fit of a few frames
+// cannot estimate alone. Filtered tracks (the estimator's) share their error between neighbouring
+// frames, which this covariance does not know; docs/identification.md says what that does to the
+// noise measured.
 //
 // Module: billiard::shot_fit.
 #pragma once
@@ -50,7 +53,6 @@
 namespace billiard::shot_fit {
 
 struct LaunchFitOptions {
-  double window = 0.3;        // the longest stretch of track after the strike fitted [s]
   double position_sd = 5e-4;  // the tracks' error per coordinate, at least [m]
   double clearance = 3e-3;    // from other balls and the cushions' lines [m]
   int min_samples = 3;        // moving samples needed (two equations each; seven unknowns)

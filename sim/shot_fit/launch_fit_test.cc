@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "sim/params/parameter_sets.h"
+#include "sim/physics/closed_form.h"
 #include "sim/params/table_specs.h"
 #include "sim/shot_fit/synthetic_shots.h"
 
@@ -85,6 +86,48 @@ TEST(FitLaunch, StopsBeforeTheFirstCollision) {
   const MeasuredLaunch touching = FitLaunch(Tracked(scene, 0.0, 1), scene.strike.stroke, Pool());
   EXPECT_FALSE(touching.ok);
   EXPECT_NE(touching.reason.find("before it met"), std::string::npos) << touching.reason;
+}
+
+// A long roll, struck with the robot's error (0.3 degree of heading, 2.5 % of speed, 0.8 mm of
+// tip height and side) against the stroke it was told: the fit follows the ball for seconds, and
+// neither the commanded line of the rolling resistance nor the commanded end of the slide may
+// bend it (at 0.3 degree, the commanded line moves a 5 s roll's end by 4 mm; a draw's slide ends
+// a tenth earlier or later). Noiseless, for the loop's spin styles: a stun's and a draw's
+// launch and the velocity they roll on come back exactly; a follow's and a natural roll's slide
+// is shorter than two frames, so their slide is the commanded one's and the velocity they roll
+// on comes back to a tenth of a per cent, the path to a twenty-fifth of the camera's error.
+TEST(FitLaunch, FollowsALongRollOfAStrokeOffItsCommand) {
+  const double r = Pool().ball.radius;
+  for (const double height : {0.0, -0.4, 0.4, 0.2}) {
+    SyntheticScene scene;
+    scene.starts = {{0.4, 0.65}};
+    scene.strike.time = 0.01;
+    const physics::CueStroke commanded{0.5, 0.0, 0.0, height * r, 0.0};
+    scene.strike.stroke = commanded;
+    scene.strike.stroke.speed *= 1.025;
+    scene.strike.stroke.heading += 0.3 * M_PI / 180.0;
+    scene.strike.stroke.tip_height += 0.8e-3;
+    scene.strike.stroke.tip_side += 0.8e-3;
+    const TrackedShot shot = SimulateTrackedShot(PoolTable(), Pool(), scene.starts, 0,
+                                                 scene.strike, 6.0, kPeriod, 0.0, 0.0, 1);
+    const MeasuredLaunch launch = FitLaunch(shot, commanded, Pool());
+    ASSERT_TRUE(launch.ok && launch.rolling_seen) << launch.reason << height;
+    EXPECT_GT(launch.samples * kPeriod, 2.0) << height;  // seconds of the roll fitted
+    const physics::BallState played =
+        physics::StrikeBall(scene.strike.stroke, scene.starts[0], Pool());
+    const physics::ClosedFormTrajectory path(physics::ClosedFormParameters::From(Pool()), played);
+    const Eigen::Vector2d rolling = path.slide_end_state().segment<2>(physics::kVx);
+    const bool slides = height <= 0.0;
+    EXPECT_EQ(launch.launch_seen, slides) << height;
+    if (slides) {
+      EXPECT_LT((launch.velocity - played.segment<2>(physics::kVx)).norm(), 1e-5) << height;
+      EXPECT_LT((launch.rolling - rolling).norm(), 1e-5) << height;
+      EXPECT_LT(launch.rms, 1e-6) << height;
+    } else {
+      EXPECT_LT((launch.rolling - rolling).norm(), 1e-3 * rolling.norm()) << height;
+      EXPECT_LT(launch.rms, kNoise / 25.0) << height;
+    }
+  }
 }
 
 // A ball that never moves has no launch.
