@@ -303,11 +303,8 @@ MeasuredLaunch FitLaunch(const TrackedShot& shot, const physics::CueStroke& comm
   FitPass(s, predicted, out.launch_seen, options, out);
   out.rolling_seen = s.t.back() - out.strike_time > predicted.slide_time + frame;
   if (!out.rolling_seen) return out;
-  // The stroke played, not the commanded one, sets where its frames change from slide to roll
-  // (the slide lasts as long as the change it makes at mu_s g) and the line it rolls along: the
-  // rolling resistance along the commanded line would bend a long roll's fitted path by the
-  // heading's error times the distance it slows (4 mrad of 0.9 m in 5 s: 3.5 mm). Both are
-  // taken from the fit again until the line settles.
+  // The stroke played, not the commanded one, sets where its slide ends and the line it rolls
+  // along (launch_fit.h): both taken from the fit until the line settles.
   const double slide_deceleration = p.contact.mu * p.ball.gravity;
   for (int pass = 0; pass < kMaxRefits; ++pass) {
     const Eigen::Vector2d line = out.rolling.normalized();

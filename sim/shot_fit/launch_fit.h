@@ -1,5 +1,5 @@
 // The cue ball's launch as an overhead camera's tracks show it: its velocity right after the
-// strike, from the first frames of a tracked shot before the ball meets anything, with the
+// strike, from the frames of a tracked shot before the ball meets anything, with the
 // covariance the tracking leaves on it. What the robot's stroke actually did, to hold against
 // what it was commanded to do (execution_noise_fit.h).
 //
@@ -12,33 +12,36 @@
 //     p(t) = p0 + v T + a T^2 / 2 + (v + a T)(tau - T) - 5/7 mu_r g (tau - T)^2 d / 2   tau > T
 //
 // p0 is the ball's position at rest (fitted too, the samples before the strike its data: one
-// sample's error turns the launch's line about it), T and the rolling direction d the commanded
-// stroke's (cue_strike.h, then closed_form.h: the robot's error changes them to
-// second order only); v and a are free, so that the launch velocity is the tracks' and the
-// spin actually given shows in a T = v_roll - v (the speed the ball rolls on). Given t_s the
-// model is linear in (v, a): least squares; t_s is the golden-section least of the residual sum
-// of squares. Where frames run past the slide, T is then taken again from the fit (the slide's
-// change over mu_s g) and the fit repeated: the stroke played sets where the slide ends. When
+// sample's error turns the launch's line about it), T and the rolling direction d at first the
+// commanded stroke's (cue_strike.h, then closed_form.h); v and a are free, so that the launch
+// velocity is the tracks' and the spin actually given shows in a T = v_roll - v (the speed the ball
+// rolls on). Given t_s the model is linear in (v, a): least squares; t_s is the golden-section
+// least of the residual sum of squares. Where frames run past the slide, the stroke played, not the
+// commanded one, sets T and d: T is the duration for which the fitted slide decelerates at mu_s g
+// (a golden-section search within kSlideEndSpread of the commanded one), d the fitted rolling
+// velocity's direction, both taken again until d settles. The robot's error moves them little, but
+// the rolling frames weigh: over a long roll the resistance along a line off by the heading's error
+// bends the path by that error times the distance the ball slows (0.3 degree over a 5 s roll: 4
+// mm), and the rolling frames extrapolated to a slide's end placed wrong bend a draw's launch. When
 // the slide is shorter than two frames, a is the commanded stroke's (mu_s g along its slip), since
-// frames that straddle one slide sample or none cannot tell it from v: the launch is not seen, only the rolling
-// velocity. When the frames end inside the slide, the rolling velocity is not seen: the slide's
-// acceleration is mu_s g whatever the spin, which sets only how long it lasts.
+// frames that straddle one slide sample or none cannot tell it from v: the launch is not seen, only
+// the rolling velocity. When the frames end inside the slide, the rolling velocity is not seen: the
+// slide's acceleration is mu_s g whatever the spin, which sets only how long it lasts.
 //
 // Samples are used from the strike for as long as the model holds: while the ball is clear of every
 // other ball's start (2 r + clearance) and of the cushions (r + clearance from the playing
 // surface's edges), and so is the commanded stroke's path 15 % faster up to the sample's time (a
 // ball that met a cushion between two frames can be back inside at the second), and it has not come
 // near rest (the commanded stroke's stop time): a collision, a cushion or a stop would break the
-// model. The whole of that stretch, not a first few tenths of a second: the rolling line is
-// straight until then, and its length is what sets the rolling direction's error against the
-// tracks' (a window of 0.3 s left seed 1's heading 34 % under the robot's draws on the estimator's
-// tracks, docs/identification.md). Frames near the slide's end are left out unless three frames
-// follow 1.25 times the commanded slide (the played one ends within that). The launch's covariance
-// is the Gauss-Newton one over (t_s, v, a), s^2 (J^T J)^-1, with s the residuals' RMS or
-// `position_sd`, whichever is larger: the tracks' error per coordinate, which a fit of a few frames
-// cannot estimate alone. Filtered tracks (the estimator's) share their error between neighbouring
-// frames, which this covariance does not know; docs/identification.md says what that does to the
-// noise measured.
+// model. The whole of that stretch: a lone ball's roll of seconds fixes its line and speed far
+// better than its first tenths (the loop's noise identified over twelve seeds: the tip's and the
+// speed's errors halved against the first 0.3 s, docs/identification.md, "The whole roll"). Frames
+// near the slide's end are left out unless three frames follow 1.25 times the commanded slide (the
+// played one ends within that). The launch's covariance is the Gauss-Newton one over (t_s, v, a),
+// s^2 (J^T J)^-1, with s the residuals' RMS or `position_sd`, whichever is larger: the tracks'
+// error per coordinate, which a fit of a few frames cannot estimate alone. Filtered tracks (the
+// estimator's) share their error between neighbouring frames, which this covariance does not know;
+// docs/identification.md says what that does to the noise measured.
 //
 // Module: billiard::shot_fit.
 #pragma once
