@@ -99,16 +99,64 @@ std::map<int, Eigen::Vector4d> Bias(const std::vector<Components>& shots,
   return bias;
 }
 
+// The sums over one spin style's shots that the restricted likelihood's correction needs: W =
+// Sum V^-1, B_j = Sum V^-1 G_j V^-1 and D_jk = Sum V^-1 G_j V^-1 G_k V^-1.
+struct StyleSums {
+  Eigen::Matrix4d w = Eigen::Matrix4d::Zero();
+  Eigen::Matrix4d b[3] = {Eigen::Matrix4d::Zero(), Eigen::Matrix4d::Zero(),
+                          Eigen::Matrix4d::Zero()};
+  Eigen::Matrix4d d[3][3];
+  StyleSums() {
+    for (auto& row : d) {
+      for (Eigen::Matrix4d& m : row) m.setZero();
+    }
+  }
+};
+
+// (Sum V^-1)^-1 of a style, scaled to a unit diagonal before it is inverted: a coordinate no shot
+// of the style saw weighs 1e-14 of the others, beyond what an unscaled inverse keeps.
+Eigen::Matrix4d InverseOfWeight(const Eigen::Matrix4d& w) {
+  const Eigen::Vector4d scale = w.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+  const Eigen::Matrix4d unit = scale.asDiagonal() * w * scale.asDiagonal();
+  return scale.asDiagonal() * unit.ldlt().solve(Eigen::Matrix4d::Identity()) * scale.asDiagonal();
+}
+
+// The restricted likelihood's score and expected information (Patterson and Thompson 1971;
+// Searle, Casella and McCulloch 1992, sec. 6.6): the Gaussian likelihood's with P = V^-1 -
+// V^-1 X (X^T V^-1 X)^-1 X^T V^-1 in place of V^-1, X the per-style biases' design. The
+// likelihood's own maximum takes the biases as known and so leaves their degrees of freedom in
+// the variances: with four styles of fifteen shots, about 7 % of a variance, 3 % of a spread,
+// too little. Per style, with C = W^-1:
+//   score_j       = 1/2 (e^T G_j e - Sum tr(V^-1 G_j) + tr(C B_j))
+//   information_jk = 1/2 (Sum tr(V^-1 G_j V^-1 G_k) - tr(C D_jk) - tr(C D_kj) + tr(C B_j C B_k))
+// e = V^-1 (r - mu), the generalised least squares residual, as in the likelihood's.
 void Score(const std::vector<Components>& shots, int free, Scoring& s, Eigen::Vector3d* score) {
   score->setZero();
   s.information.setZero();
+  std::map<int, StyleSums> sums;
   for (const Components& c : shots) {
     const Eigen::Matrix4d w = CovarianceOf(c, s.theta).inverse();
     const Eigen::Vector4d e = w * (c.r - s.bias.at(c.style));
+    StyleSums& style = sums[c.style];
+    style.w += w;
     for (int j = 0; j < free; ++j) {
       const Eigen::Matrix4d wg = w * c.g[j];
       (*score)[j] += 0.5 * (e.dot(c.g[j] * e) - wg.trace());
-      for (int k = 0; k < free; ++k) s.information(j, k) += 0.5 * (wg * w * c.g[k]).trace();
+      style.b[j] += wg * w;
+      for (int k = 0; k < free; ++k) {
+        s.information(j, k) += 0.5 * (wg * w * c.g[k]).trace();
+        style.d[j][k] += wg * w * c.g[k] * w;
+      }
+    }
+  }
+  for (const auto& [style, sum] : sums) {
+    const Eigen::Matrix4d c = InverseOfWeight(sum.w);
+    for (int j = 0; j < free; ++j) {
+      (*score)[j] += 0.5 * (c * sum.b[j]).trace();
+      for (int k = 0; k < free; ++k) {
+        s.information(j, k) += 0.5 * ((c * sum.b[j] * c * sum.b[k]).trace() -
+                                      (c * sum.d[j][k]).trace() - (c * sum.d[k][j]).trace());
+      }
     }
   }
 }
