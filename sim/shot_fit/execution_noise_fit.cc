@@ -125,8 +125,8 @@ Eigen::Matrix4d InverseOfWeight(const Eigen::Matrix4d& w) {
 // Searle, Casella and McCulloch 1992, sec. 6.6): the Gaussian likelihood's with P = V^-1 -
 // V^-1 X (X^T V^-1 X)^-1 X^T V^-1 in place of V^-1, X the per-style biases' design. The
 // likelihood's own maximum takes the biases as known and so leaves their degrees of freedom in
-// the variances: with four styles of fifteen shots, about 7 % of a variance, 3 % of a spread,
-// too little. Per style, with C = W^-1:
+// the variances, which come out low: with four styles of fifteen shots by about 7 % (3 % of a
+// spread). Per style, with C = W^-1:
 //   score_j       = 1/2 (e^T G_j e - Sum tr(V^-1 G_j) + tr(C B_j))
 //   information_jk = 1/2 (Sum tr(V^-1 G_j V^-1 G_k) - tr(C D_jk) - tr(C D_kj) + tr(C B_j C B_k))
 // e = V^-1 (r - mu), the generalised least squares residual, as in the likelihood's.

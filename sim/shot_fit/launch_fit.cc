@@ -12,8 +12,9 @@ namespace billiard::shot_fit {
 
 namespace {
 
-// The strike time is found to this [s]: far below a frame, far above rounding.
-constexpr double kStrikeTimeTolerance = 1e-6;
+// The strike time and the slide's end are found to this [s]: far below a frame, far above
+// rounding.
+constexpr double kTimeTolerance = 1e-6;
 // A sample this many position_sd from the rest position shows the ball moving.
 constexpr double kMovedInSd = 3.0;
 // Samples are used until this fraction of the commanded stroke's stop time.
@@ -228,7 +229,7 @@ void FitPass(const Stretch& s, const Predicted& predicted, bool free_slide,
   const LaunchModel model(s, predicted, free_slide);
   out.strike_time = physics::GoldenSectionMinimum(
       [&](double strike) { return model.SumOfSquares(strike); }, s.strike_lo, s.strike_hi,
-      [](double lo, double hi) { return hi - lo < kStrikeTimeTolerance; });
+      [](double lo, double hi) { return hi - lo < kTimeTolerance; });
   const Eigen::MatrixXd c = model.Solve(out.strike_time);
   out.velocity = c.row(1).transpose();
   const double slide = predicted.slide_time;
@@ -273,7 +274,7 @@ double PlayedSlideTime(const Stretch& s, Predicted predicted, const LaunchFitOpt
   };
   return physics::GoldenSectionMinimum(
       mismatch, commanded / kSlideEndSpread, commanded * kSlideEndSpread,
-      [](double lo, double hi) { return hi - lo < kStrikeTimeTolerance; });
+      [](double lo, double hi) { return hi - lo < kTimeTolerance; });
 }
 
 }  // namespace
