@@ -18,7 +18,7 @@
 // rolls on). Given t_s the model is linear in (v, a): least squares; t_s is the golden-section
 // least of the residual sum of squares. Where frames run past the slide, the stroke played, not the
 // commanded one, sets T and d: T is the duration for which the fitted slide decelerates at mu_s g
-// (a golden-section search within kSlideEndSpread of the commanded one), d the fitted rolling
+// (a golden-section search within 1.25 times the commanded one), d the fitted rolling
 // velocity's direction, both taken again until d settles. The robot's error moves them little, but
 // the rolling frames weigh: over a long roll the resistance along a line off by the heading's error
 // bends the path by that error times the distance the ball slows (0.3 degree over a 5 s roll: 4

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "sim/params/parameter_sets.h"
-#include "sim/physics/closed_form.h"
 #include "sim/params/table_specs.h"
+#include "sim/physics/closed_form.h"
 #include "sim/shot_fit/synthetic_shots.h"
 
 namespace billiard::shot_fit {
